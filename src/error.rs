@@ -1,0 +1,148 @@
+//! The one error type at the library boundary.
+//!
+//! Every variant carries typed fields (the parameter, its value and what was
+//! required; the file, line and column) so that callers and the CLI can report
+//! exactly what was wrong with the input.
+
+use std::path::PathBuf;
+
+/// Result alias used throughout the crate.
+pub type Result<T, E = Error> = std::result::Result<T, E>;
+
+/// Everything that can go wrong in `persson`.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum Error {
+    /// A numeric parameter is outside its allowed range.
+    #[error("invalid {name} = {value:e}: must be {requirement}")]
+    InvalidParameter {
+        /// The parameter's name as the user wrote it (CLI flag / JSON key).
+        name: String,
+        /// The value given.
+        value: f64,
+        /// The allowed range, in words.
+        requirement: String,
+    },
+    /// Two or more parameters are individually valid but inconsistent.
+    #[error("inconsistent {name}: {requirement}")]
+    Inconsistent {
+        /// The parameters involved.
+        name: String,
+        /// What must hold between them.
+        requirement: String,
+    },
+    /// A file could not be parsed.
+    #[error("{}:{line}:{column}: {message}", path.display())]
+    Parse {
+        /// The file.
+        path: PathBuf,
+        /// 1-based line (0 when the whole file is at fault).
+        line: usize,
+        /// 1-based column (0 when unknown).
+        column: usize,
+        /// What was wrong, naming the field.
+        message: String,
+    },
+    /// A file could not be read or written.
+    #[error("{}: {source}", path.display())]
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// The operating system's error.
+        #[source]
+        source: std::io::Error,
+    },
+    /// An iterative method or a quadrature did not reach its tolerance.
+    #[error("{what} did not converge: {iterations} iterations, residual {residual:e} > tolerance {tolerance:e}")]
+    NotConverged {
+        /// The computation.
+        what: String,
+        /// Iterations or function evaluations spent.
+        iterations: usize,
+        /// The residual or error estimate reached.
+        residual: f64,
+        /// The tolerance asked for.
+        tolerance: f64,
+    },
+}
+
+impl Error {
+    /// Shorthand for [`Error::InvalidParameter`].
+    pub fn invalid(name: impl Into<String>, value: f64, requirement: impl Into<String>) -> Self {
+        Error::InvalidParameter {
+            name: name.into(),
+            value,
+            requirement: requirement.into(),
+        }
+    }
+
+    /// Shorthand for [`Error::Parse`].
+    pub fn parse(
+        path: impl Into<PathBuf>,
+        line: usize,
+        column: usize,
+        message: impl Into<String>,
+    ) -> Self {
+        Error::Parse {
+            path: path.into(),
+            line,
+            column,
+            message: message.into(),
+        }
+    }
+}
+
+/// Validation helpers: each returns the value when it is in range, else an
+/// [`Error::InvalidParameter`] naming the parameter and the allowed range.
+pub mod check {
+    use super::{Error, Result};
+
+    /// `v` finite and `> 0`.
+    pub fn positive(name: &str, v: f64) -> Result<f64> {
+        if v.is_finite() && v > 0.0 {
+            Ok(v)
+        } else {
+            Err(Error::invalid(name, v, "finite and > 0"))
+        }
+    }
+
+    /// `v` finite and `≥ 0`.
+    pub fn non_negative(name: &str, v: f64) -> Result<f64> {
+        if v.is_finite() && v >= 0.0 {
+            Ok(v)
+        } else {
+            Err(Error::invalid(name, v, "finite and >= 0"))
+        }
+    }
+
+    /// `v` finite and in the open interval `(lo, hi)`.
+    pub fn open(name: &str, v: f64, lo: f64, hi: f64) -> Result<f64> {
+        if v.is_finite() && v > lo && v < hi {
+            Ok(v)
+        } else {
+            Err(Error::invalid(
+                name,
+                v,
+                format!("in the open interval ({lo}, {hi})"),
+            ))
+        }
+    }
+
+    /// `v` finite and `≥ lo`.
+    pub fn at_least(name: &str, v: f64, lo: f64) -> Result<f64> {
+        if v.is_finite() && v >= lo {
+            Ok(v)
+        } else {
+            Err(Error::invalid(name, v, format!("finite and >= {lo}")))
+        }
+    }
+
+    /// A tolerance: finite and in `[1e-15, 0.1]`.
+    pub fn tolerance(name: &str, v: f64) -> Result<f64> {
+        if v.is_finite() && (1e-15..=0.1).contains(&v) {
+            Ok(v)
+        } else {
+            Err(Error::invalid(name, v, "in [1e-15, 0.1]"))
+        }
+    }
+}
