@@ -22,6 +22,8 @@
 
 #![warn(missing_docs)]
 
+#[cfg(feature = "bem")]
+pub mod bem;
 pub mod error;
 pub mod kappa;
 pub mod material;

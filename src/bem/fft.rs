@@ -1,0 +1,265 @@
+//! Two-dimensional real FFT on square grids, planned once and reused.
+//!
+//! # Conventions
+//! A real field `x` of `n × n` values is stored row-major (`x[i·n + j]`,
+//! `i` the row). The forward transform is unnormalised,
+//! ```text
+//! X(k_i, k_j) = Σ_{i,j} x[i, j] e^{−2πi (k_i i + k_j j)/n}
+//! ```
+//! and only the half spectrum `k_j = 0 … n/2` is kept (the rest follows from
+//! Hermitian symmetry). The half spectrum is stored **transposed**,
+//! `spec[k_j·n + k_i]`, because the column FFTs then run over contiguous memory
+//! in one batched call. The inverse applies no `1/n²` factor: callers fold it
+//! into their multiplier (see [`super::kernel`]).
+//!
+//! Only the first `rows ≤ n` rows of the real field are used: the forward
+//! transform treats rows `rows … n` as zero and the inverse returns only the
+//! first `rows` rows. With `rows = n/2` this is the pruned transform of a
+//! zero-padded field (free-boundary operator), saving the row transforms of
+//! the padding.
+//!
+//! No allocation happens after [`Fft2::new`]: all scratch space is owned.
+//!
+//! # References
+//! Recipe and timings: `../shared/deps.md` §4 (rustfft 6.4 + realfft 3.5).
+
+use std::sync::Arc;
+
+use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
+use rustfft::num_complex::Complex64;
+use rustfft::{Fft, FftPlanner};
+
+use crate::error::{Error, Result};
+
+/// Side of the tiles of the blocked transpose (32 complex values = 512 bytes).
+const TILE: usize = 32;
+
+/// A planned 2-D real FFT of an `n × n` grid whose first `rows` rows are live.
+pub struct Fft2 {
+    n: usize,
+    rows: usize,
+    r2c: Arc<dyn RealToComplex<f64>>,
+    c2r: Arc<dyn ComplexToReal<f64>>,
+    fwd: Arc<dyn Fft<f64>>,
+    inv: Arc<dyn Fft<f64>>,
+    /// Row spectra, `rows × (n/2 + 1)`.
+    rowspec: Vec<Complex64>,
+    scratch: Vec<Complex64>,
+}
+
+impl std::fmt::Debug for Fft2 {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Fft2")
+            .field("n", &self.n)
+            .field("rows", &self.rows)
+            .finish()
+    }
+}
+
+impl Fft2 {
+    /// Plan the transforms of an `n × n` grid with `rows` live rows.
+    ///
+    /// # Errors
+    /// `n < 2` or `rows` not in `1 ..= n`.
+    pub fn new(n: usize, rows: usize) -> Result<Self> {
+        if n < 2 || rows == 0 || rows > n {
+            return Err(Error::Inconsistent {
+                name: "fft size".into(),
+                requirement: format!("n >= 2 and 1 <= rows <= n, got n = {n}, rows = {rows}"),
+            });
+        }
+        let mut rp = RealFftPlanner::<f64>::new();
+        let mut cp = FftPlanner::<f64>::new();
+        let r2c = rp.plan_fft_forward(n);
+        let c2r = rp.plan_fft_inverse(n);
+        let fwd = cp.plan_fft_forward(n);
+        let inv = cp.plan_fft_inverse(n);
+        let len = [
+            r2c.get_scratch_len(),
+            c2r.get_scratch_len(),
+            fwd.get_inplace_scratch_len(),
+            inv.get_inplace_scratch_len(),
+        ]
+        .into_iter()
+        .max()
+        .unwrap_or(0);
+        let nc = n / 2 + 1;
+        Ok(Fft2 {
+            n,
+            rows,
+            r2c,
+            c2r,
+            fwd,
+            inv,
+            rowspec: vec![Complex64::new(0.0, 0.0); rows * nc],
+            scratch: vec![Complex64::new(0.0, 0.0); len],
+        })
+    }
+
+    /// Grid side `n`.
+    pub fn n(&self) -> usize {
+        self.n
+    }
+
+    /// Number of half-spectrum columns, `n/2 + 1`.
+    pub fn nc(&self) -> usize {
+        self.n / 2 + 1
+    }
+
+    /// Length of the transposed half spectrum, `(n/2 + 1)·n`.
+    pub fn spectrum_len(&self) -> usize {
+        self.nc() * self.n
+    }
+
+    /// Forward transform of the first `rows` rows of `x` (`rows × n`,
+    /// overwritten as scratch) into `spec` (`(n/2+1) × n`, transposed).
+    ///
+    /// # Errors
+    /// Wrong buffer lengths (an internal error).
+    pub fn forward(&mut self, x: &mut [f64], spec: &mut [Complex64]) -> Result<()> {
+        let (n, nc, rows) = (self.n, self.nc(), self.rows);
+        if x.len() != rows * n || spec.len() != nc * n {
+            return Err(length_error("forward", x.len(), spec.len()));
+        }
+        for (xr, sr) in x.chunks_exact_mut(n).zip(self.rowspec.chunks_exact_mut(nc)) {
+            self.r2c
+                .process_with_scratch(xr, sr, &mut self.scratch)
+                .map_err(fft_error)?;
+        }
+        transpose_into(&self.rowspec, rows, nc, spec, n);
+        self.fwd.process_with_scratch(spec, &mut self.scratch);
+        Ok(())
+    }
+
+    /// Inverse transform of `spec` (overwritten) into the first `rows` rows of
+    /// `x` (`rows × n`), without the `1/n²` factor.
+    ///
+    /// # Errors
+    /// Wrong buffer lengths (an internal error).
+    pub fn inverse(&mut self, spec: &mut [Complex64], x: &mut [f64]) -> Result<()> {
+        let (n, nc, rows) = (self.n, self.nc(), self.rows);
+        if x.len() != rows * n || spec.len() != nc * n {
+            return Err(length_error("inverse", x.len(), spec.len()));
+        }
+        self.inv.process_with_scratch(spec, &mut self.scratch);
+        transpose_back(spec, n, rows, nc, &mut self.rowspec);
+        let even = n.is_multiple_of(2);
+        for (sr, xr) in self.rowspec.chunks_exact_mut(nc).zip(x.chunks_exact_mut(n)) {
+            // The DC (and, for even n, Nyquist) bins of a real row are real;
+            // rounding leaves ~1e-17 imaginary parts that c2r rejects.
+            sr[0].im = 0.0;
+            if even {
+                sr[nc - 1].im = 0.0;
+            }
+            self.c2r
+                .process_with_scratch(sr, xr, &mut self.scratch)
+                .map_err(fft_error)?;
+        }
+        Ok(())
+    }
+}
+
+/// `dst[c·ld + r] = src[r·cols + c]` for `r < rows`, and zero for
+/// `r ∈ rows … ld` (the zero padding of a pruned transform).
+fn transpose_into(src: &[Complex64], rows: usize, cols: usize, dst: &mut [Complex64], ld: usize) {
+    for r0 in (0..rows).step_by(TILE) {
+        let r1 = (r0 + TILE).min(rows);
+        for c0 in (0..cols).step_by(TILE) {
+            let c1 = (c0 + TILE).min(cols);
+            for r in r0..r1 {
+                let row = &src[r * cols..];
+                for c in c0..c1 {
+                    dst[c * ld + r] = row[c];
+                }
+            }
+        }
+    }
+    if rows < ld {
+        for c in 0..cols {
+            dst[c * ld + rows..(c + 1) * ld].fill(Complex64::new(0.0, 0.0));
+        }
+    }
+}
+
+/// `dst[r·cols + c] = src[c·ld + r]` for `r < rows`, `c < cols`.
+fn transpose_back(src: &[Complex64], ld: usize, rows: usize, cols: usize, dst: &mut [Complex64]) {
+    for c0 in (0..cols).step_by(TILE) {
+        let c1 = (c0 + TILE).min(cols);
+        for r0 in (0..rows).step_by(TILE) {
+            let r1 = (r0 + TILE).min(rows);
+            for c in c0..c1 {
+                let col = &src[c * ld..];
+                for r in r0..r1 {
+                    dst[r * cols + c] = col[r];
+                }
+            }
+        }
+    }
+}
+
+fn length_error(what: &str, real: usize, spec: usize) -> Error {
+    Error::Inconsistent {
+        name: format!("fft {what} buffers"),
+        requirement: format!("lengths rows·n and (n/2+1)·n, got {real} and {spec}"),
+    }
+}
+
+fn fft_error(e: realfft::FftError) -> Error {
+    Error::Inconsistent {
+        name: "real fft".into(),
+        requirement: e.to_string(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Round trip of a pseudo-random field: rounding only (deps.md §4 saw 1e-14).
+    const ROUND_TRIP_TOL: f64 = 1e-13;
+
+    fn field(n: usize, rows: usize) -> Vec<f64> {
+        (0..rows * n)
+            .map(|k| ((k as f64 * 0.7548776662).fract() - 0.5) * 3.0)
+            .collect()
+    }
+
+    #[test]
+    fn round_trip_even_and_odd() {
+        for (n, rows) in [(16, 16), (15, 15), (32, 16), (64, 40)] {
+            let x0 = field(n, rows);
+            let mut x = x0.clone();
+            let mut f = Fft2::new(n, rows).unwrap();
+            let mut s = vec![Complex64::new(0.0, 0.0); f.spectrum_len()];
+            f.forward(&mut x, &mut s).unwrap();
+            let mut y = vec![0.0; rows * n];
+            f.inverse(&mut s, &mut y).unwrap();
+            let scale = 1.0 / (n * n) as f64;
+            let err = x0
+                .iter()
+                .zip(&y)
+                .map(|(a, b)| (a - b * scale).abs())
+                .fold(0.0, f64::max);
+            assert!(err < ROUND_TRIP_TOL, "n = {n}, rows = {rows}: {err:e}");
+        }
+    }
+
+    #[test]
+    fn single_mode_lands_in_its_bin() {
+        // x = cos(2π(2 i + 3 j)/n): X(2, 3) = n²/2 in the half spectrum.
+        let n = 16;
+        let mut x: Vec<f64> = (0..n * n)
+            .map(|k| {
+                let (i, j) = ((k / n) as f64, (k % n) as f64);
+                (std::f64::consts::TAU * (2.0 * i + 3.0 * j) / n as f64).cos()
+            })
+            .collect();
+        let mut f = Fft2::new(n, n).unwrap();
+        let mut s = vec![Complex64::new(0.0, 0.0); f.spectrum_len()];
+        f.forward(&mut x, &mut s).unwrap();
+        let v = s[3 * n + 2];
+        assert!((v.re - (n * n) as f64 / 2.0).abs() < 1e-10 && v.im.abs() < 1e-10);
+        let total: f64 = s.iter().map(|c| c.norm()).sum();
+        assert!((total - v.norm()).abs() < 1e-9);
+    }
+}

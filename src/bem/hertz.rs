@@ -1,0 +1,271 @@
+//! Closed-form Hertz contact of a rigid sphere on an elastic half-space, and
+//! the BEM validation against it.
+//!
+//! # Formula
+//! ```text
+//! a³ = 3 F R / (4 E*)          contact radius (F total force, R sphere radius)
+//! p₀ = 3F/(2π a²) = 2E* a/(π R) peak pressure
+//! p(r) = p₀ √(1 − r²/a²),  r < a
+//! δ = a²/R                      approach
+//! ```
+//! The rigid surface is the paraboloid `h(r) = −r²/(2R)` (Hertz's
+//! approximation of the sphere), centred on the node `(L/2, L/2)`.
+//!
+//! # References
+//! H. Hertz, J. reine angew. Math. 92, 156 (1882); K. L. Johnson, *Contact
+//! Mechanics* (CUP 1985), Eqs. (4.22)–(4.23). Lecture 000 (seed), Table 1.
+
+use super::kernel::{Boundary, Operator};
+use super::solver::{Control, Options, Solver};
+use crate::error::{check, Error, Result};
+
+/// Hertz contact radius `a = (3FR/(4E*))^{1/3}` (unit of R).
+pub fn contact_radius(force: f64, radius: f64, e_star: f64) -> f64 {
+    (3.0 * force * radius / (4.0 * e_star)).cbrt()
+}
+
+/// Total force `F = 4E* a³/(3R)` that gives the contact radius `a`.
+pub fn force_for_radius(a: f64, radius: f64, e_star: f64) -> f64 {
+    4.0 * e_star * a.powi(3) / (3.0 * radius)
+}
+
+/// Peak pressure `p₀ = 2E* a/(πR)`.
+pub fn peak_pressure(a: f64, radius: f64, e_star: f64) -> f64 {
+    2.0 * e_star * a / (std::f64::consts::PI * radius)
+}
+
+/// Pressure `p₀ √(1 − r²/a²)` inside the contact, 0 outside.
+pub fn pressure(r: f64, a: f64, p0: f64) -> f64 {
+    if r < a {
+        p0 * (1.0 - (r / a).powi(2)).sqrt()
+    } else {
+        0.0
+    }
+}
+
+/// A Hertz validation problem on an `N × N` grid.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HertzCase {
+    /// Grid side N (nodes per side).
+    pub grid: usize,
+    /// Boundary condition of the elastic half-space.
+    pub boundary: Boundary,
+    /// Side L of the square domain.
+    pub size: f64,
+    /// Sphere radius R (unit of L).
+    pub radius: f64,
+    /// Contact modulus E*.
+    pub e_star: f64,
+    /// Target Hertz contact radius a (unit of L); the load follows from it.
+    pub contact_radius: f64,
+}
+
+impl HertzCase {
+    /// The issue's defaults: L = 1, R = 1, E* = 1, a = 0.1 L.
+    pub fn new(grid: usize, boundary: Boundary) -> Self {
+        HertzCase {
+            grid,
+            boundary,
+            size: 1.0,
+            radius: 1.0,
+            e_star: 1.0,
+            contact_radius: 0.1,
+        }
+    }
+
+    /// Nominal mean pressure `F/L²`.
+    pub fn mean_pressure(&self) -> f64 {
+        force_for_radius(self.contact_radius, self.radius, self.e_star) / (self.size * self.size)
+    }
+
+    /// Peak Hertz pressure p₀.
+    pub fn peak_pressure(&self) -> f64 {
+        peak_pressure(self.contact_radius, self.radius, self.e_star)
+    }
+
+    /// Node distances from the centre `(L/2, L/2)`, row-major.
+    pub fn radii(&self) -> Vec<f64> {
+        let n = self.grid;
+        let dx = self.size / n as f64;
+        let c = 0.5 * self.size;
+        (0..n * n)
+            .map(|k| {
+                let (x, y) = ((k / n) as f64 * dx - c, (k % n) as f64 * dx - c);
+                x.hypot(y)
+            })
+            .collect()
+    }
+
+    /// Exact Hertz pressure averaged over each node's cell (m × m midpoint
+    /// sub-samples per cell).
+    pub fn cell_averaged_pressure(&self, m: usize) -> Vec<f64> {
+        let n = self.grid;
+        let dx = self.size / n as f64;
+        let c = 0.5 * self.size;
+        let p0 = self.peak_pressure();
+        (0..n * n)
+            .map(|k| {
+                let (x0, y0) = ((k / n) as f64 * dx - c, (k % n) as f64 * dx - c);
+                let mut s = 0.0;
+                for a in 0..m {
+                    for b in 0..m {
+                        let x = x0 + ((a as f64 + 0.5) / m as f64 - 0.5) * dx;
+                        let y = y0 + ((b as f64 + 0.5) / m as f64 - 0.5) * dx;
+                        s += pressure(x.hypot(y), self.contact_radius, p0);
+                    }
+                }
+                s / (m * m) as f64
+            })
+            .collect()
+    }
+
+    /// Rigid surface heights `−r²/(2R)`.
+    pub fn heights(&self) -> Vec<f64> {
+        self.radii()
+            .iter()
+            .map(|r| -r * r / (2.0 * self.radius))
+            .collect()
+    }
+
+    /// Exact Hertz pressure at the nodes.
+    pub fn exact_pressure(&self) -> Vec<f64> {
+        let p0 = self.peak_pressure();
+        self.radii()
+            .iter()
+            .map(|&r| pressure(r, self.contact_radius, p0))
+            .collect()
+    }
+
+    fn check(&self) -> Result<()> {
+        check::positive("size", self.size)?;
+        check::positive("radius", self.radius)?;
+        check::positive("contact_modulus", self.e_star)?;
+        check::open("contact_radius", self.contact_radius, 0.0, 0.5 * self.size)?;
+        super::check_grid(self.grid)
+    }
+}
+
+/// The outcome of a Hertz validation.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct HertzReport {
+    /// Grid side N.
+    pub grid: usize,
+    /// Boundary condition.
+    pub boundary: Boundary,
+    /// η: energy norm of the pressure error relative to that of p_ex.
+    pub energy_error: f64,
+    /// Contact radius a from the fit of p² = p₀²(1 − r²/a²).
+    pub contact_radius: f64,
+    /// |a_fit − a| / a.
+    pub contact_radius_error: f64,
+    /// Peak pressure p₀ from the same fit.
+    pub peak_pressure: f64,
+    /// |p₀_fit − p₀| / p₀.
+    pub peak_pressure_error: f64,
+    /// A/A0 of the numerical solution (exact: π a²/L²).
+    pub contact_fraction: f64,
+    /// Solver iterations.
+    pub iterations: usize,
+    /// Final solver residual ε.
+    pub residual: f64,
+    /// Wall-clock seconds of the solve.
+    pub seconds: f64,
+}
+
+/// Solve the Hertz case and compare with the closed form.
+///
+/// # Formula
+/// ```text
+/// η = sqrt(⟨p − p_ex, 𝒢(p − p_ex)⟩ / ⟨p_ex, 𝒢 p_ex⟩)     (lecture 000, Table 1)
+/// fit: p_i² = c₀ + c₁ r_i² by least squares over p_i > 0;  p₀ = √c₀,  a = √(−c₀/c₁)
+/// ```
+/// 𝒢 is the discrete compliance operator of the solve (periodic or free),
+/// p_ex the Hertz pressure sampled at the nodes.
+///
+/// # Errors
+/// Invalid case (grid < 8, non-positive sizes, a ≥ L/2), solver errors.
+pub fn validate(case: &HertzCase, opts: &Options) -> Result<HertzReport> {
+    case.check()?;
+    let op = Operator::new(case.boundary, case.grid, case.size, case.e_star)?;
+    let mut solver = Solver::new(op);
+    let sol = solver.solve(
+        &case.heights(),
+        Control::MeanPressure(case.mean_pressure()),
+        opts,
+    )?;
+    let exact = case.exact_pressure();
+    let err: Vec<f64> = sol
+        .pressure
+        .iter()
+        .zip(&exact)
+        .map(|(p, e)| p - e)
+        .collect();
+    let mut work = vec![0.0; err.len()];
+    let op = solver.operator();
+    let num = op.energy_product(&err, &err, &mut work)?;
+    let den = op.energy_product(&exact, &exact, &mut work)?;
+    let (a, p0) = fit(&case.radii(), &sol.pressure)?;
+    Ok(HertzReport {
+        grid: case.grid,
+        boundary: case.boundary,
+        energy_error: (num.max(0.0) / den).sqrt(),
+        contact_radius: a,
+        contact_radius_error: (a - case.contact_radius).abs() / case.contact_radius,
+        peak_pressure: p0,
+        peak_pressure_error: (p0 - case.peak_pressure()).abs() / case.peak_pressure(),
+        contact_fraction: sol.contact_fraction,
+        iterations: sol.iterations,
+        residual: sol.residual,
+        seconds: sol.seconds,
+    })
+}
+
+/// Least-squares fit of `p² = c₀ + c₁ r²` over the nodes with p > 0;
+/// returns `(a, p₀)`.
+fn fit(radii: &[f64], p: &[f64]) -> Result<(f64, f64)> {
+    let (mut n, mut sx, mut sy, mut sxx, mut sxy) = (0.0, 0.0, 0.0, 0.0, 0.0);
+    for (r, p) in radii.iter().zip(p) {
+        if *p > 0.0 {
+            let (x, y) = (r * r, p * p);
+            n += 1.0;
+            sx += x;
+            sy += y;
+            sxx += x * x;
+            sxy += x * y;
+        }
+    }
+    let det = n * sxx - sx * sx;
+    let c1 = (n * sxy - sx * sy) / det;
+    let c0 = (sy - c1 * sx) / n;
+    if !(n >= 3.0 && det > 0.0 && c0 > 0.0 && c1 < 0.0) {
+        return Err(Error::Inconsistent {
+            name: "Hertz fit".into(),
+            requirement: format!(
+                "at least 3 contact nodes with a decreasing p²(r²), got {n} nodes"
+            ),
+        });
+    }
+    Ok(((-c0 / c1).sqrt(), c0.sqrt()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn closed_forms_are_consistent() {
+        // a = 0.1 R: F = 4e-3/3, p₀ = 0.2/π, and p₀ = 3F/(2πa²).
+        let f = force_for_radius(0.1, 1.0, 1.0);
+        assert!((contact_radius(f, 1.0, 1.0) - 0.1).abs() < 1e-16);
+        let p0 = peak_pressure(0.1, 1.0, 1.0);
+        assert!((p0 - 3.0 * f / (2.0 * std::f64::consts::PI * 0.01)).abs() < 1e-16);
+        assert_eq!(pressure(0.2, 0.1, p0), 0.0);
+    }
+
+    #[test]
+    fn fit_recovers_an_exact_profile() {
+        let case = HertzCase::new(64, Boundary::Free);
+        let (a, p0) = fit(&case.radii(), &case.exact_pressure()).unwrap();
+        assert!((a - 0.1).abs() < 1e-12 && (p0 - case.peak_pressure()).abs() < 1e-12);
+    }
+}

@@ -1,0 +1,109 @@
+//! FFT boundary-element cross-check (feature `bem`): elastic half-space,
+//! Polonsky–Keer solver, Hertz validation, rough surfaces.
+//!
+//! # Conventions
+//! - A square `L × L` domain on an `N × N` grid of nodes `x_i = iL/N`,
+//!   fields stored row-major (`f[i·N + j]`). Pressures are nodal values
+//!   (collocation), in the unit of the contact modulus E*.
+//! - Heights `h` are those of the **rigid rough surface**, pointing towards
+//!   the elastic body: its peaks touch first. Lengths are in the unit of L.
+//! - The elastic half-space is either periodic (the grid is one period) or
+//!   free (an isolated contact; convolution zero-padded to 2N), see
+//!   [`kernel`].
+//! - `contact_fraction` is the fraction of nodes with p > 0 (A/A0 at this
+//!   resolution; areas converge slowly with N, ~N^−0.7 in seed 002: report
+//!   the grid with every area).
+//!
+//! # Pieces
+//! - [`fft`]: planned 2-D real FFT (rustfft + realfft), no allocation per call.
+//! - [`kernel`]: the compliance operators 𝒢 (periodic, free).
+//! - [`solver`]: Polonsky–Keer constrained conjugate gradient.
+//! - [`hertz`]: closed-form Hertz solution and the η validation.
+//! - [`surface`]: Fourier synthesis from any [`crate::Spectrum`], height-map I/O.
+//!
+//! # Example
+//! ```
+//! use persson::bem::{hertz, Boundary, Options};
+//! # fn main() -> persson::Result<()> {
+//! let r = hertz::validate(&hertz::HertzCase::new(64, Boundary::Free), &Options::default())?;
+//! assert!(r.energy_error < 1.40e-2); // lecture 000, Table 1 (64²)
+//! # Ok(()) }
+//! ```
+
+pub mod fft;
+pub mod hertz;
+pub mod kernel;
+pub mod solver;
+pub mod surface;
+
+pub use kernel::{Boundary, Operator};
+pub use solver::{Control, Iteration, Options, Solution, Solver};
+pub use surface::Surface;
+
+use crate::error::{Error, Result};
+
+/// Smallest grid side accepted.
+pub const MIN_GRID: usize = 8;
+
+/// Largest grid side accepted before the memory check (keeps N² in range).
+pub const MAX_GRID: usize = 1 << 15;
+
+/// Check a grid side: `MIN_GRID ≤ n ≤ MAX_GRID`.
+///
+/// # Errors
+/// [`Error::InvalidParameter`] naming `grid`.
+pub fn check_grid(n: usize) -> Result<()> {
+    if (MIN_GRID..=MAX_GRID).contains(&n) {
+        Ok(())
+    } else {
+        Err(Error::invalid(
+            "grid",
+            n as f64,
+            format!("between {MIN_GRID} and {MAX_GRID}"),
+        ))
+    }
+}
+
+/// Bytes a solve on an `n × n` grid needs: the solver's five fields, the
+/// three fields of the returned [`Solution`], the surface, and the
+/// operator's FFT buffers (about 2.5 N² values periodic, 10 N² free).
+pub fn required_bytes(n: usize, boundary: Boundary) -> u64 {
+    let n2 = (n as u64) * (n as u64);
+    let fields = 9 * n2;
+    let fft = match boundary {
+        Boundary::Periodic => 3 * n2,
+        Boundary::Free => 10 * n2,
+    };
+    8 * (fields + fft)
+}
+
+/// Check that a solve on an `n × n` grid fits in the memory available now
+/// (`MemAvailable` of `/proc/meminfo`; skipped where that is unreadable).
+///
+/// # Errors
+/// [`Error::InvalidParameter`] naming `grid`, with the bytes needed and available.
+pub fn check_memory(n: usize, boundary: Boundary) -> Result<()> {
+    check_grid(n)?;
+    let need = required_bytes(n, boundary);
+    if let Some(avail) = available_memory() {
+        if need > avail {
+            return Err(Error::invalid(
+                "grid",
+                n as f64,
+                format!(
+                    "small enough for this machine: a {n}×{n} solve needs {:.1} GiB, {:.1} GiB are available",
+                    need as f64 / (1u64 << 30) as f64,
+                    avail as f64 / (1u64 << 30) as f64
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
+fn available_memory() -> Option<u64> {
+    let text = std::fs::read_to_string("/proc/meminfo").ok()?;
+    let line = text.lines().find(|l| l.starts_with("MemAvailable:"))?;
+    let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kib * 1024)
+}

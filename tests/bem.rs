@@ -1,0 +1,353 @@
+//! Boundary-element solver: Hertz validation, rough-surface invariants,
+//! synthesis statistics, height-map I/O and bad input (issue 4).
+#![cfg(feature = "bem")]
+
+use persson::bem::surface::{expected_rms, read_height_map, synthesize, write_npy};
+use persson::bem::{hertz, Boundary, Control, Operator, Options, Solver, Surface};
+use persson::spectrum::{Amplitude, SelfAffine, Spectrum};
+use persson::Error;
+
+/// Lecture 000, Table 1: free-boundary η for 64² and 128².
+const LECTURE_FREE: [(usize, f64); 2] = [(64, 1.40e-2), (128, 4.08e-3)];
+
+/// Free boundary at 256²: we measure η = 1.035e-3 (Love cell kernel), above
+/// the lecture's 7.78e-4 (see README: the lecture's η is not the 𝒢-norm).
+/// The bound guards against regressions of our discretisation.
+const FREE_256_BOUND: f64 = 1.05e-3;
+
+/// Periodic reference discrete solution (Tamaas 2.9 PolonskyKeerRey, same
+/// grid, load and kernel, measured η): 3.099e-3 at 128², 1.443e-3 at 256².
+const PERIODIC_REFERENCE: [(usize, f64); 2] = [(128, 3.099e-3), (256, 1.443e-3)];
+
+/// Relative agreement with the reference discrete solution: both solves stop
+/// at ε ≤ 1e-12, so η agrees to far better than this.
+const REFERENCE_REL_TOL: f64 = 1e-3;
+
+/// Load balance: the rescaling step makes Σp/N² exact up to rounding of a
+/// sum of N² terms.
+const LOAD_REL_TOL: f64 = 1e-12;
+
+fn tight() -> Options {
+    Options {
+        tol: 1e-12,
+        ..Options::default()
+    }
+}
+
+#[test]
+fn hertz_free_beats_the_lecture_at_64_and_128() {
+    for (n, lecture) in LECTURE_FREE {
+        let r = hertz::validate(&hertz::HertzCase::new(n, Boundary::Free), &tight()).unwrap();
+        assert!(
+            r.energy_error < lecture,
+            "N = {n}: η = {:e} ≥ {lecture:e}",
+            r.energy_error
+        );
+        // The fitted radius and peak are within 0.3 % already at 64².
+        assert!(
+            r.contact_radius_error < 3e-3 && r.peak_pressure_error < 3e-3,
+            "{r:?}"
+        );
+    }
+}
+
+#[test]
+fn hertz_free_256() {
+    let r = hertz::validate(&hertz::HertzCase::new(256, Boundary::Free), &tight()).unwrap();
+    assert!(r.energy_error < FREE_256_BOUND, "η = {:e}", r.energy_error);
+    // a and p₀ from the fit: 2.8e-5 and 1.1e-4 measured.
+    assert!(
+        r.contact_radius_error < 1e-4 && r.peak_pressure_error < 5e-4,
+        "{r:?}"
+    );
+    // A/A0 → π a² = 0.0314159: within 1.5 % at 256².
+    assert!((r.contact_fraction / (std::f64::consts::PI * 0.01) - 1.0).abs() < 1.5e-2);
+}
+
+#[test]
+fn hertz_periodic_equals_reference_discrete_solution() {
+    for (n, reference) in PERIODIC_REFERENCE {
+        let r = hertz::validate(&hertz::HertzCase::new(n, Boundary::Periodic), &tight()).unwrap();
+        let rel = (r.energy_error / reference - 1.0).abs();
+        assert!(
+            rel < REFERENCE_REL_TOL,
+            "N = {n}: η = {:e} vs {reference:e}",
+            r.energy_error
+        );
+    }
+}
+
+#[test]
+fn hertz_penetration_control_gives_the_hertz_load() {
+    // Free boundary, δ = a²/R with a = 0.1: the mean pressure must be the Hertz
+    // load 4a³/3; 128² resolves it to 0.5 % (measured 0.1 %).
+    let case = hertz::HertzCase::new(128, Boundary::Free);
+    let mut s = Solver::new(Operator::new(Boundary::Free, 128, 1.0, 1.0).unwrap());
+    let sol = s
+        .solve(&case.heights(), Control::Penetration(0.01), &tight())
+        .unwrap();
+    assert!(
+        (sol.mean_pressure / case.mean_pressure() - 1.0).abs() < 5e-3,
+        "{}",
+        sol.mean_pressure
+    );
+    // And load control returns the Hertz approach δ = a²/R.
+    let sol = s
+        .solve(
+            &case.heights(),
+            Control::MeanPressure(case.mean_pressure()),
+            &tight(),
+        )
+        .unwrap();
+    assert!((sol.approach / 0.01 - 1.0).abs() < 5e-3, "{}", sol.approach);
+}
+
+fn rough_spectrum() -> SelfAffine {
+    // L = 1: q_l = 2π, roll-off at 4 q_l, cut-off at 32 q_l (N = 128 resolves
+    // it with 2 nodes per shortest half-wavelength), H = 0.8, rms slope 0.1.
+    let ql = std::f64::consts::TAU;
+    SelfAffine::new(ql, 4.0 * ql, 32.0 * ql, 0.8, Amplitude::RmsSlope(0.1)).unwrap()
+}
+
+#[test]
+fn rough_solve_invariants_and_reproducibility() {
+    let spec = rough_spectrum();
+    let surf = synthesize(&spec, 128, 1.0, 42).unwrap();
+    let again = synthesize(&spec, 128, 1.0, 42).unwrap();
+    assert_eq!(surf.heights, again.heights);
+    let pressure = 0.002; // E* = 1: A/A0 ≈ 2p/(E* slope) ≈ 4 %
+    let mut s = Solver::new(Operator::new(Boundary::Periodic, 128, 1.0, 1.0).unwrap());
+    let sol = s
+        .solve(&surf.heights, Control::MeanPressure(pressure), &tight())
+        .unwrap();
+    assert!((sol.mean_pressure / pressure - 1.0).abs() < LOAD_REL_TOL);
+    assert!(sol.pressure.iter().all(|p| *p >= 0.0));
+    // Zero gap on the contact, none negative elsewhere, relative to σ_h: the
+    // stopping rule bounds the p-weighted mean gap by 1e-12 σ_h; pointwise
+    // the gap at contact nodes measured ≤ 1e-9 σ_h.
+    let sigma = surf.rms_height();
+    for (p, g) in sol.pressure.iter().zip(&sol.gap) {
+        if *p > 0.0 {
+            assert!(g.abs() <= 1e-8 * sigma, "gap {g:e} at p = {p:e}");
+        } else {
+            assert!(*g >= -1e-8 * sigma, "overlap {g:e}");
+        }
+    }
+    // Bit-for-bit reproducible from the seed (fresh solver, same input).
+    let mut s2 = Solver::new(Operator::new(Boundary::Periodic, 128, 1.0, 1.0).unwrap());
+    let sol2 = s2
+        .solve(&again.heights, Control::MeanPressure(pressure), &tight())
+        .unwrap();
+    assert_eq!(
+        sol.contact_fraction.to_bits(),
+        sol2.contact_fraction.to_bits()
+    );
+    assert_eq!(sol.pressure, sol2.pressure);
+    assert!(sol.contact_fraction > 0.01 && sol.contact_fraction < 0.2);
+}
+
+#[test]
+fn synthesis_is_value_stable_across_versions() {
+    // Golden values of seed 7 (Pcg64Mcg + in-house Box–Muller, module docs):
+    // a change here changes every user's surfaces.
+    let s = synthesize(&rough_spectrum(), 16, 1.0, 7).unwrap();
+    let golden = [GOLDEN_0, GOLDEN_1];
+    for (h, g) in s.heights.iter().zip(golden) {
+        assert!((h - g).abs() <= GOLDEN_REL_TOL * g.abs(), "{h:e} vs {g:e}");
+    }
+}
+
+/// Heights [0] and [1] of seed 7 on 16² (measured with rustfft 6.4.1).
+const GOLDEN_0: f64 = 1.502618957178541e-4;
+const GOLDEN_1: f64 = 2.6112469406014166e-4;
+/// The random draws are value-stable; the FFT's rounding may change with a
+/// rustfft update, by a few ulps of the largest mode.
+const GOLDEN_REL_TOL: f64 = 1e-12;
+
+#[test]
+fn synthesis_matches_the_spectrum_moments() {
+    let spec = rough_spectrum();
+    let (n, l) = (64, 1.0);
+    // Expectation over the grid's modes equals the spectrum's rms over its
+    // band: heights exactly (cell integrals tile the band; 4×4 Gauss on cells
+    // cut by the band edges costs < 1 %), slopes to O(Δq²/q²) per cell.
+    let (eh, es) = expected_rms(&spec, n, l);
+    let h = spec.rms_height(spec.q_min(), spec.q_max()).unwrap().value;
+    let sl = spec.rms_slope(spec.q_min(), spec.q_max()).unwrap().value;
+    assert!((eh / h - 1.0).abs() < 1e-2, "{eh} vs {h}");
+    assert!((es / sl - 1.0).abs() < 2e-2, "{es} vs {sl}");
+    // Sample means over 40 seeds: rms height (dominated by ~50 long-wave
+    // modes, sampling spread ≈ 1/√(40·50)·… ≈ 3 %) and rms slope (thousands of
+    // modes, < 1 %).
+    let (mut h2, mut s2) = (0.0, 0.0);
+    let seeds = 40;
+    for seed in 0..seeds {
+        let s = synthesize(&spec, n, l, seed).unwrap();
+        h2 += s.rms_height().powi(2);
+        s2 += s.rms_slope().unwrap().powi(2);
+    }
+    let (mh, ms) = ((h2 / seeds as f64).sqrt(), (s2 / seeds as f64).sqrt());
+    assert!((mh / eh - 1.0).abs() < 5e-2, "{mh} vs {eh}");
+    assert!((ms / es - 1.0).abs() < 1e-2, "{ms} vs {es}");
+}
+
+#[test]
+fn full_contact_is_an_answer() {
+    let surf = synthesize(&rough_spectrum(), 32, 1.0, 3).unwrap();
+    let mut s = Solver::new(Operator::new(Boundary::Periodic, 32, 1.0, 1.0).unwrap());
+    let sol = s
+        .solve(&surf.heights, Control::MeanPressure(10.0), &tight())
+        .unwrap();
+    assert_eq!(sol.contact_fraction, 1.0);
+}
+
+#[test]
+fn not_converged_is_an_error() {
+    let surf = synthesize(&rough_spectrum(), 64, 1.0, 3).unwrap();
+    let mut s = Solver::new(Operator::new(Boundary::Periodic, 64, 1.0, 1.0).unwrap());
+    let opts = Options {
+        max_iter: 2,
+        ..tight()
+    };
+    match s.solve(&surf.heights, Control::MeanPressure(0.01), &opts) {
+        Err(Error::NotConverged {
+            iterations,
+            residual,
+            ..
+        }) => {
+            assert_eq!(iterations, 2);
+            assert!(residual > 1e-12);
+        }
+        other => panic!("expected NotConverged, got {other:?}"),
+    }
+}
+
+#[test]
+fn bad_input_is_a_clear_error() {
+    assert!(matches!(
+        hertz::validate(&hertz::HertzCase::new(4, Boundary::Free), &tight()),
+        Err(Error::InvalidParameter { .. })
+    ));
+    let surf = synthesize(&rough_spectrum(), 16, 1.0, 1).unwrap();
+    let mut s = Solver::new(Operator::new(Boundary::Periodic, 16, 1.0, 1.0).unwrap());
+    for p in [0.0, -1.0, f64::NAN] {
+        assert!(matches!(
+            s.solve(&surf.heights, Control::MeanPressure(p), &tight()),
+            Err(Error::InvalidParameter { .. })
+        ));
+    }
+    let mut h = surf.heights.clone();
+    h[5] = f64::INFINITY;
+    assert!(Surface::new(16, 1.0, h.clone()).is_err());
+    assert!(s.solve(&h, Control::MeanPressure(0.1), &tight()).is_err());
+    // Memory: a 32768² free solve needs ~100 GiB, more than this machine has.
+    let e = persson::bem::check_memory(32768, Boundary::Free).unwrap_err();
+    assert!(e.to_string().contains("GiB"), "{e}");
+}
+
+fn tmp(name: &str) -> std::path::PathBuf {
+    let d = std::env::temp_dir().join(format!("persson-bem-{}", std::process::id()));
+    std::fs::create_dir_all(&d).unwrap();
+    d.join(name)
+}
+
+/// Hand-made `.npy` bytes (version 1.0).
+fn npy_bytes(descr: &str, fortran: bool, shape: &str, data: &[u8]) -> Vec<u8> {
+    let mut h = format!(
+        "{{'descr': '{descr}', 'fortran_order': {}, 'shape': {shape}, }}",
+        if fortran { "True" } else { "False" }
+    );
+    while (10 + h.len() + 1) % 64 != 0 {
+        h.push(' ');
+    }
+    h.push('\n');
+    let mut out = b"\x93NUMPY\x01\x00".to_vec();
+    out.extend_from_slice(&(h.len() as u16).to_le_bytes());
+    out.extend_from_slice(h.as_bytes());
+    out.extend_from_slice(data);
+    out
+}
+
+#[test]
+fn height_maps_round_trip_in_every_layout() {
+    let n = 8;
+    let h: Vec<f64> = (0..n * n).map(|k| k as f64 * 0.25 - 3.0).collect();
+    // f64, C order, via our writer.
+    let p = tmp("c.npy");
+    write_npy(&p, n, n, &h).unwrap();
+    assert_eq!(read_height_map(&p, 2.0).unwrap().heights, h);
+    // f64 Fortran order: column-major bytes.
+    let mut bytes = Vec::new();
+    for j in 0..n {
+        for i in 0..n {
+            bytes.extend_from_slice(&h[i * n + j].to_le_bytes());
+        }
+    }
+    let p = tmp("f.npy");
+    std::fs::write(&p, npy_bytes("<f8", true, "(8, 8)", &bytes)).unwrap();
+    assert_eq!(read_height_map(&p, 2.0).unwrap().heights, h);
+    // f32, C order (the values are exact in f32).
+    let bytes: Vec<u8> = h.iter().flat_map(|v| (*v as f32).to_le_bytes()).collect();
+    let p = tmp("s.npy");
+    std::fs::write(&p, npy_bytes("<f4", false, "(8, 8)", &bytes)).unwrap();
+    assert_eq!(read_height_map(&p, 2.0).unwrap().heights, h);
+    // Text matrix with a comment.
+    let mut text = String::from("# heights\n");
+    for i in 0..n {
+        let row: Vec<String> = (0..n).map(|j| format!("{}", h[i * n + j])).collect();
+        text.push_str(&row.join(" "));
+        text.push('\n');
+    }
+    let p = tmp("h.txt");
+    std::fs::write(&p, text).unwrap();
+    let s = read_height_map(&p, 2.0).unwrap();
+    assert_eq!((s.heights, s.size), (h.clone(), 2.0));
+}
+
+#[test]
+fn bad_height_maps_name_the_problem() {
+    let data = vec![0u8; 8 * 64];
+    let cases = [
+        ("i8.npy", npy_bytes("<i8", false, "(8, 8)", &data), "dtype"),
+        ("be.npy", npy_bytes(">f8", false, "(8, 8)", &data), "dtype"),
+        ("3d.npy", npy_bytes("<f8", false, "(4, 4, 4)", &data), "2-D"),
+        (
+            "rect.npy",
+            npy_bytes("<f8", false, "(4, 16)", &data),
+            "square",
+        ),
+        (
+            "short.npy",
+            npy_bytes("<f8", false, "(8, 8)", &data[..100]),
+            "bytes",
+        ),
+        (
+            "small.npy",
+            npy_bytes("<f8", false, "(4, 4)", &data[..128]),
+            "grid",
+        ),
+    ];
+    for (name, bytes, needle) in cases {
+        let p = tmp(name);
+        std::fs::write(&p, bytes).unwrap();
+        let e = read_height_map(&p, 1.0).unwrap_err();
+        assert!(matches!(e, Error::Parse { .. }), "{name}: {e:?}");
+        assert!(e.to_string().contains(needle), "{name}: {e}");
+    }
+    let p = tmp("nan.txt");
+    let mut t = String::new();
+    for i in 0..8 {
+        let row: Vec<&str> = (0..8)
+            .map(|j| if i == 2 && j == 3 { "nan" } else { "1" })
+            .collect();
+        t.push_str(&row.join(" "));
+        t.push('\n');
+    }
+    std::fs::write(&p, t).unwrap();
+    let e = read_height_map(&p, 1.0).unwrap_err();
+    assert!(e.to_string().contains("height[2, 3]"), "{e}");
+    let p = tmp("ragged.txt");
+    std::fs::write(&p, "1 2 3\n4 5\n").unwrap();
+    let e = read_height_map(&p, 1.0).unwrap_err();
+    assert!(e.to_string().contains(":2:"), "{e}");
+}
