@@ -62,25 +62,33 @@ impl Tabulated {
             }
         }
         let (q, c): (Vec<f64>, Vec<f64>) = points.iter().copied().unzip();
-        let slope: Vec<f64> = (0..q.len() - 1)
-            .map(|i| (c[i + 1] / c[i]).ln() / (q[i + 1] / q[i]).ln())
-            .collect();
-        let mut t = Tabulated {
+        let n = q.len();
+        let mut slope = Vec::with_capacity(n - 1);
+        let mut prefix: [Vec<f64>; 3] = Default::default();
+        let mut sums = [0.0; 3];
+        for p in prefix.iter_mut() {
+            p.reserve(n);
+            p.push(0.0);
+        }
+        for i in 0..n - 1 {
+            // ln(q_{i+1}/q_i) from the exact difference keeps close points accurate.
+            let l = ((q[i + 1] - q[i]) / q[i]).ln_1p();
+            let s = (c[i + 1] / c[i]).ln() / l;
+            slope.push(s);
+            let q2 = q[i] * q[i];
+            let mut qk1 = q2; // q_i^{k+1} for k = 1, 3, 5
+            for (j, &k) in PREFIX_ORDERS.iter().enumerate() {
+                sums[j] += c[i] * qk1 * power::integral_log(l, f64::from(k) + 1.0 + s);
+                prefix[j].push(sums[j]);
+                qk1 *= q2;
+            }
+        }
+        let t = Tabulated {
             q,
             c,
             slope,
-            prefix: Default::default(),
+            prefix,
         };
-        for (j, &k) in PREFIX_ORDERS.iter().enumerate() {
-            let mut acc = Vec::with_capacity(t.q.len());
-            let mut sum = 0.0;
-            acc.push(0.0);
-            for i in 0..t.q.len() - 1 {
-                sum += t.segment(i, k, t.q[i + 1]);
-                acc.push(sum);
-            }
-            t.prefix[j] = acc;
-        }
         Ok(t)
     }
 
@@ -122,7 +130,7 @@ impl Tabulated {
         }
         self.c[i]
             * qi.powf(f64::from(k) + 1.0)
-            * power::integral(1.0, x / qi, f64::from(k) + self.slope[i])
+            * power::integral(qi, x, f64::from(k) + self.slope[i], qi)
     }
 
     /// Segment index containing q (clamped to the table).
