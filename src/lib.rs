@@ -23,9 +23,11 @@
 #![warn(missing_docs)]
 
 pub mod error;
+pub mod io;
 pub mod kappa;
 pub mod material;
 pub mod quad;
+pub mod scene;
 pub mod special;
 pub mod spectrum;
 pub mod theory;

@@ -10,7 +10,10 @@ fn main() -> ExitCode {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             // One line, no backtrace (even with RUST_BACKTRACE set): exit code 2.
-            eprintln!("persson: error: {e:#}");
+            match e.downcast_ref::<persson::Error>() {
+                Some(pe) => eprintln!("persson: error: {pe}"),
+                None => eprintln!("persson: error: {e:#}"),
+            }
             ExitCode::from(2)
         }
     }

@@ -6,6 +6,7 @@ mod args;
 mod g;
 mod kappa;
 mod output;
+mod run;
 mod spectrum;
 
 use clap::{Parser, Subcommand};
@@ -31,6 +32,8 @@ enum Cmd {
     Area(area::Args),
     /// κ of the linear low-load law for Bush and Persson.
     Kappa(kappa::Args),
+    /// Compute what a scene file (JSON) asks for, and nothing else.
+    Run(run::Args),
 }
 
 /// Run one parsed command line.
@@ -40,5 +43,6 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
         Cmd::G(a) => g::run(a),
         Cmd::Area(a) => area::run(a),
         Cmd::Kappa(a) => kappa::run(a),
+        Cmd::Run(a) => run::run(a),
     }
 }

@@ -38,11 +38,7 @@ impl Report {
             serde_json::to_writer_pretty(&mut out, &self.json)?;
             writeln!(out)?;
         } else if f.csv {
-            writeln!(out, "{}", self.columns.join(","))?;
-            for r in &self.rows {
-                let cells: Vec<String> = r.iter().map(|v| format!("{v:e}")).collect();
-                writeln!(out, "{}", cells.join(","))?;
-            }
+            write!(out, "{}", self.csv())?;
         } else {
             writeln!(out, "{}", self.title)?;
             for (k, v) in &self.scalars {
@@ -59,6 +55,20 @@ impl Report {
             }
         }
         out.flush().context("writing to stdout")
+    }
+}
+
+impl Report {
+    /// The table as CSV: a header line, then one line per row (shortest round-trip numbers).
+    pub fn csv(&self) -> String {
+        let mut s = self.columns.join(",");
+        s.push('\n');
+        for r in &self.rows {
+            let cells: Vec<String> = r.iter().map(|v| format!("{v:e}")).collect();
+            s.push_str(&cells.join(","));
+            s.push('\n');
+        }
+        s
     }
 }
 

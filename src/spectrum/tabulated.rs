@@ -104,10 +104,7 @@ impl Tabulated {
     /// columns, an empty file; the errors of [`Tabulated::new`] and of the
     /// conversion, with the offending line.
     pub fn from_csv(path: &Path, convention: Convention) -> Result<Self> {
-        let text = std::fs::read(path).map_err(|source| Error::Io {
-            path: path.to_path_buf(),
-            source,
-        })?;
+        let text = crate::io::read(path)?;
         let text = String::from_utf8(text)
             .map_err(|e| Error::parse(path, 0, 0, format!("not UTF-8 text ({e})")))?;
         let (points, lines) = parse_two_columns(path, &text)?;
