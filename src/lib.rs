@@ -27,6 +27,7 @@ pub mod io;
 pub mod kappa;
 pub mod material;
 pub mod quad;
+pub mod report;
 pub mod scene;
 pub mod special;
 pub mod spectrum;

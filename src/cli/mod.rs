@@ -6,6 +6,7 @@ mod args;
 mod g;
 mod kappa;
 mod output;
+mod report;
 mod run;
 mod spectrum;
 
@@ -34,6 +35,8 @@ enum Cmd {
     Kappa(kappa::Args),
     /// Compute what a scene file (JSON) asks for, and nothing else.
     Run(run::Args),
+    /// Reports: error against run time, and stability at the extremes.
+    Report(report::Args),
 }
 
 /// Run one parsed command line.
@@ -44,5 +47,6 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
         Cmd::Area(a) => area::run(a),
         Cmd::Kappa(a) => kappa::run(a),
         Cmd::Run(a) => run::run(a),
+        Cmd::Report(a) => report::run(a),
     }
 }
