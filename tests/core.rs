@@ -471,3 +471,26 @@ fn bad_parameters_are_named() {
         .to_string()
         .contains("g"));
 }
+
+#[test]
+fn borri_brunetto_slope_ratios() {
+    // ../shared/theory.md §3 (seed 001 Sec. III): 1.2311, 1.5157, 1.8661, 2.2974 for
+    // L/λ = 128, 64, 32, 16 against 256 with D_f = 2.3; the seed prints 1.23 1.52 1.87 2.30.
+    // The pure power law is the limit of magnifications ≫ 1 (here ×1e8).
+    const FOUR_DECIMALS: f64 = 5e-5;
+    let s = SelfAffine::new(1.0, 1.0, 1e12, 0.7, Amplitude::RmsSlope(1.0)).unwrap();
+    let m = Persson::new(&s, 1.0).unwrap();
+    let slope = |z: f64| m.slope_variance(z * 1e8).unwrap().value.sqrt();
+    for (k, exact) in [
+        (128.0, 1.2311),
+        (64.0, 1.5157),
+        (32.0, 1.8661),
+        (16.0, 2.2974),
+    ] {
+        let r = slope(256.0) / slope(k);
+        assert!(
+            (r - exact).abs() < FOUR_DECIMALS,
+            "L/λ = {k}: {r} vs {exact}"
+        );
+    }
+}
