@@ -94,9 +94,9 @@ impl Tabulated {
 
     /// Read a two-column CSV file (q, C) in the given convention.
     ///
-    /// Lines may be separated by commas, semicolons, tabs or spaces; blank
-    /// lines and lines starting with `#` are skipped; the first data line may
-    /// be a header (it is skipped when it starts with a letter).
+    /// Cells may be separated by commas, semicolons, tabs or spaces; blank
+    /// lines and lines starting with `#` are skipped; the first line may be a
+    /// header (skipped when it starts with a letter and a cell is not a number).
     ///
     /// # Errors
     /// [`Error::Io`] if the file cannot be read; [`Error::Parse`] with the line
@@ -104,10 +104,17 @@ impl Tabulated {
     /// columns, an empty file; the errors of [`Tabulated::new`] and of the
     /// conversion, with the offending line.
     pub fn from_csv(path: &Path, convention: Convention) -> Result<Self> {
-        let text = crate::io::read(path)?;
-        let text = String::from_utf8(text)
+        Self::from_csv_bytes(path, &crate::io::read(path)?, convention)
+    }
+
+    /// Parse CSV content already in memory; `path` is only used in errors.
+    ///
+    /// # Errors
+    /// As [`Tabulated::from_csv`], without the I/O errors.
+    pub fn from_csv_bytes(path: &Path, bytes: &[u8], convention: Convention) -> Result<Self> {
+        let text = std::str::from_utf8(bytes)
             .map_err(|e| Error::parse(path, 0, 0, format!("not UTF-8 text ({e})")))?;
-        let (points, lines) = parse_two_columns(path, &text)?;
+        let (points, lines) = parse_two_columns(path, text)?;
         let points = convention
             .to_persson(&points)
             .map_err(|e| at_line(e, path, &lines))?;
@@ -233,9 +240,12 @@ pub(crate) fn parse_two_columns(path: &Path, text: &str) -> Result<Rows> {
             .split(|ch: char| ch == ',' || ch == ';' || ch.is_whitespace())
             .filter(|s| !s.is_empty())
             .collect();
-        if first && line.starts_with(|ch: char| ch.is_alphabetic()) {
+        if first
+            && cells.iter().any(|c| c.parse::<f64>().is_err())
+            && line.starts_with(|ch: char| ch.is_alphabetic())
+        {
             first = false;
-            continue; // header
+            continue; // a header: text that does not parse as numbers ("nan" does)
         }
         first = false;
         if cells.len() != 2 {
