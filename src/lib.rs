@@ -24,10 +24,14 @@
 
 #[cfg(feature = "bem")]
 pub mod bem;
+pub mod compare;
 pub mod error;
+pub mod io;
 pub mod kappa;
 pub mod material;
 pub mod quad;
+pub mod report;
+pub mod scene;
 pub mod special;
 pub mod spectrum;
 pub mod theory;
