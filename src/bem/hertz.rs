@@ -16,7 +16,7 @@
 //! Mechanics* (CUP 1985), Eqs. (4.22)–(4.23). Lecture 000 (seed), Table 1.
 
 use super::kernel::{Boundary, Operator};
-use super::solver::{Control, Options, Solver};
+use super::solver::{Control, Iteration, Options, Solver};
 use crate::error::{check, Error, Result};
 
 /// Hertz contact radius `a = (3FR/(4E*))^{1/3}` (unit of R).
@@ -185,14 +185,23 @@ pub struct HertzReport {
 /// # Errors
 /// Invalid case (grid < 8, non-positive sizes, a ≥ L/2), solver errors.
 pub fn validate(case: &HertzCase, opts: &Options) -> Result<HertzReport> {
+    validate_observed(case, opts, &mut |_| {})
+}
+
+/// [`validate`], calling `observer` once per solver iteration.
+///
+/// # Errors
+/// As [`validate`].
+pub fn validate_observed(
+    case: &HertzCase,
+    opts: &Options,
+    observer: &mut dyn FnMut(Iteration),
+) -> Result<HertzReport> {
     case.check()?;
     let op = Operator::new(case.boundary, case.grid, case.size, case.e_star)?;
     let mut solver = Solver::new(op);
-    let sol = solver.solve(
-        &case.heights(),
-        Control::MeanPressure(case.mean_pressure()),
-        opts,
-    )?;
+    let control = Control::MeanPressure(case.mean_pressure());
+    let sol = solver.solve_observed(&case.heights(), control, opts, observer)?;
     let exact = case.exact_pressure();
     let err: Vec<f64> = sol
         .pressure

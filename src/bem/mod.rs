@@ -107,3 +107,52 @@ fn available_memory() -> Option<u64> {
     let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
     Some(kib * 1024)
 }
+
+/// One bin of a pressure histogram.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct HistogramBin {
+    /// Lower edge of the bin (unit of p).
+    pub pressure_low: f64,
+    /// Upper edge of the bin.
+    pub pressure_high: f64,
+    /// P(σ): nodes in the bin / (N² · bin width), so that the bins integrate
+    /// to the contact fraction A/A0 (Persson's P(σ) without the δ(σ) of the
+    /// non-contact area).
+    pub density: f64,
+}
+
+/// Histogram of the contact pressures (p > 0) over `bins` equal bins from 0
+/// to max p.
+///
+/// # Formula
+/// ```text
+/// P_k = #{i : p_i ∈ bin k, p_i > 0} / (N² Δσ),   Σ_k P_k Δσ = A/A0
+/// ```
+///
+/// # Errors
+/// `bins == 0`.
+pub fn pressure_histogram(pressure: &[f64], bins: usize) -> Result<Vec<HistogramBin>> {
+    if bins == 0 {
+        return Err(Error::invalid("bins", 0.0, ">= 1"));
+    }
+    let p_max = pressure.iter().copied().fold(0.0, f64::max);
+    if p_max <= 0.0 {
+        return Ok(Vec::new());
+    }
+    let width = p_max / bins as f64;
+    let mut counts = vec![0usize; bins];
+    for &p in pressure.iter().filter(|p| **p > 0.0) {
+        let k = ((p / width) as usize).min(bins - 1);
+        counts[k] += 1;
+    }
+    let norm = 1.0 / (pressure.len() as f64 * width);
+    Ok(counts
+        .iter()
+        .enumerate()
+        .map(|(k, &c)| HistogramBin {
+            pressure_low: k as f64 * width,
+            pressure_high: (k + 1) as f64 * width,
+            density: c as f64 * norm,
+        })
+        .collect())
+}

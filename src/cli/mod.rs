@@ -3,6 +3,8 @@
 
 mod area;
 mod args;
+#[cfg(feature = "bem")]
+mod bem;
 mod g;
 mod kappa;
 mod output;
@@ -37,6 +39,9 @@ enum Cmd {
     Run(run::Args),
     /// Reports: error against run time, and stability at the extremes.
     Report(report::Args),
+    /// FFT boundary-element cross-check: Hertz validation and rough contact.
+    #[cfg(feature = "bem")]
+    Bem(bem::Args),
 }
 
 /// Run one parsed command line.
@@ -48,5 +53,7 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
         Cmd::Kappa(a) => kappa::run(a),
         Cmd::Run(a) => run::run(a),
         Cmd::Report(a) => report::run(a),
+        #[cfg(feature = "bem")]
+        Cmd::Bem(a) => bem::run(a),
     }
 }
