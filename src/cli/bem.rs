@@ -27,7 +27,7 @@ enum Cmd {
     /// Hertz validation: energy-norm error η, fitted contact radius and peak pressure.
     Hertz(HertzArgs),
     /// Rough contact: contact fraction at each nominal pressure.
-    Rough(RoughArgs),
+    Rough(Box<RoughArgs>),
 }
 
 /// Boundary condition flag.
@@ -421,7 +421,7 @@ impl Progress {
     #[allow(unused_variables)]
     fn tick(&self, it: Iteration) {
         #[cfg(feature = "progress")]
-        if it.iteration % 10 == 0 {
+        if it.iteration.is_multiple_of(10) {
             self.bar.set_message(format!(
                 "iteration {} residual {:.2e} contact {:.4}",
                 it.iteration, it.residual, it.contact_fraction
