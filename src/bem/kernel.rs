@@ -74,6 +74,9 @@ pub struct Operator {
     multiplier: Vec<f64>,
     real: Vec<f64>,
     spec: Vec<Complex64>,
+    /// Real-space periodic kernel `k[(i − i')·N + (j − j')]` (periodic only;
+    /// empty for the free operator), for sparse updates.
+    spatial: Vec<f64>,
 }
 
 impl Operator {
@@ -127,7 +130,18 @@ impl Operator {
                 spec.iter().map(|z| z.re * norm).collect()
             }
         };
-        let real = vec![0.0; n * nf];
+        let mut real = vec![0.0; n * nf];
+        let mut fft = fft;
+        let spatial = match boundary {
+            Boundary::Periodic => {
+                for (z, m) in spec.iter_mut().zip(&multiplier) {
+                    *z = Complex64::new(*m, 0.0);
+                }
+                fft.inverse(&mut spec, &mut real)?;
+                real.clone()
+            }
+            Boundary::Free => Vec::new(),
+        };
         Ok(Operator {
             boundary,
             n,
@@ -137,6 +151,7 @@ impl Operator {
             multiplier,
             real,
             spec,
+            spatial,
         })
     }
 
@@ -185,15 +200,42 @@ impl Operator {
         for (z, m) in self.spec.iter_mut().zip(&self.multiplier) {
             *z *= *m;
         }
-        self.fft.inverse(&mut self.spec, &mut self.real)?;
         if nf == n {
-            u.copy_from_slice(&self.real);
+            self.fft.inverse(&mut self.spec, u)?;
         } else {
+            self.fft.inverse(&mut self.spec, &mut self.real)?;
             for (dst, src) in u.chunks_exact_mut(n).zip(self.real.chunks_exact(nf)) {
                 dst.copy_from_slice(&src[..n]);
             }
         }
         Ok(())
+    }
+
+    /// Add `𝒢 c` for a sparse `c` (values `c[k]` at flat indices `idx[k]`)
+    /// to `u` by direct summation: `m·N²` operations instead of two FFTs.
+    /// Returns `false` (and leaves `u` alone) for the free operator, which
+    /// keeps no real-space kernel.
+    pub fn add_sparse(&self, idx: &[usize], c: &[f64], u: &mut [f64]) -> bool {
+        if self.spatial.is_empty() {
+            return false;
+        }
+        let n = self.n;
+        for (i, urow) in u.chunks_exact_mut(n).enumerate() {
+            for (&k, &ck) in idx.iter().zip(c) {
+                let (ki, kj) = (k / n, k % n);
+                let di = (i + n - ki) % n;
+                let krow = &self.spatial[di * n..(di + 1) * n];
+                // u[i, j] += c k[di, (j − kj) mod N]: two contiguous runs.
+                let (head, tail) = urow.split_at_mut(kj);
+                for (x, y) in tail.iter_mut().zip(&krow[..n - kj]) {
+                    *x += ck * y;
+                }
+                for (x, y) in head.iter_mut().zip(&krow[n - kj..]) {
+                    *x += ck * y;
+                }
+            }
+        }
+        true
     }
 
     /// The energy product `⟨a, 𝒢 b⟩ = Σ a_i (𝒢b)_i Δ²` (work units: force × length).

@@ -1,0 +1,65 @@
+//! Benchmarks of the boundary-element solver (feature `bem`): one operator
+//! application (two 2-D real FFTs), and whole solves (Hertz, rough).
+//!
+//! `cargo bench --bench bem`
+
+use persson::bem::surface::synthesize;
+use persson::bem::{hertz, Boundary, Control, Operator, Options, Solver};
+use persson::spectrum::{Amplitude, SelfAffine};
+
+fn main() {
+    divan::main();
+}
+
+#[divan::bench(args = [256, 512, 1024])]
+fn apply_periodic(bencher: divan::Bencher, n: usize) {
+    let mut op = Operator::new(Boundary::Periodic, n, 1.0, 1.0).unwrap();
+    let p: Vec<f64> = (0..n * n).map(|k| (k % 7) as f64).collect();
+    let mut u = vec![0.0; n * n];
+    bencher.bench_local(|| op.apply(divan::black_box(&p), &mut u).unwrap());
+}
+
+#[divan::bench(args = [256, 512])]
+fn apply_free(bencher: divan::Bencher, n: usize) {
+    let mut op = Operator::new(Boundary::Free, n, 1.0, 1.0).unwrap();
+    let p: Vec<f64> = (0..n * n).map(|k| (k % 7) as f64).collect();
+    let mut u = vec![0.0; n * n];
+    bencher.bench_local(|| op.apply(divan::black_box(&p), &mut u).unwrap());
+}
+
+#[divan::bench(args = [256, 512], sample_count = 5)]
+fn hertz_periodic(n: usize) -> f64 {
+    let opts = Options {
+        tol: 1e-10,
+        ..Options::default()
+    };
+    hertz::validate(&hertz::HertzCase::new(n, Boundary::Periodic), &opts)
+        .unwrap()
+        .energy_error
+}
+
+#[divan::bench(args = [256, 512], sample_count = 5)]
+fn rough_periodic(bencher: divan::Bencher, n: usize) {
+    // H = 0.8, rms slope 0.1, q_l = 2π, q_r = 4 q_l, q_s = (N/4) q_l, p = 0.005 E*.
+    let ql = std::f64::consts::TAU;
+    let s = SelfAffine::new(
+        ql,
+        4.0 * ql,
+        ql * n as f64 / 4.0,
+        0.8,
+        Amplitude::RmsSlope(0.1),
+    )
+    .unwrap();
+    let surf = synthesize(&s, n, 1.0, 1).unwrap();
+    let opts = Options {
+        tol: 1e-10,
+        ..Options::default()
+    };
+    bencher.bench_local(|| {
+        let mut solver = Solver::new(Operator::new(Boundary::Periodic, n, 1.0, 1.0).unwrap());
+        solver
+            .solve(&surf.heights, Control::MeanPressure(0.005), &opts)
+            .unwrap()
+            .contact_fraction
+    });
+}

@@ -1,0 +1,99 @@
+#!/usr/bin/env python3
+"""Side-by-side timing of `persson bem` and Tamaas on the same input.
+
+Both solvers get the same heights, load, modulus and tolerance (Tamaas's
+PolonskyKeerRey error and ours are the same measure: the p-weighted gap over
+the contact, relative to the standard deviation of the heights), one thread.
+
+Usage (Tamaas lives in a venv outside the repo):
+    python3 -m venv /work/venv-tamaas && /work/venv-tamaas/bin/pip install tamaas
+    cargo build --release
+    OMP_NUM_THREADS=1 /work/venv-tamaas/bin/python examples/tamaas_compare.py \
+        [--grids 512 1024] [--tol 1e-10] [--bin target/release/persson]
+
+For each grid it runs the Hertz periodic case (a = 0.1 L, R = L = E* = 1) and
+a rough case (self-affine H = 0.8, rms slope 0.1, q_l = 2π/L, q_r = 4 q_l,
+q_s = (N/4)(2π/L), seed 1, mean pressure 0.005 E*), and prints one line per
+case: both times, their ratio, the contact fractions and the largest pressure
+difference relative to the peak pressure.
+"""
+import argparse
+import json
+import math
+import os
+import subprocess
+import tempfile
+import time
+
+import numpy as np
+import tamaas as tm
+
+
+def tamaas_solve(heights, pressure, tol):
+    n = heights.shape[0]
+    model = tm.ModelFactory.createModel(tm.model_type.basic_2d, [1.0, 1.0], [n, n])
+    model.E = 1.0
+    model.nu = 0.0  # E* = E/(1 − ν²) = 1
+    solver = tm.PolonskyKeerRey(model, heights, tol)
+    solver.max_iter = 10000
+    t = time.perf_counter()
+    solver.solve(pressure)
+    dt = time.perf_counter() - t
+    return np.array(model.traction).reshape(n, n), dt
+
+
+def ours(binary, args):
+    out = subprocess.run([binary, "bem"] + args + ["--json"], check=True,
+                         capture_output=True, text=True).stdout
+    return json.loads(out)
+
+
+def compare(name, n, heights, pressure, ours_json, ours_p, tol):
+    p_tm, t_tm = tamaas_solve(heights, pressure, tol)
+    pt = ours_json["points"][0] if "points" in ours_json else ours_json
+    t_us = pt["seconds"]
+    frac_tm = float((p_tm > 0).mean())
+    dp = float(np.abs(p_tm - ours_p).max() / p_tm.max())
+    print(f"{name:<16} {n:>5}  tamaas {t_tm:7.3f} s  persson {t_us:7.3f} s  "
+          f"speed-up {t_tm / t_us:5.1f}x  A/A0 {frac_tm:.6f} vs {pt['contact_fraction']:.6f} "
+          f"(diff {abs(frac_tm - pt['contact_fraction']):.1e})  max|dp|/p_max {dp:.1e}  "
+          f"iterations {pt['iterations']}", flush=True)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--grids", type=int, nargs="+", default=[512, 1024])
+    ap.add_argument("--tol", type=float, default=1e-10)
+    ap.add_argument("--bin", default="target/release/persson")
+    a = ap.parse_args()
+    if os.environ.get("OMP_NUM_THREADS") != "1":
+        print("warning: set OMP_NUM_THREADS=1 for a one-thread comparison")
+    tmp = tempfile.mkdtemp()
+    for n in a.grids:
+        # Hertz, periodic: the same nodes and paraboloid as `persson bem hertz`.
+        x = np.arange(n) / n - 0.5
+        X, Y = np.meshgrid(x, x, indexing="ij")
+        heights = -(X ** 2 + Y ** 2) / 2.0
+        hz = os.path.join(tmp, "hertz.npy")
+        np.save(hz, heights)
+        pf = os.path.join(tmp, "p_hertz.npy")
+        load = 4 * 0.1 ** 3 / 3
+        js = ours(a.bin, ["rough", "--surface", hz, "--size", "1", "--modulus", "1",
+                          "--pressure", repr(load), "--tol", repr(a.tol),
+                          "--pressure-field", pf])
+        compare("hertz periodic", n, heights, load, js, np.load(pf), a.tol)
+
+        # Rough: synthesised by persson, written to .npy, read by Tamaas.
+        ql = 2 * math.pi
+        surf = os.path.join(tmp, "rough.npy")
+        pf = os.path.join(tmp, "p_rough.npy")
+        js = ours(a.bin, ["rough", "--hurst", "0.8", "--q-l", repr(ql), "--q-r", repr(4 * ql),
+                          "--q-s", repr(ql * n / 4), "--rms-slope", "0.1", "--size", "1",
+                          "--grid", str(n), "--seed", "1", "--modulus", "1",
+                          "--pressure", "0.005", "--tol", repr(a.tol),
+                          "--surface-out", surf, "--pressure-field", pf])
+        compare("rough H=0.8", n, np.load(surf), 0.005, js, np.load(pf), a.tol)
+
+
+if __name__ == "__main__":
+    main()
