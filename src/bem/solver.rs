@@ -138,13 +138,19 @@ pub struct Solver {
 /// Independent partial sums per reduction (lets the compiler vectorise).
 const LANES: usize = 4;
 
-/// `g −= ḡ` everywhere; returns `Σ_c g²` over the contact `p > 0`.
-fn shift_and_norm(g: &mut [f64], p: &[f64], g_bar: f64) -> f64 {
+/// The pending part of a step: `p ← scale·p`, `u ← scale·(u − τ r)`.
+#[derive(Debug, Clone, Copy)]
+struct Pending {
+    scale: f64,
+    tau: f64,
+}
+
+/// `Σ_c (g − ḡ)²` over the contact `p > 0`.
+fn contact_norm(g: &[f64], p: &[f64], g_bar: f64) -> f64 {
     let mut acc = [0.0f64; LANES];
-    for (gc, pc) in g.chunks_mut(LANES).zip(p.chunks(LANES)) {
+    for (gc, pc) in g.chunks(LANES).zip(p.chunks(LANES)) {
         for l in 0..gc.len() {
             let v = gc[l] - g_bar;
-            gc[l] = v;
             let m = if pc[l] > 0.0 { 1.0 } else { 0.0 };
             acc[l] += m * v * v;
         }
@@ -152,8 +158,8 @@ fn shift_and_norm(g: &mut [f64], p: &[f64], g_bar: f64) -> f64 {
     acc.iter().sum()
 }
 
-/// `[Σ_c r, Σ t, Σ g t, Σ r t]` (t vanishes off the contact).
-fn step_sums(p: &[f64], r: &[f64], t: &[f64], g: &[f64]) -> [f64; 4] {
+/// `[Σ_c r, Σ t, Σ (g − ḡ) t, Σ r t]` (t vanishes off the contact).
+fn step_sums(p: &[f64], r: &[f64], t: &[f64], g: &[f64], g_bar: f64) -> [f64; 4] {
     let mut acc = [[0.0f64; LANES]; 4];
     let chunks = p
         .chunks(LANES)
@@ -165,7 +171,7 @@ fn step_sums(p: &[f64], r: &[f64], t: &[f64], g: &[f64]) -> [f64; 4] {
             let m = if pc[l] > 0.0 { 1.0 } else { 0.0 };
             acc[0][l] += m * rc[l];
             acc[1][l] += tc[l];
-            acc[2][l] += gc[l] * tc[l];
+            acc[2][l] += (gc[l] - g_bar) * tc[l];
             acc[3][l] += rc[l] * tc[l];
         }
     }
@@ -187,7 +193,9 @@ struct GapStats {
     sum_pg: f64,
     sum_pabs: f64,
     g_min: f64,
-    sum_g: f64,
+    /// Σ_c (g − g_ref) and Σ_c (g − g_ref)² over the contact.
+    sum_dg: f64,
+    sum_dg2: f64,
     count: usize,
     /// Lowest gap outside the contact set.
     g_min_off: f64,
@@ -312,10 +320,21 @@ impl Solver {
         let mut fresh = true;
         let mut g_old = 1.0;
         let mut conjugate = false;
+        // The step's rescaling s and the linear displacement update
+        // u ← s(u − τ𝒢t) are applied lazily, in the next gap pass.
+        let mut pending = Pending {
+            scale: 1.0,
+            tau: 0.0,
+        };
+        let mut g_ref = 0.0;
         self.t.fill(0.0);
         let mut k = 0usize;
         let (residual, stats) = loop {
-            let st = self.gap_stats(heights, offset);
+            let st = self.gap_stats(heights, offset, pending, g_ref);
+            pending = Pending {
+                scale: 1.0,
+                tau: 0.0,
+            };
             let eps = match target {
                 Some(_) if st.sum_p > 0.0 => {
                     (st.sum_pg - st.g_min * st.sum_p) / (st.sum_p * sigma_h)
@@ -352,20 +371,32 @@ impl Solver {
                 // No contact but overlap: start the pressure there.
                 conjugate = false;
             }
-            // Gap relative to its contact mean (load control) and its norm.
-            let g_bar = match target {
-                Some(_) if st.count > 0 => st.sum_g / st.count as f64,
-                _ => 0.0,
+            // Gap relative to its contact mean ḡ (load control) and its norm
+            // Σ_c (g − ḡ)², from sums about the reference g_ref (the last ḡ);
+            // recomputed directly when that cancels more than 6 digits.
+            let (g_bar, g_norm) = match target {
+                Some(_) if st.count > 0 => {
+                    let c = st.count as f64;
+                    let d = st.sum_dg / c;
+                    let norm = st.sum_dg2 - c * d * d;
+                    let g_bar = g_ref + d;
+                    if norm > 1e-6 * st.sum_dg2 {
+                        (g_bar, norm)
+                    } else {
+                        (g_bar, contact_norm(&self.g, &self.p, g_bar))
+                    }
+                }
+                _ => (0.0, contact_norm(&self.g, &self.p, 0.0)),
             };
-            let g_norm = shift_and_norm(&mut self.g, &self.p, g_bar);
+            g_ref = g_bar;
             let beta = if conjugate { g_norm / g_old } else { 0.0 };
             g_old = g_norm;
             for ((t, g), p) in self.t.iter_mut().zip(&self.g).zip(&self.p) {
                 let m = if *p > 0.0 { 1.0 } else { 0.0 };
-                *t = m * (*g + beta * *t);
+                *t = m * (*g - g_bar + beta * *t);
             }
             self.op.apply(&self.t, &mut self.r)?;
-            let [s_r, s_t, s_gt, s_rt] = step_sums(&self.p, &self.r, &self.t, &self.g);
+            let [s_r, s_t, s_gt, s_rt] = step_sums(&self.p, &self.r, &self.t, &self.g, g_bar);
             let denom = match target {
                 Some(_) if st.count > 0 => s_rt - s_r / st.count as f64 * s_t,
                 _ => s_rt,
@@ -391,8 +422,9 @@ impl Solver {
                 // p − τt (t = 0 off the contact, where p = 0 too), clamped.
                 let linear = *p - tau * t;
                 let clamped = if linear > 0.0 { linear } else { 0.0 };
-                let enters = (clamped == 0.0) & (*g < 0.0);
-                let v = if enters { entry * g } else { clamped };
+                let gs = *g - g_bar;
+                let enters = (clamped == 0.0) & (gs < 0.0);
+                let v = if enters { entry * gs } else { clamped };
                 overlap |= enters;
                 *p = v;
                 sum_p += v;
@@ -405,25 +437,22 @@ impl Solver {
                 }
             }
             conjugate = !overlap;
-            let s = match target {
+            let scale = match target {
                 Some(pm) if sum_p > 0.0 => pm * n2 as f64 / sum_p,
                 _ => 1.0,
             };
-            if s != 1.0 {
-                self.p.iter_mut().for_each(|v| *v *= s);
-            }
             let sparse = changed <= limit
                 && self
                     .op
                     .add_sparse(&self.sparse_idx, &self.sparse_val, &mut self.u);
             if changed == 0 || sparse {
                 // u = s (u − τ 𝒢t + 𝒢c), c the sparse correction (just added).
-                for (u, r) in self.u.iter_mut().zip(&self.r) {
-                    *u = s * (*u - tau * r);
-                }
+                pending = Pending { scale, tau };
                 fresh = false;
             } else {
+                // u = 𝒢(s p) = s 𝒢p.
                 self.op.apply(&self.p, &mut self.u)?;
+                pending = Pending { scale, tau: 0.0 };
                 fresh = true;
             }
             k += 1;
@@ -456,29 +485,42 @@ impl Solver {
         })
     }
 
+    /// Apply the pending step (`p ← s p`, `u ← s(u − τ r)`), then
     /// `g = u − h + offset` in `self.g`, and the contact sums.
-    fn gap_stats(&mut self, heights: &[f64], offset: f64) -> GapStats {
+    fn gap_stats(&mut self, heights: &[f64], offset: f64, step: Pending, g_ref: f64) -> GapStats {
         // Branch-free, in LANES independent partial sums (vectorisable); the
         // contact set is an irregular pattern that defeats branch prediction.
-        let mut acc = [[0.0f64; LANES]; 5]; // Σp, Σpg, Σp|g|, Σ_c g, count
+        let mut acc = [[0.0f64; LANES]; 6]; // Σp, Σpg, Σp|g|, Σ_c δg, Σ_c δg², count
         let mut g_min = [f64::INFINITY; LANES];
         let mut g_off = [f64::INFINITY; LANES];
         let n2 = self.g.len();
-        let (g, u, p) = (&mut self.g[..n2], &self.u[..n2], &self.p[..n2]);
+        let (g, u, p, r) = (
+            &mut self.g[..n2],
+            &mut self.u[..n2],
+            &mut self.p[..n2],
+            &self.r[..n2],
+        );
         let h = &heights[..n2];
+        let (s, tau) = (step.scale, step.tau);
         let mut i = 0;
         while i + LANES <= n2 {
             for l in 0..LANES {
                 let k = i + l;
-                let gi = u[k] - h[k] + offset;
+                let pk = s * p[k];
+                p[k] = pk;
+                let uk = s * (u[k] - tau * r[k]);
+                u[k] = uk;
+                let gi = uk - h[k] + offset;
                 g[k] = gi;
-                let c = p[k] > 0.0;
+                let c = pk > 0.0;
                 let m = if c { 1.0 } else { 0.0 };
-                acc[0][l] += p[k];
-                acc[1][l] += p[k] * gi;
-                acc[2][l] += p[k] * gi.abs();
-                acc[3][l] += m * gi;
-                acc[4][l] += m;
+                let dg = m * (gi - g_ref);
+                acc[0][l] += pk;
+                acc[1][l] += pk * gi;
+                acc[2][l] += pk * gi.abs();
+                acc[3][l] += dg;
+                acc[4][l] += dg * dg;
+                acc[5][l] += m;
                 let (on, off) = if c {
                     (gi, f64::INFINITY)
                 } else {
@@ -490,15 +532,19 @@ impl Solver {
             i += LANES;
         }
         for k in i..n2 {
-            let gi = u[k] - h[k] + offset;
+            let pk = s * p[k];
+            p[k] = pk;
+            let uk = s * (u[k] - tau * r[k]);
+            u[k] = uk;
+            let gi = uk - h[k] + offset;
             g[k] = gi;
-            let c = p[k] > 0.0;
-            acc[0][0] += p[k];
-            acc[1][0] += p[k] * gi;
-            acc[2][0] += p[k] * gi.abs();
-            if c {
-                acc[3][0] += gi;
-                acc[4][0] += 1.0;
+            acc[0][0] += pk;
+            acc[1][0] += pk * gi;
+            acc[2][0] += pk * gi.abs();
+            if pk > 0.0 {
+                acc[3][0] += gi - g_ref;
+                acc[4][0] += (gi - g_ref) * (gi - g_ref);
+                acc[5][0] += 1.0;
                 g_min[0] = g_min[0].min(gi);
             } else {
                 g_off[0] = g_off[0].min(gi);
@@ -509,8 +555,9 @@ impl Solver {
             sum_p: sum(&acc[0]),
             sum_pg: sum(&acc[1]),
             sum_pabs: sum(&acc[2]),
-            sum_g: sum(&acc[3]),
-            count: sum(&acc[4]) as usize,
+            sum_dg: sum(&acc[3]),
+            sum_dg2: sum(&acc[4]),
+            count: sum(&acc[5]) as usize,
             g_min: g_min.iter().copied().fold(f64::INFINITY, f64::min),
             g_min_off: g_off.iter().copied().fold(f64::INFINITY, f64::min),
         };
