@@ -351,3 +351,150 @@ fn bad_height_maps_name_the_problem() {
     let e = read_height_map(&p, 1.0).unwrap_err();
     assert!(e.to_string().contains(":2:"), "{e}");
 }
+
+#[cfg(feature = "cli")]
+mod cli {
+    use std::process::Command;
+
+    fn persson(args: &[&str]) -> (i32, String, String) {
+        let out = Command::new(env!("CARGO_BIN_EXE_persson"))
+            .args(args)
+            .env("RUST_BACKTRACE", "1")
+            .output()
+            .unwrap();
+        (
+            out.status.code().unwrap_or(-1),
+            String::from_utf8_lossy(&out.stdout).into_owned(),
+            String::from_utf8_lossy(&out.stderr).into_owned(),
+        )
+    }
+
+    #[test]
+    fn hertz_json_has_the_issue_keys() {
+        let (code, out, err) = persson(&["bem", "hertz", "--grid", "64", "--json"]);
+        assert_eq!(code, 0, "{err}");
+        let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+        for key in [
+            "energy_error",
+            "contact_radius",
+            "contact_radius_error",
+            "peak_pressure",
+            "peak_pressure_error",
+            "contact_fraction",
+            "iterations",
+            "seconds",
+        ] {
+            assert!(v[key].is_number(), "{key} missing in {out}");
+        }
+        // Lecture 000, Table 1 (64², free): 1.40e-2.
+        assert!(v["energy_error"].as_f64().unwrap() < 1.40e-2);
+    }
+
+    #[test]
+    fn rough_sweep_prints_points_and_is_reproducible() {
+        let args = [
+            "bem",
+            "rough",
+            "--hurst",
+            "0.8",
+            "--q-l",
+            "6.283185307179586",
+            "--q-r",
+            "25.132741228718345",
+            "--q-s",
+            "100.53096491487338",
+            "--rms-slope",
+            "0.1",
+            "--grid",
+            "64",
+            "--seed",
+            "5",
+            "--modulus",
+            "1",
+            "--pressure",
+            "0.002,100",
+            "--json",
+        ];
+        let (code, out, err) = persson(&args);
+        assert_eq!(code, 0, "{err}");
+        let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+        let pts = v["points"].as_array().unwrap();
+        assert_eq!(pts.len(), 2);
+        for p in pts {
+            for key in ["pressure", "contact_fraction", "iterations", "seconds"] {
+                assert!(p[key].is_number(), "{key} missing in {p}");
+            }
+        }
+        // Full contact at a high pressure is an answer.
+        assert_eq!(pts[1]["contact_fraction"].as_f64(), Some(1.0));
+        let (_, again, _) = persson(&args);
+        let w: serde_json::Value = serde_json::from_str(&again).unwrap();
+        assert_eq!(
+            v["points"][0]["contact_fraction"],
+            w["points"][0]["contact_fraction"]
+        );
+    }
+
+    #[test]
+    fn bad_input_exits_2_without_panic() {
+        let dir = std::env::temp_dir().join(format!("persson-bem-cli-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let bad = dir.join("bad.txt");
+        std::fs::write(&bad, "1 2 3\n4 5 6\n").unwrap();
+        let bad = bad.to_str().unwrap();
+        let cases: [&[&str]; 5] = [
+            &["bem", "hertz", "--grid", "4"],
+            &["bem", "hertz", "--grid", "32768", "--boundary", "free"],
+            &[
+                "bem",
+                "rough",
+                "--surface",
+                bad,
+                "--size",
+                "1",
+                "--modulus",
+                "1",
+                "--pressure",
+                "1",
+            ],
+            &[
+                "bem",
+                "rough",
+                "--hurst",
+                "0.8",
+                "--q-l",
+                "6.3",
+                "--q-s",
+                "60",
+                "--rms-slope",
+                "0.1",
+                "--grid",
+                "16",
+                "--modulus",
+                "1",
+                "--pressure",
+                "0",
+            ],
+            &[
+                "bem",
+                "rough",
+                "--surface",
+                "/nonexistent.npy",
+                "--size",
+                "1",
+                "--modulus",
+                "1",
+                "--pressure",
+                "1",
+            ],
+        ];
+        for args in cases {
+            let (code, _, err) = persson(args);
+            assert_eq!(code, 2, "{args:?}: {err}");
+            assert!(
+                err.starts_with("persson: error:") && !err.contains("panicked"),
+                "{err}"
+            );
+        }
+    }
+}
