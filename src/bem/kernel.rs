@@ -70,7 +70,8 @@ pub struct Operator {
     e_star: f64,
     fft: Fft2,
     /// Multiplier of the transposed half spectrum, including the `1/n_f²`
-    /// normalisation of the inverse FFT (real: both kernels are even).
+    /// normalisation of the inverse FFT (real: both kernels are even), for
+    /// `k_i ≤ n_f/2` only (`(n_f/2+1)` values per row; symmetric in k_i).
     multiplier: Vec<f64>,
     real: Vec<f64>,
     spec: Vec<Complex64>,
@@ -94,9 +95,7 @@ impl Operator {
             Boundary::Periodic => n,
             Boundary::Free => 2 * n,
         };
-        let fft = Fft2::new(nf, n)?;
-        let nc = fft.nc();
-        let mut spec = vec![Complex64::new(0.0, 0.0); fft.spectrum_len()];
+        let nc = nf / 2 + 1;
         let norm = 1.0 / (nf as f64 * nf as f64);
         let multiplier = match boundary {
             Boundary::Periodic => {
@@ -115,23 +114,15 @@ impl Operator {
                 }
                 m
             }
-            Boundary::Free => {
-                // The full 2N × 2N circulant kernel, transformed once.
-                let dx = size / n as f64;
-                let c = dx / (std::f64::consts::PI * e_star);
-                let mut full = Fft2::new(nf, nf)?;
-                let mut k = vec![0.0; nf * nf];
-                for i in 0..nf {
-                    for j in 0..nf {
-                        k[i * nf + j] = c * love_cell(signed(i, nf) as f64, signed(j, nf) as f64);
-                    }
-                }
-                full.forward(&mut k, &mut spec)?;
-                spec.iter().map(|z| z.re * norm).collect()
-            }
+            Boundary::Free => Vec::new(), // built below, in the operator's buffers
         };
+        let mut fft = Fft2::new(nf, n)?;
+        let mut spec = vec![Complex64::new(0.0, 0.0); fft.spectrum_len()];
         let mut real = vec![0.0; n * nf];
-        let mut fft = fft;
+        let multiplier = match boundary {
+            Boundary::Periodic => multiplier,
+            Boundary::Free => free_multiplier(&mut fft, &mut spec, &mut real, size, e_star)?,
+        };
         let spatial = match boundary {
             Boundary::Periodic => {
                 for (z, m) in spec.iter_mut().zip(&multiplier) {
@@ -142,6 +133,17 @@ impl Operator {
             }
             Boundary::Free => Vec::new(),
         };
+        // Both kernels are even, so the multiplier is symmetric in
+        // k_i ↔ n_f − k_i: keep k_i = 0 … n_f/2 only.
+        let half = nf / 2 + 1;
+        let mut multiplier = multiplier;
+        if multiplier.len() == nc * nf {
+            for kj in 0..nc {
+                multiplier.copy_within(kj * nf..kj * nf + half, kj * half);
+            }
+            multiplier.truncate(nc * half);
+            multiplier.shrink_to_fit();
+        }
         Ok(Operator {
             boundary,
             n,
@@ -197,8 +199,20 @@ impl Operator {
             }
         }
         self.fft.forward(&mut self.real, &mut self.spec)?;
-        for (z, m) in self.spec.iter_mut().zip(&self.multiplier) {
-            *z *= *m;
+        let half = nf / 2 + 1;
+        for (row, m) in self
+            .spec
+            .chunks_exact_mut(nf)
+            .zip(self.multiplier.chunks_exact(half))
+        {
+            let (low, high) = row.split_at_mut(half);
+            for (z, m) in low.iter_mut().zip(m) {
+                *z *= *m;
+            }
+            // k_i = n_f − 1 … half  ↔  multiplier index 1 … n_f − half.
+            for (z, m) in high.iter_mut().rev().zip(&m[1..]) {
+                *z *= *m;
+            }
         }
         if nf == n {
             self.fft.inverse(&mut self.spec, u)?;
@@ -249,6 +263,41 @@ impl Operator {
         let da = (self.size / self.n as f64).powi(2);
         Ok(a.iter().zip(work.iter()).map(|(x, y)| x * y).sum::<f64>() * da)
     }
+}
+
+/// The free operator's multiplier (half rows, `k_i ≤ N`), from the 2N × 2N
+/// circulant Love kernel, in the operator's own buffers: the kernel's top
+/// and bottom N rows are transformed separately by the pruned FFT and
+/// combined, `K̂ = F(top) + (−1)^{k_i} F(bottom)` (a shift by N rows).
+fn free_multiplier(
+    fft: &mut Fft2,
+    spec: &mut [Complex64],
+    real: &mut [f64],
+    size: f64,
+    e_star: f64,
+) -> Result<Vec<f64>> {
+    let nf = fft.n();
+    let n = nf / 2;
+    let (nc, half) = (fft.nc(), nf / 2 + 1);
+    let c = size / n as f64 / (std::f64::consts::PI * e_star);
+    let norm = 1.0 / (nf as f64 * nf as f64);
+    let mut m = vec![0.0; nc * half];
+    for part in 0..2 {
+        for i in 0..n {
+            let si = signed(i + part * n, nf) as f64;
+            for j in 0..nf {
+                real[i * nf + j] = c * love_cell(si, signed(j, nf) as f64);
+            }
+        }
+        fft.forward(real, spec)?;
+        for kj in 0..nc {
+            for ki in 0..half {
+                let sign = if part == 1 && ki % 2 == 1 { -1.0 } else { 1.0 };
+                m[kj * half + ki] += sign * spec[kj * nf + ki].re * norm;
+            }
+        }
+    }
+    Ok(m)
 }
 
 /// FFT index `k ∈ 0 … n` to the signed frequency `k` or `k − n`

@@ -66,9 +66,11 @@ pub fn check_grid(n: usize) -> Result<()> {
 
 /// Bytes a solve on an `n × n` grid needs: the solver's five fields, the
 /// three fields of the returned [`Solution`], the surface and a spare, and
-/// the operator's buffers (4.5 N² values periodic, 10 N² free). Measured
-/// peak resident size of `persson bem rough` at 1024²: 14.0 N² values
-/// periodic, 19.6 N² free.
+/// the operator's buffers (4.25 N² values periodic, 9 N² free): a
+/// workspace of 10.25 N² (periodic) or 15 N² (free) values with the
+/// surface. Measured peak resident size of `persson bem rough` at 1024²,
+/// allocator retention and the binary included: 12.1 N² values periodic,
+/// 16.6 N² free.
 pub fn required_bytes(n: usize, boundary: Boundary) -> u64 {
     let n2 = (n as u64) * (n as u64);
     let fields = 10 * n2;

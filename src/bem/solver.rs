@@ -120,7 +120,9 @@ pub struct Solution {
 /// The Polonsky–Keer solver with its preallocated workspace.
 ///
 /// All buffers (5 N² values plus the operator's) are allocated by
-/// [`Solver::new`]; an iteration allocates nothing.
+/// [`Solver::new`]; an iteration allocates nothing. The gap and displacement
+/// buffers move into the returned [`Solution`] and are allocated again by the
+/// next solve.
 #[derive(Debug)]
 pub struct Solver {
     op: Operator,
@@ -248,6 +250,11 @@ impl Solver {
         let n = self.op.n();
         let n2 = n * n;
         check::tolerance("tol", opts.tol)?;
+        for buf in [&mut self.u, &mut self.g, &mut self.t] {
+            if buf.len() != n2 {
+                *buf = vec![0.0; n2];
+            }
+        }
         if heights.len() != n2 {
             return Err(Error::Inconsistent {
                 name: "heights".into(),
@@ -463,7 +470,9 @@ impl Solver {
             Some(_) if stats.count > 0 => stats.g_min,
             _ => 0.0,
         };
-        let mut gap = self.g.clone();
+        // The gap and displacement buffers move into the solution (the next
+        // solve allocates new ones): no copies at the peak of memory use.
+        let mut gap = std::mem::take(&mut self.g);
         gap.iter_mut().for_each(|g| *g -= shift);
         let mean_pressure = self.p.iter().sum::<f64>() / n2 as f64;
         let approach = match target {
@@ -472,10 +481,15 @@ impl Solver {
             None => delta,
         };
         self.warm = true;
+        // The pressure moves out too; the solver keeps a copy for warm
+        // starts in the (no longer needed) search-direction buffer.
+        let pressure = std::mem::take(&mut self.p);
+        self.p = std::mem::take(&mut self.t);
+        self.p.copy_from_slice(&pressure);
         Ok(Solution {
-            pressure: self.p.clone(),
+            pressure,
             gap,
-            displacement: self.u.clone(),
+            displacement: std::mem::take(&mut self.u),
             mean_pressure,
             approach,
             contact_fraction: stats.count as f64 / n2 as f64,
