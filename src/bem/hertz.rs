@@ -13,7 +13,7 @@
 //!
 //! # References
 //! H. Hertz, J. reine angew. Math. 92, 156 (1882); K. L. Johnson, *Contact
-//! Mechanics* (CUP 1985), Eqs. (4.22)–(4.23). Lecture 000 (seed), Table 1.
+//! Mechanics* (CUP 1985), §4.2. Lecture 000 (seed), Table 1.
 
 use super::kernel::{Boundary, Operator};
 use super::solver::{Control, Iteration, Options, Solver};

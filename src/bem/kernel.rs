@@ -25,8 +25,8 @@
 //! `u` comes out in the unit of `L`.
 //!
 //! # References
-//! - K. L. Johnson, *Contact Mechanics* (CUP 1985), Eq. (3.25) (Love's
-//!   solution for a uniformly loaded rectangle) and §3.2 (Boussinesq).
+//! - K. L. Johnson, *Contact Mechanics* (CUP 1985), ch. 3 (Boussinesq's
+//!   point load; Love's uniformly loaded rectangle).
 //! - Lecture 000 (seed): u = FFT⁻¹(K FFT(p)), K = 2/(E*|q|).
 //! - Liu, Wang & Liu, Wear 243, 101 (2000): DC-FFT, zero padding to 2N.
 

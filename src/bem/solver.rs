@@ -42,7 +42,7 @@
 //!
 //! # References
 //! I. A. Polonsky & L. M. Keer, Wear 231, 206–219 (1999),
-//! doi:10.1016/S0043-1648(99)00113-1, §2 (algorithm) and Eq. (6)–(10).
+//! doi:10.1016/S0043-1648(99)00113-1 (the constrained conjugate gradient).
 //! Frérot, Anciaux, Rey & Molinari, J. Open Source Softw. 5, 2121 (2020)
 //! (Tamaas), for the error measure.
 

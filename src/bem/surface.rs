@@ -34,8 +34,7 @@
 //!
 //! # References
 //! Persson, Bucher & Chiaia, PRB 65, 184106 (2002) (normalisation);
-//! Y.-P. Wu & al. / Tamaas `SurfaceGeneratorFilter` for the random-filter
-//! idea (not its code).
+//! `../shared/theory.md` §1.
 
 use std::path::Path;
 
