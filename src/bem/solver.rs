@@ -37,7 +37,7 @@
 //! stops when ε ≤ `tol` and no points with `p = 0` overlap (`g < 0`);
 //! otherwise it fails with [`Error::NotConverged`] after `max_iter`
 //! iterations, reporting the last ε. This is the criterion Tamaas 2.9 reports
-//! for its `PolonskyKeerRey` solver (measured: same value to 1e-15 on the
+//! for its `PolonskyKeerRey` solver (measured: equal to 15 digits on the
 //! same state), so equal `tol` means equal stopping rules.
 //!
 //! # References
