@@ -28,6 +28,7 @@ pub mod material;
 pub mod quad;
 pub mod special;
 pub mod spectrum;
+pub mod stress;
 pub mod theory;
 
 pub use error::{Error, Result};
