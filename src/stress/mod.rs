@@ -251,13 +251,13 @@ impl<'a> Solver<'a> {
         let w = 2.0 * self.tau.sqrt();
         if !self.y.is_finite() {
             let (el, _, _) = images::fractions(self.start, w, self.y)?;
+            let c = 1.0 / w;
             let how = match self.start {
-                Start::Cylinder | Start::Tabulated(_)
-                    if w <= 1.0 || matches!(self.start, Start::Tabulated(_)) =>
-                {
-                    "closed form / quadrature"
-                }
-                _ => "closed form",
+                Start::Flat => "erf closed form",
+                Start::Hertz if c >= std::f64::consts::FRAC_1_SQRT_2 => "erf closed form",
+                Start::Hertz => "power series",
+                Start::Cylinder if c <= 1.0 => "power series",
+                _ => "adaptive quadrature",
             };
             return Ok((el, zero, format!("contact fraction: {how}")));
         }
