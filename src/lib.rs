@@ -22,10 +22,14 @@
 
 #![warn(missing_docs)]
 
+pub mod compare;
 pub mod error;
+pub mod io;
 pub mod kappa;
 pub mod material;
 pub mod quad;
+pub mod report;
+pub mod scene;
 pub mod special;
 pub mod spectrum;
 pub mod stress;
