@@ -325,3 +325,103 @@ fn bad_input_is_an_error() {
     let sol = Solver::new(&st, 0.6, None, 1e-12).unwrap();
     assert!(sol.density(f64::NAN).is_err());
 }
+
+/// `persson stress … --json` prints the documented keys; bad input exits with 2.
+#[cfg(feature = "cli")]
+#[test]
+fn cli_stress_json_and_exit_codes() {
+    use std::process::Command;
+    let bin = env!("CARGO_BIN_EXE_persson");
+    let out = Command::new(bin)
+        .args([
+            "stress",
+            "--start",
+            "hertz",
+            "--g",
+            "0.6",
+            "--yield-ratio",
+            "1.5",
+        ])
+        .args(["--sigma", "0.25,0.5,1", "--tol", "1e-12", "--json"])
+        .env("RUST_BACKTRACE", "0")
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let want = distribution(&Start::Hertz, 0.6, Some(1.5), &[0.25, 0.5, 1.0], 1e-12).unwrap();
+    assert_eq!(
+        v["contact_fraction"].as_f64().unwrap(),
+        want.contact_fraction
+    );
+    assert_eq!(
+        v["plastic_fraction"].as_f64().unwrap(),
+        want.plastic_fraction
+    );
+    assert_eq!(v["density"].as_array().unwrap().len(), 3);
+    assert_eq!(v["sigma"][2].as_f64().unwrap(), 1.0);
+    assert!(v["error_bound"].as_f64().unwrap() > 0.0);
+    assert!(v["method"].as_str().unwrap().contains("sine series"));
+    for bad in [
+        &["--start", "flat", "--g", "-1"][..],
+        &["--start", "flat", "--g", "nan"],
+        &["--start", "cylinder", "--g", "0.6", "--yield-ratio", "1"],
+        &["--start", "hertz", "--g", "0.6", "--yield-ratio", "0.5"],
+        &["--start", "disk", "--g", "0.6"],
+    ] {
+        let out = Command::new(bin)
+            .arg("stress")
+            .args(bad)
+            .arg("--json")
+            .env("RUST_BACKTRACE", "0")
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(2), "{bad:?}");
+        assert!(!out.stderr.is_empty() && out.stdout.is_empty(), "{bad:?}");
+    }
+}
+
+/// Hertz theory for the physical starts (Johnson, Contact Mechanics, §4.2):
+/// a ball with a³ = 3FR/(4E*) and a cylinder with a² = 4F'R/(πE*); then
+/// P(σ, ζ) of a scene is the dimensionless solution at G(ζ) rescaled by σH.
+#[test]
+fn physical_scene_rescales_the_dimensionless_solution() {
+    use persson::spectrum::{Amplitude, SelfAffine};
+    use persson::stress::{HertzContact, StressScene};
+    use persson::theory::Persson;
+    const ROUNDING: f64 = 1e-14;
+    let (r, f, e) = (0.01, 10.0, 1e9);
+    let ball = HertzContact::ball(r, f, e).unwrap();
+    let a3 = 0.75 * f * r / e;
+    assert!((ball.contact_radius.powi(3) - a3).abs() < ROUNDING * a3);
+    assert!(
+        (ball.nominal_pressure * std::f64::consts::PI * ball.contact_radius.powi(2) - f).abs()
+            < ROUNDING * f
+    );
+    let cyl = HertzContact::cylinder(r, f, e).unwrap();
+    let a2 = 4.0 * f * r / (std::f64::consts::PI * e);
+    assert!((cyl.contact_radius.powi(2) - a2).abs() < ROUNDING * a2);
+    assert!(
+        (cyl.nominal_pressure / cyl.peak_pressure - std::f64::consts::FRAC_PI_4).abs() < ROUNDING
+    );
+
+    let spectrum = SelfAffine::new(1e3, 1e4, 1e7, 0.8, Amplitude::RmsHeight(1e-6)).unwrap();
+    let model = Persson::new(&spectrum, e).unwrap();
+    for contact in [ball, cyl] {
+        let scene = StressScene::hertz(&contact, Some(3.0 * contact.peak_pressure)).unwrap();
+        let sh = contact.peak_pressure;
+        let sigma = [0.2 * sh, 0.7 * sh, 1.3 * sh];
+        let curves = scene
+            .curves(&model, &[1.0, 10.0, 100.0], &sigma, 1e-12)
+            .unwrap();
+        for c in &curves {
+            let g = model.g(c.zeta, contact.nominal_pressure).unwrap().value;
+            let s: Vec<f64> = sigma.iter().map(|v| v / sh).collect();
+            let want = distribution(&contact.start, g, Some(3.0), &s, 1e-12).unwrap();
+            for (p, q) in c.density.iter().zip(&want.density) {
+                assert!((p * sh - q).abs() <= ROUNDING * q.abs().max(1.0));
+            }
+            assert_eq!(c.contact_fraction, want.contact_fraction);
+        }
+        assert!(StressScene::hertz(&contact, Some(0.5 * contact.peak_pressure)).is_err());
+    }
+}

@@ -9,6 +9,7 @@ mod output;
 mod report;
 mod run;
 mod spectrum;
+mod stress;
 
 use clap::{Parser, Subcommand};
 
@@ -37,6 +38,8 @@ enum Cmd {
     Run(run::Args),
     /// Reports: error against run time, and stability at the extremes.
     Report(report::Args),
+    /// Stress distribution P(σ) at one G (dimensionless; seed Figs. 2–4).
+    Stress(stress::Args),
 }
 
 /// Run one parsed command line.
@@ -48,5 +51,6 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
         Cmd::Kappa(a) => kappa::run(a),
         Cmd::Run(a) => run::run(a),
         Cmd::Report(a) => report::run(a),
+        Cmd::Stress(a) => stress::run(a),
     }
 }
