@@ -107,7 +107,7 @@ fn matches_mpmath_references() {
         );
         checked += 1;
     }
-    assert_eq!(checked, 105);
+    assert_eq!(checked, 129);
 }
 
 /// Contact areas of seed 001 Figs. 2–4 (exact values of ../shared/theory.md §3).
@@ -423,5 +423,54 @@ fn physical_scene_rescales_the_dimensionless_solution() {
             assert_eq!(c.contact_fraction, want.contact_fraction);
         }
         assert!(StressScene::hertz(&contact, Some(0.5 * contact.peak_pressure)).is_err());
+    }
+}
+
+mod properties {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn any_start() -> impl Strategy<Value = Start> {
+        prop_oneof![Just(Start::Flat), Just(Start::Hertz), Just(Start::Cylinder)]
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 256, ..ProptestConfig::default() })]
+
+        /// Over G ∈ [1e-12, 1e12] and σY/σH ∈ [1.01, 1e6]: finite results,
+        /// P ≥ −bound, fractions in [0, 1], and the sine series and the image
+        /// sum agree within the sum of their error bounds wherever the series
+        /// needs at most 3000 terms.
+        #[test]
+        fn series_and_images_agree_within_bounds(
+            st in any_start(),
+            lg in -12.0f64..12.0,
+            lr in -2.0f64..6.0,
+            frac in 0.0f64..1.0,
+        ) {
+            let g = 10f64.powf(lg);
+            let y = 1.0 + 10f64.powf(lr);
+            let m = st.mean_ratio();
+            let tau = m * m * g;
+            let auto = Solver::new(&st, g, Some(y), SOLVER_TOL).unwrap();
+            let s = frac * (1.0 + 12.0 * tau.sqrt()).min(y);
+            let c = auto.curve(&[s]).unwrap();
+            prop_assert!(c.density[0].is_finite() && c.density[0] >= -c.density_error);
+            prop_assert!(c.contact_fraction >= -c.contact_error && c.contact_fraction <= 1.0 + c.contact_error);
+            prop_assert!(c.plastic_fraction >= -c.plastic_error);
+            prop_assert!(c.contact_fraction + c.plastic_fraction <= 1.0 + 1e-12);
+            prop_assert!(c.error_bound <= 1e-11, "bound {} for G={g} y={y}", c.error_bound);
+            let pi2 = std::f64::consts::PI.powi(2);
+            let terms = (40.0 / (pi2 * tau / (y * y))).sqrt();
+            if terms < 3000.0 {
+                let a = Solver::with_method(&st, g, Some(y), SOLVER_TOL, Method::Series).unwrap().density(s).unwrap();
+                let b = Solver::with_method(&st, g, Some(y), SOLVER_TOL, Method::Images).unwrap().density(s).unwrap();
+                prop_assert!(
+                    (a.value - b.value).abs() <= a.error + b.error,
+                    "{} G={g} y={y} s={s}: series {} ± {:e}, images {} ± {:e}",
+                    st.name(), a.value, a.error, b.value, b.error
+                );
+            }
+        }
     }
 }

@@ -1,6 +1,7 @@
 //! `persson stress`: the stress distribution P(σ) at one G, dimensionless.
 
-use persson::stress::{Solver, Start};
+use persson::stress::{Solver, Start, TabulatedStart};
+use persson::Error;
 use serde_json::json;
 
 use super::output::{Format, Report};
@@ -20,8 +21,20 @@ pub enum StartName {
 #[derive(clap::Args, Debug)]
 pub struct Args {
     /// Start condition P(σ, ζ = 1).
-    #[arg(long, value_enum)]
-    start: StartName,
+    #[arg(
+        long,
+        value_enum,
+        required_unless_present = "table",
+        conflicts_with = "table"
+    )]
+    start: Option<StartName>,
+    /// A tabulated start instead: a file of two columns σ, P0(σ) (comma or
+    /// blank separated, `#` comments), piecewise linear, σH = the last σ.
+    #[arg(long)]
+    table: Option<std::path::PathBuf>,
+    /// How far ∫ P0 dσ of a --table may be from 1.
+    #[arg(long, default_value_t = 1e-6, allow_negative_numbers = true)]
+    table_tol: f64,
     /// G(ζ) (seed 001 Eq. 2, with σ0 the nominal mean pressure).
     #[arg(long, allow_negative_numbers = true)]
     g: f64,
@@ -48,10 +61,15 @@ pub fn run(a: Args) -> anyhow::Result<()> {
 }
 
 fn report(a: &Args) -> anyhow::Result<Report> {
-    let start = match a.start {
-        StartName::Flat => Start::Flat,
-        StartName::Hertz => Start::Hertz,
-        StartName::Cylinder => Start::Cylinder,
+    let start = match (a.start, &a.table) {
+        (Some(StartName::Flat), _) => Start::Flat,
+        (Some(StartName::Hertz), _) => Start::Hertz,
+        (Some(StartName::Cylinder), _) => Start::Cylinder,
+        (None, Some(path)) => {
+            let (s, p) = read_table(path)?;
+            Start::Tabulated(TabulatedStart::new(&s, &p, a.table_tol)?)
+        }
+        (None, None) => unreachable!("clap requires --start or --table"),
     };
     let solver = Solver::new(&start, a.g, a.yield_ratio, a.tol)?;
     let sigma = if a.sigma.is_empty() {
@@ -100,4 +118,40 @@ fn report(a: &Args) -> anyhow::Result<Report> {
             "density": c.density,
         }),
     })
+}
+
+/// Two columns of numbers; `#` starts a comment.
+fn read_table(path: &std::path::Path) -> Result<(Vec<f64>, Vec<f64>), Error> {
+    let text = std::fs::read_to_string(path).map_err(|e| Error::Io {
+        path: path.to_path_buf(),
+        source: e,
+    })?;
+    let (mut s, mut p) = (Vec::new(), Vec::new());
+    for (i, line) in text.lines().enumerate() {
+        let line = line.split('#').next().unwrap_or("").trim();
+        if line.is_empty() {
+            continue;
+        }
+        let cols: Vec<&str> = line
+            .split(|c: char| c == ',' || c.is_whitespace())
+            .filter(|c| !c.is_empty())
+            .collect();
+        if cols.len() != 2 {
+            return Err(Error::parse(
+                path,
+                i + 1,
+                1,
+                format!("expected two columns σ, P0, found {}", cols.len()),
+            ));
+        }
+        let mut v = [0.0; 2];
+        for (k, c) in cols.iter().enumerate() {
+            v[k] = c
+                .parse()
+                .map_err(|_| Error::parse(path, i + 1, k + 1, format!("`{c}` is not a number")))?;
+        }
+        s.push(v[0]);
+        p.push(v[1]);
+    }
+    Ok((s, p))
 }
