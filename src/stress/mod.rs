@@ -60,9 +60,10 @@ pub struct StressCurve {
     pub plastic_fraction: f64,
     /// 1 − A_el − A_pl, the fraction that lost contact.
     pub non_contact_fraction: f64,
-    /// Bound on the absolute error of every density value and both fractions.
+    /// Bound on the absolute error of every density value (1/σH) and of both
+    /// fractions.
     pub error_bound: f64,
-    /// Bound on the absolute error of the density values.
+    /// Bound on the absolute error of the density values (1/σH).
     pub density_error: f64,
     /// Bound on the absolute error of `contact_fraction`.
     pub contact_error: f64,
@@ -312,8 +313,7 @@ impl<'a> Solver<'a> {
         for &s in sigma {
             let e = self.density(s)?;
             density.push(e.value);
-            // relative where the density exceeds 1
-            derr = derr.max(e.error / e.value.abs().max(1.0));
+            derr = derr.max(e.error);
         }
         let (el, pl, how) = self.fractions()?;
         let error_bound = derr.max(el.error).max(pl.error);

@@ -127,7 +127,8 @@ pub(crate) struct Series {
     y: f64,
     /// Truncation bound of the density.
     tail: f64,
-    /// Σ |cₙ| (2n + 4) ε: rounding of the sum with rotated sines.
+    /// Σ |cₙ| (8n + 8) ε: rounding of the sum with rotated sines (the angle
+    /// πs/y carries 2ε relative error, amplified n times).
     round: f64,
     /// Absolute error of each Bₙ (0 for closed forms up to rounding).
     coef_err: f64,
@@ -206,7 +207,7 @@ impl Series {
         let round = c
             .iter()
             .enumerate()
-            .map(|(i, v)| v.abs() * (2.0 * i as f64 + 6.0))
+            .map(|(i, v)| v.abs() * (8.0 * i as f64 + 16.0))
             .sum::<f64>()
             * EPS;
         let esum: f64 = (1..=n).map(|i| decay(i, a)).sum();
