@@ -25,6 +25,8 @@
 pub mod error;
 pub mod kappa;
 pub mod material;
+#[cfg(feature = "plot")]
+pub mod plot;
 pub mod quad;
 pub mod special;
 pub mod spectrum;
