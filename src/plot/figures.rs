@@ -196,7 +196,8 @@ pub fn spectrum(q: &[f64], c: &[f64], fit: Option<PowerLaw>) -> Result<Figure> {
         } else {
             Vec::new()
         };
-        let label = format!("power-law fit C ∝ q^{:.2}", law.exponent).replace('-', "−");
+        let exponent = format!("{:.2}", law.exponent).replace('-', "−");
+        let label = format!("power-law fit C ∝ q^{exponent}");
         fig.push(Series::dashed(label, points).with_color(REFERENCE));
     }
     Ok(fig)
