@@ -23,11 +23,14 @@
 #![warn(missing_docs)]
 
 pub mod error;
+pub mod io;
 pub mod kappa;
 pub mod material;
 #[cfg(feature = "plot")]
 pub mod plot;
 pub mod quad;
+pub mod report;
+pub mod scene;
 pub mod special;
 pub mod spectrum;
 pub mod theory;
