@@ -568,3 +568,49 @@ fn linear_laws_stop_at_full_contact() {
     assert!((a_end - 1.0).abs() < TOL, "{a_end}");
     assert_eq!(bush.points[0].0, 1e3);
 }
+
+/// `persson area --plot FILE`: the CLI pattern for every subcommand.
+#[cfg(feature = "cli")]
+#[test]
+fn cli_area_writes_the_load_curve_plot() {
+    let dir = TempDir::new("cli");
+    let run = |file: &Path| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_persson"))
+            .args(["area", "--example", "--json", "--plot"])
+            .arg(file)
+            .env("RUST_BACKTRACE", "0")
+            .output()
+            .expect("run persson")
+    };
+    let png = dir.join("area.png");
+    let out = run(&png);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert_eq!(png_size(&png), DEFAULT_SIZE);
+    // The table output is unchanged by --plot.
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).expect("json on stdout");
+    assert!(json["points"].is_array());
+
+    let svg = dir.join("area.svg");
+    assert!(run(&svg).status.success());
+    let texts = svg_texts(&std::fs::read_to_string(&svg).unwrap());
+    for t in [
+        "Bush et al.: κ = √(2π)",
+        "Persson: κ = √(8/π)",
+        "contact fraction A/A0",
+    ] {
+        assert!(texts.iter().any(|x| x == t), "no {t:?} in {texts:?}");
+    }
+
+    let out = run(&dir.join("area.jpg"));
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("area.jpg") && err.contains(".svg or .png"),
+        "{err}"
+    );
+    assert!(out.stdout.is_empty(), "nothing printed after a failed plot");
+}

@@ -252,7 +252,7 @@ impl ValueFormatter<f64> for TickAxis<'_> {
 fn dash_pattern(style: Style, width: u32) -> (i32, i32) {
     let w = width as i32;
     match style {
-        Style::Dotted => (w.max(1), 3 * w + 1),
+        Style::Dotted => ((w * 6 / 5).max(1), (w * 5 / 2).max(2)),
         _ => (6 * w + 1, 4 * w),
     }
 }

@@ -8,8 +8,13 @@ use super::{Axis, Figure, Rgb, Series, Style};
 use crate::kappa::Kappa;
 use crate::Result;
 
-/// Dark grey for the reference lines, so they do not take a palette colour.
+/// Dark grey for reference lines (fits, the Bush law), so they do not take a
+/// palette colour.
 const REFERENCE: Rgb = Rgb(60, 60, 60);
+
+/// Black for the Persson law, which lies on the theory at low load and must
+/// show through it.
+const REFERENCE_STRONG: Rgb = Rgb(0, 0, 0);
 
 /// The line styles given to successive curves of a family, so that the
 /// curves stay distinguishable in greyscale.
@@ -140,9 +145,19 @@ pub fn area_vs_load(
         crate::error::check::positive("contact_modulus", law.contact_modulus)?;
         crate::error::check::positive("rms_slope", law.rms_slope)?;
         let (lo, hi) = positive_extent(pressure);
-        for (kappa, label, style) in [
-            (Kappa::Bush, "Bush et al.: κ = √(2π)", Style::Dashed),
-            (Kappa::Persson, "Persson: κ = √(8/π)", Style::Dotted),
+        for (kappa, label, style, color) in [
+            (
+                Kappa::Bush,
+                "Bush et al.: κ = √(2π)",
+                Style::Dashed,
+                REFERENCE,
+            ),
+            (
+                Kappa::Persson,
+                "Persson: κ = √(8/π)",
+                Style::Dotted,
+                REFERENCE_STRONG,
+            ),
         ] {
             let full = law.contact_modulus * law.rms_slope / kappa.value();
             let top = hi.min(full);
@@ -160,7 +175,7 @@ pub fn area_vs_load(
             } else {
                 Vec::new()
             };
-            fig.push(Series::new(label, points, style).with_color(REFERENCE));
+            fig.push(Series::new(label, points, style).with_color(color));
         }
     }
     Ok(fig)
