@@ -46,8 +46,11 @@ fn main() -> BoxResult<()> {
 fn save(dir: &Path, name: &str, fig: &Figure) -> BoxResult<()> {
     for ext in ["svg", "png"] {
         let path = dir.join(format!("{name}.{ext}"));
+        let start = Instant::now();
         plot::render(fig, &path)?;
-        println!("{}", path.display());
+        let ms = 1e3 * start.elapsed().as_secs_f64();
+        let kb = std::fs::metadata(&path)?.len() as f64 / 1024.0;
+        println!("{:<40} {ms:7.1} ms {kb:7.1} KiB", path.display());
     }
     Ok(())
 }

@@ -6,7 +6,7 @@
 
 use super::{Axis, Figure, Rgb, Series, Style};
 use crate::kappa::Kappa;
-use crate::Result;
+use crate::{Error, Result};
 
 /// Dark grey for reference lines (fits, the Bush law), so they do not take a
 /// palette colour.
