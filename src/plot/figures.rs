@@ -6,7 +6,7 @@
 
 use super::{Axis, Figure, Rgb, Series, Style};
 use crate::kappa::Kappa;
-use crate::{Error, Result};
+use crate::Result;
 
 /// Dark grey for reference lines (fits, the Bush law), so they do not take a
 /// palette colour.
@@ -66,7 +66,7 @@ fn curves(x: &[f64], ys: &[(&str, &[f64])], styles: &[Style]) -> Result<Vec<Seri
 /// Curves cycle through solid, dashed and dotted lines.
 ///
 /// # Errors
-/// [`Error::Inconsistent`] if a curve's length differs from `sigma`'s.
+/// [`crate::Error::Inconsistent`] if a curve's length differs from `sigma`'s.
 ///
 /// # References
 /// B. N. J. Persson, F. Bucher, B. Chiaia, PRB 65, 184106 (2002), Figs. 2–4.
@@ -83,7 +83,7 @@ pub fn stress_family(sigma: &[f64], curves_: &[(&str, &[f64])]) -> Result<Figure
 /// The contact fraction A/A0 against the magnification ζ, log–log.
 ///
 /// # Errors
-/// [`Error::Inconsistent`] if a curve's length differs from `zeta`'s.
+/// [`crate::Error::Inconsistent`] if a curve's length differs from `zeta`'s.
 pub fn area_vs_zeta(zeta: &[f64], curves_: &[(&str, &[f64])]) -> Result<Figure> {
     let mut fig = Figure::new(
         "Contact area against magnification",
@@ -97,7 +97,7 @@ pub fn area_vs_zeta(zeta: &[f64], curves_: &[(&str, &[f64])]) -> Result<Figure> 
 /// G(ζ) against the magnification ζ, log–log.
 ///
 /// # Errors
-/// [`Error::Inconsistent`] if a curve's length differs from `zeta`'s.
+/// [`crate::Error::Inconsistent`] if a curve's length differs from `zeta`'s.
 ///
 /// # References
 /// Persson, Bucher & Chiaia (2002), Eq. 2.
@@ -124,8 +124,8 @@ pub fn g_vs_zeta(zeta: &[f64], curves_: &[(&str, &[f64])]) -> Result<Figure> {
 /// ```
 ///
 /// # Errors
-/// [`Error::Inconsistent`] if a curve's length differs from `pressure`'s;
-/// [`Error::InvalidParameter`] if E* or the rms slope is not positive.
+/// [`crate::Error::Inconsistent`] if a curve's length differs from `pressure`'s;
+/// [`crate::Error::InvalidParameter`] if E* or the rms slope is not positive.
 ///
 /// # References
 /// Persson, Bucher & Chiaia (2002), Sec. IV; Bush, Gibson & Thomas, Wear 35, 87 (1975).
@@ -185,7 +185,7 @@ pub fn area_vs_load(
 /// fit drawn dashed over its own q range (or the data's).
 ///
 /// # Errors
-/// [`Error::Inconsistent`] if `q` and `c` differ in length.
+/// [`crate::Error::Inconsistent`] if `q` and `c` differ in length.
 pub fn spectrum(q: &[f64], c: &[f64], fit: Option<PowerLaw>) -> Result<Figure> {
     let mut fig = Figure::new(
         "Power spectrum C(q)",
