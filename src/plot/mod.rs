@@ -343,7 +343,7 @@ pub fn render(fig: &Figure, path: &Path) -> Result<()> {
     };
     match format {
         Format::Svg => {
-            let prepared = prepare::prepare(fig, fig.size, &draw::measure)?;
+            let prepared = prepare::prepare(fig, 1, &draw::measure)?;
             let svg = draw::svg_string(&prepared).map_err(|e| backend_error(path, e))?;
             let tmp = file::TempFile::create(path)?;
             std::fs::write(tmp.path(), svg).map_err(io)?;
@@ -354,7 +354,7 @@ pub fn render(fig: &Figure, path: &Path) -> Result<()> {
             // averaged down: anti-aliased lines and text.
             let k = draw::supersampling(fig.size);
             let big = (fig.size.0 * k, fig.size.1 * k);
-            let prepared = prepare::prepare(fig, big, &draw::measure)?;
+            let prepared = prepare::prepare(fig, k, &draw::measure)?;
             let pixels = draw::rgb_pixels(&prepared).map_err(|e| backend_error(path, e))?;
             let pixels = draw::downsample(&pixels, big, k);
             let tmp = file::TempFile::create(path)?;
@@ -371,7 +371,7 @@ pub fn render(fig: &Figure, path: &Path) -> Result<()> {
 pub fn render_svg_string(fig: &Figure) -> Result<String> {
     let here = Path::new("<svg string>");
     draw::ensure_font(here)?;
-    let prepared = prepare::prepare(fig, fig.size, &draw::measure)?;
+    let prepared = prepare::prepare(fig, 1, &draw::measure)?;
     draw::svg_string(&prepared).map_err(|e| backend_error(here, e))
 }
 

@@ -14,8 +14,12 @@ const PAD: f64 = 0.04;
 /// Minimum gap between neighbouring tick labels, in pixels.
 const LABEL_GAP: f64 = 14.0;
 
+/// Smallest scale of fonts and lines, so that text stays readable (13 px
+/// tick labels) in figures smaller than 800 × 560.
+const MIN_SCALE: f64 = 0.75;
+
 /// Font sizes and margins (pixels) for the default 800 × 560 figure; other
-/// sizes scale them by `min(w/800, h/560)`.
+/// sizes scale them by `min(w/800, h/560)`, at least [`MIN_SCALE`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Layout {
     pub caption_font: f64,
@@ -38,8 +42,12 @@ pub(crate) struct Layout {
 }
 
 impl Layout {
-    fn new(size: (u32, u32)) -> Self {
-        let s = (size.0 as f64 / 800.0).min(size.1 as f64 / 560.0).max(0.5);
+    /// The layout of a figure of `size` pixels drawn `k` times larger.
+    fn new(size: (u32, u32), k: u32) -> Self {
+        let s = (size.0 as f64 / 800.0)
+            .min(size.1 as f64 / 560.0)
+            .max(MIN_SCALE)
+            * k as f64;
         let px = |v: f64| (v * s).round();
         let tick_font = px(17.0);
         let desc_font = px(19.0);
@@ -120,10 +128,11 @@ pub(crate) struct Prepared {
 ///
 /// # Errors
 /// See [`super::render`].
-/// `size` is the pixel size to lay out for (the figure's own size, or a
-/// multiple of it for supersampling); fonts and lines scale with it.
-pub(crate) fn prepare(fig: &Figure, size: (u32, u32), measure: &Measure) -> Result<Prepared> {
+/// The figure is laid out `k` times larger than its size (supersampling);
+/// fonts and lines scale along.
+pub(crate) fn prepare(fig: &Figure, k: u32, measure: &Measure) -> Result<Prepared> {
     check_size(fig.size)?;
+    let size = (fig.size.0 * k, fig.size.1 * k);
     let xs = fig.x.scale;
     let ys = fig.y.scale;
     // Transformed points, None where a value cannot be drawn.
@@ -168,7 +177,7 @@ pub(crate) fn prepare(fig: &Figure, size: (u32, u32), measure: &Measure) -> Resu
         y1: y_hi,
     };
 
-    let mut layout = Layout::new(size);
+    let mut layout = Layout::new(fig.size, k);
     let (w, h) = (size.0 as f64, size.1 as f64);
     let caption = if fig.title.is_empty() {
         0.0
@@ -460,7 +469,7 @@ mod tests {
                 vec![(1.0, 1e-40), (10.0, 0.0), (100.0, -1.0), (1e3, 1e-38)],
             ),
         );
-        let p = prepare(&fig, fig.size, &approx_measure).unwrap();
+        let p = prepare(&fig, 1, &approx_measure).unwrap();
         assert!(p.series[0].runs.is_empty());
         assert_eq!(p.series[0].points.len(), 2);
         assert!(p.y.lo < -40.0 && p.y.hi > -38.0);

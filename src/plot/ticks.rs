@@ -32,9 +32,9 @@ pub(crate) fn linear(lo: f64, hi: f64, fits: Fits) -> Ticks {
 /// Ticks on a log axis spanning `[lo, hi]` decades (plot coordinates are
 /// log10 of the data).
 ///
-/// Decades `10ᵏ` (every s-th decade, s = 1, 2, 3, 5, 10, …) when at least two
-/// fit; else 1, 2, 5 × 10ᵏ; else evenly spaced values mapped to log10 (for
-/// ranges much narrower than a decade).
+/// Decades `10ᵏ` (every s-th decade, s = 1, 2, 3, 5, 10, …) when at least
+/// three fit; else 1, 2, 5 × 10ᵏ if at least three; else two decades; else
+/// evenly spaced values mapped to log10 (ranges of about a decade or less).
 pub(crate) fn log(lo: f64, hi: f64, fits: Fits) -> Ticks {
     let span = hi - lo;
     // Candidate decade labellings, dense to sparse, each with ≥ 2 ticks.
@@ -74,7 +74,7 @@ pub(crate) fn log(lo: f64, hi: f64, fits: Fits) -> Ticks {
         return decade_ticks(candidates.swap_remove(i));
     }
     let picks: Vec<(u32, i64)> = mantissa_positions(lo, hi, &[1, 2, 5]).collect();
-    if picks.len() >= 2 && picks.len() <= MAX_TICKS {
+    if picks.len() >= 3 && picks.len() <= MAX_TICKS {
         let plain = picks.iter().all(|&(_, k)| (-3..=3).contains(&k));
         let major: Vec<Tick> = picks
             .iter()
@@ -322,6 +322,13 @@ mod tests {
         assert_eq!(labels(&t), ["0.05", "0.1", "0.2", "0.5", "1"]);
         let t = log(-20.4, -19.1, &at_most(10));
         assert_eq!(labels(&t), ["5×10⁻²¹", "10⁻²⁰", "2×10⁻²⁰", "5×10⁻²⁰"]);
+    }
+
+    #[test]
+    fn log_with_two_mantissa_ticks_falls_back_to_linear_values() {
+        // 1 … 4: only 1 and 2 of 1, 2, 5 × 10ᵏ, so evenly spaced values.
+        let t = log(0.0, 0.6, &at_most(10));
+        assert_eq!(labels(&t), ["1.0", "1.5", "2.0", "2.5", "3.0", "3.5"]);
     }
 
     #[test]
