@@ -508,7 +508,7 @@ fn every_style_renders() {
 }
 
 #[test]
-fn builders_check_lengths() {
+fn builders_check_their_input() {
     let x = [1.0, 2.0, 3.0];
     let short = [1.0, 2.0];
     assert!(matches!(
@@ -543,6 +543,17 @@ fn builders_check_lengths() {
         ),
         Err(Error::InvalidParameter { .. })
     ));
+    for (prefactor, exponent) in [(0.0, -3.6), (-1.0, -3.6), (1.0, f64::NAN)] {
+        let fit = PowerLaw {
+            prefactor,
+            exponent,
+            q_range: None,
+        };
+        assert!(matches!(
+            plot::spectrum(&x, &x, Some(fit)),
+            Err(Error::InvalidParameter { .. })
+        ));
+    }
 }
 
 #[test]

@@ -50,7 +50,7 @@ pub struct LinearLaw {
 }
 
 /// Pairs `x` with each curve's values, checking lengths.
-fn curves(x: &[f64], ys: &[(&str, &[f64])], styles: &[Style]) -> Result<Vec<Series>> {
+fn paired(x: &[f64], ys: &[(&str, &[f64])], styles: &[Style]) -> Result<Vec<Series>> {
     ys.iter()
         .enumerate()
         .map(|(i, (label, y))| {
@@ -70,13 +70,13 @@ fn curves(x: &[f64], ys: &[(&str, &[f64])], styles: &[Style]) -> Result<Vec<Seri
 ///
 /// # References
 /// B. N. J. Persson, F. Bucher, B. Chiaia, PRB 65, 184106 (2002), Figs. 2–4.
-pub fn stress_family(sigma: &[f64], curves_: &[(&str, &[f64])]) -> Result<Figure> {
+pub fn stress_family(sigma: &[f64], curves: &[(&str, &[f64])]) -> Result<Figure> {
     let mut fig = Figure::new(
         "Stress distribution P(σ, ζ)",
         Axis::linear("normal stress σ/σH"),
         Axis::linear("P(σ, ζ) (1/σH)"),
     );
-    fig.series = curves(sigma, curves_, &FAMILY_STYLES)?;
+    fig.series = paired(sigma, curves, &FAMILY_STYLES)?;
     Ok(fig)
 }
 
@@ -84,13 +84,13 @@ pub fn stress_family(sigma: &[f64], curves_: &[(&str, &[f64])]) -> Result<Figure
 ///
 /// # Errors
 /// [`crate::Error::Inconsistent`] if a curve's length differs from `zeta`'s.
-pub fn area_vs_zeta(zeta: &[f64], curves_: &[(&str, &[f64])]) -> Result<Figure> {
+pub fn area_vs_zeta(zeta: &[f64], curves: &[(&str, &[f64])]) -> Result<Figure> {
     let mut fig = Figure::new(
         "Contact area against magnification",
         Axis::log("magnification ζ = q/qL"),
         Axis::log("contact fraction A/A0"),
     );
-    fig.series = curves(zeta, curves_, &FAMILY_STYLES)?;
+    fig.series = paired(zeta, curves, &FAMILY_STYLES)?;
     Ok(fig)
 }
 
@@ -101,13 +101,13 @@ pub fn area_vs_zeta(zeta: &[f64], curves_: &[(&str, &[f64])]) -> Result<Figure> 
 ///
 /// # References
 /// Persson, Bucher & Chiaia (2002), Eq. 2.
-pub fn g_vs_zeta(zeta: &[f64], curves_: &[(&str, &[f64])]) -> Result<Figure> {
+pub fn g_vs_zeta(zeta: &[f64], curves: &[(&str, &[f64])]) -> Result<Figure> {
     let mut fig = Figure::new(
         "G(ζ) = (π/4)(E*/σ0)² ∫ q³C(q) dq",
         Axis::log("magnification ζ = q/qL"),
         Axis::log("G(ζ) (dimensionless)"),
     );
-    fig.series = curves(zeta, curves_, &FAMILY_STYLES)?;
+    fig.series = paired(zeta, curves, &FAMILY_STYLES)?;
     Ok(fig)
 }
 
@@ -131,7 +131,7 @@ pub fn g_vs_zeta(zeta: &[f64], curves_: &[(&str, &[f64])]) -> Result<Figure> {
 /// Persson, Bucher & Chiaia (2002), Sec. IV; Bush, Gibson & Thomas, Wear 35, 87 (1975).
 pub fn area_vs_load(
     pressure: &[f64],
-    curves_: &[(&str, &[f64])],
+    curves: &[(&str, &[f64])],
     pressure_unit: &str,
     linear: Option<LinearLaw>,
 ) -> Result<Figure> {
@@ -140,7 +140,7 @@ pub fn area_vs_load(
         Axis::log(format!("nominal pressure σ0 ({pressure_unit})")),
         Axis::log("contact fraction A/A0"),
     );
-    fig.series = curves(pressure, curves_, &[Style::Line])?;
+    fig.series = paired(pressure, curves, &[Style::Line])?;
     if let Some(law) = linear {
         crate::error::check::positive("contact_modulus", law.contact_modulus)?;
         crate::error::check::positive("rms_slope", law.rms_slope)?;
@@ -185,7 +185,9 @@ pub fn area_vs_load(
 /// fit drawn dashed over its own q range (or the data's).
 ///
 /// # Errors
-/// [`crate::Error::Inconsistent`] if `q` and `c` differ in length.
+/// [`crate::Error::Inconsistent`] if `q` and `c` differ in length;
+/// [`crate::Error::InvalidParameter`] if the fit's prefactor is not positive
+/// or its exponent not finite.
 pub fn spectrum(q: &[f64], c: &[f64], fit: Option<PowerLaw>) -> Result<Figure> {
     let mut fig = Figure::new(
         "Power spectrum C(q)",
@@ -199,6 +201,10 @@ pub fn spectrum(q: &[f64], c: &[f64], fit: Option<PowerLaw>) -> Result<Figure> {
     };
     fig.push(Series::from_xy("C(q)", q, c)?.with_style(style));
     if let Some(law) = fit {
+        crate::error::check::positive("prefactor", law.prefactor)?;
+        if !law.exponent.is_finite() {
+            return Err(crate::Error::invalid("exponent", law.exponent, "finite"));
+        }
         let (lo, hi) = law.q_range.unwrap_or_else(|| positive_extent(q));
         let n = 50;
         let points = if lo > 0.0 && lo < hi {
