@@ -353,6 +353,18 @@ fn failed_render_leaves_an_existing_file_untouched() {
         );
     }
     assert_eq!(dir.files(), ["keep.png", "keep.svg"]);
+    // A failure after the temporary file was written (the rename onto a
+    // non-empty directory fails) removes the temporary file.
+    let busy = dir.join("busy.png");
+    std::fs::create_dir(&busy).unwrap();
+    std::fs::write(busy.join("inside"), b"x").unwrap();
+    let (_, good, _) = standard_figures().remove(0);
+    match render(&good, &busy) {
+        Err(e @ Error::Io { .. }) => assert!(e.to_string().contains("busy.png"), "{e}"),
+        other => panic!("expected Io, got {other:?}"),
+    }
+    assert_eq!(dir.files(), ["busy.png", "keep.png", "keep.svg"]);
+    std::fs::remove_dir_all(&busy).unwrap();
     // A successful render replaces it.
     let (_, good, _) = standard_figures().remove(0);
     render(&good, &dir.join("keep.png")).unwrap();
