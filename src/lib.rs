@@ -22,6 +22,7 @@
 
 #![warn(missing_docs)]
 
+pub mod compare;
 pub mod error;
 pub mod io;
 pub mod kappa;

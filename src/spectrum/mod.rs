@@ -24,6 +24,7 @@ mod tabulated;
 pub use convention::Convention;
 pub use function::FnSpectrum;
 pub use self_affine::{Amplitude, SelfAffine};
+pub(crate) use tabulated::parse_columns;
 pub use tabulated::Tabulated;
 
 use crate::error::{Error, Result};
