@@ -43,7 +43,6 @@
 
 mod draw;
 pub mod figures;
-mod file;
 mod prepare;
 mod ticks;
 
@@ -345,7 +344,7 @@ pub fn render(fig: &Figure, path: &Path) -> Result<()> {
         Format::Svg => {
             let prepared = prepare::prepare(fig, 1, &draw::measure)?;
             let svg = draw::svg_string(&prepared).map_err(|e| backend_error(path, e))?;
-            let tmp = file::TempFile::create(path)?;
+            let tmp = crate::io::TempFile::create(path)?;
             std::fs::write(tmp.path(), svg).map_err(io)?;
             tmp.persist()
         }
@@ -357,7 +356,7 @@ pub fn render(fig: &Figure, path: &Path) -> Result<()> {
             let prepared = prepare::prepare(fig, k, &draw::measure)?;
             let pixels = draw::rgb_pixels(&prepared).map_err(|e| backend_error(path, e))?;
             let pixels = draw::downsample(&pixels, big, k);
-            let tmp = file::TempFile::create(path)?;
+            let tmp = crate::io::TempFile::create(path)?;
             draw::write_png(tmp.path(), fig.size, &pixels).map_err(io)?;
             tmp.persist()
         }
