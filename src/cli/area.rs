@@ -32,6 +32,7 @@ pub fn run(a: Args) -> anyhow::Result<()> {
 }
 
 fn report(a: &Args) -> anyhow::Result<Report> {
+    a.plot.check()?;
     let spectrum = a.spectrum.build()?;
     let material = a.material.build(a.spectrum.example)?;
     let pressures = pressures(&a.pressure, a.spectrum.example)?;

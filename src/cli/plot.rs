@@ -20,6 +20,19 @@ pub struct PlotArg {
 }
 
 impl PlotArg {
+    /// Before computing: the `--plot` file has a supported extension and its
+    /// directory accepts a new file.
+    pub fn check(&self) -> anyhow::Result<()> {
+        if let Some(path) = &self.plot {
+            #[cfg(feature = "plot")]
+            persson::plot::Format::from_path(path)?;
+            #[cfg(not(feature = "plot"))]
+            self.unavailable()?;
+            persson::io::check_writable(path)?;
+        }
+        Ok(())
+    }
+
     /// Renders the figure made by `build` into the `--plot` file, if given.
     #[cfg(feature = "plot")]
     pub fn draw(
