@@ -27,6 +27,8 @@ pub mod error;
 pub mod io;
 pub mod kappa;
 pub mod material;
+#[cfg(feature = "plot")]
+pub mod plot;
 pub mod quad;
 pub mod report;
 pub mod scene;
