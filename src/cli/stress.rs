@@ -53,10 +53,13 @@ pub struct Args {
     tol: f64,
     #[command(flatten)]
     format: Format,
+    #[command(flatten)]
+    plot: super::plot::PlotArg,
 }
 
 /// Run `persson stress`.
 pub fn run(a: Args) -> anyhow::Result<()> {
+    a.plot.check()?;
     report(&a)?.print(&a.format)
 }
 
@@ -78,6 +81,20 @@ fn report(a: &Args) -> anyhow::Result<Report> {
         a.sigma.clone()
     };
     let c = solver.curve(&sigma)?;
+    let label = format!(
+        "{} start, G = {:e}, A/A0 = {:.4}",
+        start.name(),
+        a.g,
+        c.contact_fraction
+    );
+    #[cfg(feature = "plot")]
+    a.plot
+        .draw(|| persson::plot::stress_family(&c.sigma, &[(label.as_str(), &c.density)]))?;
+    #[cfg(not(feature = "plot"))]
+    {
+        let _ = &label;
+        a.plot.unavailable()?;
+    }
     Ok(Report {
         title: format!(
             "Stress distribution P(sigma), start {}, G = {:e}, sigma_Y/sigma_H = {}; sigma in units of sigma_H, density in 1/sigma_H\n  method: {}",
