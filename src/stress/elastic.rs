@@ -124,36 +124,37 @@ impl<'a> Images<'a> {
                 )
             }
             Start::Cylinder => {
-                let r = gauss::rule(INTERIOR);
+                let lw = l * w;
+                let ln_norm = norm.ln();
+                // the smallest interior rule whose bound holds up to within 4Lw of
+                // the edge (else the one reaching furthest)
+                let mut pick = (INTERIOR[0], -1.0);
+                for &i in &INTERIOR {
+                    let xs = interior_reach(gauss::SIZES[i], lw, l, ln_norm, tol_q);
+                    if xs > pick.1 {
+                        pick = (i, xs);
+                    }
+                    if xs >= 0.0 && 1.0 - xs <= 4.0 * lw {
+                        break;
+                    }
+                }
+                let r = gauss::rule(pick.0);
+                let n = r.x.len();
                 let int_c =
                     r.x.iter()
                         .zip(&r.w)
                         .map(|(t, wt)| wt * (-(l * t) * (l * t)).exp())
                         .collect();
-                let lw = l * w;
-                let ln_norm = norm.ln();
-                let n = r.x.len();
-                // the interior bound increases with x: bisect for the last x where it holds
-                let ib = |x: f64| interior_ln_bound(x, lw, l, n, ln_norm).exp();
-                let (mut lo, mut hi) = (0.0, (1.0 - lw).max(0.0));
-                let x_star = if ib(hi) <= tol_q {
-                    hi
-                } else if ib(0.0) > tol_q {
-                    -1.0
+                // when no rule reaches the tolerance, use the largest short of the
+                // edge and report its bound
+                let x_star = if pick.1 >= 0.0 {
+                    pick.1
                 } else {
-                    for _ in 0..60 {
-                        let mid = 0.5 * (lo + hi);
-                        if ib(mid) <= tol_q {
-                            lo = mid;
-                        } else {
-                            hi = mid;
-                        }
-                    }
-                    lo
+                    (1.0 - 2.0 * lw).max(0.0)
                 };
-                let int_bound = if x_star >= 0.0 { ib(x_star) } else { 0.0 };
-                // the edge windows [x − Lw, 1] are longest at x = max(x_star, 0)
-                let (edge, edge_bound) = edge_rule(x_star.max(0.0), lw, w, ln_norm, tol_q);
+                let int_bound = interior_ln_bound(x_star, lw, l, n, ln_norm).exp();
+                // the edge windows [x − Lw, 1] are longest at x = x_star
+                let (edge, edge_bound) = edge_rule(x_star, lw, w, ln_norm, tol_q);
                 (
                     Kernel::CylWindow {
                         int_c,
@@ -411,8 +412,30 @@ fn edge_rule(x: f64, lw: f64, w: f64, ln_norm: f64, tol_q: f64) -> (usize, f64) 
     pick
 }
 
-/// Interior window rule: 48 nodes (index in [`gauss::SIZES`]).
-const INTERIOR: usize = 5;
+/// Interior window rules tried: 48, 64, 96, 128 nodes (indices in [`gauss::SIZES`]).
+const INTERIOR: [usize; 4] = [5, 6, 7, 8];
+
+/// The largest x in [0, 1 − Lw] up to which the n-point interior bound is
+/// ≤ `tol` (it increases with x), or −1 if it fails already at x = 0.
+fn interior_reach(n: usize, lw: f64, l: f64, ln_norm: f64, tol: f64) -> f64 {
+    let ib = |x: f64| interior_ln_bound(x, lw, l, n, ln_norm).exp();
+    let (mut lo, mut hi) = (0.0, (1.0 - lw).max(0.0));
+    if ib(hi) <= tol {
+        return hi;
+    }
+    if ib(0.0) > tol {
+        return -1.0;
+    }
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if ib(mid) <= tol {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    lo
+}
 /// Edge rules tried, as Gauss–Legendre indices (48 … 384 nodes: Gauss–Jacobi
 /// with half as many).
 const EDGE: [usize; 7] = [5, 6, 7, 8, 9, 10, 11];
