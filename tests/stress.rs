@@ -478,3 +478,34 @@ mod properties {
         }
     }
 }
+
+/// Narrow kernels at the tightest tolerance: at G = 1e-12 the density inside
+/// the support is P0 + τ P0'' + O(τ²) (heat-kernel expansion, τ ≈ 1e-12), for
+/// every tolerance, and the bound stays finite.
+#[test]
+fn narrow_kernel_matches_taylor_expansion() {
+    // O(τ²) ≈ 1e-24 plus the solver's rounding (density ≈ 1)
+    const TAYLOR_TOL: f64 = 1e-13;
+    let g = 1e-12;
+    for tol in [1e-15, 1e-12, 1e-6] {
+        for (st, want) in [
+            (Start::Flat, 0.0),
+            (Start::Hertz, 1.0),
+            // P0 = s(1 − s²)^(−1/2), P0'' = 3s(1 − s²)^(−5/2), τ = (π/4)² G
+            (
+                Start::Cylinder,
+                0.5 / 0.75f64.sqrt()
+                    + std::f64::consts::FRAC_PI_4.powi(2) * g * 1.5 / 0.75f64.powf(2.5),
+            ),
+        ] {
+            let sol = Solver::new(&st, g, None, tol).unwrap();
+            let d = sol.density(0.5).unwrap();
+            assert!(
+                (d.value - want).abs() < TAYLOR_TOL.max(tol) && d.error <= tol.max(1e-13),
+                "{} tol={tol}: {:?} vs {want}",
+                st.name(),
+                d
+            );
+        }
+    }
+}

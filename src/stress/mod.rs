@@ -276,11 +276,17 @@ impl<'a> Solver<'a> {
         };
         let (el, how_el) = match (&ser, &img) {
             (Some(s), _) => (s.0, format!("sine series ({} terms)", s.2)),
-            (None, Some(i)) => (i.0, format!("image sum ({} images)", i.2)),
+            (None, Some(i)) => (
+                i.0,
+                format!("image sum ({})", count(i.2, "image", "images")),
+            ),
             _ => unreachable!("SERIES_CONTACT_RATIO < SERIES_PLASTIC_RATIO"),
         };
         let (pl, how_pl) = match (&ser, &img) {
-            (_, Some(i)) => (i.1, format!("image sum ({} images)", i.2)),
+            (_, Some(i)) => (
+                i.1,
+                format!("image sum ({})", count(i.2, "image", "images")),
+            ),
             (Some(s), None) => (s.1, format!("sine series ({} terms)", s.2)),
             _ => unreachable!("SERIES_CONTACT_RATIO < SERIES_PLASTIC_RATIO"),
         };
@@ -310,8 +316,16 @@ impl<'a> Solver<'a> {
     pub fn curve(&self, sigma: &[f64]) -> Result<StressCurve> {
         let mut density = Vec::with_capacity(sigma.len());
         let mut derr: f64 = 0.0;
+        let mut images_used = 0;
         for &s in sigma {
-            let e = self.density(s)?;
+            let e = match &self.density {
+                Density::Images(img) if self.y.is_finite() && s > 0.0 && s < self.y => {
+                    let (e, k) = images::density(img, self.y, s)?;
+                    images_used = images_used.max(k);
+                    e
+                }
+                _ => self.density(s)?,
+            };
             density.push(e.value);
             derr = derr.max(e.error);
         }
@@ -330,7 +344,15 @@ impl<'a> Solver<'a> {
             g: self.g,
             tau: self.tau,
             yield_ratio: self.y.is_finite().then_some(self.y),
-            method: format!("density: {}; {how}", self.method()),
+            method: if images_used > 0 {
+                format!(
+                    "density: {} (at most {}); {how}",
+                    self.method(),
+                    count(images_used, "image", "images"),
+                )
+            } else {
+                format!("density: {}; {how}", self.method())
+            },
         })
     }
 
@@ -341,6 +363,11 @@ impl<'a> Solver<'a> {
         let n = n.max(2);
         (0..n).map(|i| top * i as f64 / (n - 1) as f64).collect()
     }
+}
+
+/// "1 image", "3 images".
+fn count(n: usize, one: &str, many: &str) -> String {
+    format!("{n} {}", if n == 1 { one } else { many })
 }
 
 /// P(σ, ζ) for given G in dimensionless form: convenience over [`Solver`].
