@@ -14,12 +14,38 @@
 //!
 //! Three representations are used, each where it is fast and accurate, and
 //! every result says which (`method`):
-//! - elastic (y = ∞): the method of images, P = Q(s) ([`elastic`] module docs),
+//! - elastic (y = ∞): the method of images, P(s) = Q(s) = ∫₀¹ P0(u)[φ(s−u) − φ(s+u)] du
 //!   in closed form (flat, Hertz) or by Gauss rules with a Bernstein-ellipse
 //!   error bound (cylinder);
 //! - finite y, τ ≳ y²/400: the Fourier sine series (seed 001 Eqs. 7, 10) with a
 //!   rigorous tail bound;
 //! - finite y, τ small: the sum over images for two absorbing walls.
+//!
+//! ```text
+//! φ(z) = e^{−z²/w²}/(w√π)
+//! flat:   P = φ(s − 1)(1 − e^{−4s/w²})
+//! Hertz:  P = s[erf((1−s)/w) + erf((1+s)/w)] − (w/√π) e^{−(1−s)²/w²}(1 − e^{−4s/w²})
+//! series: P = (2/y) Σ Bₙ e^{−(nπ/y)²τ} sin(nπs/y),  Bₙ = sin(nπ/y), 2j₁(nπ/y), (π/2)J₁(nπ/y)
+//! images: P = Σₖ Q(s − 2ky)
+//! A∞    = ∫₀¹ P0(u) erf(u/w) du      (flat erf(1/w); Hertz, cylinder: ../shared/theory.md §3)
+//! A_el  = Σ_{n odd} (4/(nπ)) Bₙ Eₙ            = A∞ − F(y) + F(2y) − …
+//! A_pl  = σ0/σY − Σ (−1)ⁿ⁺¹ (2/(nπ)) Bₙ Eₙ   = Σ_{j≥0} F((2j+1)y)
+//! F(x)  = ∫₀¹ P0(u)[erfc((x−u)/w) − erfc((x+u)/w)] du
+//! ```
+//! Every sum is absolutely convergent: the plastic series has its τ → ∞ limit
+//! σ0/σY subtracted analytically, and the image sum for A_pl has positive
+//! terms. The series is used for A_el when τ/y² ≥ 0.02 and for A_pl when
+//! τ/y² ≥ 0.25, where the image sums would cancel.
+//!
+//! # Accuracy
+//! Each result carries a bound on its absolute error: series tails bounded by
+//! Σ_{n>N} e^{−n²a} (|Bₙ| ≤ 1), Gauss rules by the Bernstein-ellipse theorem,
+//! the Gaussian windows by their cut tails, adaptive quadrature by its
+//! estimate, plus rounding. Relative rounding of the density is a few 1e-15,
+//! so tolerances below ~1e-14 (relative to the density) cannot be met; the
+//! bound then says so rather than the tolerance. The f64 rounding of G itself
+//! and of σ0/σH = 2/3, π/4 is not counted (the exponents e^{−n²π²τ/y²} are
+//! formed in double-double).
 //!
 //! # References
 //! B. N. J. Persson, F. Bucher, B. Chiaia, PRB 65, 184106 (2002), Eqs. 1, 3, 7–12
