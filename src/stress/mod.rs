@@ -43,9 +43,9 @@
 //! the Gaussian windows by their cut tails, adaptive quadrature by its
 //! estimate, plus rounding. Relative rounding of the density is a few 1e-15,
 //! so tolerances below ~1e-14 (relative to the density) cannot be met; the
-//! bound then says so rather than the tolerance. The f64 rounding of G itself
-//! and of σ0/σH = 2/3, π/4 is not counted (the exponents e^{−n²π²τ/y²} are
-//! formed in double-double).
+//! bound then says so rather than the tolerance. G and y are taken as exact;
+//! the series exponents n²π²(σ0/σH)²G/y² are formed in double-double so that
+//! σ0/σH = 2/3, π/4 add no error to e^{−n²a} even when n²a is in the hundreds.
 //!
 //! # References
 //! B. N. J. Persson, F. Bucher, B. Chiaia, PRB 65, 184106 (2002), Eqs. 1, 3, 7–12
