@@ -22,10 +22,12 @@
 
 #![warn(missing_docs)]
 
+pub mod corrected;
 pub mod error;
 pub mod kappa;
 pub mod material;
 pub mod quad;
+pub mod separation;
 pub mod special;
 pub mod spectrum;
 pub mod theory;
