@@ -14,7 +14,7 @@ pub type Result<T, E = Error> = std::result::Result<T, E>;
 #[non_exhaustive]
 pub enum Error {
     /// A numeric parameter is outside its allowed range.
-    #[error("invalid {name} = {value:e}: must be {requirement}")]
+    #[error("invalid {name} = {}: must be {requirement}", num(*.value))]
     InvalidParameter {
         /// The parameter's name as the user wrote it (CLI flag / JSON key).
         name: String,
@@ -53,7 +53,7 @@ pub enum Error {
         source: std::io::Error,
     },
     /// An iterative method or a quadrature did not reach its tolerance.
-    #[error("{what} did not converge: {iterations} iterations, residual {residual:e} > tolerance {tolerance:e}")]
+    #[error("{what} did not converge: {iterations} iterations, residual {} > tolerance {}", num(*.residual), num(*.tolerance))]
     NotConverged {
         /// The computation.
         what: String,
@@ -64,6 +64,15 @@ pub enum Error {
         /// The tolerance asked for.
         tolerance: f64,
     },
+}
+
+/// A number as a person writes it: plain in [1e-4, 1e7), else scientific.
+pub fn num(v: f64) -> String {
+    if v == 0.0 || !v.is_finite() || (1e-4..1e7).contains(&v.abs()) {
+        format!("{v}")
+    } else {
+        format!("{v:e}")
+    }
 }
 
 impl Error {

@@ -24,9 +24,12 @@
 
 pub mod corrected;
 pub mod error;
+pub mod io;
 pub mod kappa;
 pub mod material;
 pub mod quad;
+pub mod report;
+pub mod scene;
 pub mod separation;
 pub mod special;
 pub mod spectrum;

@@ -24,11 +24,13 @@ pub fn erfcx(x: f64) -> f64 {
     x.erfcx()
 }
 
-/// ln erfc(x) for x ≥ 0, finite far beyond the underflow of erfc (x ≈ 27):
-/// ln erfc(x) = ln erfcx(x) − x².
+/// ln erfc(x) for x ≥ 0, to full relative accuracy: `ln_1p(−erf x)` near 0
+/// (where erfc ≈ 1), and `ln erfcx(x) − x²` beyond the underflow of erfc (x ≈ 27).
 #[inline]
 pub fn ln_erfc(x: f64) -> f64 {
-    if x < 1.0 {
+    if x < 0.5 {
+        (-erf(x)).ln_1p()
+    } else if x < 1.0 {
         erfc(x).ln()
     } else {
         erfcx(x).ln() - x * x

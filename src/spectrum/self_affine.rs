@@ -132,10 +132,10 @@ impl SelfAffine {
         let scale = self.c_r * self.q_r.powf(k + 1.0);
         let mut sum = 0.0;
         if let Some((a1, b1)) = clip(a, b, self.q_l, self.q_r) {
-            sum += power::integral(a1 / self.q_r, b1 / self.q_r, k);
+            sum += power::integral(a1, b1, k, self.q_r);
         }
         if let Some((a2, b2)) = clip(a, b, self.q_r, self.q_s) {
-            sum += power::integral(a2 / self.q_r, b2 / self.q_r, k - 2.0 * self.hurst - 2.0);
+            sum += power::integral(a2, b2, k - 2.0 * self.hurst - 2.0, self.q_r);
         }
         scale * sum
     }

@@ -62,33 +62,41 @@ impl Tabulated {
             }
         }
         let (q, c): (Vec<f64>, Vec<f64>) = points.iter().copied().unzip();
-        let slope: Vec<f64> = (0..q.len() - 1)
-            .map(|i| (c[i + 1] / c[i]).ln() / (q[i + 1] / q[i]).ln())
-            .collect();
-        let mut t = Tabulated {
+        let n = q.len();
+        let mut slope = Vec::with_capacity(n - 1);
+        let mut prefix: [Vec<f64>; 3] = Default::default();
+        let mut sums = [0.0; 3];
+        for p in prefix.iter_mut() {
+            p.reserve(n);
+            p.push(0.0);
+        }
+        for i in 0..n - 1 {
+            // ln(q_{i+1}/q_i) from the exact difference keeps close points accurate.
+            let l = ((q[i + 1] - q[i]) / q[i]).ln_1p();
+            let s = (c[i + 1] / c[i]).ln() / l;
+            slope.push(s);
+            let q2 = q[i] * q[i];
+            let mut qk1 = q2; // q_i^{k+1} for k = 1, 3, 5
+            for (j, &k) in PREFIX_ORDERS.iter().enumerate() {
+                sums[j] += c[i] * qk1 * power::integral_log(l, f64::from(k) + 1.0 + s);
+                prefix[j].push(sums[j]);
+                qk1 *= q2;
+            }
+        }
+        let t = Tabulated {
             q,
             c,
             slope,
-            prefix: Default::default(),
+            prefix,
         };
-        for (j, &k) in PREFIX_ORDERS.iter().enumerate() {
-            let mut acc = Vec::with_capacity(t.q.len());
-            let mut sum = 0.0;
-            acc.push(0.0);
-            for i in 0..t.q.len() - 1 {
-                sum += t.segment(i, k, t.q[i + 1]);
-                acc.push(sum);
-            }
-            t.prefix[j] = acc;
-        }
         Ok(t)
     }
 
     /// Read a two-column CSV file (q, C) in the given convention.
     ///
-    /// Lines may be separated by commas, semicolons, tabs or spaces; blank
-    /// lines and lines starting with `#` are skipped; the first data line may
-    /// be a header (it is skipped when it starts with a letter).
+    /// Cells may be separated by commas, semicolons, tabs or spaces; blank
+    /// lines and lines starting with `#` are skipped; the first line may be a
+    /// header (skipped when it starts with a letter and a cell is not a number).
     ///
     /// # Errors
     /// [`Error::Io`] if the file cannot be read; [`Error::Parse`] with the line
@@ -96,13 +104,17 @@ impl Tabulated {
     /// columns, an empty file; the errors of [`Tabulated::new`] and of the
     /// conversion, with the offending line.
     pub fn from_csv(path: &Path, convention: Convention) -> Result<Self> {
-        let text = std::fs::read(path).map_err(|source| Error::Io {
-            path: path.to_path_buf(),
-            source,
-        })?;
-        let text = String::from_utf8(text)
+        Self::from_csv_bytes(path, &crate::io::read(path)?, convention)
+    }
+
+    /// Parse CSV content already in memory; `path` is only used in errors.
+    ///
+    /// # Errors
+    /// As [`Tabulated::from_csv`], without the I/O errors.
+    pub fn from_csv_bytes(path: &Path, bytes: &[u8], convention: Convention) -> Result<Self> {
+        let text = std::str::from_utf8(bytes)
             .map_err(|e| Error::parse(path, 0, 0, format!("not UTF-8 text ({e})")))?;
-        let (points, lines) = parse_two_columns(path, &text)?;
+        let (points, lines) = parse_two_columns(path, text)?;
         let points = convention
             .to_persson(&points)
             .map_err(|e| at_line(e, path, &lines))?;
@@ -122,7 +134,7 @@ impl Tabulated {
         }
         self.c[i]
             * qi.powf(f64::from(k) + 1.0)
-            * power::integral(1.0, x / qi, f64::from(k) + self.slope[i])
+            * power::integral(qi, x, f64::from(k) + self.slope[i], qi)
     }
 
     /// Segment index containing q (clamped to the table).
@@ -228,9 +240,12 @@ pub(crate) fn parse_two_columns(path: &Path, text: &str) -> Result<Rows> {
             .split(|ch: char| ch == ',' || ch == ';' || ch.is_whitespace())
             .filter(|s| !s.is_empty())
             .collect();
-        if first && line.starts_with(|ch: char| ch.is_alphabetic()) {
+        if first
+            && cells.iter().any(|c| c.parse::<f64>().is_err())
+            && line.starts_with(|ch: char| ch.is_alphabetic())
+        {
             first = false;
-            continue; // header
+            continue; // a header: text that does not parse as numbers ("nan" does)
         }
         first = false;
         if cells.len() != 2 {

@@ -1,0 +1,86 @@
+//! `persson area`: A/A0 against nominal pressure.
+
+use persson::kappa::Kappa;
+use persson::theory::Persson;
+use serde_json::json;
+
+use super::args::{pressures, MaterialArgs, SpectrumArgs};
+use super::output::{Format, Report};
+
+/// Arguments of `persson area`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    #[command(flatten)]
+    spectrum: SpectrumArgs,
+    #[command(flatten)]
+    material: MaterialArgs,
+    /// Nominal (mean) pressure σ0, same unit as the modulus; repeatable or comma-separated.
+    #[arg(long, value_delimiter = ',', allow_negative_numbers = true)]
+    pressure: Vec<f64>,
+    /// Magnification ζ (default q_s/q_l, full magnification).
+    #[arg(long, allow_negative_numbers = true)]
+    zeta: Option<f64>,
+    #[command(flatten)]
+    format: Format,
+}
+
+/// Run `persson area`.
+pub fn run(a: Args) -> anyhow::Result<()> {
+    report(&a)?.print(&a.format)
+}
+
+fn report(a: &Args) -> anyhow::Result<Report> {
+    let spectrum = a.spectrum.build()?;
+    let material = a.material.build(a.spectrum.example)?;
+    let pressures = pressures(&a.pressure, a.spectrum.example)?;
+    let model = Persson::new(spectrum.as_ref(), material.contact_modulus())?;
+    let zeta = a.zeta.unwrap_or_else(|| model.zeta_max());
+    let points = model.load_curve(&pressures, zeta)?;
+    let (q_l, q_s) = (spectrum.q_min(), spectrum.q_max());
+    let rms_height = spectrum.rms_height(q_l, q_s)?.value;
+    let rms_slope = spectrum.rms_slope(q_l, q_s)?.value;
+    Ok(Report {
+        title: format!(
+            "Contact area (Persson's theory), E* = {:e}, zeta = {zeta:e}",
+            material.contact_modulus()
+        ),
+        scalars: vec![
+            ("rms_height".into(), rms_height),
+            ("rms_slope".into(), rms_slope),
+            ("kappa_bush".into(), Kappa::Bush.value()),
+            ("kappa_persson".into(), Kappa::Persson.value()),
+        ],
+        columns: [
+            "pressure",
+            "zeta",
+            "g",
+            "contact_fraction",
+            "bush_linear",
+            "error_bound",
+        ]
+        .map(String::from)
+        .to_vec(),
+        rows: points
+            .iter()
+            .map(|p| {
+                vec![
+                    p.pressure,
+                    p.zeta,
+                    p.g,
+                    p.contact_fraction,
+                    p.contact_fraction_bush_linear,
+                    p.error,
+                ]
+            })
+            .collect(),
+        json: json!({
+            "contact_modulus": material.contact_modulus(),
+            "rms_height": rms_height,
+            "rms_slope": rms_slope,
+            "kappa_bush": Kappa::Bush.value(),
+            "kappa_persson": Kappa::Persson.value(),
+            "theory": "original",
+            "points": points,
+        }),
+    })
+}

@@ -1,0 +1,52 @@
+//! Command-line interface: argument parsing and dispatch. Every subcommand
+//! lives in its own file and only calls the library.
+
+mod area;
+mod args;
+mod g;
+mod kappa;
+mod output;
+mod report;
+mod run;
+mod spectrum;
+
+use clap::{Parser, Subcommand};
+
+/// Contact mechanics of randomly rough surfaces (Persson's theory).
+///
+/// Exit codes: 0 success, 2 bad input or a computation that could not reach
+/// its tolerance (one line on stderr), 2 also for usage errors (clap).
+#[derive(Parser, Debug)]
+#[command(name = "persson", version, about, long_about = None)]
+pub struct Cli {
+    #[command(subcommand)]
+    cmd: Cmd,
+}
+
+#[derive(Subcommand, Debug)]
+enum Cmd {
+    /// Spectrum summary: rms height, slope and curvature, and C(q).
+    Spectrum(spectrum::Args),
+    /// G(ζ) and A/A0 against magnification at one nominal pressure.
+    G(g::Args),
+    /// Real contact area A/A0 against nominal pressure (load curve).
+    Area(area::Args),
+    /// κ of the linear low-load law for Bush and Persson.
+    Kappa(kappa::Args),
+    /// Compute what a scene file (JSON) asks for, and nothing else.
+    Run(run::Args),
+    /// Reports: error against run time, and stability at the extremes.
+    Report(report::Args),
+}
+
+/// Run one parsed command line.
+pub fn run(cli: Cli) -> anyhow::Result<()> {
+    match cli.cmd {
+        Cmd::Spectrum(a) => spectrum::run(a),
+        Cmd::G(a) => g::run(a),
+        Cmd::Area(a) => area::run(a),
+        Cmd::Kappa(a) => kappa::run(a),
+        Cmd::Run(a) => run::run(a),
+        Cmd::Report(a) => report::run(a),
+    }
+}

@@ -1,0 +1,132 @@
+//! Table-driven bad input across subcommands and file formats: every case
+//! exits 2 with a one-line message naming the offending field, prints nothing
+//! on stdout, and never panics.
+#![cfg(feature = "cli")]
+
+use std::path::PathBuf;
+use std::process::Command;
+
+/// A scratch directory for this test process.
+fn dir() -> PathBuf {
+    let d = std::env::temp_dir().join(format!("persson-bad-{}", std::process::id()));
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// Write a file into the scratch directory and return its path as a string.
+fn file(name: &str, bytes: &[u8]) -> String {
+    let p = dir().join(name);
+    std::fs::write(&p, bytes).unwrap();
+    p.to_string_lossy().into_owned()
+}
+
+const SA: &str = "--hurst 0.8 --q-l 1e4 --q-s 1e8 --rms-slope 0.1";
+
+/// (command line, text the message must contain). `{SA}` is a valid spectrum.
+fn cases() -> Vec<(String, String)> {
+    let good_psd = file("good.csv", b"q,C\n1e4,1e-20\n1e5,1e-24\n1e6,1e-28\n");
+    let scene_ok = r#"{"schema":1,"material":{"contact_modulus":1},"spectrum":{"kind":"self_affine","hurst":0.8,"q_l":1,"q_s":100,"rms_slope":1},"pressures":[0.1],"outputs":{"area":{}}}"#;
+    let mut big = Vec::with_capacity(4 << 20);
+    for i in 0..(4u32 << 20) {
+        big.push((i.wrapping_mul(2_654_435_761) >> 24) as u8);
+    }
+    let v: Vec<(String, &str)> = vec![
+        // area: numbers
+        (format!("area {SA} --modulus 1 --pressure nan"), "pressure"),
+        (format!("area {SA} --modulus 1 --pressure -1"), "pressure"),
+        (format!("area {SA} --modulus 1 --pressure 0"), "pressure"),
+        (format!("area {SA} --modulus 1 --pressure 1e999"), "pressure"),
+        (format!("area {SA} --modulus inf --pressure 1"), "contact_modulus"),
+        (format!("area {SA} --modulus 0 --pressure 1"), "contact_modulus"),
+        (format!("area {SA} --modulus 1 --pressure 1 --zeta 0"), "zeta"),
+        (format!("area {SA} --modulus 1 --pressure 1 --zeta nan"), "zeta"),
+        (format!("area {SA} --young 1 --poisson 0.7 --pressure 1"), "poisson"),
+        (format!("area {SA} --young -1 --poisson 0.3 --pressure 1"), "young"),
+        (format!("area {SA} --modulus 1"), "pressure"),
+        ("area --modulus 1 --pressure 1".into(), "spectrum"),
+        (format!("area {SA} --pressure 1"), "material"),
+        // spectrum parameters
+        ("area --hurst 0 --q-l 1 --q-s 10 --c-r 1 --modulus 1 --pressure 1".into(), "hurst"),
+        ("area --hurst 1 --q-l 1 --q-s 10 --c-r 1 --modulus 1 --pressure 1".into(), "hurst"),
+        ("area --hurst -0.5 --q-l 1 --q-s 10 --c-r 1 --modulus 1 --pressure 1".into(), "hurst"),
+        ("area --hurst 0.5 --q-l 10 --q-s 1 --c-r 1 --modulus 1 --pressure 1".into(), "q_l <= q_r < q_s"),
+        ("area --hurst 0.5 --q-l 1 --q-r 20 --q-s 10 --c-r 1 --modulus 1 --pressure 1".into(), "q_l <= q_r < q_s"),
+        ("area --hurst 0.5 --q-l -1 --q-s 10 --c-r 1 --modulus 1 --pressure 1".into(), "q_l"),
+        ("area --hurst 0.5 --q-l 1 --q-s inf --c-r 1 --modulus 1 --pressure 1".into(), "q_s"),
+        ("area --hurst 0.5 --q-l 1 --q-s 10 --c-r 0 --modulus 1 --pressure 1".into(), "c_r"),
+        ("area --hurst 0.5 --q-l 1 --q-s 10 --rms-height nan --modulus 1 --pressure 1".into(), "rms_height"),
+        ("area --hurst 0.5 --q-l 1 --q-s 10 --rms-slope -1 --modulus 1 --pressure 1".into(), "rms_slope"),
+        ("area --hurst 0.5 --q-l 1 --q-s 10 --modulus 1 --pressure 1".into(), "amplitude"),
+        // PSD files
+        ("area --psd /no/such/file.csv --modulus 1 --pressure 1".into(), "file.csv"),
+        (format!("area --psd {} --modulus 1 --pressure 1", file("empty.csv", b"")), "no data"),
+        (format!("area --psd {} --modulus 1 --pressure 1", file("comments.csv", b"# a\n# b\n")), "no data"),
+        (format!("area --psd {} --modulus 1 --pressure 1", file("one.csv", b"1e4,1e-20\n")), "at least 2"),
+        (format!("area --psd {} --modulus 1 --pressure 1", file("trunc.csv", b"q,C\n1e4,1e-20\n1e5,")), "2 columns"),
+        (format!("area --psd {} --modulus 1 --pressure 1", file("extra.csv", b"1e4,1e-20,3\n1e5,1e-24,3\n")), "2 columns"),
+        (format!("area --psd {} --modulus 1 --pressure 1", file("missing.csv", b"1e4\n1e5\n")), "2 columns"),
+        (format!("area --psd {} --modulus 1 --pressure 1", file("text.csv", b"1e4,abc\n1e5,1e-24\n")), "not a number"),
+        (format!("area --psd {} --modulus 1 --pressure 1", file("order.csv", b"1e5,1e-20\n1e4,1e-24\n")), "q[1]"),
+        (format!("area --psd {} --modulus 1 --pressure 1", file("dup.csv", b"1e4,1e-20\n1e4,1e-24\n")), "q[1]"),
+        (format!("area --psd {} --modulus 1 --pressure 1", file("negc.csv", b"1e4,1e-20\n1e5,-1e-24\n")), "C[1]"),
+        (format!("area --psd {} --modulus 1 --pressure 1", file("zeroc.csv", b"1e4,0\n1e5,1e-24\n")), "C[0]"),
+        (format!("area --psd {} --modulus 1 --pressure 1", file("nanq.csv", b"nan,1e-20\n1e5,1e-24\n")), "q[0]"),
+        (format!("area --psd {} --modulus 1 --pressure 1", file("hugeq.csv", b"1e4,1e-20\n1e999,1e-24\n")), "q[1]"),
+        (format!("area --psd {} --modulus 1 --pressure 1", file("binary.csv", &big)), "UTF-8"),
+        (format!("area --psd {good_psd} --psd-convention grid --modulus 1 --pressure 1"), "psd-size"),
+        (format!("area --psd {good_psd} --psd-convention grid --psd-size -1 --modulus 1 --pressure 1"), "size"),
+        (format!("area --psd {} --psd-convention profile1d --modulus 1 --pressure 1", file("rising.csv", b"1e4,1e-24\n1e5,1e-20\n")), "C[0]"),
+        // other subcommands
+        ("spectrum --example --q-min nan".into(), "q_min"),
+        ("spectrum --example --q-min 1e9 --q-max 1e5".into(), "q_max"),
+        (format!("g {SA} --modulus 1 --pressure 1 --zeta 0.5"), "zeta"),
+        (format!("g {SA} --modulus 1"), "pressure"),
+        (format!("kappa {SA} --modulus 1 --pressure -3"), "pressure"),
+        // scenes
+        ("run /no/such/scene.json".into(), "scene.json"),
+        (format!("run {}", file("typo.json", scene_ok.replace("hurst", "hurts").as_bytes())), "hurts"),
+        (format!("run {}", file("type.json", scene_ok.replace("0.8", "\"0.8\"").as_bytes())), "invalid type"),
+        (format!("run {}", file("schema.json", scene_ok.replace("\"schema\":1", "\"schema\":7").as_bytes())), "schema"),
+        (format!("run {}", file("trunc.json", &scene_ok.as_bytes()[..60])), "EOF"),
+        (format!("run {}", file("bin.json", &big[..4096])), "UTF-8"),
+        (format!("run {}", file("neg.json", scene_ok.replace("[0.1]", "[-0.1]").as_bytes())), "pressure"),
+        (format!("run {}", file("nomat.json", scene_ok.replace(r#""material":{"contact_modulus":1},"#, "").as_bytes())), "material"),
+        (format!("run {} --out /no/such/dir", file("ok.json", scene_ok.as_bytes())), "/no/such/dir"),
+    ];
+    v.into_iter().map(|(a, n)| (a, n.to_string())).collect()
+}
+
+#[test]
+fn every_bad_input_exits_2_with_a_named_one_line_error() {
+    let cases = cases();
+    assert!(cases.len() >= 40, "{} cases", cases.len());
+    let mut failures = Vec::new();
+    for (line, needle) in &cases {
+        let args: Vec<&str> = line.split_whitespace().collect();
+        let out = Command::new(env!("CARGO_BIN_EXE_persson"))
+            .args(&args)
+            .env("RUST_BACKTRACE", "full")
+            .output()
+            .unwrap();
+        let (code, stdout, stderr) = (
+            out.status.code(),
+            String::from_utf8_lossy(&out.stdout),
+            String::from_utf8_lossy(&out.stderr),
+        );
+        let ok = code == Some(2)
+            && stdout.is_empty()
+            && stderr.contains(needle.as_str())
+            && !stderr.contains("panicked")
+            && stderr.trim_end().lines().count() <= 1 + usize::from(stderr.contains("Usage"));
+        if !ok {
+            failures.push(format!("{line}\n  -> code {code:?}, stdout {stdout:?}, stderr {stderr:?} (wanted '{needle}')"));
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} of {} cases failed:\n{}",
+        failures.len(),
+        cases.len(),
+        failures.join("\n")
+    );
+}
