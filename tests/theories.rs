@@ -533,3 +533,146 @@ fn full_contact_limit() {
     let u = sep.elastic_energy(100.0).unwrap().value;
     assert!(((u - full) / full).abs() < 1e-9);
 }
+
+// ------------------------------------------------------------- CLI
+
+#[cfg(feature = "cli")]
+mod cli {
+    use super::*;
+    use std::process::Command;
+
+    fn persson(args: &[&str]) -> (i32, String, String) {
+        let out = Command::new(env!("CARGO_BIN_EXE_persson"))
+            .args(args)
+            .env("RUST_BACKTRACE", "1")
+            .output()
+            .expect("run persson");
+        (
+            out.status.code().unwrap_or(-1),
+            String::from_utf8_lossy(&out.stdout).into_owned(),
+            String::from_utf8_lossy(&out.stderr).into_owned(),
+        )
+    }
+
+    fn json(args: &[&str]) -> serde_json::Value {
+        let (code, out, err) = persson(args);
+        assert_eq!(code, 0, "{args:?}: {err}");
+        serde_json::from_str(&out).unwrap_or_else(|e| panic!("{args:?}: {e}\n{out}"))
+    }
+
+    const SPECTRUM: [&str; 12] = [
+        "--hurst",
+        "0.8",
+        "--q-l",
+        "1e3",
+        "--q-r",
+        "1e4",
+        "--q-s",
+        "1e7",
+        "--rms-slope",
+        "1",
+        "--modulus",
+        "1",
+    ];
+
+    fn args<'a>(cmd: &'a str, extra: &[&'a str]) -> Vec<&'a str> {
+        let mut v = vec![cmd];
+        v.extend_from_slice(&SPECTRUM);
+        v.extend_from_slice(&["--pressure", "1e-4,1e-2,0.5", "--json"]);
+        v.extend_from_slice(extra);
+        v
+    }
+
+    #[test]
+    fn area_theory_flag() {
+        let core = json(&args("area", &[]));
+        assert_eq!(core["theory"], "original");
+        for (name, theory) in [
+            ("yang-persson", Theory::yang_persson()),
+            ("wang-muser", Theory::wang_muser()),
+            ("xu", Theory::Xu { gamma: 0.3 }),
+        ] {
+            let extra: Vec<&str> = match theory {
+                Theory::Xu { .. } => vec!["--theory", name, "--gamma", "0.3"],
+                _ => vec!["--theory", name],
+            };
+            let v = json(&args("area", &extra));
+            assert_eq!(v["theory"], name);
+            assert_eq!(v["gamma"].as_f64(), theory.gamma());
+            for (p, c) in v["points"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .zip(core["points"].as_array().unwrap())
+            {
+                // Same G as the core's area; A/A0 from the chosen theory.
+                assert_eq!(p["g"], c["g"]);
+                let g = p["g"].as_f64().unwrap();
+                let want = theory
+                    .contact_fraction(g, 0.0, 1e-12)
+                    .unwrap()
+                    .contact_fraction;
+                let got = p["contact_fraction"].as_f64().unwrap();
+                assert!((got - want).abs() < 1e-15, "{name}: {got} vs {want}");
+                assert!(got > c["contact_fraction"].as_f64().unwrap());
+            }
+        }
+    }
+
+    #[test]
+    fn separation_json_interface() {
+        let v = json(&args("separation", &[]));
+        let s = surface();
+        let sep = Separation::new(&s, 1.0).unwrap().with_breaks(&[s.q_r()]);
+        let pts = v["points"].as_array().unwrap();
+        assert_eq!(pts.len(), 3);
+        for p in pts {
+            let pressure = p["pressure"].as_f64().unwrap();
+            let want = sep.point(pressure).unwrap();
+            // serde_json's default float parsing may be 1 ulp off the printed value.
+            for (key, w) in [
+                ("mean_separation", want.mean_separation),
+                ("stiffness", want.stiffness),
+            ] {
+                let got = p[key].as_f64().unwrap();
+                assert!(
+                    (got - w).abs() <= 2.0 * f64::EPSILON * w,
+                    "{key}: {got} vs {w}"
+                );
+            }
+        }
+        assert!(v["low_load_length"]["value"].as_f64().unwrap() > 0.0);
+    }
+
+    #[test]
+    fn bad_theory_input_exits_2() {
+        for (extra, field) in [
+            (vec!["--theory", "yang-persson", "--gamma", "0"], "gamma"),
+            (vec!["--theory", "yang-persson", "--gamma", "1.5"], "gamma"),
+            (vec!["--theory", "wang-muser", "--gamma", "-1"], "gamma"),
+            (vec!["--theory", "xu", "--gamma", "nan"], "gamma"),
+            (vec!["--theory", "original", "--gamma", "0.5"], "gamma"),
+            (
+                vec!["--theory", "yang-persson", "--pressure", "0"],
+                "pressure",
+            ),
+            (vec!["--theory", "xu", "--pressure", "-1"], "pressure"),
+            (vec!["--theory", "hertz"], "theory"),
+        ] {
+            let (code, out, err) = persson(&args("area", &extra));
+            assert_eq!(code, 2, "{extra:?}: {out}{err}");
+            assert!(
+                err.contains(field) && !err.contains("panicked"),
+                "{extra:?}: {err}"
+            );
+        }
+        for bad in ["0", "-1e3", "nan"] {
+            let (code, _, err) = persson(&args("separation", &["--pressure", bad]));
+            assert_eq!(code, 2, "{bad}: {err}");
+            assert!(
+                err.contains("pressure") && err.lines().count() == 1,
+                "{err}"
+            );
+        }
+    }
+}

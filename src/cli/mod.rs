@@ -8,6 +8,7 @@ mod kappa;
 mod output;
 mod report;
 mod run;
+mod separation;
 mod spectrum;
 
 use clap::{Parser, Subcommand};
@@ -37,6 +38,8 @@ enum Cmd {
     Run(run::Args),
     /// Reports: error against run time, and stability at the extremes.
     Report(report::Args),
+    /// Mean interfacial separation ū, stiffness K = −dp/dū and elastic energy against load.
+    Separation(separation::Args),
 }
 
 /// Run one parsed command line.
@@ -48,5 +51,6 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
         Cmd::Kappa(a) => kappa::run(a),
         Cmd::Run(a) => run::run(a),
         Cmd::Report(a) => report::run(a),
+        Cmd::Separation(a) => separation::run(a),
     }
 }
