@@ -65,6 +65,20 @@ pub const WANG_MUSER_GAMMA: f64 = 5.0 / 9.0;
 /// Default γ of Xu et al. (2024).
 pub const XU_GAMMA: f64 = 0.42;
 
+/// Smallest γ accepted for Yang–Persson and Xu. The ODE rate 1/f reaches
+/// 1/γ and G_e ≈ γ G: at γ = 1e-4 the solver's error bound already exceeds
+/// 1e-12 near G ~ 1e4–1e6, while γ ≥ 1e-3 reaches it for every G up to 1e300
+/// (measured). The published values are 0.42–0.56; Wang–Müser's own bound
+/// is ≈ 0.0102.
+pub const GAMMA_MIN: f64 = 1e-3;
+
+/// Smallest γ accepted for Wang–Müser. The rate f stays positive down to
+/// [`wang_muser_gamma_min`] ≈ 0.0102, but its minimum
+/// γ − 1/(9(11 − 9γ)) then tends to 0 and the solver's bound misses 1e-12 for
+/// some G at γ ≤ 0.012 (measured); from 0.015 up it is met for every G up to
+/// 1e300. 0.02 keeps f_min ≥ 0.0097.
+pub const WANG_MUSER_GAMMA_MIN: f64 = 0.02;
+
 /// Default absolute tolerance on A/A0.
 pub const DEFAULT_TOLERANCE: f64 = 1e-12;
 
@@ -75,8 +89,9 @@ const G_START: f64 = 1e-3;
 /// Rounding budget of erf/erfc and the argument 1/(2√G_e), in ulps.
 const AREA_ULPS: f64 = 8.0;
 
-/// Newton iterations before giving up (quadratic convergence needs ~5).
-const MAX_NEWTON: usize = 60;
+/// Newton/bisection iterations before giving up (Newton needs ~5; bisection
+/// from the analytic bracket to 1e-16 relative needs ≤ ~60 more).
+const MAX_NEWTON: usize = 200;
 
 /// Integrand evaluations allowed per quadrature segment.
 const MAX_EVALS: usize = 200_000;
@@ -87,18 +102,18 @@ const MAX_EVALS: usize = 200_000;
 pub enum Theory {
     /// Persson (2001): V = V_c, A/A0 = erf(1/(2√G)).
     Original,
-    /// Yang & Persson (2008): dV/dV_c = γ + (1 − γ) A², γ ∈ (0, 1].
+    /// Yang & Persson (2008): dV/dV_c = γ + (1 − γ) A², γ ∈ [1e-3, 1].
     YangPersson {
         /// γ, default [`YANG_PERSSON_GAMMA`].
         gamma: f64,
     },
     /// Wang & Müser (2017): dV/dV_c = γ − (2/9) A² + (11/9 − γ) A⁴,
-    /// γ ∈ (γ_min, 11/9] with γ_min = (99 − √9477)/162 ≈ 0.0102.
+    /// γ ∈ [0.02, 11/9] (f > 0 needs γ > (99 − √9477)/162 ≈ 0.0102).
     WangMuser {
         /// γ, default [`WANG_MUSER_GAMMA`].
         gamma: f64,
     },
-    /// Xu et al. (2024): A = erf(σ0 / √(2 (γ + (1 − γ) A) V_c)), γ ∈ (0, 1].
+    /// Xu et al. (2024): A = erf(σ0 / √(2 (γ + (1 − γ) A) V_c)), γ ∈ [1e-3, 1].
     Xu {
         /// γ, default [`XU_GAMMA`].
         gamma: f64,
@@ -208,10 +223,10 @@ impl Theory {
 
     /// Check γ against the theory's valid range and return the theory.
     ///
-    /// Ranges: Yang–Persson and Xu γ ∈ (0, 1] (γ = 1 is the original theory;
+    /// Ranges: Yang–Persson and Xu γ ∈ [[`GAMMA_MIN`], 1] (γ = 1 is the original theory;
     /// for Xu, γ ≤ 1 makes the implicit equation's solution unique); Wang–Müser
-    /// γ ∈ (γ_min, 11/9] (f > 0 for all A, see [`wang_muser_gamma_min`]; above
-    /// 11/9 the A⁴ coefficient turns negative).
+    /// γ ∈ [[`WANG_MUSER_GAMMA_MIN`], 11/9] (f > 0 for all A needs
+    /// γ > [`wang_muser_gamma_min`]; above 11/9 the A⁴ coefficient turns negative).
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] naming `gamma` and its range.
@@ -219,21 +234,20 @@ impl Theory {
         match self {
             Theory::Original => {}
             Theory::YangPersson { gamma } | Theory::Xu { gamma } => {
-                if !(gamma.is_finite() && gamma > 0.0 && gamma <= 1.0) {
+                if !(gamma.is_finite() && (GAMMA_MIN..=1.0).contains(&gamma)) {
                     return Err(Error::invalid(
                         "gamma",
                         gamma,
-                        format!("in (0, 1] for the {} theory", self.name()),
+                        format!("in [{GAMMA_MIN:e}, 1] for the {} theory", self.name()),
                     ));
                 }
             }
             Theory::WangMuser { gamma } => {
-                let lo = wang_muser_gamma_min();
-                if !(gamma.is_finite() && gamma > lo && gamma <= 11.0 / 9.0) {
+                if !(gamma.is_finite() && (WANG_MUSER_GAMMA_MIN..=11.0 / 9.0).contains(&gamma)) {
                     return Err(Error::invalid(
                         "gamma",
                         gamma,
-                        format!("in ({lo:.6}, 11/9] for the wang-muser theory"),
+                        format!("in [{WANG_MUSER_GAMMA_MIN}, 11/9] for the wang-muser theory"),
                     ));
                 }
             }
@@ -492,9 +506,13 @@ impl OdeSolver {
             omf / f * g
         };
         let (a, b) = (self.g_e.ln(), to.ln());
-        // Absolute tolerance scaled to the size of G here: an error δ in G
-        // moves A by at most ~δ/G.
-        let scale = self.g_e.max(to);
+        // An error δ in G moves G_e by f δ and A by |dA/dG_e| f δ ≤ 0.242 f δ/G_e
+        // (max of x e^{−x²}/√π): the allowed absolute error in G is ~ tol G_e/f.
+        // f at the solution is unknown here; the larger endpoint value is the
+        // safe guess when the segment ends near it (the final bound uses the
+        // solution's f and is checked against the tolerance).
+        let hi = self.g_e.max(to);
+        let scale = hi / theory.rate_at(self.g_e).1.max(theory.rate_at(to).1);
         let q = integrate(
             "corrected-theory ODE quadrature",
             integrand,
@@ -544,9 +562,9 @@ impl OdeSolver {
         let (_, f0) = self.theory.rate_at(self.g_e);
         let residual0 = self.g_e + self.d - g;
         let mut next = (self.g_e - residual0 * f0).clamp(lo, hi);
-        let tol_g = 0.1 * self.tolerance * g;
         let mut converged = false;
         let mut residual = f64::INFINITY;
+        let mut last_residual = f64::INFINITY;
         let mut f = f0;
         for _ in 0..MAX_NEWTON {
             self.advance(next)?;
@@ -557,20 +575,32 @@ impl OdeSolver {
             } else {
                 lo = lo.max(self.g_e);
             }
+            // Allowed residual in G: δA ≤ 0.242 f δG/G_e (see `advance`).
+            let tol_g = 0.1 * self.tolerance * self.g_e / f;
             if residual.abs() <= tol_g.max(4.0 * f64::EPSILON * g) {
                 converged = true;
                 break;
             }
-            next = self.g_e - residual * f;
-            if !(next > lo && next < hi) {
+            // Newton, clamped to the bracket (the root can sit on the analytic
+            // bound G_START + f_min (G − G_START) to rounding at huge G);
+            // bisection when clamping makes no progress.
+            // A step that did not halve the residual (f varies fast near the
+            // Wang–Müser γ_min) is followed by a bisection (as in rtsafe).
+            next = (self.g_e - residual * f).clamp(lo, hi);
+            if next == self.g_e || next.is_nan() || residual.abs() > 0.5 * last_residual {
                 next = 0.5 * (lo + hi);
             }
+            last_residual = residual.abs();
             if next == self.g_e {
-                converged = residual.abs() <= 16.0 * f64::EPSILON * g;
+                // No representable progress: the residual is at its rounding
+                // floor, which the error bound below includes.
+                converged = true;
                 break;
             }
         }
-        let ge_error = f * (residual.abs() + self.d_error) + 2.0 * f64::EPSILON * self.g_e;
+        // Residual, quadrature errors, and the rounding of G_e + D − G.
+        let floor = 4.0 * f64::EPSILON * (self.d.abs() + g);
+        let ge_error = f * (residual.abs() + self.d_error + floor) + 2.0 * f64::EPSILON * self.g_e;
         let s = closed_form_at(g, self.g_e, f, ge_error, self.evals - evals0);
         if !converged || s.error > self.tolerance {
             return Err(Error::NotConverged {

@@ -240,6 +240,43 @@ fn low_load_kappa_limits() {
 }
 
 #[test]
+fn stable_over_the_whole_range() {
+    // Every theory at the edges of its γ range, G from 0 to 1e300: finite,
+    // error within the tolerance, A/A0 non-increasing in G.
+    let wm_min = corrected::WANG_MUSER_GAMMA_MIN;
+    let theories = [
+        Theory::Original,
+        Theory::YangPersson {
+            gamma: corrected::GAMMA_MIN,
+        },
+        Theory::YangPersson { gamma: 1.0 },
+        Theory::WangMuser { gamma: wm_min },
+        Theory::WangMuser { gamma: 11.0 / 9.0 },
+        Theory::Xu {
+            gamma: corrected::GAMMA_MIN,
+        },
+        Theory::Xu { gamma: 1.0 },
+    ];
+    let gs: Vec<f64> = std::iter::once(0.0)
+        .chain((-300..=300).step_by(7).map(|k| 10f64.powi(k)))
+        .collect();
+    for t in theories {
+        let sols = t
+            .contact_fractions(&gs, 1e-12)
+            .unwrap_or_else(|e| panic!("{t:?}: {e}"));
+        let mut last = 1.0;
+        for (g, s) in gs.iter().zip(&sols) {
+            assert!(
+                s.contact_fraction.is_finite() && s.error <= 1e-12,
+                "{t:?} G={g:e}: {s:?}"
+            );
+            assert!(s.contact_fraction <= last + s.error, "{t:?} G={g:e}");
+            last = s.contact_fraction;
+        }
+    }
+}
+
+#[test]
 fn corrected_theories_lie_between_original_and_bush() {
     // κ: Persson √(8/π) < corrected ≈ 2.1–2.4 < Bush √(2π) (seed 002: numerics ≈ 2).
     for t in Theory::all_defaults() {

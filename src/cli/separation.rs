@@ -17,7 +17,7 @@ pub struct TheoryArgs {
     #[arg(long, default_value = "original",
           value_parser = clap::builder::PossibleValuesParser::new(THEORY_NAMES))]
     pub theory: String,
-    /// γ of the corrected theory (yang-persson and xu: (0, 1]; wang-muser: (0.0102, 11/9]).
+    /// γ of the corrected theory (yang-persson and xu: [0.001, 1]; wang-muser: [0.02, 11/9]).
     #[arg(long, allow_negative_numbers = true)]
     pub gamma: Option<f64>,
     /// Absolute tolerance on A/A0 of the corrected theories' solver.
