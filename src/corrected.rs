@@ -643,6 +643,19 @@ pub struct TheoryPoint {
 ///
 /// # Errors
 /// A pressure not finite and positive; ζ < 1; γ invalid; solver failure.
+///
+/// # Examples
+/// ```
+/// use persson::corrected::{load_curve, Theory};
+/// use persson::spectrum::{Amplitude, SelfAffine};
+/// use persson::theory::Persson;
+/// let s = SelfAffine::new(1e3, 1e4, 1e7, 0.8, Amplitude::RmsSlope(1.0)).unwrap();
+/// let model = Persson::new(&s, 1.0).unwrap();
+/// let pts = load_curve(&model, Theory::yang_persson(), model.zeta_max(), &[1e-6], 1e-12).unwrap();
+/// // Low load: A/A0 → κ σ0/(E* rms slope), κ = √(8/(π γ)) = 2.379 for γ = 0.45
+/// let kappa = pts[0].contact_fraction / 1e-6;
+/// assert!((kappa - Theory::yang_persson().low_load_kappa()).abs() < 1e-4);
+/// ```
 pub fn load_curve(
     model: &Persson,
     theory: Theory,

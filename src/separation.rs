@@ -229,6 +229,17 @@ impl<'a> Separation<'a> {
     ///
     /// # Errors
     /// `pressure` not finite and positive; quadrature failure.
+    ///
+    /// # Examples
+    /// ```
+    /// use persson::separation::Separation;
+    /// use persson::spectrum::{Amplitude, SelfAffine};
+    /// let s = SelfAffine::new(1e3, 1e4, 1e7, 0.8, Amplitude::RmsSlope(1.0)).unwrap();
+    /// let sep = Separation::new(&s, 1.0).unwrap().with_breaks(&[1e4]);
+    /// // mpmath (tanh-sinh, 25 digits): ū(p = 1e-3 E*) = 6.8432763617407e-5 m
+    /// let u = sep.mean_separation(1e-3).unwrap();
+    /// assert!((u.value - 6.843_276_361_740_7e-5).abs() < 1e-9 * u.value);
+    /// ```
     pub fn mean_separation(&self, pressure: f64) -> Result<Estimate> {
         check::positive("pressure", pressure)?;
         let r = pressure / self.contact_modulus;

@@ -554,6 +554,33 @@ fn separation_matches_mpmath() {
 }
 
 #[test]
+fn tabulated_spectrum_gives_the_same_separation() {
+    // Log-log interpolation reproduces each power-law piece exactly when q_r
+    // is a node: the table *is* the self-affine spectrum (to rounding).
+    let s = surface();
+    let mut pts = vec![(s.q_min(), s.c(s.q_min())), (s.q_r(), s.c(s.q_r()))];
+    pts.extend((1..=30).map(|i| {
+        let q = s.q_r() * 1e3f64.powf(i as f64 / 30.0);
+        (q.min(s.q_max()), s.c(q.min(s.q_max())))
+    }));
+    let t = persson::spectrum::Tabulated::new(&pts).unwrap();
+    let (a, b) = (separation(&s), Separation::new(&t, 1.0).unwrap());
+    for p in [1e-4, 0.01, 0.3] {
+        let (x, y) = (a.point(p).unwrap(), b.point(p).unwrap());
+        for (got, want) in [
+            (y.mean_separation, x.mean_separation),
+            (y.stiffness, x.stiffness),
+            (y.elastic_energy, x.elastic_energy),
+        ] {
+            assert!(
+                ((got - want) / want).abs() < SEP_REL,
+                "p={p}: {got} vs {want}"
+            );
+        }
+    }
+}
+
+#[test]
 fn full_contact_limit() {
     let s = surface();
     let sep = separation(&s);
