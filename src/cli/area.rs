@@ -1,6 +1,6 @@
 //! `persson area`: A/A0 against nominal pressure.
 
-use persson::corrected;
+use persson::corrected::{self, Theory};
 use persson::kappa::Kappa;
 use persson::theory::Persson;
 use serde_json::json;
@@ -47,9 +47,11 @@ fn report(a: &Args) -> anyhow::Result<Report> {
         .zip(&corrected)
         .map(|(p, c)| {
             let mut v = json!(p);
-            v["contact_fraction"] = json!(c.contact_fraction);
-            v["complement"] = json!(c.complement);
-            v["error"] = json!(c.error);
+            if theory != Theory::Original {
+                v["contact_fraction"] = json!(c.contact_fraction);
+                v["complement"] = json!(c.complement);
+                v["error"] = json!(c.error);
+            }
             v["effective_g"] = json!(c.effective_g);
             v
         })
@@ -85,15 +87,15 @@ fn report(a: &Args) -> anyhow::Result<Report> {
         .to_vec(),
         rows: points
             .iter()
-            .zip(&corrected)
-            .map(|(p, c)| {
+            .zip(&json_points)
+            .map(|(p, v)| {
                 vec![
                     p.pressure,
                     p.zeta,
                     p.g,
-                    c.contact_fraction,
+                    v["contact_fraction"].as_f64().unwrap_or(f64::NAN),
                     p.contact_fraction_bush_linear,
-                    c.error,
+                    v["error"].as_f64().unwrap_or(f64::NAN),
                 ]
             })
             .collect(),
