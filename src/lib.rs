@@ -22,11 +22,14 @@
 
 #![warn(missing_docs)]
 
+pub mod compare;
 pub mod corrected;
 pub mod error;
 pub mod io;
 pub mod kappa;
 pub mod material;
+#[cfg(feature = "plot")]
+pub mod plot;
 pub mod quad;
 pub mod report;
 pub mod scene;

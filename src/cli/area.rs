@@ -25,6 +25,8 @@ pub struct Args {
     theory: super::separation::TheoryArgs,
     #[command(flatten)]
     format: Format,
+    #[command(flatten)]
+    plot: super::plot::PlotArg,
 }
 
 /// Run `persson area`.
@@ -33,6 +35,7 @@ pub fn run(a: Args) -> anyhow::Result<()> {
 }
 
 fn report(a: &Args) -> anyhow::Result<Report> {
+    a.plot.check()?;
     let spectrum = a.spectrum.build()?;
     let material = a.material.build(a.spectrum.example)?;
     let pressures = pressures(&a.pressure, a.spectrum.example)?;
@@ -59,6 +62,18 @@ fn report(a: &Args) -> anyhow::Result<Report> {
     let (q_l, q_s) = (spectrum.q_min(), spectrum.q_max());
     let rms_height = spectrum.rms_height(q_l, q_s)?.value;
     let rms_slope = spectrum.rms_slope(q_l, q_s)?.value;
+    #[cfg(feature = "plot")]
+    a.plot.draw(|| {
+        let area: Vec<f64> = points.iter().map(|p| p.contact_fraction).collect();
+        let law = persson::plot::LinearLaw {
+            contact_modulus: material.contact_modulus(),
+            rms_slope,
+        };
+        let label = format!("Persson theory, ζ = {zeta:.3e}");
+        persson::plot::area_vs_load(&pressures, &[(&label, &area)], "unit of E*", Some(law))
+    })?;
+    #[cfg(not(feature = "plot"))]
+    a.plot.unavailable()?;
     Ok(Report {
         title: format!(
             "Contact area ({} theory{}), E* = {:e}, zeta = {zeta:e}",

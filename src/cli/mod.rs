@@ -6,6 +6,7 @@ mod args;
 mod g;
 mod kappa;
 mod output;
+mod plot;
 mod report;
 mod run;
 mod separation;

@@ -114,7 +114,7 @@ impl Tabulated {
     pub fn from_csv_bytes(path: &Path, bytes: &[u8], convention: Convention) -> Result<Self> {
         let text = std::str::from_utf8(bytes)
             .map_err(|e| Error::parse(path, 0, 0, format!("not UTF-8 text ({e})")))?;
-        let (points, lines) = parse_two_columns(path, text)?;
+        let (points, lines) = parse_columns(path, text, ["q", "C"])?;
         let points = convention
             .to_persson(&points)
             .map_err(|e| at_line(e, path, &lines))?;
@@ -226,8 +226,9 @@ fn at_line(e: Error, path: &Path, lines: &[usize]) -> Error {
 /// Parsed rows `(x, y)` and the 1-based file line of each.
 pub(crate) type Rows = (Vec<(f64, f64)>, Vec<usize>);
 
-/// Parse rows of two numbers; returns the points and their 1-based lines.
-pub(crate) fn parse_two_columns(path: &Path, text: &str) -> Result<Rows> {
+/// Parse rows of two numbers named `names` (used in messages); returns the
+/// points and their 1-based lines.
+pub(crate) fn parse_columns(path: &Path, text: &str, names: [&str; 2]) -> Result<Rows> {
     let mut points = Vec::new();
     let mut lines = Vec::new();
     let mut first = true;
@@ -253,14 +254,19 @@ pub(crate) fn parse_two_columns(path: &Path, text: &str) -> Result<Rows> {
                 path,
                 n + 1,
                 0,
-                format!("expected 2 columns (q in 1/m, C), found {}", cells.len()),
+                format!(
+                    "expected 2 columns ({}, {}), found {}",
+                    names[0],
+                    names[1],
+                    cells.len()
+                ),
             ));
         }
         let mut v = [0.0; 2];
         for (j, cell) in cells.iter().enumerate() {
             v[j] = cell.parse::<f64>().map_err(|_| {
                 let col = raw.find(cell).map_or(0, |c| c + 1);
-                let field = if j == 0 { "q" } else { "C" };
+                let field = names[j];
                 Error::parse(
                     path,
                     n + 1,
