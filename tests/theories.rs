@@ -708,6 +708,28 @@ mod cli {
         assert!(v["low_load_length"]["value"].as_f64().unwrap() > 0.0);
     }
 
+    #[cfg(feature = "plot")]
+    #[test]
+    fn separation_plots_all_theories() {
+        let dir = std::env::temp_dir().join(format!("persson-theories-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let (u, a) = (dir.join("u.svg"), dir.join("a.svg"));
+        let (us, as_) = (u.to_str().unwrap(), a.to_str().unwrap());
+        let v = json(&args(
+            "separation",
+            &["--plot", us, "--plot-area", as_, "--plot-points", "12"],
+        ));
+        assert_eq!(v["points"].as_array().unwrap().len(), 3);
+        let area = std::fs::read_to_string(&a).unwrap();
+        for name in corrected::THEORY_NAMES {
+            assert!(area.contains(name), "{name} missing from the area plot");
+        }
+        assert!(std::fs::read_to_string(&u)
+            .unwrap()
+            .contains("u0 ln(p_ref/p)"));
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
     #[test]
     fn bad_theory_input_exits_2() {
         for (extra, field) in [

@@ -65,12 +65,22 @@ fn report(a: &Args) -> anyhow::Result<Report> {
     #[cfg(feature = "plot")]
     a.plot.draw(|| {
         let area: Vec<f64> = points.iter().map(|p| p.contact_fraction).collect();
+        let chosen: Vec<f64> = corrected.iter().map(|p| p.contact_fraction).collect();
         let law = persson::plot::LinearLaw {
             contact_modulus: material.contact_modulus(),
             rms_slope,
         };
         let label = format!("Persson theory, ζ = {zeta:.3e}");
-        persson::plot::area_vs_load(&pressures, &[(&label, &area)], "unit of E*", Some(law))
+        let other = format!(
+            "{} theory, γ = {:.3}",
+            theory.name(),
+            theory.gamma().unwrap_or(1.0)
+        );
+        let mut curves = vec![(label.as_str(), area.as_slice())];
+        if theory != Theory::Original {
+            curves.push((other.as_str(), chosen.as_slice()));
+        }
+        persson::plot::area_vs_load(&pressures, &curves, "unit of E*", Some(law))
     })?;
     #[cfg(not(feature = "plot"))]
     a.plot.unavailable()?;
