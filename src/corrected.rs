@@ -38,19 +38,22 @@
 //! # References
 //! - B. N. J. Persson, J. Chem. Phys. 115, 3840 (2001) (original theory).
 //! - C. Yang and B. N. J. Persson, J. Phys.: Condens. Matter 20, 215214 (2008):
-//!   the elastic energy factor S = γ + (1 − γ) P², γ ≈ 0.42–0.45 (we default to
-//!   0.45, the value Persson uses in later work and the default of the public
-//!   MATLAB companion code of Xu et al. 2024 for "YP08").
+//!   the elastic energy factor S = γ + (1 − γ) P², γ ≈ 0.42–0.45. We default
+//!   to 0.45, the value named for "YP08" in the notes of the gateway function
+//!   of the public MATLAB code of Xu et al. 2024 (xylcsi/PerssonModelFudgeFactor);
+//!   that code's individual YP08 functions default to 0.42 instead.
 //! - A. Wang and M. H. Müser, "Gauging Persson theory on adhesion",
 //!   Tribol. Lett. 65, 103 (2017): S = γ − (2/9) P² + (11/9 − γ) P⁴, γ = 5/9.
 //! - Y. Xu, L. Zhu, F. Xiao, Y. Zhou, "A new fudge factor for Persson's theory
 //!   of purely normal elastic rough surface contact", Tribol. Lett. 72 (2024),
 //!   doi:10.1007/s11249-024-01838-4: S = γ + (1 − γ) P at the present scale only;
-//!   γ = 0.42 is the default of the authors' `Persson_LE_Area_Xu24`.
+//!   γ = 0.42 is the default of the authors' `Persson_LE_Area_Xu24` (their
+//!   gateway notes say 0.45).
 //!
 //! The formulas were checked against the public MATLAB code accompanying Xu et
-//! al. (2024), which integrates the same relations by implicit Euler steps on
-//! a fixed grid of 500 magnifications.
+//! al. (2024) (xylcsi/PerssonModelFudgeFactor: `Persson_LE_Area_YP08/WM17/Xu24`,
+//! `Variance_pressure`), which integrates the same relations by implicit Euler
+//! steps on a fixed grid of 500 magnifications; read, not copied.
 
 use crate::error::{check, Error, Result};
 use crate::kappa::Kappa;
