@@ -69,8 +69,8 @@ pub struct SeparationPoint {
     pub mean_separation: f64,
     /// Absolute error estimate of ū, m.
     pub mean_separation_error: f64,
-    /// Normal contact stiffness per unit area K = −dp/dū, Pa/m (`+∞` when it
-    /// overflows f64 near full contact).
+    /// Normal contact stiffness per unit area K = −dp/dū, Pa/m (`+∞`, JSON
+    /// `null`, when it overflows f64 near full contact).
     pub stiffness: f64,
     /// Absolute error estimate of K, Pa/m.
     pub stiffness_error: f64,
