@@ -23,6 +23,7 @@
 #![warn(missing_docs)]
 
 pub mod compare;
+pub mod corrected;
 pub mod error;
 pub mod io;
 pub mod kappa;
@@ -32,6 +33,7 @@ pub mod plot;
 pub mod quad;
 pub mod report;
 pub mod scene;
+pub mod separation;
 pub mod special;
 pub mod spectrum;
 pub mod stress;

@@ -9,6 +9,7 @@ mod output;
 mod plot;
 mod report;
 mod run;
+mod separation;
 mod spectrum;
 mod stress;
 
@@ -41,6 +42,8 @@ enum Cmd {
     Report(report::Args),
     /// Stress distribution P(σ) at one G (dimensionless; seed Figs. 2–4).
     Stress(stress::Args),
+    /// Mean interfacial separation ū, stiffness K = −dp/dū and elastic energy against load.
+    Separation(separation::Args),
 }
 
 /// Run one parsed command line.
@@ -53,5 +56,6 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
         Cmd::Run(a) => run::run(a),
         Cmd::Report(a) => report::run(a),
         Cmd::Stress(a) => stress::run(a),
+        Cmd::Separation(a) => separation::run(a),
     }
 }
