@@ -378,6 +378,31 @@ fn cli_stress_json_and_exit_codes() {
         assert_eq!(out.status.code(), Some(2), "{bad:?}");
         assert!(!out.stderr.is_empty() && out.stdout.is_empty(), "{bad:?}");
     }
+    // tabulated starts: a triangle is accepted; negative or unnormalised tables are not
+    let dir = std::env::temp_dir().join(format!("persson-stress-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for (name, text, code) in [
+        ("ok.csv", "# sigma, P0\n0, 0\n1, 1\n2, 0\n", 0),
+        ("negative.csv", "0 0\n1 -1\n2 3\n", 2),
+        ("unnormalised.csv", "0 0\n1 1\n2 0.5\n", 2),
+        ("garbage.csv", "0 0\n1 x\n", 2),
+    ] {
+        let path = dir.join(name);
+        std::fs::write(&path, text).unwrap();
+        let out = Command::new(bin)
+            .args(["stress", "--g", "0.1", "--json", "--table"])
+            .arg(&path)
+            .env("RUST_BACKTRACE", "0")
+            .output()
+            .unwrap();
+        assert_eq!(
+            out.status.code(),
+            Some(code),
+            "{name}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 /// Hertz theory for the physical starts (Johnson, Contact Mechanics, §4.2):
