@@ -1,10 +1,83 @@
 //! File output that never loses what the user had: write to a temporary file
-//! in the same directory, then rename over the target.
+//! in the same directory, then rename over the target. Inputs are opened
+//! read-only.
 
-use std::io::Write;
+use std::fs::OpenOptions;
 use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicU64, Ordering};
 
 use crate::error::{Error, Result};
+
+/// Distinguishes temporary files of concurrent renders in one process.
+static COUNTER: AtomicU64 = AtomicU64::new(0);
+
+/// A temporary file next to a target, removed on drop unless persisted.
+///
+/// Its name keeps the target's extension (the PNG encoder picks the format
+/// from it) and starts with a dot so that it is hidden while it exists.
+pub struct TempFile {
+    tmp: PathBuf,
+    target: PathBuf,
+    persisted: bool,
+}
+
+impl TempFile {
+    /// Creates the (empty) temporary file, failing if the directory is not
+    /// writable.
+    pub fn create(target: &Path) -> Result<Self> {
+        let dir = match target.parent() {
+            Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+            _ => PathBuf::from("."),
+        };
+        let name = target
+            .file_name()
+            .map(|n| n.to_string_lossy().into_owned())
+            .unwrap_or_else(|| "plot".into());
+        let ext = target
+            .extension()
+            .map(|e| e.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        let n = COUNTER.fetch_add(1, Ordering::Relaxed);
+        let tmp = dir.join(format!(".{name}.{}-{n}.tmp.{ext}", std::process::id()));
+        OpenOptions::new()
+            .write(true)
+            .create_new(true)
+            .open(&tmp)
+            .map_err(|source| Error::Io {
+                path: target.to_path_buf(),
+                source,
+            })?;
+        Ok(TempFile {
+            tmp,
+            target: target.to_path_buf(),
+            persisted: false,
+        })
+    }
+
+    /// The temporary file's path.
+    pub fn path(&self) -> &Path {
+        &self.tmp
+    }
+
+    /// Renames the temporary file over the target.
+    pub fn persist(mut self) -> Result<()> {
+        std::fs::rename(&self.tmp, &self.target).map_err(|source| Error::Io {
+            path: self.target.clone(),
+            source,
+        })?;
+        self.persisted = true;
+        Ok(())
+    }
+}
+
+impl Drop for TempFile {
+    fn drop(&mut self) {
+        if !self.persisted {
+            // Best effort: the file may already be gone.
+            let _ = std::fs::remove_file(&self.tmp);
+        }
+    }
+}
 
 /// Write `bytes` to `path` atomically: a failed write leaves any existing
 /// file untouched and no partial file behind.
@@ -13,44 +86,9 @@ use crate::error::{Error, Result};
 /// [`Error::Io`] naming `path` when the directory does not exist or is not
 /// writable, or the rename fails.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
-    write_atomic_with(path, |file| {
-        file.write_all(bytes)
-            .map_err(|source| io_error(path, source))
-    })
-}
-
-/// Like [`write_atomic`], with the content produced by `fill` on the temporary
-/// path (for writers, such as plot backends, that open the file themselves).
-///
-/// # Errors
-/// As [`write_atomic`], or whatever `fill` returns.
-pub fn write_atomic_path(path: &Path, fill: impl FnOnce(&Path) -> Result<()>) -> Result<()> {
-    let tmp = temp_path(path);
-    let r = fill(&tmp)
-        .and_then(|()| std::fs::rename(&tmp, path).map_err(|source| io_error(path, source)));
-    if r.is_err() {
-        let _ = std::fs::remove_file(&tmp);
-    }
-    r
-}
-
-fn write_atomic_with(
-    path: &Path,
-    fill: impl FnOnce(&mut std::fs::File) -> Result<()>,
-) -> Result<()> {
-    write_atomic_path(path, |tmp| {
-        let mut f = std::fs::File::create(tmp).map_err(|source| io_error(path, source))?;
-        fill(&mut f)?;
-        f.sync_all().map_err(|source| io_error(path, source))
-    })
-}
-
-/// `dir/.name.tmp-PID` next to `path`.
-fn temp_path(path: &Path) -> PathBuf {
-    let name = path
-        .file_name()
-        .map_or_else(|| "out".into(), |n| n.to_string_lossy().into_owned());
-    path.with_file_name(format!(".{name}.tmp-{}", std::process::id()))
+    let tmp = TempFile::create(path)?;
+    std::fs::write(tmp.path(), bytes).map_err(|source| io_error(path, source))?;
+    tmp.persist()
 }
 
 /// Check, before any computation, that `path` can be written: its directory
@@ -59,10 +97,7 @@ fn temp_path(path: &Path) -> PathBuf {
 /// # Errors
 /// [`Error::Io`] naming `path`.
 pub fn check_writable(path: &Path) -> Result<()> {
-    let tmp = temp_path(path);
-    std::fs::File::create(&tmp).map_err(|source| io_error(path, source))?;
-    let _ = std::fs::remove_file(&tmp);
-    Ok(())
+    TempFile::create(path).map(drop)
 }
 
 /// Read a whole input file (opened read-only).
@@ -90,8 +125,7 @@ mod tests {
         std::fs::create_dir_all(&dir).unwrap();
         let p = dir.join("keep.txt");
         std::fs::write(&p, "original").unwrap();
-        let r = write_atomic_path(&p, |_| Err(Error::invalid("x", 1.0, "test failure")));
-        assert!(r.is_err());
+        drop(TempFile::create(&p).unwrap()); // a render that failed before persisting
         assert_eq!(std::fs::read_to_string(&p).unwrap(), "original");
         assert_eq!(
             std::fs::read_dir(&dir).unwrap().count(),
@@ -101,5 +135,6 @@ mod tests {
         write_atomic(&p, b"new").unwrap();
         assert_eq!(std::fs::read_to_string(&p).unwrap(), "new");
         assert!(write_atomic(&dir.join("no/such/dir/x"), b"1").is_err());
+        assert!(check_writable(&dir.join("no/such/dir/x")).is_err());
     }
 }

@@ -25,15 +25,20 @@
 #[cfg(feature = "bem")]
 pub mod bem;
 pub mod compare;
+pub mod corrected;
 pub mod error;
 pub mod io;
 pub mod kappa;
 pub mod material;
+#[cfg(feature = "plot")]
+pub mod plot;
 pub mod quad;
 pub mod report;
 pub mod scene;
+pub mod separation;
 pub mod special;
 pub mod spectrum;
+pub mod stress;
 pub mod theory;
 
 pub use error::{Error, Result};

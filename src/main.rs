@@ -8,6 +8,14 @@ fn main() -> ExitCode {
     let cli = persson_cli::Cli::parse();
     match persson_cli::run(cli) {
         Ok(()) => ExitCode::SUCCESS,
+        // A closed pipe (`persson … | head`) is not an error of ours.
+        Err(e)
+            if e.root_cause()
+                .downcast_ref::<std::io::Error>()
+                .is_some_and(|io| io.kind() == std::io::ErrorKind::BrokenPipe) =>
+        {
+            ExitCode::SUCCESS
+        }
         Err(e) => {
             // One line, no backtrace (even with RUST_BACKTRACE set): exit code 2.
             match e.downcast_ref::<persson::Error>() {

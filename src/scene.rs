@@ -16,10 +16,13 @@ use std::path::{Path, PathBuf};
 
 use serde::{Deserialize, Serialize};
 
+use crate::corrected::{Theory, TheoryPoint};
 use crate::error::{Error, Result};
 use crate::kappa::Kappa;
 use crate::material::{Body, Material};
+use crate::separation::{Separation, SeparationPoint};
 use crate::spectrum::{Amplitude, Convention, SelfAffine, Spectrum, Tabulated};
+use crate::stress::{HertzContact, Solver, Start, StressScene};
 use crate::theory::{log_zetas, AreaPoint, Persson};
 
 /// The scene format version this crate reads.
@@ -123,6 +126,109 @@ pub struct Outputs {
     /// κ and the linear contact fractions.
     #[serde(default)]
     pub kappa: Option<KappaOutput>,
+    /// A/A0 against load for the corrected theories.
+    #[serde(default)]
+    pub theories: Option<TheoriesOutput>,
+    /// Mean interfacial separation and stiffness against load.
+    #[serde(default)]
+    pub separation: Option<SeparationOutput>,
+    /// Stress distributions P(σ, ζ).
+    #[serde(default)]
+    pub stress: Option<StressOutput>,
+}
+
+/// Corrected-theory load curves.
+#[derive(Debug, Clone, Default, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct TheoriesOutput {
+    /// The theories, e.g. `{"theory": "yang-persson", "gamma": 0.42}` (default: all four with their default γ).
+    #[serde(default)]
+    pub theories: Vec<Theory>,
+    /// Magnification (default full).
+    #[serde(default)]
+    pub zeta: Option<f64>,
+    /// Solver tolerance (default [`crate::corrected::DEFAULT_TOLERANCE`]).
+    #[serde(default)]
+    pub tolerance: Option<f64>,
+    /// Draw A/A0 against load for all of them (.svg or .png).
+    #[serde(default)]
+    pub plot: Option<PathBuf>,
+}
+
+/// Mean-separation load curve.
+#[derive(Debug, Clone, Default, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct SeparationOutput {
+    /// Relative tolerance (default [`crate::separation::DEFAULT_TOLERANCE`]).
+    #[serde(default)]
+    pub tolerance: Option<f64>,
+}
+
+/// Stress distributions: dimensionless at given G (`g`), or physical at given
+/// magnifications (`zetas`, with the scene's spectrum and material).
+#[derive(Debug, Clone, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct StressOutput {
+    /// `flat`, `hertz` or `cylinder`.
+    pub start: String,
+    /// Dimensionless mode: the values of G (σ in units of σH).
+    #[serde(default)]
+    pub g: Vec<f64>,
+    /// Dimensionless mode: σY/σH (absent: elastic).
+    #[serde(default)]
+    pub yield_ratio: Option<f64>,
+    /// Physical mode: the magnifications ζ.
+    #[serde(default)]
+    pub zetas: Vec<f64>,
+    /// Physical mode: σH, Pa (flat: the nominal pressure). Or give `ball` / `cylinder`.
+    #[serde(default)]
+    pub peak_pressure: Option<f64>,
+    /// Physical mode: a Hertz ball (start must be `hertz`).
+    #[serde(default)]
+    pub ball: Option<BallSpec>,
+    /// Physical mode: a Hertz cylinder (start must be `cylinder`).
+    #[serde(default)]
+    pub cylinder: Option<CylinderSpec>,
+    /// Physical mode: σY, Pa (absent: elastic).
+    #[serde(default)]
+    pub yield_stress: Option<f64>,
+    /// Number of σ values per curve.
+    #[serde(default = "default_stress_points")]
+    pub points: usize,
+    /// Absolute tolerance (units of 1/σH).
+    #[serde(default = "default_stress_tolerance")]
+    pub tolerance: f64,
+    /// Draw the family of curves (.svg or .png).
+    #[serde(default)]
+    pub plot: Option<PathBuf>,
+}
+
+fn default_stress_points() -> usize {
+    201
+}
+
+fn default_stress_tolerance() -> f64 {
+    1e-12
+}
+
+/// A Hertz ball: radius (m) and load (N).
+#[derive(Debug, Clone, Copy, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct BallSpec {
+    /// Radius, m.
+    pub radius: f64,
+    /// Load, N.
+    pub load: f64,
+}
+
+/// A Hertz cylinder: radius (m) and load per unit length (N/m).
+#[derive(Debug, Clone, Copy, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct CylinderSpec {
+    /// Radius, m.
+    pub radius: f64,
+    /// Load per unit length, N/m.
+    pub load_per_length: f64,
 }
 
 /// Load-curve output.
@@ -132,6 +238,9 @@ pub struct AreaOutput {
     /// Magnification (default full, q_s/q_l).
     #[serde(default)]
     pub zeta: Option<f64>,
+    /// Draw A/A0 against load with the Bush and Persson lines (.svg or .png).
+    #[serde(default)]
+    pub plot: Option<PathBuf>,
 }
 
 /// Magnification-curve output.
@@ -146,6 +255,12 @@ pub struct MagnificationOutput {
     /// Number of log-spaced magnifications.
     #[serde(default = "default_points")]
     pub points: usize,
+    /// Draw A/A0 against ζ (.svg or .png).
+    #[serde(default)]
+    pub plot: Option<PathBuf>,
+    /// Draw G(ζ) (.svg or .png).
+    #[serde(default)]
+    pub plot_g: Option<PathBuf>,
 }
 
 fn default_points() -> usize {
@@ -172,6 +287,48 @@ pub struct SceneReport {
     /// κ values.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub kappa: Option<KappaReport>,
+    /// Corrected-theory load curves, one per theory.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub theories: Option<Vec<TheoryCurve>>,
+    /// Mean separation against load.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub separation: Option<Vec<SeparationPoint>>,
+    /// Stress distributions, one per G or ζ.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub stress: Option<Vec<StressReport>>,
+}
+
+/// One corrected theory's load curve.
+#[derive(Debug, Clone, Serialize)]
+pub struct TheoryCurve {
+    /// The theory and its γ.
+    pub theory: Theory,
+    /// Its low-load κ.
+    pub kappa: f64,
+    /// The points.
+    pub points: Vec<TheoryPoint>,
+}
+
+/// One stress distribution of a scene (dimensionless or physical units).
+#[derive(Debug, Clone, Serialize)]
+pub struct StressReport {
+    /// G of this curve.
+    pub g: f64,
+    /// ζ (physical mode only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub zeta: Option<f64>,
+    /// σ (units of σH, or Pa in physical mode).
+    pub sigma: Vec<f64>,
+    /// P(σ) (1/σH, or 1/Pa).
+    pub density: Vec<f64>,
+    /// A_el/A0.
+    pub contact_fraction: f64,
+    /// A_pl/A0.
+    pub plastic_fraction: f64,
+    /// Bound on the absolute error (dimensionless units).
+    pub error_bound: f64,
+    /// Which method computed it.
+    pub method: String,
 }
 
 /// κ of both theories and, with a spectrum, the rms slope they use.
@@ -298,7 +455,15 @@ impl Scene {
                 kappa_persson: Kappa::Persson.value(),
             });
         }
-        if o.area.is_none() && o.magnification.is_none() {
+        if let Some(st) = o.stress.as_ref().filter(|st| st.zetas.is_empty()) {
+            report.stress = Some(self.stress_dimensionless(st)?);
+        }
+        let needs_model = o.area.is_some()
+            || o.magnification.is_some()
+            || o.theories.is_some()
+            || o.separation.is_some()
+            || o.stress.as_ref().is_some_and(|st| !st.zetas.is_empty());
+        if !needs_model {
             return Ok(report);
         }
         let spectrum = self.spectrum()?;
@@ -323,7 +488,149 @@ impl Scene {
             };
             report.magnification = Some(model.magnification_curve(&zetas, m.pressure)?);
         }
+        if let Some(t) = &o.theories {
+            let zeta = t.zeta.unwrap_or_else(|| model.zeta_max());
+            let tol = t.tolerance.unwrap_or(crate::corrected::DEFAULT_TOLERANCE);
+            let list = if t.theories.is_empty() {
+                Theory::all_defaults().to_vec()
+            } else {
+                t.theories.clone()
+            };
+            let pressures = self.pressures_for("outputs.theories")?;
+            report.theories = Some(
+                list.into_iter()
+                    .map(|th| {
+                        let th = th.validate()?;
+                        Ok(TheoryCurve {
+                            theory: th,
+                            kappa: th.low_load_kappa(),
+                            points: crate::corrected::load_curve(&model, th, zeta, pressures, tol)?,
+                        })
+                    })
+                    .collect::<Result<Vec<_>>>()?,
+            );
+        }
+        if let Some(sep) = &o.separation {
+            let pressures = self.pressures_for("outputs.separation")?;
+            let mut m = Separation::new(spectrum.as_ref(), material.contact_modulus())?;
+            if let Some(tol) = sep.tolerance {
+                m = m.with_tolerance(tol)?;
+            }
+            if let Some(SpectrumSpec::SelfAffine { q_r: Some(q_r), .. }) = &self.spectrum {
+                m = m.with_breaks(&[*q_r]);
+            }
+            report.separation = Some(m.load_curve(pressures)?);
+        }
+        if let Some(st) = o.stress.as_ref().filter(|st| !st.zetas.is_empty()) {
+            report.stress = Some(self.stress_physical(st, &model, material.contact_modulus())?);
+        }
         Ok(report)
+    }
+
+    /// The scene's pressures, required non-empty by `what`.
+    fn pressures_for(&self, what: &str) -> Result<&[f64]> {
+        if self.pressures.is_empty() {
+            return Err(missing(&format!(
+                "pressures (a non-empty list, for {what})"
+            )));
+        }
+        Ok(&self.pressures)
+    }
+
+    /// Stress curves at the values of G, σ in units of σH.
+    fn stress_dimensionless(&self, st: &StressOutput) -> Result<Vec<StressReport>> {
+        let start = Start::from_name(&st.start).map_err(|e| prefix("outputs.stress.", e))?;
+        if st.g.is_empty() {
+            return Err(missing(
+                "outputs.stress.g (dimensionless) or outputs.stress.zetas (physical)",
+            ));
+        }
+        st.g.iter()
+            .map(|&g| {
+                let solver = Solver::new(&start, g, st.yield_ratio, st.tolerance)
+                    .map_err(|e| prefix("outputs.stress.", e))?;
+                let c = solver.curve(&solver.grid(st.points))?;
+                Ok(StressReport {
+                    g,
+                    zeta: None,
+                    sigma: c.sigma,
+                    density: c.density,
+                    contact_fraction: c.contact_fraction,
+                    plastic_fraction: c.plastic_fraction,
+                    error_bound: c.error_bound,
+                    method: c.method,
+                })
+            })
+            .collect()
+    }
+
+    /// Stress curves at the magnifications, in Pa and 1/Pa.
+    fn stress_physical(
+        &self,
+        st: &StressOutput,
+        model: &Persson,
+        e_star: f64,
+    ) -> Result<Vec<StressReport>> {
+        let named = |e: Error| prefix("outputs.stress.", e);
+        let start = Start::from_name(&st.start).map_err(named)?;
+        let problem = match (&st.ball, &st.cylinder, st.peak_pressure) {
+            (Some(b), None, None) if matches!(start, Start::Hertz) => {
+                StressScene::hertz(&HertzContact::ball(b.radius, b.load, e_star).map_err(named)?, st.yield_stress)
+            }
+            (None, Some(c), None) if matches!(start, Start::Cylinder) => StressScene::hertz(
+                &HertzContact::cylinder(c.radius, c.load_per_length, e_star).map_err(named)?,
+                st.yield_stress,
+            ),
+            (None, None, Some(p)) => StressScene::new(start, p, st.yield_stress),
+            _ => {
+                return Err(missing(
+                    "exactly one of outputs.stress.peak_pressure, .ball (start hertz), .cylinder (start cylinder)",
+                ))
+            }
+        }
+        .map_err(named)?;
+        // σ from 0 to σY, or (elastic) to σH plus four standard deviations
+        // √(2G) σ0 of the widest curve.
+        let mut g_max = 0.0f64;
+        for &z in &st.zetas {
+            g_max = g_max.max(model.g(z, problem.nominal_pressure()).map_err(named)?.value);
+        }
+        let top = st.yield_stress.unwrap_or(
+            problem.peak_pressure + 4.0 * (2.0 * g_max).sqrt() * problem.nominal_pressure(),
+        );
+        let n = st.points.max(2);
+        let sigma: Vec<f64> = (0..n).map(|i| top * i as f64 / (n - 1) as f64).collect();
+        Ok(problem
+            .curves(model, &st.zetas, &sigma, st.tolerance)
+            .map_err(named)?
+            .into_iter()
+            .map(|c| StressReport {
+                g: c.g.value,
+                zeta: Some(c.zeta),
+                sigma: c.sigma,
+                density: c.density,
+                contact_fraction: c.contact_fraction,
+                plastic_fraction: c.plastic_fraction,
+                error_bound: c.error_bound,
+                method: c.method,
+            })
+            .collect())
+    }
+
+    /// Every file the scene asks to write (plots), relative to `dir`.
+    pub fn plot_paths(&self, dir: &Path) -> Vec<PathBuf> {
+        let o = &self.outputs;
+        [
+            o.area.as_ref().and_then(|a| a.plot.clone()),
+            o.magnification.as_ref().and_then(|m| m.plot.clone()),
+            o.magnification.as_ref().and_then(|m| m.plot_g.clone()),
+            o.theories.as_ref().and_then(|t| t.plot.clone()),
+            o.stress.as_ref().and_then(|s| s.plot.clone()),
+        ]
+        .into_iter()
+        .flatten()
+        .map(|p| dir.join(p))
+        .collect()
     }
 }
 
@@ -358,4 +665,114 @@ fn prefix(section: &str, e: Error) -> Error {
         },
         other => other,
     }
+}
+
+/// Draw every plot the scene names, into `dir` (feature `plot`).
+///
+/// # Errors
+/// A plot that cannot be drawn or written (nothing is left half-written).
+#[cfg(feature = "plot")]
+pub fn render_plots(scene: &Scene, report: &SceneReport, dir: &Path) -> Result<Vec<PathBuf>> {
+    use crate::plot::{self, Axis, Figure, LinearLaw, Series, Style};
+    let o = &scene.outputs;
+    let mut written = Vec::new();
+    let mut draw = |path: &Option<PathBuf>, fig: &dyn Fn() -> Result<Figure>| -> Result<()> {
+        if let Some(p) = path {
+            let p = dir.join(p);
+            plot::render(&fig()?, &p)?;
+            written.push(p);
+        }
+        Ok(())
+    };
+    let e_star = || scene.material().map(|m| m.contact_modulus());
+    if let (Some(out), Some(pts)) = (&o.area, &report.area) {
+        draw(&out.plot, &|| {
+            let p: Vec<f64> = pts.iter().map(|x| x.pressure).collect();
+            let a: Vec<f64> = pts.iter().map(|x| x.contact_fraction).collect();
+            let law = LinearLaw {
+                contact_modulus: e_star()?,
+                rms_slope: pts[0].rms_slope,
+            };
+            plot::area_vs_load(
+                &p,
+                &[("Persson (original theory)", &a)],
+                "unit of E*",
+                Some(law),
+            )
+        })?;
+    }
+    if let (Some(out), Some(pts)) = (&o.magnification, &report.magnification) {
+        let z: Vec<f64> = pts.iter().map(|x| x.zeta).collect();
+        let label = format!("σ0 = {:e}", out.pressure);
+        draw(&out.plot, &|| {
+            let a: Vec<f64> = pts.iter().map(|x| x.contact_fraction).collect();
+            plot::area_vs_zeta(&z, &[(label.as_str(), &a)])
+        })?;
+        draw(&out.plot_g, &|| {
+            let g: Vec<f64> = pts.iter().map(|x| x.g).collect();
+            plot::g_vs_zeta(&z, &[(label.as_str(), &g)])
+        })?;
+    }
+    if let (Some(out), Some(curves)) = (&o.theories, &report.theories) {
+        draw(&out.plot, &|| {
+            let p: Vec<f64> = curves[0].points.iter().map(|x| x.pressure).collect();
+            let labels: Vec<String> = curves
+                .iter()
+                .map(|c| match c.theory.gamma() {
+                    None => format!("{} (κ = {:.3})", c.theory.name(), c.kappa),
+                    Some(g) => format!("{}, γ = {g:.3} (κ = {:.3})", c.theory.name(), c.kappa),
+                })
+                .collect();
+            let a: Vec<Vec<f64>> = curves
+                .iter()
+                .map(|c| c.points.iter().map(|x| x.contact_fraction).collect())
+                .collect();
+            let refs: Vec<(&str, &[f64])> = labels
+                .iter()
+                .zip(&a)
+                .map(|(l, v)| (l.as_str(), v.as_slice()))
+                .collect();
+            let spectrum = scene.spectrum()?;
+            let m = Persson::new(spectrum.as_ref(), e_star()?)?;
+            let zeta = curves[0].points[0].zeta;
+            let law = LinearLaw {
+                contact_modulus: e_star()?,
+                rms_slope: m.slope_variance(zeta)?.value.sqrt(),
+            };
+            plot::area_vs_load(&p, &refs, "unit of E*", Some(law))
+        })?;
+    }
+    if let (Some(out), Some(curves)) = (&o.stress, &report.stress) {
+        draw(&out.plot, &|| {
+            let physical = !out.zetas.is_empty();
+            let (x, y) = if physical {
+                ("normal stress σ (Pa)", "P(σ, ζ) (1/Pa)")
+            } else {
+                ("normal stress σ/σH", "P(σ, ζ) (1/σH)")
+            };
+            let mut fig = Figure::new(
+                format!("Stress distribution P(σ, ζ), {} start", out.start),
+                Axis::linear(x),
+                Axis::linear(y),
+            );
+            let styles = [Style::Line, Style::Dashed, Style::Dotted];
+            for (i, c) in curves.iter().enumerate() {
+                let label = match c.zeta {
+                    Some(z) => format!("ζ = {z}, G = {:.3}, A/A0 = {:.3}", c.g, c.contact_fraction),
+                    None => format!("G = {}, A/A0 = {:.3}", c.g, c.contact_fraction),
+                };
+                // A flat start at G = 0 is a δ at σ0: nothing finite to draw.
+                let pts = c
+                    .sigma
+                    .iter()
+                    .copied()
+                    .zip(c.density.iter().copied())
+                    .filter(|p| p.1.is_finite())
+                    .collect();
+                fig.push(Series::new(label, pts, styles[i % styles.len()]));
+            }
+            Ok(fig)
+        })?;
+    }
+    Ok(written)
 }

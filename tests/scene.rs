@@ -130,3 +130,75 @@ fn shipped_scenes_parse_and_run() {
     }
     assert!(n >= 1);
 }
+
+#[test]
+fn stress_output_dimensionless_matches_seed_areas() {
+    // ../shared/theory.md §3: Hertz start, A/A0 = 0.615097 and 0.377787 at G = 0.6, 2.
+    let s = parse(
+        r#"{"schema": 1, "outputs": {"stress": {"start": "hertz", "g": [0.6, 2], "points": 11}}}"#,
+    )
+    .unwrap();
+    let r = s.run().unwrap();
+    let st = r.stress.unwrap();
+    assert_eq!(st.len(), 2);
+    assert!((st[0].contact_fraction - 0.615_097).abs() < 5e-7);
+    assert!((st[1].contact_fraction - 0.377_787).abs() < 5e-7);
+    assert_eq!(st[0].sigma.len(), 11);
+    assert!(
+        r.area.is_none() && r.theories.is_none(),
+        "only the stress output is computed"
+    );
+}
+
+#[test]
+fn stress_output_physical_uses_g_of_the_scene() {
+    // Flat start at σ0 = 0.1 E*: G(ζ) from the core, A/A0 = erf(1/(2√G)).
+    let s = parse(&scene(
+        r#"{"stress": {"start": "flat", "peak_pressure": 0.1, "zetas": [10, 100], "points": 5}}"#,
+    ))
+    .unwrap();
+    let st = s.run().unwrap().stress.unwrap();
+    for c in &st {
+        let exact = libm::erf(0.5 / c.g.sqrt());
+        assert!(
+            (c.contact_fraction - exact).abs() < 1e-13,
+            "{} vs {exact}",
+            c.contact_fraction
+        );
+        assert!(c.zeta.is_some());
+    }
+    let bad = parse(&scene(r#"{"stress": {"start": "hertz", "zetas": [10]}}"#))
+        .unwrap()
+        .run()
+        .unwrap_err();
+    assert!(bad.to_string().contains("outputs.stress"), "{bad}");
+    let bad = parse(&scene(r#"{"stress": {"start": "wedge", "g": [1]}}"#))
+        .unwrap()
+        .run()
+        .unwrap_err();
+    assert!(bad.to_string().contains("start"), "{bad}");
+}
+
+#[test]
+fn theories_and_separation_outputs() {
+    let s = parse(&scene(r#"{"theories": {"theories": [{"theory": "original"}, {"theory": "xu", "gamma": 1.0}]}, "separation": {}}"#)).unwrap();
+    let r = s.run().unwrap();
+    let t = r.theories.unwrap();
+    // Xu with γ = 1 is the original theory.
+    for (a, b) in t[0].points.iter().zip(&t[1].points) {
+        assert!(
+            (a.contact_fraction - b.contact_fraction).abs()
+                < 1e-12 * a.contact_fraction.max(1e-300) + 1e-15
+        );
+    }
+    let sep = r.separation.unwrap();
+    assert_eq!(sep.len(), 2);
+    assert!(sep[0].mean_separation > sep[1].mean_separation && sep[1].mean_separation > 0.0);
+    let e = parse(&scene(
+        r#"{"theories": {"theories": [{"theory": "yang-persson", "gamma": 7}]}}"#,
+    ))
+    .unwrap()
+    .run()
+    .unwrap_err();
+    assert!(e.to_string().contains("gamma"), "{e}");
+}

@@ -24,10 +24,20 @@ pub struct Args {
     points: usize,
     #[command(flatten)]
     format: Format,
+    #[command(flatten)]
+    plot: super::plot::PlotArg,
+    /// Also draw G(ζ) into this file (.svg or .png).
+    #[arg(long, value_name = "FILE.svg|png")]
+    plot_g: Option<std::path::PathBuf>,
 }
 
 /// Run `persson g`.
 pub fn run(a: Args) -> anyhow::Result<()> {
+    a.plot.check()?;
+    let plot_g = super::plot::PlotArg {
+        plot: a.plot_g.clone(),
+    };
+    plot_g.check()?;
     let spectrum = a.spectrum.build()?;
     let material = a.material.build(a.spectrum.example)?;
     let pressure = match (a.pressure, a.spectrum.example) {
@@ -42,6 +52,18 @@ pub fn run(a: Args) -> anyhow::Result<()> {
         a.zeta.clone()
     };
     let points = model.magnification_curve(&zetas, pressure)?;
+    let z: Vec<f64> = points.iter().map(|p| p.zeta).collect();
+    let label = format!("σ0 = {pressure:e}");
+    #[cfg(feature = "plot")]
+    {
+        let a_: Vec<f64> = points.iter().map(|p| p.contact_fraction).collect();
+        let g_: Vec<f64> = points.iter().map(|p| p.g).collect();
+        a.plot
+            .draw(|| persson::plot::area_vs_zeta(&z, &[(label.as_str(), &a_)]))?;
+        plot_g.draw(|| persson::plot::g_vs_zeta(&z, &[(label.as_str(), &g_)]))?;
+    }
+    #[cfg(not(feature = "plot"))]
+    let _ = (&z, &label);
     Report {
         title: format!(
             "G(zeta) and A/A0 at pressure {pressure:e}, E* = {:e}",

@@ -8,9 +8,12 @@ mod bem;
 mod g;
 mod kappa;
 mod output;
+mod plot;
 mod report;
 mod run;
+mod separation;
 mod spectrum;
+mod stress;
 
 use clap::{Parser, Subcommand};
 
@@ -39,6 +42,10 @@ enum Cmd {
     Run(run::Args),
     /// Reports: error against run time, and stability at the extremes.
     Report(report::Args),
+    /// Stress distribution P(σ) at one G (dimensionless; seed Figs. 2–4).
+    Stress(stress::Args),
+    /// Mean interfacial separation ū, stiffness K = −dp/dū and elastic energy against load.
+    Separation(separation::Args),
     /// FFT boundary-element cross-check: Hertz validation and rough contact.
     #[cfg(feature = "bem")]
     Bem(bem::Args),
@@ -53,6 +60,8 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
         Cmd::Kappa(a) => kappa::run(a),
         Cmd::Run(a) => run::run(a),
         Cmd::Report(a) => report::run(a),
+        Cmd::Stress(a) => stress::run(a),
+        Cmd::Separation(a) => separation::run(a),
         #[cfg(feature = "bem")]
         Cmd::Bem(a) => bem::run(a),
     }

@@ -21,6 +21,8 @@ enum Which {
         full: bool,
         #[command(flatten)]
         format: Format,
+        #[command(flatten)]
+        plot: super::plot::PlotArg,
     },
     /// The extreme and stiff cases; exits 1 if any output is non-finite.
     Stability {
@@ -32,8 +34,24 @@ enum Which {
 /// Run `persson report`.
 pub fn run(a: Args) -> anyhow::Result<()> {
     match a.which {
-        Which::Accuracy { full, format } => {
+        Which::Accuracy { full, format, plot } => {
+            plot.check()?;
             let rows = report::accuracy(if full { Extent::Full } else { Extent::Default })?;
+            #[cfg(feature = "plot")]
+            plot.draw(|| {
+                let mut methods: Vec<(String, Vec<(f64, f64)>)> = Vec::new();
+                for r in &rows {
+                    match methods.iter_mut().find(|m| m.0 == r.method) {
+                        Some(m) => m.1.push((r.seconds, r.error)),
+                        None => methods.push((r.method.clone(), vec![(r.seconds, r.error)])),
+                    }
+                }
+                let refs: Vec<(&str, &[(f64, f64)])> = methods
+                    .iter()
+                    .map(|(n, p)| (n.as_str(), p.as_slice()))
+                    .collect();
+                Ok(persson::plot::error_vs_time(&refs))
+            })?;
             Report {
                 title: "Error against run time (error: achieved, vs the reference named in --json)"
                     .into(),

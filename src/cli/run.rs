@@ -22,11 +22,31 @@ pub struct Args {
 /// Run `persson run`.
 pub fn run(a: Args) -> anyhow::Result<()> {
     let scene = Scene::read(&a.scene)?;
-    if let Some(dir) = &a.out {
-        // Fail before computing anything if the directory cannot take the files.
-        persson::io::check_writable(&dir.join("report.json"))?;
+    // Plots go to --out DIR, else the current directory. Fail before computing
+    // anything if a file cannot be written there, or would overwrite an input.
+    let dir = a.out.clone().unwrap_or_else(|| PathBuf::from("."));
+    let mut outputs = scene.plot_paths(&dir);
+    if a.out.is_some() {
+        outputs.push(dir.join("report.json"));
+    }
+    for p in &outputs {
+        if same_file(p, &a.scene) || scene_inputs(&scene).iter().any(|i| same_file(p, i)) {
+            anyhow::bail!("{}: output would overwrite an input file", p.display());
+        }
+        #[cfg(not(feature = "plot"))]
+        if !p.ends_with("report.json") {
+            anyhow::bail!(
+                "{}: this persson was built without the `plot` feature",
+                p.display()
+            );
+        }
+        persson::io::check_writable(p)?;
     }
     let report = scene.run()?;
+    #[cfg(feature = "plot")]
+    for p in persson::scene::render_plots(&scene, &report, &dir)? {
+        eprintln!("wrote {}", p.display());
+    }
     let sections = sections(&report);
     if let Some(dir) = &a.out {
         persson::io::write_atomic(
@@ -48,12 +68,28 @@ pub fn run(a: Args) -> anyhow::Result<()> {
     Ok(())
 }
 
+/// The input files a scene reads.
+fn scene_inputs(scene: &Scene) -> Vec<PathBuf> {
+    match &scene.spectrum {
+        Some(persson::scene::SpectrumSpec::Tabulated { file, .. }) => vec![file.clone()],
+        _ => vec![],
+    }
+}
+
+/// Whether two paths name the same existing file.
+fn same_file(a: &std::path::Path, b: &std::path::Path) -> bool {
+    match (a.canonicalize(), b.canonicalize()) {
+        (Ok(x), Ok(y)) => x == y,
+        _ => false,
+    }
+}
+
 /// One printable table per computed output.
-fn sections(r: &SceneReport) -> Vec<(&'static str, Report)> {
+fn sections(r: &SceneReport) -> Vec<(String, Report)> {
     let mut out = Vec::new();
     if let Some(k) = &r.kappa {
         out.push((
-            "kappa",
+            "kappa".to_string(),
             Report {
                 title: "kappa".into(),
                 scalars: vec![
@@ -95,12 +131,97 @@ fn sections(r: &SceneReport) -> Vec<(&'static str, Report)> {
         json: serde_json::json!(pts),
     };
     if let Some(p) = &r.area {
-        out.push(("area", table("Contact area against nominal pressure", p)));
+        out.push((
+            "area".into(),
+            table("Contact area against nominal pressure", p),
+        ));
     }
     if let Some(p) = &r.magnification {
         out.push((
-            "magnification",
+            "magnification".into(),
             table("Contact area against magnification", p),
+        ));
+    }
+    for c in r.theories.iter().flatten() {
+        let name = c.theory.name();
+        out.push((
+            name.to_string(),
+            Report {
+                title: format!(
+                    "Contact area, {name} theory (gamma = {:?}, kappa = {:.4})",
+                    c.theory.gamma(),
+                    c.kappa
+                ),
+                scalars: vec![],
+                columns: [
+                    "pressure",
+                    "zeta",
+                    "g",
+                    "effective_g",
+                    "contact_fraction",
+                    "error_bound",
+                ]
+                .map(String::from)
+                .to_vec(),
+                rows: c
+                    .points
+                    .iter()
+                    .map(|p| {
+                        vec![
+                            p.pressure,
+                            p.zeta,
+                            p.g,
+                            p.effective_g,
+                            p.contact_fraction,
+                            p.error,
+                        ]
+                    })
+                    .collect(),
+                json: serde_json::json!(c),
+            },
+        ));
+    }
+    if let Some(pts) = &r.separation {
+        out.push((
+            "separation".into(),
+            Report {
+                title: "Mean interfacial separation against load".into(),
+                scalars: vec![],
+                columns: ["pressure", "mean_separation", "stiffness", "elastic_energy"]
+                    .map(String::from)
+                    .to_vec(),
+                rows: pts
+                    .iter()
+                    .map(|p| vec![p.pressure, p.mean_separation, p.stiffness, p.elastic_energy])
+                    .collect(),
+                json: serde_json::json!(pts),
+            },
+        ));
+    }
+    for (i, c) in r.stress.iter().flatten().enumerate() {
+        out.push((
+            format!("stress_{}", i + 1),
+            Report {
+                title: format!(
+                    "Stress distribution, G = {:e}{}, method: {}",
+                    c.g,
+                    c.zeta.map_or(String::new(), |z| format!(", zeta = {z:e}")),
+                    c.method
+                ),
+                scalars: vec![
+                    ("contact_fraction".into(), c.contact_fraction),
+                    ("plastic_fraction".into(), c.plastic_fraction),
+                    ("error_bound".into(), c.error_bound),
+                ],
+                columns: ["sigma", "density"].map(String::from).to_vec(),
+                rows: c
+                    .sigma
+                    .iter()
+                    .zip(&c.density)
+                    .map(|(s, p)| vec![*s, *p])
+                    .collect(),
+                json: serde_json::json!(c),
+            },
         ));
     }
     out

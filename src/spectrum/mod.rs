@@ -66,6 +66,34 @@ pub trait Spectrum: Send + Sync {
     }
 }
 
+/// Least-squares power law `C ≈ A q^e` through points (q, C) in log–log
+/// coordinates; returns `(A, e)`.
+///
+/// # Errors
+/// Fewer than two points with q, C > 0 and finite, or all at one q.
+pub fn fit_power_law(points: &[(f64, f64)]) -> Result<(f64, f64)> {
+    let xy: Vec<(f64, f64)> = points
+        .iter()
+        .filter(|(q, c)| q.is_finite() && c.is_finite() && *q > 0.0 && *c > 0.0)
+        .map(|(q, c)| (q.ln(), c.ln()))
+        .collect();
+    let n = xy.len() as f64;
+    let (xm, ym) = (
+        xy.iter().map(|p| p.0).sum::<f64>() / n,
+        xy.iter().map(|p| p.1).sum::<f64>() / n,
+    );
+    let sxx: f64 = xy.iter().map(|p| (p.0 - xm).powi(2)).sum();
+    if xy.len() < 2 || sxx <= 0.0 {
+        return Err(Error::invalid(
+            "number of spectrum points for a power-law fit",
+            n,
+            "at least 2 distinct q",
+        ));
+    }
+    let e = xy.iter().map(|p| (p.0 - xm) * (p.1 - ym)).sum::<f64>() / sxx;
+    Ok(((ym - e * xm).exp(), e))
+}
+
 /// `sqrt(2π m)` with its propagated error (`δ√x = δx / (2√x)`).
 fn rms(m: Estimate) -> Result<Estimate> {
     let v = (std::f64::consts::TAU * m.value).sqrt();

@@ -1,71 +1,17 @@
-//! Error against run time, and the stability sweep over extreme inputs.
-//!
-//! [`accuracy`] measures, for every numerical method and each setting of its
-//! accuracy knob, the achieved error against an independent reference and the
-//! wall time, so users can pick their point on the curve. [`stability`] runs
-//! the extreme and stiff cases and records whether any output was non-finite.
+//! The core's entries: G(ζ) by quadrature for closure spectra, and the
+//! extreme cases of G, A/A0, H, ζ and pressure.
 
-use std::time::Instant;
-
-use serde::Serialize;
-
+use super::{case, time_it, AccuracyRow, Extent, StabilityCase};
 use crate::error::Result;
 use crate::spectrum::{Amplitude, FnSpectrum, SelfAffine, Spectrum};
 use crate::theory::{contact_fraction, Persson};
-
-/// One measured point: a method at one setting of its knob.
-#[derive(Debug, Clone, Serialize)]
-pub struct AccuracyRow {
-    /// The numerical method.
-    pub method: String,
-    /// The name of its accuracy knob.
-    pub knob: String,
-    /// The knob's setting.
-    pub setting: f64,
-    /// Achieved error against the reference (relative unless `method` says otherwise).
-    pub error: f64,
-    /// The method's own error estimate, where it has one.
-    pub estimate: Option<f64>,
-    /// Wall time of one evaluation, s.
-    pub seconds: f64,
-    /// The reference the error is measured against.
-    pub reference: String,
-}
-
-/// How far the accuracy report goes.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Extent {
-    /// The default: under two minutes on two cores.
-    Default,
-    /// Further: finer tolerances and larger grids.
-    Full,
-}
-
-/// Median wall time of `f` over enough repetitions to last ~`budget` seconds.
-pub fn time_it<T>(budget: f64, mut f: impl FnMut() -> T) -> (T, f64) {
-    let t0 = Instant::now();
-    let mut out = f();
-    let first = t0.elapsed().as_secs_f64();
-    let reps = ((budget / first.max(1e-9)) as usize).clamp(1, 10_000);
-    if reps == 1 {
-        return (out, first);
-    }
-    let mut times = Vec::with_capacity(reps);
-    for _ in 0..reps {
-        let t = Instant::now();
-        out = f();
-        times.push(t.elapsed().as_secs_f64());
-    }
-    times.sort_by(f64::total_cmp);
-    (out, times[reps / 2])
-}
 
 /// G(ζ) of a closure spectrum by adaptive quadrature, against the closed form
 /// of the same self-affine spectrum, for tolerances 1e-4 … 1e-14.
 ///
 /// # Errors
 /// A quadrature that fails to converge.
-pub fn g_quadrature(extent: Extent) -> Result<Vec<AccuracyRow>> {
+pub(super) fn g_quadrature(extent: Extent) -> Result<Vec<AccuracyRow>> {
     let s = SelfAffine::new(1e3, 1e4, 1e13, 0.8, Amplitude::RmsSlope(1.0))?;
     let exact = Persson::new(&s, 1.0)?;
     let zetas = [3.0, 10.0, 1e3, 1e6, 1e10];
@@ -106,44 +52,12 @@ pub fn g_quadrature(extent: Extent) -> Result<Vec<AccuracyRow>> {
         .collect()
 }
 
-/// The accuracy report of every numerical method in this build.
-///
-/// # Errors
-/// The first method that fails.
-pub fn accuracy(extent: Extent) -> Result<Vec<AccuracyRow>> {
-    g_quadrature(extent)
-}
-
-/// One extreme case of the stability sweep.
-#[derive(Debug, Clone, Serialize)]
-pub struct StabilityCase {
-    /// What was computed, with its inputs.
-    pub case: String,
-    /// The value.
-    pub value: f64,
-    /// Its error bound.
-    pub error_bound: f64,
-    /// Whether every output of the case was finite.
-    pub finite: bool,
-}
-
-fn case(case: String, value: f64, error_bound: f64, others: &[f64]) -> StabilityCase {
-    let finite =
-        value.is_finite() && error_bound.is_finite() && others.iter().all(|v| v.is_finite());
-    StabilityCase {
-        case,
-        value,
-        error_bound,
-        finite,
-    }
-}
-
 /// The extreme and stiff cases of the core: G from 1e-12 to 1e30, H to 0.01
 /// and 0.99, ζ to 1e10, pressures from 1e-12 E* to 10 E*.
 ///
 /// # Errors
 /// An input the library rejects (none of these should be).
-pub fn stability() -> Result<Vec<StabilityCase>> {
+pub(super) fn stability() -> Result<Vec<StabilityCase>> {
     let mut out = Vec::new();
     for lg in [-12, -6, -3, 0, 3, 6, 12, 20, 30] {
         let g = 10f64.powi(lg);
