@@ -11,7 +11,7 @@ use serde::Deserialize;
 
 use super::{case, time_it, AccuracyRow, Extent, StabilityCase};
 use crate::error::{Error, Result};
-use crate::stress::{series_fractions, Method, Solver, Start};
+use crate::stress::{series_fractions, Method, Solver, Start, TabulatedStart};
 
 /// The mpmath references: three starts × G × σY/σH, densities on a σ grid
 /// and both fractions.
@@ -87,15 +87,24 @@ pub(super) fn accuracy(extent: Extent) -> Result<Vec<AccuracyRow>> {
     let series: Vec<_> = refs
         .iter()
         .filter(|(st, c)| c.yield_ratio.is_some() && c.tau_over_y2(st) >= min_ratio)
+        .map(|(st, c)| (st, c))
         .collect();
     // the images' own domain: elastic, or τ/y² below the series' switch
-    let images = |cylinder: bool| -> Vec<&(Start, Reference)> {
+    let images = |cylinder: bool| -> Vec<(&Start, &Reference)> {
         refs.iter()
             .filter(|(st, c)| {
                 matches!(st, Start::Cylinder) == cylinder && c.g > 0.0 && c.tau_over_y2(st) < 0.25
             })
+            .map(|(st, c)| (st, c))
             .collect()
     };
+    // the Hertz start P0 = 2s as a two-point table: every Hertz reference
+    let table = Start::Tabulated(TabulatedStart::new(&[0.0, 1.0], &[0.0, 2.0], 1e-15)?);
+    let tabulated: Vec<_> = refs
+        .iter()
+        .filter(|(st, _)| matches!(st, Start::Hertz))
+        .map(|(_, c)| (&table, c))
+        .collect();
     let mut rows = Vec::new();
     for tol in tolerances(extent) {
         rows.push(density_row(
@@ -121,6 +130,14 @@ pub(super) fn accuracy(extent: Extent) -> Result<Vec<AccuracyRow>> {
             Method::Images,
         )?);
     }
+    for tol in tolerances(extent) {
+        rows.push(density_row(
+            "stress P(s), tabulated start (adaptive Gauss-Kronrod), Hertz as a table",
+            &tabulated,
+            tol,
+            Method::Auto,
+        )?);
+    }
     let mut terms = vec![1, 2, 3, 4, 6, 8, 12, 16, 24, 32];
     if extent == Extent::Full {
         terms.extend([48, 64, 96, 128, 192, 256]);
@@ -136,7 +153,7 @@ pub(super) fn accuracy(extent: Extent) -> Result<Vec<AccuracyRow>> {
 /// density value (the solver's setup included, shared by one case's σ).
 fn density_row(
     method: &str,
-    cases: &[&(Start, Reference)],
+    cases: &[(&Start, &Reference)],
     tol: f64,
     how: Method,
 ) -> Result<AccuracyRow> {
@@ -173,7 +190,7 @@ fn density_row(
 
 /// Largest absolute error of A_el and A_pl from `terms` sine terms, with the
 /// largest of their bounds, and the time per (A_el, A_pl) pair.
-fn fractions_row(cases: &[&(Start, Reference)], terms: usize) -> Result<AccuracyRow> {
+fn fractions_row(cases: &[(&Start, &Reference)], terms: usize) -> Result<AccuracyRow> {
     let run = || -> Result<(f64, f64)> {
         let (mut err, mut est): (f64, f64) = (0.0, 0.0);
         for (st, c) in cases {
@@ -223,8 +240,8 @@ const STABILITY_POINTS: usize = 101;
 /// Tolerance asked of the solver (the CLI's default).
 const STABILITY_TOL: f64 = 1e-12;
 
-/// Extreme cases of the stress distributions: every start × G from 0 to 1e30
-/// × σY/σH from 1 + 1e-6 to 1e6 and elastic, each a 101-point curve with both
+/// Extreme cases of the stress distributions: every start (and a table) × G
+/// from 0 to 1e30 × σY/σH from 1 + 1e-6 to 1e6 and elastic, each a 101-point curve with both
 /// fractions; `value` is A_el/A0, `error_bound` the curve's bound, and
 /// `finite` covers every density, both fractions, A_nc and every bound.
 ///
@@ -232,7 +249,9 @@ const STABILITY_TOL: f64 = 1e-12;
 /// An input the library rejects (none of these should be).
 pub(super) fn stability() -> Result<Vec<StabilityCase>> {
     let mut out = Vec::new();
-    for st in [Start::Flat, Start::Hertz, Start::Cylinder] {
+    // a tabulated start too: Hertz's P0 = 2s as a two-point table
+    let table = Start::Tabulated(TabulatedStart::new(&[0.0, 1.0], &[0.0, 2.0], 1e-15)?);
+    for st in [Start::Flat, Start::Hertz, Start::Cylinder, table] {
         for g in STABILITY_G {
             for y in STABILITY_Y {
                 let solver = Solver::new(&st, g, y, STABILITY_TOL)?;

@@ -343,12 +343,17 @@ impl<'a> Images<'a> {
             if a >= b {
                 continue;
             }
-            let f = |u: f64| t.eval(u) * self.phi(x - u) * -(-4.0 * x * u * self.inv_w2).exp_m1();
+            // in z = u − x: with nodes in u, their rounding (ulp(x)) moves the
+            // Gaussian by ε x/w of its width, 5e-11 of the result at G = 1e-12
+            let f = |z: f64| {
+                let u = x + z;
+                t.eval(u) * self.phi(z) * -(-4.0 * x * u * self.inv_w2).exp_m1()
+            };
             let r = integrate(
                 "stress: image integral of a tabulated start",
                 f,
-                a,
-                b,
+                a - x,
+                b - x,
                 self.tol_q / nseg,
                 1e-14,
                 MAX_EVALS,
@@ -478,6 +483,49 @@ fn erfc_diff_gap(x: f64, u: f64, gap: f64, w: f64) -> f64 {
     }
 }
 
+/// Split points d·4ᵏ (k = −3 … ) up to 1 for a feature of width d at 0.
+fn scale_points(d: f64) -> Vec<f64> {
+    let mut out = Vec::new();
+    let mut p = d / 64.0;
+    while p < 1.0 && p > 0.0 {
+        out.push(p);
+        p *= 4.0;
+    }
+    out
+}
+
+/// [a, b] cut at the split points inside it.
+fn pieces(a: f64, b: f64, splits: &[f64]) -> Vec<f64> {
+    let mut out = vec![a];
+    out.extend(splits.iter().copied().filter(|&p| p > a && p < b));
+    out.push(b);
+    out
+}
+
+/// Σ of adaptive Gauss–Kronrod integrals over consecutive `points`, each to
+/// 1e-15 relative, or `abs_tol`, or 1e-16 of the sum so far, with the sum of
+/// their error estimates.
+fn integrate_pieces(
+    what: &str,
+    f: impl Fn(f64) -> f64,
+    points: &[f64],
+    abs_tol: f64,
+) -> Result<Estimate> {
+    let mut out = Estimate {
+        value: 0.0,
+        error: 0.0,
+    };
+    for ab in points.windows(2) {
+        if ab[1] > ab[0] {
+            let tol = abs_tol.max(1e-16 * out.value.abs());
+            let r = integrate(what, &f, ab[0], ab[1], tol, 1e-15, MAX_EVALS)?;
+            out.value += r.value;
+            out.error += r.error;
+        }
+    }
+    Ok(out)
+}
+
 /// The elastic contact fraction A∞ = ∫₀^∞ P ds = ∫₀¹ P0(u) erf(u/w) du.
 ///
 /// # Formula
@@ -578,15 +626,15 @@ pub(crate) fn contact_fraction(start: &Start, w: f64) -> Result<Estimate> {
                 value: 0.0,
                 error: 0.0,
             };
+            // erf(cu) rises on the scale w at u = 0: split there so that no
+            // adaptive rule can step over it
+            let near_zero = scale_points(w);
             for (a, b) in t.segments() {
-                let r = integrate(
+                let r = integrate_pieces(
                     "stress: tabulated contact fraction",
                     |u: f64| t.eval(u) * erf(u * c),
-                    a,
-                    b,
+                    &pieces(a, b, &near_zero),
                     1e-18,
-                    1e-15,
-                    MAX_EVALS,
                 )?;
                 out.value += r.value;
                 out.error += r.error;
@@ -604,50 +652,55 @@ pub(crate) fn contact_fraction(start: &Start, w: f64) -> Result<Estimate> {
 /// Quadrature failure.
 pub(crate) fn beyond(start: &Start, w: f64, x: f64) -> Result<Estimate> {
     let what = "stress: mass beyond the yield stress";
+    // In v = 1 − u the gap x − u = (x − 1) + v is exact, and the integrand
+    // lives within the decay length d of v = 0: split there (a single adaptive
+    // rule over [0, 1] steps over a peak of width 1e-6 and reports 0 ± 0).
+    let z0 = (x - 1.0) / w;
+    let near_edge = scale_points(w / (1.0 + 2.0 * z0));
+    let gap = |v: f64| (x - 1.0) + v;
     let mut f: Estimate = match start {
         Start::Flat => Estimate::rounded(erfc_diff(x, 1.0, w), 16.0),
-        Start::Hertz => integrate(
+        Start::Hertz => integrate_pieces(
             what,
-            |u: f64| 2.0 * u * erfc_diff(x, u, w),
-            0.0,
-            1.0,
-            1e-300,
-            1e-15,
-            MAX_EVALS,
-        )?
-        .into(),
-        // u = sin t = cos θ (θ = π/2 − t): near u = 1 the gap x − u is formed as
-        // (x − 1) + 2 sin²(θ/2): x − sin t carries an absolute error ~ε, i.e.
-        // ε/w relative in (x − u)/w, 1e-10 at w ~ 1e-6 (G = 1e-12), and the
-        // quadrature could not reach its 1e-15 on that noise
-        Start::Cylinder => integrate(
-            what,
-            |th: f64| {
-                let h = (0.5 * th).sin();
-                let u = th.cos();
-                u * erfc_diff_gap(x, u, (x - 1.0) + 2.0 * h * h, w)
+            |v: f64| {
+                let u = 1.0 - v;
+                2.0 * u * erfc_diff_gap(x, u, gap(v), w)
             },
-            0.0,
-            std::f64::consts::FRAC_PI_2,
+            &pieces(0.0, 1.0, &near_edge),
             1e-300,
-            1e-15,
-            MAX_EVALS,
-        )?
-        .into(),
+        )?,
+        // u = sin t = cos θ (θ = π/2 − t), v = 1 − u = 2 sin²(θ/2): the
+        // Jacobian removes P0's singularity at u = 1
+        Start::Cylinder => {
+            let theta: Vec<f64> = near_edge
+                .iter()
+                .map(|v| 2.0 * (0.5 * v).sqrt().min(1.0).asin())
+                .collect();
+            integrate_pieces(
+                what,
+                |th: f64| {
+                    let h = (0.5 * th).sin();
+                    let u = th.cos();
+                    u * erfc_diff_gap(x, u, gap(2.0 * h * h), w)
+                },
+                &pieces(0.0, std::f64::consts::FRAC_PI_2, &theta),
+                1e-300,
+            )?
+        }
         Start::Tabulated(t) => {
             let mut out = Estimate {
                 value: 0.0,
                 error: 0.0,
             };
             for (lo, hi) in t.segments() {
-                let r = integrate(
+                let r = integrate_pieces(
                     what,
-                    |u: f64| t.eval(u) * erfc_diff(x, u, w),
-                    lo,
-                    hi,
+                    |v: f64| {
+                        let u = 1.0 - v;
+                        t.eval(u) * erfc_diff_gap(x, u, gap(v), w)
+                    },
+                    &pieces(1.0 - hi, 1.0 - lo, &near_edge),
                     1e-300,
-                    1e-15,
-                    MAX_EVALS,
                 )?;
                 out.value += r.value;
                 out.error += r.error;
