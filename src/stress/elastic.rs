@@ -343,12 +343,17 @@ impl<'a> Images<'a> {
             if a >= b {
                 continue;
             }
-            let f = |u: f64| t.eval(u) * self.phi(x - u) * -(-4.0 * x * u * self.inv_w2).exp_m1();
+            // in z = u − x: with nodes in u, their rounding (ulp(x)) moves the
+            // Gaussian by ε x/w of its width, 5e-11 of the result at G = 1e-12
+            let f = |z: f64| {
+                let u = x + z;
+                t.eval(u) * self.phi(z) * -(-4.0 * x * u * self.inv_w2).exp_m1()
+            };
             let r = integrate(
                 "stress: image integral of a tabulated start",
                 f,
-                a,
-                b,
+                a - x,
+                b - x,
                 self.tol_q / nseg,
                 1e-14,
                 MAX_EVALS,
@@ -449,7 +454,14 @@ const EDGE: [usize; 7] = [5, 6, 7, 8, 9, 10, 11];
 /// D = (2/√π) ∫_{(x−u)/w}^{(x+u)/w} e^{−t²} dt   (8-point Gauss) when 4xu/w² < 1/4
 /// ```
 pub(crate) fn erfc_diff(x: f64, u: f64, w: f64) -> f64 {
-    let (lo, hi) = ((x - u) / w, (x + u) / w);
+    erfc_diff_gap(x, u, x - u, w)
+}
+
+/// [`erfc_diff`] with the gap x − u supplied by the caller, for integrands
+/// where it is known more accurately than the difference of the rounded x
+/// and u (u = cos θ ≈ 1: x − u = (x − 1) + 2 sin²(θ/2)).
+fn erfc_diff_gap(x: f64, u: f64, gap: f64, w: f64) -> f64 {
+    let (lo, hi) = (gap / w, (x + u) / w);
     if 4.0 * x * u >= 0.25 * w * w {
         if lo >= 0.0 {
             erfc(lo) - erfc(hi)
@@ -469,6 +481,49 @@ pub(crate) fn erfc_diff(x: f64, u: f64, w: f64) -> f64 {
                 .sum();
         FRAC_2_SQRT_PI * b * s
     }
+}
+
+/// Split points d·4ᵏ (k = −3 … ) up to 1 for a feature of width d at 0.
+fn scale_points(d: f64) -> Vec<f64> {
+    let mut out = Vec::new();
+    let mut p = d / 64.0;
+    while p < 1.0 && p > 0.0 {
+        out.push(p);
+        p *= 4.0;
+    }
+    out
+}
+
+/// [a, b] cut at the split points inside it.
+fn pieces(a: f64, b: f64, splits: &[f64]) -> Vec<f64> {
+    let mut out = vec![a];
+    out.extend(splits.iter().copied().filter(|&p| p > a && p < b));
+    out.push(b);
+    out
+}
+
+/// Σ of adaptive Gauss–Kronrod integrals over consecutive `points`, each to
+/// 1e-15 relative, or `abs_tol`, or 1e-16 of the sum so far, with the sum of
+/// their error estimates.
+fn integrate_pieces(
+    what: &str,
+    f: impl Fn(f64) -> f64,
+    points: &[f64],
+    abs_tol: f64,
+) -> Result<Estimate> {
+    let mut out = Estimate {
+        value: 0.0,
+        error: 0.0,
+    };
+    for ab in points.windows(2) {
+        if ab[1] > ab[0] {
+            let tol = abs_tol.max(1e-16 * out.value.abs());
+            let r = integrate(what, &f, ab[0], ab[1], tol, 1e-15, MAX_EVALS)?;
+            out.value += r.value;
+            out.error += r.error;
+        }
+    }
+    Ok(out)
 }
 
 /// The elastic contact fraction A∞ = ∫₀^∞ P ds = ∫₀¹ P0(u) erf(u/w) du.
@@ -571,15 +626,15 @@ pub(crate) fn contact_fraction(start: &Start, w: f64) -> Result<Estimate> {
                 value: 0.0,
                 error: 0.0,
             };
+            // erf(cu) rises on the scale w at u = 0: split there so that no
+            // adaptive rule can step over it
+            let near_zero = scale_points(w);
             for (a, b) in t.segments() {
-                let r = integrate(
+                let r = integrate_pieces(
                     "stress: tabulated contact fraction",
                     |u: f64| t.eval(u) * erf(u * c),
-                    a,
-                    b,
+                    &pieces(a, b, &near_zero),
                     1e-18,
-                    1e-15,
-                    MAX_EVALS,
                 )?;
                 out.value += r.value;
                 out.error += r.error;
@@ -597,42 +652,55 @@ pub(crate) fn contact_fraction(start: &Start, w: f64) -> Result<Estimate> {
 /// Quadrature failure.
 pub(crate) fn beyond(start: &Start, w: f64, x: f64) -> Result<Estimate> {
     let what = "stress: mass beyond the yield stress";
+    // In v = 1 − u the gap x − u = (x − 1) + v is exact, and the integrand
+    // lives within the decay length d of v = 0: split there (a single adaptive
+    // rule over [0, 1] steps over a peak of width 1e-6 and reports 0 ± 0).
+    let z0 = (x - 1.0) / w;
+    let near_edge = scale_points(w / (1.0 + 2.0 * z0));
+    let gap = |v: f64| (x - 1.0) + v;
     let mut f: Estimate = match start {
         Start::Flat => Estimate::rounded(erfc_diff(x, 1.0, w), 16.0),
-        Start::Hertz => integrate(
+        Start::Hertz => integrate_pieces(
             what,
-            |u: f64| 2.0 * u * erfc_diff(x, u, w),
-            0.0,
-            1.0,
+            |v: f64| {
+                let u = 1.0 - v;
+                2.0 * u * erfc_diff_gap(x, u, gap(v), w)
+            },
+            &pieces(0.0, 1.0, &near_edge),
             1e-300,
-            1e-15,
-            MAX_EVALS,
-        )?
-        .into(),
-        Start::Cylinder => integrate(
-            what,
-            |t: f64| t.sin() * erfc_diff(x, t.sin(), w),
-            0.0,
-            std::f64::consts::FRAC_PI_2,
-            1e-300,
-            1e-15,
-            MAX_EVALS,
-        )?
-        .into(),
+        )?,
+        // u = sin t = cos θ (θ = π/2 − t), v = 1 − u = 2 sin²(θ/2): the
+        // Jacobian removes P0's singularity at u = 1
+        Start::Cylinder => {
+            let theta: Vec<f64> = near_edge
+                .iter()
+                .map(|v| 2.0 * (0.5 * v).sqrt().min(1.0).asin())
+                .collect();
+            integrate_pieces(
+                what,
+                |th: f64| {
+                    let h = (0.5 * th).sin();
+                    let u = th.cos();
+                    u * erfc_diff_gap(x, u, gap(2.0 * h * h), w)
+                },
+                &pieces(0.0, std::f64::consts::FRAC_PI_2, &theta),
+                1e-300,
+            )?
+        }
         Start::Tabulated(t) => {
             let mut out = Estimate {
                 value: 0.0,
                 error: 0.0,
             };
             for (lo, hi) in t.segments() {
-                let r = integrate(
+                let r = integrate_pieces(
                     what,
-                    |u: f64| t.eval(u) * erfc_diff(x, u, w),
-                    lo,
-                    hi,
+                    |v: f64| {
+                        let u = 1.0 - v;
+                        t.eval(u) * erfc_diff_gap(x, u, gap(v), w)
+                    },
+                    &pieces(1.0 - hi, 1.0 - lo, &near_edge),
                     1e-300,
-                    1e-15,
-                    MAX_EVALS,
                 )?;
                 out.value += r.value;
                 out.error += r.error;

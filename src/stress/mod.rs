@@ -410,6 +410,55 @@ pub fn distribution(
     Solver::new(start, g, yield_ratio, tol)?.curve(sigma)
 }
 
+/// A_el and A_pl from the first `terms` terms of the sine series: the series'
+/// accuracy knob made explicit (the solver picks the terms from its tolerance).
+///
+/// # Formula
+/// ```text
+/// A_el = Σ_{n ≤ N, odd} (4/(nπ)) Bₙ Eₙ,   A_pl = σ0/σY − Σ_{n ≤ N} (−1)ⁿ⁺¹ (2/(nπ)) Bₙ Eₙ
+/// |truncation| ≤ (4/π) Σ_{n>N} e^{−n²π²τ/y²}
+/// ```
+/// Both bounds include the truncation, the coefficients' and the rounding error.
+///
+/// # Errors
+/// G not finite and positive; y ≤ 1 or non-finite; `terms` outside 1 … 10⁶;
+/// quadrature failure (tabulated starts).
+///
+/// # Examples
+/// ```
+/// use persson::stress::{series_fractions, Start};
+/// // Hertz, G = 0.6, σY/σH = 2: A_el = 0.534395493429437 (mpmath, tests/reference)
+/// let (few, _) = series_fractions(&Start::Hertz, 0.6, 2.0, 2).unwrap();
+/// let (el, pl) = series_fractions(&Start::Hertz, 0.6, 2.0, 12).unwrap();
+/// assert!((few.value - 0.534_395_493_429_437).abs() <= few.error);
+/// assert!((el.value - 0.534_395_493_429_437).abs() < 1e-14);
+/// assert!((pl.value - 0.080_712_734_513_447).abs() < 1e-14);
+/// ```
+///
+/// # References
+/// Seed 001 Eqs. 7, 10 (`../shared/theory.md` §2).
+pub fn series_fractions(
+    start: &Start,
+    g: f64,
+    yield_ratio: f64,
+    terms: usize,
+) -> Result<(Estimate, Estimate)> {
+    check::positive("g", g)?;
+    if !(yield_ratio.is_finite() && yield_ratio > 1.0) {
+        return Err(Error::invalid(
+            "yield_ratio",
+            yield_ratio,
+            "finite and > 1 (σY above the peak pressure σH)",
+        ));
+    }
+    if !(1..=1_000_000).contains(&terms) {
+        return Err(Error::invalid("terms", terms as f64, "from 1 to 1e6"));
+    }
+    let a = series::decay_rate(start, g, yield_ratio);
+    let (el, pl, _) = series::fractions_with_terms(start, yield_ratio, a, 1e-15, terms)?;
+    Ok((el, pl))
+}
+
 /// A physical stress problem: start condition, its pressures and an optional
 /// yield stress, all in Pa.
 #[derive(Debug, Clone, PartialEq)]

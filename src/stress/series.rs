@@ -252,6 +252,18 @@ pub(crate) fn fractions(
 ) -> Result<(Estimate, Estimate, usize)> {
     // both tails ≤ (4/π) Σ_{n>N} e^{−n² a}
     let n = terms_for(a.0, 4.0 / PI, 1e-3 * tol.min(1e-13) * 1e-3);
+    fractions_with_terms(start, y, a, tol, n)
+}
+
+/// A_el and A_pl from the first `n` terms of the series, each with an error
+/// bound that includes the truncation.
+pub(crate) fn fractions_with_terms(
+    start: &Start,
+    y: f64,
+    a: Dd,
+    tol: f64,
+    n: usize,
+) -> Result<(Estimate, Estimate, usize)> {
     let (b, coef_err) = coefficients(start, y, n, tol)?;
     let (mut el, mut el_mag, mut pl, mut pl_mag) = (0.0, 0.0, 0.0, 0.0);
     let mut esum = 0.0;
