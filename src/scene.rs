@@ -107,6 +107,15 @@ pub enum SpectrumSpec {
         #[serde(default = "persson_convention")]
         convention: Convention,
     },
+    /// A measured height map of the rigid surface, for the BEM outputs only
+    /// (`.npy` float64/float32 2-D square, else a whitespace-separated text
+    /// matrix; relative paths are relative to the scene file).
+    HeightMap {
+        /// The file.
+        file: PathBuf,
+        /// Its physical side L (unit of length of the scene).
+        size: f64,
+    },
 }
 
 fn persson_convention() -> Convention {
@@ -135,6 +144,57 @@ pub struct Outputs {
     /// Stress distributions P(σ, ζ).
     #[serde(default)]
     pub stress: Option<StressOutput>,
+    /// FFT-BEM rough contact at the scene's pressures (feature `bem`).
+    #[serde(default)]
+    pub bem: Option<BemOutput>,
+    /// FFT-BEM Hertz convergence table, η per grid (feature `bem`).
+    #[serde(default)]
+    pub bem_hertz: Option<BemHertzOutput>,
+}
+
+/// FFT-BEM rough contact: the surface is synthesised from the scene's
+/// spectrum (side 2π/q_l, `grid` nodes, `seed`) or read from its height map.
+#[derive(Debug, Clone, Default, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct BemOutput {
+    /// Grid side N of the synthesised surface (a height map sets its own).
+    #[serde(default)]
+    pub grid: Option<usize>,
+    /// Seed of the synthesised surface (Pcg64Mcg, value-stable; default 1).
+    #[serde(default)]
+    pub seed: Option<u64>,
+    /// `periodic` (default) or `free`.
+    #[serde(default)]
+    pub boundary: Option<String>,
+    /// Solver tolerance ε (default 1e-10).
+    #[serde(default)]
+    pub tolerance: Option<f64>,
+    /// Write the pressure histograms P(σ) as one CSV (pressure, pressure_low,
+    /// pressure_high, density; each pressure's bins integrate to its A/A0).
+    #[serde(default)]
+    pub histogram: Option<PathBuf>,
+    /// Number of histogram bins (default 50).
+    #[serde(default)]
+    pub bins: Option<usize>,
+    /// Draw A/A0 against load with the Bush linear law (.svg or .png).
+    #[serde(default)]
+    pub plot: Option<PathBuf>,
+}
+
+/// FFT-BEM Hertz convergence: sphere R = L, a = 0.1 L, E* = 1 (lecture 000,
+/// Table 1).
+#[derive(Debug, Clone, Default, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct BemHertzOutput {
+    /// Grid sides (default 64, 128, 256).
+    #[serde(default)]
+    pub grids: Vec<usize>,
+    /// `free` (default) or `periodic`.
+    #[serde(default)]
+    pub boundary: Option<String>,
+    /// Solver tolerance ε (default 1e-12).
+    #[serde(default)]
+    pub tolerance: Option<f64>,
 }
 
 /// Corrected-theory load curves.
@@ -296,7 +356,89 @@ pub struct SceneReport {
     /// Stress distributions, one per G or ζ.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub stress: Option<Vec<StressReport>>,
+    /// FFT-BEM rough contact.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub bem: Option<BemReport>,
+    /// FFT-BEM Hertz convergence rows, one per grid.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub bem_hertz: Option<Vec<BemHertzRow>>,
 }
+
+/// The FFT-BEM rough contact of a scene.
+#[derive(Debug, Clone, Serialize)]
+pub struct BemReport {
+    /// Grid side N.
+    pub grid: usize,
+    /// Side L of the surface.
+    pub size: f64,
+    /// `periodic` or `free`.
+    pub boundary: String,
+    /// Solver tolerance ε.
+    pub tolerance: f64,
+    /// Seed of the synthesised surface (absent for a height map).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub seed: Option<u64>,
+    /// rms height of the surface on the grid.
+    pub rms_height: f64,
+    /// rms slope of the surface on the grid.
+    pub rms_slope: f64,
+    /// One point per pressure.
+    pub points: Vec<BemPoint>,
+}
+
+/// One FFT-BEM solve.
+#[derive(Debug, Clone, Serialize)]
+pub struct BemPoint {
+    /// Nominal pressure (unit of the modulus).
+    pub pressure: f64,
+    /// A/A0: fraction of nodes with p > 0.
+    pub contact_fraction: f64,
+    /// Solver iterations.
+    pub iterations: usize,
+    /// Final residual ε (≤ tolerance).
+    pub residual: f64,
+    /// Approach from first touch (unit of length).
+    pub approach: f64,
+    /// Wall time of the solve, s.
+    pub seconds: f64,
+    /// P(σ) when asked for: `[pressure_low, pressure_high, density]` per bin.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub histogram: Option<Vec<[f64; 3]>>,
+}
+
+/// One row of the FFT-BEM Hertz convergence table.
+#[derive(Debug, Clone, Serialize)]
+pub struct BemHertzRow {
+    /// Grid side N.
+    pub grid: usize,
+    /// `periodic` or `free`.
+    pub boundary: String,
+    /// η: energy-norm error against the exact Hertz pressure.
+    pub energy_error: f64,
+    /// η of lecture 000, Table 1 (free boundary, where listed).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lecture: Option<f64>,
+    /// Relative error of the fitted contact radius.
+    pub contact_radius_error: f64,
+    /// Relative error of the fitted peak pressure.
+    pub peak_pressure_error: f64,
+    /// A/A0 (exact π a²/L² = 0.0314159…).
+    pub contact_fraction: f64,
+    /// Solver iterations.
+    pub iterations: usize,
+    /// Wall time of the solve, s.
+    pub seconds: f64,
+}
+
+/// Lecture 000, Table 1: free-boundary Hertz η per grid.
+pub const LECTURE_HERTZ_ETA: [(usize, f64); 6] = [
+    (64, 1.40e-2),
+    (128, 4.08e-3),
+    (256, 7.78e-4),
+    (512, 3.66e-4),
+    (1024, 1.20e-4),
+    (2048, 1.66e-5),
+];
 
 /// One corrected theory's load curve.
 #[derive(Debug, Clone, Serialize)]
@@ -360,7 +502,9 @@ impl Scene {
             ));
         }
         let base = path.parent().unwrap_or(Path::new("."));
-        if let Some(SpectrumSpec::Tabulated { file, .. }) = &mut s.spectrum {
+        if let Some(SpectrumSpec::Tabulated { file, .. } | SpectrumSpec::HeightMap { file, .. }) =
+            &mut s.spectrum
+        {
             if file.is_relative() {
                 *file = base.join(&*file);
             }
@@ -436,6 +580,10 @@ impl Scene {
             SpectrumSpec::Tabulated { file, convention } => {
                 Ok(Box::new(Tabulated::from_csv(file, *convention)?))
             }
+            SpectrumSpec::HeightMap { .. } => Err(Error::Inconsistent {
+                name: "spectrum.kind = height_map".into(),
+                requirement: "a height map serves only outputs.bem; the other outputs need a spectrum (self_affine or tabulated)".into(),
+            }),
         }
     }
 
@@ -458,6 +606,7 @@ impl Scene {
         if let Some(st) = o.stress.as_ref().filter(|st| st.zetas.is_empty()) {
             report.stress = Some(self.stress_dimensionless(st)?);
         }
+        self.run_bem(&mut report)?;
         let needs_model = o.area.is_some()
             || o.magnification.is_some()
             || o.theories.is_some()
@@ -525,6 +674,133 @@ impl Scene {
             report.stress = Some(self.stress_physical(st, &model, material.contact_modulus())?);
         }
         Ok(report)
+    }
+
+    /// The BEM outputs (feature `bem`); without the feature, a scene naming
+    /// one is an error.
+    #[cfg(not(feature = "bem"))]
+    fn run_bem(&self, _report: &mut SceneReport) -> Result<()> {
+        let o = &self.outputs;
+        for (name, asked) in [
+            ("outputs.bem", o.bem.is_some()),
+            ("outputs.bem_hertz", o.bem_hertz.is_some()),
+        ] {
+            if asked {
+                return Err(Error::Inconsistent {
+                    name: name.into(),
+                    requirement: "needs a persson built with the `bem` feature".into(),
+                });
+            }
+        }
+        Ok(())
+    }
+
+    /// The BEM outputs (feature `bem`).
+    #[cfg(feature = "bem")]
+    fn run_bem(&self, report: &mut SceneReport) -> Result<()> {
+        if let Some(h) = &self.outputs.bem_hertz {
+            report.bem_hertz = Some(bem_hertz(h)?);
+        }
+        if let Some(b) = &self.outputs.bem {
+            report.bem = Some(self.bem_rough(b)?);
+        }
+        Ok(())
+    }
+
+    /// The rigid surface of `outputs.bem`: the height map, or synthesised
+    /// from the spectrum.
+    #[cfg(feature = "bem")]
+    fn bem_surface(
+        &self,
+        b: &BemOutput,
+        boundary: crate::bem::Boundary,
+    ) -> Result<crate::bem::Surface> {
+        use crate::bem::{check_memory, surface};
+        let named = |e: Error| prefix("outputs.bem.", e);
+        if let Some(SpectrumSpec::HeightMap { file, size }) = &self.spectrum {
+            if b.grid.is_some() || b.seed.is_some() {
+                return Err(Error::Inconsistent {
+                    name: "outputs.bem.grid / outputs.bem.seed".into(),
+                    requirement: "not used with a height map (its file sets the grid)".into(),
+                });
+            }
+            let size = crate::error::check::positive("spectrum.size", *size)?;
+            let bytes = crate::io::read(file)?;
+            // A float32 file of this length holds at most len/4 values.
+            let n_max = ((bytes.len() / 4) as f64).sqrt() as usize;
+            if n_max > crate::bem::MIN_GRID {
+                check_memory(n_max.min(crate::bem::MAX_GRID), boundary).map_err(named)?;
+            }
+            return surface::height_map_from_bytes(file, &bytes, size);
+        }
+        let n = b
+            .grid
+            .ok_or_else(|| missing("outputs.bem.grid (for a synthesised surface)"))?;
+        check_memory(n, boundary).map_err(named)?;
+        let spectrum = self.spectrum()?;
+        let size = std::f64::consts::TAU / spectrum.q_min();
+        surface::synthesize(spectrum.as_ref(), n, size, b.seed.unwrap_or(1)).map_err(named)
+    }
+
+    /// `outputs.bem`: one solve per pressure, warm-started along the list.
+    #[cfg(feature = "bem")]
+    fn bem_rough(&self, b: &BemOutput) -> Result<BemReport> {
+        use crate::bem::{pressure_histogram, Control, Operator, Options, Solver};
+        let named = |e: Error| prefix("outputs.bem.", e);
+        let boundary = parse_boundary("outputs.bem.boundary", b.boundary.as_deref(), "periodic")?;
+        let tol = crate::error::check::tolerance("tolerance", b.tolerance.unwrap_or(1e-10))
+            .map_err(named)?;
+        let bins = b.bins.unwrap_or(50);
+        if bins == 0 {
+            return Err(named(Error::invalid("bins", 0.0, ">= 1")));
+        }
+        let pressures = self.pressures_for("outputs.bem")?;
+        for &p in pressures {
+            crate::error::check::positive("pressures", p)?;
+        }
+        let e_star = self.material()?.contact_modulus();
+        let surf = self.bem_surface(b, boundary)?;
+        let opts = Options {
+            tol,
+            warm_start: true,
+            ..Options::default()
+        };
+        let mut solver = Solver::new(Operator::new(boundary, surf.n, surf.size, e_star)?);
+        let points = pressures
+            .iter()
+            .map(|&p| {
+                let sol = solver.solve(&surf.heights, Control::MeanPressure(p), &opts)?;
+                let histogram = match b.histogram {
+                    Some(_) => Some(
+                        pressure_histogram(&sol.pressure, bins)?
+                            .into_iter()
+                            .map(|h| [h.pressure_low, h.pressure_high, h.density])
+                            .collect(),
+                    ),
+                    None => None,
+                };
+                Ok(BemPoint {
+                    pressure: p,
+                    contact_fraction: sol.contact_fraction,
+                    iterations: sol.iterations,
+                    residual: sol.residual,
+                    approach: sol.approach,
+                    seconds: sol.seconds,
+                    histogram,
+                })
+            })
+            .collect::<Result<Vec<_>>>()?;
+        let synthesised = !matches!(self.spectrum, Some(SpectrumSpec::HeightMap { .. }));
+        Ok(BemReport {
+            grid: surf.n,
+            size: surf.size,
+            boundary: boundary_name(boundary).into(),
+            tolerance: tol,
+            seed: synthesised.then(|| b.seed.unwrap_or(1)),
+            rms_height: surf.rms_height(),
+            rms_slope: surf.rms_slope()?,
+            points,
+        })
     }
 
     /// The scene's pressures, required non-empty by `what`.
@@ -626,12 +902,97 @@ impl Scene {
             o.magnification.as_ref().and_then(|m| m.plot_g.clone()),
             o.theories.as_ref().and_then(|t| t.plot.clone()),
             o.stress.as_ref().and_then(|s| s.plot.clone()),
+            o.bem.as_ref().and_then(|b| b.plot.clone()),
+            o.bem.as_ref().and_then(|b| b.histogram.clone()),
         ]
         .into_iter()
         .flatten()
         .map(|p| dir.join(p))
         .collect()
     }
+}
+
+/// `outputs.bem_hertz`: η per grid.
+#[cfg(feature = "bem")]
+fn bem_hertz(h: &BemHertzOutput) -> Result<Vec<BemHertzRow>> {
+    use crate::bem::{check_memory, hertz, Options};
+    let named = |e: Error| prefix("outputs.bem_hertz.", e);
+    let boundary = parse_boundary("outputs.bem_hertz.boundary", h.boundary.as_deref(), "free")?;
+    let tol =
+        crate::error::check::tolerance("tolerance", h.tolerance.unwrap_or(1e-12)).map_err(named)?;
+    let grids = if h.grids.is_empty() {
+        vec![64, 128, 256]
+    } else {
+        h.grids.clone()
+    };
+    let opts = Options {
+        tol,
+        ..Options::default()
+    };
+    grids
+        .iter()
+        .map(|&n| {
+            check_memory(n, boundary).map_err(named)?;
+            let r = hertz::validate(&hertz::HertzCase::new(n, boundary), &opts).map_err(named)?;
+            let lecture = LECTURE_HERTZ_ETA
+                .iter()
+                .find(|(g, _)| *g == n && boundary == crate::bem::Boundary::Free)
+                .map(|(_, v)| *v);
+            Ok(BemHertzRow {
+                grid: n,
+                boundary: boundary_name(boundary).into(),
+                energy_error: r.energy_error,
+                lecture,
+                contact_radius_error: r.contact_radius_error,
+                peak_pressure_error: r.peak_pressure_error,
+                contact_fraction: r.contact_fraction,
+                iterations: r.iterations,
+                seconds: r.seconds,
+            })
+        })
+        .collect()
+}
+
+#[cfg(feature = "bem")]
+fn parse_boundary(name: &str, v: Option<&str>, default: &str) -> Result<crate::bem::Boundary> {
+    match v.unwrap_or(default) {
+        "periodic" => Ok(crate::bem::Boundary::Periodic),
+        "free" => Ok(crate::bem::Boundary::Free),
+        other => Err(Error::Inconsistent {
+            name: format!("{name} = {other:?}"),
+            requirement: "\"periodic\" or \"free\"".into(),
+        }),
+    }
+}
+
+#[cfg(feature = "bem")]
+fn boundary_name(b: crate::bem::Boundary) -> &'static str {
+    match b {
+        crate::bem::Boundary::Periodic => "periodic",
+        crate::bem::Boundary::Free => "free",
+    }
+}
+
+/// Write the scene's data files (the BEM pressure histograms) into `dir`.
+///
+/// # Errors
+/// A file that cannot be written (written atomically).
+pub fn write_data(scene: &Scene, report: &SceneReport, dir: &Path) -> Result<Vec<PathBuf>> {
+    let mut written = Vec::new();
+    if let (Some(out), Some(r)) = (&scene.outputs.bem, &report.bem) {
+        if let Some(file) = &out.histogram {
+            let mut s = String::from("pressure,pressure_low,pressure_high,density\n");
+            for pt in &r.points {
+                for [lo, hi, d] in pt.histogram.iter().flatten() {
+                    s.push_str(&format!("{:e},{lo:e},{hi:e},{d:e}\n", pt.pressure));
+                }
+            }
+            let p = dir.join(file);
+            crate::io::write_atomic(&p, s.as_bytes())?;
+            written.push(p);
+        }
+    }
+    Ok(written)
 }
 
 /// serde_json's message without its trailing " at line L column C" (the
@@ -772,6 +1133,18 @@ pub fn render_plots(scene: &Scene, report: &SceneReport, dir: &Path) -> Result<V
                 fig.push(Series::new(label, pts, styles[i % styles.len()]));
             }
             Ok(fig)
+        })?;
+    }
+    if let (Some(out), Some(r)) = (&o.bem, &report.bem) {
+        draw(&out.plot, &|| {
+            let p: Vec<f64> = r.points.iter().map(|x| x.pressure).collect();
+            let a: Vec<f64> = r.points.iter().map(|x| x.contact_fraction).collect();
+            let label = format!("FFT-BEM, {0}×{0} {1}", r.grid, r.boundary);
+            let law = LinearLaw {
+                contact_modulus: e_star()?,
+                rms_slope: r.rms_slope,
+            };
+            plot::area_vs_load(&p, &[(label.as_str(), &a)], "unit of E*", Some(law))
         })?;
     }
     Ok(written)

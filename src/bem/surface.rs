@@ -238,14 +238,25 @@ pub fn read_height_map(path: &Path, size: f64) -> Result<Surface> {
         path: path.to_path_buf(),
         source,
     })?;
+    height_map_from_bytes(path, &bytes, size)
+}
+
+/// [`read_height_map`] from bytes in memory; `path` names the source in
+/// errors and its extension `.npy` selects the binary format (as does the
+/// `.npy` magic string).
+///
+/// # Errors
+/// As [`read_height_map`], without the I/O errors.
+pub fn height_map_from_bytes(path: &Path, bytes: &[u8], size: f64) -> Result<Surface> {
+    check::positive("size", size)?;
     let is_npy = path
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("npy"))
         || bytes.starts_with(NPY_MAGIC);
     let (n, heights) = if is_npy {
-        parse_npy(path, &bytes)?
+        parse_npy(path, bytes)?
     } else {
-        parse_text(path, &bytes)?
+        parse_text(path, bytes)?
     };
     Surface::new(n, size, heights).map_err(|e| match e {
         Error::InvalidParameter {
@@ -320,7 +331,10 @@ fn parse_npy(path: &Path, b: &[u8]) -> Result<(usize, Vec<f64>)> {
         )));
     }
     let data = &b[start + hlen..];
-    let count = rows * cols;
+    let count = rows
+        .checked_mul(cols)
+        .and_then(|c| c.checked_mul(item).map(|_| c))
+        .ok_or_else(|| bad(format!("shape ({rows}, {cols}) is too large")))?;
     if data.len() != count * item {
         return Err(bad(format!(
             "data holds {} bytes, shape ({rows}, {cols}) of {item}-byte floats needs {}",

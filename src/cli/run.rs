@@ -34,7 +34,14 @@ pub fn run(a: Args) -> anyhow::Result<()> {
             anyhow::bail!("{}: output would overwrite an input file", p.display());
         }
         #[cfg(not(feature = "plot"))]
-        if !p.ends_with("report.json") {
+        if !p.ends_with("report.json")
+            && !scene
+                .outputs
+                .bem
+                .as_ref()
+                .and_then(|b| b.histogram.as_ref())
+                .is_some_and(|h| p.ends_with(h))
+        {
             anyhow::bail!(
                 "{}: this persson was built without the `plot` feature",
                 p.display()
@@ -45,6 +52,9 @@ pub fn run(a: Args) -> anyhow::Result<()> {
     let report = scene.run()?;
     #[cfg(feature = "plot")]
     for p in persson::scene::render_plots(&scene, &report, &dir)? {
+        eprintln!("wrote {}", p.display());
+    }
+    for p in persson::scene::write_data(&scene, &report, &dir)? {
         eprintln!("wrote {}", p.display());
     }
     let sections = sections(&report);
@@ -71,7 +81,10 @@ pub fn run(a: Args) -> anyhow::Result<()> {
 /// The input files a scene reads.
 fn scene_inputs(scene: &Scene) -> Vec<PathBuf> {
     match &scene.spectrum {
-        Some(persson::scene::SpectrumSpec::Tabulated { file, .. }) => vec![file.clone()],
+        Some(
+            persson::scene::SpectrumSpec::Tabulated { file, .. }
+            | persson::scene::SpectrumSpec::HeightMap { file, .. },
+        ) => vec![file.clone()],
         _ => vec![],
     }
 }
@@ -221,6 +234,86 @@ fn sections(r: &SceneReport) -> Vec<(String, Report)> {
                     .map(|(s, p)| vec![*s, *p])
                     .collect(),
                 json: serde_json::json!(c),
+            },
+        ));
+    }
+    if let Some(b) = &r.bem {
+        out.push((
+            "bem".into(),
+            Report {
+                title: format!(
+                    "Rough contact (FFT-BEM), {0}x{0} grid, L = {1:e}, {2} boundary, tol = {3:e}",
+                    b.grid, b.size, b.boundary, b.tolerance
+                ),
+                scalars: vec![
+                    ("rms_height".into(), b.rms_height),
+                    ("rms_slope".into(), b.rms_slope),
+                ],
+                columns: [
+                    "pressure",
+                    "contact_fraction",
+                    "iterations",
+                    "residual",
+                    "approach",
+                    "seconds",
+                ]
+                .map(String::from)
+                .to_vec(),
+                rows: b
+                    .points
+                    .iter()
+                    .map(|p| {
+                        vec![
+                            p.pressure,
+                            p.contact_fraction,
+                            p.iterations as f64,
+                            p.residual,
+                            p.approach,
+                            p.seconds,
+                        ]
+                    })
+                    .collect(),
+                json: serde_json::json!(b),
+            },
+        ));
+    }
+    if let Some(rows) = &r.bem_hertz {
+        out.push((
+            "bem_hertz".into(),
+            Report {
+                title: format!(
+                    "Hertz convergence (FFT-BEM, {} boundary; a = 0.1 L, R = L; lecture: 000 Table 1, free boundary, NaN = not listed)",
+                    rows.first().map_or("", |h| h.boundary.as_str())
+                ),
+                scalars: vec![],
+                columns: [
+                    "grid",
+                    "energy_error",
+                    "lecture",
+                    "contact_radius_error",
+                    "peak_pressure_error",
+                    "contact_fraction",
+                    "iterations",
+                    "seconds",
+                ]
+                .map(String::from)
+                .to_vec(),
+                rows: rows
+                    .iter()
+                    .map(|h| {
+                        vec![
+                            h.grid as f64,
+                            h.energy_error,
+                            h.lecture.unwrap_or(f64::NAN),
+                            h.contact_radius_error,
+                            h.peak_pressure_error,
+                            h.contact_fraction,
+                            h.iterations as f64,
+                            h.seconds,
+                        ]
+                    })
+                    .collect(),
+                json: serde_json::json!(rows),
             },
         ));
     }

@@ -11,6 +11,8 @@ use serde::Serialize;
 
 use crate::error::Result;
 
+#[cfg(feature = "bem")]
+mod bem;
 mod core;
 mod stress;
 
@@ -68,6 +70,8 @@ pub fn time_it<T>(budget: f64, mut f: impl FnMut() -> T) -> (T, f64) {
 pub fn accuracy(extent: Extent) -> Result<Vec<AccuracyRow>> {
     let mut rows = core::g_quadrature(extent)?;
     rows.extend(stress::accuracy(extent)?);
+    #[cfg(feature = "bem")]
+    rows.extend(bem::accuracy(extent)?);
     Ok(rows)
 }
 
