@@ -1,6 +1,6 @@
 //! Property tests of the FFT-BEM solver (issue 8, item 3): random self-affine
-//! spectra, seeds, grids and pressures spanning decades. Few cases: every
-//! case is three solves.
+//! spectra, seeds, grids (16², 32², periodic and free) and pressures
+//! spanning decades. 128 cases of three solves each: ~0.5 s in release.
 #![cfg(feature = "bem")]
 
 use persson::bem::surface::synthesize;
@@ -17,10 +17,10 @@ const TOL: f64 = 1e-12;
 const LOAD_REL_TOL: f64 = 1e-12;
 
 /// Pointwise gap on the contact (and overlap off it), relative to the rms
-/// height: the stopping rule bounds the p-weighted mean gap by TOL σ_h; a
-/// single contact node may carry far more (tests/bem.rs measured ≤ 1e-9 σ_h
-/// at TOL = 1e-12 on 128²), so the pointwise bound is 1e-7 σ_h.
-const GAP_REL_TOL: f64 = 1e-7;
+/// height: the stopping rule bounds only the p-weighted mean gap, by TOL σ_h.
+/// Measured pointwise over 1024 cases: up to 3.2e-10 σ_h (a bound of 1e-10
+/// fails, 1e-8 passes all 1024).
+const GAP_REL_TOL: f64 = 1e-8;
 
 /// A random rough contact problem.
 #[derive(Debug, Clone)]
@@ -69,7 +69,7 @@ fn case() -> impl Strategy<Value = Case> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(16))]
+    #![proptest_config(ProptestConfig::with_cases(128))]
 
     #[test]
     fn solutions_satisfy_the_contact_conditions(c in case()) {
