@@ -116,3 +116,20 @@ proptest! {
         }
     }
 }
+
+/// A `.npy` header with a shape whose element count overflows `usize`:
+/// before the checked product, `rows·cols` wrapped to 0, an empty data block
+/// passed the length check and the Fortran-order transpose indexed out of
+/// bounds (a panic on user data).
+#[test]
+fn npy_shape_overflow_is_an_error() {
+    let header = "{'descr': '<f8', 'fortran_order': True, 'shape': (4294967296, 4294967296), }\n";
+    let mut bytes = b"\x93NUMPY\x01\x00".to_vec();
+    bytes.extend_from_slice(&(header.len() as u16).to_le_bytes());
+    bytes.extend_from_slice(header.as_bytes());
+    let e =
+        persson::bem::surface::height_map_from_bytes(std::path::Path::new("x.npy"), &bytes, 1.0)
+            .unwrap_err()
+            .to_string();
+    assert!(e.contains("too large"), "{e}");
+}

@@ -39,12 +39,12 @@ pub(super) fn accuracy(extent: Extent) -> Result<Vec<AccuracyRow>> {
 }
 
 /// Hertz η (energy norm against the exact Hertz pressure, what
-/// [`hertz::validate`] reports) for grids 32 … 256 (512 with
+/// [`hertz::validate`] reports) for grids 32 … 256 (to 1024 with
 /// [`Extent::Full`]), periodic and free boundary; seconds = the solve.
 fn hertz_grid(extent: Extent) -> Result<Vec<AccuracyRow>> {
     let mut grids = vec![32, 64, 128, 256];
     if extent == Extent::Full {
-        grids.push(512);
+        grids.extend([512, 1024]);
     }
     let opts = Options {
         tol: GRID_STUDY_TOL,
@@ -79,11 +79,11 @@ fn hertz_grid(extent: Extent) -> Result<Vec<AccuracyRow>> {
 /// whose spectrum (q_l, q_r, q_s = 1, 2, 8 × 2π/L) is resolved on the
 /// coarsest grid, sampled on finer grids by exact trigonometric
 /// interpolation (same random phases on every grid); error
-/// `|A(N) − A(N_ref)| / A(N_ref)` against the finest grid (256, Full 512).
+/// `|A(N) − A(N_ref)| / A(N_ref)` against the finest grid (256, Full 1024).
 fn rough_grid(extent: Extent) -> Result<Vec<AccuracyRow>> {
     let (grids, finest): (&[usize], usize) = match extent {
         Extent::Default => (&[32, 64, 128], 256),
-        Extent::Full => (&[32, 64, 128, 256], 512),
+        Extent::Full => (&[32, 64, 128, 256, 512], 1024),
     };
     let coarse = rough_surface()?;
     let opts = Options {
