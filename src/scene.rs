@@ -11,6 +11,12 @@
 //!   "pressures": [1e5, 1e6, 1e7],
 //!   "outputs": { "area": {}, "kappa": {} } }
 //! ```
+//!
+//! With the feature `bem`, two more outputs: `bem` (FFT-BEM rough contact at
+//! the scene's pressures, on a surface synthesised from the spectrum or read
+//! from a `{"kind": "height_map", "file": …, "size": L}` spectrum entry) and
+//! `bem_hertz` (the Hertz convergence table, η per grid). A build without
+//! `bem` rejects a scene naming them.
 
 use std::path::{Path, PathBuf};
 

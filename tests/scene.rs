@@ -123,6 +123,14 @@ fn shipped_scenes_parse_and_run() {
         let path = entry.unwrap().path();
         if path.extension().is_some_and(|e| e == "json") {
             let s = Scene::read(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+            // Without the BEM, a scene naming a BEM output must say so.
+            if cfg!(not(feature = "bem"))
+                && (s.outputs.bem.is_some() || s.outputs.bem_hertz.is_some())
+            {
+                let e = s.run().unwrap_err().to_string();
+                assert!(e.contains("`bem` feature"), "{}: {e}", path.display());
+                continue;
+            }
             s.run()
                 .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
             n += 1;
