@@ -29,6 +29,12 @@ const KAPPA_MAX_FRACTION: f64 = 0.1;
 /// Absolute tolerance on A/A0 of the corrected theories.
 const THEORY_TOLERANCE: f64 = 1e-10;
 
+/// The theory's P(σ) is drawn up to this multiple of the BEM's largest pressure.
+const THEORY_TAIL: f64 = 1.5;
+
+/// Points of the theory's P(σ) curve.
+const THEORY_POINTS: usize = 150;
+
 /// Relative tolerance of P(σ) and ū(p) of the theory.
 const STRESS_TOLERANCE: f64 = 1e-9;
 
@@ -402,8 +408,18 @@ fn compare(a: &MainArgs) -> anyhow::Result<Report> {
     for (k, &p) in pressures.iter().enumerate() {
         let (lo, hi, bem_density) = sw.histograms[k].density(a.bins);
         let centres: Vec<f64> = lo.iter().zip(&hi).map(|(l, h)| 0.5 * (l + h)).collect();
-        let curve = StressScene::flat(p, None)?
+        let scene = StressScene::flat(p, None)?;
+        let curve = scene
             .curves(&model, &[zeta], &centres, STRESS_TOLERANCE)?
+            .pop()
+            .context("no stress curve")?;
+        // The theory also beyond the BEM's largest pressure, to show its tail.
+        let top = THEORY_TAIL * hi.last().copied().unwrap_or(p);
+        let sigma: Vec<f64> = (1..=THEORY_POINTS)
+            .map(|i| top * i as f64 / THEORY_POINTS as f64)
+            .collect();
+        let tail = scene
+            .curves(&model, &[zeta], &sigma, STRESS_TOLERANCE)?
             .pop()
             .context("no stress curve")?;
         distributions.push(json!({
@@ -416,6 +432,7 @@ fn compare(a: &MainArgs) -> anyhow::Result<Report> {
             "bem_contact_fraction": means.last().map(|m| m.0[k]),
             "theory_density": curve.density,
             "theory_contact_fraction": curve.contact_fraction,
+            "theory_curve": { "sigma": sigma, "density": tail.density },
             "g": curve.g.value,
         }));
     }
@@ -667,7 +684,15 @@ fn draw_plots(
             .map(|v| v.iter().filter_map(Value::as_f64).collect())
             .unwrap_or_default()
     };
-    let (bins, bem, theory) = (get("bins"), get("bem_density"), get("theory_density"));
+    let (bins, bem) = (get("bins"), get("bem_density"));
+    let curve = &d["theory_curve"];
+    let pick = |k: &str| -> Vec<f64> {
+        curve[k]
+            .as_array()
+            .map(|v| v.iter().filter_map(Value::as_f64).collect())
+            .unwrap_or_default()
+    };
+    let (sigma, theory) = (pick("sigma"), pick("density"));
     let p = pressures[hist_index];
     for (path, log) in [(&a.plot_histogram, false), (&a.plot_histogram_log, true)] {
         let Some(path) = path else { continue };
@@ -685,7 +710,10 @@ fn draw_plots(
             format!("BEM {}²", grids.last().copied().unwrap_or(0)),
             xy(&bins, &bem),
         ));
-        fig.push(Series::line("Persson P(σ), flat start", xy(&bins, &theory)));
+        fig.push(Series::line(
+            "Persson P(σ), flat start",
+            xy(&sigma, &theory),
+        ));
         if let Some(h) = data_hist {
             fig.push(Series::markers(
                 "your histogram",
