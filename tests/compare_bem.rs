@@ -386,6 +386,52 @@ mod cli {
         }
     }
 
+    #[cfg(feature = "plot")]
+    #[test]
+    fn plots_and_user_histogram() {
+        let dir = temp("dummy", "").with_file_name("");
+        let hist = temp("hist.csv", "pressure,density\n0.001,5\n0.003,8\n");
+        let files = ["area.svg", "hist.svg", "hist_log.svg"].map(|f| dir.join(f));
+        let v = run_json(&[
+            "--modulus",
+            "1",
+            "--grid",
+            "64",
+            "--pressure",
+            "0.001,0.004",
+            "--data-histogram",
+            hist.to_str().unwrap(),
+            "--plot",
+            files[0].to_str().unwrap(),
+            "--plot-histogram",
+            files[1].to_str().unwrap(),
+            "--plot-histogram-log",
+            files[2].to_str().unwrap(),
+        ]);
+        assert_eq!(v["data_histogram"]["densities"][1].as_f64(), Some(8.0));
+        for f in &files {
+            let svg = std::fs::read_to_string(f).unwrap();
+            assert!(
+                svg.starts_with("<svg") && svg.contains("BEM"),
+                "{}",
+                f.display()
+            );
+        }
+        let bad = temp("bad_hist.csv", "pressure,density\n0.001,-5\n");
+        let mut args: Vec<&str> = SURFACE.to_vec();
+        args.extend([
+            "--modulus",
+            "1",
+            "--grid",
+            "32",
+            "--data-histogram",
+            bad.to_str().unwrap(),
+        ]);
+        let (code, _, err) = persson(&args);
+        assert_eq!(code, 2, "{err}");
+        assert!(err.contains(":2:"), "{err}");
+    }
+
     #[test]
     fn kappa_study_reports_each_hurst_exponent() {
         let (code, out, err) = persson(&[

@@ -777,7 +777,7 @@ fn kappa_study(a: &KappaArgs) -> anyhow::Result<Report> {
     };
     let mut rows = Vec::new();
     let mut out = Vec::new();
-    let mut plot_points: Vec<(f64, f64)> = Vec::new();
+    let mut plot_points: Vec<(f64, f64, f64)> = Vec::new();
     for &h in &a.hurst {
         let s = SelfAffine::new(
             q_l,
@@ -796,7 +796,7 @@ fn kappa_study(a: &KappaArgs) -> anyhow::Result<Report> {
         }
         row.extend([k.extrapolated.kappa, k.extrapolated.standard_error]);
         rows.push(row);
-        plot_points.push((h, k.extrapolated.kappa));
+        plot_points.push((h, k.extrapolated.kappa, k.extrapolated.standard_error));
         out.push(json!({
             "hurst": h,
             "per_grid": k.per_grid.iter().map(|(g, e)| json!({ "grid": g, "kappa": e.kappa, "standard_error": e.standard_error, "seed_scatter": e.seed_scatter, "points": e.points })).collect::<Vec<_>>(),
@@ -813,17 +813,33 @@ fn kappa_study(a: &KappaArgs) -> anyhow::Result<Report> {
             Axis::linear("Hurst exponent H"),
             Axis::linear("κ"),
         );
-        fig.push(Series::line_markers("BEM, N → ∞", plot_points.clone()));
-        fig.push(Series::new(
-            "Bush et al.: √(2π)",
-            vec![(lo, Kappa::Bush.value()), (hi, Kappa::Bush.value())],
-            Style::Dashed,
-        ));
-        fig.push(Series::new(
-            "Persson: √(8/π)",
-            vec![(lo, Kappa::Persson.value()), (hi, Kappa::Persson.value())],
-            Style::Dotted,
-        ));
+        let colour = persson::plot::PALETTE[0];
+        fig.push(
+            Series::line_markers(
+                "BEM, N → ∞ (± standard error)",
+                plot_points.iter().map(|p| (p.0, p.1)).collect(),
+            )
+            .with_color(colour),
+        );
+        for &(h, k, se) in &plot_points {
+            fig.push(Series::line("", vec![(h, k - se), (h, k + se)]).with_color(colour));
+        }
+        fig.push(
+            Series::new(
+                "Bush et al.: √(2π)",
+                vec![(lo, Kappa::Bush.value()), (hi, Kappa::Bush.value())],
+                Style::Dashed,
+            )
+            .with_color(persson::plot::PALETTE[1]),
+        );
+        fig.push(
+            Series::new(
+                "Persson: √(8/π)",
+                vec![(lo, Kappa::Persson.value()), (hi, Kappa::Persson.value())],
+                Style::Dotted,
+            )
+            .with_color(persson::plot::PALETTE[2]),
+        );
         Ok(fig)
     })?;
     #[cfg(not(feature = "plot"))]
