@@ -250,3 +250,51 @@ pub fn score(values: &[f64], reference: &[f64]) -> Score {
         relative_deviation: rel,
     }
 }
+
+/// A user's pressure histogram: bin centres (or pressures) and densities
+/// P(σ), normalised like Persson's P(σ) (∫ P dσ = A/A0).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct UserHistogram {
+    /// Pressures σ (the unit of the modulus).
+    pub pressures: Vec<f64>,
+    /// P(σ) at each pressure (1/unit of σ).
+    pub densities: Vec<f64>,
+}
+
+impl UserHistogram {
+    /// Read a CSV with columns `pressure, density` (a header line and `#`
+    /// comments allowed).
+    ///
+    /// # Errors
+    /// [`Error::Parse`] naming the line of a missing column or non-numeric
+    /// cell, a pressure < 0 or a density < 0 (or not finite).
+    pub fn from_csv(path: &Path) -> Result<Self> {
+        let bytes = crate::io::read(path)?;
+        let text = std::str::from_utf8(&bytes)
+            .map_err(|e| Error::parse(path, 0, 0, format!("not UTF-8 text ({e})")))?;
+        let (rows, lines) = crate::spectrum::parse_columns(path, text, ["pressure", "density"])?;
+        for (&(p, d), &line) in rows.iter().zip(&lines) {
+            if !(p.is_finite() && p >= 0.0) {
+                return Err(Error::parse(
+                    path,
+                    line,
+                    1,
+                    format!("pressure = {p}: must be finite and >= 0"),
+                ));
+            }
+            if !(d.is_finite() && d >= 0.0) {
+                return Err(Error::parse(
+                    path,
+                    line,
+                    2,
+                    format!("density = {d}: must be finite and >= 0"),
+                ));
+            }
+        }
+        let (pressures, densities) = rows.into_iter().unzip();
+        Ok(UserHistogram {
+            pressures,
+            densities,
+        })
+    }
+}

@@ -25,6 +25,8 @@
 #[cfg(feature = "bem")]
 pub mod bem;
 pub mod compare;
+#[cfg(feature = "bem")]
+pub mod compare_bem;
 pub mod corrected;
 pub mod error;
 pub mod io;

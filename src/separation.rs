@@ -281,7 +281,9 @@ impl<'a> Separation<'a> {
             }
         })?;
         let scaled = with_rounding(q);
-        if scaled.value.is_nan() || scaled.value <= 0.0 {
+        // A scaled integral of exactly 0 (every node underflowed) is full
+        // contact: K = +∞ below, like an overflowing K.
+        if scaled.value.is_nan() || scaled.value < 0.0 {
             return Err(Error::NotConverged {
                 what: format!("contact stiffness at p = {pressure:e} (compliance vanishes)"),
                 iterations: q.evals,

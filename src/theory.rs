@@ -1,6 +1,6 @@
 //! Persson's theory, elastic and frictionless: G(ζ) and the contact area.
 
-use crate::error::{check, Result};
+use crate::error::{check, Error, Result};
 use crate::kappa::Kappa;
 use crate::quad::Estimate;
 use crate::special::{erf, erfc, ln_erfc};
@@ -150,10 +150,21 @@ impl<'a> Persson<'a> {
         let s = self.slope_variance(zeta)?;
         let r = self.contact_modulus / pressure;
         let f = r * r / 8.0;
-        Ok(Estimate {
+        let g = Estimate {
             value: f * s.value,
             error: f * s.error + 2.0 * f64::EPSILON * f * s.value,
-        })
+        };
+        if !g.value.is_finite() {
+            return Err(Error::invalid(
+                "pressure",
+                pressure,
+                format!(
+                    "large enough relative to E* = {} that G = (E*/σ0)²⟨|∇h|²⟩/8 stays finite in f64",
+                    crate::error::num(self.contact_modulus)
+                ),
+            ));
+        }
+        Ok(g)
     }
 
     /// A/A0 at (ζ, σ0), original theory.
@@ -175,15 +186,9 @@ impl<'a> Persson<'a> {
     /// # Errors
     /// As [`Persson::g`].
     pub fn point(&self, zeta: f64, pressure: f64) -> Result<AreaPoint> {
-        check::positive("pressure", pressure)?;
-        let s = self.slope_variance(zeta)?;
-        let r = self.contact_modulus / pressure;
-        let g = Estimate {
-            value: r * r / 8.0 * s.value,
-            error: r * r / 8.0 * s.error + 2.0 * f64::EPSILON * r * r / 8.0 * s.value,
-        };
+        let g = self.g(zeta, pressure)?;
         let a = contact_fraction(g.value, g.error)?;
-        let slope = s.value.sqrt();
+        let slope = self.slope_variance(zeta)?.value.sqrt();
         Ok(AreaPoint {
             pressure,
             zeta,

@@ -92,6 +92,39 @@ fn cases() -> Vec<(String, String)> {
         (format!("run {}", file("neg.json", scene_ok.replace("[0.1]", "[-0.1]").as_bytes())), "pressure"),
         (format!("run {}", file("nomat.json", scene_ok.replace(r#""material":{"contact_modulus":1},"#, "").as_bytes())), "material"),
         (format!("run {} --out /no/such/dir", file("ok.json", scene_ok.as_bytes())), "/no/such/dir"),
+        // outputs that would overwrite an input, or cannot be written
+        (format!("area {SA} --modulus 1 --pressure 1 --plot /no/such/dir/a.svg"), "/no/such/dir/a.svg"),
+        (format!("area {SA} --modulus 1 --pressure 1 --plot {}", dir().join("a.jpg").display()), "a.jpg"),
+        (
+            format!(
+                "run {}",
+                file("clobber.json", scene_ok.replace(r#""area":{}"#, &format!(r#""area":{{"plot":"{}"}}"#, dir().join("clobber.json").display())).as_bytes())
+            ),
+            "overwrite",
+        ),
+        // stress
+        ("stress --start flat --g -1".into(), "g"),
+        ("stress --start hertz --g nan".into(), "g"),
+        ("stress --start hertz --g 1 --yield-ratio 1".into(), "yield"),
+        ("stress --start cylinder --g 1 --yield-ratio 0.5".into(), "yield"),
+        ("stress --start hertz --g 1 --tol 0".into(), "tol"),
+        (format!("stress --table {} --g 1", file("p0neg.csv", b"0,0\n0.5,-1\n1,2\n")), "table"),
+        (format!("stress --table {} --g 1", file("p0norm.csv", b"0,0\n1,5\n")), "table"),
+        // corrected theories and separation
+        (format!("area {SA} --modulus 1 --pressure 1 --theory yang-persson --gamma 5"), "gamma"),
+        (format!("area {SA} --modulus 1 --pressure 1 --theory wang-muser --gamma 0"), "gamma"),
+        (format!("separation {SA} --modulus 1 --pressure -1"), "pressure"),
+        (format!("separation {SA} --modulus 1 --pressure 0"), "pressure"),
+        // BEM
+        ("bem hertz --grid 4".into(), "grid"),
+        ("bem hertz --grid 20000".into(), "GiB"),
+        (format!("bem rough {SA} --grid 32 --modulus 1 --pressure -1"), "pressure"),
+        (format!("bem rough {SA} --grid 32 --modulus 1 --pressure 0"), "pressure"),
+        (format!("bem rough --surface {} --size 1 --modulus 1 --pressure 0.1", file("ragged.txt", b"1 2 3\n4 5\n")), "ragged.txt"),
+        (format!("bem rough --surface {} --size 1 --modulus 1 --pressure 0.1", file("nanmap.txt", b"1 2\nnan 4\n")), "nanmap.txt"),
+        (format!("bem rough --surface {} --size 1 --modulus 1 --pressure 0.1", file("bad.npy", b"\x93NUMPY\x01\x00garbage")), "bad.npy"),
+        (format!("bem rough --surface {} --size 1 --modulus 1 --pressure 0.1", file("empty.npy", b"")), "empty.npy"),
+        (format!("bem rough --surface {} --size -1 --modulus 1 --pressure 0.1", file("ok.txt", b"0 1\n1 0\n")), "size"),
     ];
     v.into_iter().map(|(a, n)| (a, n.to_string())).collect()
 }

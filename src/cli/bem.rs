@@ -108,7 +108,7 @@ struct RoughArgs {
         long,
         value_delimiter = ',',
         allow_negative_numbers = true,
-        required = true
+        required_unless_present = "example"
     )]
     pressure: Vec<f64>,
     /// Boundary condition of the elastic half-space.
@@ -265,7 +265,8 @@ fn rough_report(a: &RoughArgs) -> anyhow::Result<Report> {
     if let Some(n) = a.grid {
         persson::bem::check_grid(n)?;
     }
-    for &p in &a.pressure {
+    let pressures = super::args::pressures(&a.pressure, a.spectrum.example)?;
+    for &p in &pressures {
         check::positive("pressure", p)?;
     }
     let opts = options(&a.solver)?;
@@ -281,15 +282,15 @@ fn rough_report(a: &RoughArgs) -> anyhow::Result<Report> {
     let rms_slope = surf.rms_slope()?;
     let mut rows = Vec::new();
     let mut points = Vec::new();
-    let bar = Progress::bar(a.pressure.len());
-    for (k, &p) in a.pressure.iter().enumerate() {
+    let bar = Progress::bar(pressures.len());
+    for (k, &p) in pressures.iter().enumerate() {
         bar.message(&format!("pressure {p:e}"));
         let sol =
             solver.solve_observed(&surf.heights, Control::MeanPressure(p), &opts, &mut |it| {
                 bar.tick(it)
             })?;
         bar.inc();
-        let suffix = (a.pressure.len() > 1).then_some(k);
+        let suffix = (pressures.len() > 1).then_some(k);
         if let Some(path) = &a.pressure_field {
             write_npy(&indexed(path, suffix), n, n, &sol.pressure)?;
         }

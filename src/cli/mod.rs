@@ -5,6 +5,8 @@ mod area;
 mod args;
 #[cfg(feature = "bem")]
 mod bem;
+#[cfg(feature = "bem")]
+mod compare;
 mod g;
 mod kappa;
 mod output;
@@ -49,6 +51,9 @@ enum Cmd {
     /// FFT boundary-element cross-check: Hertz validation and rough contact.
     #[cfg(feature = "bem")]
     Bem(bem::Args),
+    /// Theories against the BEM at several resolutions, its continuum limit, κ and your data.
+    #[cfg(feature = "bem")]
+    Compare(compare::Args),
 }
 
 /// Run one parsed command line.
@@ -64,5 +69,7 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
         Cmd::Separation(a) => separation::run(a),
         #[cfg(feature = "bem")]
         Cmd::Bem(a) => bem::run(a),
+        #[cfg(feature = "bem")]
+        Cmd::Compare(a) => compare::run(a),
     }
 }

@@ -70,7 +70,10 @@ fn report(a: &Args) -> anyhow::Result<Report> {
         (Some(StartName::Cylinder), _) => Start::Cylinder,
         (None, Some(path)) => {
             let (s, p) = read_table(path)?;
-            Start::Tabulated(TabulatedStart::new(&s, &p, a.table_tol)?)
+            Start::Tabulated(
+                TabulatedStart::new(&s, &p, a.table_tol)
+                    .map_err(|e| anyhow::anyhow!("--table {}: {e}", path.display()))?,
+            )
         }
         (None, None) => unreachable!("clap requires --start or --table"),
     };
