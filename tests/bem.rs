@@ -353,21 +353,11 @@ fn bad_height_maps_name_the_problem() {
 }
 
 #[cfg(feature = "cli")]
-mod cli {
-    use std::process::Command;
+mod common;
 
-    fn persson(args: &[&str]) -> (i32, String, String) {
-        let out = Command::new(env!("CARGO_BIN_EXE_persson"))
-            .args(args)
-            .env("RUST_BACKTRACE", "1")
-            .output()
-            .unwrap();
-        (
-            out.status.code().unwrap_or(-1),
-            String::from_utf8_lossy(&out.stdout).into_owned(),
-            String::from_utf8_lossy(&out.stderr).into_owned(),
-        )
-    }
+#[cfg(feature = "cli")]
+mod cli {
+    use crate::common::persson;
 
     #[test]
     fn hertz_json_has_the_issue_keys() {

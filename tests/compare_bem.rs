@@ -212,20 +212,10 @@ fn bem_kappa_at_256_lies_between_persson_and_bush() {
     assert!(k.per_grid[0].1.kappa > k256 && k256 > ki, "{k:?}");
 }
 
-mod cli {
-    use std::process::Command;
+mod common;
 
-    fn persson(args: &[&str]) -> (i32, String, String) {
-        let out = Command::new(env!("CARGO_BIN_EXE_persson"))
-            .args(args)
-            .output()
-            .unwrap();
-        (
-            out.status.code().unwrap_or(-1),
-            String::from_utf8_lossy(&out.stdout).into_owned(),
-            String::from_utf8_lossy(&out.stderr).into_owned(),
-        )
-    }
+mod cli {
+    use crate::common::persson;
 
     const SURFACE: [&str; 12] = [
         "compare",

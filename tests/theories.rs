@@ -601,28 +601,12 @@ fn full_contact_limit() {
 // ------------------------------------------------------------- CLI
 
 #[cfg(feature = "cli")]
+mod common;
+
+#[cfg(feature = "cli")]
 mod cli {
     use super::*;
-    use std::process::Command;
-
-    fn persson(args: &[&str]) -> (i32, String, String) {
-        let out = Command::new(env!("CARGO_BIN_EXE_persson"))
-            .args(args)
-            .env("RUST_BACKTRACE", "1")
-            .output()
-            .expect("run persson");
-        (
-            out.status.code().unwrap_or(-1),
-            String::from_utf8_lossy(&out.stdout).into_owned(),
-            String::from_utf8_lossy(&out.stderr).into_owned(),
-        )
-    }
-
-    fn json(args: &[&str]) -> serde_json::Value {
-        let (code, out, err) = persson(args);
-        assert_eq!(code, 0, "{args:?}: {err}");
-        serde_json::from_str(&out).unwrap_or_else(|e| panic!("{args:?}: {e}\n{out}"))
-    }
+    use crate::common::{json, persson};
 
     const SPECTRUM: [&str; 12] = [
         "--hurst",
