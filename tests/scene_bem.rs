@@ -2,7 +2,7 @@
 //! spectrum or a height map) and `bem_hertz` (the lecture's convergence
 //! table); the spectrum kind `height_map`.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use persson::scene::Scene;
 
@@ -43,7 +43,7 @@ mod bem {
     /// allows for the summation order of a different code path only.
     const SAME_SOLVE_TOL: f64 = 1e-12;
 
-    fn tmp(name: &str) -> PathBuf {
+    fn tmp(name: &str) -> std::path::PathBuf {
         let d = std::env::temp_dir().join(format!("persson-scene-bem-{}", std::process::id()));
         std::fs::create_dir_all(&d).unwrap();
         d.join(name)
