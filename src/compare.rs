@@ -298,3 +298,32 @@ impl UserHistogram {
         })
     }
 }
+
+/// Relative L1 distance between two densities sampled at the same points,
+/// `∫|a − b| dx / ∫|b| dx` by the trapezoid rule (0 when they are equal).
+///
+/// Used to score a user's pressure histogram against Persson's P(σ).
+///
+/// # Errors
+/// Lengths differ, fewer than two points, or ∫|b| = 0.
+pub fn density_distance(x: &[f64], a: &[f64], b: &[f64]) -> Result<f64> {
+    if x.len() != a.len() || x.len() != b.len() || x.len() < 2 {
+        return Err(Error::Inconsistent {
+            name: "histogram".into(),
+            requirement: "at least two points, with as many densities as pressures".into(),
+        });
+    }
+    let trap = |f: &dyn Fn(usize) -> f64| -> f64 {
+        (1..x.len())
+            .map(|i| 0.5 * (f(i) + f(i - 1)) * (x[i] - x[i - 1]))
+            .sum()
+    };
+    let den = trap(&|i| b[i].abs());
+    if !(den > 0.0) {
+        return Err(Error::Inconsistent {
+            name: "histogram".into(),
+            requirement: "a reference density with a non-zero integral".into(),
+        });
+    }
+    Ok(trap(&|i| (a[i] - b[i]).abs()) / den)
+}

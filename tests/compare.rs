@@ -99,3 +99,16 @@ fn user_data_csv_errors_name_the_line() {
         }
     }
 }
+
+#[test]
+fn density_distance_is_zero_for_equal_densities() {
+    use persson::compare::density_distance;
+    let x = [0.0, 1.0, 2.0, 3.0];
+    let b = [0.0, 1.0, 1.0, 0.0];
+    assert_eq!(density_distance(&x, &b, &b).unwrap(), 0.0);
+    // a = 2b: ∫|a − b| / ∫|b| = 1
+    let a: Vec<f64> = b.iter().map(|v| 2.0 * v).collect();
+    assert!((density_distance(&x, &a, &b).unwrap() - 1.0).abs() < EXACT);
+    assert!(density_distance(&x, &a[..3], &b).is_err());
+    assert!(density_distance(&x, &b, &[0.0; 4]).is_err());
+}

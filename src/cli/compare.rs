@@ -466,6 +466,20 @@ fn compare(a: &MainArgs) -> anyhow::Result<Report> {
         &pressures,
         &means.last().context("no grid")?.0,
     );
+    // The user's histogram against P(σ) at the histogram pressure.
+    let data_hist_score = match &data_hist {
+        Some(h) => {
+            let p = pressures[hist_index];
+            let theory = StressScene::flat(p, None)?
+                .curves(&model, &[zeta], &h.pressures, STRESS_TOLERANCE)?
+                .pop()
+                .context("no stress curve")?;
+            let d =
+                persson::compare::density_distance(&h.pressures, &h.densities, &theory.density)?;
+            json!({ "pressure": p, "relative_l1_distance_from_theory": d })
+        }
+        None => Value::Null,
+    };
 
     // Mean separation: BEM mean gap against ū(p).
     let sep = Separation::new(&band, e_star)?;
@@ -639,6 +653,7 @@ fn compare(a: &MainArgs) -> anyhow::Result<Report> {
             "mean_separation": { "bem": u_bem, "theory": u_theory },
             "data": data_json,
             "data_histogram": data_hist,
+            "data_histogram_score": data_hist_score,
         }),
     })
 }
