@@ -319,7 +319,7 @@ pub fn density_distance(x: &[f64], a: &[f64], b: &[f64]) -> Result<f64> {
             .sum()
     };
     let den = trap(&|i| b[i].abs());
-    if !(den > 0.0) {
+    if den.is_nan() || den <= 0.0 {
         return Err(Error::Inconsistent {
             name: "histogram".into(),
             requirement: "a reference density with a non-zero integral".into(),
