@@ -666,18 +666,11 @@ pub fn load_curve(
     pressures: &[f64],
     tolerance: f64,
 ) -> Result<Vec<TheoryPoint>> {
-    for &p in pressures {
-        check::positive("pressure", p)?;
-    }
     let s = model.slope_variance(zeta)?;
-    let e = model.contact_modulus();
     let gs: Vec<(f64, f64)> = pressures
         .iter()
-        .map(|&p| {
-            let f = (e / p) * (e / p) / 8.0;
-            (f * s.value, f * s.error + 2.0 * f64::EPSILON * f * s.value)
-        })
-        .collect();
+        .map(|&p| model.g_from(s, p).map(|g| (g.value, g.error)))
+        .collect::<Result<_>>()?;
     let values: Vec<f64> = gs.iter().map(|g| g.0).collect();
     let sols = theory.contact_fractions(&values, tolerance)?;
     Ok(pressures

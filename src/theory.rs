@@ -146,10 +146,20 @@ impl<'a> Persson<'a> {
     /// # Errors
     /// σ0 not finite and positive, ζ < 1.
     pub fn g(&self, zeta: f64, pressure: f64) -> Result<Estimate> {
+        self.g_from(self.slope_variance(zeta)?, pressure)
+    }
+
+    /// G from a slope variance ⟨|∇h|²⟩_ζ already computed (see
+    /// [`Persson::slope_variance`]): `(E*/σ0)² ⟨|∇h|²⟩_ζ / 8` with its error,
+    /// so that a load curve computes the spectrum's moment once.
+    ///
+    /// # Errors
+    /// σ0 not finite and positive, or so small that G overflows.
+    pub fn g_from(&self, slope_variance: Estimate, pressure: f64) -> Result<Estimate> {
         check::positive("pressure", pressure)?;
-        let s = self.slope_variance(zeta)?;
         let r = self.contact_modulus / pressure;
         let f = r * r / 8.0;
+        let s = slope_variance;
         let g = Estimate {
             value: f * s.value,
             error: f * s.error + 2.0 * f64::EPSILON * f * s.value,
@@ -186,9 +196,14 @@ impl<'a> Persson<'a> {
     /// # Errors
     /// As [`Persson::g`].
     pub fn point(&self, zeta: f64, pressure: f64) -> Result<AreaPoint> {
-        let g = self.g(zeta, pressure)?;
+        self.point_from(self.slope_variance(zeta)?, zeta, pressure)
+    }
+
+    /// [`Persson::point`] with ⟨|∇h|²⟩_ζ already computed.
+    fn point_from(&self, slope_variance: Estimate, zeta: f64, pressure: f64) -> Result<AreaPoint> {
+        let g = self.g_from(slope_variance, pressure)?;
         let a = contact_fraction(g.value, g.error)?;
-        let slope = self.slope_variance(zeta)?.value.sqrt();
+        let slope = slope_variance.value.sqrt();
         Ok(AreaPoint {
             pressure,
             zeta,
@@ -216,7 +231,11 @@ impl<'a> Persson<'a> {
     /// # Errors
     /// As [`Persson::point`], for the first bad pressure.
     pub fn load_curve(&self, pressures: &[f64], zeta: f64) -> Result<Vec<AreaPoint>> {
-        pressures.iter().map(|&p| self.point(zeta, p)).collect()
+        let s = self.slope_variance(zeta)?;
+        pressures
+            .iter()
+            .map(|&p| self.point_from(s, zeta, p))
+            .collect()
     }
 
     /// A/A0 against magnification at fixed σ0 (the magnification curve).
