@@ -30,8 +30,6 @@
 //! - Lecture 000 (seed): u = FFT⁻¹(K FFT(p)), K = 2/(E*|q|).
 //! - Liu, Wang & Liu, Wear 243, 101 (2000): DC-FFT, zero padding to 2N.
 
-use rustfft::num_complex::Complex64;
-
 use super::fft::Fft2;
 use crate::error::{check, Error, Result};
 
@@ -69,12 +67,10 @@ pub struct Operator {
     size: f64,
     e_star: f64,
     fft: Fft2,
-    /// Multiplier of the transposed half spectrum, including the `1/n_f²`
-    /// normalisation of the inverse FFT (real: both kernels are even), for
-    /// `k_i ≤ n_f/2` only (`(n_f/2+1)` values per row; symmetric in k_i).
+    /// Multiplier of the half spectrum, including the `1/n_f²` normalisation
+    /// of the inverse FFT (real: both kernels are even), stored per column
+    /// `k_j` for `k_i ≤ n_f/2` only (`n_f/2 + 1` values; symmetric in k_i).
     multiplier: Vec<f64>,
-    real: Vec<f64>,
-    spec: Vec<Complex64>,
     /// Real-space periodic kernel `k[(i − i')·N + (j − j')]` (periodic only;
     /// empty for the free operator), for sparse updates.
     spatial: Vec<f64>,
@@ -95,66 +91,35 @@ impl Operator {
             Boundary::Periodic => n,
             Boundary::Free => 2 * n,
         };
-        let nc = nf / 2 + 1;
-        let norm = 1.0 / (nf as f64 * nf as f64);
-        let multiplier = match boundary {
-            Boundary::Periodic => {
-                let dq = std::f64::consts::TAU / size;
-                let mut m = vec![0.0; nc * n];
-                for kj in 0..nc {
-                    for ki in 0..n {
-                        let kx = signed(ki, n) as f64;
-                        let q = dq * (kx * kx + (kj * kj) as f64).sqrt();
-                        m[kj * n + ki] = if q > 0.0 {
-                            2.0 / (e_star * q) * norm
-                        } else {
-                            0.0
-                        };
-                    }
-                }
-                m
-            }
-            Boundary::Free => Vec::new(), // built below, in the operator's buffers
-        };
         let mut fft = Fft2::new(nf, n)?;
-        let mut spec = vec![Complex64::new(0.0, 0.0); fft.spectrum_len()];
-        let mut real = vec![0.0; n * nf];
         let multiplier = match boundary {
-            Boundary::Periodic => multiplier,
-            Boundary::Free => free_multiplier(&mut fft, &mut spec, &mut real, size, e_star)?,
+            Boundary::Periodic => periodic_multiplier(n, size, e_star),
+            Boundary::Free => free_multiplier(&mut fft, size, e_star)?,
         };
-        let spatial = match boundary {
-            Boundary::Periodic => {
-                for (z, m) in spec.iter_mut().zip(&multiplier) {
-                    *z = Complex64::new(*m, 0.0);
-                }
-                fft.inverse(&mut spec, &mut real)?;
-                real.clone()
-            }
-            Boundary::Free => Vec::new(),
-        };
-        // Both kernels are even, so the multiplier is symmetric in
-        // k_i ↔ n_f − k_i: keep k_i = 0 … n_f/2 only.
-        let half = nf / 2 + 1;
-        let mut multiplier = multiplier;
-        if multiplier.len() == nc * nf {
-            for kj in 0..nc {
-                multiplier.copy_within(kj * nf..kj * nf + half, kj * half);
-            }
-            multiplier.truncate(nc * half);
-            multiplier.shrink_to_fit();
-        }
-        Ok(Operator {
+        let mut op = Operator {
             boundary,
             n,
             size,
             e_star,
             fft,
             multiplier,
-            real,
-            spec,
-            spatial,
-        })
+            spatial: Vec::new(),
+        };
+        if boundary == Boundary::Periodic {
+            // The kernel is the response to a unit pressure at node (0, 0).
+            let mut spatial = vec![0.0; n * n];
+            op.apply_rows(
+                &mut |i, row| {
+                    row.fill(0.0);
+                    if i == 0 {
+                        row[0] = 1.0;
+                    }
+                },
+                &mut |i, row| spatial[i * n..(i + 1) * n].copy_from_slice(row),
+            )?;
+            op.spatial = spatial;
+        }
+        Ok(op)
     }
 
     /// Boundary condition.
@@ -189,40 +154,46 @@ impl Operator {
                 requirement: format!("length N² = {}, got {} and {}", n * n, p.len(), u.len()),
             });
         }
+        self.apply_rows(
+            &mut |i, row| row.copy_from_slice(&p[i * n..(i + 1) * n]),
+            &mut |i, row| u[i * n..(i + 1) * n].copy_from_slice(row),
+        )
+    }
+
+    /// `u = 𝒢 p` row by row: `fill(i, row)` writes the N pressures of row
+    /// `i`, then `emit(i, row)` receives the N displacements of row `i`
+    /// (both in increasing `i`). Lets a caller fuse its own passes over the
+    /// fields with the transform's.
+    ///
+    /// # Errors
+    /// Internal FFT errors only.
+    pub fn apply_rows(
+        &mut self,
+        fill: &mut dyn FnMut(usize, &mut [f64]),
+        emit: &mut dyn FnMut(usize, &[f64]),
+    ) -> Result<()> {
+        let n = self.n;
         let nf = self.fft.n();
-        if nf == n {
-            self.real.copy_from_slice(p);
-        } else {
-            for (dst, src) in self.real.chunks_exact_mut(nf).zip(p.chunks_exact(n)) {
-                dst[..n].copy_from_slice(src);
-                dst[n..].fill(0.0);
-            }
-        }
-        self.fft.forward(&mut self.real, &mut self.spec)?;
         let half = nf / 2 + 1;
-        for (row, m) in self
-            .spec
-            .chunks_exact_mut(nf)
-            .zip(self.multiplier.chunks_exact(half))
-        {
-            let (low, high) = row.split_at_mut(half);
-            for (z, m) in low.iter_mut().zip(m) {
-                *z *= *m;
-            }
-            // k_i = n_f − 1 … half  ↔  multiplier index 1 … n_f − half.
-            for (z, m) in high.iter_mut().rev().zip(&m[1..]) {
-                *z *= *m;
-            }
-        }
-        if nf == n {
-            self.fft.inverse(&mut self.spec, u)?;
-        } else {
-            self.fft.inverse(&mut self.spec, &mut self.real)?;
-            for (dst, src) in u.chunks_exact_mut(n).zip(self.real.chunks_exact(nf)) {
-                dst.copy_from_slice(&src[..n]);
-            }
-        }
-        Ok(())
+        let multiplier = &self.multiplier;
+        self.fft.convolve(
+            &mut |i, row| {
+                fill(i, &mut row[..n]);
+                row[n..].fill(0.0);
+            },
+            &mut |kj, col| {
+                let m = &multiplier[kj * half..(kj + 1) * half];
+                let (low, high) = col.split_at_mut(half);
+                for (z, m) in low.iter_mut().zip(m) {
+                    *z *= *m;
+                }
+                // k_i = n_f − 1 … half  ↔  multiplier index 1 … n_f − half.
+                for (z, m) in high.iter_mut().rev().zip(&m[1..]) {
+                    *z *= *m;
+                }
+            },
+            Some(&mut |i, row| emit(i, &row[..n])),
+        )
     }
 
     /// Add `𝒢 c` for a sparse `c` (values `c[k]` at flat indices `idx[k]`)
@@ -265,17 +236,30 @@ impl Operator {
     }
 }
 
+/// The periodic operator's multiplier `2/(E*|q|)/N²` (half rows, `k_i ≤ N/2`).
+fn periodic_multiplier(n: usize, size: f64, e_star: f64) -> Vec<f64> {
+    let (nc, half) = (n / 2 + 1, n / 2 + 1);
+    let dq = std::f64::consts::TAU / size;
+    let norm = 1.0 / (n as f64 * n as f64);
+    let mut m = vec![0.0; nc * half];
+    for kj in 0..nc {
+        for ki in 0..half {
+            let q = dq * ((ki * ki + kj * kj) as f64).sqrt();
+            m[kj * half + ki] = if q > 0.0 {
+                2.0 / (e_star * q) * norm
+            } else {
+                0.0
+            };
+        }
+    }
+    m
+}
+
 /// The free operator's multiplier (half rows, `k_i ≤ N`), from the 2N × 2N
-/// circulant Love kernel, in the operator's own buffers: the kernel's top
-/// and bottom N rows are transformed separately by the pruned FFT and
-/// combined, `K̂ = F(top) + (−1)^{k_i} F(bottom)` (a shift by N rows).
-fn free_multiplier(
-    fft: &mut Fft2,
-    spec: &mut [Complex64],
-    real: &mut [f64],
-    size: f64,
-    e_star: f64,
-) -> Result<Vec<f64>> {
+/// circulant Love kernel: its top and bottom N rows are transformed
+/// separately by the pruned FFT and combined, `K̂ = F(top) + (−1)^{k_i}
+/// F(bottom)` (a shift by N rows).
+fn free_multiplier(fft: &mut Fft2, size: f64, e_star: f64) -> Result<Vec<f64>> {
     let nf = fft.n();
     let n = nf / 2;
     let (nc, half) = (fft.nc(), nf / 2 + 1);
@@ -283,19 +267,21 @@ fn free_multiplier(
     let norm = 1.0 / (nf as f64 * nf as f64);
     let mut m = vec![0.0; nc * half];
     for part in 0..2 {
-        for i in 0..n {
-            let si = signed(i + part * n, nf) as f64;
-            for j in 0..nf {
-                real[i * nf + j] = c * love_cell(si, signed(j, nf) as f64);
-            }
-        }
-        fft.forward(real, spec)?;
-        for kj in 0..nc {
-            for ki in 0..half {
-                let sign = if part == 1 && ki % 2 == 1 { -1.0 } else { 1.0 };
-                m[kj * half + ki] += sign * spec[kj * nf + ki].re * norm;
-            }
-        }
+        fft.convolve(
+            &mut |i, row| {
+                let si = signed(i + part * n, nf) as f64;
+                for (j, v) in row.iter_mut().enumerate() {
+                    *v = c * love_cell(si, signed(j, nf) as f64);
+                }
+            },
+            &mut |kj, col| {
+                for (ki, z) in col[..half].iter().enumerate() {
+                    let sign = if part == 1 && ki % 2 == 1 { -1.0 } else { 1.0 };
+                    m[kj * half + ki] += sign * z.re * norm;
+                }
+            },
+            None,
+        )?;
     }
     Ok(m)
 }

@@ -46,6 +46,7 @@
 //! Frérot, Anciaux, Rey & Molinari, J. Open Source Softw. 5, 2121 (2020)
 //! (Tamaas), for the error measure.
 
+use std::cell::Cell;
 use std::time::Instant;
 
 use super::kernel::Operator;
@@ -119,7 +120,7 @@ pub struct Solution {
 
 /// The Polonsky–Keer solver with its preallocated workspace.
 ///
-/// All buffers (5 N² values plus the operator's) are allocated by
+/// All buffers (4 N² values plus the operator's) are allocated by
 /// [`Solver::new`]; an iteration allocates nothing. The gap and displacement
 /// buffers move into the returned [`Solution`] and are allocated again by the
 /// next solve.
@@ -127,7 +128,6 @@ pub struct Solution {
 pub struct Solver {
     op: Operator,
     p: Vec<f64>,
-    u: Vec<f64>,
     g: Vec<f64>,
     t: Vec<f64>,
     r: Vec<f64>,
@@ -140,11 +140,24 @@ pub struct Solver {
 /// Independent partial sums per reduction (lets the compiler vectorise).
 const LANES: usize = 4;
 
-/// The pending part of a step: `p ← scale·p`, `u ← scale·(u − τ r)`.
+/// The pending part of a step, applied in the next gap pass:
+/// `p ← s_p·p`, and if `update`, `g ← s_g·(g + h − o − τ r) − h + o`
+/// (that is `u ← s_g·(u − τ𝒢t)`).
 #[derive(Debug, Clone, Copy)]
 struct Pending {
-    scale: f64,
+    p_scale: f64,
+    g_scale: f64,
     tau: f64,
+    update: bool,
+}
+
+impl Pending {
+    const NONE: Pending = Pending {
+        p_scale: 1.0,
+        g_scale: 1.0,
+        tau: 0.0,
+        update: false,
+    };
 }
 
 /// `Σ_c (g − ḡ)²` over the contact `p > 0`.
@@ -160,21 +173,52 @@ fn contact_norm(g: &[f64], p: &[f64], g_bar: f64) -> f64 {
     acc.iter().sum()
 }
 
-/// `[Σ_c r, Σ t, Σ (g − ḡ) t, Σ r t]` (t vanishes off the contact).
-fn step_sums(p: &[f64], r: &[f64], t: &[f64], g: &[f64], g_bar: f64) -> [f64; 4] {
-    let mut acc = [[0.0f64; LANES]; 4];
+/// One row of the search direction, `t ← m (g − ḡ + β t)` with `m = [p > 0]`,
+/// written to `t` and `out`; returns `[Σ t, Σ (g − ḡ) t]` over the row.
+fn direction_row(
+    p: &[f64],
+    g: &[f64],
+    t: &[Cell<f64>],
+    g_bar: f64,
+    beta: f64,
+    out: &mut [f64],
+) -> [f64; 2] {
+    let mut acc = [[0.0f64; LANES]; 2];
     let chunks = p
         .chunks(LANES)
-        .zip(r.chunks(LANES))
+        .zip(g.chunks(LANES))
         .zip(t.chunks(LANES))
-        .zip(g.chunks(LANES));
-    for (((pc, rc), tc), gc) in chunks {
+        .zip(out.chunks_mut(LANES));
+    for (((pc, gc), tc), oc) in chunks {
         for l in 0..pc.len() {
             let m = if pc[l] > 0.0 { 1.0 } else { 0.0 };
-            acc[0][l] += m * rc[l];
-            acc[1][l] += tc[l];
-            acc[2][l] += (gc[l] - g_bar) * tc[l];
-            acc[3][l] += rc[l] * tc[l];
+            let dg = gc[l] - g_bar;
+            let v = m * (dg + beta * tc[l].get());
+            tc[l].set(v);
+            oc[l] = v;
+            acc[0][l] += v;
+            acc[1][l] += dg * v;
+        }
+    }
+    acc.map(|a| a.iter().sum())
+}
+
+/// One row of the response `r = 𝒢t`, copied to `r`; returns
+/// `[Σ_c r, Σ r t]` over the row (t vanishes off the contact).
+fn response_row(p: &[f64], t: &[Cell<f64>], row: &[f64], r: &mut [f64]) -> [f64; 2] {
+    let mut acc = [[0.0f64; LANES]; 2];
+    let chunks = p
+        .chunks(LANES)
+        .zip(t.chunks(LANES))
+        .zip(row.chunks(LANES))
+        .zip(r.chunks_mut(LANES));
+    for (((pc, tc), xc), rc) in chunks {
+        for l in 0..pc.len() {
+            let m = if pc[l] > 0.0 { 1.0 } else { 0.0 };
+            let x = xc[l];
+            rc[l] = x;
+            acc[0][l] += m * x;
+            acc[1][l] += x * tc[l].get();
         }
     }
     acc.map(|a| a.iter().sum())
@@ -210,7 +254,6 @@ impl Solver {
         Solver {
             op,
             p: vec![0.0; n2],
-            u: vec![0.0; n2],
             g: vec![0.0; n2],
             t: vec![0.0; n2],
             r: vec![0.0; n2],
@@ -250,7 +293,7 @@ impl Solver {
         let n = self.op.n();
         let n2 = n * n;
         check::tolerance("tol", opts.tol)?;
-        for buf in [&mut self.u, &mut self.g, &mut self.t] {
+        for buf in [&mut self.g, &mut self.t, &mut self.r] {
             if buf.len() != n2 {
                 *buf = vec![0.0; n2];
             }
@@ -323,25 +366,19 @@ impl Solver {
             None => h_max - delta,
         };
 
-        self.op.apply(&self.p, &mut self.u)?;
+        self.refresh_gap(heights, offset, 1.0)?;
         let mut fresh = true;
         let mut g_old = 1.0;
         let mut conjugate = false;
-        // The step's rescaling s and the linear displacement update
-        // u ← s(u − τ𝒢t) are applied lazily, in the next gap pass.
-        let mut pending = Pending {
-            scale: 1.0,
-            tau: 0.0,
-        };
+        // The step's rescaling s and the linear gap update are applied
+        // lazily, in the next gap pass.
+        let mut pending = Pending::NONE;
         let mut g_ref = 0.0;
         self.t.fill(0.0);
         let mut k = 0usize;
         let (residual, stats) = loop {
             let st = self.gap_stats(heights, offset, pending, g_ref);
-            pending = Pending {
-                scale: 1.0,
-                tau: 0.0,
-            };
+            pending = Pending::NONE;
             let eps = match target {
                 Some(_) if st.sum_p > 0.0 => {
                     (st.sum_pg - st.g_min * st.sum_p) / (st.sum_p * sigma_h)
@@ -362,7 +399,7 @@ impl Solver {
                 if fresh {
                     break (eps, st);
                 }
-                self.op.apply(&self.p, &mut self.u)?;
+                self.refresh_gap(heights, offset, 1.0)?;
                 fresh = true;
                 continue;
             }
@@ -398,12 +435,7 @@ impl Solver {
             g_ref = g_bar;
             let beta = if conjugate { g_norm / g_old } else { 0.0 };
             g_old = g_norm;
-            for ((t, g), p) in self.t.iter_mut().zip(&self.g).zip(&self.p) {
-                let m = if *p > 0.0 { 1.0 } else { 0.0 };
-                *t = m * (*g - g_bar + beta * *t);
-            }
-            self.op.apply(&self.t, &mut self.r)?;
-            let [s_r, s_t, s_gt, s_rt] = step_sums(&self.p, &self.r, &self.t, &self.g, g_bar);
+            let [s_r, s_t, s_gt, s_rt] = self.direction_and_response(g_bar, beta)?;
             let denom = match target {
                 Some(_) if st.count > 0 => s_rt - s_r / st.count as f64 * s_t,
                 _ => s_rt,
@@ -451,15 +483,23 @@ impl Solver {
             let sparse = changed <= limit
                 && self
                     .op
-                    .add_sparse(&self.sparse_idx, &self.sparse_val, &mut self.u);
+                    .add_sparse(&self.sparse_idx, &self.sparse_val, &mut self.g);
             if changed == 0 || sparse {
                 // u = s (u − τ 𝒢t + 𝒢c), c the sparse correction (just added).
-                pending = Pending { scale, tau };
+                pending = Pending {
+                    p_scale: scale,
+                    g_scale: scale,
+                    tau,
+                    update: true,
+                };
                 fresh = false;
             } else {
                 // u = 𝒢(s p) = s 𝒢p.
-                self.op.apply(&self.p, &mut self.u)?;
-                pending = Pending { scale, tau: 0.0 };
+                self.refresh_gap(heights, offset, scale)?;
+                pending = Pending {
+                    p_scale: scale,
+                    ..Pending::NONE
+                };
                 fresh = true;
             }
             k += 1;
@@ -481,6 +521,8 @@ impl Solver {
             None => delta,
         };
         self.warm = true;
+        let mut displacement = std::mem::take(&mut self.r);
+        self.op.apply(&self.p, &mut displacement)?;
         // The pressure moves out too; the solver keeps a copy for warm
         // starts in the (no longer needed) search-direction buffer.
         let pressure = std::mem::take(&mut self.p);
@@ -489,7 +531,7 @@ impl Solver {
         Ok(Solution {
             pressure,
             gap,
-            displacement: std::mem::take(&mut self.u),
+            displacement,
             mean_pressure,
             approach,
             contact_fraction: stats.count as f64 / n2 as f64,
@@ -499,72 +541,105 @@ impl Solver {
         })
     }
 
-    /// Apply the pending step (`p ← s p`, `u ← s(u − τ r)`), then
-    /// `g = u − h + offset` in `self.g`, and the contact sums.
+    /// `g = s·𝒢p − h + o` from a fresh application of the operator.
+    fn refresh_gap(&mut self, heights: &[f64], offset: f64, scale: f64) -> Result<()> {
+        let n = self.op.n();
+        let Solver { op, p, g, .. } = self;
+        op.apply_rows(
+            &mut |i, row| row.copy_from_slice(&p[i * n..(i + 1) * n]),
+            &mut |i, row| {
+                let range = i * n..(i + 1) * n;
+                for ((g, u), h) in g[range.clone()].iter_mut().zip(row).zip(&heights[range]) {
+                    *g = scale * u - h + offset;
+                }
+            },
+        )
+    }
+
+    /// The search direction `t` (written row by row as the transform reads
+    /// it) and the response `r = 𝒢t`, with the step's sums
+    /// `[Σ_c r, Σ t, Σ (g − ḡ) t, Σ r t]`.
+    fn direction_and_response(&mut self, g_bar: f64, beta: f64) -> Result<[f64; 4]> {
+        let n = self.op.n();
+        let Solver { op, p, g, t, r, .. } = self;
+        // Both passes see t: `fill` writes row i before `emit` reads it.
+        let t = Cell::from_mut(&mut t[..]).as_slice_of_cells();
+        let (mut s_t, mut s_gt, mut s_r, mut s_rt) = (0.0, 0.0, 0.0, 0.0);
+        op.apply_rows(
+            &mut |i, row| {
+                let k = i * n..(i + 1) * n;
+                let [a, b] = direction_row(&p[k.clone()], &g[k.clone()], &t[k], g_bar, beta, row);
+                s_t += a;
+                s_gt += b;
+            },
+            &mut |i, row| {
+                let k = i * n..(i + 1) * n;
+                let [a, b] = response_row(&p[k.clone()], &t[k.clone()], row, &mut r[k]);
+                s_r += a;
+                s_rt += b;
+            },
+        )?;
+        Ok([s_r, s_t, s_gt, s_rt])
+    }
+
+    /// Apply the pending step, then gather the contact sums of the gap.
     fn gap_stats(&mut self, heights: &[f64], offset: f64, step: Pending, g_ref: f64) -> GapStats {
         // Branch-free, in LANES independent partial sums (vectorisable); the
         // contact set is an irregular pattern that defeats branch prediction.
         let mut acc = [[0.0f64; LANES]; 6]; // Σp, Σpg, Σp|g|, Σ_c δg, Σ_c δg², count
         let mut g_min = [f64::INFINITY; LANES];
         let mut g_off = [f64::INFINITY; LANES];
-        let n2 = self.g.len();
-        let (g, u, p, r) = (
-            &mut self.g[..n2],
-            &mut self.u[..n2],
+        let Pending {
+            p_scale,
+            g_scale,
+            tau,
+            update,
+        } = step;
+        let n2 = self.p.len();
+        let (p, g, r, h) = (
             &mut self.p[..n2],
+            &mut self.g[..n2],
             &self.r[..n2],
+            &heights[..n2],
         );
-        let h = &heights[..n2];
-        let (s, tau) = (step.scale, step.tau);
-        let mut i = 0;
-        while i + LANES <= n2 {
-            for l in 0..LANES {
-                let k = i + l;
-                let pk = s * p[k];
-                p[k] = pk;
-                let uk = s * (u[k] - tau * r[k]);
-                u[k] = uk;
-                let gi = uk - h[k] + offset;
-                g[k] = gi;
-                let c = pk > 0.0;
-                let m = if c { 1.0 } else { 0.0 };
-                let dg = m * (gi - g_ref);
-                acc[0][l] += pk;
-                acc[1][l] += pk * gi;
-                acc[2][l] += pk * gi.abs();
-                acc[3][l] += dg;
-                acc[4][l] += dg * dg;
-                acc[5][l] += m;
-                let (on, off) = if c {
-                    (gi, f64::INFINITY)
-                } else {
-                    (f64::INFINITY, gi)
-                };
-                g_min[l] = g_min[l].min(on);
-                g_off[l] = g_off[l].min(off);
-            }
-            i += LANES;
-        }
-        for k in i..n2 {
-            let pk = s * p[k];
+        let mut lane = |k: usize, l: usize| {
+            let pk = p_scale * p[k];
             p[k] = pk;
-            let uk = s * (u[k] - tau * r[k]);
-            u[k] = uk;
-            let gi = uk - h[k] + offset;
-            g[k] = gi;
-            acc[0][0] += pk;
-            acc[1][0] += pk * gi;
-            acc[2][0] += pk * gi.abs();
-            if pk > 0.0 {
-                acc[3][0] += gi - g_ref;
-                acc[4][0] += (gi - g_ref) * (gi - g_ref);
-                acc[5][0] += 1.0;
-                g_min[0] = g_min[0].min(gi);
+            let gi = if update {
+                let v = g_scale * (g[k] + h[k] - offset - tau * r[k]) - h[k] + offset;
+                g[k] = v;
+                v
             } else {
-                g_off[0] = g_off[0].min(gi);
+                g[k]
+            };
+            let c = pk > 0.0;
+            let m = if c { 1.0 } else { 0.0 };
+            let dg = m * (gi - g_ref);
+            acc[0][l] += pk;
+            acc[1][l] += pk * gi;
+            acc[2][l] += pk * gi.abs();
+            acc[3][l] += dg;
+            acc[4][l] += dg * dg;
+            acc[5][l] += m;
+            let (on, off) = if c {
+                (gi, f64::INFINITY)
+            } else {
+                (f64::INFINITY, gi)
+            };
+            g_min[l] = if on < g_min[l] { on } else { g_min[l] };
+            g_off[l] = if off < g_off[l] { off } else { g_off[l] };
+        };
+        let body = n2 - n2 % LANES;
+        for i in (0..body).step_by(LANES) {
+            for l in 0..LANES {
+                lane(i + l, l);
             }
+        }
+        for k in body..n2 {
+            lane(k, 0);
         }
         let sum = |a: &[f64; LANES]| a.iter().sum::<f64>();
+        let min = |a: &[f64; LANES]| a.iter().copied().fold(f64::INFINITY, f64::min);
         let mut st = GapStats {
             sum_p: sum(&acc[0]),
             sum_pg: sum(&acc[1]),
@@ -572,8 +647,8 @@ impl Solver {
             sum_dg: sum(&acc[3]),
             sum_dg2: sum(&acc[4]),
             count: sum(&acc[5]) as usize,
-            g_min: g_min.iter().copied().fold(f64::INFINITY, f64::min),
-            g_min_off: g_off.iter().copied().fold(f64::INFINITY, f64::min),
+            g_min: min(&g_min),
+            g_min_off: min(&g_off),
         };
         if st.count == 0 {
             st.g_min = 0.0;
@@ -593,13 +668,14 @@ impl Solver {
             )),
         };
         self.p.fill(pm);
-        self.op.apply(&self.p, &mut self.u)?;
-        let u0 = self.u.first().copied().unwrap_or(0.0);
+        let mut u = vec![0.0; n2];
+        self.op.apply(&self.p, &mut u)?;
+        let u0 = u.first().copied().unwrap_or(0.0);
         self.warm = true;
         Ok(Solution {
             pressure: self.p.clone(),
             gap: vec![0.0; n2],
-            displacement: self.u.clone(),
+            displacement: u,
             mean_pressure: pm,
             approach: u0,
             contact_fraction: 1.0,
