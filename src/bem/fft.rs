@@ -43,9 +43,10 @@ use crate::error::{Error, Result};
 const TILE: usize = 32;
 
 /// Bytes of the column block of [`Fft2::convolve`]: a quarter of the 1 MiB
-/// L2 cache of this machine's cores (the block and the rustfft scratch must
-/// stay in L2). Measured at 1024² periodic (`cargo bench --bench bem --
-/// apply`): see `column_block`.
+/// L2 cache of this machine's cores (the block and the rustfft scratch stay
+/// in L2). Median periodic 𝒢p (`cargo bench --bench bem -- apply`) with
+/// 2¹⁶ / 2¹⁸ / 2²⁰ bytes: 1.54 / 1.39 / 1.59 ms at 512², 9.57 / 9.70 /
+/// 11.2 ms at 1024² (13.6 ms with the full transposed spectrum).
 const BLOCK_BYTES: usize = 1 << 18;
 
 /// A consumer of the rows of an inverse transform: `(row index, row)`.

@@ -64,21 +64,23 @@ pub fn check_grid(n: usize) -> Result<()> {
     }
 }
 
-/// Bytes a solve on an `n × n` grid needs: the solver's five fields, the
-/// three fields of the returned [`Solution`], the surface and a spare, and
-/// the operator's buffers (4.25 N² values periodic, 9 N² free): a
-/// workspace of 10.25 N² (periodic) or 15 N² (free) values with the
-/// surface. Measured peak resident size of `persson bem rough` at 1024²,
-/// allocator retention and the binary included: 12.1 N² values periodic,
-/// 16.6 N² free.
+/// Bytes a solve on an `n × n` grid needs: the solver's four fields (which
+/// move into the returned [`Solution`]), the surface, two transient fields
+/// of its synthesis or reading, and the operator's buffers (2.25 N² values
+/// periodic: row spectra, multiplier and real-space kernel; 3 N² free: row
+/// spectra of the padded grid and multiplier): 9.25 N² values periodic,
+/// 10 N² free. Measured peak resident size of `persson bem rough` at 1024²
+/// (synthesised surface, tol 1e-10), allocator retention and the binary
+/// included: 9.0 N² values periodic, 9.7 N² free.
 pub fn required_bytes(n: usize, boundary: Boundary) -> u64 {
     let n2 = (n as u64) * (n as u64);
-    let fields = 10 * n2;
-    let fft = match boundary {
-        Boundary::Periodic => 5 * n2,
-        Boundary::Free => 10 * n2,
+    // In quarters of N² values.
+    let fields = 4 * 7;
+    let operator = match boundary {
+        Boundary::Periodic => 9,
+        Boundary::Free => 12,
     };
-    8 * (fields + fft)
+    8 * n2 * (fields + operator) / 4
 }
 
 /// Check that a solve on an `n × n` grid fits in the memory available now

@@ -453,28 +453,40 @@ impl Solver {
             self.sparse_val.clear();
             let mut changed = 0usize;
             let mut overlap = false;
-            let mut sum_p = 0.0;
+            let mut sums = [0.0f64; LANES];
             // Overlapping points enter with p = −τ g (degenerate step τ = 0:
             // with the overlap times the stiffness guess).
             let entry = if tau > 0.0 { -tau } else { -stiffness };
-            for (i, ((p, t), g)) in self.p.iter_mut().zip(&self.t).zip(&self.g).enumerate() {
+            let (sparse_idx, sparse_val) = (&mut self.sparse_idx, &mut self.sparse_val);
+            let (p, t, g) = (&mut self.p[..n2], &self.t[..n2], &self.g[..n2]);
+            let mut node = |k: usize, l: usize| {
                 // p − τt (t = 0 off the contact, where p = 0 too), clamped.
-                let linear = *p - tau * t;
+                let linear = p[k] - tau * t[k];
                 let clamped = if linear > 0.0 { linear } else { 0.0 };
-                let gs = *g - g_bar;
+                let gs = g[k] - g_bar;
                 let enters = (clamped == 0.0) & (gs < 0.0);
                 let v = if enters { entry * gs } else { clamped };
                 overlap |= enters;
-                *p = v;
-                sum_p += v;
+                p[k] = v;
+                sums[l] += v;
                 if v != linear {
                     changed += 1;
                     if changed <= limit {
-                        self.sparse_idx.push(i);
-                        self.sparse_val.push(v - linear);
+                        sparse_idx.push(k);
+                        sparse_val.push(v - linear);
                     }
                 }
+            };
+            let body = n2 - n2 % LANES;
+            for i in (0..body).step_by(LANES) {
+                for l in 0..LANES {
+                    node(i + l, l);
+                }
             }
+            for k in body..n2 {
+                node(k, 0);
+            }
+            let sum_p: f64 = sums.iter().sum();
             conjugate = !overlap;
             let scale = match target {
                 Some(pm) if sum_p > 0.0 => pm * n2 as f64 / sum_p,
