@@ -7,6 +7,8 @@
 //! p₀ = 3F/(2π a²) = 2E* a/(π R) peak pressure
 //! p(r) = p₀ √(1 − r²/a²),  r < a
 //! δ = a²/R                      approach
+//! u(r) = π p₀ (2a² − r²)/(4aE*),  r ≤ a         surface displacement
+//! u(r) = p₀/(2aE*) [(2a² − r²) asin(a/r) + a √(r² − a²)],  r > a
 //! ```
 //! The rigid surface is the paraboloid `h(r) = −r²/(2R)` (Hertz's
 //! approximation of the sphere), centred on the node `(L/2, L/2)`.
@@ -41,6 +43,50 @@ pub fn pressure(r: f64, a: f64, p0: f64) -> f64 {
     } else {
         0.0
     }
+}
+
+/// Normal surface displacement of the Hertz contact at distance `r` from the
+/// centre (unit of `a`), zero at infinity.
+///
+/// # Formula
+/// ```text
+/// u(r) = π p₀ (2a² − r²) / (4aE*)                          r ≤ a
+/// u(r) = p₀/(2aE*) [(2a² − r²) asin(a/r) + a √(r² − a²)]   r > a
+///      = p₀ r²/(4aE*) (sin x − x cos x),   x = 2 asin(a/r)
+/// sin x − x cos x = Σ_{k≥1} (−1)^{k+1} 2k x^{2k+1}/(2k+1)!   (used for x < 1)
+/// ```
+/// The second form of the outer branch avoids the cancellation of the first
+/// (both terms ~ a r while their sum ~ a³/r); far away u → F/(π E* r).
+/// Inside the contact u = δ − r²/(2R) with δ = a²/R when p₀ = 2E*a/(πR).
+///
+/// # References
+/// K. L. Johnson, *Contact Mechanics* (CUP 1985), eqs. 3.41a and 3.42a.
+pub fn displacement(r: f64, a: f64, p0: f64, e_star: f64) -> f64 {
+    let r = r.abs();
+    if r <= a {
+        return std::f64::consts::PI * p0 * (2.0 * a * a - r * r) / (4.0 * a * e_star);
+    }
+    let x = 2.0 * (a / r).asin();
+    p0 * r * r / (4.0 * a * e_star) * sin_minus_x_cos(x)
+}
+
+/// `sin x − x cos x` for `x ∈ [0, π]`, by its series below 1 (no cancellation).
+fn sin_minus_x_cos(x: f64) -> f64 {
+    if x >= 1.0 {
+        return x.sin() - x * x.cos();
+    }
+    // Term k: (−1)^{k+1} 2k x^{2k+1}/(2k+1)!; ratio of successive powers
+    // x²/((2k+2)(2k+3)) ≤ 1/20: 14 terms reach 1e-17 relative.
+    let x2 = x * x;
+    let mut power = x * x2 / 6.0; // x^{2k+1}/(2k+1)! at k = 1
+    let mut sum = 0.0;
+    for k in 1..=14 {
+        let kf = k as f64;
+        let sign = if k % 2 == 1 { 1.0 } else { -1.0 };
+        sum += sign * 2.0 * kf * power;
+        power *= x2 / ((2.0 * kf + 2.0) * (2.0 * kf + 3.0));
+    }
+    sum
 }
 
 /// A Hertz validation problem on an `N × N` grid.
@@ -136,6 +182,15 @@ impl HertzCase {
             .collect()
     }
 
+    /// Exact Hertz surface displacement at the nodes ([`displacement`]).
+    pub fn exact_displacement(&self) -> Vec<f64> {
+        let p0 = self.peak_pressure();
+        self.radii()
+            .iter()
+            .map(|&r| displacement(r, self.contact_radius, p0, self.e_star))
+            .collect()
+    }
+
     fn check(&self) -> Result<()> {
         check::positive("size", self.size)?;
         check::positive("radius", self.radius)?;
@@ -154,6 +209,15 @@ pub struct HertzReport {
     pub boundary: Boundary,
     /// η: energy norm of the pressure error relative to that of p_ex.
     pub energy_error: f64,
+    /// η_L: lecture 000's measure with the exact displacement u_ex,
+    /// `sqrt(|Σ(u − u_ex)(p − p_ex)| / Σ u_ex p_ex)` (free boundary only;
+    /// `None` for the periodic one, whose displacement is defined up to a
+    /// constant that this measure depends on). Not a norm: the sum changes
+    /// sign with N, and on the contact `u − u_ex` is nearly the constant
+    /// `δ − δ_ex`, so it mostly measures how Σ(p − p_ex) cancels. Measured at
+    /// the issue's defaults, 64² to 1024²: 6–14× below η
+    /// (examples/hertz_eta_study.rs).
+    pub energy_error_lecture: Option<f64>,
     /// Contact radius a from the fit of p² = p₀²(1 − r²/a²).
     pub contact_radius: f64,
     /// |a_fit − a| / a.
@@ -180,7 +244,12 @@ pub struct HertzReport {
 /// fit: p_i² = c₀ + c₁ r_i² by least squares over p_i > 0;  p₀ = √c₀,  a = √(−c₀/c₁)
 /// ```
 /// 𝒢 is the discrete compliance operator of the solve (periodic or free),
-/// p_ex the Hertz pressure sampled at the nodes.
+/// p_ex the Hertz pressure sampled at the nodes. With the free operator the
+/// displacement u = 𝒢p is absolute, and the lecture's own definition
+/// ```text
+/// η_L² = |Σ (u − u_ex)(p − p_ex)| / Σ u_ex p_ex      (lecture 000, after Table 1)
+/// ```
+/// with u_ex the exact [`displacement`] at the nodes is reported as well.
 ///
 /// # Errors
 /// Invalid case (grid < 8, non-positive sizes, a ≥ L/2), solver errors.
@@ -214,10 +283,20 @@ pub fn validate_observed(
     let num = op.energy_product(&err, &err, &mut work)?;
     let den = op.energy_product(&exact, &exact, &mut work)?;
     let (a, p0) = fit(&case.radii(), &sol.pressure)?;
+    let lecture = match case.boundary {
+        Boundary::Free => Some(lecture_error(
+            &sol.pressure,
+            &sol.displacement,
+            &exact,
+            &case.exact_displacement(),
+        )),
+        Boundary::Periodic => None,
+    };
     Ok(HertzReport {
         grid: case.grid,
         boundary: case.boundary,
         energy_error: (num.max(0.0) / den).sqrt(),
+        energy_error_lecture: lecture,
         contact_radius: a,
         contact_radius_error: (a - case.contact_radius).abs() / case.contact_radius,
         peak_pressure: p0,
@@ -227,6 +306,16 @@ pub fn validate_observed(
         residual: sol.residual,
         seconds: sol.seconds,
     })
+}
+
+/// `sqrt(|Σ(u − u_ex)(p − p_ex)| / Σ u_ex p_ex)` (lecture 000's η).
+fn lecture_error(p: &[f64], u: &[f64], p_ex: &[f64], u_ex: &[f64]) -> f64 {
+    let (mut num, mut den) = (0.0, 0.0);
+    for ((p, u), (pe, ue)) in p.iter().zip(u).zip(p_ex.iter().zip(u_ex)) {
+        num += (u - ue) * (p - pe);
+        den += ue * pe;
+    }
+    (num.abs() / den).sqrt()
 }
 
 /// Least-squares fit of `p² = c₀ + c₁ r²` over the nodes with p > 0;
@@ -269,6 +358,38 @@ mod tests {
         let p0 = peak_pressure(0.1, 1.0, 1.0);
         assert!((p0 - 3.0 * f / (2.0 * std::f64::consts::PI * 0.01)).abs() < 1e-16);
         assert_eq!(pressure(0.2, 0.1, p0), 0.0);
+    }
+
+    /// Rounding of the closed forms (a few ulps of u ~ 1e-2).
+    const DISPLACEMENT_REL_TOL: f64 = 1e-14;
+
+    #[test]
+    fn displacement_matches_high_precision_values() {
+        // mpmath (40 digits) of Johnson's 3.41a/3.42a as written, a = 0.1,
+        // p₀ = 2a/π (R = E* = 1): δ = a²/R = 0.01 at the centre, δ/2 at r = a.
+        let p0 = peak_pressure(0.1, 1.0, 1.0);
+        let cases = [
+            (0.0, 0.01),
+            (0.05, 0.00875),
+            (0.1, 0.005),
+            (0.1000001, 0.004_999_990_011_999_217),
+            (0.15, 0.002_978_113_899_088_96),
+            (0.3, 0.001_431_021_803_713_569_6),
+            (0.7, 6.075_500_956_664_112e-4),
+            (10.0, 4.244_174_258_466_282e-5),
+            (1000.0, 4.244_131_820_028_007e-7),
+        ];
+        for (r, want) in cases {
+            let got = displacement(r, 0.1, p0, 1.0);
+            assert!(
+                (got / want - 1.0).abs() < DISPLACEMENT_REL_TOL,
+                "r = {r}: {got:e} vs {want:e}"
+            );
+        }
+        // The series branch (x < 1) against the closed form at the switch.
+        let x: f64 = 1.0 - 1e-9;
+        let closed = x.sin() - x * x.cos();
+        assert!((sin_minus_x_cos(x) / closed - 1.0).abs() < 1e-14);
     }
 
     #[test]
