@@ -2,8 +2,13 @@
 //! ‖p_ex‖_𝒢 next to the lecture's η_L² = Σ(u − u_ex)(p − p_ex) / Σ u_ex p_ex
 //! (u_ex the exact Hertz displacement), for variants of the same problem.
 //!
-//! `cargo run --release --example hertz_eta_study -- [N ...] [--tol T] [--variants a,b,...]`
+//! `cargo run --release --example hertz_eta_study -- [N ...] [--tol T] [--variants a,b,...] [--scan M]`
 //! (default grids 64 128 256 512 1024, tol 1e-12, all variants).
+//! `--scan M` moves the sphere centre over (s_x, s_y)Δ, s ∈ {0, 1/(2M), …, ½}
+//! for the first variant and prints min / mean / max η; `--variants lib`
+//! prints the library's `HertzReport` (η, η_L, η_u) with timings; the
+//! environment variable `ETA_PROJ` adds η_u computed independently (two CG
+//! solves to 1e-12) to each row.
 //!
 //! Variants (free boundary, L = R = E* = 1, a = 0.1):
 //! - `base`: sphere on the node (L/2, L/2), load control (the library's `validate`);
@@ -12,7 +17,9 @@
 //! - `pen-corner`: both;
 //! - `corr`: Love operator with the O(Δ²) midpoint correction
 //!   𝒢' = 𝒢 (I − Δ²∇ₕ²/24) (5-point Laplacian), own Polonsky–Keer loop;
-//! - `corr-corner`: corrected operator, sphere on the corner.
+//! - `corr-corner`: corrected operator, sphere on the corner;
+//! - `anti`, `anti-corner`: the opposite correction 𝒢 (I + Δ²∇ₕ²/24), to
+//!   first order the Galerkin (cell-averaged displacement) operator.
 
 use persson::bem::{hertz, Boundary, Control, Operator, Options, Solver};
 
@@ -345,6 +352,44 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     }
     if grids.is_empty() {
         grids = vec![64, 128, 256, 512, 1024];
+    }
+    if variants.len() == 1 && variants[0] == "lib" {
+        // The library's report: η, η_L and η_u, and the cost of η_u.
+        println!("grid  eta        eta_L      eta_u      lecture    solve s  total s  eta_u s");
+        for &n in &grids {
+            let opts = Options {
+                tol,
+                ..Options::default()
+            };
+            let t = std::time::Instant::now();
+            let r = hertz::validate(&hertz::HertzCase::new(n, Boundary::Free), &opts)?;
+            let total = t.elapsed().as_secs_f64();
+            // The η_u conjugate gradients alone.
+            let case = hertz::HertzCase::new(n, Boundary::Free);
+            let mut op = Operator::new(Boundary::Free, n, 1.0, 1.0)?;
+            let pe = case.exact_pressure();
+            let t = std::time::Instant::now();
+            hertz::displacement_energy_error(
+                &mut op,
+                &pe,
+                &case.exact_displacement(),
+                &pe,
+                opts.max_iter,
+            )?;
+            let cg = t.elapsed().as_secs_f64();
+            let lecture = LECTURE
+                .iter()
+                .find(|(g, _)| *g == n)
+                .map_or("-".to_string(), |(_, v)| format!("{v:.2e}"));
+            println!(
+                "{n:>5} {:.3e}  {:.3e}  {:.3e}  {lecture:<9}  {:.2}     {total:.2}    {cg:.2}",
+                r.energy_error,
+                r.energy_error_lecture.unwrap_or(f64::NAN),
+                r.displacement_energy_error.unwrap_or(f64::NAN),
+                r.seconds
+            );
+        }
+        return Ok(());
     }
     if scan > 0 {
         return scan_shifts(&grids, tol, scan, &variants[0]);

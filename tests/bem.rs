@@ -105,6 +105,98 @@ fn hertz_lecture_measure_is_reported_for_the_free_boundary_only() {
     assert_eq!(r.energy_error_lecture, None);
 }
 
+/// Plain conjugate gradients for 𝒢x = b from x = 0 (test reference).
+fn cg_reference(op: &mut Operator, b: &[f64], tol: f64) -> Vec<f64> {
+    let dot = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(x, y)| x * y).sum::<f64>();
+    let (mut x, mut r, mut d) = (vec![0.0; b.len()], b.to_vec(), b.to_vec());
+    let mut q = vec![0.0; b.len()];
+    let (b2, mut rr) = (dot(b, b), dot(b, b));
+    while rr > tol * tol * b2 {
+        op.apply(&d, &mut q).unwrap();
+        let alpha = rr / dot(&d, &q);
+        for i in 0..b.len() {
+            x[i] += alpha * d[i];
+            r[i] -= alpha * q[i];
+        }
+        let rr_new = dot(&r, &r);
+        for i in 0..b.len() {
+            d[i] = r[i] + rr_new / rr * d[i];
+        }
+        rr = rr_new;
+    }
+    x
+}
+
+/// η_u from the library (one CG solve to 1e-10, then ⟨p − P, 𝒢(p − P)⟩)
+/// against ⟨d, 𝒢⁻¹d⟩/⟨u_ex, 𝒢⁻¹u_ex⟩ with two solves to 1e-13: measured
+/// agreement 4e-10 relative at 128² (1.7e-12 for the 16² known pair).
+const DISPLACEMENT_ERROR_REL_TOL: f64 = 1e-6;
+
+#[test]
+fn displacement_energy_error_of_a_known_pair() {
+    // u_ex = 𝒢q and p = q': η_u = ‖q' − q‖_𝒢 / ‖q‖_𝒢 exactly.
+    let n = 16;
+    let mut op = Operator::new(Boundary::Free, n, 1.0, 1.0).unwrap();
+    let q: Vec<f64> = (0..n * n)
+        .map(|k| 1.0 + ((k * 7 % 11) as f64) * 0.1)
+        .collect();
+    let q2: Vec<f64> = q
+        .iter()
+        .enumerate()
+        .map(|(k, v)| v + 0.01 * (k % 3) as f64)
+        .collect();
+    let mut u_ex = vec![0.0; n * n];
+    op.apply(&q, &mut u_ex).unwrap();
+    let diff: Vec<f64> = q2.iter().zip(&q).map(|(a, b)| a - b).collect();
+    let mut w = vec![0.0; n * n];
+    let want = (op.energy_product(&diff, &diff, &mut w).unwrap()
+        / op.energy_product(&q, &q, &mut w).unwrap())
+    .sqrt();
+    let got = hertz::displacement_energy_error(&mut op, &q2, &u_ex, &q2, 1000).unwrap();
+    assert!(
+        (got / want - 1.0).abs() < DISPLACEMENT_ERROR_REL_TOL,
+        "{got:e} vs {want:e}"
+    );
+    // Wrong lengths are an error, not a panic.
+    assert!(hertz::displacement_energy_error(&mut op, &q2[1..], &u_ex, &q2, 1000).is_err());
+}
+
+#[test]
+fn hertz_displacement_energy_error_is_the_dual_norm() {
+    let n = 128;
+    let case = hertz::HertzCase::new(n, Boundary::Free);
+    let r = hertz::validate(&case, &tight()).unwrap();
+    let got = r.displacement_energy_error.unwrap();
+    let mut s = Solver::new(Operator::new(Boundary::Free, n, 1.0, 1.0).unwrap());
+    let sol = s
+        .solve(
+            &case.heights(),
+            Control::MeanPressure(case.mean_pressure()),
+            &tight(),
+        )
+        .unwrap();
+    let u_ex = case.exact_displacement();
+    let d: Vec<f64> = sol
+        .displacement
+        .iter()
+        .zip(&u_ex)
+        .map(|(a, b)| a - b)
+        .collect();
+    let op = s.operator();
+    let dot = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(x, y)| x * y).sum::<f64>();
+    let num = dot(&d, &cg_reference(op, &d, 1e-13));
+    let den = dot(&u_ex, &cg_reference(op, &u_ex, 1e-13));
+    let want = (num / den).sqrt();
+    assert!(
+        (got / want - 1.0).abs() < DISPLACEMENT_ERROR_REL_TOL,
+        "{got:e} vs {want:e}"
+    );
+    // Below lecture 000's Table 1 (4.08e-3 at 128²): measured 1.349e-3.
+    assert!(got < 4.08e-3);
+    let r = hertz::validate(&hertz::HertzCase::new(64, Boundary::Periodic), &tight()).unwrap();
+    assert_eq!(r.displacement_energy_error, None);
+}
+
 #[test]
 fn hertz_periodic_equals_reference_discrete_solution() {
     for (n, reference) in PERIODIC_REFERENCE {
