@@ -172,7 +172,7 @@ fn hertz_report(a: &HertzArgs) -> anyhow::Result<Report> {
     let spinner = Progress::spinner(&format!("Hertz {}² {:?}", a.grid, boundary));
     let r = hertz::validate_observed(&case, &opts, &mut |it| spinner.tick(it))?;
     spinner.finish();
-    let scalars = vec![
+    let mut scalars = vec![
         ("grid".into(), a.grid as f64),
         ("energy_error".into(), r.energy_error),
         ("contact_radius".into(), r.contact_radius),
@@ -184,6 +184,10 @@ fn hertz_report(a: &HertzArgs) -> anyhow::Result<Report> {
         ("residual".into(), r.residual),
         ("seconds".into(), r.seconds),
     ];
+    if let (Some(l), Some(u)) = (r.energy_error_lecture, r.displacement_energy_error) {
+        scalars.insert(2, ("energy_error_lecture".into(), l));
+        scalars.insert(3, ("displacement_energy_error".into(), u));
+    }
     Ok(Report {
         title: format!(
             "Hertz validation, {0}x{0} grid, {1} boundary, a = {2:e}, R = {3:e}, E* = {4:e}, tol = {5:e}",
@@ -208,6 +212,8 @@ fn hertz_report(a: &HertzArgs) -> anyhow::Result<Report> {
             "hertz_peak_pressure": case.peak_pressure(),
             "mean_pressure": case.mean_pressure(),
             "energy_error": r.energy_error,
+            "energy_error_lecture": r.energy_error_lecture,
+            "displacement_energy_error": r.displacement_energy_error,
             "contact_radius": r.contact_radius,
             "contact_radius_error": r.contact_radius_error,
             "peak_pressure": r.peak_pressure,
