@@ -1,5 +1,5 @@
 //! Property tests of the FFT-BEM solver (issue 8, item 3): random self-affine
-//! spectra, seeds, grids (16², 32², periodic and free) and pressures
+//! spectra, seeds, grids (15², 16², 24², 32², periodic and free) and pressures
 //! spanning decades. 128 cases of three solves each: ~0.5 s in release.
 #![cfg(feature = "bem")]
 
@@ -39,7 +39,7 @@ struct Case {
 
 fn case() -> impl Strategy<Value = Case> {
     (
-        prop_oneof![Just(16usize), Just(32usize)],
+        prop_oneof![Just(15usize), Just(16usize), Just(24usize), Just(32usize)],
         prop_oneof![Just(Boundary::Periodic), Just(Boundary::Free)],
         0.05f64..0.95,
         1.0f64..3.0,

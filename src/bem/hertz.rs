@@ -218,11 +218,6 @@ pub struct HertzReport {
     /// the issue's defaults, 64² to 1024²: 6–14× below η
     /// (examples/hertz_eta_study.rs).
     pub energy_error_lecture: Option<f64>,
-    /// η_u: energy norm of the displacement error relative to that of u_ex,
-    /// `sqrt(⟨u − u_ex, 𝒢⁻¹(u − u_ex)⟩ / ⟨u_ex, 𝒢⁻¹u_ex⟩)` with u_ex the exact
-    /// displacement at the nodes (free boundary only, see
-    /// [`displacement_energy_error`]; `None` for the periodic one).
-    pub displacement_energy_error: Option<f64>,
     /// Contact radius a from the fit of p² = p₀²(1 − r²/a²).
     pub contact_radius: f64,
     /// |a_fit − a| / a.
@@ -254,10 +249,7 @@ pub struct HertzReport {
 /// ```text
 /// η_L² = |Σ (u − u_ex)(p − p_ex)| / Σ u_ex p_ex      (lecture 000, after Table 1)
 /// ```
-/// with u_ex the exact [`displacement`] at the nodes is reported as well,
-/// and so is the energy norm of the displacement error η_u
-/// ([`displacement_energy_error`]), which takes one conjugate-gradient solve
-/// with 𝒢 (measured: 0.7–0.9× the contact solve's time at 256²–1024²).
+/// with u_ex the exact [`displacement`] at the nodes is reported as well.
 ///
 /// # Errors
 /// Invalid case (grid < 8, non-positive sizes, a ≥ L/2), solver errors.
@@ -291,22 +283,20 @@ pub fn validate_observed(
     let num = op.energy_product(&err, &err, &mut work)?;
     let den = op.energy_product(&exact, &exact, &mut work)?;
     let (a, p0) = fit(&case.radii(), &sol.pressure)?;
-    drop(err);
-    let (lecture, displacement_error) = match case.boundary {
-        Boundary::Free => {
-            let u_ex = case.exact_displacement();
-            let lecture = lecture_error(&sol.pressure, &sol.displacement, &exact, &u_ex);
-            let eta_u = displacement_energy_error(op, &sol.pressure, &u_ex, &exact, opts.max_iter)?;
-            (Some(lecture), Some(eta_u))
-        }
-        Boundary::Periodic => (None, None),
+    let lecture = match case.boundary {
+        Boundary::Free => Some(lecture_error(
+            &sol.pressure,
+            &sol.displacement,
+            &exact,
+            &case.exact_displacement(),
+        )),
+        Boundary::Periodic => None,
     };
     Ok(HertzReport {
         grid: case.grid,
         boundary: case.boundary,
         energy_error: (num.max(0.0) / den).sqrt(),
         energy_error_lecture: lecture,
-        displacement_energy_error: displacement_error,
         contact_radius: a,
         contact_radius_error: (a - case.contact_radius).abs() / case.contact_radius,
         peak_pressure: p0,
@@ -316,95 +306,6 @@ pub fn validate_observed(
         residual: sol.residual,
         seconds: sol.seconds,
     })
-}
-
-/// Relative residual ‖𝒢P − u_ex‖/‖u_ex‖ at which the conjugate gradients
-/// for P = 𝒢⁻¹u_ex stop. η_u moves by at most ‖P̃ − P‖_𝒢/‖P‖_𝒢 (triangle
-/// inequality); measured 4e-10 relative to η_u at 128² against two solves
-/// to 1e-13 (tests/bem.rs), and equal to 4 digits at 64²–1024² against
-/// solves to 1e-12 (examples/hertz_eta_study.rs).
-pub const DISPLACEMENT_CG_TOL: f64 = 1e-10;
-
-/// Energy norm of the displacement error `u − u_ex`, u = 𝒢p, relative to
-/// that of `u_ex`.
-///
-/// # Formula
-/// ```text
-/// P = 𝒢⁻¹ u_ex                              (conjugate gradients from p_guess)
-/// η_u² = ⟨u − u_ex, 𝒢⁻¹(u − u_ex)⟩ / ⟨u_ex, 𝒢⁻¹u_ex⟩
-///      = ⟨p − P, 𝒢(p − P)⟩ / ⟨P, 𝒢P⟩
-/// ```
-/// The dual of the issue's η: the exact solution enters through its
-/// displacement sampled at the nodes, and P is the nodal pressure that
-/// reproduces it at every node (P differs from the sampled p_ex near the
-/// contact edge, and is slightly negative outside it). With (p_ex, u_ex)
-/// replaced by the discrete pair (P, u_ex), lecture 000's
-/// `Σ(u − u_ex)(p − p_ex) / Σ u_ex p_ex` is this (positive) norm.
-/// The solve stops at the relative residual [`DISPLACEMENT_CG_TOL`].
-///
-/// # Errors
-/// Slices of a length other than N²; [`Error::NotConverged`] after
-/// `max_iter` iterations or if 𝒢 is not positive definite along a search
-/// direction.
-pub fn displacement_energy_error(
-    op: &mut Operator,
-    p: &[f64],
-    u_ex: &[f64],
-    p_guess: &[f64],
-    max_iter: usize,
-) -> Result<f64> {
-    let n2 = op.n() * op.n();
-    if p.len() != n2 || u_ex.len() != n2 || p_guess.len() != n2 {
-        return Err(Error::Inconsistent {
-            name: "displacement error".into(),
-            requirement: format!(
-                "p, u_ex and p_guess of length N² = {n2}, got {}, {} and {}",
-                p.len(),
-                u_ex.len(),
-                p_guess.len()
-            ),
-        });
-    }
-    let dot = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(x, y)| x * y).sum::<f64>();
-    let mut x = p_guess.to_vec();
-    let mut q = vec![0.0; n2];
-    op.apply(&x, &mut q)?;
-    let mut r: Vec<f64> = u_ex.iter().zip(&q).map(|(b, gx)| b - gx).collect();
-    let mut d = r.clone();
-    let goal = DISPLACEMENT_CG_TOL * DISPLACEMENT_CG_TOL * dot(u_ex, u_ex);
-    let mut rr = dot(&r, &r);
-    let mut k = 0;
-    while rr > goal {
-        op.apply(&d, &mut q)?;
-        let dq = dot(&d, &q);
-        if k >= max_iter || !(dq > 0.0 && dq.is_finite()) {
-            return Err(Error::NotConverged {
-                what: "conjugate gradients for 𝒢⁻¹u_ex".into(),
-                iterations: k,
-                residual: (rr / dot(u_ex, u_ex)).sqrt(),
-                tolerance: DISPLACEMENT_CG_TOL,
-            });
-        }
-        let alpha = rr / dq;
-        for ((xi, ri), (di, qi)) in x.iter_mut().zip(r.iter_mut()).zip(d.iter().zip(&q)) {
-            *xi += alpha * di;
-            *ri -= alpha * qi;
-        }
-        let rr_new = dot(&r, &r);
-        let beta = rr_new / rr;
-        rr = rr_new;
-        for (di, ri) in d.iter_mut().zip(&r) {
-            *di = ri + beta * *di;
-        }
-        k += 1;
-    }
-    // e = p − P in r's buffer; both products through 𝒢: a quadratic form.
-    for ((e, pi), xi) in r.iter_mut().zip(p).zip(&x) {
-        *e = pi - xi;
-    }
-    let num = op.energy_product(&r, &r, &mut q)?;
-    let den = op.energy_product(&x, &x, &mut q)?;
-    Ok((num.max(0.0) / den).sqrt())
 }
 
 /// `sqrt(|Σ(u − u_ex)(p − p_ex)| / Σ u_ex p_ex)` (lecture 000's η).

@@ -225,11 +225,13 @@ fn response_row(p: &[f64], t: &[Cell<f64>], row: &[f64], r: &mut [f64]) -> [f64;
 }
 
 /// Most nodes whose step is corrected by direct summation rather than by
-/// recomputing `𝒢p` with two FFTs: log₂(N²)/2 (9 at 512²). One node costs
-/// N² multiply-adds against the FFT's ~N² log₂(N²); limits of 1×, ½× and 2×
-/// log₂(N²) measured 1.15 s, 1.1–1.2 s and 1.6–1.8 s on the 512² rough bench.
+/// recomputing `𝒢p` with two FFTs: log₂(N²) (18 at 512², 20 at 1024²). One
+/// node costs N² multiply-adds against the FFT's ~N² log₂(N²). Best of 2–3
+/// rough solves (`persson bem rough`, H = 0.8, tol 1e-10) with ½×, 1× and
+/// 1.5× log₂(N²): 0.876 / 0.850 / 0.868 s at 512², 7.82 / 7.26 / 7.33 s at
+/// 1024².
 fn sparse_limit(n2: usize) -> usize {
-    (usize::BITS - n2.leading_zeros()) as usize / 2
+    n2.max(2).ilog2() as usize
 }
 
 /// Sums over the contact set gathered in one pass.

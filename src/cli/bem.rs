@@ -184,9 +184,8 @@ fn hertz_report(a: &HertzArgs) -> anyhow::Result<Report> {
         ("residual".into(), r.residual),
         ("seconds".into(), r.seconds),
     ];
-    if let (Some(l), Some(u)) = (r.energy_error_lecture, r.displacement_energy_error) {
+    if let Some(l) = r.energy_error_lecture {
         scalars.insert(2, ("energy_error_lecture".into(), l));
-        scalars.insert(3, ("displacement_energy_error".into(), u));
     }
     Ok(Report {
         title: format!(
@@ -213,7 +212,6 @@ fn hertz_report(a: &HertzArgs) -> anyhow::Result<Report> {
             "mean_pressure": case.mean_pressure(),
             "energy_error": r.energy_error,
             "energy_error_lecture": r.energy_error_lecture,
-            "displacement_energy_error": r.displacement_energy_error,
             "contact_radius": r.contact_radius,
             "contact_radius_error": r.contact_radius_error,
             "peak_pressure": r.peak_pressure,
