@@ -140,12 +140,12 @@ pub struct Solver {
 /// Independent partial sums per reduction (lets the compiler vectorise).
 const LANES: usize = 4;
 
-/// The pending part of a step, applied in the next gap pass:
-/// `p ← s_p·p`, and if `update`, `g ← s_g·(g + h − o − τ r) − h + o`
-/// (that is `u ← s_g·(u − τ𝒢t)`).
+/// The pending part of a step's gap update, applied in the next gap pass
+/// if `update`: `g ← s·(g + h − o − τ r) − h + o` (that is `u ← s·(u − τ𝒢t)`).
+/// (The step's rescaling of p is deferred to the next step, which writes p
+/// anyway: p is held as `p_scale · p` in memory.)
 #[derive(Debug, Clone, Copy)]
 struct Pending {
-    p_scale: f64,
     g_scale: f64,
     tau: f64,
     update: bool,
@@ -153,7 +153,6 @@ struct Pending {
 
 impl Pending {
     const NONE: Pending = Pending {
-        p_scale: 1.0,
         g_scale: 1.0,
         tau: 0.0,
         update: false,
@@ -375,11 +374,14 @@ impl Solver {
         // The step's rescaling s and the linear gap update are applied
         // lazily, in the next gap pass.
         let mut pending = Pending::NONE;
+        // The pressure is `p_scale · p` (the step's rescaling is applied by
+        // the next step, which rewrites p anyway).
+        let mut p_scale = 1.0;
         let mut g_ref = 0.0;
         self.t.fill(0.0);
         let mut k = 0usize;
         let (residual, stats) = loop {
-            let st = self.gap_stats(heights, offset, pending, g_ref);
+            let st = self.gap_stats(heights, offset, pending, g_ref, p_scale);
             pending = Pending::NONE;
             let eps = match target {
                 Some(_) if st.sum_p > 0.0 => {
@@ -401,7 +403,7 @@ impl Solver {
                 if fresh {
                     break (eps, st);
                 }
-                self.refresh_gap(heights, offset, 1.0)?;
+                self.refresh_gap(heights, offset, p_scale)?;
                 fresh = true;
                 continue;
             }
@@ -463,7 +465,7 @@ impl Solver {
             let (p, t, g) = (&mut self.p[..n2], &self.t[..n2], &self.g[..n2]);
             let mut node = |k: usize, l: usize| {
                 // p − τt (t = 0 off the contact, where p = 0 too), clamped.
-                let linear = p[k] - tau * t[k];
+                let linear = p_scale * p[k] - tau * t[k];
                 let clamped = if linear > 0.0 { linear } else { 0.0 };
                 let gs = g[k] - g_bar;
                 let enters = (clamped == 0.0) & (gs < 0.0);
@@ -501,7 +503,6 @@ impl Solver {
             if changed == 0 || sparse {
                 // u = s (u − τ 𝒢t + 𝒢c), c the sparse correction (just added).
                 pending = Pending {
-                    p_scale: scale,
                     g_scale: scale,
                     tau,
                     update: true,
@@ -510,14 +511,12 @@ impl Solver {
             } else {
                 // u = 𝒢(s p) = s 𝒢p.
                 self.refresh_gap(heights, offset, scale)?;
-                pending = Pending {
-                    p_scale: scale,
-                    ..Pending::NONE
-                };
                 fresh = true;
             }
+            p_scale = scale;
             k += 1;
         };
+        self.p.iter_mut().for_each(|p| *p *= p_scale);
 
         // Final gap: zero at the lowest contact point (load control).
         let shift = match target {
@@ -596,29 +595,35 @@ impl Solver {
         Ok([s_r, s_t, s_gt, s_rt])
     }
 
-    /// Apply the pending step, then gather the contact sums of the gap.
-    fn gap_stats(&mut self, heights: &[f64], offset: f64, step: Pending, g_ref: f64) -> GapStats {
+    /// Apply the pending gap update, then gather the contact sums of the gap
+    /// with the pressure `p_scale · p`.
+    fn gap_stats(
+        &mut self,
+        heights: &[f64],
+        offset: f64,
+        step: Pending,
+        g_ref: f64,
+        p_scale: f64,
+    ) -> GapStats {
         // Branch-free, in LANES independent partial sums (vectorisable); the
         // contact set is an irregular pattern that defeats branch prediction.
         let mut acc = [[0.0f64; LANES]; 6]; // Σp, Σpg, Σp|g|, Σ_c δg, Σ_c δg², count
         let mut g_min = [f64::INFINITY; LANES];
         let mut g_off = [f64::INFINITY; LANES];
         let Pending {
-            p_scale,
             g_scale,
             tau,
             update,
         } = step;
         let n2 = self.p.len();
         let (p, g, r, h) = (
-            &mut self.p[..n2],
+            &self.p[..n2],
             &mut self.g[..n2],
             &self.r[..n2],
             &heights[..n2],
         );
         let mut lane = |k: usize, l: usize| {
             let pk = p_scale * p[k];
-            p[k] = pk;
             let gi = if update {
                 let v = g_scale * (g[k] + h[k] - offset - tau * r[k]) - h[k] + offset;
                 g[k] = v;
