@@ -22,9 +22,17 @@
 //! and `g < 0` re-enter with `p = −τ g`), with the mean gap on `I_c` removed
 //! and the pressure rescaled to the target mean after each step (mean
 //! pressure control). Two applications of 𝒢 per iteration; when the active
-//! set did not change during a step the displacement is updated linearly
+//! set did not change during a step (or changed at a few nodes, whose
+//! correction is summed directly) the displacement is updated linearly
 //! (`u ← s(u − τ 𝒢t)`) instead, and it is always recomputed from `p` before
 //! convergence is declared.
+//!
+//! Only the gap is stored (the displacement is `g + h` up to the offset), the
+//! step's rescaling of p is applied by the next step (which rewrites p
+//! anyway), and the search direction is formed row by row as the transform
+//! of 𝒢t reads it, whose output rows feed the step's sums: four `N × N`
+//! fields, and two passes per iteration besides the transform's (the solve
+//! is bound by memory traffic as much as by the FFTs).
 //!
 //! # Convergence criterion
 //! ```text
