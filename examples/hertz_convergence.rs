@@ -6,16 +6,6 @@
 
 use persson::bem::{hertz, Boundary, Options};
 
-/// Lecture 000, Table 1: free-boundary η per grid.
-const LECTURE: [(usize, f64); 6] = [
-    (64, 1.40e-2),
-    (128, 4.08e-3),
-    (256, 7.78e-4),
-    (512, 3.66e-4),
-    (1024, 1.20e-4),
-    (2048, 1.66e-5),
-];
-
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut grids = Vec::new();
     let mut tol = 1e-12;
@@ -40,10 +30,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     for boundary in [Boundary::Free, Boundary::Periodic] {
         for &n in &grids {
             let r = hertz::validate(&hertz::HertzCase::new(n, boundary), &opts)?;
-            let lecture = LECTURE
-                .iter()
-                .find(|(g, _)| *g == n)
-                .map_or("-".to_string(), |(_, v)| format!("{v:.2e}"));
+            let lecture = hertz::lecture_eta(n).map_or("-".to_string(), |v| format!("{v:.2e}"));
             println!(
                 "{:<9} {:>5}  {:.3e}     {:<9}  {:.2e}   {:.2e}   {:.5}   {:>5}  {:.3}",
                 format!("{boundary:?}").to_lowercase(),

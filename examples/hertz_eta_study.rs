@@ -15,16 +15,6 @@
 
 use persson::bem::{hertz, Boundary, Control, Operator, Options, Solver};
 
-/// Lecture 000, Table 1: free-boundary η per grid.
-const LECTURE: [(usize, f64); 6] = [
-    (64, 1.40e-2),
-    (128, 4.08e-3),
-    (256, 7.78e-4),
-    (512, 3.66e-4),
-    (1024, 1.20e-4),
-    (2048, 1.66e-5),
-];
-
 type Result<T> = std::result::Result<T, Box<dyn std::error::Error>>;
 
 /// η, η_L and the sign of η_L's sum for the sphere centred at
@@ -71,10 +61,7 @@ fn etas(n: usize, tol: f64, shift: (f64, f64), penetration: bool) -> Result<(f64
 }
 
 fn lecture(n: usize) -> String {
-    LECTURE
-        .iter()
-        .find(|(g, _)| *g == n)
-        .map_or("-".into(), |(_, v)| format!("{v:.2e}"))
+    hertz::lecture_eta(n).map_or("-".into(), |v| format!("{v:.2e}"))
 }
 
 fn main() -> Result<()> {

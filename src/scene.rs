@@ -436,16 +436,6 @@ pub struct BemHertzRow {
     pub seconds: f64,
 }
 
-/// Lecture 000, Table 1: free-boundary Hertz η per grid.
-pub const LECTURE_HERTZ_ETA: [(usize, f64); 6] = [
-    (64, 1.40e-2),
-    (128, 4.08e-3),
-    (256, 7.78e-4),
-    (512, 3.66e-4),
-    (1024, 1.20e-4),
-    (2048, 1.66e-5),
-];
-
 /// One corrected theory's load curve.
 #[derive(Debug, Clone, Serialize)]
 pub struct TheoryCurve {
@@ -940,10 +930,7 @@ fn bem_hertz(h: &BemHertzOutput) -> Result<Vec<BemHertzRow>> {
         .map(|&n| {
             check_memory(n, boundary).map_err(named)?;
             let r = hertz::validate(&hertz::HertzCase::new(n, boundary), &opts).map_err(named)?;
-            let lecture = LECTURE_HERTZ_ETA
-                .iter()
-                .find(|(g, _)| *g == n && boundary == crate::bem::Boundary::Free)
-                .map(|(_, v)| *v);
+            let lecture = hertz::lecture_eta(n).filter(|_| boundary == crate::bem::Boundary::Free);
             Ok(BemHertzRow {
                 grid: n,
                 boundary: boundary_name(boundary).into(),

@@ -89,6 +89,21 @@ fn sin_minus_x_cos(x: f64) -> f64 {
     sum
 }
 
+/// Lecture 000, Table 1: the free-boundary η it reports per grid side N.
+pub const LECTURE_ETA: [(usize, f64); 6] = [
+    (64, 1.40e-2),
+    (128, 4.08e-3),
+    (256, 7.78e-4),
+    (512, 3.66e-4),
+    (1024, 1.20e-4),
+    (2048, 1.66e-5),
+];
+
+/// The lecture's η for grid side `n`, if its Table 1 has one.
+pub fn lecture_eta(n: usize) -> Option<f64> {
+    LECTURE_ETA.iter().find(|(g, _)| *g == n).map(|(_, v)| *v)
+}
+
 /// A Hertz validation problem on an `N × N` grid.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct HertzCase {
