@@ -379,7 +379,7 @@ impl Solver {
         let mut fresh = true;
         let mut g_old = 1.0;
         let mut conjugate = false;
-        // The step's rescaling s and the linear gap update are applied
+        // The step's linear gap update (with its rescaling s) is applied
         // lazily, in the next gap pass.
         let mut pending = Pending::NONE;
         // The pressure is `p_scale · p` (the step's rescaling is applied by
