@@ -230,7 +230,7 @@ pub struct HertzReport {
     /// constant that this measure depends on). Not a norm: the sum changes
     /// sign with N, and on the contact `u − u_ex` is nearly the constant
     /// `δ − δ_ex`, so it mostly measures how Σ(p − p_ex) cancels. Measured at
-    /// the defaults, 64² to 1024²: 6–14× below η
+    /// the defaults, 64² to 1024²: 6–13× below η
     /// (examples/hertz_eta_study.rs).
     pub energy_error_lecture: Option<f64>,
     /// Contact radius a from the fit of p² = p₀²(1 − r²/a²).
