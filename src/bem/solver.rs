@@ -368,12 +368,13 @@ impl Solver {
             }
         }
         self.warm = false;
-        // Offset added to −h in the gap: mean pressure control shifts the gap
-        // by its contact mean each step, so any constant works.
-        let offset = match target {
-            Some(_) => 0.0,
-            None => h_max - delta,
-        };
+        // The gap is g = u − (h − o), o = max h − δ (δ = 0 under mean
+        // pressure control, whose gap is shifted by its contact mean each
+        // step). h − o is always formed first: it is the size of the
+        // roughness, so a large mean height costs no digits in the gap (with
+        // u − h + o instead, heights shifted by +100 stalled a 64² solve at
+        // ε ≈ 4e-10).
+        let offset = h_max - delta;
 
         self.refresh_gap(heights, offset, 1.0)?;
         let mut fresh = true;
@@ -537,8 +538,8 @@ impl Solver {
         gap.iter_mut().for_each(|g| *g -= shift);
         let mean_pressure = self.p.iter().sum::<f64>() / n2 as f64;
         let approach = match target {
-            // g = u − h − g_min = u − (h − max h) − δ  ⇒  δ = max h + g_min.
-            Some(_) => h_max + shift,
+            // g = u − (h − max h) − g_min = 0 on the contact  ⇒  δ = g_min.
+            Some(_) => shift,
             None => delta,
         };
         self.warm = true;
@@ -571,7 +572,7 @@ impl Solver {
             &mut |i, row| {
                 let range = i * n..(i + 1) * n;
                 for ((g, u), h) in g[range.clone()].iter_mut().zip(row).zip(&heights[range]) {
-                    *g = scale * u - h + offset;
+                    *g = scale * u - (h - offset);
                 }
             },
         )
@@ -633,7 +634,10 @@ impl Solver {
         let mut lane = |k: usize, l: usize| {
             let pk = p_scale * p[k];
             let gi = if update {
-                let v = g_scale * (g[k] + h[k] - offset - tau * r[k]) - h[k] + offset;
+                // h − o first: the same rounding every time (a fixed
+                // perturbation of the heights, not noise in the gap).
+                let hk = h[k] - offset;
+                let v = g_scale * (g[k] + hk - tau * r[k]) - hk;
                 g[k] = v;
                 v
             } else {
