@@ -208,6 +208,19 @@ fn rough_solve_invariants_and_reproducibility() {
             assert!(*g >= -1e-8 * sigma, "overlap {g:e}");
         }
     }
+    // The displacement is 𝒢p (the solver derives it from the final gap):
+    // rounding only, relative to the largest displacement.
+    let mut u = vec![0.0; sol.pressure.len()];
+    Operator::new(Boundary::Periodic, 128, 1.0, 1.0)
+        .unwrap()
+        .apply(&sol.pressure, &mut u)
+        .unwrap();
+    let u_max = u.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let du = u
+        .iter()
+        .zip(&sol.displacement)
+        .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
+    assert!(du < 1e-12 * u_max, "max |Δu| = {du:e} of {u_max:e}");
     // Bit-for-bit reproducible from the seed (fresh solver, same input).
     let mut s2 = Solver::new(Operator::new(Boundary::Periodic, 128, 1.0, 1.0).unwrap());
     let sol2 = s2

@@ -534,8 +534,14 @@ impl Solver {
         };
         // The gap and displacement buffers move into the solution (the next
         // solve allocates new ones): no copies at the peak of memory use.
+        // The last gap was computed from a fresh 𝒢p (convergence is declared
+        // only then), so u = g + (h − o) needs no further transform.
         let mut gap = std::mem::take(&mut self.g);
-        gap.iter_mut().for_each(|g| *g -= shift);
+        let mut displacement = std::mem::take(&mut self.r);
+        for ((u, g), h) in displacement.iter_mut().zip(gap.iter_mut()).zip(heights) {
+            *u = *g + (h - offset);
+            *g -= shift;
+        }
         let mean_pressure = self.p.iter().sum::<f64>() / n2 as f64;
         let approach = match target {
             // g = u − (h − max h) − g_min = 0 on the contact  ⇒  δ = g_min.
@@ -543,8 +549,6 @@ impl Solver {
             None => delta,
         };
         self.warm = true;
-        let mut displacement = std::mem::take(&mut self.r);
-        self.op.apply(&self.p, &mut displacement)?;
         // The pressure moves out too; the solver keeps a copy for warm
         // starts in the (no longer needed) search-direction buffer.
         let pressure = std::mem::take(&mut self.p);
