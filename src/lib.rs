@@ -41,6 +41,7 @@ pub mod separation;
 pub mod special;
 pub mod spectrum;
 pub mod stress;
+pub mod table;
 pub mod theory;
 
 pub use error::{Error, Result};

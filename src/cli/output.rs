@@ -4,6 +4,8 @@
 use std::io::Write;
 
 use anyhow::Context;
+use persson::table::Tabulate;
+use serde::Serialize;
 
 /// How to print a [`Report`].
 #[derive(clap::Args, Debug, Clone, Default)]
@@ -108,4 +110,38 @@ fn fmt(v: f64) -> String {
     } else {
         format!("{v:.9e}")
     }
+}
+
+/// Print a typed report in the chosen format: its JSON (`--json`), the CSV of
+/// its main table (`--csv`; the other tables are named on stderr), or every
+/// table as text.
+pub fn print<R: Serialize + Tabulate>(report: &R, f: &Format) -> anyhow::Result<()> {
+    let mut out = std::io::stdout().lock();
+    if f.json {
+        serde_json::to_writer_pretty(&mut out, report)?;
+        writeln!(out)?;
+    } else {
+        let tables = report.tables();
+        if f.csv {
+            if let Some(main) = tables.first() {
+                write!(out, "{}", main.to_csv())?;
+            }
+            let rest: Vec<&str> = tables.iter().skip(1).map(|t| t.name.as_str()).collect();
+            if !rest.is_empty() {
+                eprintln!(
+                    "persson: note: --csv prints the table `{}`; also computed: {} (all in --json)",
+                    tables[0].name,
+                    rest.join(", ")
+                );
+            }
+        } else {
+            for (i, t) in tables.iter().enumerate() {
+                if i > 0 {
+                    writeln!(out)?;
+                }
+                write!(out, "{}", t.to_text())?;
+            }
+        }
+    }
+    out.flush().context("writing to stdout")
 }
