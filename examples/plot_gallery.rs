@@ -127,7 +127,7 @@ fn area_load_figure(t: &Persson, s: &SelfAffine) -> BoxResult<Figure> {
             rms_slope,
         }),
     )?;
-    // The κ ≈ 2 that boundary-element and GFMD results give (seed 002), as markers.
+    // The κ ≈ 2 that boundary-element and GFMD results give (Campañá & Müser, EPL 77, 38005 (2007)), as markers.
     let kappa_num = 2.0;
     let gfmd: Vec<(f64, f64)> = geomspace(1e3, 3e6, 8)
         .into_iter()

@@ -323,7 +323,7 @@ impl Theory {
     /// # Examples
     /// ```
     /// use persson::corrected::Theory;
-    /// // γ = 1 is the original theory: erf(1/(2√0.6)) = 0.638690 (seed 001)
+    /// // γ = 1 is the original theory: erf(1/(2√0.6)) = 0.638690 (Persson, Bucher & Chiaia 2002)
     /// let a = Theory::YangPersson { gamma: 1.0 }.contact_fraction(0.6, 0.0, 1e-12).unwrap();
     /// assert!((a.contact_fraction - 0.638_690).abs() < 5e-7);
     /// ```

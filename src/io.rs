@@ -15,7 +15,7 @@ static COUNTER: AtomicU64 = AtomicU64::new(0);
 ///
 /// Its name keeps the target's extension (the PNG encoder picks the format
 /// from it) and starts with a dot so that it is hidden while it exists.
-pub struct TempFile {
+pub(crate) struct TempFile {
     tmp: PathBuf,
     target: PathBuf,
     persisted: bool,
@@ -24,7 +24,7 @@ pub struct TempFile {
 impl TempFile {
     /// Creates the (empty) temporary file, failing if the directory is not
     /// writable.
-    pub fn create(target: &Path) -> Result<Self> {
+    pub(crate) fn create(target: &Path) -> Result<Self> {
         let dir = match target.parent() {
             Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
             _ => PathBuf::from("."),
@@ -55,12 +55,12 @@ impl TempFile {
     }
 
     /// The temporary file's path.
-    pub fn path(&self) -> &Path {
+    pub(crate) fn path(&self) -> &Path {
         &self.tmp
     }
 
     /// Renames the temporary file over the target.
-    pub fn persist(mut self) -> Result<()> {
+    pub(crate) fn persist(mut self) -> Result<()> {
         std::fs::rename(&self.tmp, &self.target).map_err(|source| Error::Io {
             path: self.target.clone(),
             source,

@@ -7,8 +7,8 @@
 /// A/A0 = κ σ0 / (E* √⟨|∇h|²⟩),  κ_Bush = √(2π) ≈ 2.5066,  κ_Persson = √(8/π) ≈ 1.5958
 /// ```
 /// Persson's value is the G → ∞ limit of erf(1/(2√G)) = (πG)^{−1/2}
-/// (seed 001 Eq. 4, Sec. IV); numerical (BEM/GFMD) results lie between the two,
-/// about 2 (seed 002, Campañá & Müser, EPL 77, 38005 (2007)).
+/// (Persson, Bucher & Chiaia, Phys. Rev. B 65, 184106 (2002), Eq. 4, Sec. IV); numerical (BEM/GFMD) results lie between the two,
+/// about 2 (Campañá & Müser, EPL 77, 38005 (2007), doi:10.1209/0295-5075/77/38005).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Kappa {

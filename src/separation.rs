@@ -335,7 +335,7 @@ impl<'a> Separation<'a> {
     /// Elastic energy at full contact, (π/2) E* ∫ q² C dq, J/m² (the p → ∞ limit).
     ///
     /// # Errors
-    /// Quadrature failure for closure spectra.
+    /// Quadrature failure for a spectrum given as a function ([`crate::spectrum::FnSpectrum`]).
     pub fn full_contact_energy(&self) -> Result<Estimate> {
         let m = self
             .spectrum

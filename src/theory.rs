@@ -23,7 +23,7 @@ pub struct ContactFraction {
     pub error: f64,
 }
 
-/// A/A0 from G (flat start, elastic; seed 001 Eq. 3).
+/// A/A0 from G (flat start, elastic; Persson, Bucher & Chiaia (2002) Eq. 3).
 ///
 /// # Formula
 /// ```text
@@ -31,7 +31,7 @@ pub struct ContactFraction {
 /// 1 − A/A0 = erfc(1/(2√G)),   ln(1 − A/A0) = ln erfcx(x) − x²
 /// ```
 /// erf and erfc are evaluated separately so that both A/A0 (large G, where
-/// A/A0 → (πG)^{−1/2}, seed Eq. 4) and 1 − A/A0 (small G) keep full relative
+/// A/A0 → (πG)^{−1/2}, their Eq. 4) and 1 − A/A0 (small G) keep full relative
 /// accuracy. `g_error` (the absolute error of G) is propagated through
 /// `|dA/dG| = x e^{−x²} / (√π G)`.
 ///
@@ -40,7 +40,7 @@ pub struct ContactFraction {
 ///
 /// # Examples
 /// ```
-/// // seed 001, Fig. 2: A/A0 = 0.638690 at G = 0.6 (../shared/theory.md §3)
+/// // Persson, Bucher & Chiaia (2002), Fig. 2: A/A0 = 0.638690 at G = 0.6 (../shared/theory.md §3)
 /// let a = persson::theory::contact_fraction(0.6, 0.0).unwrap();
 /// assert!((a.fraction - 0.638_690).abs() < 5e-7);
 /// ```
@@ -122,7 +122,7 @@ impl<'a> Persson<'a> {
     /// `⟨|∇h|²⟩` up to magnification ζ: 2π ∫_{q_l}^{ζ q_l} q³ C dq.
     ///
     /// # Errors
-    /// ζ < 1 or non-finite; quadrature failure for closure spectra.
+    /// ζ < 1 or non-finite; quadrature failure for a spectrum given as a function ([`crate::spectrum::FnSpectrum`]).
     pub fn slope_variance(&self, zeta: f64) -> Result<Estimate> {
         check::at_least("zeta", zeta, 1.0)?;
         let q_l = self.spectrum.q_min();
@@ -134,14 +134,14 @@ impl<'a> Persson<'a> {
         })
     }
 
-    /// G(ζ) at nominal pressure σ0 (seed 001 Eq. 2).
+    /// G(ζ) at nominal pressure σ0 (Persson, Bucher & Chiaia, Phys. Rev. B 65, 184106 (2002), Eq. 2).
     ///
     /// # Formula
     /// ```text
     /// G(ζ) = (π/4) (E*/σ0)² ∫_{q_l}^{ζ q_l} q³ C(q) dq = (E*/σ0)² ⟨|∇h|²⟩_ζ / 8
     /// ```
     /// Exact for self-affine and tabulated spectra (closed-form moments),
-    /// quadrature for closures; the error bound is returned with the value.
+    /// quadrature for [`crate::spectrum::FnSpectrum`]; the error bound is returned with the value.
     ///
     /// # Errors
     /// σ0 not finite and positive, ζ < 1.

@@ -11,7 +11,7 @@
 //!                 = Δ/(π E*) Σ_corners ± I(·,·),   I(X, Y) = X asinh(Y/X) + Y asinh(X/Y)
 //! ```
 //! The periodic operator samples the half-space Green's function in Fourier
-//! space (Westergaard / Johnson; lecture 000 §"Discretization"); the mean
+//! space (Westergaard / Johnson; Molinari's EPFL lecture, §"Discretization"); the mean
 //! displacement is undetermined in a periodic system and set to zero.
 //!
 //! The free operator is the exact (Love 1929) displacement at a node due to a
@@ -27,7 +27,7 @@
 //! # References
 //! - K. L. Johnson, *Contact Mechanics* (CUP 1985), ch. 3 (Boussinesq's
 //!   point load; Love's uniformly loaded rectangle).
-//! - Lecture 000 (seed): u = FFT⁻¹(K FFT(p)), K = 2/(E*|q|).
+//! - J. F. Molinari, EPFL lecture "From single asperity to multi asperity contact": u = FFT⁻¹(K FFT(p)), K = 2/(E*|q|).
 //! - Liu, Wang & Liu, Wear 243, 101 (2000): DC-FFT, zero padding to 2N.
 
 use super::fft::Fft2;

@@ -1,4 +1,4 @@
-//! The self-affine spectrum with a roll-off (seed 001, Eq. 5).
+//! The self-affine spectrum with a roll-off (Persson, Bucher & Chiaia, Phys. Rev. B 65, 184106 (2002), Eq. 5).
 
 use super::{check_range, clip, power, Spectrum};
 use crate::error::{check, Error, Result};
@@ -35,7 +35,7 @@ pub enum Amplitude {
 /// exponent crosses −1 (H → 0 for `m_1`, H → 1 for `m_3`).
 ///
 /// # References
-/// Persson, Bucher & Chiaia, PRB 65, 184106 (2002), Eq. 5 (seed 001);
+/// Persson, Bucher & Chiaia, Phys. Rev. B 65, 184106 (2002), Eq. 5, doi:10.1103/PhysRevB.65.184106;
 /// `../shared/theory.md` §1.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct SelfAffine {

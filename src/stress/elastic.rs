@@ -9,7 +9,7 @@
 //! Q(x) = ∫₋₁¹ P0ᵒᵈᵈ(u) φ(x − u) du = ∫₀¹ P0(u) [φ(x − u) − φ(x + u)] du
 //! ```
 //! (P0ᵒᵈᵈ the odd extension of P0). The elastic density is P(s) = Q(s) for
-//! s ≥ 0 (seed 001 Eq. 7 with σY → ∞; `../shared/theory.md` §2).
+//! s ≥ 0 (Persson, Bucher & Chiaia (2002), Eq. 7 with σY → ∞; `../shared/theory.md` §2).
 
 use super::gauss;
 use super::start::{Start, TabulatedStart};
@@ -715,7 +715,7 @@ pub(crate) fn beyond(start: &Start, w: f64, x: f64) -> Result<Estimate> {
     Ok(f)
 }
 
-/// Bessel-based sine coefficient of the cylinder, (π/2) J1(γ) (seed 001, after Eq. 12).
+/// Bessel-based sine coefficient of the cylinder, (π/2) J1(γ) (Persson, Bucher & Chiaia (2002), after Eq. 12).
 #[inline]
 pub(crate) fn cylinder_coefficient(gamma: f64) -> f64 {
     std::f64::consts::FRAC_PI_2 * j1(gamma)

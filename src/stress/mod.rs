@@ -2,7 +2,7 @@
 //! starts, elastic or with a finite yield stress σY.
 //!
 //! # Formula
-//! Persson's diffusion equation (seed 001 Eq. 1) in dimensionless form:
+//! Persson's diffusion equation (Persson, Bucher & Chiaia (2002), Eq. 1) in dimensionless form:
 //! ```text
 //! s = σ/σH,   y = σY/σH,   τ = (σ0/σH)² G(ζ),   w = 2√τ
 //! ∂P/∂τ = ∂²P/∂s²,   P(s, 0) = P0(s),   P(0, τ) = 0,   P(y, τ) = 0
@@ -17,7 +17,7 @@
 //! - elastic (y = ∞): the method of images, P(s) = Q(s) = ∫₀¹ P0(u)[φ(s−u) − φ(s+u)] du
 //!   in closed form (flat, Hertz) or by Gauss rules with a Bernstein-ellipse
 //!   error bound (cylinder);
-//! - finite y, τ ≳ y²/400: the Fourier sine series (seed 001 Eqs. 7, 10) with a
+//! - finite y, τ ≳ y²/400: the Fourier sine series (their Eqs. 7, 10) with a
 //!   rigorous tail bound;
 //! - finite y, τ small: the sum over images for two absorbing walls.
 //!
@@ -49,7 +49,7 @@
 //!
 //! # References
 //! B. N. J. Persson, F. Bucher, B. Chiaia, PRB 65, 184106 (2002), Eqs. 1, 3, 7–12
-//! (seed 001); `../shared/theory.md` §2.
+//! doi:10.1103/PhysRevB.65.184106; `../shared/theory.md` §2.
 
 mod elastic;
 mod gauss;
@@ -152,7 +152,7 @@ impl<'a> Solver<'a> {
     /// # Examples
     /// ```
     /// use persson::stress::{Solver, Start};
-    /// // seed 001 Fig. 3: Hertz ball at G = 0.6, A/A0 = 0.615097 (../shared/theory.md §3)
+    /// // Persson, Bucher & Chiaia (2002), Fig. 3: Hertz ball at G = 0.6, A/A0 = 0.615097 (../shared/theory.md §3)
     /// let s = Solver::new(&Start::Hertz, 0.6, None, 1e-12).unwrap();
     /// let c = s.curve(&[0.5]).unwrap();
     /// assert!((c.contact_fraction - 0.615_097).abs() < 1e-6);
@@ -436,7 +436,7 @@ pub fn distribution(
 /// ```
 ///
 /// # References
-/// Seed 001 Eqs. 7, 10 (`../shared/theory.md` §2).
+/// Persson, Bucher & Chiaia, Phys. Rev. B 65, 184106 (2002), Eqs. 7, 10 (`../shared/theory.md` §2).
 pub fn series_fractions(
     start: &Start,
     g: f64,

@@ -1,4 +1,4 @@
-//! Finite yield stress: the Fourier sine series (seed 001 Eqs. 7 and 10).
+//! Finite yield stress: the Fourier sine series (Persson, Bucher & Chiaia (2002), Eqs. 7 and 10).
 //!
 //! ```text
 //! P(s) = (2/y) Σₙ Bₙ Eₙ sin(kₙ s),   kₙ = nπ/y,   Eₙ = e^{−kₙ² τ},   y = σY/σH

@@ -5,7 +5,7 @@ Run: python3 tests/reference/stress_reference.py > tests/reference/stress.json
 
 Independent of the Rust code: the density is mpmath.quad of the image
 integral Q(x) = ∫ P0odd(u) φ(x − u) du (cylinder in u = sin θ), summed over
-the images of two walls when τ/y² < 1e-3, else the sine series (seed Eq. 7)
+the images of two walls when τ/y² < 1e-3, else the sine series (Persson et al. 2002, Eq. 7)
 summed to 1e-40 with the coefficients by mpmath.quad. Fractions: A∞ by
 mpmath.quad of ∫ P0 erf(u/w); finite y: the series (r ≥ 1e-3) or the image
 sums for A_el, A_pl (r < 1e-3) with F by mpmath.quad.
@@ -116,7 +116,7 @@ def case(start, G, R, svals):
         pl = RATIO[start] / y - sum((-1) ** (k + 1) * 2 / (k * mp.pi) * b * e for k, b, e in terms)
         if abs(pl) < mp.mpf("1e-25") * RATIO[start] / y:
             # the series for A_pl cancels: redo with enough digits, the
-            # coefficients from the seed's closed forms (Eq. 10; (pi/2) J1)
+            # coefficients from the paper's closed forms (Eq. 10; (pi/2) J1)
             digits = 40
             while True:
                 digits += 60

@@ -1,8 +1,9 @@
-//! Numbers from seed 001 (Persson, Bucher & Chiaia, PRB 65, 184106 (2002)),
-//! Sec. III, recomputed with the library: `cargo run --release --example seed_numbers`.
+//! Numbers from Persson, Bucher & Chiaia, Phys. Rev. B 65, 184106 (2002),
+//! doi:10.1103/PhysRevB.65.184106, Sec. III, recomputed with the library:
+//! `cargo run --release --example persson2002_numbers`.
 //!
 //! 1. Borri-Brunetto et al.: low-load slopes dA/dF_N at magnifications
-//!    L/λ = 128, 64, 32, 16 relative to L/λ = 256, D_f = 2.3 (H = 0.7). The seed's
+//!    L/λ = 128, 64, 32, 16 relative to L/λ = 256, D_f = 2.3 (H = 0.7). The paper's
 //!    "theoretical slopes" 1.23, 1.52, 1.87, 2.30 are the pure power law
 //!    A ∝ (λ/L)^{1−H}; the numerical results it compares with are 1.24, 1.57, 1.93, 2.32.
 //! 2. The rail–wheel estimate: E = 1e11 Pa, ν = 0.3, h0 = 0.95 µm (⟨h²⟩ = h0²/2),
@@ -20,7 +21,7 @@ fn main() -> Result<(), persson::Error> {
     let s = SelfAffine::new(1.0, 1.0, 1e12, h, Amplitude::RmsSlope(1.0))?;
     let m = Persson::new(&s, 1.0)?;
     let slope = |zeta: f64| m.slope_variance(zeta).map(|v| v.value.sqrt());
-    println!("Borri-Brunetto slope ratios, D_f = 2.3 (seed: theory 1.23 1.52 1.87 2.30; numerics 1.24 1.57 1.93 2.32)");
+    println!("Borri-Brunetto slope ratios, D_f = 2.3 (Persson et al. 2002: theory 1.23 1.52 1.87 2.30; numerics 1.24 1.57 1.93 2.32)");
     println!(
         "{:>6} {:>22} {:>26}",
         "L/λ", "power law (λ/L)^(1-H)", "theory, q_l = 2π/L exactly"
@@ -33,7 +34,7 @@ fn main() -> Result<(), persson::Error> {
         println!("{k:>6} {asymptotic:>22.4} {full:>26.4}");
     }
 
-    // 2. Rail–wheel: C0 from h0 with the seed's a-factor is equivalent to giving the rms
+    // 2. Rail–wheel: C0 from h0 with the paper's a-factor is equivalent to giving the rms
     // height h0/√2 over [q_L, ∞); q_s = 1e9 1/m stands in for ∞ (its effect is < 1e-6).
     let q_l = std::f64::consts::TAU / 0.01;
     let rms_height = 0.95e-6 / std::f64::consts::SQRT_2;
@@ -42,7 +43,7 @@ fn main() -> Result<(), persson::Error> {
         young: 1e11,
         poisson: 0.3,
     };
-    println!("\nRail-wheel estimate at zeta = 400, sigma0 = 426 MPa (seed: A ≈ 0.2 A0)");
+    println!("\nRail-wheel estimate at zeta = 400, sigma0 = 426 MPa (Persson et al. 2002: A ≈ 0.2 A0)");
     for (label, e) in [
         (
             "one elastic body on a rigid one, E* = E/(1-nu^2)",

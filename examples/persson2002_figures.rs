@@ -1,9 +1,10 @@
-//! Reproduce seed 001 (Persson, Bucher & Chiaia, PRB 65, 184106) Figs. 2–4:
+//! Reproduce Figs. 2–4 of Persson, Bucher & Chiaia, Phys. Rev. B 65, 184106 (2002),
+//! doi:10.1103/PhysRevB.65.184106:
 //! the stress distribution P(σ) for a flat punch, a Hertz ball and a cylinder
 //! at G = 0, 0.6 and 2, elastic, with the contact areas quoted in the captions.
 //!
-//! Run: `cargo run --release --example seed_figures [out.csv] [plot-dir]`
-//! Prints the areas (seed: 0.64/0.38, 0.62/0.38, 0.61/0.37; exact values in
+//! Run: `cargo run --release --example persson2002_figures [out.csv] [plot-dir]`
+//! Prints the areas (the paper's captions: 0.64/0.38, 0.62/0.38, 0.61/0.37; exact values in
 //! ../shared/theory.md §3), writes the curves (figure, start, G, σ/σH, σH·P)
 //! as CSV, and with the `plot` feature draws fig2_flat.svg, fig3_hertz.svg and
 //! fig4_cylinder.svg into `plot-dir`. G = 0 is the start itself (the flat
@@ -65,7 +66,7 @@ fn draw(
         .map(|(l, p)| (l.as_str(), p.as_slice()))
         .collect();
     let mut figure = persson::plot::stress_family(sigma, &curves)?;
-    figure.title = format!("Seed 001 Fig. {fig}: {name} start");
+    figure.title = format!("Persson, Bucher & Chiaia (2002) Fig. {fig}: {name} start");
     let path = std::path::Path::new(dir).join(format!("fig{fig}_{name}.svg"));
     persson::plot::render(&figure, &path)?;
     println!("plot written to {}", path.display());
