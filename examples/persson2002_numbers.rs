@@ -43,7 +43,9 @@ fn main() -> Result<(), persson::Error> {
         young: 1e11,
         poisson: 0.3,
     };
-    println!("\nRail-wheel estimate at zeta = 400, sigma0 = 426 MPa (Persson et al. 2002: A ≈ 0.2 A0)");
+    println!(
+        "\nRail-wheel estimate at zeta = 400, sigma0 = 426 MPa (Persson et al. 2002: A ≈ 0.2 A0)"
+    );
     for (label, e) in [
         (
             "one elastic body on a rigid one, E* = E/(1-nu^2)",
