@@ -7,10 +7,14 @@ mod args;
 mod bem;
 #[cfg(feature = "bem")]
 mod compare;
+#[cfg(feature = "bem")]
+mod compare_plot;
 mod g;
 mod kappa;
 mod output;
 mod plot;
+#[cfg(feature = "bem")]
+mod progress;
 mod report;
 mod run;
 mod separation;
