@@ -488,7 +488,10 @@ mod cli {
         assert!(eta < 1.40e-2);
         // η of this deterministic solve (ε ≤ 1e-10), measured: the solver
         // stops far closer to its fixed point than HERTZ_ETA_REL_TOL.
-        assert!((eta / HERTZ_ETA_64 - 1.0).abs() < HERTZ_ETA_REL_TOL, "η = {eta}");
+        assert!(
+            (eta / HERTZ_ETA_64 - 1.0).abs() < HERTZ_ETA_REL_TOL,
+            "η = {eta}"
+        );
         // Closed forms at the defaults a = 0.1, R = L = E* = 1:
         // σ0 = F/L² = 4 E* a³/(3 R), p₀ = 2 a E*/(π R).
         let sigma0 = v["nominal_pressure"].as_f64().unwrap();
@@ -512,10 +515,18 @@ mod cli {
     fn help_shows_readable_defaults_and_the_names_table_flags() {
         let (code, out, err) = persson(&["bem", "hertz", "--help"]);
         assert_eq!(code, 0, "{err}");
-        for needle in ["--tolerance", "[default: 1e-10]", "--max-iterations", "--contact-modulus"] {
+        for needle in [
+            "--tolerance",
+            "[default: 1e-10]",
+            "--max-iterations",
+            "--contact-modulus",
+        ] {
             assert!(out.contains(needle), "{needle}: {out}");
         }
-        assert!(!out.contains("0.0000000001") && !out.contains("--tol ") && !out.contains("--modulus"), "{out}");
+        assert!(
+            !out.contains("0.0000000001") && !out.contains("--tol ") && !out.contains("--modulus"),
+            "{out}"
+        );
         // the old spelling of E* still works, hidden
         let (code, _, err) = persson(&["bem", "hertz", "--grid", "16", "--modulus", "1", "--json"]);
         assert_eq!(code, 0, "{err}");
@@ -552,7 +563,13 @@ mod cli {
         let pts = v["points"].as_array().unwrap();
         assert_eq!(pts.len(), 2);
         for p in pts {
-            for key in ["nominal_pressure", "contact_fraction", "mean_separation", "iterations", "seconds"] {
+            for key in [
+                "nominal_pressure",
+                "contact_fraction",
+                "mean_separation",
+                "iterations",
+                "seconds",
+            ] {
                 assert!(p[key].is_number(), "{key} missing in {p}");
             }
         }

@@ -71,7 +71,8 @@ fn kappa_fit_on_a_linear_law() {
     // origin is κ = Σx A/Σx² = 2 + 50 Σx³/Σx²
     let bent: Vec<f64> = p.iter().map(|&x| 2.0 * x + 50.0 * x * x).collect();
     let xs: Vec<f64> = p.clone();
-    let want = 2.0 + 50.0 * xs.iter().map(|x| x.powi(3)).sum::<f64>() / xs.iter().map(|x| x * x).sum::<f64>();
+    let want = 2.0
+        + 50.0 * xs.iter().map(|x| x.powi(3)).sum::<f64>() / xs.iter().map(|x| x * x).sum::<f64>();
     let k = fit_kappa(&p, &bent, 1.0, 1.0, 0.1).unwrap();
     assert!((k.kappa - want).abs() < EXACT, "{k:?} vs {want}");
     // only points with A < 0.1 are used: 0.002·i/1 < 0.1 for all 10

@@ -100,7 +100,11 @@ fn nested_surfaces_are_one_band_limited_surface() {
     let fine: &Surface = &surfaces[2];
     let (h, g) = (fine.rms_height(), fine.rms_slope().unwrap());
     for c in &surfaces[..2] {
-        assert!((c.rms_height() - h).abs() <= 1e-10 * h, "{} vs {h}", c.rms_height());
+        assert!(
+            (c.rms_height() - h).abs() <= 1e-10 * h,
+            "{} vs {h}",
+            c.rms_height()
+        );
         let gc = c.rms_slope().unwrap();
         assert!((gc - g).abs() <= 1e-10 * g, "{gc} vs {g}");
     }
@@ -167,7 +171,11 @@ fn continuum_limit_recovers_an_exact_law_and_the_seed_scatter() {
             assert!((c[k].seed_scatter.unwrap() - 0.01).abs() < ROUNDING);
             // α fixed: the exact law leaves no residual; α fitted from three
             // grids: no standard error, the step c N^−α stands in for it
-            let fit = if alpha.is_some() { 0.0 } else { 0.5 * 256f64.powf(-0.7) };
+            let fit = if alpha.is_some() {
+                0.0
+            } else {
+                0.5 * 256f64.powf(-0.7)
+            };
             assert!((c[k].fit.uncertainty() - fit).abs() < 1e-9, "{:?}", c[k]);
             assert_eq!(c[k].fit.standard_error.is_some(), alpha.is_some());
             assert!((c[k].standard_error - fit.hypot(0.01)).abs() < 1e-9);
@@ -200,9 +208,14 @@ fn bem_sweep_is_the_rough_loop_and_its_histograms_integrate() {
     for (ga, gb) in a.grids.iter().zip(&b.grids) {
         // the same solves in another order: warm start changes only the path
         let (x, y) = (ga.contact_fraction[0][0], gb.contact_fraction[0][1]);
-        assert!((x - y).abs() <= 2.0 / (ga.grid * ga.grid) as f64, "{x} vs {y}");
+        assert!(
+            (x - y).abs() <= 2.0 / (ga.grid * ga.grid) as f64,
+            "{x} vs {y}"
+        );
         assert!(ga.contact_fraction[0][0] < ga.contact_fraction[0][1]);
-        assert!(ga.mean_separation[0][0] > ga.mean_separation[0][1] && ga.mean_separation[0][1] > 0.0);
+        assert!(
+            ga.mean_separation[0][0] > ga.mean_separation[0][1] && ga.mean_separation[0][1] > 0.0
+        );
     }
     // the finest histogram integrates to the finest contact fraction
     for (k, h) in a.histograms.iter().enumerate() {
@@ -232,7 +245,10 @@ fn bem_kappa_between_persson_and_bush_and_pinned() {
     assert!(per[0] > per[1] && per[1] > per[2] && per[2] > ki, "{k:?}");
     let pinned = [PIN_32, PIN_64, PIN_128, PIN_INF];
     for (got, want) in per.iter().chain([&ki]).zip(pinned) {
-        assert!((got - want).abs() < PINNED_KAPPA, "κ = {got} (pinned {want}): {k:?}");
+        assert!(
+            (got - want).abs() < PINNED_KAPPA,
+            "κ = {got} (pinned {want}): {k:?}"
+        );
     }
     // two seeds: a standard error over seeds, combined with the fit's
     let e = k.extrapolated;
@@ -268,12 +284,18 @@ fn comparison_parts_agree_with_closed_forms_and_each_other() {
     ] {
         let c = r.theory(t).unwrap();
         for (a, p) in c.contact_fraction.iter().zip(&r.nominal_pressure) {
-            assert!((a - kappa * p / slope).abs() < ROUNDING * a.max(1e-3), "{t:?}");
+            assert!(
+                (a - kappa * p / slope).abs() < ROUNDING * a.max(1e-3),
+                "{t:?}"
+            );
         }
     }
     // κ fitted to a linear law is its κ
     for tk in &r.kappa.theories {
-        if matches!(tk.theory, AreaTheory::PerssonLinear | AreaTheory::BushLinear) {
+        if matches!(
+            tk.theory,
+            AreaTheory::PerssonLinear | AreaTheory::BushLinear
+        ) {
             let f = tk.fit.fit().unwrap();
             assert!((f.kappa - tk.low_load_kappa).abs() < 1e-12, "{tk:?}");
         }
@@ -300,14 +322,25 @@ fn comparison_parts_agree_with_closed_forms_and_each_other() {
         assert!(u.windows(2).all(|w| w[0] > w[1]), "{u:?}");
     }
     // data equal to a theory score zero against it
-    let original = r.theory(AreaTheory::Original).unwrap().contact_fraction.clone();
+    let original = r
+        .theory(AreaTheory::Original)
+        .unwrap()
+        .contact_fraction
+        .clone();
     cfg.data = Some(UserData {
         nominal_pressure: r.nominal_pressure.clone(),
         contact_fraction: original,
     });
     let w = compare(&s, &cfg, &mut |_| {}).unwrap();
     let d = w.data.as_ref().unwrap();
-    let of = |name: &str| d.scores.iter().find(|s| s.reference == name).unwrap().score.clone();
+    let of = |name: &str| {
+        d.scores
+            .iter()
+            .find(|s| s.reference == name)
+            .unwrap()
+            .score
+            .clone()
+    };
     assert_eq!(of("original").max_relative_deviation, 0.0);
     assert!(of("bush-linear").max_relative_deviation > 0.3);
     // the sweep did not change with the data
@@ -320,7 +353,17 @@ mod cli {
     use crate::common::persson;
 
     const SURFACE: [&str; 12] = [
-        "compare", "--hurst", "0.8", "--q-l", "1", "--q-r", "2", "--q-s", "8", "--rms-slope", "0.1",
+        "compare",
+        "--hurst",
+        "0.8",
+        "--q-l",
+        "1",
+        "--q-r",
+        "2",
+        "--q-s",
+        "8",
+        "--rms-slope",
+        "0.1",
         "--json",
     ];
 
@@ -346,7 +389,8 @@ mod cli {
             serde_json::Value::Object(m) => {
                 for (k, x) in m {
                     assert!(
-                        k.chars().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_'),
+                        k.chars()
+                            .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_'),
                         "key {path}.{k}"
                     );
                     snake_case_keys(x, &format!("{path}.{k}"));
@@ -359,19 +403,41 @@ mod cli {
 
     #[test]
     fn json_keys_and_the_text_tables() {
-        let args = ["--modulus", "1", "--pressure", "0.001,0.003", "--grid", "128"];
+        let args = [
+            "--modulus",
+            "1",
+            "--pressure",
+            "0.001,0.003",
+            "--grid",
+            "128",
+        ];
         let v = run_json(&args);
         snake_case_keys(&v, "");
         let np = 2;
         assert_eq!(v["nominal_pressure"].as_array().unwrap().len(), np);
-        let theories: Vec<&str> =
-            v["theories"].as_array().unwrap().iter().map(|t| t["theory"].as_str().unwrap()).collect();
+        let theories: Vec<&str> = v["theories"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|t| t["theory"].as_str().unwrap())
+            .collect();
         assert_eq!(
             theories,
-            ["original", "bush-linear", "persson-linear", "yang-persson", "wang-muser", "xu"]
+            [
+                "original",
+                "bush-linear",
+                "persson-linear",
+                "yang-persson",
+                "wang-muser",
+                "xu"
+            ]
         );
-        let grids: Vec<u64> =
-            v["bem"].as_array().unwrap().iter().map(|b| b["grid"].as_u64().unwrap()).collect();
+        let grids: Vec<u64> = v["bem"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|b| b["grid"].as_u64().unwrap())
+            .collect();
         assert_eq!(grids, vec![32, 64, 128]);
         assert_eq!(v["extrapolated"].as_array().unwrap().len(), np);
         assert_eq!(v["mean_separation"]["bem"].as_array().unwrap().len(), np);
@@ -383,7 +449,13 @@ mod cli {
         let text_args: Vec<&str> = SURFACE[..11].iter().chain(&args).copied().collect();
         let (code, text, err) = persson(&text_args);
         assert_eq!(code, 0, "{err}");
-        for title in ["of the theories", "of the FFT-BEM", "κ of A/A0", "Mean separation", "Pressure distribution"] {
+        for title in [
+            "of the theories",
+            "of the FFT-BEM",
+            "κ of A/A0",
+            "Mean separation",
+            "Pressure distribution",
+        ] {
             assert!(text.contains(title), "{title}: {text}");
         }
         assert!(!text.contains("Some(") && !text.contains("None"), "{text}");
@@ -393,14 +465,37 @@ mod cli {
     #[test]
     fn bad_data_files_exit_2_naming_the_line() {
         for (name, text, line) in [
-            ("missing.csv", "nominal_pressure,contact_fraction\n0.001,0.1\n0.002\n", ":3:"),
-            ("text.csv", "nominal_pressure,contact_fraction\n0.001,0.1\n0.002,abc\n", ":3:"),
-            ("negative.csv", "nominal_pressure,contact_fraction\n-0.001,0.1\n", ":2:"),
-            ("above.csv", "nominal_pressure,contact_fraction\n0.001,0.1\n0.002,1.5\n", ":3:"),
+            (
+                "missing.csv",
+                "nominal_pressure,contact_fraction\n0.001,0.1\n0.002\n",
+                ":3:",
+            ),
+            (
+                "text.csv",
+                "nominal_pressure,contact_fraction\n0.001,0.1\n0.002,abc\n",
+                ":3:",
+            ),
+            (
+                "negative.csv",
+                "nominal_pressure,contact_fraction\n-0.001,0.1\n",
+                ":2:",
+            ),
+            (
+                "above.csv",
+                "nominal_pressure,contact_fraction\n0.001,0.1\n0.002,1.5\n",
+                ":3:",
+            ),
         ] {
             let file = temp(name, text);
             let mut args: Vec<&str> = SURFACE.to_vec();
-            args.extend(["--modulus", "1", "--grid", "32", "--data", file.to_str().unwrap()]);
+            args.extend([
+                "--modulus",
+                "1",
+                "--grid",
+                "32",
+                "--data",
+                file.to_str().unwrap(),
+            ]);
             let (code, out, err) = persson(&args);
             assert_eq!(code, 2, "{name}: {err}");
             assert!(out.is_empty() && err.contains(line), "{name}: {err}");
@@ -415,21 +510,46 @@ mod cli {
         let hist = temp("hist.csv", "sigma,density\n0.001,5\n0.003,8\n");
         let files = ["area.svg", "hist.svg", "hist_log.svg"].map(|f| dir.join(f));
         let v = run_json(&[
-            "--modulus", "1", "--grid", "64", "--pressure", "0.001,0.004",
-            "--data-histogram", hist.to_str().unwrap(),
-            "--plot", files[0].to_str().unwrap(),
-            "--plot-histogram", files[1].to_str().unwrap(),
-            "--plot-histogram-log", files[2].to_str().unwrap(),
+            "--modulus",
+            "1",
+            "--grid",
+            "64",
+            "--pressure",
+            "0.001,0.004",
+            "--data-histogram",
+            hist.to_str().unwrap(),
+            "--plot",
+            files[0].to_str().unwrap(),
+            "--plot-histogram",
+            files[1].to_str().unwrap(),
+            "--plot-histogram-log",
+            files[2].to_str().unwrap(),
         ]);
         assert_eq!(v["data_histogram"]["density"][1].as_f64(), Some(8.0));
-        assert!(v["data_histogram"]["relative_l1_distance"].as_f64().unwrap() > 0.0);
+        assert!(
+            v["data_histogram"]["relative_l1_distance"]
+                .as_f64()
+                .unwrap()
+                > 0.0
+        );
         for f in &files {
             let svg = std::fs::read_to_string(f).unwrap();
-            assert!(svg.starts_with("<svg") && svg.contains("BEM"), "{}", f.display());
+            assert!(
+                svg.starts_with("<svg") && svg.contains("BEM"),
+                "{}",
+                f.display()
+            );
         }
         let bad = temp("bad_hist.csv", "sigma,density\n0.001,-5\n");
         let mut args: Vec<&str> = SURFACE.to_vec();
-        args.extend(["--modulus", "1", "--grid", "32", "--data-histogram", bad.to_str().unwrap()]);
+        args.extend([
+            "--modulus",
+            "1",
+            "--grid",
+            "32",
+            "--data-histogram",
+            bad.to_str().unwrap(),
+        ]);
         let (code, _, err) = persson(&args);
         assert_eq!(code, 2, "{err}");
         assert!(err.contains(":2:"), "{err}");
@@ -451,7 +571,9 @@ mod cli {
             assert!((got - want).abs() < super::PINNED_KAPPA, "{got} vs {want}");
             assert!(k["standard_error"].as_f64().unwrap() > 0.0);
         }
-        assert!((v["kappa_bush"].as_f64().unwrap() - (2.0 * std::f64::consts::PI).sqrt()).abs() < 1e-15);
+        assert!(
+            (v["kappa_bush"].as_f64().unwrap() - (2.0 * std::f64::consts::PI).sqrt()).abs() < 1e-15
+        );
         // q_s: what 16² resolves with 4 pixels per wavelength
         assert_eq!(v["q_s"].as_f64(), Some(4.0));
     }

@@ -44,7 +44,11 @@ impl SolverArgs {
     /// The solver options, warm-started along a list of pressures.
     pub fn options(&self) -> anyhow::Result<Options> {
         check::tolerance("tolerance", self.tolerance)?;
-        Ok(Options { tol: self.tolerance, max_iter: self.max_iterations, warm_start: true })
+        Ok(Options {
+            tol: self.tolerance,
+            max_iter: self.max_iterations,
+            warm_start: true,
+        })
     }
 }
 
@@ -63,7 +67,12 @@ struct HertzArgs {
     #[arg(long, default_value = "1", allow_negative_numbers = true)]
     radius: f64,
     /// Contact modulus E*.
-    #[arg(long, alias = "modulus", default_value = "1", allow_negative_numbers = true)]
+    #[arg(
+        long,
+        alias = "modulus",
+        default_value = "1",
+        allow_negative_numbers = true
+    )]
     contact_modulus: f64,
     /// Hertz contact radius a that sets the load (default 0.1 L).
     #[arg(long, allow_negative_numbers = true)]
@@ -93,7 +102,12 @@ struct RoughArgs {
     #[command(flatten)]
     material: MaterialArgs,
     /// Nominal (mean) pressure, same unit as the modulus; repeatable or comma-separated.
-    #[arg(long, value_delimiter = ',', allow_negative_numbers = true, required_unless_present = "example")]
+    #[arg(
+        long,
+        value_delimiter = ',',
+        allow_negative_numbers = true,
+        required_unless_present = "example"
+    )]
     pressure: Vec<f64>,
     /// Boundary condition of the elastic half-space: periodic (the grid is one period) or free.
     #[arg(long, default_value = "periodic")]
@@ -156,7 +170,12 @@ impl Observer for Solves<'_> {
     }
     fn solution(&mut self, k: usize, s: &Solution) -> persson::Result<()> {
         match self.fields {
-            Some(path) => write_npy(&indexed(path, self.several.then_some(k)), self.n, self.n, &s.pressure),
+            Some(path) => write_npy(
+                &indexed(path, self.several.then_some(k)),
+                self.n,
+                self.n,
+                &s.pressure,
+            ),
             None => Ok(()),
         }
     }
@@ -164,16 +183,28 @@ impl Observer for Solves<'_> {
 
 fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
     let pressures = super::args::pressures(&a.pressure, a.spectrum.example)?;
-    let options = RoughOptions { boundary: a.boundary, solver: a.solver.options()?, bins: a.histogram.as_ref().map(|_| a.bins) };
+    let options = RoughOptions {
+        boundary: a.boundary,
+        solver: a.solver.options()?,
+        bins: a.histogram.as_ref().map(|_| a.bins),
+    };
     let e_star = a.material.build(a.spectrum.example)?.contact_modulus();
     let (surface, source) = if let Some(path) = &a.surface {
         let size = a.size.context("--surface needs --size L")?;
-        (rough::read_surface(path, size, a.boundary)?, SurfaceSource::height_map(path))
+        (
+            rough::read_surface(path, size, a.boundary)?,
+            SurfaceSource::height_map(path),
+        )
     } else {
-        let n = a.grid.context("no surface: give --surface FILE --size L, or spectrum flags with --grid N")?;
+        let n = a
+            .grid
+            .context("no surface: give --surface FILE --size L, or spectrum flags with --grid N")?;
         check_memory(n, a.boundary)?;
         let spectrum = a.spectrum.build()?;
-        let size = check::positive("size", a.size.unwrap_or(std::f64::consts::TAU / spectrum.q_min()))?;
+        let size = check::positive(
+            "size",
+            a.size.unwrap_or(std::f64::consts::TAU / spectrum.q_min()),
+        )?;
         let s = synthesize(spectrum.as_ref(), n, size, a.seed)?;
         (s, SurfaceSource::synthesised(spectrum.as_ref(), a.seed)?)
     };
@@ -181,7 +212,12 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
         write_npy(path, surface.n, surface.n, &surface.heights)?;
     }
     let several = pressures.len() > 1;
-    let mut solves = Solves { bar: Progress::solves(pressures.len(), None), fields: a.pressure_field.as_deref(), several, n: surface.n };
+    let mut solves = Solves {
+        bar: Progress::solves(pressures.len(), None),
+        fields: a.pressure_field.as_deref(),
+        several,
+        n: surface.n,
+    };
     let report = rough::rough_contact(&surface, source, e_star, &pressures, &options, &mut solves);
     solves.bar.finish();
     let report = report?;
@@ -201,8 +237,13 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
 
 /// `dir/name.ext` → `dir/name_k.ext` when `k` is given.
 fn indexed(path: &Path, k: Option<usize>) -> PathBuf {
-    let Some(k) = k else { return path.to_path_buf() };
-    let stem = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
+    let Some(k) = k else {
+        return path.to_path_buf();
+    };
+    let stem = path
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_default();
     let name = match path.extension() {
         Some(e) => format!("{stem}_{k}.{}", e.to_string_lossy()),
         None => format!("{stem}_{k}"),

@@ -116,7 +116,12 @@ pub(super) struct MainArgs {
 #[derive(clap::Args, Debug)]
 pub(super) struct KappaArgs {
     /// Hurst exponents, comma-separated.
-    #[arg(long, value_delimiter = ',', required = true, allow_negative_numbers = true)]
+    #[arg(
+        long,
+        value_delimiter = ',',
+        required = true,
+        allow_negative_numbers = true
+    )]
     hurst: Vec<f64>,
     /// Lower cut-off q_l (sets L = 2π/q_l).
     #[arg(long = "q-l", default_value = "1", allow_negative_numbers = true)]
@@ -131,7 +136,12 @@ pub(super) struct KappaArgs {
     #[arg(long, default_value = "0.1", allow_negative_numbers = true)]
     rms_slope: f64,
     /// Contact modulus E*.
-    #[arg(long, alias = "modulus", default_value = "1", allow_negative_numbers = true)]
+    #[arg(
+        long,
+        alias = "modulus",
+        default_value = "1",
+        allow_negative_numbers = true
+    )]
     contact_modulus: f64,
     /// Nominal pressures (default: 8 with linear-law A/A0 ≈ 0.005 … 0.09).
     #[arg(long, value_delimiter = ',', allow_negative_numbers = true)]
@@ -174,7 +184,8 @@ fn with_progress<T>(run: impl FnOnce(&mut dyn FnMut(SweepProgress)) -> T) -> T {
     let out = run(&mut |p| {
         let log = (p.grid >= 512).then_some("persson compare");
         let what = || format!("{}² seed {} σ0 = {:e}", p.grid, p.seed, p.nominal_pressure);
-        bar.get_or_insert_with(|| Progress::solves(p.total, log)).update(p.done, &what, p.iteration)
+        bar.get_or_insert_with(|| Progress::solves(p.total, log))
+            .update(p.done, &what, p.iteration)
     });
     if let Some(b) = bar {
         b.finish();
@@ -189,11 +200,19 @@ fn compare(a: &MainArgs) -> anyhow::Result<()> {
     config.nominal_pressure = a.pressure.clone();
     config.sweep = a.bem.settings()?;
     config.data = a.data.as_deref().map(UserData::from_csv).transpose()?;
-    config.data_histogram = a.data_histogram.as_deref().map(UserHistogram::from_csv).transpose()?;
+    config.data_histogram = a
+        .data_histogram
+        .as_deref()
+        .map(UserHistogram::from_csv)
+        .transpose()?;
     config.histogram_pressure = a.histogram_pressure;
     config.bins = a.bins;
     let q_l = spectrum.q_min();
-    warn_clipped(&config.sweep.band(q_l, Some(spectrum.q_max()))?, q_l, &a.bem)?;
+    warn_clipped(
+        &config.sweep.band(q_l, Some(spectrum.q_max()))?,
+        q_l,
+        &a.bem,
+    )?;
     let report = with_progress(|p| validation::compare(spectrum.as_ref(), &config, p))?;
     super::compare_plot::comparison(a, &report)?;
     print(&report, &a.format)

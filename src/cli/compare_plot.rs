@@ -8,11 +8,17 @@ use super::compare::{KappaArgs, MainArgs};
 /// writable directory.
 pub fn check(a: &MainArgs) -> anyhow::Result<()> {
     a.plot.check()?;
-    for p in [&a.plot_histogram, &a.plot_histogram_log].into_iter().flatten() {
+    for p in [&a.plot_histogram, &a.plot_histogram_log]
+        .into_iter()
+        .flatten()
+    {
         #[cfg(feature = "plot")]
         persson::plot::Format::from_path(p)?;
         #[cfg(not(feature = "plot"))]
-        anyhow::bail!("{}: this persson was built without the `plot` feature", p.display());
+        anyhow::bail!(
+            "{}: this persson was built without the `plot` feature",
+            p.display()
+        );
         persson::io::check_writable(p)?;
     }
     Ok(())
@@ -53,20 +59,33 @@ pub fn comparison(a: &MainArgs, r: &Comparison) -> anyhow::Result<()> {
         let mut fig = persson::plot::area_vs_load(p, &curves, "unit of E*", Some(law))?;
         fig.title = "Contact area: theories, BEM and continuum limit".into();
         for g in &r.bem {
-            fig.push(Series::new(format!("BEM {}²", g.grid), xy(p, &g.contact_fraction), Style::Markers));
+            fig.push(Series::new(
+                format!("BEM {}²", g.grid),
+                xy(p, &g.contact_fraction),
+                Style::Markers,
+            ));
         }
         let a_inf: Vec<f64> = r.extrapolated.iter().map(|c| c.contact_fraction).collect();
         fig.push(Series::line_markers("BEM, N → ∞", xy(p, &a_inf)));
         if let Some(d) = &r.data {
-            fig.push(Series::markers("your data", xy(&d.nominal_pressure, &d.contact_fraction)));
+            fig.push(Series::markers(
+                "your data",
+                xy(&d.nominal_pressure, &d.contact_fraction),
+            ));
         }
         Ok(fig)
     })?;
-    let Some(d) = r.shown_distribution() else { return Ok(()) };
+    let Some(d) = r.shown_distribution() else {
+        return Ok(());
+    };
     for (path, log) in [(&a.plot_histogram, false), (&a.plot_histogram_log, true)] {
         let Some(path) = path else { continue };
         let label = "P(σ) (1/unit of σ)";
-        let y = if log { Axis::log(label) } else { Axis::linear(label) };
+        let y = if log {
+            Axis::log(label)
+        } else {
+            Axis::linear(label)
+        };
         let mut fig = Figure::new(
             format!("Pressure distribution at σ0 = {:.3e}", d.nominal_pressure),
             Axis::linear("contact pressure σ (unit of E*)"),
@@ -75,7 +94,10 @@ pub fn comparison(a: &MainArgs, r: &Comparison) -> anyhow::Result<()> {
         let bins: Vec<(f64, f64)> = d.bem.iter().map(|b| (b.sigma(), b.density)).collect();
         fig.push(Series::line_markers(format!("BEM {}²", d.grid), bins));
         let curve = &d.theory_curve;
-        fig.push(Series::line("Persson P(σ), flat start", xy(&curve.sigma, &curve.density)));
+        fig.push(Series::line(
+            "Persson P(σ), flat start",
+            xy(&curve.sigma, &curve.density),
+        ));
         if let Some(h) = &r.data_histogram {
             fig.push(Series::markers("your histogram", xy(&h.sigma, &h.density)));
         }
@@ -94,15 +116,36 @@ pub fn kappa(a: &KappaArgs, r: &KappaStudy) -> anyhow::Result<()> {
             Axis::linear("Hurst exponent H"),
             Axis::linear("κ"),
         );
-        let points: Vec<(f64, f64)> = r.points.iter().map(|p| (p.hurst, p.bem_extrapolated.kappa)).collect();
-        fig.push(Series::line_markers("BEM, N → ∞ (± standard error)", points).with_color(PALETTE[0]));
+        let points: Vec<(f64, f64)> = r
+            .points
+            .iter()
+            .map(|p| (p.hurst, p.bem_extrapolated.kappa))
+            .collect();
+        fig.push(
+            Series::line_markers("BEM, N → ∞ (± standard error)", points).with_color(PALETTE[0]),
+        );
         for p in &r.points {
-            let (k, se) = (p.bem_extrapolated.kappa, p.bem_extrapolated.standard_error.unwrap_or(0.0));
-            fig.push(Series::line("", vec![(p.hurst, k - se), (p.hurst, k + se)]).with_color(PALETTE[0]));
+            let (k, se) = (
+                p.bem_extrapolated.kappa,
+                p.bem_extrapolated.standard_error.unwrap_or(0.0),
+            );
+            fig.push(
+                Series::line("", vec![(p.hurst, k - se), (p.hurst, k + se)]).with_color(PALETTE[0]),
+            );
         }
         for (label, k, style, colour) in [
-            ("Bush et al.: √(2π)", r.kappa_bush, Style::Dashed, PALETTE[1]),
-            ("Persson: √(8/π)", r.kappa_persson, Style::Dotted, PALETTE[2]),
+            (
+                "Bush et al.: √(2π)",
+                r.kappa_bush,
+                Style::Dashed,
+                PALETTE[1],
+            ),
+            (
+                "Persson: √(8/π)",
+                r.kappa_persson,
+                Style::Dotted,
+                PALETTE[2],
+            ),
         ] {
             fig.push(Series::new(label, vec![(0.0, k), (1.0, k)], style).with_color(colour));
         }

@@ -159,7 +159,9 @@ pub fn compare(
     let gaps = sw.mean_separation();
     let cont = sw.extrapolate(config.sweep.alpha)?;
     let a_inf: Vec<f64> = cont.iter().map(|c| c.fit.value).collect();
-    let finest = means.last().ok_or_else(|| Error::invalid("grids", 0.0, "at least one"))?;
+    let finest = means
+        .last()
+        .ok_or_else(|| Error::invalid("grids", 0.0, "at least one"))?;
     let finest_grid = sweep_config.grids.last().copied().unwrap_or(0);
 
     // κ: theories (fitted on the same pressures, and closed), BEM grids, extrapolated.
@@ -172,12 +174,8 @@ pub fn compare(
             low_load_kappa: c.low_load_kappa,
         })
         .collect();
-    let bem_kappa = Fitted::from_result(sw.kappa(
-        e_star,
-        rms_slope,
-        KAPPA_MAX_FRACTION,
-        config.sweep.alpha,
-    ));
+    let bem_kappa =
+        Fitted::from_result(sw.kappa(e_star, rms_slope, KAPPA_MAX_FRACTION, config.sweep.alpha));
 
     // Pressure distributions: finest-grid histogram against flat-start P(σ) at ζ_max.
     let mut distributions = Vec::with_capacity(pressures.len());
@@ -353,7 +351,8 @@ pub fn compare(
 
 /// The single curve of a one-ζ stress computation.
 fn first<T>(mut v: Vec<T>) -> Result<T> {
-    v.pop().ok_or_else(|| Error::invalid("zeta", 0.0, "one stress curve"))
+    v.pop()
+        .ok_or_else(|| Error::invalid("zeta", 0.0, "one stress curve"))
 }
 
 /// Index of the pressure nearest `wanted` (log distance), else of the

@@ -114,11 +114,7 @@ impl Tabulate for HertzValidation {
         .scalar("tolerance", "tolerance ε", self.tolerance)
         .scalar("energy_error", "η (energy-norm error)", self.energy_error);
         if let Some(l) = self.energy_error_table {
-            t = t.scalar(
-                "energy_error_table",
-                "η in Molinari's lecture, Table 1",
-                l,
-            );
+            t = t.scalar("energy_error_table", "η in Molinari's lecture, Table 1", l);
         }
         if let Some(l) = self.energy_error_lecture {
             t = t.scalar(
@@ -128,12 +124,32 @@ impl Tabulate for HertzValidation {
             );
         }
         vec![t
-            .scalar("contact_radius", "contact radius a (fit)", self.contact_radius)
-            .scalar("contact_radius_error", "relative error of a", self.contact_radius_error)
-            .scalar("peak_pressure", "peak pressure p₀ (fit)", self.peak_pressure)
-            .scalar("peak_pressure_error", "relative error of p₀", self.peak_pressure_error)
+            .scalar(
+                "contact_radius",
+                "contact radius a (fit)",
+                self.contact_radius,
+            )
+            .scalar(
+                "contact_radius_error",
+                "relative error of a",
+                self.contact_radius_error,
+            )
+            .scalar(
+                "peak_pressure",
+                "peak pressure p₀ (fit)",
+                self.peak_pressure,
+            )
+            .scalar(
+                "peak_pressure_error",
+                "relative error of p₀",
+                self.peak_pressure_error,
+            )
             .scalar("contact_fraction", "A/A0", self.contact_fraction)
-            .scalar("iterations", "iterations", Cell::Int(self.iterations as i64))
+            .scalar(
+                "iterations",
+                "iterations",
+                Cell::Int(self.iterations as i64),
+            )
             .scalar("residual", "residual ε", self.residual)
             .scalar("seconds", "s", self.seconds)]
     }

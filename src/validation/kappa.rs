@@ -169,17 +169,31 @@ impl super::sweep::Sweep {
             .iter()
             .zip(&means)
             .map(|(g, m)| {
-                estimate(p, &g.contact_fraction, &m.0, contact_modulus, rms_slope, max_fraction)
-                    .map(|estimate| GridKappa {
-                        grid: g.grid,
-                        estimate,
-                    })
+                estimate(
+                    p,
+                    &g.contact_fraction,
+                    &m.0,
+                    contact_modulus,
+                    rms_slope,
+                    max_fraction,
+                )
+                .map(|estimate| GridKappa {
+                    grid: g.grid,
+                    estimate,
+                })
             })
             .collect::<Result<_>>()?;
         let cont = self.extrapolate(alpha)?;
         let mean_inf: Vec<f64> = cont.iter().map(|c| c.fit.value).collect();
         let per_seed = self.seed_limits(&cont)?;
-        let extrapolated = estimate(p, &per_seed, &mean_inf, contact_modulus, rms_slope, max_fraction)?;
+        let extrapolated = estimate(
+            p,
+            &per_seed,
+            &mean_inf,
+            contact_modulus,
+            rms_slope,
+            max_fraction,
+        )?;
         Ok(SweepKappa {
             per_grid,
             extrapolated,

@@ -132,7 +132,12 @@ pub fn kappa_study(
             progress(p)
         })?;
         let k = sw
-            .kappa(e_star, config.rms_slope, KAPPA_MAX_FRACTION, config.sweep.alpha)
+            .kappa(
+                e_star,
+                config.rms_slope,
+                KAPPA_MAX_FRACTION,
+                config.sweep.alpha,
+            )
             .map_err(|e| Error::Inconsistent {
                 name: format!("kappa at H = {h}"),
                 requirement: e.to_string(),
@@ -141,7 +146,11 @@ pub fn kappa_study(
             hurst: h,
             per_grid: k.per_grid,
             bem_extrapolated: k.extrapolated,
-            contact_fraction: sw.mean_contact_fraction().into_iter().map(|m| m.0).collect(),
+            contact_fraction: sw
+                .mean_contact_fraction()
+                .into_iter()
+                .map(|m| m.0)
+                .collect(),
         });
     }
     Ok(KappaStudy {
@@ -173,7 +182,11 @@ impl Tabulate for KappaStudy {
                 self.seeds.len()
             ),
         )
-        .scalar("kappa_persson", "Persson (2001): √(8/π)", self.kappa_persson)
+        .scalar(
+            "kappa_persson",
+            "Persson (2001): √(8/π)",
+            self.kappa_persson,
+        )
         .scalar("kappa_bush", "Bush et al. (1975): √(2π)", self.kappa_bush)
         .scalar("q_l", "q_l", self.q_l)
         .scalar("q_s", "q_s", self.band.q_s)

@@ -389,7 +389,10 @@ impl Tabulate for Comparison {
         let np = self.nominal_pressure.len();
         let mut theory = Table::new(
             "area_theory",
-            format!("Contact area A/A0 of the theories, ζ = {}", number(s.zeta, 6)),
+            format!(
+                "Contact area A/A0 of the theories, ζ = {}",
+                number(s.zeta, 6)
+            ),
         )
         .scalar("contact_modulus", "E*", self.contact_modulus)
         .scalar("q_l", "q_l", s.q_l)
@@ -411,7 +414,11 @@ impl Tabulate for Comparison {
         }
         for k in 0..np {
             let mut row = vec![Cell::Num(self.nominal_pressure[k])];
-            row.extend(self.theories.iter().map(|c| Cell::Num(c.contact_fraction[k])));
+            row.extend(
+                self.theories
+                    .iter()
+                    .map(|c| Cell::Num(c.contact_fraction[k])),
+            );
             theory.push(row);
         }
 
@@ -427,7 +434,10 @@ impl Tabulate for Comparison {
         .scalar("tolerance", "tolerance ε", self.tolerance)
         .column("nominal_pressure", "σ0");
         for g in &self.bem {
-            bem = bem.column(&format!("contact_fraction_{}", g.grid), &format!("N = {}", g.grid));
+            bem = bem.column(
+                &format!("contact_fraction_{}", g.grid),
+                &format!("N = {}", g.grid),
+            );
         }
         bem = bem
             .column("contact_fraction_extrapolated", "N → ∞")
@@ -488,7 +498,15 @@ impl Tabulate for Comparison {
             estimate_row(&mut kappa, "BEM, N → ∞", None, &k.extrapolated);
         }
         if let Some(Fitted::Fit(f)) = &self.kappa.data {
-            kappa_row(&mut kappa, "your data", None, f.kappa, f.standard_error, None, f.points);
+            kappa_row(
+                &mut kappa,
+                "your data",
+                None,
+                f.kappa,
+                f.standard_error,
+                None,
+                f.points,
+            );
         }
         let mut tables = vec![theory, bem, kappa];
 
@@ -525,17 +543,25 @@ impl Tabulate for Comparison {
             .column("bem_density", "P(σ) BEM")
             .column("theory_density", "P(σ) theory");
             for (b, th) in d.bem.iter().zip(&d.theory_density) {
-                t.push(vec![b.sigma_low.into(), b.sigma_high.into(), b.density.into(), (*th).into()]);
+                t.push(vec![
+                    b.sigma_low.into(),
+                    b.sigma_high.into(),
+                    b.density.into(),
+                    (*th).into(),
+                ]);
             }
             tables.push(t);
         }
 
         if let Some(d) = &self.data {
-            let mut t = Table::new("data_scores", "Your data: relative deviation of A/A0 from each reference")
-                .column("reference", "reference")
-                .column_digits("rms_relative_deviation", "rms", 3)
-                .column_digits("max_relative_deviation", "max", 3)
-                .column("points", "points");
+            let mut t = Table::new(
+                "data_scores",
+                "Your data: relative deviation of A/A0 from each reference",
+            )
+            .column("reference", "reference")
+            .column_digits("rms_relative_deviation", "rms", 3)
+            .column_digits("max_relative_deviation", "max", 3)
+            .column("points", "points");
             for s in &d.scores {
                 t.push(vec![
                     s.reference.as_str().into(),

@@ -195,7 +195,6 @@ pub fn nested_surfaces(
         .collect()
 }
 
-
 /// The q_s a sweep uses: the requested one, clipped to what the coarsest
 /// grid resolves ([`resolvable_q_max`]); the one rule of `persson compare`
 /// and `persson compare kappa`.
@@ -532,7 +531,9 @@ pub fn continuum_limit(
     let n: Vec<f64> = grids.iter().map(|&g| g as f64).collect();
     let seeds = a.first().map_or(0, Vec::len);
     let np = a.first().and_then(|s| s.first()).map_or(0, Vec::len);
-    if a.len() != grids.len() || a.iter().any(|g| g.len() != seeds || g.iter().any(|s| s.len() != np))
+    if a.len() != grids.len()
+        || a.iter()
+            .any(|g| g.len() != seeds || g.iter().any(|s| s.len() != np))
     {
         return Err(Error::Inconsistent {
             name: "contact fractions".into(),
@@ -606,8 +607,11 @@ impl Sweep {
                 cont.iter()
                     .enumerate()
                     .map(|(k, c)| {
-                        let curve: Vec<f64> =
-                            self.grids.iter().map(|g| g.contact_fraction[s][k]).collect();
+                        let curve: Vec<f64> = self
+                            .grids
+                            .iter()
+                            .map(|g| g.contact_fraction[s][k])
+                            .collect();
                         extrapolate(&n, &curve, Some(c.fit.alpha)).map(|e| e.value)
                     })
                     .collect()
