@@ -2,7 +2,7 @@
 
 use persson::validation::{Comparison, KappaStudy};
 
-use super::compare::{KappaArgs, MainArgs};
+use super::compare_args::{KappaArgs, MainArgs};
 
 /// Before computing: every plot file has a supported extension and a
 /// writable directory.

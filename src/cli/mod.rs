@@ -6,7 +6,11 @@ mod args;
 #[cfg(feature = "bem")]
 mod bem;
 #[cfg(feature = "bem")]
+mod bem_args;
+#[cfg(feature = "bem")]
 mod compare;
+#[cfg(feature = "bem")]
+mod compare_args;
 #[cfg(feature = "bem")]
 mod compare_plot;
 mod g;

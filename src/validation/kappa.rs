@@ -112,6 +112,7 @@ pub struct SweepKappa {
     pub extrapolated: KappaEstimate,
 }
 
+#[cfg(feature = "bem")]
 /// κ from per-seed curves `[seed][pressure]` and their mean.
 ///
 /// # Formula

@@ -11,7 +11,7 @@
 //!   ([`HertzValidation`], `persson bem hertz`).
 //!
 //! The pieces, usable alone: [`extrapolate`] (A(N) = A∞ + c N^{−α}),
-//! [`fit_kappa`], the resolution [`sweep`], [`UserData`] and [`score`].
+//! [`fit_kappa`], the resolution [`sweep()`], [`UserData`] and [`score`].
 //!
 //! # References
 //! Campañá & Müser, EPL 77, 38005 (2007), doi:10.1209/0295-5075/77/38005
