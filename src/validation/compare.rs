@@ -323,7 +323,6 @@ pub fn compare(
             rms_slope,
             zeta,
         },
-        band: resolved,
         size: sweep_config.size,
         grids: sweep_config.grids.clone(),
         seeds: sweep_config.seeds.clone(),

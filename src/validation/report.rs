@@ -6,7 +6,6 @@ use serde::Serialize;
 
 use super::data::Score;
 use super::kappa::{KappaEstimate, KappaFit, SweepKappa};
-use super::sweep::ResolvedBand;
 use crate::bem::HistogramBin;
 use crate::corrected::Theory;
 use crate::table::{number, Cell, Table, Tabulate};
@@ -299,9 +298,6 @@ pub struct Comparison {
     pub contact_modulus: f64,
     /// The spectrum compared.
     pub spectrum: ComparedSpectrum,
-    /// The q_s rule applied.
-    #[serde(skip)]
-    pub band: ResolvedBand,
     /// Side L = 2π/q_l.
     pub size: f64,
     /// Grids, ascending.
