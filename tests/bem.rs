@@ -463,11 +463,29 @@ mod common;
 mod cli {
     use crate::common::persson;
 
+    /// Every key of a JSON value is snake_case (the names table's rule).
+    fn snake_case_keys(v: &serde_json::Value) {
+        match v {
+            serde_json::Value::Object(m) => {
+                for (k, x) in m {
+                    let ok = k
+                        .chars()
+                        .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_');
+                    assert!(ok, "key {k}");
+                    snake_case_keys(x);
+                }
+            }
+            serde_json::Value::Array(a) => a.iter().for_each(snake_case_keys),
+            _ => {}
+        }
+    }
+
     #[test]
     fn hertz_json_has_the_issue_keys() {
         let (code, out, err) = persson(&["bem", "hertz", "--grid", "64", "--json"]);
         assert_eq!(code, 0, "{err}");
         let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+        snake_case_keys(&v);
         for key in [
             "nominal_pressure",
             "tolerance",
@@ -560,6 +578,7 @@ mod cli {
         let (code, out, err) = persson(&args);
         assert_eq!(code, 0, "{err}");
         let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+        snake_case_keys(&v);
         let pts = v["points"].as_array().unwrap();
         assert_eq!(pts.len(), 2);
         for p in pts {

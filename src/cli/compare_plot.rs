@@ -13,13 +13,15 @@ pub fn check(a: &MainArgs) -> anyhow::Result<()> {
         .flatten()
     {
         #[cfg(feature = "plot")]
-        persson::plot::Format::from_path(p)?;
+        {
+            persson::plot::Format::from_path(p)?;
+            persson::io::check_writable(p)?;
+        }
         #[cfg(not(feature = "plot"))]
         anyhow::bail!(
             "{}: this persson was built without the `plot` feature",
             p.display()
         );
-        persson::io::check_writable(p)?;
     }
     Ok(())
 }
