@@ -5,6 +5,27 @@
 //! [`solve`] is the one loop used by `persson bem rough`, by scenes and by the
 //! resolution sweep of [`crate::validation`]; [`rough_contact`] wraps it into
 //! the typed report that `persson bem rough` prints.
+//!
+//! # Example
+//! ```
+//! use persson::bem::histogram::integral;
+//! use persson::bem::rough::{solve, RoughOptions};
+//! use persson::bem::surface::synthesize;
+//! use persson::spectrum::{Amplitude, SelfAffine};
+//! # fn main() -> persson::Result<()> {
+//! let q_l = std::f64::consts::TAU; // L = 1
+//! let s = SelfAffine::new(q_l, 2.0 * q_l, 8.0 * q_l, 0.8, Amplitude::RmsSlope(0.1))?;
+//! let surface = synthesize(&s, 32, 1.0, 1)?;
+//! let options = RoughOptions { bins: Some(20), ..RoughOptions::default() };
+//! let points = solve(&surface, 1.0, &[0.002, 0.005], &options, &mut ())?;
+//! for p in &points {
+//!     // the histogram integrates to A/A0; the load is carried
+//!     let h = p.histogram.as_ref().unwrap();
+//!     assert!((integral(h) - p.contact_fraction).abs() < 1e-12);
+//! }
+//! assert!(points[0].contact_fraction < points[1].contact_fraction);
+//! # Ok(()) }
+//! ```
 
 use std::path::Path;
 

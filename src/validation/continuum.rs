@@ -11,6 +11,7 @@ pub const DEFAULT_ALPHA: f64 = 0.7;
 
 /// The continuum limit of a quantity computed at several resolutions.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[non_exhaustive]
 pub struct Extrapolation {
     /// A∞, the extrapolated value.
     pub value: f64,

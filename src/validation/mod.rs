@@ -13,6 +13,22 @@
 //! The pieces, usable alone: [`extrapolate`] (A(N) = A∞ + c N^{−α}),
 //! [`fit_kappa`], the resolution [`sweep()`], [`UserData`] and [`score`].
 //!
+//! # Example
+//! ```
+//! use persson::validation::{extrapolate, fit_kappa};
+//! # fn main() -> persson::Result<()> {
+//! // A(N) = 0.3 + 0.5 N^−0.7 on three grids: the continuum limit is 0.3
+//! let n = [64.0, 128.0, 256.0];
+//! let a: Vec<f64> = n.iter().map(|x: &f64| 0.3 + 0.5 * x.powf(-0.7)).collect();
+//! let e = extrapolate(&n, &a, Some(0.7))?;
+//! assert!((e.value - 0.3).abs() < 1e-12);
+//! // A/A0 = 2 σ0/(E* h'_rms) below A/A0 = 0.1: κ = 2
+//! let p = [1e-3, 2e-3, 4e-3];
+//! let frac: Vec<f64> = p.iter().map(|x| 2.0 * x / (1.0 * 0.1)).collect();
+//! assert!((fit_kappa(&p, &frac, 1.0, 0.1, 0.1)?.kappa - 2.0).abs() < 1e-12);
+//! # Ok(()) }
+//! ```
+//!
 //! # References
 //! Campañá & Müser, EPL 77, 38005 (2007), doi:10.1209/0295-5075/77/38005
 //! (continuum extrapolation, κ from the low-load regime); Persson, J. Chem.
