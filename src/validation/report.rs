@@ -487,11 +487,16 @@ impl Tabulate for Comparison {
                 ]),
             }
         }
-        if let Some(k) = self.kappa.bem.fit() {
-            for g in &k.per_grid {
-                estimate_row(&mut kappa, "BEM", Some(g.grid), &g.estimate);
+        match &self.kappa.bem {
+            Fitted::Fit(k) => {
+                for g in &k.per_grid {
+                    estimate_row(&mut kappa, "BEM", Some(g.grid), &g.estimate);
+                }
+                estimate_row(&mut kappa, "BEM, N → ∞", None, &k.extrapolated);
             }
-            estimate_row(&mut kappa, "BEM, N → ∞", None, &k.extrapolated);
+            Fitted::NotFitted { reason } => {
+                kappa = kappa.scalar("bem_not_fitted", "BEM not fitted", reason.as_str());
+            }
         }
         if let Some(Fitted::Fit(f)) = &self.kappa.data {
             kappa_row(
