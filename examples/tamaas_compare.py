@@ -9,7 +9,7 @@ Usage (Tamaas lives in a venv outside the repo):
     python3 -m venv /work/venv-tamaas && /work/venv-tamaas/bin/pip install tamaas
     cargo build --release
     OMP_NUM_THREADS=1 /work/venv-tamaas/bin/python examples/tamaas_compare.py \
-        [--grids 512 1024] [--tol 1e-10] [--bin target/release/persson]
+        [--grids 512 1024] [--tolerance 1e-10] [--bin target/release/persson]
 
 For each grid it runs the Hertz periodic case (a = 0.1 L, R = L = E* = 1) and
 a rough case (self-affine H = 0.8, rms slope 0.1, q_l = 2π/L, q_r = 4 q_l,
@@ -63,7 +63,7 @@ def compare(name, n, heights, pressure, ours_json, ours_p, tol):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--grids", type=int, nargs="+", default=[512, 1024])
-    ap.add_argument("--tol", type=float, default=1e-10)
+    ap.add_argument("--tolerance", type=float, default=1e-10)
     ap.add_argument("--bin", default="target/release/persson")
     a = ap.parse_args()
     if os.environ.get("OMP_NUM_THREADS") != "1":
@@ -79,9 +79,9 @@ def main():
         pf = os.path.join(tmp, "p_hertz.npy")
         load = 4 * 0.1 ** 3 / 3
         js = ours(a.bin, ["rough", "--surface", hz, "--size", "1", "--modulus", "1",
-                          "--pressure", repr(load), "--tol", repr(a.tol),
+                          "--pressure", repr(load), "--tolerance", repr(a.tolerance),
                           "--pressure-field", pf])
-        compare("hertz periodic", n, heights, load, js, np.load(pf), a.tol)
+        compare("hertz periodic", n, heights, load, js, np.load(pf), a.tolerance)
 
         # Rough: synthesised by persson, written to .npy, read by Tamaas.
         ql = 2 * math.pi
@@ -90,9 +90,9 @@ def main():
         js = ours(a.bin, ["rough", "--hurst", "0.8", "--q-l", repr(ql), "--q-r", repr(4 * ql),
                           "--q-s", repr(ql * n / 4), "--rms-slope", "0.1", "--size", "1",
                           "--grid", str(n), "--seed", "1", "--modulus", "1",
-                          "--pressure", "0.005", "--tol", repr(a.tol),
+                          "--pressure", "0.005", "--tolerance", repr(a.tolerance),
                           "--surface-out", surf, "--pressure-field", pf])
-        compare("rough H=0.8", n, np.load(surf), 0.005, js, np.load(pf), a.tol)
+        compare("rough H=0.8", n, np.load(surf), 0.005, js, np.load(pf), a.tolerance)
 
 
 if __name__ == "__main__":

@@ -153,9 +153,6 @@
 
 #[cfg(feature = "bem")]
 pub mod bem;
-pub mod compare;
-#[cfg(feature = "bem")]
-pub mod compare_bem;
 pub mod corrected;
 pub mod error;
 pub mod io;
@@ -172,6 +169,7 @@ pub mod spectrum;
 pub mod stress;
 pub mod table;
 pub mod theory;
+pub mod validation;
 
 pub use error::{Error, Result};
 pub use material::Material;

@@ -770,7 +770,7 @@ impl Scene {
                     Some(_) => Some(
                         pressure_histogram(&sol.pressure, bins)?
                             .into_iter()
-                            .map(|h| [h.pressure_low, h.pressure_high, h.density])
+                            .map(|h| [h.sigma_low, h.sigma_high, h.density])
                             .collect(),
                     ),
                     None => None,

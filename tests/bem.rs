@@ -7,7 +7,8 @@ use persson::bem::{hertz, Boundary, Control, Operator, Options, Solver, Surface}
 use persson::spectrum::{Amplitude, SelfAffine, Spectrum};
 use persson::Error;
 
-/// Lecture 000, Table 1: free-boundary η for 64² and 128².
+/// Molinari, EPFL lecture "From single asperity to multi asperity contact",
+/// Table 1: free-boundary η for 64² and 128².
 const LECTURE_FREE: [(usize, f64); 2] = [(64, 1.40e-2), (128, 4.08e-3)];
 
 /// Free boundary at 256²: we measure η = 1.035e-3 (Love cell kernel), above
@@ -26,6 +27,15 @@ const REFERENCE_REL_TOL: f64 = 1e-3;
 /// Load balance: the rescaling step makes Σp/N² exact up to rounding of a
 /// sum of N² terms.
 const LOAD_REL_TOL: f64 = 1e-12;
+
+/// Contact nodes of the seeded rough solve (seed 42, 128², σ0 = 0.002 E*,
+/// ε ≤ 1e-12), measured; A/A0 = nodes/128².
+const ROUGH_PINNED_CONTACT_NODES: f64 = 848.0;
+
+/// Nodes the pinned count may move by: rounding of the FFTs on another
+/// platform can flip a node at the edge of the contact (a pressure within
+/// rounding of zero); any change of the surface or the solver moves more.
+const ROUGH_PINNED_NODES: f64 = 2.0;
 
 fn tight() -> Options {
     Options {
@@ -231,7 +241,13 @@ fn rough_solve_invariants_and_reproducibility() {
         sol2.contact_fraction.to_bits()
     );
     assert_eq!(sol.pressure, sol2.pressure);
-    assert!(sol.contact_fraction > 0.01 && sol.contact_fraction < 0.2);
+    // No closed form for a rough contact: the node count of this seeded run
+    // (Pcg64Mcg surfaces are value-stable), within ROUGH_PINNED_NODES.
+    let nodes = sol.contact_fraction * (128 * 128) as f64;
+    assert!(
+        (nodes - ROUGH_PINNED_CONTACT_NODES).abs() <= ROUGH_PINNED_NODES,
+        "{nodes} nodes in contact, pinned {ROUGH_PINNED_CONTACT_NODES}"
+    );
 }
 
 #[test]
@@ -447,12 +463,32 @@ mod common;
 mod cli {
     use crate::common::persson;
 
+    /// Every key of a JSON value is snake_case (the names table's rule).
+    fn snake_case_keys(v: &serde_json::Value) {
+        match v {
+            serde_json::Value::Object(m) => {
+                for (k, x) in m {
+                    let ok = k
+                        .chars()
+                        .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_');
+                    assert!(ok, "key {k}");
+                    snake_case_keys(x);
+                }
+            }
+            serde_json::Value::Array(a) => a.iter().for_each(snake_case_keys),
+            _ => {}
+        }
+    }
+
     #[test]
     fn hertz_json_has_the_issue_keys() {
         let (code, out, err) = persson(&["bem", "hertz", "--grid", "64", "--json"]);
         assert_eq!(code, 0, "{err}");
         let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+        snake_case_keys(&v);
         for key in [
+            "nominal_pressure",
+            "tolerance",
             "energy_error",
             "contact_radius",
             "contact_radius_error",
@@ -464,8 +500,54 @@ mod cli {
         ] {
             assert!(v[key].is_number(), "{key} missing in {out}");
         }
-        // Lecture 000, Table 1 (64², free): 1.40e-2.
-        assert!(v["energy_error"].as_f64().unwrap() < 1.40e-2);
+        // Molinari's lecture, Table 1 (64², free): 1.40e-2, echoed and beaten.
+        assert_eq!(v["energy_error_table"].as_f64(), Some(1.40e-2));
+        let eta = v["energy_error"].as_f64().unwrap();
+        assert!(eta < 1.40e-2);
+        // η of this deterministic solve (ε ≤ 1e-10), measured: the solver
+        // stops far closer to its fixed point than HERTZ_ETA_REL_TOL.
+        assert!(
+            (eta / HERTZ_ETA_64 - 1.0).abs() < HERTZ_ETA_REL_TOL,
+            "η = {eta}"
+        );
+        // Closed forms at the defaults a = 0.1, R = L = E* = 1:
+        // σ0 = F/L² = 4 E* a³/(3 R), p₀ = 2 a E*/(π R).
+        let sigma0 = v["nominal_pressure"].as_f64().unwrap();
+        assert!((sigma0 - 4e-3 / 3.0).abs() < 1e-15, "{sigma0}");
+        let p0 = v["hertz_peak_pressure"].as_f64().unwrap();
+        assert!((p0 - 0.2 / std::f64::consts::PI).abs() < 1e-15, "{p0}");
+        // the fitted peak pressure is within its reported error of p₀
+        let fit = v["peak_pressure"].as_f64().unwrap();
+        let err = v["peak_pressure_error"].as_f64().unwrap();
+        assert!(((fit - p0).abs() / p0 - err).abs() < 1e-12);
+    }
+
+    /// η of `persson bem hertz --grid 64` (free, ε ≤ 1e-10), measured.
+    const HERTZ_ETA_64: f64 = 0.01127897643;
+
+    /// Relative tolerance on the pinned η: the value above is printed to 10
+    /// digits; the solve is deterministic.
+    const HERTZ_ETA_REL_TOL: f64 = 1e-8;
+
+    #[test]
+    fn help_shows_readable_defaults_and_the_names_table_flags() {
+        let (code, out, err) = persson(&["bem", "hertz", "--help"]);
+        assert_eq!(code, 0, "{err}");
+        for needle in [
+            "--tolerance",
+            "[default: 1e-10]",
+            "--max-iterations",
+            "--contact-modulus",
+        ] {
+            assert!(out.contains(needle), "{needle}: {out}");
+        }
+        assert!(
+            !out.contains("0.0000000001") && !out.contains("--tol ") && !out.contains("--modulus"),
+            "{out}"
+        );
+        // the old spelling of E* still works, hidden
+        let (code, _, err) = persson(&["bem", "hertz", "--grid", "16", "--modulus", "1", "--json"]);
+        assert_eq!(code, 0, "{err}");
     }
 
     #[test]
@@ -496,15 +578,27 @@ mod cli {
         let (code, out, err) = persson(&args);
         assert_eq!(code, 0, "{err}");
         let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+        snake_case_keys(&v);
         let pts = v["points"].as_array().unwrap();
         assert_eq!(pts.len(), 2);
         for p in pts {
-            for key in ["pressure", "contact_fraction", "iterations", "seconds"] {
+            for key in [
+                "nominal_pressure",
+                "contact_fraction",
+                "mean_separation",
+                "iterations",
+                "seconds",
+            ] {
                 assert!(p[key].is_number(), "{key} missing in {p}");
             }
         }
-        // Full contact at a high pressure is an answer.
+        assert_eq!(v["tolerance"].as_f64(), Some(1e-10));
+        assert_eq!(v["surface"]["spectrum"]["rms_slope"].as_f64(), Some(0.1));
+        // Full contact at a high pressure is an answer: no gap left anywhere
+        // (the gap on the contact is ≤ 1e-8 of the rms height, see above).
         assert_eq!(pts[1]["contact_fraction"].as_f64(), Some(1.0));
+        let h = v["rms_height"].as_f64().unwrap();
+        assert!(pts[1]["mean_separation"].as_f64().unwrap().abs() < 1e-8 * h);
         let (_, again, _) = persson(&args);
         let w: serde_json::Value = serde_json::from_str(&again).unwrap();
         assert_eq!(

@@ -3,6 +3,8 @@
 //! spanning decades. 128 cases of three solves each: ~0.5 s in release.
 #![cfg(feature = "bem")]
 
+use persson::bem::histogram::integral;
+use persson::bem::rough::{self, RoughOptions};
 use persson::bem::surface::synthesize;
 use persson::bem::{Boundary, Control, Operator, Options, Solver};
 use persson::spectrum::{Amplitude, SelfAffine};
@@ -113,6 +115,44 @@ proptest! {
             prop_assert!(sol.contact_fraction >= last_fraction,
                 "A/A0 fell from {last_fraction} to {} at p = {p:e}", sol.contact_fraction);
             last_fraction = sol.contact_fraction;
+        }
+    }
+}
+
+/// ∫ P dσ of a histogram against A/A0: a sum of at most 60 bins of counts
+/// over N² (rounding only).
+const HISTOGRAM_REL_TOL: f64 = 1e-12;
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// The rough-contact loop (used by `persson bem rough`, scenes and the
+    /// resolution sweep): each histogram integrates to its A/A0, spans
+    /// [0, max p] in the bins asked for, and the mean separation is the mean
+    /// gap, non-negative up to the gap tolerance.
+    #[test]
+    fn rough_loop_histograms_integrate_to_the_contact_fraction(c in case(), bins in 1usize..60) {
+        let q = std::f64::consts::TAU;
+        let s = SelfAffine::new(q, c.k_r * q, c.k_s * q, c.hurst, Amplitude::RmsSlope(c.rms_slope))
+            .unwrap();
+        let surf = synthesize(&s, c.grid, 1.0, c.seed).unwrap();
+        let options = RoughOptions {
+            boundary: c.boundary,
+            solver: Options { tol: TOL, warm_start: true, ..Options::default() },
+            bins: Some(bins),
+        };
+        let points = rough::solve(&surf, 1.0, &c.pressures, &options, &mut ()).unwrap();
+        prop_assert_eq!(points.len(), 3);
+        let sigma = surf.rms_height();
+        for (pt, &p) in points.iter().zip(&c.pressures) {
+            prop_assert_eq!(pt.nominal_pressure, p);
+            let h = pt.histogram.as_ref().unwrap();
+            prop_assert_eq!(h.len(), bins);
+            prop_assert_eq!(h[0].sigma_low, 0.0);
+            let total = integral(h);
+            prop_assert!((total - pt.contact_fraction).abs() <= HISTOGRAM_REL_TOL * pt.contact_fraction,
+                "∫P = {total} vs A/A0 = {}", pt.contact_fraction);
+            prop_assert!(pt.mean_separation >= -GAP_REL_TOL * sigma);
         }
     }
 }

@@ -1,18 +1,31 @@
-//! Theory against the BEM (issue 7): nested surfaces, the resolution sweep,
-//! its continuum limit, κ between Persson and Bush, histograms, and the
-//! `persson compare` CLI (JSON keys, user data, bad data files).
+//! Theory against the BEM: nested surfaces, the resolution sweep, its
+//! continuum limit, κ between Persson and Bush, histograms, the typed
+//! comparison, and the `persson compare` CLI (keys, user data, bad files).
 #![cfg(feature = "bem")]
 
-use persson::bem::Surface;
-use persson::compare_bem::{
-    default_pressures, interpolate_log, mean_and_error, nested_surfaces, resolution_grids,
-    resolvable_q_max, sweep, BandLimited, GridResult, Histogram, Sweep, SweepConfig,
-};
+use persson::bem::histogram::{integral, PressureCounts};
+use persson::bem::rough::{self, RoughOptions};
+use persson::bem::{pressure_histogram, Surface};
 use persson::kappa::Kappa;
 use persson::spectrum::{Amplitude, SelfAffine, Spectrum};
+use persson::validation::report::AreaTheory;
+use persson::validation::{
+    compare, continuum_limit, default_pressures, extrapolate, interpolate_log, mean_and_error,
+    nested_surfaces, resolution_grids, resolvable_q_max, resolve_q_s, sweep, BandLimited,
+    ComparisonConfig, SweepConfig, SweepSettings, UserData,
+};
 
 /// Rounding of sums over ≤ 256² values and of a few FFTs.
 const ROUNDING: f64 = 1e-12;
+
+/// Pinned values from a seeded run (Pcg64Mcg surfaces are value-stable, the
+/// solver deterministic): a contact fraction is a count of nodes over N², so
+/// rounding on another platform can move at most a node or two at the edge
+/// of the contact. κ is a ratio of sums of such fractions over six
+/// pressures; two nodes of 128² (1.2e-4 in A at A ≈ 0.01 … 0.09) move κ by
+/// at most ~1e-2 there. Any change of the sweep, the fits or the
+/// extrapolation moves these values by more.
+const PINNED_KAPPA: f64 = 1e-2;
 
 /// H = 0.8 surface with a roll-off at 2 q_l, q_s = `q_s` q_l, rms slope 0.1, q_l = 1.
 fn surface_spectrum(q_s: f64) -> SelfAffine {
@@ -41,6 +54,25 @@ fn grids_halve_the_finest() {
     assert!(resolution_grids(256, 1).is_err());
     // 4 pixels per shortest wavelength on 64²: q_s ≤ 16 q_l
     assert_eq!(resolvable_q_max(1.0, 64, 4.0), 16.0);
+}
+
+#[test]
+fn one_q_s_rule_for_compare_and_the_kappa_study() {
+    // 16² coarsest, 4 pixels per wavelength: q_s ≤ 4 q_l
+    let clipped = resolve_q_s(1.0, Some(8.0), 16, 4.0).unwrap();
+    assert_eq!((clipped.q_s, clipped.clipped), (4.0, true));
+    assert_eq!(clipped.q_s_requested, Some(8.0));
+    let kept = resolve_q_s(1.0, Some(3.0), 16, 4.0).unwrap();
+    assert_eq!((kept.q_s, kept.clipped), (3.0, false));
+    let none = resolve_q_s(2.0, None, 16, 4.0).unwrap();
+    assert_eq!((none.q_s, none.clipped), (8.0, false));
+    assert!(resolve_q_s(1.0, None, 16, 0.0).is_err());
+    // the settings' grids feed the same rule
+    let s = SweepSettings {
+        grid: 64,
+        ..SweepSettings::default()
+    };
+    assert_eq!(s.band(1.0, Some(8.0)).unwrap(), clipped);
 }
 
 #[test]
@@ -82,27 +114,29 @@ fn nested_surfaces_are_one_band_limited_surface() {
 }
 
 #[test]
-fn histogram_integrates_to_the_contact_fraction() {
-    let mut h = Histogram::new(1.0);
+fn histograms_integrate_to_the_contact_fraction() {
+    // 5 contact nodes of 8, then 8 nodes out of contact: 5/16 over both
     let field = [0.0, 0.5, 1.2, 3.7, 0.0, 0.0, 2.2, 0.01];
+    let mut h = PressureCounts::new(1.0);
     h.add(&field);
     h.add(&[0.0; 8]);
-    let (lo, hi, d) = h.density(5);
-    let total: f64 = d
-        .iter()
-        .zip(lo.iter().zip(&hi))
-        .map(|(p, (l, u))| p * (u - l))
-        .sum();
-    // 5 contact nodes of 16
-    assert!((total - 5.0 / 16.0).abs() < ROUNDING);
-    assert!(*hi.last().unwrap() >= 3.7);
+    let bins = h.bins(5);
+    assert!((integral(&bins) - 5.0 / 16.0).abs() < ROUNDING);
+    assert!(bins.last().unwrap().sigma_high >= 3.7);
+    // fine bins of σ0/200 = 0.005: 3.7 lies in fine bin 740, 5 bins of 149
+    assert!((bins[0].sigma_high - 149.0 * 0.005).abs() < ROUNDING);
+    // one field, equal bins up to its maximum: 5 of 8 nodes
+    let one = pressure_histogram(&field, 4).unwrap();
+    assert!((integral(&one) - 5.0 / 8.0).abs() < ROUNDING);
+    assert_eq!(one[3].sigma_high, 3.7);
+    assert!(pressure_histogram(&field, 0).is_err());
 }
 
 #[test]
 fn helpers() {
     let (m, se) = mean_and_error(&[1.0, 2.0, 3.0]);
-    assert!((m - 2.0).abs() < ROUNDING && (se - (1.0f64 / 3.0).sqrt()).abs() < ROUNDING);
-    assert_eq!(mean_and_error(&[4.0]), (4.0, 0.0));
+    assert!((m - 2.0).abs() < ROUNDING && (se.unwrap() - (1.0f64 / 3.0).sqrt()).abs() < ROUNDING);
+    assert_eq!(mean_and_error(&[4.0]), (4.0, None));
     // exact on a power law
     let x = [1.0, 2.0, 4.0];
     let y: Vec<f64> = x.iter().map(|v: &f64| 3.0 * v.powf(1.5)).collect();
@@ -114,61 +148,63 @@ fn helpers() {
     assert!((p[0] - 0.001).abs() < ROUNDING && (p[7] - 0.03).abs() < ROUNDING);
 }
 
-/// A sweep following A_s(N) = A∞,s + c N^−0.7 exactly, two seeds.
-fn synthetic_sweep() -> Sweep {
+#[test]
+fn continuum_limit_recovers_an_exact_law_and_the_seed_scatter() {
+    // A_s(N) = A∞,s + 0.5 N^−0.7 exactly, two seeds, two pressures
     let grids = [64usize, 128, 256];
     let a_inf = [[0.30, 0.10], [0.32, 0.12]]; // [seed][pressure]
-    Sweep {
-        pressures: vec![1e-2, 1e-3],
-        grids: grids
-            .iter()
-            .map(|&g| GridResult {
-                grid: g,
-                contact_fraction: a_inf
-                    .iter()
-                    .map(|s| s.iter().map(|a| a + 0.5 * (g as f64).powf(-0.7)).collect())
-                    .collect(),
-                mean_gap: vec![vec![0.0; 2]; 2],
-                surface_rms_slope: vec![0.1; 2],
-                iterations: 0,
-                residual: 0.0,
-                seconds: 0.0,
-            })
-            .collect(),
-        histograms: Vec::new(),
-    }
-}
-
-#[test]
-fn sweep_extrapolation_recovers_the_law_and_the_seed_scatter() {
-    let sw = synthetic_sweep();
+    let a: Vec<Vec<Vec<f64>>> = grids
+        .iter()
+        .map(|&g| {
+            a_inf
+                .iter()
+                .map(|s| s.iter().map(|x| x + 0.5 * (g as f64).powf(-0.7)).collect())
+                .collect()
+        })
+        .collect();
     for alpha in [Some(0.7), None] {
-        let c = sw.extrapolate(alpha).unwrap();
+        let c = continuum_limit(&grids, &a, alpha).unwrap();
         for (k, want) in [0.31, 0.11].into_iter().enumerate() {
             assert!((c[k].fit.value - want).abs() < ROUNDING, "{:?}", c[k]);
             assert!((c[k].fit.alpha - 0.7).abs() < 1e-9);
             // two seeds 0.02 apart: standard error of the mean 0.01
-            assert!((c[k].seed_scatter - 0.01).abs() < ROUNDING);
+            assert!((c[k].seed_scatter.unwrap() - 0.01).abs() < ROUNDING);
             // α fixed: the exact law leaves no residual; α fitted from three
-            // grids: the fit's uncertainty is the extrapolation step c N^−α
+            // grids: no standard error, the step c N^−α stands in for it
             let fit = if alpha.is_some() {
                 0.0
             } else {
                 0.5 * 256f64.powf(-0.7)
             };
-            assert!((c[k].fit.uncertainty - fit).abs() < 1e-9, "{:?}", c[k]);
-            assert!((c[k].uncertainty - fit.hypot(0.01)).abs() < 1e-9);
+            assert!((c[k].fit.uncertainty() - fit).abs() < 1e-9, "{:?}", c[k]);
+            assert_eq!(c[k].fit.standard_error.is_some(), alpha.is_some());
+            assert!((c[k].standard_error - fit.hypot(0.01)).abs() < 1e-9);
         }
     }
+    assert!(continuum_limit(&grids[..2], &a, None).is_err());
 }
 
 #[test]
-fn bem_sweep_is_seed_reproducible_and_consistent() {
+fn bem_sweep_is_the_rough_loop_and_its_histograms_integrate() {
     let s = surface_spectrum(4.0);
     let cfg = config(64, 1);
     let p = [2e-3, 5e-3];
     let a = sweep(&s, 1.0, &p, &cfg, &mut |_| {}).unwrap();
     let b = sweep(&s, 1.0, &[5e-3, 2e-3], &cfg, &mut |_| {}).unwrap();
+    // the sweep is the rough-contact loop on the nested surfaces, pressures
+    // ascending: bit for bit
+    let surfaces = nested_surfaces(&s, &cfg.grids, cfg.size, 1).unwrap();
+    let options = RoughOptions {
+        solver: cfg.options,
+        ..RoughOptions::default()
+    };
+    for (g, surf) in a.grids.iter().zip(&surfaces) {
+        let pts = rough::solve(surf, 1.0, &p, &options, &mut ()).unwrap();
+        for (k, pt) in pts.iter().enumerate() {
+            assert_eq!(g.contact_fraction[0][k], pt.contact_fraction);
+            assert_eq!(g.mean_separation[0][k], pt.mean_separation);
+        }
+    }
     for (ga, gb) in a.grids.iter().zip(&b.grids) {
         // the same solves in another order: warm start changes only the path
         let (x, y) = (ga.contact_fraction[0][0], gb.contact_fraction[0][1]);
@@ -177,39 +213,138 @@ fn bem_sweep_is_seed_reproducible_and_consistent() {
             "{x} vs {y}"
         );
         assert!(ga.contact_fraction[0][0] < ga.contact_fraction[0][1]);
-        assert!(ga.mean_gap[0][0] > ga.mean_gap[0][1] && ga.mean_gap[0][1] > 0.0);
+        assert!(
+            ga.mean_separation[0][0] > ga.mean_separation[0][1] && ga.mean_separation[0][1] > 0.0
+        );
     }
     // the finest histogram integrates to the finest contact fraction
     for (k, h) in a.histograms.iter().enumerate() {
-        let (lo, hi, d) = h.density(30);
-        let total: f64 = d
-            .iter()
-            .zip(lo.iter().zip(&hi))
-            .map(|(p, (l, u))| p * (u - l))
-            .sum();
+        let total = integral(&h.bins(30));
         let want = a.grids[2].contact_fraction[0][k];
         assert!((total - want).abs() < ROUNDING, "{total} vs {want}");
     }
 }
 
-/// H = 0.8, q_r = 2 q_l, q_s = 16 q_l (4 pixels per wavelength on 64²), two
-/// seeds: κ of the 256² grid and of the continuum limit lie between
-/// Persson's √(8/π) and Bush's √(2π) (seed 002: numerical κ ≈ 2). Measured
-/// (release, 2 cores): ~2 s; κ_256 = 2.30, κ_∞ = 2.15 with 4 seeds.
+/// H = 0.8, q_r = 2 q_l, q_s = 8 q_l (4 pixels per wavelength on 32²), two
+/// seeds, grids 32², 64², 128²: κ of the continuum limit lies between
+/// Persson's √(8/π) and Bush's √(2π) (Campañá & Müser 2007: numerical κ ≈ 2),
+/// the grids overestimate the area (κ falls as N grows: 2.91, 2.70, 2.57,
+/// above Bush's 2.51 here, κ∞ = 2.20), and the values are the pinned ones of
+/// this seeded run (measured: 0.5 s in release on 2 cores).
 #[test]
-fn bem_kappa_at_256_lies_between_persson_and_bush() {
-    let s = surface_spectrum(16.0);
-    let slope = s.rms_slope(1.0, 16.0).unwrap().value;
+fn bem_kappa_between_persson_and_bush_and_pinned() {
+    let s = surface_spectrum(8.0);
+    let slope = s.rms_slope(1.0, 8.0).unwrap().value;
     let p = default_pressures(1.0, slope, 6, 0.01, 0.09);
-    let sw = sweep(&s, 1.0, &p, &config(256, 2), &mut |_| {}).unwrap();
+    let sw = sweep(&s, 1.0, &p, &config(128, 2), &mut |_| {}).unwrap();
     let k = sw.kappa(1.0, slope, 0.1, Some(0.7)).unwrap();
     let (persson, bush) = (Kappa::Persson.value(), Kappa::Bush.value());
-    let k256 = k.per_grid[2].1.kappa;
-    assert!(persson < k256 && k256 < bush, "{k:?}");
+    let per: Vec<f64> = k.per_grid.iter().map(|g| g.estimate.kappa).collect();
     let ki = k.extrapolated.kappa;
     assert!(persson < ki && ki < bush, "{k:?}");
-    // convergence from above: coarse grids overestimate the area
-    assert!(k.per_grid[0].1.kappa > k256 && k256 > ki, "{k:?}");
+    assert!(per[0] > per[1] && per[1] > per[2] && per[2] > ki, "{k:?}");
+    let pinned = [PIN_32, PIN_64, PIN_128, PIN_INF];
+    for (got, want) in per.iter().chain([&ki]).zip(pinned) {
+        assert!(
+            (got - want).abs() < PINNED_KAPPA,
+            "κ = {got} (pinned {want}): {k:?}"
+        );
+    }
+    // two seeds: a standard error over seeds, combined with the fit's
+    let e = k.extrapolated;
+    assert!(e.seed_scatter.is_some() && e.standard_error.unwrap() >= e.seed_scatter.unwrap());
+}
+
+/// κ of the seeded run above, per grid and extrapolated.
+const PIN_32: f64 = 2.91315879826107;
+const PIN_64: f64 = 2.6952900432334395;
+const PIN_128: f64 = 2.571132005103829;
+const PIN_INF: f64 = 2.2036261970569164;
+
+/// The typed comparison on a small case: its parts obey the identities that
+/// tie them to the closed forms and to each other.
+#[test]
+fn comparison_parts_agree_with_closed_forms_and_each_other() {
+    let s = surface_spectrum(8.0);
+    let mut cfg = ComparisonConfig::new(1.0);
+    cfg.nominal_pressure = vec![5e-4, 1e-3, 4e-3];
+    cfg.sweep = SweepSettings {
+        grid: 64,
+        seeds: vec![1, 2],
+        ..SweepSettings::default()
+    };
+    let r = compare(&s, &cfg, &mut |_| {}).unwrap();
+    // q_s = 8 is not resolved by 16² with 4 pixels per wavelength: clipped to 4
+    assert!(r.spectrum.clipped && r.spectrum.q_s == 4.0 && r.spectrum.zeta == 4.0);
+    let slope = r.spectrum.rms_slope;
+    // the linear laws are closed forms: A = κ σ0/(E* h'_rms)
+    for (t, kappa) in [
+        (AreaTheory::PerssonLinear, Kappa::Persson.value()),
+        (AreaTheory::BushLinear, Kappa::Bush.value()),
+    ] {
+        let c = r.theory(t).unwrap();
+        for (a, p) in c.contact_fraction.iter().zip(&r.nominal_pressure) {
+            assert!(
+                (a - kappa * p / slope).abs() < ROUNDING * a.max(1e-3),
+                "{t:?}"
+            );
+        }
+    }
+    // κ fitted to a linear law is its κ
+    for tk in &r.kappa.theories {
+        if matches!(
+            tk.theory,
+            AreaTheory::PerssonLinear | AreaTheory::BushLinear
+        ) {
+            let f = tk.fit.fit().unwrap();
+            assert!((f.kappa - tk.low_load_kappa).abs() < 1e-12, "{tk:?}");
+        }
+    }
+    // the continuum limit is the extrapolation of the seed-averaged A(N)
+    let n: Vec<f64> = r.grids.iter().map(|&g| g as f64).collect();
+    for (k, c) in r.extrapolated.iter().enumerate() {
+        let a: Vec<f64> = r.bem.iter().map(|g| g.contact_fraction[k]).collect();
+        let e = extrapolate(&n, &a, Some(0.7)).unwrap();
+        assert!((c.contact_fraction - e.value).abs() < ROUNDING);
+        assert!(c.standard_error >= e.uncertainty());
+    }
+    // histograms integrate to the finest grid's A/A0 (mean over seeds)
+    let finest = r.bem.last().unwrap();
+    for (k, d) in r.pressure_distribution.iter().enumerate() {
+        assert!((integral(&d.bem) - finest.contact_fraction[k]).abs() < ROUNDING);
+        assert_eq!(d.bem_contact_fraction, finest.contact_fraction[k]);
+        assert_eq!(d.theory_density.len(), d.bem.len());
+    }
+    // one mean separation, the finest grid's
+    assert_eq!(r.mean_separation.bem, finest.mean_separation);
+    // ū falls with load, in theory and in the BEM
+    for u in [&r.mean_separation.bem, &r.mean_separation.theory] {
+        assert!(u.windows(2).all(|w| w[0] > w[1]), "{u:?}");
+    }
+    // data equal to a theory score zero against it
+    let original = r
+        .theory(AreaTheory::Original)
+        .unwrap()
+        .contact_fraction
+        .clone();
+    cfg.data = Some(UserData {
+        nominal_pressure: r.nominal_pressure.clone(),
+        contact_fraction: original,
+    });
+    let w = compare(&s, &cfg, &mut |_| {}).unwrap();
+    let d = w.data.as_ref().unwrap();
+    let of = |name: &str| {
+        d.scores
+            .iter()
+            .find(|s| s.reference == name)
+            .unwrap()
+            .score
+            .clone()
+    };
+    assert_eq!(of("original").max_relative_deviation, 0.0);
+    assert!(of("bush-linear").max_relative_deviation > 0.3);
+    // the sweep did not change with the data
+    assert_eq!(w.extrapolated, r.extrapolated);
 }
 
 mod common;
@@ -248,91 +383,83 @@ mod cli {
         p
     }
 
+    /// Every key of a JSON value is snake_case.
+    fn snake_case_keys(v: &serde_json::Value, path: &str) {
+        match v {
+            serde_json::Value::Object(m) => {
+                for (k, x) in m {
+                    assert!(
+                        k.chars()
+                            .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_'),
+                        "key {path}.{k}"
+                    );
+                    snake_case_keys(x, &format!("{path}.{k}"));
+                }
+            }
+            serde_json::Value::Array(a) => a.iter().for_each(|x| snake_case_keys(x, path)),
+            _ => {}
+        }
+    }
+
     #[test]
-    fn json_has_the_documented_keys() {
-        let v = run_json(&[
+    fn json_keys_and_the_text_tables() {
+        let args = [
             "--modulus",
             "1",
             "--pressure",
             "0.001,0.003",
             "--grid",
             "128",
-        ]);
+        ];
+        let v = run_json(&args);
+        snake_case_keys(&v, "");
         let np = 2;
-        assert_eq!(v["pressures"].as_array().unwrap().len(), np);
-        for t in [
-            "original",
-            "bush_linear",
-            "persson_linear",
-            "yang-persson",
-            "wang-muser",
-            "xu",
-        ] {
-            assert_eq!(v["theories"][t].as_array().unwrap().len(), np, "{t}");
-        }
-        let bem = v["bem"].as_array().unwrap();
-        let grids: Vec<u64> = bem.iter().map(|b| b["grid"].as_u64().unwrap()).collect();
+        assert_eq!(v["nominal_pressure"].as_array().unwrap().len(), np);
+        let theories: Vec<&str> = v["theories"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|t| t["theory"].as_str().unwrap())
+            .collect();
+        assert_eq!(
+            theories,
+            [
+                "original",
+                "bush-linear",
+                "persson-linear",
+                "yang-persson",
+                "wang-muser",
+                "xu"
+            ]
+        );
+        let grids: Vec<u64> = v["bem"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|b| b["grid"].as_u64().unwrap())
+            .collect();
         assert_eq!(grids, vec![32, 64, 128]);
-        for b in bem {
-            assert_eq!(b["contact_fraction"].as_array().unwrap().len(), np);
-        }
-        assert_eq!(
-            v["extrapolated"]["contact_fraction"]
-                .as_array()
-                .unwrap()
-                .len(),
-            np
-        );
-        assert_eq!(
-            v["extrapolated"]["uncertainty"].as_array().unwrap().len(),
-            np
-        );
-        assert!(v["kappa"]["bem_extrapolated"].as_f64().unwrap() > 0.0);
-        assert!(v["kappa"]["original"].as_f64().unwrap() > 0.0);
+        assert_eq!(v["extrapolated"].as_array().unwrap().len(), np);
         assert_eq!(v["mean_separation"]["bem"].as_array().unwrap().len(), np);
-        assert_eq!(v["mean_separation"]["theory"].as_array().unwrap().len(), np);
-        let d = &v["pressure_distribution"][0];
-        let bins = d["bins"].as_array().unwrap().len();
-        assert_eq!(d["bem_density"].as_array().unwrap().len(), bins);
-        assert_eq!(d["theory_density"].as_array().unwrap().len(), bins);
-    }
-
-    #[test]
-    fn user_data_equal_to_the_theory_scores_zero() {
-        // q_s = 8 is resolved on 32² (--grid 128): no clipping, same spectrum.
-        let v = run_json(&[
-            "--modulus",
-            "1",
-            "--pressure",
-            "0.0005,0.001,0.004",
-            "--grid",
-            "128",
-        ]);
-        let p = v["pressures"].as_array().unwrap();
-        let a = v["theories"]["original"].as_array().unwrap();
-        let mut csv = String::from("pressure,contact_fraction\n");
-        for (p, a) in p.iter().zip(a) {
-            csv.push_str(&format!(
-                "{:e},{:e}\n",
-                p.as_f64().unwrap(),
-                a.as_f64().unwrap()
-            ));
+        // one seed: no standard error over seeds anywhere
+        assert!(v["bem"][0]["seed_scatter"][0].is_null());
+        assert!(v["kappa"]["bem"]["extrapolated"]["seed_scatter"].is_null());
+        assert_eq!(v["spectrum"]["q_s"].as_f64(), Some(8.0));
+        // the text: several short tables, no Rust forms
+        let text_args: Vec<&str> = SURFACE[..11].iter().chain(&args).copied().collect();
+        let (code, text, err) = persson(&text_args);
+        assert_eq!(code, 0, "{err}");
+        for title in [
+            "of the theories",
+            "of the FFT-BEM",
+            "κ of A/A0",
+            "Mean separation",
+            "Pressure distribution",
+        ] {
+            assert!(text.contains(title), "{title}: {text}");
         }
-        let file = temp("theory.csv", &csv);
-        let w = run_json(&[
-            "--modulus",
-            "1",
-            "--grid",
-            "128",
-            "--data",
-            file.to_str().unwrap(),
-        ]);
-        // the data's pressures became the command's
-        assert_eq!(w["pressures"], v["pressures"]);
-        let s = &w["data"]["scores"];
-        assert_eq!(s["original"]["max_abs"].as_f64().unwrap(), 0.0, "{s}");
-        assert!(s["bush_linear"]["max_abs"].as_f64().unwrap() > 0.3);
-        assert!(s["bem_extrapolated"]["rms"].as_f64().unwrap() > 0.0);
+        assert!(!text.contains("Some(") && !text.contains("None"), "{text}");
+        assert!(text.lines().all(|l| l.chars().count() <= 120), "{text}");
     }
 
     #[test]
@@ -340,27 +467,27 @@ mod cli {
         for (name, text, line) in [
             (
                 "missing.csv",
-                "pressure,contact_fraction\n0.001,0.1\n0.002\n",
+                "nominal_pressure,contact_fraction\n0.001,0.1\n0.002\n",
                 ":3:",
             ),
             (
                 "text.csv",
-                "pressure,contact_fraction\n0.001,0.1\n0.002,abc\n",
+                "nominal_pressure,contact_fraction\n0.001,0.1\n0.002,abc\n",
                 ":3:",
             ),
             (
                 "negative.csv",
-                "pressure,contact_fraction\n-0.001,0.1\n",
+                "nominal_pressure,contact_fraction\n-0.001,0.1\n",
                 ":2:",
             ),
             (
                 "above.csv",
-                "pressure,contact_fraction\n0.001,0.1\n0.002,1.5\n",
+                "nominal_pressure,contact_fraction\n0.001,0.1\n0.002,1.5\n",
                 ":3:",
             ),
         ] {
             let file = temp(name, text);
-            let mut args: Vec<&str> = super::cli::SURFACE.to_vec();
+            let mut args: Vec<&str> = SURFACE.to_vec();
             args.extend([
                 "--modulus",
                 "1",
@@ -380,7 +507,7 @@ mod cli {
     #[test]
     fn plots_and_user_histogram() {
         let dir = temp("dummy", "").with_file_name("");
-        let hist = temp("hist.csv", "pressure,density\n0.001,5\n0.003,8\n");
+        let hist = temp("hist.csv", "sigma,density\n0.001,5\n0.003,8\n");
         let files = ["area.svg", "hist.svg", "hist_log.svg"].map(|f| dir.join(f));
         let v = run_json(&[
             "--modulus",
@@ -398,7 +525,13 @@ mod cli {
             "--plot-histogram-log",
             files[2].to_str().unwrap(),
         ]);
-        assert_eq!(v["data_histogram"]["densities"][1].as_f64(), Some(8.0));
+        assert_eq!(v["data_histogram"]["density"][1].as_f64(), Some(8.0));
+        assert!(
+            v["data_histogram"]["relative_l1_distance"]
+                .as_f64()
+                .unwrap()
+                > 0.0
+        );
         for f in &files {
             let svg = std::fs::read_to_string(f).unwrap();
             assert!(
@@ -407,7 +540,7 @@ mod cli {
                 f.display()
             );
         }
-        let bad = temp("bad_hist.csv", "pressure,density\n0.001,-5\n");
+        let bad = temp("bad_hist.csv", "sigma,density\n0.001,-5\n");
         let mut args: Vec<&str> = SURFACE.to_vec();
         args.extend([
             "--modulus",
@@ -429,15 +562,28 @@ mod cli {
         ]);
         assert_eq!(code, 0, "{err}");
         let v: serde_json::Value = serde_json::from_str(&out).unwrap();
-        let rows = v["hurst"].as_array().unwrap();
+        let rows = v["points"].as_array().unwrap();
         assert_eq!(rows.len(), 2);
-        for r in rows {
+        let pinned = [KAPPA_H05, KAPPA_H08];
+        for (r, want) in rows.iter().zip(pinned) {
             let k = &r["bem_extrapolated"];
-            assert!(k["kappa"].as_f64().unwrap() > 0.0);
+            let got = k["kappa"].as_f64().unwrap();
+            assert!((got - want).abs() < super::PINNED_KAPPA, "{got} vs {want}");
             assert!(k["standard_error"].as_f64().unwrap() > 0.0);
         }
         assert!(
             (v["kappa_bush"].as_f64().unwrap() - (2.0 * std::f64::consts::PI).sqrt()).abs() < 1e-15
         );
+        // q_s: what 16² resolves with 4 pixels per wavelength
+        assert_eq!(v["q_s"].as_f64(), Some(4.0));
     }
+
+    /// `persson compare kappa --hurst 0.5,0.8 --grid 64 --seeds 2` (seeded
+    /// run, the same numbers as before the validation module existed). On
+    /// the 16² grid one node is 4e-3 of A/A0: should another platform's FFT
+    /// rounding flip a node at the contact edge, this pin moves by more than
+    /// PINNED_KAPPA while the 128² pins above hold; that is rounding, not a
+    /// changed method.
+    const KAPPA_H05: f64 = 1.88297111;
+    const KAPPA_H08: f64 = 1.767819317;
 }

@@ -11,8 +11,9 @@
 //!   free (an isolated contact; convolution zero-padded to 2N), see
 //!   [`kernel`].
 //! - `contact_fraction` is the fraction of nodes with p > 0 (A/A0 at this
-//!   resolution; areas converge slowly with N, ~N^−0.7 in seed 002: report
-//!   the grid with every area).
+//!   resolution; areas converge slowly with N, ~N^−0.7 (Campañá & Müser,
+//!   EPL 77, 38005 (2007), doi:10.1209/0295-5075/77/38005): report the grid
+//!   with every area).
 //!
 //! # Pieces
 //! - [`fft`]: planned 2-D real FFT (rustfft + realfft), no allocation per call.
@@ -20,22 +21,27 @@
 //! - [`solver`]: Polonsky–Keer constrained conjugate gradient.
 //! - [`hertz`]: closed-form Hertz solution and the η validation.
 //! - [`surface`]: Fourier synthesis from any [`crate::Spectrum`], height-map I/O.
+//! - [`rough`]: the rough-contact loop (one solve per nominal pressure) and its report.
+//! - [`histogram`]: pressure histograms P(σ) that integrate to A/A0.
 //!
 //! # Example
 //! ```
 //! use persson::bem::{hertz, Boundary, Options};
 //! # fn main() -> persson::Result<()> {
 //! let r = hertz::validate(&hertz::HertzCase::new(64, Boundary::Free), &Options::default())?;
-//! assert!(r.energy_error < 1.40e-2); // lecture 000, Table 1 (64²)
+//! assert!(r.energy_error < 1.40e-2); // Molinari's lecture, Table 1 (64²)
 //! # Ok(()) }
 //! ```
 
 pub mod fft;
 pub mod hertz;
+pub mod histogram;
 pub mod kernel;
+pub mod rough;
 pub mod solver;
 pub mod surface;
 
+pub use histogram::{pressure_histogram, HistogramBin};
 pub use kernel::{Boundary, Operator};
 pub use solver::{Control, Iteration, Options, Solution, Solver};
 pub use surface::Surface;
@@ -112,53 +118,4 @@ fn available_memory() -> Option<u64> {
     let line = text.lines().find(|l| l.starts_with("MemAvailable:"))?;
     let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
     Some(kib * 1024)
-}
-
-/// One bin of a pressure histogram.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
-pub struct HistogramBin {
-    /// Lower edge of the bin (unit of p).
-    pub pressure_low: f64,
-    /// Upper edge of the bin.
-    pub pressure_high: f64,
-    /// P(σ): nodes in the bin / (N² · bin width), so that the bins integrate
-    /// to the contact fraction A/A0 (Persson's P(σ) without the δ(σ) of the
-    /// non-contact area).
-    pub density: f64,
-}
-
-/// Histogram of the contact pressures (p > 0) over `bins` equal bins from 0
-/// to max p.
-///
-/// # Formula
-/// ```text
-/// P_k = #{i : p_i ∈ bin k, p_i > 0} / (N² Δσ),   Σ_k P_k Δσ = A/A0
-/// ```
-///
-/// # Errors
-/// `bins == 0`.
-pub fn pressure_histogram(pressure: &[f64], bins: usize) -> Result<Vec<HistogramBin>> {
-    if bins == 0 {
-        return Err(Error::invalid("bins", 0.0, ">= 1"));
-    }
-    let p_max = pressure.iter().copied().fold(0.0, f64::max);
-    if p_max <= 0.0 {
-        return Ok(Vec::new());
-    }
-    let width = p_max / bins as f64;
-    let mut counts = vec![0usize; bins];
-    for &p in pressure.iter().filter(|p| **p > 0.0) {
-        let k = ((p / width) as usize).min(bins - 1);
-        counts[k] += 1;
-    }
-    let norm = 1.0 / (pressure.len() as f64 * width);
-    Ok(counts
-        .iter()
-        .enumerate()
-        .map(|(k, &c)| HistogramBin {
-            pressure_low: k as f64 * width,
-            pressure_high: (k + 1) as f64 * width,
-            density: c as f64 * norm,
-        })
-        .collect())
 }

@@ -6,11 +6,19 @@ mod args;
 #[cfg(feature = "bem")]
 mod bem;
 #[cfg(feature = "bem")]
+mod bem_args;
+#[cfg(feature = "bem")]
 mod compare;
+#[cfg(feature = "bem")]
+mod compare_args;
+#[cfg(feature = "bem")]
+mod compare_plot;
 mod g;
 mod kappa;
 mod output;
 mod plot;
+#[cfg(feature = "bem")]
+mod progress;
 mod report;
 mod run;
 mod separation;

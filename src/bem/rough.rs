@@ -1,0 +1,370 @@
+//! Rough contact: one rigid rough surface pressed onto the elastic
+//! half-space at a list of nominal pressures (one solve each, warm-started
+//! along the list).
+//!
+//! [`solve`] is the one loop used by `persson bem rough`, by scenes and by the
+//! resolution sweep of [`crate::validation`]; [`rough_contact`] wraps it into
+//! the typed report that `persson bem rough` prints.
+//!
+//! # Example
+//! ```
+//! use persson::bem::histogram::integral;
+//! use persson::bem::rough::{solve, RoughOptions};
+//! use persson::bem::surface::synthesize;
+//! use persson::spectrum::{Amplitude, SelfAffine};
+//! # fn main() -> persson::Result<()> {
+//! let q_l = std::f64::consts::TAU; // L = 1
+//! let s = SelfAffine::new(q_l, 2.0 * q_l, 8.0 * q_l, 0.8, Amplitude::RmsSlope(0.1))?;
+//! let surface = synthesize(&s, 32, 1.0, 1)?;
+//! let options = RoughOptions { bins: Some(20), ..RoughOptions::default() };
+//! let points = solve(&surface, 1.0, &[0.002, 0.005], &options, &mut ())?;
+//! for p in &points {
+//!     // the histogram integrates to A/A0; the load is carried
+//!     let h = p.histogram.as_ref().unwrap();
+//!     assert!((integral(h) - p.contact_fraction).abs() < 1e-12);
+//! }
+//! assert!(points[0].contact_fraction < points[1].contact_fraction);
+//! # Ok(()) }
+//! ```
+
+use std::path::Path;
+
+use serde::Serialize;
+
+use super::histogram::{pressure_histogram, HistogramBin};
+use super::{check_memory, surface, Boundary, Control, Iteration, Operator, Options, Solution};
+use super::{Solver, Surface};
+use crate::error::{check, Error, Result};
+use crate::spectrum::Spectrum;
+use crate::table::{number, Cell, Table, Tabulate};
+
+/// How the rough solves run.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RoughOptions {
+    /// Boundary condition of the half-space.
+    pub boundary: Boundary,
+    /// Solver accuracy; `warm_start` carries each solution to the next pressure.
+    pub solver: Options,
+    /// Bins of the pressure histogram of each solve (`None`: no histogram).
+    pub bins: Option<usize>,
+}
+
+impl Default for RoughOptions {
+    /// Periodic, the solver's defaults with warm start, no histogram.
+    fn default() -> Self {
+        RoughOptions {
+            boundary: Boundary::Periodic,
+            solver: Options {
+                warm_start: true,
+                ..Options::default()
+            },
+            bins: None,
+        }
+    }
+}
+
+/// One solve of a rough contact.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[non_exhaustive]
+pub struct RoughPoint {
+    /// Nominal pressure σ0 (unit of E*).
+    pub nominal_pressure: f64,
+    /// A/A0: fraction of nodes with p > 0.
+    pub contact_fraction: f64,
+    /// Mean gap ū = Σ gap / N² (unit of L).
+    pub mean_separation: f64,
+    /// Approach from first touch (unit of L).
+    pub approach: f64,
+    /// Solver iterations.
+    pub iterations: usize,
+    /// Final residual ε (≤ tolerance).
+    pub residual: f64,
+    /// Wall time of the solve, s.
+    pub seconds: f64,
+    /// P(σ) of the solve, when bins were asked for.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub histogram: Option<Vec<HistogramBin>>,
+}
+
+/// Progress of [`solve`], once per solver iteration.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RoughProgress {
+    /// Index of the current pressure in the caller's list.
+    pub index: usize,
+    /// Number of pressures.
+    pub total: usize,
+    /// Nominal pressure of the current solve.
+    pub nominal_pressure: f64,
+    /// The solver's state.
+    pub iteration: Iteration,
+}
+
+/// What the caller sees of [`solve`] while it runs; `()` sees nothing.
+pub trait Observer {
+    /// Called once per solver iteration.
+    fn iteration(&mut self, _progress: RoughProgress) {}
+    /// Called with each converged solution (its index in the pressure list),
+    /// e.g. to write or accumulate the pressure field.
+    ///
+    /// # Errors
+    /// Whatever the caller's handling returns; it stops the loop.
+    fn solution(&mut self, _index: usize, _solution: &Solution) -> Result<()> {
+        Ok(())
+    }
+}
+
+impl Observer for () {}
+
+/// Solve the contact of `surface` at each nominal pressure, in the given
+/// order, on one solver (warm start as `options.solver.warm_start`).
+///
+/// # Errors
+/// No pressure, a pressure not finite and positive, `bins == Some(0)`;
+/// as [`check_memory`], [`Operator::new`] and [`Solver::solve`]
+/// ([`Error::NotConverged`]); whatever the observer returns.
+pub fn solve(
+    surface: &Surface,
+    contact_modulus: f64,
+    pressures: &[f64],
+    options: &RoughOptions,
+    observer: &mut dyn Observer,
+) -> Result<Vec<RoughPoint>> {
+    if pressures.is_empty() {
+        return Err(Error::invalid("nominal_pressure", 0.0, "at least one"));
+    }
+    for &p in pressures {
+        check::positive("nominal_pressure", p)?;
+    }
+    if options.bins == Some(0) {
+        return Err(Error::invalid("bins", 0.0, ">= 1"));
+    }
+    check_memory(surface.n, options.boundary)?;
+    let op = Operator::new(options.boundary, surface.n, surface.size, contact_modulus)?;
+    let mut solver = Solver::new(op);
+    let total = pressures.len();
+    let mut points = Vec::with_capacity(total);
+    for (index, &p) in pressures.iter().enumerate() {
+        let sol = solver.solve_observed(
+            &surface.heights,
+            Control::MeanPressure(p),
+            &options.solver,
+            &mut |iteration| {
+                observer.iteration(RoughProgress {
+                    index,
+                    total,
+                    nominal_pressure: p,
+                    iteration,
+                })
+            },
+        )?;
+        observer.solution(index, &sol)?;
+        let histogram = match options.bins {
+            Some(b) => Some(pressure_histogram(&sol.pressure, b)?),
+            None => None,
+        };
+        points.push(RoughPoint {
+            nominal_pressure: p,
+            contact_fraction: sol.contact_fraction,
+            mean_separation: sol.gap.iter().sum::<f64>() / sol.gap.len() as f64,
+            approach: sol.approach,
+            iterations: sol.iterations,
+            residual: sol.residual,
+            seconds: sol.seconds,
+            histogram,
+        });
+    }
+    Ok(points)
+}
+
+/// Read a height map (.npy or text matrix) of side `size`, checking first
+/// that a solve on the largest grid the file can hold fits in memory.
+///
+/// # Errors
+/// As [`check_memory`] and [`surface::height_map_from_bytes`].
+pub fn read_surface(path: &Path, size: f64, boundary: Boundary) -> Result<Surface> {
+    check::positive("size", size)?;
+    let bytes = crate::io::read(path)?;
+    // A float32 file of this length holds at most len/4 values.
+    let n_max = ((bytes.len() / 4) as f64).sqrt() as usize;
+    if n_max > super::MIN_GRID {
+        check_memory(n_max.min(super::MAX_GRID), boundary)?;
+    }
+    surface::height_map_from_bytes(path, &bytes, size)
+}
+
+/// The spectrum a surface was synthesised from, as echoed in reports.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[non_exhaustive]
+pub struct SpectrumSummary {
+    /// Lower cut-off q_l (1/unit of L).
+    pub q_l: f64,
+    /// Upper cut-off q_s.
+    pub q_s: f64,
+    /// rms height over [q_l, q_s].
+    pub rms_height: f64,
+    /// rms slope over [q_l, q_s].
+    pub rms_slope: f64,
+}
+
+impl SpectrumSummary {
+    /// The summary of `spectrum` over its whole band.
+    ///
+    /// # Errors
+    /// As [`Spectrum::rms_height`] and [`Spectrum::rms_slope`].
+    pub fn of(spectrum: &dyn Spectrum) -> Result<Self> {
+        let (q_l, q_s) = (spectrum.q_min(), spectrum.q_max());
+        Ok(SpectrumSummary {
+            q_l,
+            q_s,
+            rms_height: spectrum.rms_height(q_l, q_s)?.value,
+            rms_slope: spectrum.rms_slope(q_l, q_s)?.value,
+        })
+    }
+}
+
+/// Where the rigid surface of a rough contact came from.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(untagged)]
+#[non_exhaustive]
+pub enum SurfaceSource {
+    /// A height map read from a file.
+    HeightMap {
+        /// The file, as given.
+        file: String,
+    },
+    /// Synthesised from a spectrum ([`surface::synthesize`]).
+    Synthesised {
+        /// Seed of the Pcg64Mcg generator.
+        seed: u64,
+        /// The spectrum.
+        spectrum: SpectrumSummary,
+    },
+}
+
+impl SurfaceSource {
+    /// A synthesised surface's source.
+    ///
+    /// # Errors
+    /// As [`SpectrumSummary::of`].
+    pub fn synthesised(spectrum: &dyn Spectrum, seed: u64) -> Result<Self> {
+        Ok(SurfaceSource::Synthesised {
+            seed,
+            spectrum: SpectrumSummary::of(spectrum)?,
+        })
+    }
+
+    /// A height map's source.
+    pub fn height_map(file: &Path) -> Self {
+        SurfaceSource::HeightMap {
+            file: file.display().to_string(),
+        }
+    }
+}
+
+/// The report of `persson bem rough`: the surface, the solver settings and
+/// one point per nominal pressure.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[non_exhaustive]
+pub struct RoughReport {
+    /// Grid side N.
+    pub grid: usize,
+    /// Side L of the surface.
+    pub size: f64,
+    /// Boundary condition.
+    pub boundary: Boundary,
+    /// Contact modulus E*.
+    pub contact_modulus: f64,
+    /// Solver tolerance ε.
+    pub tolerance: f64,
+    /// rms height of the surface on the grid (unit of L).
+    pub rms_height: f64,
+    /// rms slope of the surface on the grid (its trigonometric interpolant).
+    pub rms_slope: f64,
+    /// Where the surface came from.
+    pub surface: SurfaceSource,
+    /// One point per nominal pressure, in the caller's order.
+    pub points: Vec<RoughPoint>,
+}
+
+/// [`solve`] and its report.
+///
+/// # Errors
+/// As [`solve`] and [`Surface::rms_slope`].
+pub fn rough_contact(
+    surface: &Surface,
+    source: SurfaceSource,
+    contact_modulus: f64,
+    pressures: &[f64],
+    options: &RoughOptions,
+    observer: &mut dyn Observer,
+) -> Result<RoughReport> {
+    let points = solve(surface, contact_modulus, pressures, options, observer)?;
+    Ok(RoughReport {
+        grid: surface.n,
+        size: surface.size,
+        boundary: options.boundary,
+        contact_modulus,
+        tolerance: options.solver.tol,
+        rms_height: surface.rms_height(),
+        rms_slope: surface.rms_slope()?,
+        surface: source,
+        points,
+    })
+}
+
+/// `periodic` or `free`, as on the command line.
+pub fn boundary_name(b: Boundary) -> &'static str {
+    match b {
+        Boundary::Periodic => "periodic",
+        Boundary::Free => "free",
+    }
+}
+
+impl Tabulate for RoughReport {
+    fn tables(&self) -> Vec<Table> {
+        let n = self.grid;
+        let mut t = Table::new(
+            "bem_rough",
+            format!(
+                "Rough contact (FFT-BEM, Polonsky & Keer 1999), {n}×{n} grid, {} boundary",
+                boundary_name(self.boundary)
+            ),
+        )
+        .scalar("grid", "N", n)
+        .scalar("size", "L", self.size)
+        .scalar("contact_modulus", "E*", self.contact_modulus)
+        .scalar("tolerance", "tolerance ε", self.tolerance)
+        .scalar("rms_height", "h_rms", self.rms_height)
+        .scalar("rms_slope", "h'_rms", self.rms_slope);
+        match &self.surface {
+            SurfaceSource::HeightMap { file } => t = t.scalar("file", "surface", file.as_str()),
+            SurfaceSource::Synthesised { seed, spectrum } => {
+                t = t.scalar("seed", "seed", Cell::Int(*seed as i64)).scalar(
+                    "q_s",
+                    "q_l … q_s",
+                    format!("{} … {}", number(spectrum.q_l, 6), number(spectrum.q_s, 6)),
+                );
+            }
+        }
+        let mut t = t
+            .column("nominal_pressure", "σ0")
+            .column("contact_fraction", "A/A0")
+            .column("mean_separation", "ū")
+            .column("approach", "δ")
+            .column("iterations", "iterations")
+            .column_digits("residual", "residual ε", 2)
+            .column_digits("seconds", "s", 3);
+        for p in &self.points {
+            t.push(vec![
+                p.nominal_pressure.into(),
+                p.contact_fraction.into(),
+                p.mean_separation.into(),
+                p.approach.into(),
+                p.iterations.into(),
+                p.residual.into(),
+                p.seconds.into(),
+            ]);
+        }
+        vec![t]
+    }
+}

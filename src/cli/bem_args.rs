@@ -1,0 +1,127 @@
+//! The flags of `persson bem` (and the solver flags `persson compare` shares).
+
+use std::path::PathBuf;
+
+use persson::bem::{Boundary, Options};
+use persson::error::check;
+
+use super::args::{MaterialArgs, SpectrumArgs};
+use super::output::Format;
+
+/// Arguments of `persson bem`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    #[command(subcommand)]
+    pub cmd: Cmd,
+}
+
+#[derive(clap::Subcommand, Debug)]
+pub enum Cmd {
+    /// Hertz validation: energy-norm error η, fitted contact radius and peak pressure.
+    Hertz(HertzArgs),
+    /// Rough contact: contact fraction and mean separation at each nominal pressure.
+    Rough(Box<RoughArgs>),
+}
+
+/// Solver knobs shared by both subcommands (and `persson compare`).
+#[derive(clap::Args, Debug, Clone)]
+pub struct SolverArgs {
+    /// Relative tolerance ε of the Polonsky–Keer solver (pressure-weighted gap over the rms height).
+    #[arg(long, default_value = "1e-10", allow_negative_numbers = true)]
+    pub tolerance: f64,
+    /// Maximum number of iterations per solve.
+    #[arg(long, default_value = "10000")]
+    pub max_iterations: usize,
+}
+
+impl SolverArgs {
+    /// The solver options, warm-started along a list of pressures.
+    pub fn options(&self) -> anyhow::Result<Options> {
+        check::tolerance("tolerance", self.tolerance)?;
+        Ok(Options {
+            tol: self.tolerance,
+            max_iter: self.max_iterations,
+            warm_start: true,
+        })
+    }
+}
+
+#[derive(clap::Args, Debug)]
+pub struct HertzArgs {
+    /// Grid side N (nodes per side), at least 8.
+    #[arg(long, default_value = "256")]
+    pub grid: usize,
+    /// Boundary condition of the elastic half-space: free (an isolated contact, zero-padded to 2N) or periodic.
+    #[arg(long, default_value = "free")]
+    pub boundary: Boundary,
+    /// Side L of the square domain.
+    #[arg(long, default_value = "1", allow_negative_numbers = true)]
+    pub size: f64,
+    /// Ball radius R (unit of L).
+    #[arg(long, default_value = "1", allow_negative_numbers = true)]
+    pub radius: f64,
+    /// Contact modulus E*.
+    #[arg(
+        long,
+        alias = "modulus",
+        default_value = "1",
+        allow_negative_numbers = true
+    )]
+    pub contact_modulus: f64,
+    /// Hertz contact radius a that sets the load (default 0.1 L).
+    #[arg(long, allow_negative_numbers = true)]
+    pub contact_radius: Option<f64>,
+    #[command(flatten)]
+    pub solver: SolverArgs,
+    #[command(flatten)]
+    pub format: Format,
+}
+
+#[derive(clap::Args, Debug)]
+pub struct RoughArgs {
+    /// Height map of the rigid surface: .npy (float64/float32, 2-D square) or a text matrix.
+    #[arg(long, requires = "size")]
+    pub surface: Option<PathBuf>,
+    /// Physical side L of the surface (default with a spectrum: 2π/q_l).
+    #[arg(long, allow_negative_numbers = true)]
+    pub size: Option<f64>,
+    /// Grid side N for a synthesised surface.
+    #[arg(long, conflicts_with = "surface")]
+    pub grid: Option<usize>,
+    /// Seed of the synthesised surface (Pcg64Mcg, value-stable).
+    #[arg(long, default_value = "1", conflicts_with = "surface")]
+    pub seed: u64,
+    #[command(flatten)]
+    pub spectrum: SpectrumArgs,
+    #[command(flatten)]
+    pub material: MaterialArgs,
+    /// Nominal (mean) pressure, same unit as the modulus; repeatable or comma-separated.
+    #[arg(
+        long,
+        value_delimiter = ',',
+        allow_negative_numbers = true,
+        required_unless_present = "example"
+    )]
+    pub pressure: Vec<f64>,
+    /// Boundary condition of the elastic half-space: periodic (the grid is one period) or free.
+    #[arg(long, default_value = "periodic")]
+    pub boundary: Boundary,
+    /// Write each pressure field as .npy (N×N float64); `_k` is added before
+    /// the extension when several pressures are given.
+    #[arg(long)]
+    pub pressure_field: Option<PathBuf>,
+    /// Write the histogram P(σ) of each solve as CSV (sigma_low, sigma_high,
+    /// density; the bins integrate to A/A0).
+    #[arg(long)]
+    pub histogram: Option<PathBuf>,
+    /// Number of histogram bins.
+    #[arg(long, default_value = "50")]
+    pub bins: usize,
+    /// Write the (synthesised or read) surface heights as .npy.
+    #[arg(long)]
+    pub surface_out: Option<PathBuf>,
+    #[command(flatten)]
+    pub solver: SolverArgs,
+    #[command(flatten)]
+    pub format: Format,
+}
