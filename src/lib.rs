@@ -36,6 +36,7 @@ pub mod material;
 pub mod plot;
 pub mod quad;
 pub mod report;
+pub mod reference;
 pub mod scene;
 pub mod separation;
 pub mod special;
