@@ -9,15 +9,15 @@
 
 use serde::Deserialize;
 
-use super::{case, time_it, AccuracyRow, Extent, StabilityCase};
+use super::{case, num, time_it, AccuracyRow, Extent, Family, Knob, MethodAccuracy, StabilityCase};
 use crate::error::{Error, Result};
 use crate::stress::{series_fractions, Method, Solver, Start, TabulatedStart};
 
 /// The mpmath references: three starts × G × σY/σH, densities on a σ grid
 /// and both fractions.
 const REFERENCES: &str = include_str!("../../tests/reference/stress.json");
-/// Where they come from, for the rows' `reference`.
-const REFERENCE_NAME: &str = "mpmath, 40 digits (tests/reference/stress.json)";
+/// Where they come from, for the methods' `reference`.
+const REFERENCE_NAME: &str = "mpmath at 40 digits (tests/reference/stress_reference.py)";
 /// Wall-time budget per row, s (the median of repeated runs is reported).
 const TIME_BUDGET: f64 = 0.04;
 
@@ -80,7 +80,7 @@ fn tolerances(extent: Extent) -> Vec<f64> {
 ///
 /// # Errors
 /// A reference the solver rejects or a quadrature failure (none expected).
-pub(super) fn accuracy(extent: Extent) -> Result<Vec<AccuracyRow>> {
+pub(super) fn accuracy(extent: Extent) -> Result<Vec<MethodAccuracy>> {
     let refs = references()?;
     // τ/y² below which the series needs too many terms to be of interest
     let min_ratio = if extent == Extent::Full { 1e-4 } else { 1e-2 };
@@ -105,58 +105,77 @@ pub(super) fn accuracy(extent: Extent) -> Result<Vec<AccuracyRow>> {
         .filter(|(st, _)| matches!(st, Start::Hertz))
         .map(|(_, c)| (&table, c))
         .collect();
-    let mut rows = Vec::new();
-    for tol in tolerances(extent) {
-        rows.push(density_row(
-            "stress P(s), sine series (Method::Series), all starts",
+    let density = |method: &'static str,
+                   title: &str,
+                   cases: &[(&Start, &Reference)],
+                   how: Method|
+     -> Result<MethodAccuracy> {
+        let points: usize = cases.iter().map(|(_, c)| c.sigma.len()).sum();
+        Ok(MethodAccuracy {
+            method,
+            title: title.into(),
+            knob: Knob::Tolerance,
+            reference: format!(
+                "{REFERENCE_NAME}: {} cases, {points} values of σ; error absolute in 1/σH, \
+                 relative above 1/σH; time per density value, setup included",
+                cases.len()
+            ),
+            rows: tolerances(extent)
+                .into_iter()
+                .map(|tol| density_row(cases, tol, how))
+                .collect::<Result<_>>()?,
+        })
+    };
+    let mut methods = vec![
+        density(
+            "stress-series",
+            "Stress distribution P(σ), sine series, every start with a yield stress",
             &series,
-            tol,
             Method::Series,
-        )?);
-    }
-    for tol in tolerances(extent) {
-        rows.push(density_row(
-            "stress P(s), image quadrature (Gauss rules), cylinder",
+        )?,
+        density(
+            "stress-images-cylinder",
+            "Stress distribution P(σ), image sum by Gauss rules, cylinder start",
             &images(true),
-            tol,
             Method::Images,
-        )?);
-    }
-    for tol in tolerances(extent) {
-        rows.push(density_row(
-            "stress P(s), closed-form images, flat and Hertz",
+        )?,
+        density(
+            "stress-images-closed-form",
+            "Stress distribution P(σ), image sum in closed form, flat and Hertz starts",
             &images(false),
-            tol,
             Method::Images,
-        )?);
-    }
-    for tol in tolerances(extent) {
-        rows.push(density_row(
-            "stress P(s), tabulated start (adaptive Gauss-Kronrod), Hertz as a table",
+        )?,
+        density(
+            "stress-tabulated",
+            "Stress distribution P(σ), tabulated start (adaptive Gauss–Kronrod), Hertz's P0 as a table",
             &tabulated,
-            tol,
             Method::Auto,
-        )?);
-    }
+        )?,
+    ];
     let mut terms = vec![1, 2, 3, 4, 6, 8, 12, 16, 24, 32];
     if extent == Extent::Full {
         terms.extend([48, 64, 96, 128, 192, 256]);
     }
-    for n in terms {
-        rows.push(fractions_row(&series, n)?);
-    }
-    Ok(rows)
+    methods.push(MethodAccuracy {
+        method: "stress-series-fractions",
+        title: "Elastic and plastic fractions A_el/A0, A_pl/A0, sine series".into(),
+        knob: Knob::Terms,
+        reference: format!(
+            "{REFERENCE_NAME}: {} cases; error absolute; time per (A_el, A_pl) pair",
+            series.len()
+        ),
+        rows: terms
+            .into_iter()
+            .map(|n| fractions_row(&series, n))
+            .collect::<Result<_>>()?,
+    });
+    Ok(methods)
 }
 
 /// Largest scaled density error |P − P_ref|/max(1, |P_ref|) over every σ of
 /// `cases`, with the solver's bound on the same quantity, and the time per
 /// density value (the solver's setup included, shared by one case's σ).
-fn density_row(
-    method: &str,
-    cases: &[(&Start, &Reference)],
-    tol: f64,
-    how: Method,
-) -> Result<AccuracyRow> {
+fn density_row(cases: &[(&Start, &Reference)], tol: f64, how: Method) -> Result<AccuracyRow> {
     let points: usize = cases.iter().map(|(_, c)| c.sigma.len()).sum();
     let run = || -> Result<(f64, f64)> {
         let (mut err, mut est): (f64, f64) = (0.0, 0.0);
@@ -174,17 +193,11 @@ fn density_row(
     let (r, seconds) = time_it(TIME_BUDGET, run);
     let (error, estimate) = r?;
     Ok(AccuracyRow {
-        method: method.into(),
-        knob: "tolerance (absolute, 1/σH)".into(),
         setting: tol,
         error,
-        estimate: Some(estimate),
+        error_bound: Some(estimate),
+        residual: None,
         seconds: seconds / points.max(1) as f64,
-        reference: format!(
-            "{REFERENCE_NAME}: {} cases, {points} σ; error absolute in 1/σH, \
-             relative above 1/σH; seconds per density value incl. setup",
-            cases.len()
-        ),
     })
 }
 
@@ -206,16 +219,11 @@ fn fractions_row(cases: &[(&Start, &Reference)], terms: usize) -> Result<Accurac
     let (r, seconds) = time_it(TIME_BUDGET, run);
     let (error, estimate) = r?;
     Ok(AccuracyRow {
-        method: "stress A_el/A0 and A_pl/A0, sine series, all starts (absolute error)".into(),
-        knob: "terms".into(),
         setting: terms as f64,
         error,
-        estimate: Some(estimate),
+        error_bound: Some(estimate),
+        residual: None,
         seconds: seconds / cases.len().max(1) as f64,
-        reference: format!(
-            "{REFERENCE_NAME}: {} cases; error absolute; seconds per (A_el, A_pl) pair",
-            cases.len()
-        ),
     })
 }
 
@@ -240,18 +248,60 @@ const STABILITY_POINTS: usize = 101;
 /// Tolerance asked of the solver (the CLI's default).
 const STABILITY_TOL: f64 = 1e-12;
 
+/// A_el/A0 at σY barely above σH, mpmath at 40 digits with the f64 inputs:
+/// A_pl = F(y) = ∫₀¹ P0(1 − v) [erfc((y − 1 + v)/w) − erfc((y + 1 − v)/w)] dv
+/// integrated in units of its decay length, A_el = A∞ − F(y), A∞ from the
+/// closed forms (cylinder: 1 − ∫ cos θ erfc(cos θ/w) dθ). Hertz's values hold
+/// for its table too. (start, G, σY/σH, A_el/A0).
+#[allow(clippy::excessive_precision)] // the references keep 17 digits
+const EDGE_REFERENCES: [(&str, f64, Option<f64>, f64); 3] = [
+    ("cylinder", 1e-12, Some(1.000_001), 0.999_632_593_106_101_3),
+    ("hertz", 1e-9, Some(1.000_001), 0.999_954_396_550_963_7),
+    ("hertz", 1e-9, None, 0.999_999_999_111_111_1),
+];
+
+/// The reference A_el/A0 of a sweep case, where one exists: G = 0 (no
+/// roughness, no yield: exactly 1), the mpmath cases of `refs` and
+/// [`EDGE_REFERENCES`]. A tabulated start is Hertz's P0 as a table.
+fn sweep_reference(refs: &[(Start, Reference)], st: &Start, g: f64, y: Option<f64>) -> Option<f64> {
+    if g == 0.0 {
+        return Some(1.0);
+    }
+    let name = match st {
+        Start::Tabulated(_) => "hertz",
+        _ => st.name(),
+    };
+    refs.iter()
+        .find(|(s, c)| s.name() == name && c.g == g && c.yield_ratio == y)
+        .map(|(_, c)| c.contact_fraction)
+        .or_else(|| {
+            EDGE_REFERENCES
+                .iter()
+                .find(|r| r.0 == name && r.1 == g && r.2 == y)
+                .map(|r| r.3)
+        })
+}
+
 /// Extreme cases of the stress distributions: every start (and a table) × G
 /// from 0 to 1e30 × σY/σH from 1 + 1e-6 to 1e6 and elastic, each a 101-point curve with both
 /// fractions; `value` is A_el/A0, `error_bound` the curve's bound, and
 /// `finite` covers every density, both fractions, A_nc and every bound.
+/// References: [`sweep_reference`].
 ///
 /// # Errors
 /// An input the library rejects (none of these should be).
 pub(super) fn stability() -> Result<Vec<StabilityCase>> {
+    let refs = references()?;
     let mut out = Vec::new();
     // a tabulated start too: Hertz's P0 = 2s as a two-point table
     let table = Start::Tabulated(TabulatedStart::new(&[0.0, 1.0], &[0.0, 2.0], 1e-15)?);
     for st in [Start::Flat, Start::Hertz, Start::Cylinder, table] {
+        let family = match st {
+            Start::Flat => Family::StressFlat,
+            Start::Hertz => Family::StressHertz,
+            Start::Cylinder => Family::StressCylinder,
+            _ => Family::StressTabulated,
+        };
         for g in STABILITY_G {
             for y in STABILITY_Y {
                 let solver = Solver::new(&st, g, y, STABILITY_TOL)?;
@@ -265,12 +315,13 @@ pub(super) fn stability() -> Result<Vec<StabilityCase>> {
                     c.plastic_error,
                     c.tau,
                 ]);
-                let y_name = y.map_or("elastic".to_string(), |v| format!("σY/σH = {v:e}"));
+                let y_name = y.map_or("elastic".to_string(), |v| format!("σY/σH = {}", num(v)));
                 out.push(case(
-                    format!("stress {}, G = {g:e}, {y_name}: A_el/A0", st.name()),
-                    c.contact_fraction,
-                    c.error_bound,
+                    family,
+                    format!("A_el/A0, {} start, G = {}, {y_name}", st.name(), num(g)),
+                    (c.contact_fraction, c.error_bound),
                     &others,
+                    sweep_reference(&refs, &st, g, y),
                 ));
             }
         }
