@@ -35,8 +35,8 @@ pub mod material;
 #[cfg(feature = "plot")]
 pub mod plot;
 pub mod quad;
-pub mod report;
 pub mod reference;
+pub mod report;
 pub mod scene;
 pub mod separation;
 pub mod special;

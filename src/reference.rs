@@ -96,7 +96,11 @@ impl Ball {
     /// assert!((b.load - 4e-3 / 3.0).abs() < 1e-18);
     /// assert!((b.peak_pressure - 0.2 / std::f64::consts::PI).abs() < 1e-17);
     /// ```
-    pub fn from_contact_radius(radius: f64, contact_radius: f64, contact_modulus: f64) -> Result<Self> {
+    pub fn from_contact_radius(
+        radius: f64,
+        contact_radius: f64,
+        contact_modulus: f64,
+    ) -> Result<Self> {
         let r = check::positive("radius", radius)?;
         let a = check::positive("contact_radius", contact_radius)?;
         let e = check::positive("contact_modulus", contact_modulus)?;
@@ -127,7 +131,12 @@ impl Ball {
     /// u(r), the normal surface displacement at distance `r` (m) from the
     /// centre, zero at infinity (m); see [`ball_displacement`].
     pub fn displacement(&self, r: f64) -> f64 {
-        ball_displacement(r, self.contact_radius, self.peak_pressure, self.contact_modulus)
+        ball_displacement(
+            r,
+            self.contact_radius,
+            self.peak_pressure,
+            self.contact_modulus,
+        )
     }
 }
 
@@ -176,7 +185,11 @@ impl Cylinder {
     ///
     /// # Errors
     /// [`crate::Error::InvalidParameter`] if an argument is not finite and positive.
-    pub fn from_load_per_length(radius: f64, load_per_length: f64, contact_modulus: f64) -> Result<Self> {
+    pub fn from_load_per_length(
+        radius: f64,
+        load_per_length: f64,
+        contact_modulus: f64,
+    ) -> Result<Self> {
         let r = check::positive("radius", radius)?;
         let f = check::positive("load_per_length", load_per_length)?;
         let e = check::positive("contact_modulus", contact_modulus)?;

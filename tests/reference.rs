@@ -93,7 +93,11 @@ fn cylinder_matches_johnson_and_carries_the_load() {
         assert!(rel(c.peak_pressure, (f * e / (PI * r)).sqrt()) < FORMULA_REL_TOL);
         assert!(rel(c.nominal_pressure(), PI * c.peak_pressure / 4.0) < FORMULA_REL_TOL);
         // ∫ p dx over (−a, a) with x = a sin θ
-        let load = simpson(|t| c.pressure(a * t.sin()) * a * t.cos(), -PI / 2.0, PI / 2.0);
+        let load = simpson(
+            |t| c.pressure(a * t.sin()) * a * t.cos(),
+            -PI / 2.0,
+            PI / 2.0,
+        );
         assert!(rel(load, f) < LOAD_REL_TOL, "{load} vs {f}");
         assert_eq!(c.pressure(-a), 0.0);
     }
@@ -115,7 +119,10 @@ fn displacement_meets_the_contact_condition_and_the_far_field() {
             let x = t * a;
             let want = b.peak_pressure / (2.0 * a * e)
                 * ((2.0 * a * a - x * x) * (a / x).asin() + a * (x * x - a * a).sqrt());
-            assert!(rel(b.displacement(x), want) < AS_WRITTEN_REL_TOL, "r = {t} a");
+            assert!(
+                rel(b.displacement(x), want) < AS_WRITTEN_REL_TOL,
+                "r = {t} a"
+            );
         }
         // far away: the point load F/(π E* r), to (a/r)² relative
         for t in [1e2, 1e4, 1e6] {
@@ -142,7 +149,10 @@ fn displacement_meets_the_contact_condition_and_the_far_field() {
 #[test]
 fn hertz_contact_starts_are_the_reference() {
     for (r, f, e) in BALLS {
-        let (h, b) = (HertzContact::ball(r, f, e).unwrap(), Ball::from_load(r, f, e).unwrap());
+        let (h, b) = (
+            HertzContact::ball(r, f, e).unwrap(),
+            Ball::from_load(r, f, e).unwrap(),
+        );
         assert_eq!(h.contact_radius, b.contact_radius);
         assert_eq!(h.peak_pressure, b.peak_pressure);
         assert_eq!(h.nominal_pressure, b.nominal_pressure());

@@ -146,7 +146,12 @@ fn accuracy_report_meets_its_tolerances_bounds_and_references() {
         // The solver's tolerance: the pressure's energy-norm error is below
         // the tolerance asked (the residual ε it stops at bounds it here).
         for r in &method(&report, "bem-tolerance").rows {
-            assert!(r.error <= r.setting, "BEM at {:e}: {:e}", r.setting, r.error);
+            assert!(
+                r.error <= r.setting,
+                "BEM at {:e}: {:e}",
+                r.setting,
+                r.error
+            );
         }
     }
 }
@@ -162,7 +167,11 @@ fn stability_sweep_is_finite_and_within_its_bounds() {
         .map(|c| (&c.case, c.value, c.reference, c.error_bound))
         .collect();
     assert!(failed.is_empty(), "bounds that failed: {failed:?}");
-    let referenced = report.cases.iter().filter(|c| c.reference.is_some()).count();
+    let referenced = report
+        .cases
+        .iter()
+        .filter(|c| c.reference.is_some())
+        .count();
     assert!(
         referenced >= MIN_REFERENCED_CASES,
         "only {referenced} cases with a reference"
@@ -179,7 +188,13 @@ fn stability_sweep_is_finite_and_within_its_bounds() {
         assert!(s.cases_with_reference > 0 && s.bounds_held, "{family:?}");
     }
     // the extremes are covered
-    for want in ["G = 1e30", "G = 1e-12", "σY/σH = 1.000001", "σY/σH = 1e6", "ζ = 1.000000000001"] {
+    for want in [
+        "G = 1e30",
+        "G = 1e-12",
+        "σY/σH = 1.000001",
+        "σY/σH = 1e6",
+        "ζ = 1.000000000001",
+    ] {
         assert!(
             report.cases.iter().any(|c| c.case.contains(want)),
             "no case with {want}"
@@ -201,7 +216,11 @@ fn stability_references_are_the_closed_forms() {
             .find(|c| c.family == family && c.case.contains(text))
             .unwrap_or_else(|| panic!("{family:?}: no case {text}"))
     };
-    for family in [Family::StressFlat, Family::StressHertz, Family::StressCylinder] {
+    for family in [
+        Family::StressFlat,
+        Family::StressHertz,
+        Family::StressCylinder,
+    ] {
         assert_eq!(find(family, "G = 0, elastic").reference, Some(1.0));
     }
     /// erf(1/(2√1000)), mpmath at 40 digits.

@@ -81,9 +81,10 @@ fn hertz_grid(extent: Extent) -> Result<Vec<MethodAccuracy>> {
                 name(boundary)
             ),
             knob: Knob::Grid,
-            reference: "exact Hertz pressure at the nodes (Johnson, Contact Mechanics 1985, §4.2); \
+            reference:
+                "exact Hertz pressure at the nodes (Johnson, Contact Mechanics 1985, §4.2); \
                         error relative in the energy norm; time per solve"
-                .into(),
+                    .into(),
             rows,
         });
     }
@@ -135,7 +136,9 @@ fn rough_grid(extent: Extent) -> Result<MethodAccuracy> {
             crate::table::number(a_ref, 4)
         ),
         knob: Knob::Grid,
-        reference: format!("the same surface on the {finest}² grid; error relative; time per solve"),
+        reference: format!(
+            "the same surface on the {finest}² grid; error relative; time per solve"
+        ),
         rows,
     })
 }

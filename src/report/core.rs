@@ -3,8 +3,8 @@
 
 use super::{case, num, time_it, AccuracyRow, Extent, Family, Knob, MethodAccuracy, StabilityCase};
 use crate::error::Result;
-use crate::table;
 use crate::spectrum::{Amplitude, FnSpectrum, SelfAffine, Spectrum};
+use crate::table;
 use crate::theory::{contact_fraction, Persson};
 
 /// G(ζ) of a spectrum given as a function by adaptive quadrature, against the

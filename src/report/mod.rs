@@ -92,7 +92,8 @@ impl Tabulate for AccuracyReport {
             .iter()
             .map(|m| {
                 let (key, heading) = m.knob.column();
-                let has = |f: fn(&AccuracyRow) -> Option<f64>| m.rows.iter().any(|r| f(r).is_some());
+                let has =
+                    |f: fn(&AccuracyRow) -> Option<f64>| m.rows.iter().any(|r| f(r).is_some());
                 let (bound, residual) = (has(|r| r.error_bound), has(|r| r.residual));
                 let mut t = Table::new(
                     format!("accuracy_{}", m.method.replace('-', "_")),
@@ -276,8 +277,7 @@ impl StabilityReport {
         let families = Family::ALL
             .iter()
             .map(|&family| {
-                let of: Vec<&StabilityCase> =
-                    cases.iter().filter(|c| c.family == family).collect();
+                let of: Vec<&StabilityCase> = cases.iter().filter(|c| c.family == family).collect();
                 let errors: Vec<f64> = of.iter().filter_map(|c| c.error).collect();
                 FamilySummary {
                     family,
