@@ -202,16 +202,28 @@ impl Family {
         Family::StressTabulated,
     ];
 
-    /// What the family covers, for people.
+    /// Its name in JSON and CSV (kebab-case).
+    pub fn key(self) -> &'static str {
+        match self {
+            Family::ContactFraction => "contact-fraction",
+            Family::SelfAffine => "self-affine",
+            Family::StressFlat => "stress-flat",
+            Family::StressHertz => "stress-hertz",
+            Family::StressCylinder => "stress-cylinder",
+            Family::StressTabulated => "stress-tabulated",
+        }
+    }
+
+    /// The inputs the family covers, for people.
     pub fn description(self) -> &'static str {
         match self {
             Family::ContactFraction => "A/A0 from G = 1e-12 … 1e30",
             Family::SelfAffine => "A/A0, self-affine: H 0.01 … 0.99, ζ to 1e10, σ0 1e-12 … 10 E*",
-            Family::StressFlat => "stress, flat start: G 0 … 1e30, σY/σH 1 + 1e-6 … 1e6",
-            Family::StressHertz => "stress, Hertz start: G 0 … 1e30, σY/σH 1 + 1e-6 … 1e6",
-            Family::StressCylinder => "stress, cylinder start: G 0 … 1e30, σY/σH 1 + 1e-6 … 1e6",
+            Family::StressFlat => "A_el/A0, flat start: G 0 … 1e30, σY/σH 1 + 1e-6 … 1e6",
+            Family::StressHertz => "A_el/A0, Hertz start: G 0 … 1e30, σY/σH 1 + 1e-6 … 1e6",
+            Family::StressCylinder => "A_el/A0, cylinder start: G 0 … 1e30, σY/σH 1 + 1e-6 … 1e6",
             Family::StressTabulated => {
-                "stress, Hertz start as a table: G 0 … 1e30, σY/σH 1 + 1e-6 … 1e6"
+                "A_el/A0, Hertz's P0 as a table: G 0 … 1e30, σY/σH 1 + 1e-6 … 1e6"
             }
         }
     }
@@ -312,6 +324,7 @@ impl Tabulate for StabilityReport {
         )
         .scalar("cases", "cases", self.cases.len())
         .column("family", "family")
+        .column("inputs", "inputs")
         .column("cases", "cases")
         .column("cases_with_reference", "with reference")
         .column_digits("error", "worst error", 2)
@@ -319,6 +332,7 @@ impl Tabulate for StabilityReport {
         .column("non_finite", "non-finite");
         for f in &self.families {
             t.push(vec![
+                f.family.key().into(),
                 f.family.description().into(),
                 f.cases.into(),
                 f.cases_with_reference.into(),
