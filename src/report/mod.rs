@@ -218,7 +218,7 @@ impl Family {
     pub fn description(self) -> &'static str {
         match self {
             Family::ContactFraction => "A/A0 from G = 1e-12 … 1e30",
-            Family::SelfAffine => "A/A0, self-affine: H 0.01 … 0.99, ζ to 1e10, σ0 1e-12 … 10 E*",
+            Family::SelfAffine => "Persson's A/A0: H 0.01 … 0.99, ζ to 1e10, σ0 1e-12 … 10 E*",
             Family::StressFlat => "A_el/A0, flat start: G 0 … 1e30, σY/σH 1 + 1e-6 … 1e6",
             Family::StressHertz => "A_el/A0, Hertz start: G 0 … 1e30, σY/σH 1 + 1e-6 … 1e6",
             Family::StressCylinder => "A_el/A0, cylinder start: G 0 … 1e30, σY/σH 1 + 1e-6 … 1e6",
