@@ -72,7 +72,7 @@ impl Ball {
         let r = check::positive("radius", radius)?;
         let f = check::positive("load", load)?;
         let e = check::positive("contact_modulus", contact_modulus)?;
-        let a = (0.75 * f * r / e).cbrt();
+        let a = ball_contact_radius(f, r, e);
         Ok(Ball {
             radius: r,
             contact_modulus: e,

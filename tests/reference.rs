@@ -145,7 +145,8 @@ fn displacement_meets_the_contact_condition_and_the_far_field() {
 }
 
 /// The stress starts are built on these closed forms: the same numbers,
-/// bit for bit.
+/// bit for bit, and the same as before they were (the formulas of
+/// `HertzContact` in persson 0.1).
 #[test]
 fn hertz_contact_starts_are_the_reference() {
     for (r, f, e) in BALLS {
@@ -156,6 +157,13 @@ fn hertz_contact_starts_are_the_reference() {
         assert_eq!(h.contact_radius, b.contact_radius);
         assert_eq!(h.peak_pressure, b.peak_pressure);
         assert_eq!(h.nominal_pressure, b.nominal_pressure());
+        // the numbers HertzContact::ball printed before it used the module
+        let a = (0.75 * f * r / e).cbrt();
+        let area = PI * a * a;
+        assert_eq!(
+            (h.contact_radius, h.peak_pressure, h.nominal_pressure),
+            (a, 1.5 * f / area, f / area)
+        );
     }
     for (r, f, e) in CYLINDERS {
         let h = HertzContact::cylinder(r, f, e).unwrap();
@@ -163,6 +171,11 @@ fn hertz_contact_starts_are_the_reference() {
         assert_eq!(h.contact_radius, c.half_width);
         assert_eq!(h.peak_pressure, c.peak_pressure);
         assert_eq!(h.nominal_pressure, c.nominal_pressure());
+        let a = (4.0 * f * r / (PI * e)).sqrt();
+        assert_eq!(
+            (h.contact_radius, h.peak_pressure, h.nominal_pressure),
+            (a, 2.0 * f / (PI * a), f / (2.0 * a))
+        );
     }
 }
 
@@ -175,6 +188,18 @@ fn bem_hertz_case_is_the_reference() {
     let b = Ball::from_contact_radius(case.radius, case.contact_radius, case.e_star).unwrap();
     assert_eq!(case.peak_pressure(), b.peak_pressure);
     assert_eq!(case.mean_pressure(), b.load / (case.size * case.size));
+    // the formulas of bem::hertz before it used the module
+    let (a, r, e) = (case.contact_radius, case.radius, case.e_star);
+    assert_eq!(case.peak_pressure(), 2.0 * e * a / (PI * r));
+    assert_eq!(
+        case.mean_pressure(),
+        4.0 * e * a.powi(3) / (3.0 * r) / (case.size * case.size)
+    );
+    let f = 4e-3 / 3.0;
+    assert_eq!(
+        persson::bem::hertz::contact_radius(f, 1.0, 1.0),
+        (3.0 * f / 4.0f64).cbrt()
+    );
 }
 
 #[test]
