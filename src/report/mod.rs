@@ -18,6 +18,7 @@ use crate::table::{self, Cell, Table, Tabulate};
 mod bem;
 mod core;
 mod stress;
+mod stress_reference;
 
 /// The accuracy knob of a method.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]

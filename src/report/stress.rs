@@ -3,34 +3,39 @@
 //!
 //! Every error is measured against the mpmath values of
 //! `tests/reference/stress.json` (40 digits, `tests/reference/stress_reference.py`),
-//! compiled in so the report needs no files at run time. Densities are
-//! compared as in the accuracy policy of [`crate::stress`]: absolute in 1/σH,
-//! relative where the density exceeds 1/σH; fractions absolutely.
+//! compiled in as constants ([`super::stress_reference`]) so the report needs
+//! no files at run time. Densities are compared as in the accuracy policy of
+//! [`crate::stress`]: absolute in 1/σH, relative where the density exceeds
+//! 1/σH; fractions absolutely.
 
-use serde::Deserialize;
-
+use super::stress_reference::CASES;
 use super::{case, num, time_it, AccuracyRow, Extent, Family, Knob, MethodAccuracy, StabilityCase};
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::stress::{series_fractions, Method, Solver, Start, TabulatedStart};
 
-/// The mpmath references: three starts × G × σY/σH, densities on a σ grid
-/// and both fractions.
-const REFERENCES: &str = include_str!("../../tests/reference/stress.json");
-/// Where they come from, for the methods' `reference`.
+/// Where the references come from, for the methods' `reference`.
 const REFERENCE_NAME: &str = "mpmath at 40 digits (tests/reference/stress_reference.py)";
 /// Wall-time budget per row, s (the median of repeated runs is reported).
 const TIME_BUDGET: f64 = 0.04;
 
-/// One reference case.
-#[derive(Debug, Deserialize)]
-struct Reference {
-    start: String,
-    g: f64,
-    yield_ratio: Option<f64>,
-    sigma: Vec<f64>,
-    density: Vec<f64>,
-    contact_fraction: f64,
-    plastic_fraction: f64,
+/// One reference case: a start, G and σY/σH, the density on a σ grid and
+/// both fractions.
+#[derive(Debug)]
+pub(super) struct Reference {
+    /// `flat`, `hertz` or `cylinder`.
+    pub(super) start: &'static str,
+    /// G.
+    pub(super) g: f64,
+    /// σY/σH, `None` when elastic.
+    pub(super) yield_ratio: Option<f64>,
+    /// s = σ/σH.
+    pub(super) sigma: &'static [f64],
+    /// P(s) in 1/σH.
+    pub(super) density: &'static [f64],
+    /// A_el/A0.
+    pub(super) contact_fraction: f64,
+    /// A_pl/A0.
+    pub(super) plastic_fraction: f64,
 }
 
 impl Reference {
@@ -44,22 +49,11 @@ impl Reference {
 /// The references with their starts.
 ///
 /// # Errors
-/// [`Error::Parse`] if the compiled-in file is malformed (a build defect).
-fn references() -> Result<Vec<(Start, Reference)>> {
-    let parse = |message: String| Error::Parse {
-        path: "tests/reference/stress.json".into(),
-        line: 0,
-        column: 0,
-        message,
-    };
-    let cases: Vec<Reference> =
-        serde_json::from_str(REFERENCES).map_err(|e| parse(e.to_string()))?;
-    cases
-        .into_iter()
-        .map(|c| {
-            let st = Start::from_name(&c.start).map_err(|e| parse(e.to_string()))?;
-            Ok((st, c))
-        })
+/// A start name the solver does not know (a defect of the generated table).
+fn references() -> Result<Vec<(Start, &'static Reference)>> {
+    CASES
+        .iter()
+        .map(|c| Ok((Start::from_name(c.start)?, c)))
         .collect()
 }
 
@@ -87,7 +81,7 @@ pub(super) fn accuracy(extent: Extent) -> Result<Vec<MethodAccuracy>> {
     let series: Vec<_> = refs
         .iter()
         .filter(|(st, c)| c.yield_ratio.is_some() && c.tau_over_y2(st) >= min_ratio)
-        .map(|(st, c)| (st, c))
+        .map(|(st, c)| (st, *c))
         .collect();
     // the images' own domain: elastic, or τ/y² below the series' switch
     let images = |cylinder: bool| -> Vec<(&Start, &Reference)> {
@@ -95,7 +89,7 @@ pub(super) fn accuracy(extent: Extent) -> Result<Vec<MethodAccuracy>> {
             .filter(|(st, c)| {
                 matches!(st, Start::Cylinder) == cylinder && c.g > 0.0 && c.tau_over_y2(st) < 0.25
             })
-            .map(|(st, c)| (st, c))
+            .map(|(st, c)| (st, *c))
             .collect()
     };
     // the Hertz start P0 = 2s as a two-point table: every Hertz reference
@@ -103,7 +97,7 @@ pub(super) fn accuracy(extent: Extent) -> Result<Vec<MethodAccuracy>> {
     let tabulated: Vec<_> = refs
         .iter()
         .filter(|(st, _)| matches!(st, Start::Hertz))
-        .map(|(_, c)| (&table, c))
+        .map(|(_, c)| (&table, *c))
         .collect();
     let density = |method: &'static str,
                    title: &str,
@@ -181,7 +175,7 @@ fn density_row(cases: &[(&Start, &Reference)], tol: f64, how: Method) -> Result<
         let (mut err, mut est): (f64, f64) = (0.0, 0.0);
         for (st, c) in cases {
             let solver = Solver::with_method(st, c.g, c.yield_ratio, tol, how)?;
-            for (&s, &want) in c.sigma.iter().zip(&c.density) {
+            for (&s, &want) in c.sigma.iter().zip(c.density) {
                 let got = solver.density(s)?;
                 let scale = want.abs().max(1.0);
                 err = err.max((got.value - want).abs() / scale);
@@ -263,7 +257,12 @@ const EDGE_REFERENCES: [(&str, f64, Option<f64>, f64); 3] = [
 /// The reference A_el/A0 of a sweep case, where one exists: G = 0 (no
 /// roughness, no yield: exactly 1), the mpmath cases of `refs` and
 /// [`EDGE_REFERENCES`]. A tabulated start is Hertz's P0 as a table.
-fn sweep_reference(refs: &[(Start, Reference)], st: &Start, g: f64, y: Option<f64>) -> Option<f64> {
+fn sweep_reference(
+    refs: &[(Start, &Reference)],
+    st: &Start,
+    g: f64,
+    y: Option<f64>,
+) -> Option<f64> {
     if g == 0.0 {
         return Some(1.0);
     }
@@ -327,4 +326,90 @@ pub(super) fn stability() -> Result<Vec<StabilityCase>> {
         }
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A case of `tests/reference/stress.json` as serde_json reads it.
+    #[derive(serde::Deserialize)]
+    struct Json {
+        start: String,
+        g: f64,
+        yield_ratio: Option<f64>,
+        sigma: Vec<f64>,
+        density: Vec<f64>,
+        contact_fraction: f64,
+        plastic_fraction: f64,
+    }
+
+    fn json() -> Vec<Json> {
+        serde_json::from_str(include_str!("../../tests/reference/stress.json")).unwrap()
+    }
+
+    /// The constants are the numbers `tests/stress.rs` reads from the JSON
+    /// file (with serde_json), bit for bit.
+    #[test]
+    fn constants_are_the_json_references() {
+        let json = json();
+        assert_eq!(json.len(), CASES.len());
+        let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+        for (j, c) in json.iter().zip(&CASES) {
+            assert_eq!(j.start, c.start);
+            assert_eq!(
+                bits(&[j.g, j.contact_fraction, j.plastic_fraction]),
+                bits(&[c.g, c.contact_fraction, c.plastic_fraction])
+            );
+            assert_eq!(
+                j.yield_ratio.map(f64::to_bits),
+                c.yield_ratio.map(f64::to_bits)
+            );
+            assert_eq!(bits(&j.sigma), bits(c.sigma));
+            assert_eq!(bits(&j.density), bits(c.density));
+        }
+    }
+
+    /// Writes `src/report/stress_reference.rs` from the JSON file:
+    /// `cargo test --lib report::stress -- --ignored write_constants`.
+    #[test]
+    #[ignore = "regenerates a source file"]
+    fn write_constants() {
+        let list = |v: &[f64]| {
+            let items: Vec<String> = v.iter().map(|x| format!("{x:?}")).collect();
+            format!("&[{}]", items.join(", "))
+        };
+        let mut out = String::from(
+            "//! The mpmath references of `tests/reference/stress.json` (40 digits,\n\
+             //! `tests/reference/stress_reference.py`) as constants, as serde_json\n\
+             //! reads them (the numbers `tests/stress.rs` uses): written by\n\
+             //! `cargo test --lib report::stress -- --ignored write_constants`, do not edit.\n\n\
+             use super::stress::Reference;\n\n\
+             /// Three starts × G × σY/σH: densities on a σ grid and both fractions.\n\
+             #[rustfmt::skip]\n",
+        );
+        let cases = json();
+        out += &format!("pub(super) const CASES: [Reference; {}] = [\n", cases.len());
+        for c in &cases {
+            let y = c
+                .yield_ratio
+                .map_or("None".to_string(), |y| format!("Some({y:?})"));
+            out += &format!(
+                "    Reference {{ start: {:?}, g: {:?}, yield_ratio: {y}, sigma: {}, density: {}, \
+                 contact_fraction: {:?}, plastic_fraction: {:?} }},\n",
+                c.start,
+                c.g,
+                list(&c.sigma),
+                list(&c.density),
+                c.contact_fraction,
+                c.plastic_fraction
+            );
+        }
+        out += "];\n";
+        let path = concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/src/report/stress_reference.rs"
+        );
+        std::fs::write(path, out).unwrap();
+    }
 }
