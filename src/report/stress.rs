@@ -384,6 +384,8 @@ mod tests {
              //! `tests/reference/stress_reference.py`) as constants, as serde_json\n\
              //! reads them (the numbers `tests/stress.rs` uses): written by\n\
              //! `cargo test --lib report::stress -- --ignored write_constants`, do not edit.\n\n\
+             // exact values that happen to be near π/8 and the like\n\
+             #![allow(clippy::approx_constant)]\n\n\
              use super::stress::Reference;\n\n\
              /// Three starts × G × σY/σH: densities on a σ grid and both fractions.\n\
              #[rustfmt::skip]\n",

@@ -3,6 +3,9 @@
 //! reads them (the numbers `tests/stress.rs` uses): written by
 //! `cargo test --lib report::stress -- --ignored write_constants`, do not edit.
 
+// exact values that happen to be near π/8 and the like
+#![allow(clippy::approx_constant)]
+
 use super::stress::Reference;
 
 /// Three starts × G × σY/σH: densities on a σ grid and both fractions.
