@@ -183,6 +183,7 @@ impl HertzCase {
 
 /// The outcome of a Hertz validation.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[non_exhaustive]
 pub struct HertzReport {
     /// Grid side N.
     pub grid: usize,

@@ -191,6 +191,7 @@ impl TabulatedStart {
 /// The macroscopic (Hertz) contact of a body on a nominally flat substrate:
 /// the start condition with its peak pressure σH, mean pressure σ0 and size.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub struct HertzContact {
     /// The start condition.
     pub start: Start,
