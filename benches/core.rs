@@ -1,4 +1,4 @@
-//! Speed of the core (issue 2): `cargo bench --bench core`.
+//! Speed of the core: `cargo bench --bench core`.
 //!
 //! Targets: A/A0 at one pressure on the self-affine spectrum under 1 µs; a
 //! 10,000-point tabulated spectrum set up in under 1 ms, then G(ζ) in under 1 µs.

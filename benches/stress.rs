@@ -1,5 +1,5 @@
 //! A 1000-point stress curve at tol 1e-12, including set-up and both
-//! fractions (issue 3 goal: < 1 ms for each start).
+//! fractions (goal: < 1 ms for each start).
 //!
 //! Run: `cargo bench --bench stress`
 
@@ -19,13 +19,13 @@ fn curve(name: &str, g: f64, r: Option<f64>) -> f64 {
     c.contact_fraction + c.density[500]
 }
 
-/// Elastic, G = 0.6 (seed Figs. 2–4).
+/// Elastic, G = 0.6 (Persson, Bucher & Chiaia, Phys. Rev. B 65, 184106 (2002), Figs. 2–4).
 #[divan::bench(args = STARTS)]
 fn elastic_g_0_6(name: &str) -> f64 {
     curve(divan::black_box(name), 0.6, None)
 }
 
-/// Elastic, G = 2 (seed Figs. 2–4).
+/// Elastic, G = 2 (Persson, Bucher & Chiaia 2002, Figs. 2–4).
 #[divan::bench(args = STARTS)]
 fn elastic_g_2(name: &str) -> f64 {
     curve(divan::black_box(name), 2.0, None)

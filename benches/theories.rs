@@ -1,6 +1,6 @@
 //! Corrected-theory load curves and the mean separation.
 //!
-//! `cargo bench --bench theories`. Target (issue 6): a 100-point load curve
+//! `cargo bench --bench theories`. Target: a 100-point load curve
 //! for any theory under 1 ms on a self-affine or a 10,000-point tabulated
 //! spectrum.
 

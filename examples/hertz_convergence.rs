@@ -1,5 +1,6 @@
 //! Hertz convergence study: η, contact radius and peak pressure errors for
-//! both boundaries over a range of grids (issue 4, lecture 000 Table 1).
+//! both boundaries over a range of grids, next to Table 1 of J. F. Molinari's
+//! EPFL lecture "From single asperity to multi asperity contact".
 //!
 //! `cargo run --release --example hertz_convergence -- [N ...] [--tol T]`
 //! (default grids 64 128 256 512 1024, tol 1e-12).
@@ -25,7 +26,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         ..Options::default()
     };
     println!(
-        "boundary  grid  energy_error  lecture    a_err      p0_err     fraction  iters  seconds"
+        "boundary  grid  energy_error  Molinari   a_err      p0_err     fraction  iters  seconds"
     );
     for boundary in [Boundary::Free, Boundary::Periodic] {
         for &n in &grids {

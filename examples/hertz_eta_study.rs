@@ -1,7 +1,9 @@
-//! Hertz η study (issue 4, free boundary, L = R = E* = 1, a = 0.1 L): the
-//! issue's energy-norm error η = ‖p − p_ex‖_𝒢 / ‖p_ex‖_𝒢 next to lecture
-//! 000's own η_L² = |Σ(u − u_ex)(p − p_ex)| / Σ u_ex p_ex (u_ex the exact
-//! Hertz displacement), for honest variants of the same problem.
+//! Hertz η study (free boundary, L = R = E* = 1, a = 0.1 L): the
+//! energy-norm error η = ‖p − p_ex‖_𝒢 / ‖p_ex‖_𝒢 next to the η_L² =
+//! |Σ(u − u_ex)(p − p_ex)| / Σ u_ex p_ex of J. F. Molinari's EPFL lecture
+//! "From single asperity to multi asperity contact" (Table 1; u_ex the exact
+//! Hertz displacement, Johnson 1985 eqs. 3.41a/3.42a, `persson::reference`),
+//! for honest variants of the same problem.
 //!
 //! `cargo run --release --example hertz_eta_study -- [N ...] [--tol T] [--scan M]`
 //! (default grids 64 128 256 512 1024, tol 1e-12).
@@ -14,6 +16,7 @@
 //! min / mean / max of η: the luck of the contact edge's alignment.
 
 use persson::bem::{hertz, Boundary, Control, Operator, Options, Solver};
+use persson::reference;
 
 type Result<T> = std::result::Result<T, Box<dyn std::error::Error>>;
 
@@ -41,10 +44,13 @@ fn etas(n: usize, tol: f64, shift: (f64, f64), penetration: bool) -> Result<(f64
     };
     let mut solver = Solver::new(Operator::new(Boundary::Free, n, case.size, case.e_star)?);
     let sol = solver.solve(&h, control, &opts)?;
-    let p_ex: Vec<f64> = radii.iter().map(|&r| hertz::pressure(r, a, p0)).collect();
+    let p_ex: Vec<f64> = radii
+        .iter()
+        .map(|&r| reference::pressure_profile(r, a, p0))
+        .collect();
     let u_ex: Vec<f64> = radii
         .iter()
-        .map(|&r| hertz::displacement(r, a, p0, case.e_star))
+        .map(|&r| reference::ball_displacement(r, a, p0, case.e_star))
         .collect();
     let e: Vec<f64> = sol.pressure.iter().zip(&p_ex).map(|(p, q)| p - q).collect();
     let mut work = vec![0.0; n * n];
@@ -79,7 +85,7 @@ fn main() -> Result<()> {
         grids = vec![64, 128, 256, 512, 1024];
     }
     if scan > 0 {
-        println!("grid  eta min / mean / max (sphere centre over the cell)  lecture");
+        println!("grid  eta min / mean / max (sphere centre over the cell)  Molinari");
         for &n in &grids {
             let mut all = Vec::new();
             for ix in 0..=scan {
@@ -95,7 +101,7 @@ fn main() -> Result<()> {
         }
         return Ok(());
     }
-    println!("variant     grid  eta        eta_L (sign)    lecture");
+    println!("variant     grid  eta        eta_L (sign)    Molinari");
     for (name, shift, pen) in [
         ("node", (0.0, 0.0), false),
         ("corner", (0.5, 0.5), false),

@@ -57,7 +57,7 @@
 
 use crate::error::{check, Error, Result};
 use crate::kappa::Kappa;
-use crate::quad::integrate;
+use crate::quad::integrate_counted;
 use crate::special::{erf, erfc};
 use crate::theory::Persson;
 
@@ -516,7 +516,7 @@ impl OdeSolver {
         // solution's f and is checked against the tolerance).
         let hi = self.g_e.max(to);
         let scale = hi / theory.rate_at(self.g_e).1.max(theory.rate_at(to).1);
-        let q = integrate(
+        let (q, evals) = integrate_counted(
             "corrected-theory ODE quadrature",
             integrand,
             a.min(b),
@@ -528,7 +528,7 @@ impl OdeSolver {
         let sign = if b >= a { 1.0 } else { -1.0 };
         self.d += sign * q.value;
         self.d_error += q.error + f64::EPSILON * q.value.abs();
-        self.evals += q.evals;
+        self.evals += evals;
         self.g_e = to;
         Ok(())
     }

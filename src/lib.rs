@@ -161,6 +161,7 @@ pub mod material;
 #[cfg(feature = "plot")]
 pub mod plot;
 pub mod quad;
+pub mod reference;
 pub mod report;
 pub mod scene;
 pub mod separation;

@@ -7,7 +7,8 @@
 
 use crate::error::{Error, Result};
 
-/// Value with an estimated absolute error.
+/// Value with an estimated absolute error: what every approximation of the
+/// crate returns (a quadrature, a series, a closed form up to rounding).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Estimate {
     /// The value.
@@ -26,27 +27,8 @@ impl Estimate {
     }
 }
 
-/// Result of [`integrate`].
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
-pub struct Quadrature {
-    /// Integral value.
-    pub value: f64,
-    /// Estimated absolute error.
-    pub error: f64,
-    /// Integrand evaluations spent.
-    pub evals: usize,
-}
-
-impl From<Quadrature> for Estimate {
-    fn from(q: Quadrature) -> Self {
-        Estimate {
-            value: q.value,
-            error: q.error,
-        }
-    }
-}
-
-/// Integrate `f` over `[a, b]` to `max(abs_tol, rel_tol·|I|)`.
+/// Integrate `f` over `[a, b]` to `max(abs_tol, rel_tol·|I|)`: the integral
+/// with bilby's estimate of its absolute error.
 ///
 /// `what` names the integral in the error returned when the tolerance is not
 /// reached within `max_evals` evaluations, or when `f` is not finite somewhere.
@@ -63,7 +45,23 @@ pub fn integrate(
     abs_tol: f64,
     rel_tol: f64,
     max_evals: usize,
-) -> Result<Quadrature> {
+) -> Result<Estimate> {
+    integrate_counted(what, f, a, b, abs_tol, rel_tol, max_evals).map(|(q, _)| q)
+}
+
+/// [`integrate`], with the number of integrand evaluations it spent.
+///
+/// # Errors
+/// As [`integrate`].
+pub fn integrate_counted(
+    what: &str,
+    f: impl Fn(f64) -> f64,
+    a: f64,
+    b: f64,
+    abs_tol: f64,
+    rel_tol: f64,
+    max_evals: usize,
+) -> Result<(Estimate, usize)> {
     let bad = std::cell::Cell::new(0usize);
     let g = |x: f64| {
         let y = f(x);
@@ -99,11 +97,13 @@ pub fn integrate(
             tolerance: tol,
         });
     }
-    Ok(Quadrature {
-        value: r.value,
-        error: r.error_estimate,
-        evals: r.num_evals,
-    })
+    Ok((
+        Estimate {
+            value: r.value,
+            error: r.error_estimate,
+        },
+        r.num_evals,
+    ))
 }
 
 #[cfg(test)]

@@ -47,7 +47,7 @@
 use std::cell::RefCell;
 
 use crate::error::{check, Error, Result};
-use crate::quad::{integrate, Estimate, Quadrature};
+use crate::quad::{integrate_counted, Estimate};
 use crate::special::{e1, erf, EULER_GAMMA};
 use crate::spectrum::Spectrum;
 
@@ -157,7 +157,7 @@ impl<'a> Separation<'a> {
         what: &str,
         abs_tol: f64,
         kernel: impl Fn(f64, f64, f64) -> f64,
-    ) -> Result<Quadrature> {
+    ) -> Result<(Estimate, usize)> {
         let q_l = self.spectrum.q_min();
         let failure: RefCell<Option<Error>> = RefCell::new(None);
         let integrand = |v: f64| {
@@ -185,16 +185,18 @@ impl<'a> Separation<'a> {
             let w = 1.0 / (std::f64::consts::PI * m3).sqrt();
             kernel(q, c, w) * 2.0 * v * q
         };
-        let mut total = Quadrature {
-            value: 0.0,
-            error: 0.0,
-            evals: 0,
-        };
+        let mut total = (
+            Estimate {
+                value: 0.0,
+                error: 0.0,
+            },
+            0,
+        );
         for (i, pair) in self.knots.windows(2).enumerate() {
             let r = if i == 0 {
                 // v = t² on the first segment: ln w ~ −ln v (u0's p_ref and ū at
                 // small p) becomes 2t ln t, which Gauss–Kronrod resolves.
-                integrate(
+                integrate_counted(
                     what,
                     |t: f64| integrand(t * t) * 2.0 * t,
                     pair[0].sqrt(),
@@ -204,7 +206,7 @@ impl<'a> Separation<'a> {
                     MAX_EVALS,
                 )
             } else {
-                integrate(
+                integrate_counted(
                     what,
                     integrand,
                     pair[0],
@@ -218,9 +220,9 @@ impl<'a> Separation<'a> {
                 return Err(e);
             }
             let r = r?;
-            total.value += r.value;
-            total.error += r.error;
-            total.evals += r.evals;
+            total.0.value += r.0.value;
+            total.0.error += r.0.error;
+            total.1 += r.1;
         }
         Ok(total)
     }
@@ -244,7 +246,7 @@ impl<'a> Separation<'a> {
         check::positive("pressure", pressure)?;
         let r = pressure / self.contact_modulus;
         let sqrt_pi = std::f64::consts::PI.sqrt();
-        let q = self.integral("mean separation", f64::MIN_POSITIVE, |q, c, w| {
+        let (q, _) = self.integral("mean separation", f64::MIN_POSITIVE, |q, c, w| {
             let x2 = (w * r) * (w * r);
             if x2 >= UNDERFLOW_ARG {
                 0.0
@@ -272,7 +274,7 @@ impl<'a> Separation<'a> {
         let r = pressure / self.contact_modulus;
         let sqrt_pi = std::f64::consts::PI.sqrt();
         let x_s2 = (self.w_min()? * r).powi(2);
-        let q = self.integral("contact stiffness", f64::MIN_POSITIVE, |q, c, w| {
+        let (q, evals) = self.integral("contact stiffness", f64::MIN_POSITIVE, |q, c, w| {
             let x2 = (w * r) * (w * r) - x_s2;
             if x2 >= UNDERFLOW_ARG {
                 0.0
@@ -286,7 +288,7 @@ impl<'a> Separation<'a> {
         if scaled.value.is_nan() || scaled.value < 0.0 {
             return Err(Error::NotConverged {
                 what: format!("contact stiffness at p = {pressure:e} (compliance vanishes)"),
-                iterations: q.evals,
+                iterations: evals,
                 residual: scaled.value,
                 tolerance: self.tolerance,
             });
@@ -326,7 +328,7 @@ impl<'a> Separation<'a> {
         check::positive("pressure", pressure)?;
         let r = pressure / self.contact_modulus;
         let pre = 0.5 * std::f64::consts::PI * self.contact_modulus;
-        let q = self.integral("elastic energy", f64::MIN_POSITIVE, |q, c, w| {
+        let (q, _) = self.integral("elastic energy", f64::MIN_POSITIVE, |q, c, w| {
             pre * q * q * c * erf(w * r)
         })?;
         Ok(with_rounding(q))
@@ -383,13 +385,13 @@ impl<'a> Separation<'a> {
     /// Quadrature failure.
     pub fn low_load_law(&self) -> Result<LowLoadLaw> {
         let sqrt_pi = std::f64::consts::PI.sqrt();
-        let u0 = self.integral("low-load length u0", f64::MIN_POSITIVE, |q, c, w| {
+        let (u0, _) = self.integral("low-load length u0", f64::MIN_POSITIVE, |q, c, w| {
             sqrt_pi * q * q * c * w
         })?;
         // ln w changes sign over the band: an absolute tolerance scaled by u0
         // gives ln p_ref (hence p_ref relatively) to about `tolerance`.
         let abs_tol = self.tolerance * u0.value.abs();
-        let lw = self.integral("low-load ∫ q² C w ln w", abs_tol, |q, c, w| {
+        let (lw, _) = self.integral("low-load ∫ q² C w ln w", abs_tol, |q, c, w| {
             sqrt_pi * q * q * c * w * w.ln()
         })?;
         let ratio = lw.value / u0.value;
@@ -407,7 +409,7 @@ impl<'a> Separation<'a> {
 }
 
 /// A quadrature's value and error plus a few ulps of rounding.
-fn with_rounding(q: Quadrature) -> Estimate {
+fn with_rounding(q: Estimate) -> Estimate {
     Estimate {
         value: q.value,
         error: q.error + 8.0 * f64::EPSILON * q.value.abs(),

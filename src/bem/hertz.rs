@@ -15,81 +15,47 @@
 //!
 //! # References
 //! H. Hertz, J. reine angew. Math. 92, 156 (1882); K. L. Johnson, *Contact
-//! Mechanics* (CUP 1985), §4.2. Lecture 000 (seed), Table 1.
+//! Mechanics* (CUP 1985), §4.2; the closed forms are those of
+//! [`crate::reference`]. J. F. Molinari, EPFL lecture "From single asperity
+//! to multi asperity contact", Table 1 (η per grid).
 
 use super::kernel::{Boundary, Operator};
 use super::solver::{Control, Iteration, Options, Solver};
 use crate::error::{check, Error, Result};
+use crate::reference;
 
-/// Hertz contact radius `a = (3FR/(4E*))^{1/3}` (unit of R).
+/// Hertz contact radius `a = (3FR/(4E*))^{1/3}` (unit of R); see
+/// [`crate::reference::Ball`].
 pub fn contact_radius(force: f64, radius: f64, e_star: f64) -> f64 {
-    (3.0 * force * radius / (4.0 * e_star)).cbrt()
+    reference::ball_contact_radius(force, radius, e_star)
 }
 
-/// Total force `F = 4E* a³/(3R)` that gives the contact radius `a`.
+/// Total force `F = 4E* a³/(3R)` that gives the contact radius `a`; see
+/// [`crate::reference::Ball::from_contact_radius`].
 pub fn force_for_radius(a: f64, radius: f64, e_star: f64) -> f64 {
-    4.0 * e_star * a.powi(3) / (3.0 * radius)
+    reference::ball_load(a, radius, e_star)
 }
 
-/// Peak pressure `p₀ = 2E* a/(πR)`.
+/// Peak pressure `p₀ = 2E* a/(πR)`; see [`crate::reference::Ball`].
 pub fn peak_pressure(a: f64, radius: f64, e_star: f64) -> f64 {
-    2.0 * e_star * a / (std::f64::consts::PI * radius)
+    reference::ball_peak_pressure(a, radius, e_star)
 }
 
-/// Pressure `p₀ √(1 − r²/a²)` inside the contact, 0 outside.
+/// Pressure `p₀ √(1 − r²/a²)` inside the contact, 0 outside
+/// ([`crate::reference::pressure_profile`]).
 pub fn pressure(r: f64, a: f64, p0: f64) -> f64 {
-    if r < a {
-        p0 * (1.0 - (r / a).powi(2)).sqrt()
-    } else {
-        0.0
-    }
+    reference::pressure_profile(r, a, p0)
 }
 
 /// Normal surface displacement of the Hertz contact at distance `r` from the
-/// centre (unit of `a`), zero at infinity.
-///
-/// # Formula
-/// ```text
-/// u(r) = π p₀ (2a² − r²) / (4aE*)                          r ≤ a
-/// u(r) = p₀/(2aE*) [(2a² − r²) asin(a/r) + a √(r² − a²)]   r > a
-///      = p₀ r²/(4aE*) (sin x − x cos x),   x = 2 asin(a/r)
-/// sin x − x cos x = Σ_{k≥1} (−1)^{k+1} 2k x^{2k+1}/(2k+1)!   (used for x < 1)
-/// ```
-/// The second form of the outer branch avoids the cancellation of the first
-/// (both terms ~ a r while their sum ~ a³/r); far away u → F/(π E* r).
-/// Inside the contact u = δ − r²/(2R) with δ = a²/R when p₀ = 2E*a/(πR).
-///
-/// # References
-/// K. L. Johnson, *Contact Mechanics* (CUP 1985), eqs. 3.41a and 3.42a.
+/// centre (unit of `a`), zero at infinity: Johnson's eqs. 3.41a and 3.42a,
+/// cancellation-free ([`crate::reference::ball_displacement`]).
 pub fn displacement(r: f64, a: f64, p0: f64, e_star: f64) -> f64 {
-    let r = r.abs();
-    if r <= a {
-        return std::f64::consts::PI * p0 * (2.0 * a * a - r * r) / (4.0 * a * e_star);
-    }
-    let x = 2.0 * (a / r).asin();
-    p0 * r * r / (4.0 * a * e_star) * sin_minus_x_cos(x)
+    reference::ball_displacement(r, a, p0, e_star)
 }
 
-/// `sin x − x cos x` for `x ∈ [0, π]`, by its series below 1 (no cancellation).
-fn sin_minus_x_cos(x: f64) -> f64 {
-    if x >= 1.0 {
-        return x.sin() - x * x.cos();
-    }
-    // Term k: (−1)^{k+1} 2k x^{2k+1}/(2k+1)!; ratio of successive powers
-    // x²/((2k+2)(2k+3)) ≤ 1/20: 14 terms reach 1e-17 relative.
-    let x2 = x * x;
-    let mut power = x * x2 / 6.0; // x^{2k+1}/(2k+1)! at k = 1
-    let mut sum = 0.0;
-    for k in 1..=14 {
-        let kf = k as f64;
-        let sign = if k % 2 == 1 { 1.0 } else { -1.0 };
-        sum += sign * 2.0 * kf * power;
-        power *= x2 / ((2.0 * kf + 2.0) * (2.0 * kf + 3.0));
-    }
-    sum
-}
-
-/// Lecture 000, Table 1: the free-boundary η it reports per grid side N.
+/// The free-boundary η per grid side N reported in Table 1 of J. F. Molinari,
+/// EPFL lecture "From single asperity to multi asperity contact".
 pub const LECTURE_ETA: [(usize, f64); 6] = [
     (64, 1.40e-2),
     (128, 4.08e-3),
@@ -99,7 +65,7 @@ pub const LECTURE_ETA: [(usize, f64); 6] = [
     (2048, 1.66e-5),
 ];
 
-/// The lecture's η for grid side `n`, if its Table 1 has one.
+/// Molinari's η for grid side `n`, if his Table 1 has one ([`LECTURE_ETA`]).
 pub fn lecture_eta(n: usize) -> Option<f64> {
     LECTURE_ETA.iter().find(|(g, _)| *g == n).map(|(_, v)| *v)
 }
@@ -122,7 +88,7 @@ pub struct HertzCase {
 }
 
 impl HertzCase {
-    /// The issue's defaults: L = 1, R = 1, E* = 1, a = 0.1 L.
+    /// The standard validation case: L = 1, R = 1, E* = 1, a = 0.1 L.
     pub fn new(grid: usize, boundary: Boundary) -> Self {
         HertzCase {
             grid,
@@ -217,6 +183,7 @@ impl HertzCase {
 
 /// The outcome of a Hertz validation.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[non_exhaustive]
 pub struct HertzReport {
     /// Grid side N.
     pub grid: usize,
@@ -224,13 +191,14 @@ pub struct HertzReport {
     pub boundary: Boundary,
     /// η: energy norm of the pressure error relative to that of p_ex.
     pub energy_error: f64,
-    /// η_L: lecture 000's measure with the exact displacement u_ex,
+    /// η_L: the measure of Molinari's lecture (Table 1) with the exact
+    /// displacement u_ex,
     /// `sqrt(|Σ(u − u_ex)(p − p_ex)| / Σ u_ex p_ex)` (free boundary only;
     /// `None` for the periodic one, whose displacement is defined up to a
     /// constant that this measure depends on). Not a norm: the sum changes
     /// sign with N, and on the contact `u − u_ex` is nearly the constant
     /// `δ − δ_ex`, so it mostly measures how Σ(p − p_ex) cancels. Measured at
-    /// the issue's defaults, 64² to 1024²: 6–13× below η
+    /// the [`HertzCase::new`] defaults, 64² to 1024²: 6–13× below η
     /// (examples/hertz_eta_study.rs).
     pub energy_error_lecture: Option<f64>,
     /// Contact radius a from the fit of p² = p₀²(1 − r²/a²).
@@ -255,14 +223,14 @@ pub struct HertzReport {
 ///
 /// # Formula
 /// ```text
-/// η = sqrt(⟨p − p_ex, 𝒢(p − p_ex)⟩ / ⟨p_ex, 𝒢 p_ex⟩)     (lecture 000, Table 1)
+/// η = sqrt(⟨p − p_ex, 𝒢(p − p_ex)⟩ / ⟨p_ex, 𝒢 p_ex⟩)     (Molinari, Table 1)
 /// fit: p_i² = c₀ + c₁ r_i² by least squares over p_i > 0;  p₀ = √c₀,  a = √(−c₀/c₁)
 /// ```
 /// 𝒢 is the discrete compliance operator of the solve (periodic or free),
 /// p_ex the Hertz pressure sampled at the nodes. With the free operator the
 /// displacement u = 𝒢p is absolute, and the lecture's own definition
 /// ```text
-/// η_L² = |Σ (u − u_ex)(p − p_ex)| / Σ u_ex p_ex      (lecture 000, after Table 1)
+/// η_L² = |Σ (u − u_ex)(p − p_ex)| / Σ u_ex p_ex      (Molinari, after Table 1)
 /// ```
 /// with u_ex the exact [`displacement`] at the nodes is reported as well.
 ///
@@ -323,7 +291,7 @@ pub fn validate_observed(
     })
 }
 
-/// `sqrt(|Σ(u − u_ex)(p − p_ex)| / Σ u_ex p_ex)` (lecture 000's η).
+/// `sqrt(|Σ(u − u_ex)(p − p_ex)| / Σ u_ex p_ex)` (the η of Molinari's lecture).
 fn lecture_error(p: &[f64], u: &[f64], p_ex: &[f64], u_ex: &[f64]) -> f64 {
     let (mut num, mut den) = (0.0, 0.0);
     for ((p, u), (pe, ue)) in p.iter().zip(u).zip(p_ex.iter().zip(u_ex)) {
@@ -401,10 +369,6 @@ mod tests {
                 "r = {r}: {got:e} vs {want:e}"
             );
         }
-        // The series branch (x < 1) against the closed form at the switch.
-        let x: f64 = 1.0 - 1e-9;
-        let closed = x.sin() - x * x.cos();
-        assert!((sin_minus_x_cos(x) / closed - 1.0).abs() < 1e-14);
     }
 
     #[test]

@@ -61,27 +61,6 @@ impl Report {
 }
 
 impl Report {
-    /// Print with a group heading before each run of rows sharing a group
-    /// (tables only; JSON and CSV are printed as usual).
-    pub fn print_grouped(&self, f: &Format, groups: Vec<String>) -> anyhow::Result<()> {
-        if f.json || f.csv {
-            return self.print(f);
-        }
-        println!("{}", self.title);
-        let mut last = None;
-        for (row, g) in self.rows.iter().zip(&groups) {
-            if last != Some(g) {
-                println!("\n{g}");
-                let head: Vec<String> = self.columns.iter().map(|c| format!("{c:>16}")).collect();
-                println!("{}", head.join(" "));
-                last = Some(g);
-            }
-            let cells: Vec<String> = row.iter().map(|v| format!("{:>16}", fmt(*v))).collect();
-            println!("{}", cells.join(" "));
-        }
-        Ok(())
-    }
-
     /// The table as CSV: a header line, then one line per row (shortest round-trip numbers).
     pub fn csv(&self) -> String {
         let mut s = self.columns.join(",");

@@ -1,9 +1,8 @@
 //! `persson report accuracy|stability`.
 
 use persson::report::{self, Extent};
-use serde_json::json;
 
-use super::output::{Format, Report};
+use super::output::{self, Format};
 
 /// Arguments of `persson report`.
 #[derive(clap::Args, Debug)]
@@ -24,7 +23,9 @@ enum Which {
         #[command(flatten)]
         plot: super::plot::PlotArg,
     },
-    /// The extreme and stiff cases; exits 1 if any output is non-finite.
+    /// The extreme and stiff cases, summed up per family (every case with
+    /// --json); exits 1 if any output is non-finite or an error bound fails
+    /// against its reference.
     Stability {
         #[command(flatten)]
         format: Format,
@@ -36,71 +37,36 @@ pub fn run(a: Args) -> anyhow::Result<()> {
     match a.which {
         Which::Accuracy { full, format, plot } => {
             plot.check()?;
-            let rows = report::accuracy(if full { Extent::Full } else { Extent::Default })?;
+            let r = report::accuracy(if full { Extent::Full } else { Extent::Default })?;
             #[cfg(feature = "plot")]
             plot.draw(|| {
-                let mut methods: Vec<(String, Vec<(f64, f64)>)> = Vec::new();
-                for r in &rows {
-                    match methods.iter_mut().find(|m| m.0 == r.method) {
-                        Some(m) => m.1.push((r.seconds, r.error)),
-                        None => methods.push((r.method.clone(), vec![(r.seconds, r.error)])),
-                    }
-                }
-                let refs: Vec<(&str, &[(f64, f64)])> = methods
+                let methods: Vec<(&str, Vec<(f64, f64)>)> = r
+                    .methods
                     .iter()
-                    .map(|(n, p)| (n.as_str(), p.as_slice()))
+                    .map(|m| {
+                        let points = m.rows.iter().map(|r| (r.seconds, r.error)).collect();
+                        (m.title.as_str(), points)
+                    })
                     .collect();
+                let refs: Vec<(&str, &[(f64, f64)])> =
+                    methods.iter().map(|(n, p)| (*n, p.as_slice())).collect();
                 Ok(persson::plot::error_vs_time(&refs))
             })?;
-            Report {
-                title: "Error against run time (error: achieved, vs the reference named in --json)"
-                    .into(),
-                scalars: vec![],
-                columns: ["setting", "error", "estimate", "seconds"]
-                    .map(String::from)
-                    .to_vec(),
-                rows: rows
-                    .iter()
-                    .map(|r| {
-                        vec![
-                            r.setting,
-                            r.error,
-                            r.estimate.unwrap_or(f64::NAN),
-                            r.seconds,
-                        ]
-                    })
-                    .collect(),
-                json: json!({ "rows": rows }),
-            }
-            .print_grouped(
-                &format,
-                rows.iter()
-                    .map(|r| format!("{} [{}]", r.method, r.knob))
-                    .collect(),
-            )
+            output::print(&r, &format)
         }
         Which::Stability { format } => {
-            let cases = report::stability()?;
-            let bad = cases.iter().filter(|c| !c.finite).count();
-            if format.json {
-                println!(
-                    "{}",
-                    serde_json::to_string_pretty(&json!({ "cases": cases, "non_finite": bad }))?
+            let r = report::stability()?;
+            output::print(&r, &format)?;
+            let bad = r.non_finite();
+            if bad > 0 || !r.bounds_held() {
+                eprintln!(
+                    "persson: {bad} case(s) with a non-finite output{}",
+                    if r.bounds_held() {
+                        ""
+                    } else {
+                        ", and an error bound that failed against its reference"
+                    }
                 );
-            } else {
-                println!(
-                    "{:<64} {:>24} {:>12} finite",
-                    "case", "value", "error_bound"
-                );
-                for c in &cases {
-                    println!(
-                        "{:<64} {:>24e} {:>12.3e} {}",
-                        c.case, c.value, c.error_bound, c.finite
-                    );
-                }
-                println!("{} cases, {bad} with a non-finite output", cases.len());
-            }
-            if bad > 0 {
                 std::process::exit(1);
             }
             Ok(())

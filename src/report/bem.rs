@@ -4,7 +4,7 @@
 
 use rustfft::num_complex::Complex64;
 
-use super::{AccuracyRow, Extent};
+use super::{AccuracyRow, Extent, Knob, MethodAccuracy};
 use crate::bem::fft::Fft2;
 use crate::bem::surface::{synthesize, Surface};
 use crate::bem::{hertz, Boundary, Control, Operator, Options, Solver};
@@ -12,7 +12,8 @@ use crate::error::Result;
 use crate::spectrum::{Amplitude, SelfAffine};
 
 /// Solver tolerance of the grid studies: far below the discretisation
-/// errors measured (η ≥ 1e-4 up to 1024², lecture 000 Table 1).
+/// errors measured (η ≥ 1e-4 up to 1024²; Molinari, EPFL lecture "From
+/// single asperity to multi asperity contact", Table 1).
 const GRID_STUDY_TOL: f64 = 1e-12;
 
 /// Tolerance of the reference solve of the tolerance study.
@@ -31,11 +32,11 @@ const ROUGH_PRESSURE: f64 = 5e-3;
 ///
 /// # Errors
 /// A solve that fails (none should).
-pub(super) fn accuracy(extent: Extent) -> Result<Vec<AccuracyRow>> {
-    let mut rows = hertz_grid(extent)?;
-    rows.extend(rough_grid(extent)?);
-    rows.extend(tolerance()?);
-    Ok(rows)
+pub(super) fn accuracy(extent: Extent) -> Result<Vec<MethodAccuracy>> {
+    let mut methods = hertz_grid(extent)?;
+    methods.push(rough_grid(extent)?);
+    methods.push(tolerance()?);
+    Ok(methods)
 }
 
 /// Hertz η (energy norm against the exact Hertz pressure, what
@@ -44,7 +45,7 @@ pub(super) fn accuracy(extent: Extent) -> Result<Vec<AccuracyRow>> {
 /// The periodic rows level off near η ≈ 9e-4 (measured 9.85e-4 at 512²,
 /// 8.94e-4 at 1024²): the periodic images of the contact, a modelling error
 /// of the periodic boundary against the isolated Hertz solution.
-fn hertz_grid(extent: Extent) -> Result<Vec<AccuracyRow>> {
+fn hertz_grid(extent: Extent) -> Result<Vec<MethodAccuracy>> {
     let mut grids = vec![32, 64, 128, 256];
     if extent == Extent::Full {
         grids.extend([512, 1024]);
@@ -53,8 +54,9 @@ fn hertz_grid(extent: Extent) -> Result<Vec<AccuracyRow>> {
         tol: GRID_STUDY_TOL,
         ..Options::default()
     };
-    let mut rows = Vec::new();
+    let mut methods = Vec::new();
     for boundary in [Boundary::Periodic, Boundary::Free] {
+        let mut rows = Vec::new();
         for &n in &grids {
             let case = hertz::HertzCase::new(n, boundary);
             let (r, seconds) = median_solve(|| {
@@ -62,20 +64,31 @@ fn hertz_grid(extent: Extent) -> Result<Vec<AccuracyRow>> {
                 Ok((r, r.seconds))
             })?;
             rows.push(AccuracyRow {
-                method: format!(
-                    "BEM Hertz (a = 0.1 L), {} boundary, energy-norm error eta",
-                    name(boundary)
-                ),
-                knob: "grid".into(),
                 setting: n as f64,
                 error: r.energy_error,
-                estimate: None,
+                error_bound: None,
+                residual: None,
                 seconds,
-                reference: "exact Hertz pressure at the nodes".into(),
             });
         }
+        methods.push(MethodAccuracy {
+            method: match boundary {
+                Boundary::Periodic => "bem-hertz-periodic",
+                Boundary::Free => "bem-hertz-free",
+            },
+            title: format!(
+                "BEM, Hertz contact (a = 0.1 L), {} boundary: energy-norm error η",
+                name(boundary)
+            ),
+            knob: Knob::Grid,
+            reference:
+                "exact Hertz pressure at the nodes (Johnson, Contact Mechanics 1985, §4.2); \
+                        error relative in the energy norm; time per solve"
+                    .into(),
+            rows,
+        });
     }
-    Ok(rows)
+    Ok(methods)
 }
 
 /// Rough contact fraction against the grid: one seeded self-affine surface
@@ -83,7 +96,7 @@ fn hertz_grid(extent: Extent) -> Result<Vec<AccuracyRow>> {
 /// coarsest grid, sampled on finer grids by exact trigonometric
 /// interpolation (same random phases on every grid); error
 /// `|A(N) − A(N_ref)| / A(N_ref)` against the finest grid (256, Full 1024).
-fn rough_grid(extent: Extent) -> Result<Vec<AccuracyRow>> {
+fn rough_grid(extent: Extent) -> Result<MethodAccuracy> {
     let (grids, finest): (&[usize], usize) = match extent {
         Extent::Default => (&[32, 64, 128], 256),
         Extent::Full => (&[32, 64, 128, 256, 512], 1024),
@@ -102,23 +115,32 @@ fn rough_grid(extent: Extent) -> Result<Vec<AccuracyRow>> {
         })
     };
     let (a_ref, _) = solve(finest)?;
-    grids
+    let rows = grids
         .iter()
         .map(|&n| {
             let (a, seconds) = solve(n)?;
             Ok(AccuracyRow {
-                method: format!(
-                    "BEM rough contact fraction, periodic, p = {ROUGH_PRESSURE:e} E*, A/A0 = {a_ref:.4}"
-                ),
-                knob: "grid".into(),
                 setting: n as f64,
                 error: (a - a_ref).abs() / a_ref,
-                estimate: None,
+                error_bound: None,
+                residual: None,
                 seconds,
-                reference: format!("same surface on the {finest}² grid"),
             })
         })
-        .collect()
+        .collect::<Result<_>>()?;
+    Ok(MethodAccuracy {
+        method: "bem-rough-grid",
+        title: format!(
+            "BEM, rough contact fraction, periodic, σ0 = {} E*: A/A0 = {}",
+            crate::table::number(ROUGH_PRESSURE, 6),
+            crate::table::number(a_ref, 4)
+        ),
+        knob: Knob::Grid,
+        reference: format!(
+            "the same surface on the {finest}² grid; error relative; time per solve"
+        ),
+        rows,
+    })
 }
 
 /// The rough study's surface on the coarsest grid: L = 1, H = 0.8, rms
@@ -166,7 +188,7 @@ fn refine(s: &Surface, n: usize) -> Result<Surface> {
 
 /// The solver's tolerance at a fixed grid (rough surface, 64², periodic):
 /// energy-norm distance of the pressure to that of a tol 1e-14 solve.
-fn tolerance() -> Result<Vec<AccuracyRow>> {
+fn tolerance() -> Result<MethodAccuracy> {
     let n = 64;
     let s = refine(&rough_surface()?, n)?;
     let mut solver = Solver::new(Operator::new(Boundary::Periodic, n, s.size, 1.0)?);
@@ -188,7 +210,7 @@ fn tolerance() -> Result<Vec<AccuracyRow>> {
         solver
             .operator()
             .energy_product(&reference.pressure, &reference.pressure, &mut work)?;
-    [1e-4, 1e-6, 1e-8, 1e-10, 1e-12]
+    let rows = [1e-4, 1e-6, 1e-8, 1e-10, 1e-12]
         .iter()
         .map(|&tol| {
             let (sol, seconds) = median_solve(|| {
@@ -204,18 +226,24 @@ fn tolerance() -> Result<Vec<AccuracyRow>> {
                 .collect();
             let e = solver.operator().energy_product(&diff, &diff, &mut work)?;
             Ok(AccuracyRow {
-                method: format!(
-                    "BEM rough pressure field, {n}² periodic, energy-norm error (estimate: final residual eps)"
-                ),
-                knob: "tolerance".into(),
                 setting: tol,
                 error: (e.max(0.0) / norm).sqrt(),
-                estimate: Some(sol.residual),
+                error_bound: None,
+                residual: Some(sol.residual),
                 seconds,
-                reference: format!("tol {REFERENCE_TOL:e} solve"),
             })
         })
-        .collect()
+        .collect::<Result<_>>()?;
+    Ok(MethodAccuracy {
+        method: "bem-tolerance",
+        title: format!("BEM, rough pressure field, {n}² periodic: solver tolerance"),
+        knob: Knob::Tolerance,
+        reference: format!(
+            "a solve to tolerance {}; error relative in the energy norm; time per solve",
+            crate::table::number(REFERENCE_TOL, 6)
+        ),
+        rows,
+    })
 }
 
 /// Budget of repeated solves per row, s: small solves are repeated and the

@@ -5,6 +5,7 @@
 //! punch; the last abscissa of a table), and densities in units of 1/σH.
 
 use crate::error::{check, Error, Result};
+use crate::reference::{Ball, Cylinder};
 
 /// A start condition P0(s), s = σ/σH.
 #[derive(Debug, Clone, PartialEq)]
@@ -12,9 +13,11 @@ use crate::error::{check, Error, Result};
 pub enum Start {
     /// Flat punch: P0 = δ(s − 1), σ0 = σH.
     Flat,
-    /// Hertz ball: P0 = 2s for s < 1 (seed 001 Eq. 9), σ0 = 2σH/3.
+    /// Hertz ball: P0 = 2s for s < 1 (Persson, Bucher & Chiaia, Phys. Rev. B 65,
+    /// 184106 (2002), Eq. 9), σ0 = 2σH/3.
     Hertz,
-    /// Cylinder: P0 = s (1 − s²)^{−1/2} for s < 1 (seed 001 Eq. 12), σ0 = πσH/4.
+    /// Cylinder: P0 = s (1 − s²)^{−1/2} for s < 1 (Persson, Bucher & Chiaia,
+    /// Phys. Rev. B 65, 184106 (2002), Eq. 12), σ0 = πσH/4.
     Cylinder,
     /// A tabulated, piecewise linear P0.
     Tabulated(TabulatedStart),
@@ -188,6 +191,7 @@ impl TabulatedStart {
 /// The macroscopic (Hertz) contact of a body on a nominally flat substrate:
 /// the start condition with its peak pressure σH, mean pressure σ0 and size.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub struct HertzContact {
     /// The start condition.
     pub start: Start,
@@ -200,7 +204,8 @@ pub struct HertzContact {
 }
 
 impl HertzContact {
-    /// A ball of radius `radius` (m) pressed with `load` (N) on E* (Pa).
+    /// A ball of radius `radius` (m) pressed with `load` (N) on E* (Pa): the
+    /// start of [`crate::reference::Ball::from_load`].
     ///
     /// # Formula
     /// ```text
@@ -216,22 +221,20 @@ impl HertzContact {
     /// ```
     /// let c = persson::stress::HertzContact::ball(0.01, 10.0, 1e9).unwrap();
     /// assert!((c.nominal_pressure / c.peak_pressure - 2.0 / 3.0).abs() < 1e-15);
+    /// assert!((c.contact_radius / 4.217163326508746e-4 - 1.0).abs() < 1e-14);
     /// ```
     pub fn ball(radius: f64, load: f64, contact_modulus: f64) -> Result<Self> {
-        let r = check::positive("radius", radius)?;
-        let f = check::positive("load", load)?;
-        let e = check::positive("contact_modulus", contact_modulus)?;
-        let a = (0.75 * f * r / e).cbrt();
-        let area = std::f64::consts::PI * a * a;
+        let b = Ball::from_load(radius, load, contact_modulus)?;
         Ok(HertzContact {
             start: Start::Hertz,
-            peak_pressure: 1.5 * f / area,
-            nominal_pressure: f / area,
-            contact_radius: a,
+            peak_pressure: b.peak_pressure,
+            nominal_pressure: b.nominal_pressure(),
+            contact_radius: b.contact_radius,
         })
     }
 
-    /// A cylinder of radius `radius` (m) pressed with `load_per_length` (N/m).
+    /// A cylinder of radius `radius` (m) pressed with `load_per_length` (N/m):
+    /// the start of [`crate::reference::Cylinder::from_load_per_length`].
     ///
     /// # Formula
     /// ```text
@@ -243,15 +246,12 @@ impl HertzContact {
     /// # References
     /// K. L. Johnson, *Contact Mechanics* (CUP 1985), Eqs. 4.43–4.45.
     pub fn cylinder(radius: f64, load_per_length: f64, contact_modulus: f64) -> Result<Self> {
-        let r = check::positive("radius", radius)?;
-        let f = check::positive("load_per_length", load_per_length)?;
-        let e = check::positive("contact_modulus", contact_modulus)?;
-        let a = (4.0 * f * r / (std::f64::consts::PI * e)).sqrt();
+        let c = Cylinder::from_load_per_length(radius, load_per_length, contact_modulus)?;
         Ok(HertzContact {
             start: Start::Cylinder,
-            peak_pressure: 2.0 * f / (std::f64::consts::PI * a),
-            nominal_pressure: f / (2.0 * a),
-            contact_radius: a,
+            peak_pressure: c.peak_pressure,
+            nominal_pressure: c.nominal_pressure(),
+            contact_radius: c.half_width,
         })
     }
 }
