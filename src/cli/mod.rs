@@ -7,8 +7,8 @@ mod args;
 mod bem;
 #[cfg(feature = "bem")]
 mod compare;
-mod g;
 mod kappa;
+mod magnification;
 mod output;
 mod plot;
 mod report;
@@ -35,7 +35,8 @@ enum Cmd {
     /// Spectrum summary: rms height, slope and curvature, and C(q).
     Spectrum(spectrum::Args),
     /// G(ζ) and A/A0 against magnification at one nominal pressure.
-    G(g::Args),
+    #[command(alias = "g")]
+    Magnification(magnification::Args),
     /// Real contact area A/A0 against nominal pressure (load curve).
     Area(area::Args),
     /// κ of the linear low-load law for Bush and Persson.
@@ -44,7 +45,7 @@ enum Cmd {
     Run(run::Args),
     /// Reports: error against run time, and stability at the extremes.
     Report(report::Args),
-    /// Stress distribution P(σ) at one G (dimensionless; seed Figs. 2–4).
+    /// Stress distribution P(σ) at one G (dimensionless; Persson, Bucher & Chiaia 2002, Figs. 2–4).
     Stress(stress::Args),
     /// Mean interfacial separation ū, stiffness K = −dp/dū and elastic energy against load.
     Separation(separation::Args),
@@ -60,7 +61,7 @@ enum Cmd {
 pub fn run(cli: Cli) -> anyhow::Result<()> {
     match cli.cmd {
         Cmd::Spectrum(a) => spectrum::run(a),
-        Cmd::G(a) => g::run(a),
+        Cmd::Magnification(a) => magnification::run(a),
         Cmd::Area(a) => area::run(a),
         Cmd::Kappa(a) => kappa::run(a),
         Cmd::Run(a) => run::run(a),

@@ -79,8 +79,8 @@ pub(super) fn stability() -> Result<Vec<StabilityCase>> {
                 out.push(case(
                     format!("H = {h}, zeta = {zeta:e}, pressure = 1e{lp} E*: A/A0"),
                     pt.contact_fraction,
-                    pt.error,
-                    &[pt.g, pt.g_error, pt.complement],
+                    pt.error_bound,
+                    &[pt.g, pt.g_error_bound, pt.non_contact_fraction],
                 ));
             }
         }
