@@ -260,7 +260,7 @@ pub(super) fn stability() -> Result<Vec<StabilityCase>> {
                 others.extend([
                     c.plastic_fraction,
                     c.non_contact_fraction,
-                    c.density_error_bound,
+                    c.scaled_density_error_bound,
                     c.elastic_fraction_error_bound,
                     c.plastic_fraction_error_bound,
                     c.tau,

@@ -92,7 +92,7 @@ pub struct StressCurve {
     /// fractions.
     pub error_bound: f64,
     /// Bound on the absolute error of the density values (1/σH).
-    pub density_error_bound: f64,
+    pub scaled_density_error_bound: f64,
     /// Bound on the absolute error of `elastic_fraction`.
     pub elastic_fraction_error_bound: f64,
     /// Bound on the absolute error of `plastic_fraction`.
@@ -367,7 +367,7 @@ impl<'a> Solver<'a> {
             plastic_fraction: pl.value,
             non_contact_fraction: 1.0 - el.value - pl.value,
             error_bound,
-            density_error_bound: derr,
+            scaled_density_error_bound: derr,
             elastic_fraction_error_bound: el.error,
             plastic_fraction_error_bound: pl.error,
             g: self.g,
