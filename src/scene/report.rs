@@ -428,8 +428,20 @@ pub struct StressCurveReport {
     pub elastic_fraction: f64,
     /// A_pl/A0.
     pub plastic_fraction: f64,
+    /// 1 − A/A0 (dimensionless curves).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub non_contact_fraction: Option<f64>,
     /// Bound on the absolute error of σH·P and of the fractions.
     pub error_bound: f64,
+    /// Bound on the absolute error of σH·P alone (dimensionless curves).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub scaled_density_error_bound: Option<f64>,
+    /// Bound on the absolute error of A_el/A0 alone (dimensionless curves).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub elastic_fraction_error_bound: Option<f64>,
+    /// Bound on the absolute error of A_pl/A0 alone (dimensionless curves).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub plastic_fraction_error_bound: Option<f64>,
     /// How the density was computed.
     pub method: String,
 }

@@ -270,7 +270,11 @@ pub fn stress_dimensionless(
                 contact_fraction: c.contact_fraction,
                 elastic_fraction: c.elastic_fraction,
                 plastic_fraction: c.plastic_fraction,
+                non_contact_fraction: Some(c.non_contact_fraction),
                 error_bound: c.error_bound,
+                scaled_density_error_bound: Some(c.scaled_density_error_bound),
+                elastic_fraction_error_bound: Some(c.elastic_fraction_error_bound),
+                plastic_fraction_error_bound: Some(c.plastic_fraction_error_bound),
                 method: c.method,
             })
         })
@@ -333,7 +337,11 @@ pub fn stress_physical(surface: &Surface, out: &StressOutput) -> Result<StressRe
             contact_fraction: c.contact_fraction,
             elastic_fraction: c.elastic_fraction,
             plastic_fraction: c.plastic_fraction,
+            non_contact_fraction: None,
             error_bound: c.error_bound,
+            scaled_density_error_bound: None,
+            elastic_fraction_error_bound: None,
+            plastic_fraction_error_bound: None,
             method: c.method,
         })
         .collect();
