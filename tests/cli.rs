@@ -67,11 +67,9 @@ fn example_runs_in_every_format() {
     );
     let (code, out, _) = persson(&["area", "--example", "--csv"]);
     assert_eq!(code, 0);
-    assert!(out
-        .lines()
-        .next()
-        .unwrap()
-        .starts_with("nominal_pressure,g,effective_g,contact_fraction,error_bound,contact_fraction_bush_linear"));
+    assert!(out.lines().next().unwrap().starts_with(
+        "nominal_pressure,g,effective_g,contact_fraction,error_bound,contact_fraction_bush_linear"
+    ));
     assert_eq!(out.lines().count(), 7);
     for cmd in ["spectrum", "magnification", "kappa", "separation", "area"] {
         let v = json(&[cmd, "--example", "--json"]);

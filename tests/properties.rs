@@ -33,16 +33,16 @@ proptest! {
         let p = 10f64.powf(lp);
         let zeta = m.zeta_max().powf(lz);
         let a = m.point(zeta, p).unwrap();
-        prop_assert!(a.g.is_finite() && a.contact_fraction.is_finite() && a.complement.is_finite());
+        prop_assert!(a.g.is_finite() && a.contact_fraction.is_finite() && a.non_contact_fraction.is_finite());
         prop_assert!((0.0..=1.0).contains(&a.contact_fraction));
-        prop_assert!((0.0..=1.0).contains(&a.complement));
+        prop_assert!((0.0..=1.0).contains(&a.non_contact_fraction));
         // more load, more area; more magnification, less area
         let b = m.point(zeta, p * f).unwrap();
         prop_assert!(b.contact_fraction >= a.contact_fraction);
         let c = m.point((zeta * f).min(m.zeta_max()).max(zeta), p).unwrap();
         prop_assert!(c.contact_fraction <= a.contact_fraction);
         // A + (1 − A) = 1 to rounding
-        prop_assert!((a.contact_fraction + a.complement - 1.0).abs() <= 4.0 * f64::EPSILON);
+        prop_assert!((a.contact_fraction + a.non_contact_fraction - 1.0).abs() <= 4.0 * f64::EPSILON);
     }
 
     #[test]

@@ -35,7 +35,8 @@ const CLOSED_FORM_TOL: f64 = 1e-14;
 const SIMPSON_TOL: f64 = 1e-11;
 
 fn scratch(name: &str) -> PathBuf {
-    let d = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("scene-{name}-{}", std::process::id()));
+    let d =
+        Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("scene-{name}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&d);
     std::fs::create_dir_all(&d).unwrap();
     d
@@ -64,7 +65,11 @@ fn area_matches_the_closed_form_and_only_it_is_computed() {
         assert!((p.g - g).abs() <= G_REL_TOL * g, "G = {} vs {g}", p.g);
         // Persson (2001): A/A0 = erf(1/(2√G)), 1 − A/A0 = erfc(1/(2√G)).
         let exact = libm::erf(0.5 / g.sqrt());
-        assert!((p.contact_fraction - exact).abs() < AREA_ABS_TOL, "{}", p.contact_fraction);
+        assert!(
+            (p.contact_fraction - exact).abs() < AREA_ABS_TOL,
+            "{}",
+            p.contact_fraction
+        );
         assert!((p.non_contact_fraction - libm::erfc(0.5 / g.sqrt())).abs() < AREA_ABS_TOL);
         assert!(p.error_bound > 0.0 && p.error_bound < AREA_ABS_TOL);
         assert_eq!(p.effective_g, p.g, "original theory: G_e = G");
@@ -72,9 +77,12 @@ fn area_matches_the_closed_form_and_only_it_is_computed() {
         assert!((p.contact_fraction_bush_linear - bush).abs() <= 4.0 * f64::EPSILON * bush);
     }
     assert!((area.rms_slope - 1.0).abs() < 1e-14);
-    let json = serde_json::to_value(parse(&scene(r#"{ "kappa": {} }"#)).unwrap().run().unwrap())
-        .unwrap();
-    assert!(json.get("area").is_none(), "absent outputs are not written: {json}");
+    let json =
+        serde_json::to_value(parse(&scene(r#"{ "kappa": {} }"#)).unwrap().run().unwrap()).unwrap();
+    assert!(
+        json.get("area").is_none(),
+        "absent outputs are not written: {json}"
+    );
 }
 
 #[test]
@@ -89,7 +97,12 @@ fn kappa_values_are_the_papers() {
     assert_eq!(k.kappa_persson, (8.0 / std::f64::consts::PI).sqrt());
     assert!(k.points.is_empty() && k.rms_slope.is_none());
     // With a surface: A/A0 = κ σ0/(E* h'_rms), h'_rms = 1.
-    let k = parse(&scene(r#"{ "kappa": {} }"#)).unwrap().run().unwrap().kappa.unwrap();
+    let k = parse(&scene(r#"{ "kappa": {} }"#))
+        .unwrap()
+        .run()
+        .unwrap()
+        .kappa
+        .unwrap();
     for (p, sigma0) in k.points.iter().zip([0.01, 0.1]) {
         let want = (8.0 / std::f64::consts::PI).sqrt() * sigma0;
         assert!((p.contact_fraction_persson_linear - want).abs() <= 4.0 * f64::EPSILON * want);
@@ -132,7 +145,9 @@ fn errors_name_field_line_and_column() {
     ];
     for (text, line, needle) in cases {
         match parse(&text) {
-            Err(Error::Parse { line: l, message, .. }) => {
+            Err(Error::Parse {
+                line: l, message, ..
+            }) => {
                 assert_eq!(l, line, "{message}");
                 assert!(message.contains(needle), "{message}");
             }
@@ -145,10 +160,16 @@ fn errors_name_field_line_and_column() {
 fn invalid_values_are_named_with_their_section() {
     for (from, to, needle) in [
         ("\"hurst\": 0.8", "\"hurst\": 1.2", "spectrum.hurst"),
-        ("\"contact_modulus\": 1.0", "\"contact_modulus\": -1", "material.contact_modulus"),
+        (
+            "\"contact_modulus\": 1.0",
+            "\"contact_modulus\": -1",
+            "material.contact_modulus",
+        ),
         ("[0.01, 0.1]", "[]", "pressures"),
     ] {
-        let s = BASE.replace(from, to).replace("OUTPUTS", r#"{ "area": {} }"#);
+        let s = BASE
+            .replace(from, to)
+            .replace("OUTPUTS", r#"{ "area": {} }"#);
         let e = parse(&s).unwrap().run().unwrap_err().to_string();
         assert!(e.contains(needle), "{e}");
     }
@@ -160,14 +181,24 @@ fn invalid_values_are_named_with_their_section() {
 #[test]
 fn closed_sets_are_spelled_as_on_the_command_line() {
     use clap::ValueEnum;
-    fn check<T: ValueEnum + serde::Serialize + serde::de::DeserializeOwned + PartialEq + std::fmt::Debug + Copy>(
+    fn check<
+        T: ValueEnum
+            + serde::Serialize
+            + serde::de::DeserializeOwned
+            + PartialEq
+            + std::fmt::Debug
+            + Copy,
+    >(
         all: &[T],
         name: impl Fn(T) -> &'static str,
     ) {
         for &v in all {
             let clap = v.to_possible_value().unwrap();
             assert_eq!(clap.get_name(), name(v));
-            assert_eq!(serde_json::to_string(&v).unwrap(), format!("\"{}\"", name(v)));
+            assert_eq!(
+                serde_json::to_string(&v).unwrap(),
+                format!("\"{}\"", name(v))
+            );
             let back: T = serde_json::from_str(&format!("\"{}\"", name(v))).unwrap();
             assert_eq!(back, v);
         }
@@ -177,7 +208,10 @@ fn closed_sets_are_spelled_as_on_the_command_line() {
     check(StartName::ALL, StartName::name);
     check(TheoryName::ALL, TheoryName::name);
     assert_eq!(ConventionName::Profile1d.name(), "profile1d");
-    assert_eq!(ConventionName::SurfaceTopography.name(), "surface-topography");
+    assert_eq!(
+        ConventionName::SurfaceTopography.name(),
+        "surface-topography"
+    );
 }
 
 /// A tabulated spectrum in the SurfaceTopography convention (C·(2π)²) gives
@@ -202,7 +236,14 @@ fn tabulated_conventions_are_read_by_name() {
                "spectrum": {{"kind": "tabulated", "file": "{file}", "convention": "{convention}"}},
                "pressures": [0.01], "outputs": {{"area": {{}}}}}}"#
         );
-        Scene::parse(&dir.join("s.json"), &text).unwrap().run().unwrap().area.unwrap().points[0].g
+        Scene::parse(&dir.join("s.json"), &text)
+            .unwrap()
+            .run()
+            .unwrap()
+            .area
+            .unwrap()
+            .points[0]
+            .g
     };
     let (a, b) = (run("p.csv", "persson"), run("st.csv", "surface-topography"));
     assert!((a - b).abs() <= G_REL_TOL * a, "{a} vs {b}");
@@ -210,7 +251,11 @@ fn tabulated_conventions_are_read_by_name() {
     let text = r#"{"schema": 1, "spectrum": {"kind": "tabulated", "file": "x.csv", "convention": "profile1d"}, "outputs": {}}"#;
     assert!(parse(text).is_ok());
     let grid = r#"{"schema": 1, "material": {"contact_modulus": 1}, "spectrum": {"kind": "tabulated", "file": "p.csv", "convention": "grid"}, "pressures": [0.1], "outputs": {"area": {}}}"#;
-    let e = Scene::parse(&dir.join("s.json"), grid).unwrap().run().unwrap_err().to_string();
+    let e = Scene::parse(&dir.join("s.json"), grid)
+        .unwrap()
+        .run()
+        .unwrap_err()
+        .to_string();
     assert!(e.contains("spectrum.size"), "{e}");
 }
 
@@ -221,7 +266,10 @@ fn stress_output_matches_closed_forms_and_integrates_to_the_area() {
     )
     .unwrap();
     let r = s.run().unwrap();
-    assert!(r.area.is_none() && r.theories.is_none(), "only the stress output");
+    assert!(
+        r.area.is_none() && r.theories.is_none(),
+        "only the stress output"
+    );
     let st = r.stress.unwrap();
     assert_eq!(st.curves.len(), 2);
     for (c, g) in st.curves.iter().zip([0.6f64, 2.0]) {
@@ -230,12 +278,20 @@ fn stress_output_matches_closed_forms_and_integrates_to_the_area() {
         let x = 0.75 / g.sqrt();
         let want = libm::erf(x) * (1.0 - 0.5 / (x * x))
             + (-x * x).exp() / (x * std::f64::consts::PI.sqrt());
-        assert!((c.contact_fraction - want).abs() < CLOSED_FORM_TOL, "{}", c.contact_fraction);
+        assert!(
+            (c.contact_fraction - want).abs() < CLOSED_FORM_TOL,
+            "{}",
+            c.contact_fraction
+        );
         assert_eq!(c.contact_fraction, c.elastic_fraction + c.plastic_fraction);
         assert_eq!(c.sigma_ratio.len(), 2001);
         // ∫ P dσ = A/A0.
         let integral = simpson(&c.sigma_ratio, &c.scaled_density);
-        assert!((integral - c.contact_fraction).abs() < SIMPSON_TOL, "{integral} vs {}", c.contact_fraction);
+        assert!(
+            (integral - c.contact_fraction).abs() < SIMPSON_TOL,
+            "{integral} vs {}",
+            c.contact_fraction
+        );
     }
     assert!((st.curves[0].contact_fraction - 0.615_097).abs() < 5e-7);
     assert!((st.curves[1].contact_fraction - 0.377_787).abs() < 5e-7);
@@ -252,7 +308,11 @@ fn stress_output_in_the_pressure_unit() {
     assert_eq!(st.peak_pressure, Some(0.1));
     for c in &st.curves {
         let exact = libm::erf(0.5 / c.g.sqrt());
-        assert!((c.contact_fraction - exact).abs() < AREA_ABS_TOL, "{} vs {exact}", c.contact_fraction);
+        assert!(
+            (c.contact_fraction - exact).abs() < AREA_ABS_TOL,
+            "{} vs {exact}",
+            c.contact_fraction
+        );
         assert!(c.zeta.is_some() && c.sigma.len() == 5 && c.sigma_ratio.is_empty());
     }
     // With a yield stress the σ grid ends at σY: ∫₀^σY P dσ = A_el/A0, and
@@ -263,7 +323,11 @@ fn stress_output_in_the_pressure_unit() {
     .unwrap();
     let c = &s.run().unwrap().stress.unwrap().curves[0];
     let integral = simpson(&c.sigma, &c.density);
-    assert!((integral - c.elastic_fraction).abs() < SIMPSON_TOL, "{integral} vs {}", c.elastic_fraction);
+    assert!(
+        (integral - c.elastic_fraction).abs() < SIMPSON_TOL,
+        "{integral} vs {}",
+        c.elastic_fraction
+    );
     assert!(c.plastic_fraction > 0.0);
     assert_eq!(c.contact_fraction, c.elastic_fraction + c.plastic_fraction);
     let bad = parse(&scene(r#"{"stress": {"start": "hertz", "zeta": [10]}}"#))
@@ -292,10 +356,12 @@ fn theories_and_separation_outputs() {
     assert_eq!(sep.points.len(), 2);
     assert!(sep.points[0].mean_separation > sep.points[1].mean_separation);
     assert!(sep.points[1].mean_separation > 0.0 && sep.low_load_length > 0.0);
-    let e = parse(&scene(r#"{"theories": {"theories": [{"theory": "yang-persson", "gamma": 7}]}}"#))
-        .unwrap()
-        .run()
-        .unwrap_err();
+    let e = parse(&scene(
+        r#"{"theories": {"theories": [{"theory": "yang-persson", "gamma": 7}]}}"#,
+    ))
+    .unwrap()
+    .run()
+    .unwrap_err();
     assert!(e.to_string().contains("gamma"), "{e}");
 }
 
@@ -314,16 +380,23 @@ fn shipped_scenes_run_and_their_titles_match() {
         for label in ["seed 0", "Seed 0", "lecture 000", "closure"] {
             assert!(!name.contains(label), "{}: {name}", path.display());
         }
-        if cfg!(not(feature = "bem")) && (s.outputs.bem.is_some() || s.outputs.bem_hertz.is_some()) {
+        if cfg!(not(feature = "bem")) && (s.outputs.bem.is_some() || s.outputs.bem_hertz.is_some())
+        {
             let e = s.run().unwrap_err().to_string();
             assert!(e.contains("`bem` feature"), "{}: {e}", path.display());
             continue;
         }
-        let r = s.run().unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        let r = s
+            .run()
+            .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         // Stress scenes print A/A0 of each curve in their name, to 3 digits.
         for c in r.stress.iter().flat_map(|st| &st.curves) {
             let a = number(c.contact_fraction, 3);
-            assert!(name.contains(&a), "{}: {name} lacks A/A0 = {a}", path.display());
+            assert!(
+                name.contains(&a),
+                "{}: {name} lacks A/A0 = {a}",
+                path.display()
+            );
         }
         n += 1;
     }
@@ -340,15 +413,28 @@ fn schema_file_is_generated_from_the_types() {
         std::fs::write(&path, &want).unwrap();
     }
     let got = std::fs::read_to_string(&path).unwrap_or_default();
-    assert!(got == want, "scenes/schema.json is stale: run PERSSON_WRITE_SCHEMA=1 cargo test --test scene");
+    assert!(
+        got == want,
+        "scenes/schema.json is stale: run PERSSON_WRITE_SCHEMA=1 cargo test --test scene"
+    );
     // Every field of the scene file is documented in README.md.
-    let readme = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("README.md")).unwrap();
-    let section = readme.split("## Scenes").nth(1).unwrap().split("\n## ").next().unwrap();
+    let readme =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("README.md")).unwrap();
+    let section = readme
+        .split("## Scenes")
+        .nth(1)
+        .unwrap()
+        .split("\n## ")
+        .next()
+        .unwrap();
     let schema: serde_json::Value = serde_json::from_str(&want).unwrap();
     let mut keys = Vec::new();
     collect_properties(&schema, &mut keys);
     for k in keys {
-        assert!(section.contains(&format!("`{k}`")), "README ## Scenes lacks `{k}`");
+        assert!(
+            section.contains(&format!("`{k}`")),
+            "README ## Scenes lacks `{k}`"
+        );
     }
 }
 
@@ -375,7 +461,16 @@ mod cli {
     use common::{json, persson};
 
     const FLAGS: [&str; 10] = [
-        "--hurst", "0.8", "--q-l", "1", "--q-s", "100", "--rms-slope", "1", "--contact-modulus", "1",
+        "--hurst",
+        "0.8",
+        "--q-l",
+        "1",
+        "--q-s",
+        "100",
+        "--rms-slope",
+        "1",
+        "--contact-modulus",
+        "1",
     ];
 
     fn with(cmd: &str, extra: &[&str]) -> serde_json::Value {
@@ -399,13 +494,27 @@ mod cli {
             r#"{"area": {"theory": "yang-persson"}, "separation": {}, "kappa": {},
                 "magnification": {"nominal_pressure": 0.1, "zeta": [1, 10, 100]}}"#,
         );
-        let area = with("area", &["--pressure", "0.01,0.1", "--theory", "yang-persson"]);
+        let area = with(
+            "area",
+            &["--pressure", "0.01,0.1", "--theory", "yang-persson"],
+        );
         assert_eq!(area, r["area"]);
-        assert_eq!(with("separation", &["--pressure", "0.01,0.1"]), r["separation"]);
+        assert_eq!(
+            with("separation", &["--pressure", "0.01,0.1"]),
+            r["separation"]
+        );
         assert_eq!(with("kappa", &["--pressure", "0.01,0.1"]), r["kappa"]);
-        assert_eq!(with("magnification", &["--pressure", "0.1", "--zeta", "1,10,100"]), r["magnification"]);
+        assert_eq!(
+            with(
+                "magnification",
+                &["--pressure", "0.1", "--zeta", "1,10,100"]
+            ),
+            r["magnification"]
+        );
         let st = run_scene(r#"{"stress": {"start": "cylinder", "g": [0.6], "points": 11}}"#);
-        let cli = json(&["stress", "--start", "cylinder", "--g", "0.6", "--points", "11", "--json"]);
+        let cli = json(&[
+            "stress", "--start", "cylinder", "--g", "0.6", "--points", "11", "--json",
+        ]);
         assert_eq!(cli, st["stress"]);
     }
 
@@ -413,9 +522,17 @@ mod cli {
     fn run_out_creates_the_directory_and_writes_one_csv_per_table() {
         let dir = scratch("out").join("a/b");
         let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/fig3_hertz.json");
-        let (code, out, err) = persson(&["run", scene.to_str().unwrap(), "--out", dir.to_str().unwrap()]);
+        let (code, out, err) = persson(&[
+            "run",
+            scene.to_str().unwrap(),
+            "--out",
+            dir.to_str().unwrap(),
+        ]);
         assert_eq!(code, 0, "{err}");
-        assert!(out.contains("G = 0.6") && !out.contains("None") && !out.contains("Some("), "{out}");
+        assert!(
+            out.contains("G = 0.6") && !out.contains("None") && !out.contains("Some("),
+            "{out}"
+        );
         assert!(dir.join("report.json").exists());
         // serde_json's float parsing may be 1 ulp off: compare with the report itself.
         let report = Scene::read(&scene).unwrap().run().unwrap().stress.unwrap();
@@ -451,15 +568,27 @@ mod cli {
         assert!(out.status.success());
         assert!(out.stdout.is_empty());
         let err = String::from_utf8_lossy(&out.stderr);
-        for name in ["theories_original", "theories_yang-persson", "theories_wang-muser", "theories_xu", "separation"] {
+        for name in [
+            "theories_original",
+            "theories_yang-persson",
+            "theories_wang-muser",
+            "theories_xu",
+            "separation",
+        ] {
             let text = std::fs::read_to_string(dir.join(format!("{name}.csv"))).unwrap();
             assert!(err.contains(&format!("{name}.csv")), "{err}");
             let width = text.lines().next().unwrap().split(',').count();
             assert_eq!(text.lines().count(), 9, "{name}: header and 8 pressures");
-            assert!(text.lines().all(|l| l.split(',').count() == width), "{name}");
+            assert!(
+                text.lines().all(|l| l.split(',').count() == width),
+                "{name}"
+            );
         }
         // γ is printed as a number, never as Rust's Option.
         let (_, text, _) = persson(&["run", scene.to_str().unwrap()]);
-        assert!(text.contains("γ = 0.45") && !text.contains("None") && !text.contains("Some("), "{text}");
+        assert!(
+            text.contains("γ = 0.45") && !text.contains("None") && !text.contains("Some("),
+            "{text}"
+        );
     }
 }

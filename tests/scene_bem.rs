@@ -139,7 +139,10 @@ mod bem {
             let h = pt.histogram.as_ref().unwrap();
             assert_eq!(h.len(), 20);
             // Σ P Δσ = A/A0 exactly up to rounding of 20 terms.
-            let total: f64 = h.iter().map(|b| b.density * (b.sigma_high - b.sigma_low)).sum();
+            let total: f64 = h
+                .iter()
+                .map(|b| b.density * (b.sigma_high - b.sigma_low))
+                .sum();
             assert!((total - pt.contact_fraction).abs() < 1e-14, "{total}");
         }
         let written = persson::scene::write_data(&s, &r, &dir).unwrap();

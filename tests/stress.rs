@@ -253,7 +253,10 @@ fn density_is_non_negative_and_vanishes_at_walls() {
             let sol = Solver::new(&st, g, r, SOLVER_TOL).unwrap();
             let c = sol.curve(&sol.grid(801)).unwrap();
             for (s, p) in c.sigma_ratio.iter().zip(&c.scaled_density) {
-                assert!(*p >= -c.scaled_density_error_bound, "{name} G={g} R={r:?} s={s}: P={p}");
+                assert!(
+                    *p >= -c.scaled_density_error_bound,
+                    "{name} G={g} R={r:?} s={s}: P={p}"
+                );
             }
             assert_eq!(sol.density(0.0).unwrap().value, 0.0);
             if let Some(y) = r {
@@ -342,7 +345,13 @@ fn cli_stress_json_and_exit_codes() {
             "--yield-ratio",
             "1.5",
         ])
-        .args(["--sigma-ratio", "0.25,0.5,1", "--tolerance", "1e-12", "--json"])
+        .args([
+            "--sigma-ratio",
+            "0.25,0.5,1",
+            "--tolerance",
+            "1e-12",
+            "--json",
+        ])
         .env("RUST_BACKTRACE", "0")
         .output()
         .unwrap();

@@ -37,7 +37,12 @@ pub struct TheoryArgs {
     #[arg(long, allow_negative_numbers = true)]
     pub gamma: Option<f64>,
     /// Absolute tolerance on A/A0 of the corrected theories' solver.
-    #[arg(long, alias = "theory-tolerance", default_value = "1e-12", allow_negative_numbers = true)]
+    #[arg(
+        long,
+        alias = "theory-tolerance",
+        default_value = "1e-12",
+        allow_negative_numbers = true
+    )]
     pub tolerance: f64,
 }
 

@@ -139,7 +139,9 @@ impl MaterialArgs {
         match (m.is_empty(), example) {
             (false, _) => Ok(m),
             (true, true) => Ok(MaterialSpec::example()),
-            (true, false) => bail!("no material: give --contact-modulus E* or --young E --poisson NU"),
+            (true, false) => {
+                bail!("no material: give --contact-modulus E* or --young E --poisson NU")
+            }
         }
     }
 

@@ -51,7 +51,11 @@ pub fn run(a: Args) -> anyhow::Result<()> {
     let out = SeparationOutput {
         tolerance: Some(a.tolerance),
     };
-    let curve = if a.plot.plot.is_some() { &grid[..] } else { &[] };
+    let curve = if a.plot.plot.is_some() {
+        &grid[..]
+    } else {
+        &[]
+    };
     let report = run::separation(&surface, &pressures, &out, curve)?;
     #[cfg(feature = "plot")]
     {

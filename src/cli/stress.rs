@@ -24,7 +24,12 @@ pub struct Args {
     #[arg(long)]
     table: Option<std::path::PathBuf>,
     /// How far ∫ P0 dσ of a --table may be from 1.
-    #[arg(long, alias = "table-tol", default_value = "1e-6", allow_negative_numbers = true)]
+    #[arg(
+        long,
+        alias = "table-tol",
+        default_value = "1e-6",
+        allow_negative_numbers = true
+    )]
     table_normalisation: f64,
     /// G(ζ) (Persson, Bucher & Chiaia 2002, Eq. 2, with σ0 the nominal mean pressure).
     #[arg(long, allow_negative_numbers = true)]
@@ -34,13 +39,23 @@ pub struct Args {
     yield_ratio: Option<f64>,
     /// σ/σH where to evaluate P; comma-separated (default: --points values from 0
     /// to the end of the distribution).
-    #[arg(long, alias = "sigma", value_delimiter = ',', allow_negative_numbers = true)]
+    #[arg(
+        long,
+        alias = "sigma",
+        value_delimiter = ',',
+        allow_negative_numbers = true
+    )]
     sigma_ratio: Vec<f64>,
     /// Number of evenly spaced σ when --sigma-ratio is not given.
     #[arg(long, default_value_t = 201)]
     points: usize,
     /// Absolute tolerance of σH P and of the fractions.
-    #[arg(long, alias = "tol", default_value = "1e-12", allow_negative_numbers = true)]
+    #[arg(
+        long,
+        alias = "tol",
+        default_value = "1e-12",
+        allow_negative_numbers = true
+    )]
     tolerance: f64,
     #[command(flatten)]
     format: Format,

@@ -1,7 +1,9 @@
 //! The FFT-BEM outputs of a scene (feature `bem`): rough contact at the
 //! scene's pressures and the Hertz convergence table.
 
-use crate::bem::{check_memory, hertz, pressure_histogram, surface, Control, Operator, Options, Solver};
+use crate::bem::{
+    check_memory, hertz, pressure_histogram, surface, Control, Operator, Options, Solver,
+};
 use crate::error::{check, Error, Result};
 
 use super::report::{BemHertzReport, BemHertzRow, BemPoint, BemReport, HistogramBin};
@@ -53,7 +55,11 @@ pub fn bem_hertz(h: &BemHertzOutput) -> Result<BemHertzReport> {
 
 /// The rigid surface of `outputs.bem`: the height map, or synthesised from
 /// the spectrum.
-fn bem_surface(scene: &Scene, b: &BemOutput, boundary: crate::bem::Boundary) -> Result<surface::Surface> {
+fn bem_surface(
+    scene: &Scene,
+    b: &BemOutput,
+    boundary: crate::bem::Boundary,
+) -> Result<surface::Surface> {
     let named = |e: Error| prefix("outputs.bem.", e);
     if let Some(SpectrumSpec::HeightMap { file, size }) = &scene.spectrum {
         if b.grid.is_some() || b.seed.is_some() {

@@ -171,9 +171,8 @@ impl Scene {
             report.separation = Some(run::separation(&surface, &self.pressures, sep, &[])?);
         }
         if let Some(st) = o.stress.as_ref().filter(|st| !st.zeta.is_empty()) {
-            report.stress = Some(
-                run::stress_physical(&surface, st).map_err(|e| prefix("outputs.stress.", e))?,
-            );
+            report.stress =
+                Some(run::stress_physical(&surface, st).map_err(|e| prefix("outputs.stress.", e))?);
         }
         Ok(report)
     }

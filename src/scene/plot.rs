@@ -19,7 +19,8 @@ pub fn area(r: &AreaReport) -> Result<Figure> {
     let other = format!(
         "{} theory{}",
         r.theory,
-        r.gamma.map_or(String::new(), |g| format!(", γ = {}", number(g, 3)))
+        r.gamma
+            .map_or(String::new(), |g| format!(", γ = {}", number(g, 3)))
     );
     let mut curves = vec![(label.as_str(), r.original_contact_fraction.as_slice())];
     if r.theory != TheoryName::Original {
@@ -69,7 +70,12 @@ pub fn theories(r: &TheoriesReport) -> Result<Figure> {
         .iter()
         .map(|c| match c.gamma {
             None => format!("{} (κ = {})", c.theory, number(c.kappa, 3)),
-            Some(g) => format!("{}, γ = {} (κ = {})", c.theory, number(g, 3), number(c.kappa, 3)),
+            Some(g) => format!(
+                "{}, γ = {} (κ = {})",
+                c.theory,
+                number(g, 3),
+                number(c.kappa, 3)
+            ),
         })
         .collect();
     let a: Vec<Vec<f64>> = r

@@ -790,7 +790,11 @@ impl Tabulate for SpectrumReport {
         .scalar("rms_height", "rms height h_rms", self.rms_height)
         .scalar("rms_slope", "rms slope h'_rms", self.rms_slope)
         .scalar("rms_curvature", "rms curvature h''_rms", self.rms_curvature)
-        .scalar("exponent", "fitted exponent of C(q)", self.power_law_fit.exponent)
+        .scalar(
+            "exponent",
+            "fitted exponent of C(q)",
+            self.power_law_fit.exponent,
+        )
         .scalar("hurst", "fitted H", self.power_law_fit.hurst)
         .column("q", "q")
         .column("c", "C(q)");

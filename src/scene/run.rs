@@ -43,8 +43,9 @@ impl Surface {
     ) -> Result<Self> {
         let s = spectrum.build().map_err(|e| prefix(spectrum_section, e))?;
         let m: Material = material.build().map_err(|e| prefix(material_section, e))?;
-        let description = (*spectrum == SpectrumSpec::example() && *material == MaterialSpec::example())
-            .then(|| EXAMPLE.to_string());
+        let description = (*spectrum == SpectrumSpec::example()
+            && *material == MaterialSpec::example())
+        .then(|| EXAMPLE.to_string());
         Ok(Surface {
             spectrum: s,
             contact_modulus: m.contact_modulus(),
@@ -141,7 +142,11 @@ pub fn kappa(surface: Option<(&Surface, &[f64])>) -> Result<KappaReport> {
             check::positive("pressure", p)?;
             r.points.push(LinearPoint {
                 nominal_pressure: p,
-                contact_fraction_bush_linear: Kappa::Bush.linear_fraction(p, s.contact_modulus, slope),
+                contact_fraction_bush_linear: Kappa::Bush.linear_fraction(
+                    p,
+                    s.contact_modulus,
+                    slope,
+                ),
                 contact_fraction_persson_linear: Kappa::Persson.linear_fraction(
                     p,
                     s.contact_modulus,
@@ -157,9 +162,15 @@ pub fn kappa(surface: Option<(&Surface, &[f64])>) -> Result<KappaReport> {
 ///
 /// # Errors
 /// As [`corrected::load_curve`].
-pub fn theories(surface: &Surface, pressures: &[f64], out: &TheoriesOutput) -> Result<TheoriesReport> {
+pub fn theories(
+    surface: &Surface,
+    pressures: &[f64],
+    out: &TheoriesOutput,
+) -> Result<TheoriesReport> {
     if pressures.is_empty() {
-        return Err(required("pressures (a non-empty list, for outputs.theories)"));
+        return Err(required(
+            "pressures (a non-empty list, for outputs.theories)",
+        ));
     }
     let model = surface.model()?;
     let zeta = out.zeta.unwrap_or_else(|| model.zeta_max());
@@ -202,9 +213,13 @@ pub fn separation(
     plot_pressures: &[f64],
 ) -> Result<SeparationReport> {
     if pressures.is_empty() {
-        return Err(required("pressures (a non-empty list, for outputs.separation)"));
+        return Err(required(
+            "pressures (a non-empty list, for outputs.separation)",
+        ));
     }
-    let tolerance = out.tolerance.unwrap_or(crate::separation::DEFAULT_TOLERANCE);
+    let tolerance = out
+        .tolerance
+        .unwrap_or(crate::separation::DEFAULT_TOLERANCE);
     let model = Separation::new(surface.spectrum.as_ref(), surface.contact_modulus)?
         .with_tolerance(tolerance)?
         .with_breaks(&surface.breaks);
@@ -247,7 +262,9 @@ pub fn stress_dimensionless(
     points: usize,
 ) -> Result<StressReport> {
     if g.is_empty() {
-        return Err(required("outputs.stress.g (dimensionless) or outputs.stress.zeta (pressure unit)"));
+        return Err(required(
+            "outputs.stress.g (dimensionless) or outputs.stress.zeta (pressure unit)",
+        ));
     }
     let curves = g
         .iter()
@@ -298,9 +315,10 @@ pub fn stress_physical(surface: &Surface, out: &StressOutput) -> Result<StressRe
     let e_star = surface.contact_modulus;
     let start = Start::from(out.start);
     let problem = match (&out.ball, &out.cylinder, out.peak_pressure) {
-        (Some(b), None, None) if out.start == StartName::Hertz => {
-            StressScene::hertz(&HertzContact::ball(b.radius, b.load, e_star)?, out.yield_stress)
-        }
+        (Some(b), None, None) if out.start == StartName::Hertz => StressScene::hertz(
+            &HertzContact::ball(b.radius, b.load, e_star)?,
+            out.yield_stress,
+        ),
         (None, Some(c), None) if out.start == StartName::Cylinder => StressScene::hertz(
             &HertzContact::cylinder(c.radius, c.load_per_length, e_star)?,
             out.yield_stress,
@@ -370,16 +388,28 @@ pub fn spectrum(
     let lo = check::positive("q_min", q_min.unwrap_or(s.q_min()))?;
     let hi = check::positive("q_max", q_max.unwrap_or(s.q_max()))?;
     if hi <= lo {
-        return Err(Error::invalid("q_max", hi, format!("> q_min = {}", crate::table::number(lo, 6))));
+        return Err(Error::invalid(
+            "q_max",
+            hi,
+            format!("> q_min = {}", crate::table::number(lo, 6)),
+        ));
     }
-    let (h, m, k) = (s.rms_height(lo, hi)?, s.rms_slope(lo, hi)?, s.rms_curvature(lo, hi)?);
+    let (h, m, k) = (
+        s.rms_height(lo, hi)?,
+        s.rms_slope(lo, hi)?,
+        s.rms_curvature(lo, hi)?,
+    );
     let (q_l, q_s) = (s.q_min(), s.q_max());
     let mid = (q_l * q_s).sqrt();
     let curve: Vec<SpectrumPoint> = (0..=200)
         .map(|i| (q_l * (q_s / q_l).powf(f64::from(i) / 200.0)).min(q_s))
         .map(|q| SpectrumPoint { q, c: s.c(q) })
         .collect();
-    let upper: Vec<(f64, f64)> = curve.iter().filter(|p| p.q >= mid).map(|p| (p.q, p.c)).collect();
+    let upper: Vec<(f64, f64)> = curve
+        .iter()
+        .filter(|p| p.q >= mid)
+        .map(|p| (p.q, p.c))
+        .collect();
     let fit = crate::spectrum::fit_power_law(&upper)?;
     let n = points.max(2);
     let table = (0..n)
