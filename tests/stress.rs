@@ -110,7 +110,7 @@ fn matches_mpmath_references() {
     assert_eq!(checked, 129);
 }
 
-/// Contact areas of seed 001 Figs. 2–4 (exact values of ../shared/theory.md §3).
+/// Contact areas of Persson, Bucher & Chiaia (2002) Figs. 2–4 (exact values of ../shared/theory.md §3).
 const SEED_AREAS: [(&str, f64, f64); 6] = [
     ("flat", 0.6, 0.638_690),
     ("flat", 2.0, 0.382_925),

@@ -278,7 +278,7 @@ fn stable_over_the_whole_range() {
 
 #[test]
 fn corrected_theories_lie_between_original_and_bush() {
-    // κ: Persson √(8/π) < corrected ≈ 2.1–2.4 < Bush √(2π) (seed 002: numerics ≈ 2).
+    // κ: Persson √(8/π) < corrected ≈ 2.1–2.4 < Bush √(2π) (Campañá & Müser, EPL 77, 38005 (2007): numerics ≈ 2).
     for t in Theory::all_defaults() {
         let k = t.low_load_kappa();
         let (persson, bush) = (Kappa::Persson.value(), Kappa::Bush.value());

@@ -146,6 +146,7 @@ impl MaterialArgs {
     }
 
     /// Build the material (`example` supplies E* when nothing is given).
+    #[cfg_attr(not(feature = "bem"), allow(dead_code))]
     pub fn build(&self, example: bool) -> anyhow::Result<Material> {
         Ok(self.spec(example)?.build()?)
     }

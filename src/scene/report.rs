@@ -214,6 +214,9 @@ pub struct LinearPoint {
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[non_exhaustive]
 pub struct KappaReport {
+    /// What the surface is, if known.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub surface: Option<String>,
     /// √(2π), Bush, Gibson & Thomas, Wear 35, 87 (1975).
     pub kappa_bush: f64,
     /// √(8/π), Persson, J. Chem. Phys. 115, 3840 (2001).
@@ -228,8 +231,11 @@ pub struct KappaReport {
 
 impl Tabulate for KappaReport {
     fn tables(&self) -> Vec<Table> {
-        let title = "κ of the low-load law A/A0 = κ σ0/(E* h'_rms): Bush, Gibson & Thomas (1975) \
-                     κ = √(2π); Persson (2001) κ = √(8/π)";
+        let title = format!(
+            "{}κ of the low-load law A/A0 = κ σ0/(E* h'_rms): Bush, Gibson & Thomas (1975) \
+             κ = √(2π); Persson (2001) κ = √(8/π)",
+            surface_prefix(&self.surface)
+        );
         if self.points.is_empty() {
             let mut t = Table::new("kappa", title)
                 .column("kappa_bush", "κ Bush")

@@ -129,6 +129,7 @@ pub fn magnification(surface: &Surface, out: &MagnificationOutput) -> Result<Mag
 /// A pressure not finite and positive.
 pub fn kappa(surface: Option<(&Surface, &[f64])>) -> Result<KappaReport> {
     let mut r = KappaReport {
+        surface: surface.and_then(|(s, _)| s.description.clone()),
         kappa_bush: Kappa::Bush.value(),
         kappa_persson: Kappa::Persson.value(),
         rms_slope: None,
