@@ -585,7 +585,12 @@ mod cli {
             );
         }
         // γ is printed as a number, never as Rust's Option.
-        let (_, text, _) = persson(&["run", scene.to_str().unwrap()]);
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_persson"))
+            .args(["run", scene.to_str().unwrap()])
+            .current_dir(&dir)
+            .output()
+            .unwrap();
+        let text = String::from_utf8_lossy(&out.stdout);
         assert!(
             text.contains("γ = 0.45") && !text.contains("None") && !text.contains("Some("),
             "{text}"

@@ -101,6 +101,26 @@ pub struct AreaReport {
     pub original_contact_fraction: Vec<f64>,
 }
 
+/// Significant digits that print every input as given (its shortest
+/// round-trip form): `1e4`, `3e8`, `4.26e8`.
+fn input_digits(values: impl IntoIterator<Item = f64>) -> usize {
+    values
+        .into_iter()
+        .filter(|v| v.is_finite() && *v != 0.0)
+        .map(|v| {
+            let s = format!("{:e}", v.abs());
+            s.split('e')
+                .next()
+                .unwrap_or("")
+                .chars()
+                .filter(char::is_ascii_digit)
+                .count()
+        })
+        .max()
+        .unwrap_or(1)
+        .max(1)
+}
+
 fn theory_heading(theory: TheoryName, gamma: Option<f64>) -> String {
     match gamma {
         Some(g) => format!("{theory} theory, γ = {}", number(g, 6)),
@@ -129,7 +149,11 @@ impl Tabulate for AreaReport {
         .scalar("kappa_bush", "κ Bush", self.kappa_bush)
         .scalar("kappa_persson", "κ Persson", self.kappa_persson)
         .scalar("kappa", "κ of the theory", self.kappa)
-        .column("nominal_pressure", "σ0")
+        .column_digits(
+            "nominal_pressure",
+            "σ0",
+            input_digits(self.points.iter().map(|p| p.nominal_pressure)),
+        )
         .column("g", "G")
         .column("effective_g", "G_e")
         .column_digits("contact_fraction", "A/A0", 10)
@@ -247,7 +271,11 @@ impl Tabulate for KappaReport {
             .scalar("kappa_bush", "κ Bush", self.kappa_bush)
             .scalar("kappa_persson", "κ Persson", self.kappa_persson)
             .scalar("rms_slope", "rms slope h'_rms", self.rms_slope)
-            .column("nominal_pressure", "σ0")
+            .column_digits(
+                "nominal_pressure",
+                "σ0",
+                input_digits(self.points.iter().map(|p| p.nominal_pressure)),
+            )
             .column("contact_fraction_bush_linear", "A/A0 Bush linear")
             .column("contact_fraction_persson_linear", "A/A0 Persson linear");
         for p in &self.points {
@@ -304,7 +332,11 @@ impl Tabulate for TheoriesReport {
                         number(self.zeta, 6)
                     ),
                 )
-                .column("nominal_pressure", "σ0")
+                .column_digits(
+                    "nominal_pressure",
+                    "σ0",
+                    input_digits(c.points.iter().map(|p| p.nominal_pressure)),
+                )
                 .column("g", "G")
                 .column("effective_g", "G_e")
                 .column_digits("contact_fraction", "A/A0", 10)
@@ -382,7 +414,11 @@ impl Tabulate for SeparationReport {
         .scalar("low_load_length", "u0 of ū ≈ u0 ln(p_ref/σ0)", self.low_load_length)
         .scalar("reference_pressure", "p_ref", self.reference_pressure)
         .scalar("full_contact_energy", "U_el at full contact", self.full_contact_energy)
-        .column("nominal_pressure", "σ0")
+        .column_digits(
+            "nominal_pressure",
+            "σ0",
+            input_digits(self.points.iter().map(|p| p.nominal_pressure)),
+        )
         .column("mean_separation", "ū")
         .column("stiffness", "K = −dσ0/dū")
         .column("elastic_energy", "U_el")
@@ -610,7 +646,11 @@ impl Tabulate for BemReport {
         )
         .scalar("rms_height", "rms height h_rms", self.rms_height)
         .scalar("rms_slope", "rms slope h'_rms", self.rms_slope)
-        .column("nominal_pressure", "σ0")
+        .column_digits(
+            "nominal_pressure",
+            "σ0",
+            input_digits(self.points.iter().map(|p| p.nominal_pressure)),
+        )
         .column("contact_fraction", "A/A0")
         .column("iterations", "iterations")
         .column_digits("residual", "residual", 2)
