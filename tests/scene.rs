@@ -403,6 +403,51 @@ fn shipped_scenes_run_and_their_titles_match() {
     assert!(n >= 6, "{n} scenes");
 }
 
+/// Every JSON key of a scene report is snake_case.
+#[test]
+fn report_keys_are_snake_case() {
+    fn walk(v: &serde_json::Value, bad: &mut Vec<String>) {
+        match v {
+            serde_json::Value::Object(m) => {
+                for (k, x) in m {
+                    if !k
+                        .chars()
+                        .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_')
+                    {
+                        bad.push(k.clone());
+                    }
+                    walk(x, bad);
+                }
+            }
+            serde_json::Value::Array(a) => a.iter().for_each(|x| walk(x, bad)),
+            _ => {}
+        }
+    }
+    let r = parse(&scene(
+        r#"{"spectrum": {}, "area": {"theory": "xu"}, "magnification": {"nominal_pressure": 0.1, "points": 3},
+            "kappa": {}, "theories": {}, "separation": {},
+            "stress": {"start": "cylinder", "peak_pressure": 0.1, "zeta": [10], "points": 3}}"#,
+    ))
+    .unwrap()
+    .run()
+    .unwrap();
+    let v = serde_json::to_value(&r).unwrap();
+    let mut bad = Vec::new();
+    walk(&v, &mut bad);
+    assert!(bad.is_empty(), "{bad:?}");
+    for key in [
+        "spectrum",
+        "area",
+        "magnification",
+        "kappa",
+        "theories",
+        "separation",
+        "stress",
+    ] {
+        assert!(v.get(key).is_some(), "{key}");
+    }
+}
+
 /// The JSON Schema in scenes/schema.json is the one the types generate
 /// (regenerate with PERSSON_WRITE_SCHEMA=1).
 #[test]
@@ -504,6 +549,24 @@ mod cli {
             r["separation"]
         );
         assert_eq!(with("kappa", &["--pressure", "0.01,0.1"]), r["kappa"]);
+        let sp = run_scene(r#"{"spectrum": {"q_min": 2, "points": 5}}"#);
+        let cli = json(&[
+            "spectrum",
+            "--hurst",
+            "0.8",
+            "--q-l",
+            "1",
+            "--q-s",
+            "100",
+            "--rms-slope",
+            "1",
+            "--q-min",
+            "2",
+            "--points",
+            "5",
+            "--json",
+        ]);
+        assert_eq!(cli, sp["spectrum"]);
         assert_eq!(
             with(
                 "magnification",

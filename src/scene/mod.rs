@@ -135,6 +135,20 @@ impl Scene {
                 .map_err(|e| prefix("outputs.stress.", e))?,
             );
         }
+        if let Some(sp) = &o.spectrum {
+            let s = self.spectrum()?;
+            let example = self.spectrum == Some(SpectrumSpec::example());
+            report.spectrum = Some(
+                run::spectrum(
+                    s.as_ref(),
+                    example.then(|| EXAMPLE.to_string()),
+                    sp.q_min,
+                    sp.q_max,
+                    sp.points,
+                )
+                .map_err(|e| prefix("outputs.spectrum.", e))?,
+            );
+        }
         self.run_bem(&mut report)?;
         let with_surface = self.spectrum.is_some() && self.material.is_some();
         let needs_surface = o.area.is_some()
@@ -212,6 +226,7 @@ impl Scene {
     pub fn output_paths(&self, dir: &Path) -> Vec<PathBuf> {
         let o = &self.outputs;
         [
+            o.spectrum.as_ref().and_then(|s| s.plot.clone()),
             o.area.as_ref().and_then(|a| a.plot.clone()),
             o.magnification.as_ref().and_then(|m| m.plot.clone()),
             o.magnification.as_ref().and_then(|m| m.plot_g.clone()),
@@ -282,6 +297,9 @@ pub fn render_plots(scene: &Scene, report: &SceneReport, dir: &Path) -> Result<V
         }
         Ok(())
     };
+    if let (Some(out), Some(r)) = (&o.spectrum, &report.spectrum) {
+        draw(&out.plot, &|| plot::spectrum(r))?;
+    }
     if let (Some(out), Some(r)) = (&o.area, &report.area) {
         draw(&out.plot, &|| plot::area(r))?;
     }

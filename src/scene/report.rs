@@ -858,6 +858,9 @@ pub struct SceneReport {
     /// The scene's name.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub name: Option<String>,
+    /// Spectrum summary.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub spectrum: Option<SpectrumReport>,
     /// Load curve.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub area: Option<AreaReport>,
@@ -887,7 +890,8 @@ pub struct SceneReport {
 impl Tabulate for SceneReport {
     fn tables(&self) -> Vec<Table> {
         let mut out = Vec::new();
-        let parts: [Option<&dyn Tabulate>; 8] = [
+        let parts: [Option<&dyn Tabulate>; 9] = [
+            self.spectrum.as_ref().map(|r| r as &dyn Tabulate),
             self.kappa.as_ref().map(|r| r as &dyn Tabulate),
             self.area.as_ref().map(|r| r as &dyn Tabulate),
             self.magnification.as_ref().map(|r| r as &dyn Tabulate),

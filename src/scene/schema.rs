@@ -380,6 +380,9 @@ impl TheorySpec {
 #[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct Outputs {
+    /// Moments of the spectrum, a power-law fit and C(q).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub spectrum: Option<SpectrumOutput>,
     /// A/A0 against the scene's pressures (load curve).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub area: Option<AreaOutput>,
@@ -405,6 +408,29 @@ pub struct Outputs {
     /// FFT-BEM Hertz convergence, η per grid (feature `bem`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub bem_hertz: Option<BemHertzOutput>,
+}
+
+/// Spectrum summary: rms height, slope and curvature over [q_min, q_max],
+/// a power-law fit and C(q).
+#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SpectrumOutput {
+    /// Lower end of the band of the moments (default q_l), 1/m.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub q_min: Option<f64>,
+    /// Upper end of the band of the moments (default q_s), 1/m.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub q_max: Option<f64>,
+    /// Number of log-spaced q in the C(q) table (default 11).
+    #[serde(default = "default_spectrum_points")]
+    pub points: usize,
+    /// Draw C(q) with the fitted power law (.svg or .png).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub plot: Option<PathBuf>,
+}
+
+fn default_spectrum_points() -> usize {
+    11
 }
 
 /// Load curve: A/A0 against the scene's pressures.
