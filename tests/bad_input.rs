@@ -25,7 +25,7 @@ const SA: &str = "--hurst 0.8 --q-l 1e4 --q-s 1e8 --rms-slope 0.1";
 /// (command line, text the message must contain). `{SA}` is a valid spectrum.
 fn cases() -> Vec<(String, String)> {
     let good_psd = file("good.csv", b"q,C\n1e4,1e-20\n1e5,1e-24\n1e6,1e-28\n");
-    let scene_ok = r#"{"schema":1,"material":{"contact_modulus":1},"spectrum":{"kind":"self_affine","hurst":0.8,"q_l":1,"q_s":100,"rms_slope":1},"pressures":[0.1],"outputs":{"area":{}}}"#;
+    let scene_ok = r#"{"schema":1,"material":{"contact_modulus":1},"spectrum":{"kind":"self_affine","hurst":0.8,"q_l":1,"q_s":100,"rms_slope":1},"nominal_pressure":[0.1],"outputs":{"area":{}}}"#;
     let mut big = Vec::with_capacity(4 << 20);
     for i in 0..(4u32 << 20) {
         big.push((i.wrapping_mul(2_654_435_761) >> 24) as u8);

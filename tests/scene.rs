@@ -17,7 +17,7 @@ const BASE: &str = r#"{
   "schema": 1,
   "material": { "contact_modulus": 1.0 },
   "spectrum": { "kind": "self_affine", "hurst": 0.8, "q_l": 1.0, "q_s": 100.0, "rms_slope": 1.0 },
-  "pressures": [0.01, 0.1],
+  "nominal_pressure": [0.01, 0.1],
   "outputs": OUTPUTS
 }"#;
 
@@ -126,7 +126,7 @@ fn errors_name_field_line_and_column() {
         ),
         (scene(r#"{ "area": {} "#), 7, "EOF"),
         (
-            BASE.replace("\"pressures\": [0.01, 0.1],", "")
+            BASE.replace("\"nominal_pressure\": [0.01, 0.1],", "")
                 .replace("OUTPUTS", "{}")
                 .replace("\"outputs\"", "\"output\""),
             6,
@@ -157,6 +157,19 @@ fn errors_name_field_line_and_column() {
 }
 
 #[test]
+fn the_pressures_key_of_persson_0_1_is_still_read() {
+    let old = scene(r#"{ "area": {} }"#).replace("\"nominal_pressure\"", "\"pressures\"");
+    let a = parse(&old).unwrap().run().unwrap().area.unwrap();
+    let b = parse(&scene(r#"{ "area": {} }"#))
+        .unwrap()
+        .run()
+        .unwrap()
+        .area
+        .unwrap();
+    assert_eq!(a, b);
+}
+
+#[test]
 fn invalid_values_are_named_with_their_section() {
     for (from, to, needle) in [
         ("\"hurst\": 0.8", "\"hurst\": 1.2", "spectrum.hurst"),
@@ -165,7 +178,7 @@ fn invalid_values_are_named_with_their_section() {
             "\"contact_modulus\": -1",
             "material.contact_modulus",
         ),
-        ("[0.01, 0.1]", "[]", "pressures"),
+        ("[0.01, 0.1]", "[]", "nominal_pressure"),
     ] {
         let s = BASE
             .replace(from, to)
@@ -234,7 +247,7 @@ fn tabulated_conventions_are_read_by_name() {
         let text = format!(
             r#"{{"schema": 1, "material": {{"contact_modulus": 1}},
                "spectrum": {{"kind": "tabulated", "file": "{file}", "convention": "{convention}"}},
-               "pressures": [0.01], "outputs": {{"area": {{}}}}}}"#
+               "nominal_pressure": [0.01], "outputs": {{"area": {{}}}}}}"#
         );
         Scene::parse(&dir.join("s.json"), &text)
             .unwrap()
@@ -250,7 +263,7 @@ fn tabulated_conventions_are_read_by_name() {
     // The 1D convention parses under its CLI name (it was `profile1_d`).
     let text = r#"{"schema": 1, "spectrum": {"kind": "tabulated", "file": "x.csv", "convention": "profile1d"}, "outputs": {}}"#;
     assert!(parse(text).is_ok());
-    let grid = r#"{"schema": 1, "material": {"contact_modulus": 1}, "spectrum": {"kind": "tabulated", "file": "p.csv", "convention": "grid"}, "pressures": [0.1], "outputs": {"area": {}}}"#;
+    let grid = r#"{"schema": 1, "material": {"contact_modulus": 1}, "spectrum": {"kind": "tabulated", "file": "p.csv", "convention": "grid"}, "nominal_pressure": [0.1], "outputs": {"area": {}}}"#;
     let e = Scene::parse(&dir.join("s.json"), grid)
         .unwrap()
         .run()

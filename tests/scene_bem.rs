@@ -15,7 +15,7 @@ const ROUGH: &str = r#"{
   "schema": 1,
   "material": { "contact_modulus": 1.0 },
   "spectrum": { "kind": "self_affine", "hurst": 0.8, "q_l": 6.283185307179586, "q_r": 12.566370614359172, "q_s": 50.26548245743669, "rms_slope": 0.1 },
-  "pressures": [0.001, 0.003, 0.01],
+  "nominal_pressure": [0.001, 0.003, 0.01],
   "outputs": OUTPUTS
 }"#;
 
@@ -164,7 +164,7 @@ mod bem {
           "schema": 1,
           "material": { "contact_modulus": 1.0 },
           "spectrum": { "kind": "height_map", "file": "map.npy", "size": 1.0 },
-          "pressures": [0.001, 0.003, 0.01],
+          "nominal_pressure": [0.001, 0.003, 0.01],
           "outputs": { "bem": {} } }"#;
         std::fs::write(&scene_path, text).unwrap();
         let from_map = Scene::read(&scene_path)
@@ -224,7 +224,7 @@ mod bem {
             .run()
             .unwrap_err()
             .to_string();
-        assert!(e.contains("pressures"), "{e}");
+        assert!(e.contains("nominal_pressure"), "{e}");
         let e = parse(&rough(r#"{"bem": {"grid": 32, "sead": 1}}"#))
             .unwrap_err()
             .to_string();

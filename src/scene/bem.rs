@@ -99,11 +99,13 @@ pub fn bem_rough(scene: &Scene, b: &BemOutput) -> Result<BemReport> {
     if bins == 0 {
         return Err(named(Error::invalid("bins", 0.0, ">= 1")));
     }
-    if scene.pressures.is_empty() {
-        return Err(required("pressures (a non-empty list, for outputs.bem)"));
+    if scene.nominal_pressure.is_empty() {
+        return Err(required(
+            "nominal_pressure (a non-empty list, for outputs.bem)",
+        ));
     }
-    for &p in &scene.pressures {
-        check::positive("pressures", p)?;
+    for &p in &scene.nominal_pressure {
+        check::positive("nominal_pressure", p)?;
     }
     let e_star = scene.material()?.contact_modulus();
     let surf = bem_surface(scene, b, boundary)?;
@@ -114,7 +116,7 @@ pub fn bem_rough(scene: &Scene, b: &BemOutput) -> Result<BemReport> {
     };
     let mut solver = Solver::new(Operator::new(boundary, surf.n, surf.size, e_star)?);
     let points = scene
-        .pressures
+        .nominal_pressure
         .iter()
         .map(|&p| {
             let sol = solver.solve(&surf.heights, Control::MeanPressure(p), &opts)?;

@@ -12,7 +12,7 @@
 //! { "schema": 1,
 //!   "material": { "contact_modulus": 1e9 },
 //!   "spectrum": { "kind": "self_affine", "hurst": 0.8, "q_l": 1e4, "q_r": 1e5, "q_s": 1e8, "rms_height": 1e-6 },
-//!   "pressures": [1e5, 1e6, 1e7],
+//!   "nominal_pressure": [1e5, 1e6, 1e7],
 //!   "outputs": { "area": {}, "kappa": {} } }
 //! ```
 //!
@@ -156,7 +156,7 @@ impl Scene {
             || o.theories.is_some()
             || o.separation.is_some()
             || o.stress.as_ref().is_some_and(|st| !st.zeta.is_empty())
-            || (o.kappa.is_some() && with_surface && !self.pressures.is_empty());
+            || (o.kappa.is_some() && with_surface && !self.nominal_pressure.is_empty());
         let surface = if needs_surface {
             Some(self.surface()?)
         } else {
@@ -165,24 +165,24 @@ impl Scene {
         if o.kappa.is_some() {
             let with = surface
                 .as_ref()
-                .filter(|_| !self.pressures.is_empty())
-                .map(|s| (s, self.pressures.as_slice()));
+                .filter(|_| !self.nominal_pressure.is_empty())
+                .map(|s| (s, self.nominal_pressure.as_slice()));
             report.kappa = Some(run::kappa(with)?);
         }
         let Some(surface) = surface else {
             return Ok(report);
         };
         if let Some(a) = &o.area {
-            report.area = Some(run::area(&surface, &self.pressures, a)?);
+            report.area = Some(run::area(&surface, &self.nominal_pressure, a)?);
         }
         if let Some(m) = &o.magnification {
             report.magnification = Some(run::magnification(&surface, m)?);
         }
         if let Some(t) = &o.theories {
-            report.theories = Some(run::theories(&surface, &self.pressures, t)?);
+            report.theories = Some(run::theories(&surface, &self.nominal_pressure, t)?);
         }
         if let Some(sep) = &o.separation {
-            report.separation = Some(run::separation(&surface, &self.pressures, sep, &[])?);
+            report.separation = Some(run::separation(&surface, &self.nominal_pressure, sep, &[])?);
         }
         if let Some(st) = o.stress.as_ref().filter(|st| !st.zeta.is_empty()) {
             report.stress =

@@ -69,7 +69,9 @@ impl Surface {
 /// A pressure not finite and positive; ζ < 1; γ invalid; solver failure.
 pub fn area(surface: &Surface, pressures: &[f64], out: &AreaOutput) -> Result<AreaReport> {
     if pressures.is_empty() {
-        return Err(required("pressures (a non-empty list, for outputs.area)"));
+        return Err(required(
+            "nominal_pressure (a non-empty list, for outputs.area)",
+        ));
     }
     let model = surface.model()?;
     let zeta = out.zeta.unwrap_or_else(|| model.zeta_max());
@@ -170,7 +172,7 @@ pub fn theories(
 ) -> Result<TheoriesReport> {
     if pressures.is_empty() {
         return Err(required(
-            "pressures (a non-empty list, for outputs.theories)",
+            "nominal_pressure (a non-empty list, for outputs.theories)",
         ));
     }
     let model = surface.model()?;
@@ -215,7 +217,7 @@ pub fn separation(
 ) -> Result<SeparationReport> {
     if pressures.is_empty() {
         return Err(required(
-            "pressures (a non-empty list, for outputs.separation)",
+            "nominal_pressure (a non-empty list, for outputs.separation)",
         ));
     }
     let tolerance = out

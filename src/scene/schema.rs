@@ -35,9 +35,10 @@ pub struct Scene {
     /// The roughness spectrum (or, for `bem` only, a height map).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub spectrum: Option<SpectrumSpec>,
-    /// Nominal (mean) pressures σ0, in the unit of the contact modulus.
-    #[serde(default)]
-    pub pressures: Vec<f64>,
+    /// Nominal (mean) pressures σ0, in the unit of the contact modulus
+    /// (`pressures` in persson 0.1).
+    #[serde(default, alias = "pressures", skip_serializing_if = "Vec::is_empty")]
+    pub nominal_pressure: Vec<f64>,
     /// What to compute; absent outputs are not computed.
     pub outputs: Outputs,
 }
@@ -383,7 +384,7 @@ pub struct Outputs {
     /// Moments of the spectrum, a power-law fit and C(q).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub spectrum: Option<SpectrumOutput>,
-    /// A/A0 against the scene's pressures (load curve).
+    /// A/A0 against the scene's nominal pressures (load curve).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub area: Option<AreaOutput>,
     /// G(ζ) and A/A0 against magnification at one pressure.
@@ -402,7 +403,7 @@ pub struct Outputs {
     /// Stress distributions P(σ, ζ).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub stress: Option<StressOutput>,
-    /// FFT-BEM rough contact at the scene's pressures (feature `bem`).
+    /// FFT-BEM rough contact at the scene's nominal pressures (feature `bem`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub bem: Option<BemOutput>,
     /// FFT-BEM Hertz convergence, η per grid (feature `bem`).
@@ -433,7 +434,7 @@ fn default_spectrum_points() -> usize {
     11
 }
 
-/// Load curve: A/A0 against the scene's pressures.
+/// Load curve: A/A0 against the scene's nominal pressures.
 #[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct AreaOutput {
@@ -483,7 +484,7 @@ fn default_points() -> usize {
 #[serde(deny_unknown_fields)]
 pub struct KappaOutput {}
 
-/// Corrected-theory load curves at the scene's pressures.
+/// Corrected-theory load curves at the scene's nominal pressures.
 #[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct TheoriesOutput {
@@ -501,7 +502,7 @@ pub struct TheoriesOutput {
     pub plot: Option<PathBuf>,
 }
 
-/// Mean-separation load curve at the scene's pressures (Persson, Phys. Rev. Lett. 99, 125502 (2007)).
+/// Mean-separation load curve at the scene's nominal pressures (Persson, Phys. Rev. Lett. 99, 125502 (2007)).
 #[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SeparationOutput {
