@@ -74,8 +74,10 @@ pub fn run(a: Args) -> anyhow::Result<()> {
     if a.csv {
         return Ok(());
     }
-    if let (Some(name), false) = (&report.name, a.json) {
-        println!("{name}\n");
+    if !a.json {
+        for text in [&report.name, &report.description].into_iter().flatten() {
+            println!("{text}\n");
+        }
     }
     print(
         &report,

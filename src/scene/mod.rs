@@ -120,6 +120,7 @@ impl Scene {
         let o = &self.outputs;
         let mut report = SceneReport {
             name: self.name.clone(),
+            description: self.description.clone(),
             ..Default::default()
         };
         if let Some(st) = o.stress.as_ref().filter(|st| st.zeta.is_empty()) {

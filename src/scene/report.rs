@@ -858,6 +858,9 @@ pub struct SceneReport {
     /// The scene's name.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub name: Option<String>,
+    /// The scene's description.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub description: Option<String>,
     /// Spectrum summary.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub spectrum: Option<SpectrumReport>,
