@@ -47,7 +47,7 @@ enum Cmd {
     Report(report::Args),
     /// Stress distribution P(σ) at one G (dimensionless; Persson, Bucher & Chiaia 2002, Figs. 2–4).
     Stress(stress::Args),
-    /// Mean interfacial separation ū, stiffness K = −dp/dū and elastic energy against load.
+    /// Mean interfacial separation ū, stiffness K = −dσ0/dū and elastic energy against load.
     Separation(separation::Args),
     /// FFT boundary-element cross-check: Hertz validation and rough contact.
     #[cfg(feature = "bem")]
