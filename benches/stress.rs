@@ -16,7 +16,7 @@ fn curve(name: &str, g: f64, r: Option<f64>) -> f64 {
     let sol = Solver::new(&st, g, r, 1e-12).unwrap();
     let grid = sol.grid(1000);
     let c = sol.curve(&grid).unwrap();
-    c.contact_fraction + c.density[500]
+    c.contact_fraction + c.scaled_density[500]
 }
 
 /// Elastic, G = 0.6 (Persson, Bucher & Chiaia, Phys. Rev. B 65, 184106 (2002), Figs. 2–4).

@@ -33,12 +33,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 "{fig:<5} {name:<9} {g:>5} {:>12.9} {:>10.1e}  {}",
                 c.contact_fraction, c.error_bound, c.method
             );
-            for (s, p) in c.sigma.iter().zip(&c.density) {
+            for (s, p) in c.sigma_ratio.iter().zip(&c.scaled_density) {
                 writeln!(csv, "{fig},{name},{g},{s},{p}")?;
             }
             family.push((
                 format!("G = {g}, A/A0 = {:.3}", c.contact_fraction),
-                c.density,
+                c.scaled_density,
             ));
             grid = sigma;
         }

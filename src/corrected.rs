@@ -621,7 +621,7 @@ impl OdeSolver {
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct TheoryPoint {
     /// Nominal pressure σ0.
-    pub pressure: f64,
+    pub nominal_pressure: f64,
     /// Magnification ζ.
     pub zeta: f64,
     /// G(ζ) = V_c/(2σ0²).
@@ -630,10 +630,10 @@ pub struct TheoryPoint {
     pub effective_g: f64,
     /// A/A0 from the theory.
     pub contact_fraction: f64,
-    /// 1 − A/A0.
-    pub complement: f64,
+    /// 1 − A/A0, computed without cancellation.
+    pub non_contact_fraction: f64,
     /// Absolute error bound of A/A0 (solver, rounding and the error of G).
-    pub error: f64,
+    pub error_bound: f64,
 }
 
 /// A/A0 against load at magnification ζ for `theory`.
@@ -677,13 +677,13 @@ pub fn load_curve(
         .iter()
         .zip(gs.iter().zip(sols))
         .map(|(&p, (&(g, g_err), s))| TheoryPoint {
-            pressure: p,
+            nominal_pressure: p,
             zeta,
             g,
             effective_g: s.effective_g,
             contact_fraction: s.contact_fraction,
-            complement: s.complement,
-            error: s.error + s.slope.abs() * g_err,
+            non_contact_fraction: s.complement,
+            error_bound: s.error + s.slope.abs() * g_err,
         })
         .collect())
 }

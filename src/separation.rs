@@ -63,21 +63,21 @@ const UNDERFLOW_ARG: f64 = 745.0;
 /// Mean separation, stiffness and elastic energy at one pressure.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct SeparationPoint {
-    /// Nominal pressure p (= σ0), Pa.
-    pub pressure: f64,
+    /// Nominal pressure σ0, Pa.
+    pub nominal_pressure: f64,
     /// Mean interfacial separation ū, m.
     pub mean_separation: f64,
     /// Absolute error estimate of ū, m.
-    pub mean_separation_error: f64,
+    pub mean_separation_error_bound: f64,
     /// Normal contact stiffness per unit area K = −dp/dū, Pa/m (`+∞`, JSON
     /// `null`, when it overflows f64 near full contact).
     pub stiffness: f64,
     /// Absolute error estimate of K, Pa/m.
-    pub stiffness_error: f64,
+    pub stiffness_error_bound: f64,
     /// Elastic energy stored per unit nominal area U/A0, J/m².
     pub elastic_energy: f64,
     /// Absolute error estimate of U/A0, J/m².
-    pub elastic_energy_error: f64,
+    pub elastic_energy_error_bound: f64,
 }
 
 /// Small-load asymptote ū ≈ u0 ln(p_ref/p).
@@ -358,13 +358,13 @@ impl<'a> Separation<'a> {
         let k = self.stiffness(pressure)?;
         let e = self.elastic_energy(pressure)?;
         Ok(SeparationPoint {
-            pressure,
+            nominal_pressure: pressure,
             mean_separation: u.value,
-            mean_separation_error: u.error,
+            mean_separation_error_bound: u.error,
             stiffness: k.value,
-            stiffness_error: k.error,
+            stiffness_error_bound: k.error,
             elastic_energy: e.value,
-            elastic_energy_error: e.error,
+            elastic_energy_error_bound: e.error,
         })
     }
 

@@ -70,19 +70,19 @@ pub fn contact_fraction(g: f64, g_error: f64) -> Result<ContactFraction> {
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct AreaPoint {
     /// Nominal pressure σ0.
-    pub pressure: f64,
+    pub nominal_pressure: f64,
     /// Magnification ζ.
     pub zeta: f64,
     /// G(ζ).
     pub g: f64,
     /// Absolute error bound of G.
-    pub g_error: f64,
+    pub g_error_bound: f64,
     /// A/A0 (original theory).
     pub contact_fraction: f64,
-    /// 1 − A/A0.
-    pub complement: f64,
+    /// 1 − A/A0, computed without cancellation.
+    pub non_contact_fraction: f64,
     /// Absolute error bound of A/A0.
-    pub error: f64,
+    pub error_bound: f64,
     /// rms slope of the roughness up to ζ.
     pub rms_slope: f64,
     /// Bush–Gibson–Thomas linear law κ_B σ0/(E* rms slope).
@@ -205,13 +205,13 @@ impl<'a> Persson<'a> {
         let a = contact_fraction(g.value, g.error)?;
         let slope = slope_variance.value.sqrt();
         Ok(AreaPoint {
-            pressure,
+            nominal_pressure: pressure,
             zeta,
             g: g.value,
-            g_error: g.error,
+            g_error_bound: g.error,
             contact_fraction: a.fraction,
-            complement: a.complement,
-            error: a.error,
+            non_contact_fraction: a.complement,
+            error_bound: a.error,
             rms_slope: slope,
             contact_fraction_bush_linear: Kappa::Bush.linear_fraction(
                 pressure,

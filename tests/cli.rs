@@ -19,7 +19,7 @@ fn area_json_interface() {
         "1e9",
         "--rms-slope",
         "1",
-        "--modulus",
+        "--contact-modulus",
         "1",
         "--pressure",
         "1e-3",
@@ -39,7 +39,7 @@ fn area_json_interface() {
     assert!((v["rms_slope"].as_f64().unwrap() - 1.0).abs() < 1e-14);
     let pts = v["points"].as_array().unwrap();
     assert_eq!(pts.len(), 2);
-    assert_eq!(pts[0]["pressure"].as_f64().unwrap(), 1e-3);
+    assert_eq!(pts[0]["nominal_pressure"].as_f64().unwrap(), 1e-3);
     assert!((pts[0]["zeta"].as_f64().unwrap() - 1e5).abs() < 1e-9);
     // G = (E*/σ0)² ⟨|∇h|²⟩ / 8 with rms slope 1 at full magnification.
     let g = pts[0]["g"].as_f64().unwrap();
@@ -55,19 +55,35 @@ fn area_json_interface() {
 fn example_runs_in_every_format() {
     let (code, out, _) = persson(&["area", "--example"]);
     assert_eq!(code, 0);
-    assert!(out.contains("contact_fraction"));
+    assert!(out.contains("A/A0"));
+    // The title says what the example is.
+    let example = "self-affine surface, H = 0.8, q_l = 1e4, q_r = 1e5, q_s = 1e8 1/m, rms height 1 µm; E* = 1 GPa";
+    assert!(out.contains(example), "{out}");
+    let (_, help, _) = persson(&["area", "--help"]);
+    let help = help.split_whitespace().collect::<Vec<_>>().join(" ");
+    assert!(
+        help.contains("H = 0.8, q_l = 1e4, q_r = 1e5, q_s = 1e8 1/m, rms height 1 µm; E* = 1 GPa"),
+        "{help}"
+    );
     let (code, out, _) = persson(&["area", "--example", "--csv"]);
     assert_eq!(code, 0);
-    assert!(out
-        .lines()
-        .next()
-        .unwrap()
-        .starts_with("pressure,zeta,g,contact_fraction"));
+    assert!(out.lines().next().unwrap().starts_with(
+        "nominal_pressure,g,effective_g,contact_fraction,error_bound,contact_fraction_bush_linear"
+    ));
     assert_eq!(out.lines().count(), 7);
-    for cmd in ["spectrum", "g", "kappa"] {
+    for cmd in ["spectrum", "magnification", "kappa", "separation", "area"] {
         let v = json(&[cmd, "--example", "--json"]);
         assert!(v.is_object(), "{cmd}");
     }
+    // `g` is the hidden old name of `magnification`, `--modulus` of `--contact-modulus`.
+    assert_eq!(
+        json(&["g", "--example", "--json"]),
+        json(&["magnification", "--example", "--json"])
+    );
+    assert_eq!(
+        json(&["area", "--example", "--modulus", "2e9", "--json"])["points"],
+        json(&["area", "--example", "--contact-modulus", "2e9", "--json"])["points"]
+    );
 }
 
 #[test]
@@ -88,7 +104,7 @@ fn psd_file_matches_model() {
         "area",
         "--psd",
         p,
-        "--modulus",
+        "--contact-modulus",
         "1",
         "--pressure",
         "1e-3",
@@ -105,7 +121,7 @@ fn psd_file_matches_model() {
         "1e8",
         "--c-r",
         &format!("{c_r:e}"),
-        "--modulus",
+        "--contact-modulus",
         "1",
         "--pressure",
         "1e-3",
@@ -127,7 +143,7 @@ fn bad_input_exits_2_naming_the_field() {
         "1e8",
         "--rms-slope",
         "0.1",
-        "--modulus",
+        "--contact-modulus",
         "1",
     ];
     let with = |extra: &[&str]| -> Vec<String> {
@@ -158,7 +174,7 @@ fn bad_input_exits_2_naming_the_field() {
                 "1e4",
                 "--rms-slope",
                 "0.1",
-                "--modulus",
+                "--contact-modulus",
                 "1",
                 "--pressure",
                 "1",
@@ -178,7 +194,7 @@ fn bad_input_exits_2_naming_the_field() {
                 "1e8",
                 "--rms-slope",
                 "0.1",
-                "--modulus",
+                "--contact-modulus",
                 "-1",
                 "--pressure",
                 "1",
@@ -192,7 +208,7 @@ fn bad_input_exits_2_naming_the_field() {
                 "area",
                 "--psd",
                 "/nonexistent/psd.csv",
-                "--modulus",
+                "--contact-modulus",
                 "1",
                 "--pressure",
                 "1",

@@ -184,13 +184,15 @@ proptest! {
         let (erf, erfc, _) = erf_independent(1.0 / (2.0 * a.g.sqrt()));
         prop_assert!(rel(a.contact_fraction, erf) < CLAIM, "A/A0 {} vs {erf}", a.contact_fraction);
         if erfc > f64::MIN_POSITIVE {
-            prop_assert!(rel(a.complement, erfc) < CLAIM, "1 − A/A0 {} vs {erfc}", a.complement);
+            prop_assert!(rel(a.non_contact_fraction, erfc) < CLAIM, "1 − A/A0 {} vs {erfc}", a.non_contact_fraction);
         }
         // more load, more area; more magnification, less area
         let b = m.point(zeta, p * f).unwrap();
         prop_assert!(b.contact_fraction >= a.contact_fraction);
         let c = m.point((zeta * f).min(m.zeta_max()).max(zeta), p).unwrap();
         prop_assert!(c.contact_fraction <= a.contact_fraction);
+        // A + (1 − A) = 1 to rounding
+        prop_assert!((a.contact_fraction + a.non_contact_fraction - 1.0).abs() <= 4.0 * f64::EPSILON);
     }
 
     #[test]

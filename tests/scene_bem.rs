@@ -15,7 +15,7 @@ const ROUGH: &str = r#"{
   "schema": 1,
   "material": { "contact_modulus": 1.0 },
   "spectrum": { "kind": "self_affine", "hurst": 0.8, "q_l": 6.283185307179586, "q_r": 12.566370614359172, "q_s": 50.26548245743669, "rms_slope": 0.1 },
-  "pressures": [0.001, 0.003, 0.01],
+  "nominal_pressure": [0.001, 0.003, 0.01],
   "outputs": OUTPUTS
 }"#;
 
@@ -56,7 +56,9 @@ mod bem {
             .run()
             .unwrap();
         assert!(r.area.is_none() && r.bem.is_none(), "only bem_hertz");
-        let rows = r.bem_hertz.unwrap();
+        let h = r.bem_hertz.unwrap();
+        assert_eq!(h.boundary.name(), "free");
+        let rows = h.rows;
         assert_eq!(rows.len(), 2);
         let opts = Options {
             tol: 1e-12,
@@ -66,12 +68,11 @@ mod bem {
             let direct =
                 hertz::validate(&hertz::HertzCase::new(row.grid, Boundary::Free), &opts).unwrap();
             assert!((row.energy_error - direct.energy_error).abs() <= SAME_SOLVE_TOL);
-            assert_eq!(row.boundary, "free");
         }
-        // Lecture 000, Table 1, 64²: η = 1.40e-2 (ours must not be worse).
-        assert_eq!(rows[1].lecture, Some(1.40e-2));
+        // Molinari's lecture, Table 1, 64²: η = 1.40e-2 (ours must not be worse).
+        assert_eq!(rows[1].reference_energy_error, Some(1.40e-2));
         assert!(rows[1].energy_error < 1.40e-2, "{}", rows[1].energy_error);
-        assert_eq!(rows[0].lecture, None);
+        assert_eq!(rows[0].reference_energy_error, None);
         let p = parse(
             r#"{"schema": 1, "outputs": {"bem_hertz": {"grids": [32], "boundary": "periodic"}}}"#,
         )
@@ -80,9 +81,9 @@ mod bem {
         .unwrap()
         .bem_hertz
         .unwrap();
-        assert_eq!(p[0].boundary, "periodic");
+        assert_eq!(p.boundary.name(), "periodic");
         assert_eq!(
-            p[0].lecture, None,
+            p.rows[0].reference_energy_error, None,
             "the lecture lists the free boundary only"
         );
     }
@@ -94,7 +95,7 @@ mod bem {
         assert!(r.area.is_none() && r.bem_hertz.is_none(), "only bem");
         let b = r.bem.unwrap();
         assert_eq!(
-            (b.grid, b.seed, b.boundary.as_str()),
+            (b.grid, b.surface.seed(), b.boundary.name()),
             (32, Some(9), "periodic")
         );
         assert!((b.size - 1.0).abs() < 1e-15, "L = 2π/q_l = 1");
@@ -107,7 +108,7 @@ mod bem {
             let sol = solver
                 .solve(
                     &surf.heights,
-                    Control::MeanPressure(pt.pressure),
+                    Control::MeanPressure(pt.nominal_pressure),
                     &Options::default(),
                 )
                 .unwrap();
@@ -130,22 +131,25 @@ mod bem {
             r#"{"bem": {"grid": 32, "histogram": "h.csv", "bins": 20, "boundary": "free"}}"#,
         ))
         .unwrap();
-        assert!(s.plot_paths(&dir).contains(&dir.join("h.csv")));
+        assert!(s.output_paths(&dir).contains(&dir.join("h.csv")));
         let r = s.run().unwrap();
         let b = r.bem.as_ref().unwrap();
-        assert_eq!(b.boundary, "free");
+        assert_eq!(b.boundary.name(), "free");
         for pt in &b.points {
             let h = pt.histogram.as_ref().unwrap();
             assert_eq!(h.len(), 20);
             // Σ P Δσ = A/A0 exactly up to rounding of 20 terms.
-            let total: f64 = h.iter().map(|[lo, hi, d]| d * (hi - lo)).sum();
+            let total: f64 = h
+                .iter()
+                .map(|b| b.density * (b.sigma_high - b.sigma_low))
+                .sum();
             assert!((total - pt.contact_fraction).abs() < 1e-14, "{total}");
         }
         let written = persson::scene::write_data(&s, &r, &dir).unwrap();
         assert_eq!(written, vec![dir.join("h.csv")]);
         let text = std::fs::read_to_string(dir.join("h.csv")).unwrap();
         assert_eq!(text.lines().count(), 1 + 3 * 20);
-        assert!(text.starts_with("pressure,pressure_low,pressure_high,density\n"));
+        assert!(text.starts_with("nominal_pressure,sigma_low,sigma_high,density\n"));
     }
 
     #[test]
@@ -160,7 +164,7 @@ mod bem {
           "schema": 1,
           "material": { "contact_modulus": 1.0 },
           "spectrum": { "kind": "height_map", "file": "map.npy", "size": 1.0 },
-          "pressures": [0.001, 0.003, 0.01],
+          "nominal_pressure": [0.001, 0.003, 0.01],
           "outputs": { "bem": {} } }"#;
         std::fs::write(&scene_path, text).unwrap();
         let from_map = Scene::read(&scene_path)
@@ -169,7 +173,7 @@ mod bem {
             .unwrap()
             .bem
             .unwrap();
-        assert_eq!(from_map.seed, None);
+        assert_eq!(from_map.surface.seed(), None);
         let synthesised = parse(&rough(r#"{"bem": {"grid": 32, "seed": 9}}"#))
             .unwrap()
             .run()
@@ -204,19 +208,11 @@ mod bem {
         let cases = [
             (r#"{"bem": {}}"#, "outputs.bem.grid"),
             (
-                r#"{"bem": {"grid": 32, "boundary": "open"}}"#,
-                "outputs.bem.boundary",
-            ),
-            (
                 r#"{"bem": {"grid": 32, "tolerance": 0}}"#,
                 "outputs.bem.tolerance",
             ),
             (r#"{"bem": {"grid": 4}}"#, "outputs.bem.grid"),
             (r#"{"bem": {"grid": 32, "bins": 0}}"#, "outputs.bem.bins"),
-            (
-                r#"{"bem_hertz": {"boundary": "open"}}"#,
-                "outputs.bem_hertz.boundary",
-            ),
             (r#"{"bem_hertz": {"grids": [4]}}"#, "outputs.bem_hertz.grid"),
         ];
         for (out, needle) in cases {
@@ -228,10 +224,21 @@ mod bem {
             .run()
             .unwrap_err()
             .to_string();
-        assert!(e.contains("pressures"), "{e}");
+        assert!(e.contains("nominal_pressure"), "{e}");
         let e = parse(&rough(r#"{"bem": {"grid": 32, "sead": 1}}"#))
             .unwrap_err()
             .to_string();
         assert!(e.contains("unknown field `sead`"), "{e}");
+        // A boundary is one of the CLI's names, checked where the file is read.
+        for out in [
+            r#"{"bem": {"grid": 32, "boundary": "open"}}"#,
+            r#"{"bem_hertz": {"boundary": "open"}}"#,
+        ] {
+            let e = parse(&rough(out)).unwrap_err().to_string();
+            assert!(
+                e.contains("unknown variant `open`, expected `periodic` or `free`"),
+                "{out}: {e}"
+            );
+        }
     }
 }

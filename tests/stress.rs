@@ -54,7 +54,7 @@ fn matches_mpmath_references() {
             .collect();
         let got = distribution(&st, g, r, &sigma, SOLVER_TOL).unwrap();
         let label = format!("{} G={g:e} R={r:?} ({})", st.name(), got.method);
-        for ((s, d), w) in sigma.iter().zip(&got.density).zip(&want) {
+        for ((s, d), w) in sigma.iter().zip(&got.scaled_density).zip(&want) {
             let err = (d - w).abs();
             let scale = w.abs().max(1.0);
             assert!(
@@ -62,30 +62,30 @@ fn matches_mpmath_references() {
                 "{label}: density at s={s}: {d} vs {w} (err {err:e})"
             );
             assert!(
-                err <= got.density_error + half_ulp(*w),
+                err <= got.scaled_density_error_bound + half_ulp(*w),
                 "{label}: density error {err:e} above its bound {:e} at s={s}",
-                got.density_error
+                got.scaled_density_error_bound
             );
         }
         let a = c["contact_fraction"].as_f64().unwrap();
         if a > 1e-290 {
-            let err = (got.contact_fraction - a).abs();
+            let err = (got.elastic_fraction - a).abs();
             assert!(
                 err <= CONTACT_REL_TOL * a,
                 "{label}: A_el {} vs {a} (rel {:e})",
-                got.contact_fraction,
+                got.elastic_fraction,
                 err / a
             );
             assert!(
-                err <= got.contact_error + half_ulp(a),
+                err <= got.elastic_fraction_error_bound + half_ulp(a),
                 "{label}: A_el error {err:e} above its bound {:e}",
-                got.contact_error
+                got.elastic_fraction_error_bound
             );
         } else {
             assert!(
-                got.contact_fraction.abs() < 1e-280,
+                got.elastic_fraction.abs() < 1e-280,
                 "{label}: A_el {}",
-                got.contact_fraction
+                got.elastic_fraction
             );
         }
         let p = c["plastic_fraction"].as_f64().unwrap();
@@ -101,16 +101,16 @@ fn matches_mpmath_references() {
             got.plastic_fraction
         );
         assert!(
-            err <= got.plastic_error + half_ulp(p),
+            err <= got.plastic_fraction_error_bound + half_ulp(p),
             "{label}: A_pl error {err:e} above its bound {:e}",
-            got.plastic_error
+            got.plastic_fraction_error_bound
         );
         checked += 1;
     }
     assert_eq!(checked, 129);
 }
 
-/// Contact areas of seed 001 Figs. 2–4 (exact values of ../shared/theory.md §3).
+/// Contact areas of Persson, Bucher & Chiaia (2002) Figs. 2–4 (exact values of ../shared/theory.md §3).
 const SEED_AREAS: [(&str, f64, f64); 6] = [
     ("flat", 0.6, 0.638_690),
     ("flat", 2.0, 0.382_925),
@@ -149,9 +149,9 @@ fn hertz_and_cylinder_areas_match_closed_forms() {
         for r in [None, Some(1e6)] {
             let got = distribution(&Start::Hertz, g, r, &[0.5], SOLVER_TOL).unwrap();
             assert!(
-                (got.contact_fraction - want).abs() < CLOSED_FORM_TOL * want,
+                (got.elastic_fraction - want).abs() < CLOSED_FORM_TOL * want,
                 "hertz G={g} R={r:?}: {} vs {want}",
-                got.contact_fraction
+                got.elastic_fraction
             );
         }
     }
@@ -171,9 +171,9 @@ fn hertz_and_cylinder_areas_match_closed_forms() {
         for r in [None, Some(1e6)] {
             let got = distribution(&Start::Cylinder, g, r, &[0.5], SOLVER_TOL).unwrap();
             assert!(
-                (got.contact_fraction - want).abs() < CLOSED_FORM_TOL * want.max(1e-300) + 1e-16,
+                (got.elastic_fraction - want).abs() < CLOSED_FORM_TOL * want.max(1e-300) + 1e-16,
                 "cylinder G={g} R={r:?}: {} vs {want}",
-                got.contact_fraction
+                got.elastic_fraction
             );
         }
     }
@@ -252,8 +252,11 @@ fn density_is_non_negative_and_vanishes_at_walls() {
         ] {
             let sol = Solver::new(&st, g, r, SOLVER_TOL).unwrap();
             let c = sol.curve(&sol.grid(801)).unwrap();
-            for (s, p) in c.sigma.iter().zip(&c.density) {
-                assert!(*p >= -c.density_error, "{name} G={g} R={r:?} s={s}: P={p}");
+            for (s, p) in c.sigma_ratio.iter().zip(&c.scaled_density) {
+                assert!(
+                    *p >= -c.scaled_density_error_bound,
+                    "{name} G={g} R={r:?} s={s}: P={p}"
+                );
             }
             assert_eq!(sol.density(0.0).unwrap().value, 0.0);
             if let Some(y) = r {
@@ -300,7 +303,7 @@ fn tabulated_linear_start_is_hertz() {
         let s = [0.1, 0.5, 0.9, 1.0, 1.1];
         let a = distribution(&tab, g, r, &s, 1e-12).unwrap();
         let b = distribution(&Start::Hertz, g, r, &s, 1e-12).unwrap();
-        for (x, y) in a.density.iter().zip(&b.density) {
+        for (x, y) in a.scaled_density.iter().zip(&b.scaled_density) {
             assert!((x - y).abs() < TABLE_TOL, "G={g} R={r:?}: {x} vs {y}");
         }
         assert!((a.contact_fraction - b.contact_fraction).abs() < TABLE_TOL);
@@ -342,23 +345,36 @@ fn cli_stress_json_and_exit_codes() {
             "--yield-ratio",
             "1.5",
         ])
-        .args(["--sigma", "0.25,0.5,1", "--tol", "1e-12", "--json"])
+        .args([
+            "--sigma-ratio",
+            "0.25,0.5,1",
+            "--tolerance",
+            "1e-12",
+            "--json",
+        ])
         .env("RUST_BACKTRACE", "0")
         .output()
         .unwrap();
     assert!(out.status.success());
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     let want = distribution(&Start::Hertz, 0.6, Some(1.5), &[0.25, 0.5, 1.0], 1e-12).unwrap();
+    assert_eq!(v["yield_ratio"].as_f64().unwrap(), 1.5);
+    let v = &v["curves"][0];
+    // contact_fraction is the total A/A0 = A_el/A0 + A_pl/A0
     assert_eq!(
         v["contact_fraction"].as_f64().unwrap(),
-        want.contact_fraction
+        want.elastic_fraction + want.plastic_fraction
+    );
+    assert_eq!(
+        v["elastic_fraction"].as_f64().unwrap(),
+        want.elastic_fraction
     );
     assert_eq!(
         v["plastic_fraction"].as_f64().unwrap(),
         want.plastic_fraction
     );
-    assert_eq!(v["density"].as_array().unwrap().len(), 3);
-    assert_eq!(v["sigma"][2].as_f64().unwrap(), 1.0);
+    assert_eq!(v["scaled_density"].as_array().unwrap().len(), 3);
+    assert_eq!(v["sigma_ratio"][2].as_f64().unwrap(), 1.0);
     assert!(v["error_bound"].as_f64().unwrap() > 0.0);
     assert!(v["method"].as_str().unwrap().contains("sine series"));
     for bad in [
@@ -442,7 +458,7 @@ fn physical_scene_rescales_the_dimensionless_solution() {
             let g = model.g(c.zeta, contact.nominal_pressure).unwrap().value;
             let s: Vec<f64> = sigma.iter().map(|v| v / sh).collect();
             let want = distribution(&contact.start, g, Some(3.0), &s, 1e-12).unwrap();
-            for (p, q) in c.density.iter().zip(&want.density) {
+            for (p, q) in c.density.iter().zip(&want.scaled_density) {
                 assert!((p * sh - q).abs() <= ROUNDING * q.abs().max(1.0));
             }
             assert_eq!(c.contact_fraction, want.contact_fraction);
@@ -480,12 +496,12 @@ mod properties {
             let auto = Solver::new(&st, g, Some(y), SOLVER_TOL).unwrap();
             let s = frac * (1.0 + 12.0 * tau.sqrt()).min(y);
             let c = auto.curve(&[s]).unwrap();
-            prop_assert!(c.density[0].is_finite() && c.density[0] >= -c.density_error);
-            prop_assert!(c.contact_fraction >= -c.contact_error && c.contact_fraction <= 1.0 + c.contact_error);
-            prop_assert!(c.plastic_fraction >= -c.plastic_error);
-            prop_assert!(c.contact_fraction + c.plastic_fraction <= 1.0 + 1e-12);
+            prop_assert!(c.scaled_density[0].is_finite() && c.scaled_density[0] >= -c.scaled_density_error_bound);
+            prop_assert!(c.elastic_fraction >= -c.elastic_fraction_error_bound && c.elastic_fraction <= 1.0 + c.elastic_fraction_error_bound);
+            prop_assert!(c.plastic_fraction >= -c.plastic_fraction_error_bound);
+            prop_assert!(c.elastic_fraction + c.plastic_fraction <= 1.0 + 1e-12);
             prop_assert!(
-                c.error_bound <= 1e-11 * c.density[0].abs().max(1.0),
+                c.error_bound <= 1e-11 * c.scaled_density[0].abs().max(1.0),
                 "bound {} for G={g} y={y}",
                 c.error_bound
             );

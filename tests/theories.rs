@@ -278,7 +278,7 @@ fn stable_over_the_whole_range() {
 
 #[test]
 fn corrected_theories_lie_between_original_and_bush() {
-    // κ: Persson √(8/π) < corrected ≈ 2.1–2.4 < Bush √(2π) (seed 002: numerics ≈ 2).
+    // κ: Persson √(8/π) < corrected ≈ 2.1–2.4 < Bush √(2π) (Campañá & Müser, EPL 77, 38005 (2007): numerics ≈ 2).
     for t in Theory::all_defaults() {
         let k = t.low_load_kappa();
         let (persson, bush) = (Kappa::Persson.value(), Kappa::Bush.value());
@@ -332,7 +332,7 @@ fn load_curve_uses_g_of_the_core() {
     let yp =
         corrected::load_curve(&model, Theory::yang_persson(), zeta, &pressures, 1e-12).unwrap();
     for (c, p) in core.iter().zip(&yp) {
-        assert!(p.contact_fraction > c.contact_fraction && p.error < 1e-11);
+        assert!(p.contact_fraction > c.contact_fraction && p.error_bound < 1e-11);
     }
 }
 
@@ -535,9 +535,9 @@ fn separation_matches_mpmath() {
     for (p, u, k, e) in SEPARATION_MPMATH {
         let pt = sep.point(p).unwrap();
         for (name, got, err, want) in [
-            ("ū", pt.mean_separation, pt.mean_separation_error, u),
-            ("K", pt.stiffness, pt.stiffness_error, k),
-            ("U", pt.elastic_energy, pt.elastic_energy_error, e),
+            ("ū", pt.mean_separation, pt.mean_separation_error_bound, u),
+            ("K", pt.stiffness, pt.stiffness_error_bound, k),
+            ("U", pt.elastic_energy, pt.elastic_energy_error_bound, e),
         ] {
             let d = (got - want).abs();
             assert!(
@@ -619,7 +619,7 @@ mod cli {
         "1e7",
         "--rms-slope",
         "1",
-        "--modulus",
+        "--contact-modulus",
         "1",
     ];
 
@@ -675,7 +675,7 @@ mod cli {
         let pts = v["points"].as_array().unwrap();
         assert_eq!(pts.len(), 3);
         for p in pts {
-            let pressure = p["pressure"].as_f64().unwrap();
+            let pressure = p["nominal_pressure"].as_f64().unwrap();
             let want = sep.point(pressure).unwrap();
             // serde_json's default float parsing may be 1 ulp off the printed value.
             for (key, w) in [
@@ -689,7 +689,11 @@ mod cli {
                 );
             }
         }
-        assert!(v["low_load_length"]["value"].as_f64().unwrap() > 0.0);
+        let law = sep.low_load_law().unwrap();
+        let u0 = v["low_load_length"].as_f64().unwrap();
+        assert!((u0 - law.length.value).abs() <= 2.0 * f64::EPSILON * law.length.value);
+        let bound = v["low_load_length_error_bound"].as_f64().unwrap();
+        assert!((bound - law.length.error).abs() <= 2.0 * f64::EPSILON * law.length.error);
     }
 
     #[cfg(feature = "plot")]
@@ -710,7 +714,7 @@ mod cli {
         }
         assert!(std::fs::read_to_string(&u)
             .unwrap()
-            .contains("u0 ln(p_ref/p)"));
+            .contains("u0 ln(p_ref/σ0)"));
         std::fs::remove_dir_all(&dir).unwrap();
     }
 

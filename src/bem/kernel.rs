@@ -43,6 +43,16 @@ pub enum Boundary {
     Free,
 }
 
+impl Boundary {
+    /// `periodic` or `free`, as on the command line and in scenes.
+    pub fn name(self) -> &'static str {
+        match self {
+            Boundary::Periodic => "periodic",
+            Boundary::Free => "free",
+        }
+    }
+}
+
 impl std::str::FromStr for Boundary {
     type Err = Error;
     fn from_str(s: &str) -> Result<Self> {

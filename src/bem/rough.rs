@@ -253,6 +253,14 @@ impl SurfaceSource {
         })
     }
 
+    /// The seed of a synthesised surface (`None` for a height map).
+    pub fn seed(&self) -> Option<u64> {
+        match self {
+            SurfaceSource::Synthesised { seed, .. } => Some(*seed),
+            SurfaceSource::HeightMap { .. } => None,
+        }
+    }
+
     /// A height map's source.
     pub fn height_map(file: &Path) -> Self {
         SurfaceSource::HeightMap {
@@ -312,14 +320,6 @@ pub fn rough_contact(
     })
 }
 
-/// `periodic` or `free`, as on the command line.
-pub fn boundary_name(b: Boundary) -> &'static str {
-    match b {
-        Boundary::Periodic => "periodic",
-        Boundary::Free => "free",
-    }
-}
-
 impl Tabulate for RoughReport {
     fn tables(&self) -> Vec<Table> {
         let n = self.grid;
@@ -327,7 +327,7 @@ impl Tabulate for RoughReport {
             "bem_rough",
             format!(
                 "Rough contact (FFT-BEM, Polonsky & Keer 1999), {n}×{n} grid, {} boundary",
-                boundary_name(self.boundary)
+                self.boundary.name()
             ),
         )
         .scalar("grid", "N", n)
@@ -365,6 +365,25 @@ impl Tabulate for RoughReport {
                 p.seconds.into(),
             ]);
         }
-        vec![t]
+        let mut tables = vec![t];
+        if self.points.iter().any(|p| p.histogram.is_some()) {
+            let mut h = Table::new("bem_histogram", "Pressure histograms P(σ) of the FFT-BEM")
+                .column("nominal_pressure", "σ0")
+                .column("sigma_low", "σ low")
+                .column("sigma_high", "σ high")
+                .column("density", "P(σ)");
+            for p in &self.points {
+                for b in p.histogram.iter().flatten() {
+                    h.push(vec![
+                        p.nominal_pressure.into(),
+                        b.sigma_low.into(),
+                        b.sigma_high.into(),
+                        b.density.into(),
+                    ]);
+                }
+            }
+            tables.push(h);
+        }
+        tables
     }
 }

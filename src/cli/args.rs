@@ -1,34 +1,27 @@
-//! Flags shared by several subcommands: the spectrum and the material.
+//! Flags shared by several subcommands: the spectrum and the material. They
+//! build the scene file's [`SpectrumSpec`] and [`MaterialSpec`], whose one
+//! `build()` serves flags and scenes alike.
 
 use std::path::PathBuf;
 
-use anyhow::{bail, Context};
-use persson::spectrum::{Amplitude, Convention, SelfAffine, Spectrum, Tabulated};
+use anyhow::bail;
+use persson::scene::{ConventionName, MaterialSpec, SpectrumSpec, Surface, EXAMPLE};
+use persson::spectrum::Spectrum;
 use persson::Material;
 
 /// The built-in example: a self-affine surface (H = 0.8, q_l = 1e4 1/m,
-/// q_r = 1e5 1/m, q_s = 1e8 1/m, rms height 1 µm) on a body with E* = 1e9 Pa.
+/// q_r = 1e5 1/m, q_s = 1e8 1/m, rms height 1 µm) on a body with E* = 1 GPa.
 pub mod example {
-    /// Hurst exponent.
-    pub const HURST: f64 = 0.8;
-    /// Lower cut-off, 1/m.
-    pub const Q_L: f64 = 1e4;
-    /// Roll-off, 1/m.
-    pub const Q_R: f64 = 1e5;
-    /// Upper cut-off, 1/m.
-    pub const Q_S: f64 = 1e8;
-    /// rms height, m.
-    pub const RMS_HEIGHT: f64 = 1e-6;
-    /// Contact modulus, Pa.
-    pub const CONTACT_MODULUS: f64 = 1e9;
     /// Nominal pressures, Pa.
-    pub const PRESSURES: [f64; 6] = [1e4, 1e5, 1e6, 1e7, 1e8, 3e8];
+    pub const PRESSURES: [f64; 6] = persson::scene::EXAMPLE_PRESSURES;
 }
 
 /// The power spectrum: a self-affine model or a tabulated file.
 #[derive(clap::Args, Debug, Clone, Default)]
 pub struct SpectrumArgs {
-    /// Use the built-in example (spectrum, modulus and pressures not given).
+    /// Use the built-in example where spectrum, modulus or pressures are not
+    /// given: self-affine H = 0.8, q_l = 1e4, q_r = 1e5, q_s = 1e8 1/m, rms height
+    /// 1 µm; E* = 1 GPa; σ0 = 1e4 … 3e8 Pa.
     #[arg(long)]
     pub example: bool,
     /// Hurst exponent H in (0, 1) of the self-affine spectrum.
@@ -57,78 +50,68 @@ pub struct SpectrumArgs {
     #[arg(long, conflicts_with_all = ["hurst", "q_l", "q_r", "q_s", "amplitude"])]
     pub psd: Option<PathBuf>,
     /// Convention of the --psd file.
-    #[arg(long, value_enum, default_value_t = PsdConvention::Persson, requires = "psd")]
-    pub psd_convention: PsdConvention,
+    #[arg(long, value_enum, default_value_t = ConventionName::Persson, requires = "psd")]
+    pub psd_convention: ConventionName,
     /// Side L (m) of the periodic surface, for --psd-convention grid.
     #[arg(long, requires = "psd", allow_negative_numbers = true)]
     pub psd_size: Option<f64>,
 }
 
-/// Spectrum conventions accepted on the command line.
-#[derive(clap::ValueEnum, Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub enum PsdConvention {
-    /// Persson: q in 1/m, C in m^4.
-    #[default]
-    Persson,
-    /// SurfaceTopography / contact.engineering: C_Persson = C / (2π)².
-    SurfaceTopography,
-    /// 1D profile spectrum of an isotropic surface (m^3).
-    Profile1d,
-    /// Dimensionless FFT grid: k in units of 2π/L, C_Persson = (L/2π)² φ(k); needs --psd-size.
-    Grid,
-}
-
 impl SpectrumArgs {
-    /// Build the spectrum from the flags.
-    pub fn build(&self) -> anyhow::Result<Box<dyn Spectrum>> {
+    /// Whether the built-in example stands in for the spectrum.
+    pub fn is_example(&self) -> bool {
+        self.psd.is_none() && self.example && self.hurst.is_none() && self.q_l.is_none()
+    }
+
+    /// Whether any spectrum is given (flags, a file or the example).
+    pub fn is_given(&self) -> bool {
+        self.example || self.psd.is_some() || self.hurst.is_some()
+    }
+
+    /// The scene file's spectrum entry for these flags.
+    pub fn spec(&self) -> anyhow::Result<SpectrumSpec> {
         if let Some(path) = &self.psd {
-            let conv = match self.psd_convention {
-                PsdConvention::Persson => Convention::Persson,
-                PsdConvention::SurfaceTopography => Convention::SurfaceTopography,
-                PsdConvention::Profile1d => Convention::Profile1D,
-                PsdConvention::Grid => Convention::Grid {
-                    size: self
-                        .psd_size
-                        .context("--psd-convention grid needs --psd-size L (m)")?,
-                },
-            };
-            return Ok(Box::new(Tabulated::from_csv(path, conv)?));
+            if self.psd_convention == ConventionName::Grid && self.psd_size.is_none() {
+                bail!("--psd-convention grid needs --psd-size L (m)");
+            }
+            return Ok(SpectrumSpec::Tabulated {
+                file: path.clone(),
+                convention: self.psd_convention,
+                size: self.psd_size,
+            });
         }
-        if self.example && self.hurst.is_none() && self.q_l.is_none() {
-            use example::*;
-            return Ok(Box::new(SelfAffine::new(
-                Q_L,
-                Q_R,
-                Q_S,
-                HURST,
-                Amplitude::RmsHeight(RMS_HEIGHT),
-            )?));
+        if self.is_example() {
+            return Ok(SpectrumSpec::example());
         }
-        let (Some(h), Some(q_l), Some(q_s)) = (self.hurst, self.q_l, self.q_s) else {
+        let (Some(hurst), Some(q_l), Some(q_s)) = (self.hurst, self.q_l, self.q_s) else {
             bail!("no spectrum: give --hurst, --q-l, --q-s and one of --rms-height, --rms-slope, --c-r; or --psd FILE; or --example");
         };
-        let amp = match (self.rms_height, self.rms_slope, self.c_r) {
-            (Some(x), _, _) => Amplitude::RmsHeight(x),
-            (_, Some(x), _) => Amplitude::RmsSlope(x),
-            (_, _, Some(x)) => Amplitude::CR(x),
-            _ => bail!("no spectrum amplitude: give one of --rms-height, --rms-slope, --c-r"),
-        };
-        Ok(Box::new(SelfAffine::new(
+        if self.rms_height.is_none() && self.rms_slope.is_none() && self.c_r.is_none() {
+            bail!("no spectrum amplitude: give one of --rms-height, --rms-slope, --c-r");
+        }
+        Ok(SpectrumSpec::SelfAffine {
+            hurst,
             q_l,
-            self.q_r.unwrap_or(q_l),
+            q_r: self.q_r,
             q_s,
-            h,
-            amp,
-        )?))
+            rms_height: self.rms_height,
+            rms_slope: self.rms_slope,
+            c_r: self.c_r,
+        })
+    }
+
+    /// Build the spectrum from the flags.
+    pub fn build(&self) -> anyhow::Result<Box<dyn Spectrum>> {
+        Ok(self.spec()?.build()?)
     }
 }
 
 /// The material: E* directly, or Young's moduli and Poisson ratios.
 #[derive(clap::Args, Debug, Clone, Default)]
 pub struct MaterialArgs {
-    /// Contact modulus E* (same unit as the pressures).
-    #[arg(long, allow_negative_numbers = true, conflicts_with_all = ["young", "poisson"])]
-    pub modulus: Option<f64>,
+    /// Contact modulus E*, 1/E* = Σ (1 − ν²)/E (same unit as the pressures).
+    #[arg(long, alias = "modulus", allow_negative_numbers = true, conflicts_with_all = ["young", "poisson"])]
+    pub contact_modulus: Option<f64>,
     /// Young's modulus E of the elastic body (against a rigid one unless --young2).
     #[arg(long, requires = "poisson", allow_negative_numbers = true)]
     pub young: Option<f64>,
@@ -144,24 +127,40 @@ pub struct MaterialArgs {
 }
 
 impl MaterialArgs {
-    /// Build the material (`example` supplies E* when nothing is given).
-    pub fn build(&self, example: bool) -> anyhow::Result<Material> {
-        use persson::material::Body;
-        if let Some(e) = self.modulus {
-            return Ok(Material::new(e)?);
+    /// The scene file's material entry (`example` supplies E* when nothing is given).
+    pub fn spec(&self, example: bool) -> anyhow::Result<MaterialSpec> {
+        let m = MaterialSpec {
+            contact_modulus: self.contact_modulus,
+            young: self.young,
+            poisson: self.poisson,
+            young2: self.young2,
+            poisson2: self.poisson2,
+        };
+        match (m.is_empty(), example) {
+            (false, _) => Ok(m),
+            (true, true) => Ok(MaterialSpec::example()),
+            (true, false) => {
+                bail!("no material: give --contact-modulus E* or --young E --poisson NU")
+            }
         }
-        if let (Some(young), Some(poisson)) = (self.young, self.poisson) {
-            let a = Body { young, poisson };
-            return Ok(match (self.young2, self.poisson2) {
-                (Some(young), Some(poisson)) => Material::from_bodies(a, Body { young, poisson })?,
-                _ => Material::from_body(a)?,
-            });
-        }
-        if example {
-            return Ok(Material::new(example::CONTACT_MODULUS)?);
-        }
-        bail!("no material: give --modulus E* or --young E --poisson NU")
     }
+
+    /// Build the material (`example` supplies E* when nothing is given).
+    #[cfg_attr(not(feature = "bem"), allow(dead_code))]
+    pub fn build(&self, example: bool) -> anyhow::Result<Material> {
+        Ok(self.spec(example)?.build()?)
+    }
+}
+
+/// The spectrum and the material of the flags, as the library's [`Surface`].
+pub fn surface(s: &SpectrumArgs, m: &MaterialArgs) -> anyhow::Result<Surface> {
+    let spectrum = s.spec()?;
+    let material = m.spec(s.example)?;
+    let mut surface = Surface::new(&spectrum, &material)?;
+    if s.is_example() && surface.description.is_none() {
+        surface.description = Some(format!("{EXAMPLE} (the given flags replace parts of it)"));
+    }
+    Ok(surface)
 }
 
 /// Nominal pressures from the flags, or the example's.

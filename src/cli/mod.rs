@@ -13,8 +13,8 @@ mod compare;
 mod compare_args;
 #[cfg(feature = "bem")]
 mod compare_plot;
-mod g;
 mod kappa;
+mod magnification;
 mod output;
 mod plot;
 #[cfg(feature = "bem")]
@@ -43,7 +43,8 @@ enum Cmd {
     /// Spectrum summary: rms height, slope and curvature, and C(q).
     Spectrum(spectrum::Args),
     /// G(ζ) and A/A0 against magnification at one nominal pressure.
-    G(g::Args),
+    #[command(alias = "g")]
+    Magnification(magnification::Args),
     /// Real contact area A/A0 against nominal pressure (load curve).
     Area(area::Args),
     /// κ of the linear low-load law for Bush and Persson.
@@ -52,9 +53,9 @@ enum Cmd {
     Run(run::Args),
     /// Reports: error against run time, and stability at the extremes.
     Report(report::Args),
-    /// Stress distribution P(σ) at one G (dimensionless; seed Figs. 2–4).
+    /// Stress distribution P(σ) at one G (dimensionless; Persson, Bucher & Chiaia 2002, Figs. 2–4).
     Stress(stress::Args),
-    /// Mean interfacial separation ū, stiffness K = −dp/dū and elastic energy against load.
+    /// Mean interfacial separation ū, stiffness K = −dσ0/dū and elastic energy against load.
     Separation(separation::Args),
     /// FFT boundary-element cross-check: Hertz validation and rough contact.
     #[cfg(feature = "bem")]
@@ -68,7 +69,7 @@ enum Cmd {
 pub fn run(cli: Cli) -> anyhow::Result<()> {
     match cli.cmd {
         Cmd::Spectrum(a) => spectrum::run(a),
-        Cmd::G(a) => g::run(a),
+        Cmd::Magnification(a) => magnification::run(a),
         Cmd::Area(a) => area::run(a),
         Cmd::Kappa(a) => kappa::run(a),
         Cmd::Run(a) => run::run(a),

@@ -1,21 +1,12 @@
-//! `persson stress`: the stress distribution P(σ) at one G, dimensionless.
+//! `persson stress`: the stress distribution P(σ) at one G, dimensionless
+//! (the scene output `stress` in G; Persson, Bucher & Chiaia, Phys. Rev. B 65,
+//! 184106 (2002), Figs. 2–4).
 
-use persson::stress::{Solver, Start, TabulatedStart};
+use persson::scene::{run, StartName};
+use persson::stress::{Start, TabulatedStart};
 use persson::Error;
-use serde_json::json;
 
-use super::output::{Format, Report};
-
-/// The start conditions of seed 001 Figs. 2–4.
-#[derive(clap::ValueEnum, Clone, Copy, Debug)]
-pub enum StartName {
-    /// Flat punch, P0 = δ(σ − σ0) (σH = σ0).
-    Flat,
-    /// Hertz ball, P0 = 2σ/σH², σ0 = 2σH/3.
-    Hertz,
-    /// Cylinder, P0 = (σ/σH²)(1 − (σ/σH)²)^(-1/2), σ0 = πσH/4.
-    Cylinder,
-}
+use super::output::{print, Format};
 
 /// Arguments of `persson stress`.
 #[derive(clap::Args, Debug)]
@@ -28,14 +19,19 @@ pub struct Args {
         conflicts_with = "table"
     )]
     start: Option<StartName>,
-    /// A tabulated start instead: a file of two columns σ, P0(σ) (comma or
+    /// A tabulated start instead: a file of two columns σ/σH, σH P0 (comma or
     /// blank separated, `#` comments), piecewise linear, σH = the last σ.
     #[arg(long)]
     table: Option<std::path::PathBuf>,
     /// How far ∫ P0 dσ of a --table may be from 1.
-    #[arg(long, default_value_t = 1e-6, allow_negative_numbers = true)]
-    table_tol: f64,
-    /// G(ζ) (seed 001 Eq. 2, with σ0 the nominal mean pressure).
+    #[arg(
+        long,
+        alias = "table-tol",
+        default_value = "1e-6",
+        allow_negative_numbers = true
+    )]
+    table_normalisation: f64,
+    /// G(ζ) (Persson, Bucher & Chiaia 2002, Eq. 2, with σ0 the nominal mean pressure).
     #[arg(long, allow_negative_numbers = true)]
     g: f64,
     /// σY/σH, the yield stress in units of the peak pressure (absent: elastic).
@@ -43,14 +39,24 @@ pub struct Args {
     yield_ratio: Option<f64>,
     /// σ/σH where to evaluate P; comma-separated (default: --points values from 0
     /// to the end of the distribution).
-    #[arg(long, value_delimiter = ',', allow_negative_numbers = true)]
-    sigma: Vec<f64>,
-    /// Number of evenly spaced σ when --sigma is not given.
+    #[arg(
+        long,
+        alias = "sigma",
+        value_delimiter = ',',
+        allow_negative_numbers = true
+    )]
+    sigma_ratio: Vec<f64>,
+    /// Number of evenly spaced σ when --sigma-ratio is not given.
     #[arg(long, default_value_t = 201)]
     points: usize,
-    /// Absolute tolerance for the density (units of 1/σH) and the fractions.
-    #[arg(long, default_value_t = 1e-12, allow_negative_numbers = true)]
-    tol: f64,
+    /// Absolute tolerance of σH P and of the fractions.
+    #[arg(
+        long,
+        alias = "tol",
+        default_value = "1e-12",
+        allow_negative_numbers = true
+    )]
+    tolerance: f64,
     #[command(flatten)]
     format: Format,
     #[command(flatten)]
@@ -60,84 +66,28 @@ pub struct Args {
 /// Run `persson stress`.
 pub fn run(a: Args) -> anyhow::Result<()> {
     a.plot.check()?;
-    report(&a)?.print(&a.format)
-}
-
-fn report(a: &Args) -> anyhow::Result<Report> {
     let start = match (a.start, &a.table) {
-        (Some(StartName::Flat), _) => Start::Flat,
-        (Some(StartName::Hertz), _) => Start::Hertz,
-        (Some(StartName::Cylinder), _) => Start::Cylinder,
+        (Some(s), _) => Start::from(s),
         (None, Some(path)) => {
             let (s, p) = read_table(path)?;
             Start::Tabulated(
-                TabulatedStart::new(&s, &p, a.table_tol)
+                TabulatedStart::new(&s, &p, a.table_normalisation)
                     .map_err(|e| anyhow::anyhow!("--table {}: {e}", path.display()))?,
             )
         }
-        (None, None) => unreachable!("clap requires --start or --table"),
+        (None, None) => anyhow::bail!("give --start or --table"),
     };
-    let solver = Solver::new(&start, a.g, a.yield_ratio, a.tol)?;
-    let sigma = if a.sigma.is_empty() {
-        solver.grid(a.points)
-    } else {
-        a.sigma.clone()
-    };
-    let c = solver.curve(&sigma)?;
-    let label = format!(
-        "{} start, G = {:e}, A/A0 = {:.4}",
-        start.name(),
-        a.g,
-        c.contact_fraction
-    );
+    let report = run::stress_dimensionless(
+        &start,
+        &[a.g],
+        a.yield_ratio,
+        a.tolerance,
+        &a.sigma_ratio,
+        a.points,
+    )?;
     #[cfg(feature = "plot")]
-    a.plot
-        .draw(|| persson::plot::stress_family(&c.sigma, &[(label.as_str(), &c.density)]))?;
-    #[cfg(not(feature = "plot"))]
-    {
-        let _ = &label;
-        a.plot.unavailable()?;
-    }
-    Ok(Report {
-        title: format!(
-            "Stress distribution P(sigma), start {}, G = {:e}, sigma_Y/sigma_H = {}; sigma in units of sigma_H, density in 1/sigma_H\n  method: {}",
-            start.name(),
-            a.g,
-            a.yield_ratio.map_or("inf (elastic)".to_string(), |r| format!("{r:e}")),
-            c.method
-        ),
-        scalars: vec![
-            ("contact_fraction".into(), c.contact_fraction),
-            ("plastic_fraction".into(), c.plastic_fraction),
-            ("non_contact_fraction".into(), c.non_contact_fraction),
-            ("tau".into(), c.tau),
-            ("error_bound".into(), c.error_bound),
-        ],
-        columns: ["sigma", "density"].map(String::from).to_vec(),
-        rows: c
-            .sigma
-            .iter()
-            .zip(&c.density)
-            .map(|(s, p)| vec![*s, *p])
-            .collect(),
-        json: json!({
-            "start": start.name(),
-            "g": a.g,
-            "yield_ratio": a.yield_ratio,
-            "tau": c.tau,
-            "mean_ratio": start.mean_ratio(),
-            "contact_fraction": c.contact_fraction,
-            "plastic_fraction": c.plastic_fraction,
-            "non_contact_fraction": c.non_contact_fraction,
-            "contact_error": c.contact_error,
-            "plastic_error": c.plastic_error,
-            "density_error": c.density_error,
-            "error_bound": c.error_bound,
-            "method": c.method,
-            "sigma": c.sigma,
-            "density": c.density,
-        }),
-    })
+    a.plot.draw(|| persson::scene::plot::stress(&report))?;
+    print(&report, &a.format)
 }
 
 /// Two columns of numbers; `#` starts a comment.

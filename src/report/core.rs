@@ -161,8 +161,8 @@ pub(super) fn stability() -> Result<Vec<StabilityCase>> {
                         table::number(zeta, 13),
                         num(p)
                     ),
-                    (pt.contact_fraction, pt.error),
-                    &[pt.g, pt.g_error, pt.complement],
+                    (pt.contact_fraction, pt.error_bound),
+                    &[pt.g, pt.g_error_bound, pt.non_contact_fraction],
                     self_affine_reference(h, zeta, lp),
                 ));
             }

@@ -305,20 +305,20 @@ pub(super) fn stability() -> Result<Vec<StabilityCase>> {
             for y in STABILITY_Y {
                 let solver = Solver::new(&st, g, y, STABILITY_TOL)?;
                 let c = solver.curve(&solver.grid(STABILITY_POINTS))?;
-                let mut others = c.density.clone();
+                let mut others = c.scaled_density.clone();
                 others.extend([
                     c.plastic_fraction,
                     c.non_contact_fraction,
-                    c.density_error,
-                    c.contact_error,
-                    c.plastic_error,
+                    c.scaled_density_error_bound,
+                    c.elastic_fraction_error_bound,
+                    c.plastic_fraction_error_bound,
                     c.tau,
                 ]);
                 let y_name = y.map_or("elastic".to_string(), |v| format!("σY/σH = {}", num(v)));
                 out.push(case(
                     family,
                     format!("A_el/A0, {} start, G = {}, {y_name}", st.name(), num(g)),
-                    (c.contact_fraction, c.error_bound),
+                    (c.elastic_fraction, c.error_bound),
                     &others,
                     sweep_reference(&refs, &st, g, y),
                 ));

@@ -77,11 +77,13 @@ const SERIES_PLASTIC_RATIO: f64 = 0.25;
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct StressCurve {
     /// s = σ/σH where the density was evaluated.
-    pub sigma: Vec<f64>,
-    /// P(s) in units of 1/σH.
-    pub density: Vec<f64>,
-    /// A_el/A0 = ∫₀^σY P dσ, the elastic contact fraction.
+    pub sigma_ratio: Vec<f64>,
+    /// σH P(σ): the density over s = σ/σH (dimensionless).
+    pub scaled_density: Vec<f64>,
+    /// A/A0 = A_el/A0 + A_pl/A0, the total contact fraction.
     pub contact_fraction: f64,
+    /// A_el/A0 = ∫₀^σY P dσ, the elastically loaded fraction.
+    pub elastic_fraction: f64,
     /// A_pl/A0, the plastically yielded fraction (0 when elastic).
     pub plastic_fraction: f64,
     /// 1 − A_el − A_pl, the fraction that lost contact.
@@ -90,11 +92,11 @@ pub struct StressCurve {
     /// fractions.
     pub error_bound: f64,
     /// Bound on the absolute error of the density values (1/σH).
-    pub density_error: f64,
-    /// Bound on the absolute error of `contact_fraction`.
-    pub contact_error: f64,
+    pub scaled_density_error_bound: f64,
+    /// Bound on the absolute error of `elastic_fraction`.
+    pub elastic_fraction_error_bound: f64,
     /// Bound on the absolute error of `plastic_fraction`.
-    pub plastic_error: f64,
+    pub plastic_fraction_error_bound: f64,
     /// G(ζ).
     pub g: f64,
     /// τ = (σ0/σH)² G.
@@ -358,15 +360,16 @@ impl<'a> Solver<'a> {
         let (el, pl, how) = self.fractions()?;
         let error_bound = derr.max(el.error).max(pl.error);
         Ok(StressCurve {
-            sigma: sigma.to_vec(),
-            density,
-            contact_fraction: el.value,
+            sigma_ratio: sigma.to_vec(),
+            scaled_density: density,
+            contact_fraction: el.value + pl.value,
+            elastic_fraction: el.value,
             plastic_fraction: pl.value,
             non_contact_fraction: 1.0 - el.value - pl.value,
             error_bound,
-            density_error: derr,
-            contact_error: el.error,
-            plastic_error: pl.error,
+            scaled_density_error_bound: derr,
+            elastic_fraction_error_bound: el.error,
+            plastic_fraction_error_bound: pl.error,
             g: self.g,
             tau: self.tau,
             yield_ratio: self.y.is_finite().then_some(self.y),
@@ -482,9 +485,11 @@ pub struct PhysicalCurve {
     pub sigma: Vec<f64>,
     /// P(σ, ζ) (1/Pa).
     pub density: Vec<f64>,
-    /// A_el/A0.
+    /// A/A0 = A_el/A0 + A_pl/A0, the total contact fraction.
     pub contact_fraction: f64,
-    /// A_pl/A0.
+    /// A_el/A0, the elastically loaded fraction.
+    pub elastic_fraction: f64,
+    /// A_pl/A0, the plastically yielded fraction.
     pub plastic_fraction: f64,
     /// Bound on the absolute error of the fractions and of σH·P (dimensionless),
     /// not counting the error of G.
@@ -565,8 +570,9 @@ impl StressScene {
                     zeta: z,
                     g,
                     sigma: sigma.to_vec(),
-                    density: c.density.iter().map(|p| p / sh).collect(),
+                    density: c.scaled_density.iter().map(|p| p / sh).collect(),
                     contact_fraction: c.contact_fraction,
+                    elastic_fraction: c.elastic_fraction,
                     plastic_fraction: c.plastic_fraction,
                     error_bound: c.error_bound,
                     method: c.method,

@@ -5,7 +5,6 @@
 use serde::Serialize;
 
 use crate::bem::hertz::{self as closed, HertzCase};
-use crate::bem::rough::boundary_name;
 use crate::bem::{check_memory, Boundary, Iteration, Options};
 use crate::error::Result;
 use crate::table::{number, Cell, Table, Tabulate};
@@ -105,7 +104,7 @@ impl Tabulate for HertzValidation {
             "bem_hertz",
             format!(
                 "Hertz validation of the FFT-BEM, {n}×{n} grid, {} boundary, a = {}, R = {}, E* = {}",
-                boundary_name(self.boundary),
+                self.boundary.name(),
                 number(self.hertz_contact_radius, 6),
                 number(self.radius, 6),
                 number(self.contact_modulus, 6)
