@@ -172,6 +172,8 @@ pub mod spectrum;
 pub mod stress;
 pub mod table;
 pub mod theory;
+#[cfg(feature = "topography")]
+pub mod topography;
 
 pub use error::{Error, Result};
 pub use material::Material;
