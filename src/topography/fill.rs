@@ -96,7 +96,12 @@ pub(crate) fn harmonic_fill(
     let mut r = b.clone();
     let mut p = r.clone();
     let mut ap = vec![0.0; m];
-    let bnorm = b.iter().map(|v| v * v).sum::<f64>().sqrt().max(f64::MIN_POSITIVE);
+    let bnorm = b
+        .iter()
+        .map(|v| v * v)
+        .sum::<f64>()
+        .sqrt()
+        .max(f64::MIN_POSITIVE);
     let mut rr: f64 = r.iter().map(|v| v * v).sum();
     let max_iter = 10 * m + 100;
     let mut it = 0;
@@ -138,7 +143,10 @@ mod tests {
         for k in [8, 9, 16, 24] {
             h[k] = f64::NAN;
         }
-        assert_eq!(harmonic_fill(&mut h, nx, ny, Layout::Map, false).unwrap(), 4);
+        assert_eq!(
+            harmonic_fill(&mut h, nx, ny, Layout::Map, false).unwrap(),
+            4
+        );
         for (k, v) in h.iter().enumerate() {
             assert!((v - f(k)).abs() < 1e-10, "{k}: {v} vs {}", f(k));
         }

@@ -43,7 +43,9 @@ pub fn fit_hurst(psd: &Psd, q_lo: f64, q_hi: f64) -> Result<HurstFit> {
         .iter()
         .zip(&psd.c)
         .zip(&psd.count)
-        .filter(|((q, c), _)| **q >= q_lo * (1.0 - 1e-12) && **q <= q_hi * (1.0 + 1e-12) && **c > 0.0)
+        .filter(|((q, c), _)| {
+            **q >= q_lo * (1.0 - 1e-12) && **q <= q_hi * (1.0 + 1e-12) && **c > 0.0
+        })
         .map(|((q, c), n)| (q.ln(), c.ln(), *n as f64))
         .collect();
     let m = pts.len();

@@ -263,10 +263,7 @@ impl Topography {
     pub fn band(&self) -> (f64, f64) {
         use std::f64::consts::{PI, TAU};
         match self.layout {
-            Layout::Map => (
-                TAU / self.lx.min(self.ly),
-                PI / self.dx().max(self.dy()),
-            ),
+            Layout::Map => (TAU / self.lx.min(self.ly), PI / self.dx().max(self.dy())),
             Layout::LineScans => (TAU / self.lx, PI / self.dx()),
         }
     }

@@ -157,15 +157,17 @@ impl Psd {
     pub fn to_csv(&self) -> String {
         use crate::table::csv_number as num;
         let mut s = String::new();
-        s.push_str("# isotropic power spectrum, Persson's normalisation: q (1/m, angular), c (m^4)\n");
+        s.push_str(
+            "# isotropic power spectrum, Persson's normalisation: q (1/m, angular), c (m^4)\n",
+        );
         s.push_str(&format!(
-            "# band q_min = {}, q_max = {}; count = modes per bin\n",
+            "# band q_min = {}, q_max = {}\n",
             num(self.q_min),
             num(self.q_max)
         ));
-        s.push_str("q,c,count\n");
-        for ((q, c), n) in self.q.iter().zip(&self.c).zip(&self.count) {
-            s.push_str(&format!("{},{},{n}\n", num(*q), num(*c)));
+        s.push_str("q,c\n");
+        for (q, c) in self.q.iter().zip(&self.c) {
+            s.push_str(&format!("{},{}\n", num(*q), num(*c)));
         }
         s
     }
@@ -283,7 +285,7 @@ pub fn isotropic_spectrum(
     bins: &Bins,
     q_max: Option<f64>,
 ) -> Result<Psd> {
-    use std::f64::consts::{PI, TAU};
+    use std::f64::consts::TAU;
     if t.layout() != Layout::Map {
         return Err(Error::Inconsistent {
             name: "layout".into(),
@@ -319,7 +321,10 @@ pub fn isotropic_spectrum(
     let mut block = vec![Complex64::new(0.0, 0.0); width * ny];
     let factor = lx * ly / (TAU * TAU * (nx as f64).powi(2) * (ny as f64).powi(2));
     // q as SurfaceTopography computes it: (2π n/L)/n · k.
-    let (dqx, dqy) = (TAU * nx as f64 / lx / nx as f64, TAU * ny as f64 / ly / ny as f64);
+    let (dqx, dqy) = (
+        TAU * nx as f64 / lx / nx as f64,
+        TAU * ny as f64 / ly / ny as f64,
+    );
     let ky2: Vec<f64> = (0..ny)
         .map(|iy| {
             let k = if iy <= ny / 2 { iy } else { ny - iy } as f64;
@@ -359,7 +364,6 @@ pub fn isotropic_spectrum(
         });
     }
     let cell = dqx * dqy;
-    let _ = PI;
     Ok(Psd {
         q,
         c,
@@ -441,7 +445,14 @@ pub fn profile_spectrum(
     let mut binner = Binner::new(bins.edges(dq, q_hi)?);
     let mut h = t.heights().to_vec();
     condition::detrend_in_place(&mut h, nx, ny, Layout::LineScans, conditioning.detrend);
-    window::apply(&mut h, nx, ny, (lx, 0.0), Layout::LineScans, conditioning.window);
+    window::apply(
+        &mut h,
+        nx,
+        ny,
+        (lx, 0.0),
+        Layout::LineScans,
+        conditioning.window,
+    );
     let mut rp = RealFftPlanner::<f64>::new();
     let r2c = rp.plan_fft_forward(nx);
     let mut out = r2c.make_output_vec();

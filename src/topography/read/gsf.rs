@@ -21,13 +21,20 @@ pub(crate) const MAGIC: &[u8] = b"Gwyddion Simple Field 1.0\n";
 pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
     let bad = |line: usize, m: String| Error::parse(path, line, 0, m);
     if !b.starts_with(MAGIC) {
-        return Err(bad(1, "not a Gwyddion Simple Field: the first line must be 'Gwyddion Simple Field 1.0'".into()));
+        return Err(bad(
+            1,
+            "not a Gwyddion Simple Field: the first line must be 'Gwyddion Simple Field 1.0'"
+                .into(),
+        ));
     }
-    let nul = b
-        .iter()
-        .position(|&c| c == 0)
-        .ok_or_else(|| bad(0, "truncated: the header has no NUL padding and no data".into()))?;
-    let header = std::str::from_utf8(&b[..nul]).map_err(|_| bad(0, "the header is not UTF-8 text".into()))?;
+    let nul = b.iter().position(|&c| c == 0).ok_or_else(|| {
+        bad(
+            0,
+            "truncated: the header has no NUL padding and no data".into(),
+        )
+    })?;
+    let header = std::str::from_utf8(&b[..nul])
+        .map_err(|_| bad(0, "the header is not UTF-8 text".into()))?;
     let data_start = (nul / 4 + 1) * 4;
     if b.len() < data_start || b[nul..data_start].iter().any(|&c| c != 0) {
         return Err(bad(
@@ -88,7 +95,12 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
     let size = match (xreal, yreal) {
         (Some(x), Some(y)) => Some((x, y)),
         (None, None) => None,
-        _ => return Err(bad(0, "the header gives only one of XReal and YReal".into())),
+        _ => {
+            return Err(bad(
+                0,
+                "the header gives only one of XReal and YReal".into(),
+            ))
+        }
     };
     Ok(Raw {
         nx: xres,
@@ -114,8 +126,10 @@ pub fn write_gsf(path: &Path, t: &crate::topography::Topography) -> Result<()> {
     let (nx, ny, lx, ly, heights) = (t.nx(), t.ny(), t.lx(), t.ly(), t.heights());
     let mut out = MAGIC.to_vec();
     out.extend_from_slice(
-        format!("XRes = {nx}\nYRes = {ny}\nXReal = {lx:e}\nYReal = {ly:e}\nXYUnits = m\nZUnits = m\n")
-            .as_bytes(),
+        format!(
+            "XRes = {nx}\nYRes = {ny}\nXReal = {lx:e}\nYReal = {ly:e}\nXYUnits = m\nZUnits = m\n"
+        )
+        .as_bytes(),
     );
     let pad = 4 - out.len() % 4;
     out.extend(std::iter::repeat_n(0u8, pad));

@@ -21,22 +21,40 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
                 path,
                 *ln,
                 0,
-                format!("a line scan has two columns (x, h), this row has {}", r.len()),
+                format!(
+                    "a line scan has two columns (x, h), this row has {}",
+                    r.len()
+                ),
             ));
         }
         if !r[0].is_finite() {
-            return Err(Error::parse(path, *ln, 1, format!("x = {} is not finite", r[0])));
+            return Err(Error::parse(
+                path,
+                *ln,
+                1,
+                format!("x = {} is not finite", r[0]),
+            ));
         }
         x.push(r[0]);
         h.push(r[1]);
     }
     let n = x.len();
     if n < 2 {
-        return Err(Error::parse(path, 0, 0, format!("the line scan has {n} point(s): need at least 2")));
+        return Err(Error::parse(
+            path,
+            0,
+            0,
+            format!("the line scan has {n} point(s): need at least 2"),
+        ));
     }
     let dx = (x[n - 1] - x[0]) / (n - 1) as f64;
     if !(dx > 0.0) {
-        return Err(Error::parse(path, 0, 0, "x must increase from the first row to the last"));
+        return Err(Error::parse(
+            path,
+            0,
+            0,
+            "x must increase from the first row to the last",
+        ));
     }
     for (i, w) in x.windows(2).enumerate() {
         if ((w[1] - w[0]) - dx).abs() > SPACING_TOLERANCE * dx {

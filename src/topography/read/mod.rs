@@ -148,7 +148,9 @@ fn finish(path: &Path, mut raw: Raw, options: &ReadOptions) -> Result<Topography
         )));
     }
     if nx < 2 {
-        return Err(bad(format!("the line scan has {nx} point(s): need at least 2")));
+        return Err(bad(format!(
+            "the line scan has {nx} point(s): need at least 2"
+        )));
     }
     let given = |name: &str, v: f64| -> Result<f64> {
         if v.is_finite() && v > 0.0 {

@@ -12,12 +12,18 @@ pub(crate) const MAGIC: &[u8] = b"\x93NUMPY";
 pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
     let bad = |m: String| Error::parse(path, 0, 0, m);
     if !b.starts_with(MAGIC) || b.len() < 10 {
-        return Err(bad("not a .npy file (magic string \\x93NUMPY missing)".into()));
+        return Err(bad(
+            "not a .npy file (magic string \\x93NUMPY missing)".into()
+        ));
     }
     let (hlen, start) = match b[6] {
         1 => (u16::from_le_bytes([b[8], b[9]]) as usize, 10),
         2 | 3 if b.len() >= 12 => (u32::from_le_bytes([b[8], b[9], b[10], b[11]]) as usize, 12),
-        v => return Err(bad(format!(".npy format version {v} not supported (1, 2 or 3)"))),
+        v => {
+            return Err(bad(format!(
+                ".npy format version {v} not supported (1, 2 or 3)"
+            )))
+        }
     };
     let header = b
         .get(start..start + hlen)
@@ -46,8 +52,8 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
         }
         _ => {
             return Err(bad(format!(
-                "dtype {descr:?} not supported: need float64 ('<f8', '>f8') or float32 ('<f4', '>f4')"
-            )))
+            "dtype {descr:?} not supported: need float64 ('<f8', '>f8') or float32 ('<f4', '>f4')"
+        )))
         }
     }
     let fortran = match dict_value(header, "fortran_order") {

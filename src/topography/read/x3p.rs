@@ -23,7 +23,8 @@ use crate::error::{Error, Result};
 use crate::topography::Layout;
 
 fn child<'a, 'i>(n: roxmltree::Node<'a, 'i>, name: &str) -> Option<roxmltree::Node<'a, 'i>> {
-    n.children().find(|c| c.is_element() && c.tag_name().name() == name)
+    n.children()
+        .find(|c| c.is_element() && c.tag_name().name() == name)
 }
 
 pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
@@ -49,8 +50,12 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
     };
     let number = |steps: &[&str]| -> Result<f64> {
         let t = text(steps)?;
-        t.parse::<f64>()
-            .map_err(|_| bad(format!("main.xml: {} = {t:?} is not a number", steps.join("/"))))
+        t.parse::<f64>().map_err(|_| {
+            bad(format!(
+                "main.xml: {} = {t:?} is not a number",
+                steps.join("/")
+            ))
+        })
     };
     let optional = |steps: &[&str]| -> Result<Option<f64>> {
         if path_of(steps).is_err() {
@@ -79,19 +84,28 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
     let z_offset = optional(&["Record1", "Axes", "CZ", "Offset"])?.unwrap_or(0.0);
     let dim = |s: &str| -> Result<usize> {
         let t = text(&["Record3", "MatrixDimension", s])?;
-        t.parse::<usize>()
-            .map_err(|_| bad(format!("main.xml: MatrixDimension/{s} = {t:?} is not a count")))
+        t.parse::<usize>().map_err(|_| {
+            bad(format!(
+                "main.xml: MatrixDimension/{s} = {t:?} is not a count"
+            ))
+        })
     };
     let (nx, ny, nz) = (dim("SizeX")?, dim("SizeY")?, dim("SizeZ")?);
     if nz != 1 {
-        return Err(bad(format!("main.xml: SizeZ = {nz}: only one layer (1) is read")));
+        return Err(bad(format!(
+            "main.xml: SizeZ = {nz}: only one layer (1) is read"
+        )));
     }
     let link = text(&["Record3", "DataLink", "PointDataLink"])?;
     let item = match dtype.as_str() {
         "I" => 2,
         "L" | "F" => 4,
         "D" => 8,
-        d => return Err(bad(format!("main.xml: CZ DataType {d:?}: need I, L, F or D"))),
+        d => {
+            return Err(bad(format!(
+                "main.xml: CZ DataType {d:?}: need I, L, F or D"
+            )))
+        }
     };
     let count = nx
         .checked_mul(ny)
@@ -99,9 +113,17 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
         .ok_or_else(|| bad(format!("SizeX × SizeY = {nx} × {ny} is too large")))?;
     let mut data = Vec::new();
     zip.by_name(&link)
-        .map_err(|e| bad(format!("the archive has no readable data member {link:?}: {e}")))?
+        .map_err(|e| {
+            bad(format!(
+                "the archive has no readable data member {link:?}: {e}"
+            ))
+        })?
         .read_to_end(&mut data)
-        .map_err(|e| bad(format!("data member {link:?} is unreadable or truncated: {e}")))?;
+        .map_err(|e| {
+            bad(format!(
+                "data member {link:?} is unreadable or truncated: {e}"
+            ))
+        })?;
     if data.len() < count * item {
         return Err(bad(format!(
             "truncated: {link} holds {} bytes, SizeX × SizeY = {nx} × {ny} values of type {dtype} need {}",

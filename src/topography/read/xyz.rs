@@ -18,7 +18,10 @@ fn axis(path: &Path, name: &str, v: &[f64], lines: &[usize]) -> Result<(usize, f
     let range = hi - lo;
     let mut distinct: Vec<f64> = Vec::new();
     for &x in &s {
-        if distinct.last().is_none_or(|&d| x - d > 1e-9 * range.max(f64::MIN_POSITIVE)) {
+        if distinct
+            .last()
+            .is_none_or(|&d| x - d > 1e-9 * range.max(f64::MIN_POSITIVE))
+        {
             distinct.push(x);
         }
     }
@@ -45,7 +48,12 @@ fn axis(path: &Path, name: &str, v: &[f64], lines: &[usize]) -> Result<(usize, f
         .map(|(&x, &ln)| {
             let k = ((x - lo) / d).round();
             if (x - (lo + k * d)).abs() > 0.01 * d {
-                Err(Error::parse(path, ln, 0, format!("{name} = {x} is off the grid of spacing {d}")))
+                Err(Error::parse(
+                    path,
+                    ln,
+                    0,
+                    format!("{name} = {x} is off the grid of spacing {d}"),
+                ))
             } else {
                 Ok(k as usize)
             }
@@ -63,7 +71,10 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
                 path,
                 *ln,
                 0,
-                format!("an XYZ file has three columns (x, y, z), this row has {}", r.len()),
+                format!(
+                    "an XYZ file has three columns (x, y, z), this row has {}",
+                    r.len()
+                ),
             ));
         }
         if !(r[0].is_finite() && r[1].is_finite()) {
