@@ -111,44 +111,120 @@ pub(crate) fn detrend_in_place(h: &mut [f64], nx: usize, ny: usize, layout: Layo
             }
         }
         Layout::Map => {
-            let by = basis(ny);
-            // (index along x, index along y) of the tensor-product terms.
-            let terms: &[(usize, usize)] = match degree {
-                0 => &[(0, 0)],
-                1 => &[(0, 0), (1, 0), (0, 1)],
-                _ => &[(0, 0), (1, 0), (0, 1), (2, 0), (1, 1), (0, 2)],
-            };
-            // One pass for all projections: Σ_iy P_b(v_iy) Σ_ix h P_a(u_ix).
-            let mut num = vec![0.0; terms.len()];
-            for (iy, row) in h.chunks_exact(nx).enumerate() {
-                let mut s = [0.0; 3];
-                for (ix, &v) in row.iter().enumerate() {
-                    s[0] += v;
-                    s[1] += v * bx[1][ix];
-                    s[2] += v * bx[2][ix];
-                }
-                for (k, &(a, b)) in terms.iter().enumerate() {
-                    num[k] += s[a] * by[b][iy];
-                }
-            }
-            let norm = |p: &[f64]| p.iter().map(|v| v * v).sum::<f64>();
-            let coef: Vec<f64> = terms
-                .iter()
-                .zip(&num)
-                .map(|(&(a, b), n)| n / (norm(&bx[a]) * norm(&by[b])))
-                .collect();
+            let trend = MapTrend::fit(h, nx, ny, degree);
             for (iy, row) in h.chunks_exact_mut(nx).enumerate() {
-                // Trend along this row: Σ_k coef_k P_b(v) P_a(u) = c0 + c1 P1(u) + c2 P2(u).
-                let mut c = [0.0; 3];
-                for (k, &(a, b)) in terms.iter().enumerate() {
-                    c[a] += coef[k] * by[b][iy];
-                }
+                let c = trend.row(iy);
                 for (ix, v) in row.iter_mut().enumerate() {
-                    *v -= c[0] + c[1] * bx[1][ix] + c[2] * bx[2][ix];
+                    *v -= c[0] + c[1] * trend.bx[1][ix] + c[2] * trend.bx[2][ix];
                 }
             }
         }
     }
+}
+
+/// The least-squares trend of a map: `Σ_k coef_k P_a(u) P_b(v)`.
+pub(crate) struct MapTrend {
+    /// P0, P1, P2 along x.
+    pub bx: [Vec<f64>; 3],
+    by: [Vec<f64>; 3],
+    terms: &'static [(usize, usize)],
+    coef: Vec<f64>,
+}
+
+impl MapTrend {
+    /// Fit the polynomial of `degree` (0, 1, 2) to `h` (`ny × nx`).
+    pub(crate) fn fit(h: &[f64], nx: usize, ny: usize, degree: usize) -> Self {
+        let bx = basis(nx);
+        let by = basis(ny);
+        // (index along x, index along y) of the tensor-product terms.
+        let terms: &'static [(usize, usize)] = match degree {
+            0 => &[(0, 0)],
+            1 => &[(0, 0), (1, 0), (0, 1)],
+            _ => &[(0, 0), (1, 0), (0, 1), (2, 0), (1, 1), (0, 2)],
+        };
+        // One pass for all projections: Σ_iy P_b(v_iy) Σ_ix h P_a(u_ix).
+        let mut num = vec![0.0; terms.len()];
+        for (iy, row) in h.chunks_exact(nx).enumerate() {
+            let mut s = [0.0; 3];
+            for ((&v, p1), p2) in row.iter().zip(&bx[1]).zip(&bx[2]) {
+                s[0] += v;
+                s[1] += v * p1;
+                s[2] += v * p2;
+            }
+            for (k, &(a, b)) in terms.iter().enumerate() {
+                num[k] += s[a] * by[b][iy];
+            }
+        }
+        let norm = |p: &[f64]| p.iter().map(|v| v * v).sum::<f64>();
+        let coef = terms
+            .iter()
+            .zip(&num)
+            .map(|(&(a, b), n)| n / (norm(&bx[a]) * norm(&by[b])))
+            .collect();
+        MapTrend {
+            bx,
+            by,
+            terms,
+            coef,
+        }
+    }
+
+    /// The trend along row `iy` as `c0 + c1 P1(u) + c2 P2(u)`.
+    pub(crate) fn row(&self, iy: usize) -> [f64; 3] {
+        let mut c = [0.0; 3];
+        for (k, &(a, b)) in self.terms.iter().enumerate() {
+            c[a] += self.coef[k] * self.by[b][iy];
+        }
+        c
+    }
+}
+
+/// The conditioned heights of a map in one pass: `(h − trend)·w`, with the
+/// window's mean square `⟨w²⟩` returned instead of applied (the caller
+/// divides the power by it).
+pub(crate) fn conditioned_map(
+    t: &Topography,
+    mode: Detrend,
+    window: super::Window,
+) -> (Vec<f64>, f64) {
+    let (nx, ny) = (t.nx(), t.ny());
+    let h = t.heights();
+    let trend = mode.degree().map(|d| MapTrend::fit(h, nx, ny, d));
+    let mut out = vec![0.0; nx * ny];
+    let mut sum_w2 = 0.0;
+    super::window::for_rows(nx, ny, (t.lx(), t.ly()), window, |iy, w| {
+        let src = &h[iy * nx..(iy + 1) * nx];
+        let dst = &mut out[iy * nx..(iy + 1) * nx];
+        match (&trend, w) {
+            (Some(tr), Some(w)) => {
+                let c = tr.row(iy);
+                for ix in 0..nx {
+                    dst[ix] = (src[ix] - (c[0] + c[1] * tr.bx[1][ix] + c[2] * tr.bx[2][ix])) * w[ix];
+                }
+            }
+            (Some(tr), None) => {
+                let c = tr.row(iy);
+                for ix in 0..nx {
+                    dst[ix] = src[ix] - (c[0] + c[1] * tr.bx[1][ix] + c[2] * tr.bx[2][ix]);
+                }
+            }
+            (None, Some(w)) => {
+                for ix in 0..nx {
+                    dst[ix] = src[ix] * w[ix];
+                }
+            }
+            (None, None) => dst.copy_from_slice(src),
+        }
+        if let Some(w) = w {
+            sum_w2 += w.iter().map(|v| v * v).sum::<f64>();
+        }
+    });
+    let mean_w2 = if window == super::Window::None {
+        1.0
+    } else {
+        sum_w2 / (nx * ny) as f64
+    };
+    (out, mean_w2)
 }
 
 #[cfg(test)]

@@ -299,8 +299,7 @@ pub fn isotropic_spectrum(
     let q_lo = (TAU / lx).min(TAU / ly);
     let mut binner = Binner::new(bins.edges(q_lo, q_hi)?);
 
-    let mut h = condition::detrended(t, conditioning.detrend);
-    window::apply(&mut h, nx, ny, (lx, ly), Layout::Map, conditioning.window);
+    let (mut h, mean_w2) = condition::conditioned_map(t, conditioning.detrend, conditioning.window);
 
     // Row transforms into the half spectrum, ny × nc row-major.
     let nc = nx / 2 + 1;
@@ -319,7 +318,7 @@ pub fn isotropic_spectrum(
     let mut scratch = vec![Complex64::new(0.0, 0.0); fft.get_inplace_scratch_len()];
     let width = (BLOCK_BYTES / (16 * ny)).clamp(1, nc);
     let mut block = vec![Complex64::new(0.0, 0.0); width * ny];
-    let factor = lx * ly / (TAU * TAU * (nx as f64).powi(2) * (ny as f64).powi(2));
+    let factor = lx * ly / (TAU * TAU * (nx as f64).powi(2) * (ny as f64).powi(2) * mean_w2);
     // q as SurfaceTopography computes it: (2π n/L)/n · k.
     let (dqx, dqy) = (
         TAU * nx as f64 / lx / nx as f64,

@@ -94,21 +94,60 @@ pub(crate) fn apply(
             }
         }
         Layout::Map => {
-            let r_max = 0.5 * lx.min(ly);
-            let (cx, cy) = ((nx / 2) as f64, (ny / 2) as f64);
-            let (sx, sy) = (lx / nx as f64 / r_max, ly / ny as f64 / r_max);
-            let xs: Vec<f64> = (0..nx).map(|i| (sx * (i as f64 - cx)).powi(2)).collect();
             let mut sum_w2 = 0.0;
-            for (iy, row) in h.chunks_exact_mut(nx).enumerate() {
-                let y2 = (sy * (iy as f64 - cy)).powi(2);
-                for (v, x2) in row.iter_mut().zip(&xs) {
-                    let w = window.shape((x2 + y2).sqrt());
-                    sum_w2 += w * w;
-                    *v *= w;
+            for_rows(nx, ny, (lx, ly), window, |iy, w| {
+                if let Some(w) = w {
+                    let row = &mut h[iy * nx..(iy + 1) * nx];
+                    row.iter_mut().zip(w).for_each(|(v, w)| *v *= w);
+                    sum_w2 += w.iter().map(|v| v * v).sum::<f64>();
                 }
-            }
+            });
             let s = 1.0 / (sum_w2 / (nx * ny) as f64).sqrt();
             h.iter_mut().for_each(|v| *v *= s);
+        }
+    }
+}
+
+/// Call `f(iy, Some(w_row))` for every row of an `ny × nx` map with the
+/// unnormalised radial window (`f(iy, None)` without a window). Rows at the
+/// same distance from the centre row share one evaluation, and each row is
+/// mirrored about the centre column: a quarter of the cosines.
+pub(crate) fn for_rows(
+    nx: usize,
+    ny: usize,
+    (lx, ly): (f64, f64),
+    window: Window,
+    mut f: impl FnMut(usize, Option<&[f64]>),
+) {
+    if window == Window::None {
+        (0..ny).for_each(|iy| f(iy, None));
+        return;
+    }
+    let r_max = 0.5 * lx.min(ly);
+    let (cx, cy) = (nx / 2, ny / 2);
+    let (sx, sy) = (lx / nx as f64 / r_max, ly / ny as f64 / r_max);
+    let xs: Vec<f64> = (0..nx)
+        .map(|i| (sx * (i as f64 - cx as f64)).powi(2))
+        .collect();
+    let mut row = vec![0.0; nx];
+    for d in 0..=cy.max(ny - 1 - cy) {
+        let y2 = (sy * d as f64).powi(2);
+        for ix in cx..nx {
+            row[ix] = window.shape((xs[ix] + y2).sqrt());
+        }
+        for ix in 0..cx {
+            let m = 2 * cx - ix;
+            row[ix] = if m < nx {
+                row[m]
+            } else {
+                window.shape((xs[ix] + y2).sqrt())
+            };
+        }
+        if d <= cy {
+            f(cy - d, Some(&row));
+        }
+        if d > 0 && cy + d < ny {
+            f(cy + d, Some(&row));
         }
     }
 }
