@@ -6,11 +6,11 @@
 use std::f64::consts::{PI, TAU};
 use std::path::{Path, PathBuf};
 
-use persson::spectrum::{Convention, Spectrum, Tabulated};
+use persson::spectrum::{Convention, Tabulated};
 use persson::topography::read::{self, Format, ReadOptions, SizeSpec};
 use persson::topography::{
-    analyse, fit_hurst, isotropic_spectrum, profile_spectrum, real_space_stats, AnalysisOptions,
-    Bins, Conditioning, Detrend, Topography, Window,
+    analyse, isotropic_spectrum, profile_spectrum, real_space_stats, AnalysisOptions, Bins,
+    Conditioning, Detrend, Topography, Window,
 };
 
 /// Rounding of sums over ≤ 10⁴ values (relative).
@@ -577,6 +577,39 @@ fn spectrum_matches_naive_dft_parseval_and_stencils() {
 }
 
 #[test]
+fn profile_spectrum_parseval() {
+    // Profiles of a few cosines below the Nyquist index: the 1D spectrum's
+    // sums equal ⟨h²⟩ = Σ a²/2 and ⟨h_x²⟩ = Σ a² q²/2 to rounding.
+    let (n, ny, l) = (32usize, 3usize, 4e-6);
+    let modes = [(1usize, 1e-9), (3, 4e-10), (7, 2e-10), (12, 1e-10)];
+    let h: Vec<f64> = (0..n * ny)
+        .map(|k| {
+            let (i, p) = ((k % n) as f64, (k / n) as f64);
+            modes
+                .iter()
+                .map(|&(m, a)| a * (TAU * m as f64 * i / n as f64 + p).cos())
+                .sum()
+        })
+        .collect();
+    let t = Topography::line_scans(n, ny, l, h, true).unwrap();
+    let none = Conditioning {
+        detrend: Detrend::None,
+        window: Window::None,
+    };
+    let p = profile_spectrum(&t, none, &Bins::default(), None).unwrap();
+    let var: f64 = modes.iter().map(|(_, a)| a * a / 2.0).sum();
+    let slope2: f64 = modes
+        .iter()
+        .map(|&(m, a)| a * a / 2.0 * (TAU * m as f64 / l).powi(2))
+        .sum();
+    assert!((p.rms_height.powi(2) / var - 1.0).abs() < ROUNDING);
+    assert!((p.rms_slope_profile.powi(2) / slope2 - 1.0).abs() < ROUNDING);
+    assert_eq!(p.count.iter().sum::<usize>(), 2 * ny * (n / 2 - 1));
+    let real = real_space_stats(&t, Detrend::None).unwrap();
+    assert!((real.rms_height.powi(2) / var - 1.0).abs() < ROUNDING);
+}
+
+#[test]
 fn csv_reads_back_as_is() {
     let t = Topography::map(32, 24, 3.2e-5, 2.4e-5, sample(32, 24), false).unwrap();
     let r = analyse(&t, &AnalysisOptions::default()).unwrap();
@@ -616,7 +649,8 @@ const GL4: [(f64, f64); 4] = [
 #[cfg(feature = "bem")]
 #[test]
 fn synthesised_surfaces_recover_their_spectrum() {
-    use persson::spectrum::{Amplitude, SelfAffine};
+    use persson::spectrum::{Amplitude, SelfAffine, Spectrum};
+    use persson::topography::fit_hurst;
     /// Bins deviating by more than this many standard errors fail.
     const SIGMAS: f64 = 4.0;
     let (n, size) = (64usize, 1e-4);

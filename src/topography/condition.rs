@@ -199,7 +199,8 @@ pub(crate) fn conditioned_map(
             (Some(tr), Some(w)) => {
                 let c = tr.row(iy);
                 for ix in 0..nx {
-                    dst[ix] = (src[ix] - (c[0] + c[1] * tr.bx[1][ix] + c[2] * tr.bx[2][ix])) * w[ix];
+                    dst[ix] =
+                        (src[ix] - (c[0] + c[1] * tr.bx[1][ix] + c[2] * tr.bx[2][ix])) * w[ix];
                 }
             }
             (Some(tr), None) => {

@@ -75,3 +75,29 @@ pub fn fit_hurst(psd: &Psd, q_lo: f64, q_hi: f64) -> Result<HurstFit> {
         bins: m,
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn exact_power_law() {
+        let h = 0.8;
+        let q: Vec<f64> = (0..12).map(|i| 1e5 * 1.3f64.powi(i)).collect();
+        let psd = Psd {
+            c: q.iter().map(|q| 2e-30 * q.powf(-2.0 * (1.0 + h))).collect(),
+            count: (0..12).map(|i| 4 + 3 * i).collect(),
+            q_min: q[0],
+            q_max: q[11],
+            q,
+            rms_height: 0.0,
+            rms_slope: 0.0,
+            rms_curvature: 0.0,
+        };
+        let f = fit_hurst(&psd, psd.q_min, psd.q_max).unwrap();
+        assert!((f.hurst - h).abs() < 1e-12, "{}", f.hurst);
+        assert!(f.hurst_error < 1e-12);
+        assert_eq!(f.bins, 12);
+        assert!(fit_hurst(&psd, 1e5, 1.5e5).is_err());
+    }
+}

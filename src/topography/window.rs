@@ -151,3 +151,39 @@ pub(crate) fn for_rows(
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// ⟨w²⟩ = 1 after normalisation, to rounding.
+    const ROUNDING: f64 = 1e-13;
+
+    #[test]
+    fn power_is_normalised() {
+        for window in [Window::Hann, Window::Blackman] {
+            for (layout, nx, ny, l) in [
+                (Layout::Map, 24, 17, (2.0, 1.5)),
+                (Layout::Map, 16, 16, (1.0, 1.0)),
+                (Layout::LineScans, 33, 2, (1.0, 0.0)),
+            ] {
+                let mut h = vec![1.0; nx * ny];
+                apply(&mut h, nx, ny, l, layout, window);
+                let ms = h.iter().map(|v| v * v).sum::<f64>() / h.len() as f64;
+                assert!((ms - 1.0).abs() < ROUNDING, "{window:?} {layout:?}: {ms}");
+            }
+        }
+    }
+
+    #[test]
+    fn hann_line_is_scipy_periodic_hann() {
+        // scipy.signal.get_window('hann', 8): 0.5 − 0.5 cos(2πi/8).
+        let w: Vec<f64> = (0..8)
+            .map(|i| Window::Hann.shape((2.0 * i as f64 / 8.0 - 1.0).abs()))
+            .collect();
+        for (i, v) in w.iter().enumerate() {
+            let e = 0.5 - 0.5 * (std::f64::consts::TAU * i as f64 / 8.0).cos();
+            assert!((v - e).abs() < 1e-15, "{i}: {v} vs {e}");
+        }
+    }
+}

@@ -48,7 +48,7 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
         ));
     }
     let dx = (x[n - 1] - x[0]) / (n - 1) as f64;
-    if !(dx > 0.0) {
+    if dx.is_nan() || dx <= 0.0 {
         return Err(Error::parse(
             path,
             0,
