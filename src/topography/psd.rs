@@ -117,7 +117,9 @@ impl Bins {
 #[derive(Debug, Clone, serde::Serialize)]
 #[non_exhaustive]
 pub struct Psd {
-    /// Mean |q| of the modes of each non-empty bin, 1/m (increasing).
+    /// Mean |q| of the modes of each non-empty bin, 1/m (increasing). The
+    /// bins start at `2π/max(Lx, Ly)`, so a non-square map has bins below
+    /// `q_min` (modes along its longer side only).
     pub q: Vec<f64>,
     /// Mean C of the modes of each bin, m⁴ (Persson).
     pub c: Vec<f64>,

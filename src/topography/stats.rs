@@ -44,6 +44,22 @@ pub struct RealSpaceStats {
 ///
 /// # Errors
 /// None for a valid topography; the `Result` is for future stencils.
+///
+/// # Examples
+/// ```
+/// use persson::topography::{real_space_stats, Detrend, Topography};
+/// # fn main() -> persson::Result<()> {
+/// // A tilted plane h = 0.01·x on a 1 µm grid: forward differences are exact,
+/// // h'_rms = 0.01, and the Laplacian vanishes; detrending the plane leaves 0.
+/// let (nx, ny, d) = (8, 5, 1e-6);
+/// let h = (0..nx * ny).map(|k| 0.01 * d * (k % nx) as f64).collect();
+/// let t = Topography::map(nx, ny, nx as f64 * d, ny as f64 * d, h, false)?;
+/// let s = real_space_stats(&t, Detrend::Mean)?;
+/// assert!((s.rms_slope - 0.01).abs() < 1e-15);
+/// assert!(s.rms_curvature.abs() < 1e-6);
+/// assert!(real_space_stats(&t, Detrend::Plane)?.rms_height < 1e-20);
+/// # Ok(()) }
+/// ```
 pub fn real_space_stats(t: &Topography, detrend: Detrend) -> Result<RealSpaceStats> {
     let h = condition::detrended(t, detrend);
     let (nx, ny) = (t.nx(), t.ny());

@@ -100,6 +100,22 @@ pub fn read(path: &Path, options: &ReadOptions) -> Result<Topography> {
 ///
 /// # Errors
 /// As [`read()`], without the I/O errors.
+///
+/// # Examples
+/// ```
+/// use std::path::Path;
+/// use persson::topography::read::{from_bytes, ReadOptions, SizeSpec};
+/// # fn main() -> persson::Result<()> {
+/// let text = b"0 1 2\n1 2 4\n";
+/// let o = ReadOptions { size: Some(SizeSpec::PixelSize(2e-6)), ..Default::default() };
+/// let t = from_bytes(Path::new("map.txt"), text, &o)?;
+/// assert_eq!(t.shape(), [2, 3]);
+/// assert_eq!((t.lx(), t.ly()), (6e-6, 4e-6));
+/// // A constant map is refused, naming the file.
+/// let e = from_bytes(Path::new("flat.txt"), b"1 1 1\n1 1 1\n", &o).unwrap_err();
+/// assert!(e.to_string().starts_with("flat.txt") && e.to_string().contains("not all equal"));
+/// # Ok(()) }
+/// ```
 pub fn from_bytes(path: &Path, bytes: &[u8], options: &ReadOptions) -> Result<Topography> {
     let format = options.format.unwrap_or_else(|| detect(path, bytes));
     let raw = match format {
