@@ -964,6 +964,41 @@ const B_C_ST: [f64; 18] = [
     3.041754199386069e-29,
     1.8194769254850796e-29,
 ];
+// map A rows as line scans, no detrending, window hann: C1D_ST = 2π C1D_Persson
+const A_PROFILE_Q: [f64; 15] = [
+    157079.63267948967,
+    314159.26535897935,
+    471238.898038469,
+    628318.5307179587,
+    785398.1633974484,
+    942477.796076938,
+    1099557.4287564277,
+    1256637.0614359174,
+    1413716.694115407,
+    1570796.3267948967,
+    1806415.7758141314,
+    2042035.2248333658,
+    2277654.6738526,
+    2591813.9392115795,
+    2905973.204570559,
+];
+const A_PROFILE_C1D_ST: [f64; 15] = [
+    2.2702909750486756e-21,
+    5.586528913566652e-23,
+    7.543996161084064e-24,
+    6.891806350242156e-24,
+    2.450373405364126e-24,
+    1.215027406232345e-24,
+    9.052926752380713e-25,
+    4.139555183004971e-25,
+    1.438580837870776e-24,
+    1.0455745442087236e-24,
+    7.563012728717515e-25,
+    6.695922859065378e-25,
+    6.945232580837209e-25,
+    4.25873118039518e-25,
+    4.491956677123403e-25,
+];
 
 fn reference_map(name: &str, periodic: bool, pixel_size: f64) -> Topography {
     let p = Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -1096,6 +1131,29 @@ fn surface_topography_spectra() {
         }
         eprintln!(
             "{name}: worst relative difference of C per bin against SurfaceTopography {worst:.1e}"
+        );
+    }
+}
+
+#[test]
+fn surface_topography_profile_spectrum() {
+    // The rows of map A as 32 line scans of 40 points, Hann window along x.
+    let t = reference_map("map_a.npy", false, 1e-6);
+    let lines =
+        Topography::line_scans(t.nx(), t.ny(), t.lx(), t.heights().to_vec(), false).unwrap();
+    let cond = Conditioning {
+        detrend: Detrend::None,
+        window: Window::Hann,
+    };
+    let p = profile_spectrum(&lines, cond, &Bins::default(), None).unwrap();
+    assert_eq!(p.q.len(), A_PROFILE_Q.len());
+    for b in 0..p.q.len() {
+        assert_rel(&format!("profile q[{b}]"), p.q[b], A_PROFILE_Q[b], ROUNDING);
+        assert_rel(
+            &format!("profile C1D[{b}]"),
+            p.c_1d[b] * TAU,
+            A_PROFILE_C1D_ST[b],
+            ST_SPECTRUM,
         );
     }
 }

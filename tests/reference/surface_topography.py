@@ -70,6 +70,18 @@ def report(tag, h, sizes, periodic, window):
     print(rust_array(f"{tag}_C_ST", np.ma.getdata(c)[keep]))
 
 
+def report_profiles(tag, h, pixel):
+    # The rows of the map as line scans: SurfaceTopography's profiles run
+    # along its first axis, so pass the transpose. No detrending, Hann
+    # window along the profiles (scipy's periodic Hann, mean square 1).
+    t = Topography(h.T.copy(), physical_sizes=(h.shape[1] * pixel, h.shape[0] * pixel), periodic=False)
+    q, c = t.power_spectrum_from_profile(window="hann")
+    keep = ~np.ma.getmaskarray(c)
+    print(f"// map {tag} rows as line scans, no detrending, window hann: C1D_ST = 2π C1D_Persson")
+    print(rust_array(f"{tag}_PROFILE_Q", np.ma.getdata(q)[keep]))
+    print(rust_array(f"{tag}_PROFILE_C1D_ST", np.ma.getdata(c)[keep]))
+
+
 def main():
     print(f"// SurfaceTopography {SurfaceTopography.__version__}, numpy {np.__version__}")
     os.makedirs(os.path.join(HERE, "data"), exist_ok=True)
@@ -79,6 +91,7 @@ def main():
     np.save(os.path.join(HERE, "data", "map_b.npy"), b)
     report("A", a, sa, False, "hann")
     report("B", b, sb, True, None)
+    report_profiles("A", a, 1e-6)
 
 
 if __name__ == "__main__":
