@@ -170,6 +170,8 @@ pub mod spectrum;
 pub mod stress;
 pub mod table;
 pub mod theory;
+#[cfg(feature = "topography")]
+pub mod topography;
 pub mod validation;
 
 pub use error::{Error, Result};

@@ -1,0 +1,494 @@
+//! Power spectra of maps (radial average) and of line scans (1D, converted).
+//!
+//! # Formula (maps)
+//! With the conditioned heights h (detrended, windowed with `⟨w²⟩ = 1`) and
+//! the unnormalised DFT `ĥ(q) = Σ_x h(x) e^{−i q·x}`, q = 2π(k_x/Lx, k_y/Ly):
+//! ```text
+//! C(q) = Lx·Ly / ((2π)² N²) · |ĥ(q)|²                     [m⁴], N = nx·ny
+//! C̄_b  = Σ_{q ∈ b} C(q) / n_b,   q̄_b = Σ_{q ∈ b} |q| / n_b   (bin b, n_b modes)
+//! ```
+//! Every mode of the full Fourier plane counts once (a half-spectrum mode of
+//! the real transform stands for itself and its conjugate). Bins are the
+//! log grid of SurfaceTopography's `make_grid('log')`: edges equally spaced
+//! in log₁₀ q from `log₁₀ q_lo − 0.01` to `log₁₀ q_hi + 0.01`, with
+//! `⌈(log₁₀(q_hi/q_lo) + 1)·bins_per_decade⌉` edges, `q_lo = 2π/max(Lx, Ly)`,
+//! `q_hi` the Nyquist wavevector `π·min(nx/Lx, ny/Ly)` or the given q_max;
+//! a mode belongs to bin b when `e_b < |q| ≤ e_{b+1}`. Empty bins are dropped.
+//!
+//! # Formula (line scans)
+//! For each profile of n points and length L, with k = 1 … ⌊n/2⌋ − 1,
+//! ```text
+//! C_1D(q_k) = L / (2π n²) · |ĥ_k|²                         [m³]
+//! ```
+//! (Persson's 1D normalisation, `⟨h²⟩ = Σ_{k≠0} C_1D Δq`), averaged over the
+//! profiles, binned as above from `2π/L` to `π n/L`, and converted to the
+//! isotropic C(q) by [`crate::spectrum::Convention::Profile1D`].
+//!
+//! # Memory and time
+//! The conditioned copy of the heights (N doubles) and the half spectrum of
+//! the row transforms (≈ N doubles) are the only large buffers; the column
+//! transforms run in blocks that stay in cache and are binned at once, the
+//! full spectrum is never stored. Measured on a 4096² map: see
+//! `examples/topography_speed.rs`.
+//!
+//! # References
+//! Jacobs, Junge & Pastewka, Surf. Topogr.: Metrol. Prop. 5, 013001 (2017);
+//! Persson, Bucher & Chiaia, Phys. Rev. B 65, 184106 (2002).
+
+use std::path::Path;
+
+use realfft::RealFftPlanner;
+use rustfft::num_complex::Complex64;
+use rustfft::FftPlanner;
+
+use super::{condition, window, Conditioning, Layout, Topography};
+use crate::error::{check, Error, Result};
+use crate::spectrum::{Convention, Tabulated};
+
+/// Bytes of a block of spectrum columns transformed together (stays in L2).
+const BLOCK_BYTES: usize = 1 << 18;
+
+/// How the radial average is binned.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Bins {
+    /// SurfaceTopography's log grid with this many edges per decade (module docs).
+    Log {
+        /// Edges per decade (10 by default).
+        per_decade: usize,
+    },
+    /// Explicit, strictly increasing bin edges, 1/m.
+    Edges(Vec<f64>),
+}
+
+impl Default for Bins {
+    fn default() -> Self {
+        Bins::Log { per_decade: 10 }
+    }
+}
+
+impl Bins {
+    /// The bin edges for the band `[q_lo, q_hi]`.
+    ///
+    /// # Errors
+    /// Fewer than two edges, edges not strictly increasing and positive,
+    /// `per_decade` zero.
+    pub fn edges(&self, q_lo: f64, q_hi: f64) -> Result<Vec<f64>> {
+        match self {
+            Bins::Edges(e) => {
+                if e.len() < 2 {
+                    return Err(Error::invalid(
+                        "number of bin edges",
+                        e.len() as f64,
+                        "at least 2",
+                    ));
+                }
+                for (i, w) in e.windows(2).enumerate() {
+                    if !(w[0] > 0.0 && w[1] > w[0] && w[1].is_finite()) {
+                        return Err(Error::invalid(
+                            format!("bin edge[{}]", i + 1),
+                            w[1],
+                            "finite, positive and strictly increasing",
+                        ));
+                    }
+                }
+                Ok(e.clone())
+            }
+            &Bins::Log { per_decade } => {
+                if per_decade == 0 {
+                    return Err(Error::invalid("bins per decade", 0.0, "at least 1"));
+                }
+                let (a, b) = (q_lo.log10() - 0.01, q_hi.log10() + 0.01);
+                let m = ((q_hi.log10() - q_lo.log10() + 1.0) * per_decade as f64).ceil() as usize;
+                let m = m.max(2);
+                // numpy.linspace: start + i·step, the last point exactly `b`.
+                let step = (b - a) / (m - 1) as f64;
+                Ok((0..m)
+                    .map(|i| {
+                        let x = if i == m - 1 { b } else { a + i as f64 * step };
+                        10f64.powf(x)
+                    })
+                    .collect())
+            }
+        }
+    }
+}
+
+/// A binned isotropic spectrum in Persson's normalisation.
+#[derive(Debug, Clone, serde::Serialize)]
+#[non_exhaustive]
+pub struct Psd {
+    /// Mean |q| of the modes of each non-empty bin, 1/m (increasing). The
+    /// bins start at `2π/max(Lx, Ly)`, so a non-square map has bins below
+    /// `q_min` (modes along its longer side only).
+    pub q: Vec<f64>,
+    /// Mean C of the modes of each bin, m⁴ (Persson).
+    pub c: Vec<f64>,
+    /// Number of Fourier modes (full plane) in each bin; for line scans the
+    /// number of 1D modes (±q) over all profiles.
+    pub count: Vec<usize>,
+    /// Lower end of the reliable band, 1/m.
+    pub q_min: f64,
+    /// Upper end of the band (Nyquist or the given q_max), 1/m.
+    pub q_max: f64,
+    /// `sqrt(Σ C Δq_x Δq_y)` over the binned modes, m (maps); for line scans
+    /// `sqrt(Σ C_1D Δq)` over ±q.
+    pub rms_height: f64,
+    /// `sqrt(Σ |q|² C Δq_x Δq_y)` over the binned modes (line scans:
+    /// `√2 · sqrt(Σ q² C_1D Δq)`, the 2D rms slope of an isotropic surface).
+    pub rms_slope: f64,
+    /// `sqrt(Σ |q|⁴ C Δq_x Δq_y)`, 1/m (line scans: `√(8/3) · sqrt(Σ q⁴ C_1D Δq)`).
+    pub rms_curvature: f64,
+}
+
+impl Psd {
+    /// The spectrum as the crate's [`Tabulated`] (log-log interpolated between
+    /// the bins), so that every calculation can use it.
+    ///
+    /// # Errors
+    /// Fewer than two bins, or a bin with C = 0 (a spectrum that vanishes
+    /// somewhere in the band cannot be interpolated in log-log).
+    pub fn to_tabulated(&self) -> Result<Tabulated> {
+        let pts: Vec<(f64, f64)> = self.q.iter().copied().zip(self.c.iter().copied()).collect();
+        Tabulated::new(&pts)
+    }
+
+    /// The spectrum as CSV text, `q,c` in Persson's normalisation with the
+    /// shortest round-trip numbers, which [`Tabulated::from_csv`] with
+    /// [`Convention::Persson`] reads back to the same points. Comment lines
+    /// (`#`) state the convention and the band.
+    pub fn to_csv(&self) -> String {
+        use crate::table::csv_number as num;
+        let mut s = String::new();
+        s.push_str(
+            "# isotropic power spectrum, Persson's normalisation: q (1/m, angular), c (m^4)\n",
+        );
+        s.push_str(&format!(
+            "# band q_min = {}, q_max = {}\n",
+            num(self.q_min),
+            num(self.q_max)
+        ));
+        s.push_str("q,c\n");
+        for (q, c) in self.q.iter().zip(&self.c) {
+            s.push_str(&format!("{},{}\n", num(*q), num(*c)));
+        }
+        s
+    }
+
+    /// Write [`Psd::to_csv`] to `path` atomically.
+    ///
+    /// # Errors
+    /// [`Error::Io`] naming the file.
+    pub fn write_csv(&self, path: &Path) -> Result<()> {
+        crate::io::write_atomic(path, self.to_csv().as_bytes())
+    }
+}
+
+/// Binning accumulator.
+struct Binner {
+    edges: Vec<f64>,
+    w: Vec<f64>,
+    sq: Vec<f64>,
+    sc: Vec<f64>,
+    m: [f64; 3],
+}
+
+impl Binner {
+    fn new(edges: Vec<f64>) -> Self {
+        let n = edges.len() - 1;
+        Binner {
+            edges,
+            w: vec![0.0; n],
+            sq: vec![0.0; n],
+            sc: vec![0.0; n],
+            m: [0.0; 3],
+        }
+    }
+
+    #[inline]
+    fn add(&mut self, q: f64, c: f64, weight: f64) {
+        let i = self.edges.partition_point(|&e| e < q);
+        if i == 0 || i >= self.edges.len() {
+            return;
+        }
+        let b = i - 1;
+        self.w[b] += weight;
+        self.sq[b] += weight * q;
+        self.sc[b] += weight * c;
+        let wc = weight * c;
+        let q2 = q * q;
+        self.m[0] += wc;
+        self.m[1] += wc * q2;
+        self.m[2] += wc * q2 * q2;
+    }
+
+    /// `(q̄, C̄, count)` of the non-empty bins.
+    fn finish(&self) -> (Vec<f64>, Vec<f64>, Vec<usize>) {
+        let mut out = (Vec::new(), Vec::new(), Vec::new());
+        for b in 0..self.w.len() {
+            if self.w[b] > 0.0 {
+                out.0.push(self.sq[b] / self.w[b]);
+                out.1.push(self.sc[b] / self.w[b]);
+                out.2.push(self.w[b].round() as usize);
+            }
+        }
+        out
+    }
+}
+
+fn band_max(nyquist: f64, q_max: Option<f64>, q_min: f64) -> Result<f64> {
+    match q_max {
+        None => Ok(nyquist),
+        Some(q) => {
+            check::positive("q_max", q)?;
+            if q <= q_min {
+                return Err(Error::invalid(
+                    "q_max",
+                    q,
+                    format!("greater than q_min = 2π/L = {}", crate::error::num(q_min)),
+                ));
+            }
+            Ok(q)
+        }
+    }
+}
+
+fn fft_error(e: impl std::fmt::Display) -> Error {
+    Error::Inconsistent {
+        name: "fft".into(),
+        requirement: format!("internal FFT error: {e}"),
+    }
+}
+
+/// The isotropic spectrum of a 2D map by radial averaging (module docs).
+///
+/// # Errors
+/// A line-scan topography (use [`profile_spectrum`]); `q_max` not above the
+/// band's lower end; bad bins; no mode in any bin.
+///
+/// # Examples
+/// ```
+/// use persson::topography::{isotropic_spectrum, Bins, Conditioning, Detrend, Topography, Window};
+/// # fn main() -> persson::Result<()> {
+/// let n = 16;
+/// let h: Vec<f64> = (0..n * n).map(|k| ((k * 7919) % 13) as f64 * 1e-9).collect();
+/// let t = Topography::map(n, n, 1e-5, 1e-5, h.clone(), true)?;
+/// let none = Conditioning { detrend: Detrend::Mean, window: Window::None };
+/// // Every mode: bins up to the corner of the Fourier grid.
+/// let corner = std::f64::consts::PI * 2f64.sqrt() / 1e-5 * n as f64;
+/// let psd = isotropic_spectrum(&t, none, &Bins::default(), Some(corner))?;
+/// let mean = h.iter().sum::<f64>() / h.len() as f64;
+/// let var = h.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / h.len() as f64;
+/// assert!((psd.rms_height.powi(2) - var).abs() < 1e-12 * var);
+/// # Ok(()) }
+/// ```
+pub fn isotropic_spectrum(
+    t: &Topography,
+    conditioning: Conditioning,
+    bins: &Bins,
+    q_max: Option<f64>,
+) -> Result<Psd> {
+    use std::f64::consts::TAU;
+    if t.layout() != Layout::Map {
+        return Err(Error::Inconsistent {
+            name: "layout".into(),
+            requirement: "a 2D map for the radial average (line scans: profile_spectrum)".into(),
+        });
+    }
+    let (nx, ny) = (t.nx(), t.ny());
+    let (lx, ly) = (t.lx(), t.ly());
+    let (q_min, nyquist) = t.band();
+    let q_hi = band_max(nyquist, q_max, q_min)?;
+    let q_lo = (TAU / lx).min(TAU / ly);
+    let mut binner = Binner::new(bins.edges(q_lo, q_hi)?);
+
+    let (mut h, mean_w2) = condition::conditioned_map(t, conditioning.detrend, conditioning.window);
+
+    // Row transforms into the half spectrum, ny × nc row-major.
+    let nc = nx / 2 + 1;
+    let mut rp = RealFftPlanner::<f64>::new();
+    let r2c = rp.plan_fft_forward(nx);
+    let mut spec = vec![Complex64::new(0.0, 0.0); ny * nc];
+    let mut rscratch = r2c.make_scratch_vec();
+    for (row, out) in h.chunks_exact_mut(nx).zip(spec.chunks_exact_mut(nc)) {
+        r2c.process_with_scratch(row, out, &mut rscratch)
+            .map_err(fft_error)?;
+    }
+    drop(h);
+
+    // Column transforms in blocks, binned at once.
+    let fft = FftPlanner::<f64>::new().plan_fft_forward(ny);
+    let mut scratch = vec![Complex64::new(0.0, 0.0); fft.get_inplace_scratch_len()];
+    let width = (BLOCK_BYTES / (16 * ny)).clamp(1, nc);
+    let mut block = vec![Complex64::new(0.0, 0.0); width * ny];
+    let factor = lx * ly / (TAU * TAU * (nx as f64).powi(2) * (ny as f64).powi(2) * mean_w2);
+    // q as SurfaceTopography computes it: (2π n/L)/n · k.
+    let (dqx, dqy) = (
+        TAU * nx as f64 / lx / nx as f64,
+        TAU * ny as f64 / ly / ny as f64,
+    );
+    let ky2: Vec<f64> = (0..ny)
+        .map(|iy| {
+            let k = if iy <= ny / 2 { iy } else { ny - iy } as f64;
+            (dqy * k).powi(2)
+        })
+        .collect();
+    let mut c0 = 0;
+    while c0 < nc {
+        let w = width.min(nc - c0);
+        for (iy, row) in spec.chunks_exact(nc).enumerate() {
+            for c in 0..w {
+                block[c * ny + iy] = row[c0 + c];
+            }
+        }
+        fft.process_with_scratch(&mut block[..w * ny], &mut scratch);
+        for c in 0..w {
+            let kx = c0 + c;
+            // A half-spectrum column stands for itself and its conjugate,
+            // except k_x = 0 and (even nx) the Nyquist column.
+            let weight = if kx == 0 || 2 * kx == nx { 1.0 } else { 2.0 };
+            let qx2 = (dqx * kx as f64).powi(2);
+            for (iy, z) in block[c * ny..(c + 1) * ny].iter().enumerate() {
+                if kx == 0 && iy == 0 {
+                    continue;
+                }
+                let q = (qx2 + ky2[iy]).sqrt();
+                binner.add(q, factor * z.norm_sqr(), weight);
+            }
+        }
+        c0 += w;
+    }
+    let (q, c, count) = binner.finish();
+    if q.is_empty() {
+        return Err(Error::Inconsistent {
+            name: "bins".into(),
+            requirement: "at least one Fourier mode in the bins".into(),
+        });
+    }
+    let cell = dqx * dqy;
+    Ok(Psd {
+        q,
+        c,
+        count,
+        q_min,
+        q_max: q_hi,
+        rms_height: (binner.m[0] * cell).sqrt(),
+        rms_slope: (binner.m[1] * cell).sqrt(),
+        rms_curvature: (binner.m[2] * cell).sqrt(),
+    })
+}
+
+/// The averaged 1D spectrum of line scans (Persson's 1D normalisation).
+#[derive(Debug, Clone, serde::Serialize)]
+#[non_exhaustive]
+pub struct ProfileSpectrum {
+    /// Mean q of each non-empty bin, 1/m.
+    pub q: Vec<f64>,
+    /// Mean C_1D of each bin, m³.
+    pub c_1d: Vec<f64>,
+    /// Number of 1D modes (±q) over all profiles in each bin.
+    pub count: Vec<usize>,
+    /// Lower end of the band, 2π/L, 1/m.
+    pub q_min: f64,
+    /// Upper end of the band, 1/m.
+    pub q_max: f64,
+    /// `sqrt(Σ C_1D Δq)` over ±q of the binned modes, m.
+    pub rms_height: f64,
+    /// rms slope along the profiles `sqrt(Σ q² C_1D Δq)`.
+    pub rms_slope_profile: f64,
+    /// rms second derivative along the profiles `sqrt(Σ q⁴ C_1D Δq)`, 1/m.
+    pub rms_curvature_profile: f64,
+}
+
+impl ProfileSpectrum {
+    /// The isotropic 2D spectrum of a surface whose profiles these are,
+    /// through [`Convention::Profile1D`]; the statistics become the 2D ones of
+    /// an isotropic surface, `⟨|∇h|²⟩ = 2⟨h_x²⟩` and `⟨(∇²h)²⟩ = (8/3)⟨h_xx²⟩`.
+    ///
+    /// # Errors
+    /// The conversion's: a bin where the 1D spectrum does not decay faster
+    /// than 1/q (no isotropic counterpart).
+    pub fn to_isotropic(&self) -> Result<Psd> {
+        let pts: Vec<(f64, f64)> = self
+            .q
+            .iter()
+            .copied()
+            .zip(self.c_1d.iter().copied())
+            .collect();
+        let c2 = Convention::Profile1D.to_persson(&pts)?;
+        Ok(Psd {
+            q: self.q.clone(),
+            c: c2.into_iter().map(|p| p.1).collect(),
+            count: self.count.clone(),
+            q_min: self.q_min,
+            q_max: self.q_max,
+            rms_height: self.rms_height,
+            rms_slope: self.rms_slope_profile * 2f64.sqrt(),
+            rms_curvature: self.rms_curvature_profile * (8.0f64 / 3.0).sqrt(),
+        })
+    }
+}
+
+/// The 1D spectrum of the profiles of a topography (line scans, or the rows
+/// of a map), averaged over the profiles (module docs).
+///
+/// # Errors
+/// `q_max` not above `2π/L`; bad bins; no mode in any bin.
+pub fn profile_spectrum(
+    t: &Topography,
+    conditioning: Conditioning,
+    bins: &Bins,
+    q_max: Option<f64>,
+) -> Result<ProfileSpectrum> {
+    use std::f64::consts::{PI, TAU};
+    let (nx, ny, lx) = (t.nx(), t.ny(), t.lx());
+    let dq = TAU / lx;
+    let q_hi = band_max(PI * nx as f64 / lx, q_max, dq)?;
+    let mut binner = Binner::new(bins.edges(dq, q_hi)?);
+    let mut h = t.heights().to_vec();
+    condition::detrend_in_place(&mut h, nx, ny, Layout::LineScans, conditioning.detrend);
+    window::apply(
+        &mut h,
+        nx,
+        ny,
+        (lx, 0.0),
+        Layout::LineScans,
+        conditioning.window,
+    );
+    let mut rp = RealFftPlanner::<f64>::new();
+    let r2c = rp.plan_fft_forward(nx);
+    let mut out = r2c.make_output_vec();
+    let mut scratch = r2c.make_scratch_vec();
+    let mut acc = vec![0.0; out.len()];
+    for row in h.chunks_exact_mut(nx) {
+        r2c.process_with_scratch(row, &mut out, &mut scratch)
+            .map_err(fft_error)?;
+        for (a, z) in acc.iter_mut().zip(&out) {
+            *a += z.norm_sqr();
+        }
+    }
+    let factor = lx / (TAU * (nx as f64).powi(2) * ny as f64);
+    // k = 1 … ⌊n/2⌋ − 1 (SurfaceTopography's `arange(nx // 2)` without q = 0),
+    // each standing for ±q: weight 2 per profile.
+    for (k, a) in acc.iter().enumerate().take(nx / 2).skip(1) {
+        binner.add(dq * k as f64, factor * a, 2.0 * ny as f64);
+    }
+    let (q, c_1d, count) = binner.finish();
+    if q.is_empty() {
+        return Err(Error::Inconsistent {
+            name: "bins".into(),
+            requirement: "at least one Fourier mode in the bins".into(),
+        });
+    }
+    // The accumulated weights count profiles too: divide them out.
+    let per = dq / ny as f64;
+    Ok(ProfileSpectrum {
+        q,
+        c_1d,
+        count,
+        q_min: dq,
+        q_max: q_hi,
+        rms_height: (binner.m[0] * per).sqrt(),
+        rms_slope_profile: (binner.m[1] * per).sqrt(),
+        rms_curvature_profile: (binner.m[2] * per).sqrt(),
+    })
+}
