@@ -15,7 +15,7 @@ fn extrapolation_recovers_a_synthetic_law() {
     assert!((fitted.alpha - 0.7).abs() < EXACT, "{fitted:?}");
     assert!((fitted.value - 0.3).abs() < EXACT, "{fitted:?}");
     let fixed = extrapolate(&n, &a, Some(DEFAULT_ALPHA)).unwrap();
-    assert!((fixed.value - 0.3).abs() < EXACT && (fixed.c - 0.5).abs() < EXACT);
+    assert!((fixed.value - 0.3).abs() < EXACT && (fixed.coefficient - 0.5).abs() < EXACT);
     // three grids, two parameters: a standard error is estimated, and the
     // exact law leaves none; the step from the finest grid is c N^−α
     assert!(fixed.standard_error.unwrap() < EXACT);

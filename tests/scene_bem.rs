@@ -70,9 +70,9 @@ mod bem {
             assert!((row.energy_error - direct.energy_error).abs() <= SAME_SOLVE_TOL);
         }
         // Molinari's lecture, Table 1, 64²: η = 1.40e-2 (ours must not be worse).
-        assert_eq!(rows[1].reference_energy_error, Some(1.40e-2));
+        assert_eq!(rows[1].energy_error_published, Some(1.40e-2));
         assert!(rows[1].energy_error < 1.40e-2, "{}", rows[1].energy_error);
-        assert_eq!(rows[0].reference_energy_error, None);
+        assert_eq!(rows[0].energy_error_published, None);
         let p = parse(
             r#"{"schema": 1, "outputs": {"bem_hertz": {"grids": [32], "boundary": "periodic"}}}"#,
         )
@@ -83,7 +83,7 @@ mod bem {
         .unwrap();
         assert_eq!(p.boundary.name(), "periodic");
         assert_eq!(
-            p.rows[0].reference_energy_error, None,
+            p.rows[0].energy_error_published, None,
             "the lecture lists the free boundary only"
         );
     }

@@ -200,7 +200,7 @@ pub struct HertzReport {
     /// `δ − δ_ex`, so it mostly measures how Σ(p − p_ex) cancels. Measured at
     /// the [`HertzCase::new`] defaults, 64² to 1024²: 6–13× below η
     /// (examples/hertz_eta_study.rs).
-    pub energy_error_lecture: Option<f64>,
+    pub energy_error_displacement: Option<f64>,
     /// Contact radius a from the fit of p² = p₀²(1 − r²/a²).
     pub contact_radius: f64,
     /// |a_fit − a| / a.
@@ -279,7 +279,7 @@ pub fn validate_observed(
         grid: case.grid,
         boundary: case.boundary,
         energy_error: (num.max(0.0) / den).sqrt(),
-        energy_error_lecture: lecture,
+        energy_error_displacement: lecture,
         contact_radius: a,
         contact_radius_error: (a - case.contact_radius).abs() / case.contact_radius,
         peak_pressure: p0,

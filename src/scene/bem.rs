@@ -36,7 +36,7 @@ pub fn bem_hertz(h: &BemHertzOutput) -> Result<BemHertzReport> {
             Ok(BemHertzRow {
                 grid: n,
                 energy_error: r.energy_error,
-                reference_energy_error: reference,
+                energy_error_published: reference,
                 contact_radius_error: r.contact_radius_error,
                 peak_pressure_error: r.peak_pressure_error,
                 contact_fraction: r.contact_fraction,

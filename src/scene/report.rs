@@ -583,7 +583,7 @@ pub struct BemHertzRow {
     pub energy_error: f64,
     /// η of Molinari's lecture, Table 1 (free boundary, where listed).
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub reference_energy_error: Option<f64>,
+    pub energy_error_published: Option<f64>,
     /// Relative error of the fitted contact radius.
     pub contact_radius_error: f64,
     /// Relative error of the fitted peak pressure.
@@ -620,7 +620,7 @@ impl Tabulate for BemHertzReport {
         )
         .column("grid", "N")
         .column_digits("energy_error", "η", 4)
-        .column_digits("reference_energy_error", "η (lecture)", 4)
+        .column_digits("energy_error_published", "η (lecture)", 4)
         .column_digits("contact_radius_error", "a error", 3)
         .column_digits("peak_pressure_error", "σH error", 3)
         .column("contact_fraction", "A/A0")
@@ -630,7 +630,7 @@ impl Tabulate for BemHertzReport {
             t.push(vec![
                 r.grid.into(),
                 r.energy_error.into(),
-                r.reference_energy_error.into(),
+                r.energy_error_published.into(),
                 r.contact_radius_error.into(),
                 r.peak_pressure_error.into(),
                 r.contact_fraction.into(),

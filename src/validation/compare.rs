@@ -309,7 +309,7 @@ pub fn compare(
             extrapolation_step: c.fit.extrapolation_step,
             seed_scatter: c.seed_scatter,
             alpha: c.fit.alpha,
-            c: c.fit.c,
+            coefficient: c.fit.coefficient,
         })
         .collect();
     Ok(Comparison {

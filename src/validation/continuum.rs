@@ -24,7 +24,7 @@ pub struct Extrapolation {
     /// The exponent α used (given, or fitted).
     pub alpha: f64,
     /// The amplitude c of the correction.
-    pub c: f64,
+    pub coefficient: f64,
 }
 
 impl Extrapolation {
@@ -104,7 +104,7 @@ pub fn extrapolate(n: &[f64], a: &[f64], alpha: Option<f64>) -> Result<Extrapola
         standard_error,
         extrapolation_step: (value - finest).abs(),
         alpha,
-        c,
+        coefficient: c,
     })
 }
 

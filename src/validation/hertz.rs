@@ -36,10 +36,10 @@ pub struct HertzValidation {
     pub energy_error: f64,
     /// The lecture's own measure with the exact displacement (free boundary only).
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub energy_error_lecture: Option<f64>,
+    pub energy_error_displacement: Option<f64>,
     /// η listed in the lecture's Table 1 for this grid (free boundary), if any.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub energy_error_table: Option<f64>,
+    pub energy_error_published: Option<f64>,
     /// Contact radius from the fit of p² = p₀²(1 − r²/a²).
     pub contact_radius: f64,
     /// |a_fit − a| / a.
@@ -81,8 +81,8 @@ pub fn hertz(
         hertz_peak_pressure: case.peak_pressure(),
         nominal_pressure: case.mean_pressure(),
         energy_error: r.energy_error,
-        energy_error_lecture: r.energy_error_lecture,
-        energy_error_table: match case.boundary {
+        energy_error_displacement: r.energy_error_displacement,
+        energy_error_published: match case.boundary {
             Boundary::Free => closed::lecture_eta(case.grid),
             Boundary::Periodic => None,
         },
@@ -112,12 +112,16 @@ impl Tabulate for HertzValidation {
         )
         .scalar("tolerance", "tolerance ε", self.tolerance)
         .scalar("energy_error", "η (energy-norm error)", self.energy_error);
-        if let Some(l) = self.energy_error_table {
-            t = t.scalar("energy_error_table", "η in Molinari's lecture, Table 1", l);
-        }
-        if let Some(l) = self.energy_error_lecture {
+        if let Some(l) = self.energy_error_published {
             t = t.scalar(
-                "energy_error_lecture",
+                "energy_error_published",
+                "η in Molinari's lecture, Table 1",
+                l,
+            );
+        }
+        if let Some(l) = self.energy_error_displacement {
+            t = t.scalar(
+                "energy_error_displacement",
                 "η with the exact displacement (the lecture's measure)",
                 l,
             );

@@ -142,7 +142,7 @@ pub struct ContinuumPoint {
     /// Exponent α used.
     pub alpha: f64,
     /// Amplitude c of the correction c N^−α.
-    pub c: f64,
+    pub coefficient: f64,
 }
 
 /// A fit, or why there is none.
