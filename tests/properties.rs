@@ -39,36 +39,59 @@ fn self_affine() -> impl Strategy<Value = SelfAffine> {
 
 /// ∫_a^b q³ C(q) dq / C_r for the self-affine spectrum (plateau C_r below
 /// q_r, C_r (q/q_r)^{−2(1+H)} above), without cancellation: b^k − a^k =
-/// a^k expm1(k ln(b/a)).
-fn m3(s: &SelfAffine, a: f64, b: f64) -> f64 {
+/// a^k expm1(k ln(b/a)). The band is given by `ln_ba` = ln(b/a) itself: for
+/// b = ζ a close to a, rounding b = ζ·a alone moves ln(b/a) by 1e-16, which
+/// is 1e-11 of ln ζ at ζ − 1 = 1e-5.
+fn m3(s: &SelfAffine, a: f64, ln_ba: f64) -> f64 {
     let (q_r, h) = (s.q_r(), s.hurst());
+    let ln_ra = (q_r / a).ln();
     let mut total = 0.0;
-    let hi = b.min(q_r);
-    if hi > a {
-        total += a.powi(4) * (4.0 * (hi / a).ln()).exp_m1() / 4.0;
+    // Plateau [a, min(b, q_r)].
+    let ln_hi = ln_ba.min(ln_ra);
+    if ln_hi > 0.0 {
+        total += a.powi(4) * (4.0 * ln_hi).exp_m1() / 4.0;
     }
-    let lo = a.max(q_r);
-    if b > lo {
+    // Power law [max(a, q_r), b].
+    let ln_lo = ln_ra.max(0.0);
+    if ln_ba > ln_lo {
         let e = 2.0 - 2.0 * h;
-        total += q_r.powf(2.0 + 2.0 * h) * lo.powf(e) * (e * (b / lo).ln()).exp_m1() / e;
+        let lo = a.max(q_r);
+        total += q_r.powf(2.0 + 2.0 * h) * lo.powf(e) * (e * (ln_ba - ln_lo)).exp_m1() / e;
     }
     total
+}
+
+/// The relative change of G(ζ) when the band's end q = ζ q_l moves by the
+/// ulp the crate rounds it to: d ln G / d ln q ≤ 4/ln ζ for ζ near 1 (G grows
+/// as the band's width ln ζ), so 2 ulps of q cost 8ε/ln ζ of G. The problem
+/// itself is that ill-conditioned near ζ = 1; away from it the term is below
+/// [`CLAIM`].
+fn zeta_rounding(zeta: f64) -> f64 {
+    if zeta > 1.0 {
+        8.0 * f64::EPSILON / zeta.ln()
+    } else {
+        0.0
+    }
 }
 
 /// G(ζ) = (π/4)(E*/σ0)² ∫_{q_l}^{ζ q_l} q³C dq with E* = 1 and C_r fixed by
 /// the rms slope: h'² = 2π ∫_{q_l}^{q_s} q³C dq.
 fn g_closed_form(s: &SelfAffine, zeta: f64, pressure: f64) -> f64 {
     let slope = s.rms_slope(s.q_min(), s.q_max()).unwrap().value;
-    let b = (zeta * s.q_min()).min(s.q_max());
-    slope * slope * m3(s, s.q_min(), b) / (8.0 * pressure * pressure * m3(s, s.q_min(), s.q_max()))
+    let full = (s.q_max() / s.q_min()).ln();
+    slope * slope * m3(s, s.q_min(), zeta.ln().min(full))
+        / (8.0 * pressure * pressure * m3(s, s.q_min(), full))
 }
 
 /// (erf x, erfc x, ln erfc x), x ≥ 0, independent of the crate: the Taylor
-/// series below 2 (terms at most ~10 there: no digits lost to cancellation
-/// beyond 1e-15), Laplace's continued fraction for erfc above.
+/// series below 1 (terms at most ~1 there, and erfc = 1 − erf ≥ 0.157 loses
+/// at most a factor 6.4 to cancellation), Laplace's continued fraction for
+/// erfc from 1 on (400 terms: 3e-16 relative against mpmath at x ≥ 0.8).
+/// Below 2 the series' cancellation cost erfc 1e-13 near x = 2, which the
+/// earlier threshold of 2 showed as failures at CLAIM.
 fn erf_independent(x: f64) -> (f64, f64, f64) {
     let two_over_sqrt_pi = 2.0 / std::f64::consts::PI.sqrt();
-    if x < 2.0 {
+    if x < 1.0 {
         let (mut term, mut sum, mut n) = (x, x, 0.0);
         while term.abs() > 1e-18 * sum.abs() {
             n += 1.0;
@@ -180,7 +203,7 @@ proptest! {
         let zeta = m.zeta_max().powf(lz);
         let a = m.point(zeta, p).unwrap();
         let g = g_closed_form(&s, zeta, p);
-        prop_assert!(rel(a.g, g) < CLAIM, "G {} vs closed form {g}", a.g);
+        prop_assert!(rel(a.g, g) < CLAIM + zeta_rounding(zeta), "G {} vs closed form {g}", a.g);
         let (erf, erfc, _) = erf_independent(1.0 / (2.0 * a.g.sqrt()));
         prop_assert!(rel(a.contact_fraction, erf) < CLAIM, "A/A0 {} vs {erf}", a.contact_fraction);
         if erfc > f64::MIN_POSITIVE {
