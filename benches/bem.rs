@@ -30,7 +30,7 @@ fn apply_free(bencher: divan::Bencher, n: usize) {
 #[divan::bench(args = [256, 512], sample_count = 5)]
 fn hertz_periodic(n: usize) -> f64 {
     let opts = Options {
-        tol: 1e-10,
+        tolerance: 1e-10,
         ..Options::default()
     };
     hertz::validate(&hertz::HertzCase::new(n, Boundary::Periodic), &opts)
@@ -52,7 +52,7 @@ fn rough_periodic(bencher: divan::Bencher, n: usize) {
     .unwrap();
     let surf = synthesize(&s, n, 1.0, 1).unwrap();
     let opts = Options {
-        tol: 1e-10,
+        tolerance: 1e-10,
         ..Options::default()
     };
     bencher.bench_local(|| {

@@ -22,7 +22,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         grids = vec![64, 128, 256, 512, 1024];
     }
     let opts = Options {
-        tol,
+        tolerance: tol,
         ..Options::default()
     };
     println!(

@@ -39,7 +39,7 @@ fn etas(n: usize, tol: f64, shift: (f64, f64), penetration: bool) -> Result<(f64
         Control::MeanPressure(case.mean_pressure())
     };
     let opts = Options {
-        tol,
+        tolerance: tol,
         ..Options::default()
     };
     let mut solver = Solver::new(Operator::new(Boundary::Free, n, case.size, case.e_star)?);

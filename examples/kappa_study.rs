@@ -26,8 +26,8 @@ fn main() -> persson::Result<()> {
             grid: finest,
             seeds: (1..=seeds).collect(),
             options: persson::bem::Options {
-                tol: 1e-8,
-                max_iter: 10_000,
+                tolerance: 1e-8,
+                max_iterations: 10_000,
                 warm_start: true,
             },
             ..SweepSettings::default()

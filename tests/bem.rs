@@ -39,7 +39,7 @@ const ROUGH_PINNED_NODES: f64 = 2.0;
 
 fn tight() -> Options {
     Options {
-        tol: 1e-12,
+        tolerance: 1e-12,
         ..Options::default()
     }
 }
@@ -310,7 +310,7 @@ fn not_converged_is_an_error() {
     let surf = synthesize(&rough_spectrum(), 64, 1.0, 3).unwrap();
     let mut s = Solver::new(Operator::new(Boundary::Periodic, 64, 1.0, 1.0).unwrap());
     let opts = Options {
-        max_iter: 2,
+        max_iterations: 2,
         ..tight()
     };
     match s.solve(&surf.heights, Control::MeanPressure(0.01), &opts) {
@@ -681,7 +681,7 @@ fn a_height_offset_changes_nothing() {
     let surf = synthesize(&rough_spectrum(), 64, 1.0, 7).unwrap();
     let shifted: Vec<f64> = surf.heights.iter().map(|h| h + 100.0).collect();
     let opts = Options {
-        tol: 1e-11,
+        tolerance: 1e-11,
         ..Options::default()
     };
     for boundary in [Boundary::Free, Boundary::Periodic] {

@@ -88,7 +88,7 @@ proptest! {
         let mut solver = Solver::new(Operator::new(c.boundary, c.grid, 1.0, 1.0).unwrap());
         // An independent operator to recompute the gap from p alone.
         let mut op = Operator::new(c.boundary, c.grid, 1.0, 1.0).unwrap();
-        let opts = Options { tol: TOL, ..Options::default() };
+        let opts = Options { tolerance: TOL, ..Options::default() };
         let mut last_fraction = 0.0;
         for &p in &c.pressures {
             let sol = solver.solve(&surf.heights, Control::MeanPressure(p), &opts).unwrap();
@@ -138,7 +138,7 @@ proptest! {
         let surf = synthesize(&s, c.grid, 1.0, c.seed).unwrap();
         let options = RoughOptions {
             boundary: c.boundary,
-            solver: Options { tol: TOL, warm_start: true, ..Options::default() },
+            solver: Options { tolerance: TOL, warm_start: true, ..Options::default() },
             bins: Some(bins),
         };
         let points = rough::solve(&surf, 1.0, &c.pressures, &options, &mut ()).unwrap();

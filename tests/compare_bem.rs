@@ -37,8 +37,8 @@ fn config(finest: usize, seeds: u64) -> SweepConfig {
         grids: resolution_grids(finest, 3).unwrap(),
         seeds: (1..=seeds).collect(),
         options: persson::bem::Options {
-            tol: 1e-8,
-            max_iter: 10_000,
+            tolerance: 1e-8,
+            max_iterations: 10_000,
             warm_start: true,
         },
         size: std::f64::consts::TAU,

@@ -61,7 +61,7 @@ mod bem {
         let rows = h.rows;
         assert_eq!(rows.len(), 2);
         let opts = Options {
-            tol: 1e-12,
+            tolerance: 1e-12,
             ..Options::default()
         };
         for row in &rows {

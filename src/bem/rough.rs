@@ -312,7 +312,7 @@ pub fn rough_contact(
         size: surface.size,
         boundary: options.boundary,
         contact_modulus,
-        tolerance: options.solver.tol,
+        tolerance: options.solver.tolerance,
         rms_height: surface.rms_height(),
         rms_slope: surface.rms_slope()?,
         surface: source,

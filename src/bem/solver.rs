@@ -73,20 +73,20 @@ pub enum Control {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Options {
     /// Relative tolerance on ε (see the module docs), in `[1e-15, 0.1]`.
-    pub tol: f64,
+    pub tolerance: f64,
     /// Maximum number of CG iterations.
-    pub max_iter: usize,
+    pub max_iterations: usize,
     /// Start from the previous solution (rescaled to the new load) when the
     /// workspace holds one: speeds up load sweeps.
     pub warm_start: bool,
 }
 
 impl Default for Options {
-    /// `tol = 1e-10`, `max_iter = 10 000`, no warm start.
+    /// `tolerance = 1e-10`, `max_iterations = 10 000`, no warm start.
     fn default() -> Self {
         Options {
-            tol: 1e-10,
-            max_iter: 10_000,
+            tolerance: 1e-10,
+            max_iterations: 10_000,
             warm_start: false,
         }
     }
@@ -301,7 +301,7 @@ impl Solver {
         let start = Instant::now();
         let n = self.op.n();
         let n2 = n * n;
-        check::tolerance("tol", opts.tol)?;
+        check::tolerance("tol", opts.tolerance)?;
         for buf in [&mut self.g, &mut self.t, &mut self.r] {
             if buf.len() != n2 {
                 *buf = vec![0.0; n2];
@@ -407,8 +407,8 @@ impl Solver {
             // Points outside the contact that overlap the rigid surface by
             // more than the tolerance (gap measured from the contact level).
             let level = if target.is_some() { st.g_min } else { 0.0 };
-            let overlap = st.g_min_off < level - opts.tol * sigma_h;
-            if eps <= opts.tol && !overlap {
+            let overlap = st.g_min_off < level - opts.tolerance * sigma_h;
+            if eps <= opts.tolerance && !overlap {
                 if fresh {
                     break (eps, st);
                 }
@@ -416,12 +416,12 @@ impl Solver {
                 fresh = true;
                 continue;
             }
-            if k >= opts.max_iter {
+            if k >= opts.max_iterations {
                 return Err(Error::NotConverged {
                     what: "Polonsky–Keer contact solver".into(),
                     iterations: k,
                     residual: eps,
-                    tolerance: opts.tol,
+                    tolerance: opts.tolerance,
                 });
             }
             if st.count == 0 && target.is_none() {

@@ -39,8 +39,8 @@ impl SolverArgs {
     pub fn options(&self) -> anyhow::Result<Options> {
         check::tolerance("tolerance", self.tolerance)?;
         Ok(Options {
-            tol: self.tolerance,
-            max_iter: self.max_iterations,
+            tolerance: self.tolerance,
+            max_iterations: self.max_iterations,
             warm_start: true,
         })
     }

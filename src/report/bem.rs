@@ -51,7 +51,7 @@ fn hertz_grid(extent: Extent) -> Result<Vec<MethodAccuracy>> {
         grids.extend([512, 1024]);
     }
     let opts = Options {
-        tol: GRID_STUDY_TOL,
+        tolerance: GRID_STUDY_TOL,
         ..Options::default()
     };
     let mut methods = Vec::new();
@@ -103,7 +103,7 @@ fn rough_grid(extent: Extent) -> Result<MethodAccuracy> {
     };
     let coarse = rough_surface()?;
     let opts = Options {
-        tol: GRID_STUDY_TOL,
+        tolerance: GRID_STUDY_TOL,
         ..Options::default()
     };
     let solve = |n: usize| -> Result<(f64, f64)> {
@@ -198,7 +198,7 @@ fn tolerance() -> Result<MethodAccuracy> {
             &s.heights,
             control,
             &Options {
-                tol,
+                tolerance: tol,
                 ..Options::default()
             },
         )

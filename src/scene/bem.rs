@@ -24,7 +24,7 @@ pub fn bem_hertz(h: &BemHertzOutput) -> Result<BemHertzReport> {
         h.grids.clone()
     };
     let opts = Options {
-        tol,
+        tolerance: tol,
         ..Options::default()
     };
     let rows = grids
@@ -112,7 +112,7 @@ pub fn bem_rough(scene: &Scene, b: &BemOutput) -> Result<RoughReport> {
     let options = RoughOptions {
         boundary,
         solver: Options {
-            tol,
+            tolerance: tol,
             warm_start: true,
             ..Options::default()
         },

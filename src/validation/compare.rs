@@ -326,7 +326,7 @@ pub fn compare(
         size: sweep_config.size,
         grids: sweep_config.grids.clone(),
         seeds: sweep_config.seeds.clone(),
-        tolerance: sweep_config.options.tol,
+        tolerance: sweep_config.options.tolerance,
         nominal_pressure: pressures,
         theories,
         bem,

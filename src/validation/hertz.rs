@@ -76,7 +76,7 @@ pub fn hertz(
         size: case.size,
         radius: case.radius,
         contact_modulus: case.e_star,
-        tolerance: options.tol,
+        tolerance: options.tolerance,
         hertz_contact_radius: case.contact_radius,
         hertz_peak_pressure: case.peak_pressure(),
         nominal_pressure: case.mean_pressure(),

@@ -162,7 +162,7 @@ pub fn kappa_study(
         band,
         rms_slope: config.rms_slope,
         contact_modulus: e_star,
-        tolerance: sweep_config.options.tol,
+        tolerance: sweep_config.options.tolerance,
         max_fraction: KAPPA_MAX_FRACTION,
         kappa_persson: Kappa::Persson.value(),
         kappa_bush: Kappa::Bush.value(),

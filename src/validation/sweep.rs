@@ -306,7 +306,7 @@ impl SweepSettings {
     /// No seed; a tolerance outside [1e-15, 0.1]; as [`resolution_grids`].
     pub fn config(&self, q_l: f64) -> Result<SweepConfig> {
         check::positive("q_l", q_l)?;
-        check::tolerance("tolerance", self.options.tol)?;
+        check::tolerance("tolerance", self.options.tolerance)?;
         if let Some(a) = self.alpha {
             check::positive("alpha", a)?;
         }
