@@ -5,7 +5,10 @@
 use std::path::PathBuf;
 
 use anyhow::bail;
-use persson::scene::{ConventionName, MaterialSpec, SpectrumSpec, Surface, EXAMPLE};
+use persson::scene::{
+    ConventionName, DetrendName, HeightMapSpec, MaterialSpec, Sides, SpectrumSpec, Surface,
+    WindowName, EXAMPLE,
+};
 use persson::spectrum::Spectrum;
 use persson::Material;
 
@@ -84,7 +87,7 @@ impl SpectrumArgs {
             return Ok(SpectrumSpec::example());
         }
         let (Some(hurst), Some(q_l), Some(q_s)) = (self.hurst, self.q_l, self.q_s) else {
-            bail!("no spectrum: give --hurst, --q-l, --q-s and one of --rms-height, --rms-slope, --c-r; or --psd FILE; or --example");
+            bail!("no spectrum: give --hurst, --q-l, --q-s and one of --rms-height, --rms-slope, --c-r; or --psd FILE; or --surface FILE; or --example");
         };
         if self.rms_height.is_none() && self.rms_slope.is_none() && self.c_r.is_none() {
             bail!("no spectrum amplitude: give one of --rms-height, --rms-slope, --c-r");
@@ -103,6 +106,62 @@ impl SpectrumArgs {
     /// Build the spectrum from the flags.
     pub fn build(&self) -> anyhow::Result<Box<dyn Spectrum>> {
         Ok(self.spec()?.build()?)
+    }
+}
+
+/// A measured surface as the spectrum (`--surface FILE` and its conditioning),
+/// flattened next to [`SpectrumArgs`]; the scene's `height_map` spectrum.
+#[derive(clap::Args, Debug, Clone, Default)]
+pub struct MeasuredArgs {
+    /// Measured surface whose isotropic spectrum is used (q_l and q_s from the map):
+    /// .npy, text matrix, .xyz, Gwyddion .gsf, ISO 25178-72 .x3p, or two-column line scans.
+    #[arg(long, conflicts_with_all = ["hurst", "q_l", "q_r", "amplitude", "psd", "example"])]
+    pub surface: Option<PathBuf>,
+    /// Pixel size Δ of the --surface map (square pixels), m.
+    #[arg(
+        long,
+        requires = "surface",
+        conflicts_with = "size",
+        allow_negative_numbers = true
+    )]
+    pub pixel_size: Option<f64>,
+    /// Physical size LX[,LY] of the --surface map, m (files that store it need none).
+    #[arg(long, requires = "surface", value_delimiter = ',', num_args = 1..=2, allow_negative_numbers = true)]
+    pub size: Vec<f64>,
+    /// Least-squares detrending of the --surface (default: plane, none if --periodic).
+    #[arg(long, value_enum, requires = "surface")]
+    pub detrend: Option<DetrendName>,
+    /// Window before the spectrum (default: hann, none if --periodic).
+    #[arg(long, value_enum, requires = "surface")]
+    pub window: Option<WindowName>,
+    /// The --surface map is periodic (no detrending or window by default).
+    #[arg(long, requires = "surface")]
+    pub periodic: bool,
+    /// Fill undefined points (NaN, missing data) by harmonic interpolation.
+    #[arg(long, requires = "surface")]
+    pub fill_undefined: bool,
+}
+
+impl MeasuredArgs {
+    /// The scene's `height_map` entry for these flags (`q_max`: the band's
+    /// upper end, `--q-s` or `spectrum --q-max`), if `--surface` is given.
+    pub fn spec(&self, q_max: Option<f64>) -> Option<HeightMapSpec> {
+        let file = self.surface.clone()?;
+        let size = match self.size[..] {
+            [lx] => Some(Sides::One(lx)),
+            [lx, ly] => Some(Sides::Two([lx, ly])),
+            _ => None,
+        };
+        Some(HeightMapSpec {
+            size,
+            pixel_size: self.pixel_size,
+            periodic: self.periodic,
+            detrend: self.detrend,
+            window: self.window,
+            fill_undefined: self.fill_undefined,
+            q_max,
+            ..HeightMapSpec::new(file)
+        })
     }
 }
 
@@ -154,13 +213,31 @@ impl MaterialArgs {
 
 /// The spectrum and the material of the flags, as the library's [`Surface`].
 pub fn surface(s: &SpectrumArgs, m: &MaterialArgs) -> anyhow::Result<Surface> {
-    let spectrum = s.spec()?;
+    measured_surface(s, &MeasuredArgs::default(), m)
+}
+
+/// As [`surface`], the spectrum from the measured surface if `--surface` is given.
+pub fn measured_surface(
+    s: &SpectrumArgs,
+    h: &MeasuredArgs,
+    m: &MaterialArgs,
+) -> anyhow::Result<Surface> {
+    let spectrum = spectrum_spec(s, h)?;
     let material = m.spec(s.example)?;
     let mut surface = Surface::new(&spectrum, &material)?;
     if s.is_example() && surface.description.is_none() {
         surface.description = Some(format!("{EXAMPLE} (the given flags replace parts of it)"));
     }
     Ok(surface)
+}
+
+/// The spectrum entry: the measured surface's (its band cut at `--q-s`) or
+/// the spectrum flags'.
+pub fn spectrum_spec(s: &SpectrumArgs, h: &MeasuredArgs) -> anyhow::Result<SpectrumSpec> {
+    match h.spec(s.q_s) {
+        Some(map) => Ok(SpectrumSpec::HeightMap(map)),
+        None => s.spec(),
+    }
 }
 
 /// Nominal pressures from the flags, or the example's.

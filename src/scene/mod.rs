@@ -31,6 +31,7 @@ use crate::stress::Start;
 
 #[cfg(feature = "bem")]
 mod bem;
+mod measured;
 #[cfg(feature = "plot")]
 pub mod plot;
 pub mod report;
@@ -63,8 +64,10 @@ impl Scene {
             ));
         }
         let base = path.parent().unwrap_or(Path::new("."));
-        if let Some(SpectrumSpec::Tabulated { file, .. } | SpectrumSpec::HeightMap { file, .. }) =
-            &mut s.spectrum
+        if let Some(
+            SpectrumSpec::Tabulated { file, .. }
+            | SpectrumSpec::HeightMap(HeightMapSpec { file, .. }),
+        ) = &mut s.spectrum
         {
             if file.is_relative() {
                 *file = base.join(&*file);
@@ -254,7 +257,10 @@ impl Scene {
     /// The input files the scene reads.
     pub fn input_paths(&self) -> Vec<PathBuf> {
         match &self.spectrum {
-            Some(SpectrumSpec::Tabulated { file, .. } | SpectrumSpec::HeightMap { file, .. }) => {
+            Some(
+                SpectrumSpec::Tabulated { file, .. }
+                | SpectrumSpec::HeightMap(HeightMapSpec { file, .. }),
+            ) => {
                 vec![file.clone()]
             }
             _ => vec![],
