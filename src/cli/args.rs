@@ -122,11 +122,16 @@ pub struct MeasuredArgs {
         long,
         requires = "surface",
         conflicts_with = "size",
-        allow_negative_numbers = true
+        allow_hyphen_values = true
     )]
     pub pixel_size: Option<f64>,
     /// Physical size LX[,LY] of the --surface map, m (files that store it need none).
-    #[arg(long, requires = "surface", value_delimiter = ',', num_args = 1..=2, allow_negative_numbers = true)]
+    #[arg(
+        long,
+        requires = "surface",
+        value_delimiter = ',',
+        allow_hyphen_values = true
+    )]
     pub size: Vec<f64>,
     /// Least-squares detrending of the --surface (default: plane, none if --periodic).
     #[arg(long, value_enum, requires = "surface")]
@@ -145,14 +150,20 @@ pub struct MeasuredArgs {
 impl MeasuredArgs {
     /// The scene's `height_map` entry for these flags (`q_max`: the band's
     /// upper end, `--q-s` or `spectrum --q-max`), if `--surface` is given.
-    pub fn spec(&self, q_max: Option<f64>) -> Option<HeightMapSpec> {
-        let file = self.surface.clone()?;
+    pub fn spec(&self, q_max: Option<f64>) -> anyhow::Result<Option<HeightMapSpec>> {
+        let Some(file) = self.surface.clone() else {
+            return Ok(None);
+        };
         let size = match self.size[..] {
+            [] => None,
             [lx] => Some(Sides::One(lx)),
             [lx, ly] => Some(Sides::Two([lx, ly])),
-            _ => None,
+            _ => bail!(
+                "--size takes LX or LX,LY (m), got {} values",
+                self.size.len()
+            ),
         };
-        Some(HeightMapSpec {
+        Ok(Some(HeightMapSpec {
             size,
             pixel_size: self.pixel_size,
             periodic: self.periodic,
@@ -161,7 +172,7 @@ impl MeasuredArgs {
             fill_undefined: self.fill_undefined,
             q_max,
             ..HeightMapSpec::new(file)
-        })
+        }))
     }
 }
 
@@ -234,7 +245,7 @@ pub fn measured_surface(
 /// The spectrum entry: the measured surface's (its band cut at `--q-s`) or
 /// the spectrum flags'.
 pub fn spectrum_spec(s: &SpectrumArgs, h: &MeasuredArgs) -> anyhow::Result<SpectrumSpec> {
-    match h.spec(s.q_s) {
+    match h.spec(s.q_s)? {
         Some(map) => Ok(SpectrumSpec::HeightMap(map)),
         None => s.spec(),
     }

@@ -38,7 +38,7 @@ pub struct Args {
 /// Run `persson spectrum`.
 pub fn run(a: Args) -> anyhow::Result<()> {
     a.plot.check()?;
-    if let Some(map) = a.measured.spec(a.q_max) {
+    if let Some(map) = a.measured.spec(a.q_max)? {
         return measured(&a, &map);
     }
     let s = a.spectrum.build()?;
