@@ -187,7 +187,12 @@ mod bem {
         // its title says how the map was conditioned.
         let area = text.replace(r#""bem": {}"#, r#""area": {}"#);
         std::fs::write(&scene_path, &area).unwrap();
-        let r = Scene::read(&scene_path).unwrap().run().unwrap().area.unwrap();
+        let r = Scene::read(&scene_path)
+            .unwrap()
+            .run()
+            .unwrap()
+            .area
+            .unwrap();
         let title = r.surface.unwrap();
         assert!(title.contains("detrend plane, window hann"), "{title}");
         // grid/seed make no sense with a height map.
