@@ -314,3 +314,75 @@ fn a_scene_with_a_height_map_runs_area_and_bem() {
     }
     assert_eq!(v["bem"]["grid"], 64);
 }
+
+#[cfg(feature = "bem")]
+#[test]
+fn compare_on_a_map_solves_the_map_itself_and_its_coarsened_copies() {
+    let (map, size) = synthesised_map("compare_map.npy");
+    let (m, s) = (map.to_string_lossy().into_owned(), format!("{size:?}"));
+    let flags = [
+        "--surface",
+        &m,
+        "--size",
+        &s,
+        "--contact-modulus",
+        "1e9",
+        "--pressure",
+        "1e6,1e7",
+    ];
+    let mut args = vec!["compare", "--periodic", "--json"];
+    args.extend(flags);
+    let c = json(&args);
+    assert_eq!(c["grids"], serde_json::json!([16, 32, 64]));
+    assert_eq!(c["size"].as_f64().unwrap(), size);
+    // The theories see the map's spectrum over its whole band, unclipped.
+    assert_eq!(c["spectrum"]["clipped"], false);
+    let q_l = c["spectrum"]["q_l"].as_f64().unwrap();
+    assert!((q_l / 1e4 - 1.0).abs() < 1e-12, "q_l = 2π/L: {q_l}");
+    // The finest grid is the map: `bem rough --surface` to the last digit.
+    let mut rough = vec!["bem", "rough", "--json"];
+    rough.extend(flags);
+    let r = json(&rough);
+    let finest = c["bem"].as_array().unwrap().last().unwrap().clone();
+    assert_eq!(finest["grid"], 64);
+    for k in 0..2 {
+        assert_eq!(
+            finest["contact_fraction"][k],
+            r["points"][k]["contact_fraction"]
+        );
+        assert_eq!(
+            finest["mean_separation"][k],
+            r["points"][k]["mean_separation"]
+        );
+    }
+    // A coarsened copy is a smoother surface: more contact at the same load.
+    let coarse = c["bem"][0]["contact_fraction"][0].as_f64().unwrap();
+    assert!(coarse > finest["contact_fraction"][0].as_f64().unwrap());
+    // The BEM needs a square map.
+    let oblong = dir().join("oblong.txt");
+    std::fs::write(
+        &oblong,
+        "0 1 2 3 4 5 6 7 8 9\n".repeat(8).replace("0 1", "1 0"),
+    )
+    .unwrap();
+    let o = oblong.to_string_lossy().into_owned();
+    let (code, out, err) = persson(&[
+        "compare",
+        "--surface",
+        &o,
+        "--pixel-size",
+        "1e-6",
+        "--contact-modulus",
+        "1e9",
+        "--pressure",
+        "1e6",
+        "--levels",
+        "2",
+    ]);
+    assert_eq!(code, 2, "{err}");
+    assert!(out.is_empty());
+    assert!(
+        err.contains("oblong.txt") && err.contains("8 × 10 points") && err.contains("square"),
+        "{err}"
+    );
+}
