@@ -5,7 +5,9 @@
 use crate::error::{Error, Result};
 use crate::spectrum::{Spectrum, Tabulated};
 
-use super::schema::{DetrendName, HeightMapSpec, Sides, WindowName};
+use super::schema::HeightMapSpec;
+#[cfg(feature = "topography")]
+use super::schema::{DetrendName, Sides, WindowName};
 
 #[cfg(feature = "topography")]
 use crate::topography::{self as topo, Analysis, AnalysisOptions, Detrend, Topography, Window};
