@@ -56,7 +56,7 @@ impl HeightMapSpec {
         })
     }
 
-    /// Read the file (module docs of [`crate::topography::read`]).
+    /// Read the file (the formats of [`crate::topography::read()`]).
     ///
     /// # Errors
     /// As [`crate::topography::read()`].

@@ -122,7 +122,7 @@ fn theory_curves(model: &Persson, pressures: &[f64]) -> Result<Vec<TheoryCurve>>
 ///
 /// The spectrum is clipped to what the coarsest grid resolves
 /// ([`SweepSettings::band`]); the theories use the clipped spectrum too. The
-/// BEM runs on every grid for every seed ([`sweep`]), A(N) is extrapolated
+/// BEM runs on every grid for every seed ([`super::sweep::sweep`]), A(N) is extrapolated
 /// to N → ∞ ([`super::continuum_limit`]), κ is fitted to every curve below
 /// A/A0 = [`KAPPA_MAX_FRACTION`], the finest grid's pressure histograms are
 /// set against Persson's P(σ) from a flat start, the BEM mean gap against
