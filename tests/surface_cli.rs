@@ -173,10 +173,21 @@ fn spectrum_of_the_reference_maps_is_the_library_analysis() {
     }
     // SurfaceTopography 1.27 on map A, plane removed (tests/topography.rs,
     // tests/reference/surface_topography.py): the rms height to 1e-10.
+    let svg = dir().join("psd_a.svg");
     let mut args = vec!["spectrum".to_string()];
     args.extend(map_flags("map_a.npy", "1e-6", false));
-    args.push("--json".into());
+    args.extend([
+        "--json".into(),
+        "--plot".into(),
+        svg.to_string_lossy().into_owned(),
+    ]);
     let h = run_json(&args)["rms_height"].as_f64().unwrap();
+    // The plot is drawn from the same report: C(q) and the Hurst fit.
+    let drawing = std::fs::read_to_string(&svg).unwrap();
+    assert!(
+        drawing.starts_with("<svg") && drawing.contains("measured surface"),
+        "{svg:?}"
+    );
     assert!((h / 5.3093491068746826e-09 - 1.0).abs() < 1e-10, "{h}");
 }
 
