@@ -2,7 +2,7 @@
 
 use persson::scene::{run, AreaOutput, TheoryName};
 
-use super::args::{pressures, surface, MaterialArgs, SpectrumArgs};
+use super::args::{measured_surface, pressures, MaterialArgs, MeasuredArgs, SpectrumArgs};
 use super::output::{print, Format};
 
 /// Arguments of `persson area`.
@@ -10,6 +10,8 @@ use super::output::{print, Format};
 pub struct Args {
     #[command(flatten)]
     spectrum: SpectrumArgs,
+    #[command(flatten)]
+    measured: MeasuredArgs,
     #[command(flatten)]
     material: MaterialArgs,
     /// Nominal (mean) pressure σ0, same unit as E*; repeatable or comma-separated.
@@ -49,7 +51,7 @@ pub struct TheoryArgs {
 /// Run `persson area`.
 pub fn run(a: Args) -> anyhow::Result<()> {
     a.plot.check()?;
-    let surface = surface(&a.spectrum, &a.material)?;
+    let surface = measured_surface(&a.spectrum, &a.measured, &a.material)?;
     let pressures = pressures(&a.pressure, a.spectrum.example)?;
     let out = AreaOutput {
         zeta: a.zeta,

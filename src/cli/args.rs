@@ -6,6 +6,8 @@ use std::path::PathBuf;
 
 use anyhow::bail;
 use persson::scene::{ConventionName, MaterialSpec, SpectrumSpec, Surface, EXAMPLE};
+
+pub use super::measured_args::MeasuredArgs;
 use persson::spectrum::Spectrum;
 use persson::Material;
 
@@ -84,7 +86,7 @@ impl SpectrumArgs {
             return Ok(SpectrumSpec::example());
         }
         let (Some(hurst), Some(q_l), Some(q_s)) = (self.hurst, self.q_l, self.q_s) else {
-            bail!("no spectrum: give --hurst, --q-l, --q-s and one of --rms-height, --rms-slope, --c-r; or --psd FILE; or --example");
+            bail!("no spectrum: give --hurst, --q-l, --q-s and one of --rms-height, --rms-slope, --c-r; or --psd FILE; or --surface FILE; or --example");
         };
         if self.rms_height.is_none() && self.rms_slope.is_none() && self.c_r.is_none() {
             bail!("no spectrum amplitude: give one of --rms-height, --rms-slope, --c-r");
@@ -154,13 +156,31 @@ impl MaterialArgs {
 
 /// The spectrum and the material of the flags, as the library's [`Surface`].
 pub fn surface(s: &SpectrumArgs, m: &MaterialArgs) -> anyhow::Result<Surface> {
-    let spectrum = s.spec()?;
+    measured_surface(s, &MeasuredArgs::default(), m)
+}
+
+/// As [`surface`], the spectrum from the measured surface if `--surface` is given.
+pub fn measured_surface(
+    s: &SpectrumArgs,
+    h: &MeasuredArgs,
+    m: &MaterialArgs,
+) -> anyhow::Result<Surface> {
+    let spectrum = spectrum_spec(s, h)?;
     let material = m.spec(s.example)?;
     let mut surface = Surface::new(&spectrum, &material)?;
     if s.is_example() && surface.description.is_none() {
         surface.description = Some(format!("{EXAMPLE} (the given flags replace parts of it)"));
     }
     Ok(surface)
+}
+
+/// The spectrum entry: the measured surface's (its band cut at `--q-s`) or
+/// the spectrum flags'.
+pub fn spectrum_spec(s: &SpectrumArgs, h: &MeasuredArgs) -> anyhow::Result<SpectrumSpec> {
+    match h.spec(s.q_s)? {
+        Some(map) => Ok(SpectrumSpec::HeightMap(map)),
+        None => s.spec(),
+    }
 }
 
 /// Nominal pressures from the flags, or the example's.

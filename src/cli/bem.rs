@@ -73,9 +73,10 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
     };
     let e_star = a.material.build(a.spectrum.example)?.contact_modulus();
     let (surface, source) = if let Some(path) = &a.surface {
-        let size = a.size.context("--surface needs --size L")?;
+        let mut map = persson::scene::HeightMapSpec::new(path.clone());
+        map.size = a.size.map(persson::scene::Sides::One);
         (
-            rough::read_surface(path, size, a.boundary)?,
+            map.bem_surface(a.boundary)?,
             SurfaceSource::height_map(path),
         )
     } else {

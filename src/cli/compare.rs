@@ -4,6 +4,8 @@
 //! averaged over seeds. The computation is [`persson::validation`], the flags
 //! are in `compare_args.rs`, the figures in `compare_plot.rs`.
 
+use persson::bem::Boundary;
+use persson::scene::SpectrumSpec;
 use persson::table::number;
 use persson::validation::{
     self, ComparisonConfig, KappaStudyConfig, SweepProgress, UserData, UserHistogram,
@@ -55,7 +57,11 @@ fn with_progress<T>(run: impl FnOnce(&mut dyn FnMut(SweepProgress)) -> T) -> T {
 
 fn compare(a: &MainArgs) -> anyhow::Result<()> {
     super::compare_plot::check(a)?;
-    let spectrum = a.spectrum.build()?;
+    let map = a.measured.spec(a.spectrum.q_s)?;
+    let (spectrum, described) = match &map {
+        Some(m) => SpectrumSpec::HeightMap(m.clone()).build_described()?,
+        None => (a.spectrum.build()?, None),
+    };
     let mut config = ComparisonConfig::new(a.material.build(a.spectrum.example)?.contact_modulus());
     config.nominal_pressure = a.pressure.clone();
     config.sweep = a.bem.settings()?;
@@ -67,13 +73,31 @@ fn compare(a: &MainArgs) -> anyhow::Result<()> {
         .transpose()?;
     config.histogram_pressure = a.histogram_pressure;
     config.bins = a.bins;
-    let q_l = spectrum.q_min();
-    warn_clipped(
-        &config.sweep.band(q_l, Some(spectrum.q_max()))?,
-        q_l,
-        &a.bem,
-    )?;
-    let report = with_progress(|p| validation::compare(spectrum.as_ref(), &config, p))?;
+    let report = match &map {
+        Some(m) => {
+            let boundary = if m.periodic {
+                Boundary::Periodic
+            } else {
+                Boundary::Free
+            };
+            let surface = m.bem_surface(boundary)?;
+            if let Some(d) = described {
+                eprintln!("note: {d}; BEM on the map, {} boundary", boundary.name());
+            }
+            with_progress(|p| {
+                validation::compare_surface(spectrum.as_ref(), &surface, boundary, &config, p)
+            })?
+        }
+        None => {
+            let q_l = spectrum.q_min();
+            warn_clipped(
+                &config.sweep.band(q_l, Some(spectrum.q_max()))?,
+                q_l,
+                &a.bem,
+            )?;
+            with_progress(|p| validation::compare(spectrum.as_ref(), &config, p))?
+        }
+    };
     super::compare_plot::comparison(a, &report)?;
     print(&report, &a.format)
 }

@@ -6,7 +6,7 @@ use persson::validation::{
     SweepSettings, DEFAULT_ALPHA, DEFAULT_LEVELS, DEFAULT_PIXELS_PER_WAVELENGTH,
 };
 
-use super::args::{MaterialArgs, SpectrumArgs};
+use super::args::{MaterialArgs, MeasuredArgs, SpectrumArgs};
 use super::bem::SolverArgs;
 use super::output::Format;
 
@@ -73,6 +73,12 @@ impl BemArgs {
 pub struct MainArgs {
     #[command(flatten)]
     pub spectrum: SpectrumArgs,
+    /// With --surface the BEM solves on the map itself (square N × N, periodic
+    /// with --periodic, else a free boundary) and on its 2×2-block-averaged
+    /// copies (--levels grids); --grid, --seed(s) and --pixels-per-wavelength
+    /// do not apply.
+    #[command(flatten)]
+    pub measured: MeasuredArgs,
     #[command(flatten)]
     pub material: MaterialArgs,
     /// Nominal (mean) pressure, same unit as the modulus; repeatable or comma-separated

@@ -3,7 +3,7 @@
 
 use persson::scene::{run, MagnificationOutput};
 
-use super::args::{surface, MaterialArgs, SpectrumArgs};
+use super::args::{measured_surface, MaterialArgs, MeasuredArgs, SpectrumArgs};
 use super::output::{print, Format};
 
 /// Arguments of `persson magnification`.
@@ -11,6 +11,8 @@ use super::output::{print, Format};
 pub struct Args {
     #[command(flatten)]
     spectrum: SpectrumArgs,
+    #[command(flatten)]
+    measured: MeasuredArgs,
     #[command(flatten)]
     material: MaterialArgs,
     /// Nominal (mean) pressure σ0, same unit as E* (with --example: 1e7).
@@ -38,7 +40,7 @@ pub fn run(a: Args) -> anyhow::Result<()> {
         plot: a.plot_g.clone(),
     };
     plot_g.check()?;
-    let surface = surface(&a.spectrum, &a.material)?;
+    let surface = measured_surface(&a.spectrum, &a.measured, &a.material)?;
     let nominal_pressure = match (a.pressure, a.spectrum.example) {
         (Some(p), _) => p,
         (None, true) => super::args::example::PRESSURES[3],

@@ -15,6 +15,7 @@ mod compare_args;
 mod compare_plot;
 mod kappa;
 mod magnification;
+mod measured_args;
 mod output;
 mod plot;
 #[cfg(feature = "bem")]

@@ -4,7 +4,7 @@
 
 use persson::scene::{run, SeparationOutput, TheoriesOutput};
 
-use super::args::{pressures, surface, MaterialArgs, SpectrumArgs};
+use super::args::{measured_surface, pressures, MaterialArgs, MeasuredArgs, SpectrumArgs};
 use super::output::{print, Format};
 
 /// Arguments of `persson separation`.
@@ -12,6 +12,8 @@ use super::output::{print, Format};
 pub struct Args {
     #[command(flatten)]
     spectrum: SpectrumArgs,
+    #[command(flatten)]
+    measured: MeasuredArgs,
     #[command(flatten)]
     material: MaterialArgs,
     /// Nominal (mean) pressure σ0, same unit as E*; repeatable or comma-separated.
@@ -41,7 +43,7 @@ pub fn run(a: Args) -> anyhow::Result<()> {
         plot: a.plot_area.clone(),
     };
     plot_area.check()?;
-    let surface = surface(&a.spectrum, &a.material)?;
+    let surface = measured_surface(&a.spectrum, &a.measured, &a.material)?;
     let pressures = pressures(&a.pressure, a.spectrum.example)?;
     let grid = if a.plot.plot.is_some() || plot_area.plot.is_some() {
         plot_pressures(&pressures, a.plot_points)?

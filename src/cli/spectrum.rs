@@ -1,8 +1,12 @@
-//! `persson spectrum`: moments of the spectrum, a power-law fit and C(q).
+//! `persson spectrum`: moments of the spectrum, a power-law fit and C(q); with
+//! `--surface`, the measured surface's spectrum and statistics
+//! ([`persson::topography::analyse`]).
+
+use std::path::PathBuf;
 
 use persson::scene::run;
 
-use super::args::SpectrumArgs;
+use super::args::{MeasuredArgs, SpectrumArgs};
 use super::output::{print, Format};
 
 /// Arguments of `persson spectrum`.
@@ -10,15 +14,21 @@ use super::output::{print, Format};
 pub struct Args {
     #[command(flatten)]
     spectrum: SpectrumArgs,
+    #[command(flatten)]
+    measured: MeasuredArgs,
     /// Lower end of the q range for the moments (default q_l), 1/m.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_negative_numbers = true, conflicts_with = "surface")]
     q_min: Option<f64>,
-    /// Upper end of the q range for the moments (default q_s), 1/m.
+    /// Upper end of the q range for the moments (default q_s), 1/m; with
+    /// --surface the upper end of the band (default the Nyquist wavevector π/Δ).
     #[arg(long, allow_negative_numbers = true)]
     q_max: Option<f64>,
     /// Number of log-spaced q values in the C(q) table.
-    #[arg(long, default_value_t = 11)]
+    #[arg(long, default_value_t = 11, conflicts_with = "surface")]
     points: usize,
+    /// Write the --surface spectrum as CSV (q, c; Persson), which --psd reads back as is.
+    #[arg(long, value_name = "FILE.csv", requires = "surface")]
+    psd_out: Option<PathBuf>,
     #[command(flatten)]
     format: Format,
     #[command(flatten)]
@@ -28,6 +38,9 @@ pub struct Args {
 /// Run `persson spectrum`.
 pub fn run(a: Args) -> anyhow::Result<()> {
     a.plot.check()?;
+    if let Some(map) = a.measured.spec(a.q_max)? {
+        return measured(&a, &map);
+    }
     let s = a.spectrum.build()?;
     let description = a
         .spectrum
@@ -37,4 +50,29 @@ pub fn run(a: Args) -> anyhow::Result<()> {
     #[cfg(feature = "plot")]
     a.plot.draw(|| persson::scene::plot::spectrum(&report))?;
     print(&report, &a.format)
+}
+
+/// `--surface`: the analysis of the map, its CSV and plot.
+#[cfg(feature = "topography")]
+fn measured(a: &Args, map: &persson::scene::HeightMapSpec) -> anyhow::Result<()> {
+    if let Some(path) = &a.psd_out {
+        persson::io::check_writable(path)?;
+    }
+    let report = map.analyse()?;
+    if let Some(path) = &a.psd_out {
+        report.psd.write_csv(path)?;
+    }
+    #[cfg(feature = "plot")]
+    a.plot
+        .draw(|| persson::scene::plot::measured_spectrum(&report))?;
+    print(&report, &a.format)
+}
+
+/// Without the feature `topography`, `--surface` is an error.
+#[cfg(not(feature = "topography"))]
+fn measured(_: &Args, map: &persson::scene::HeightMapSpec) -> anyhow::Result<()> {
+    anyhow::bail!(
+        "--surface {}: this persson was built without the `topography` feature",
+        map.file.display()
+    )
 }

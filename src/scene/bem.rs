@@ -60,21 +60,25 @@ fn bem_surface(
     boundary: crate::bem::Boundary,
 ) -> Result<surface::Surface> {
     let named = |e: Error| prefix("outputs.bem.", e);
-    if let Some(SpectrumSpec::HeightMap { file, size }) = &scene.spectrum {
+    if let Some(SpectrumSpec::HeightMap(m)) = &scene.spectrum {
         if b.grid.is_some() || b.seed.is_some() {
             return Err(Error::Inconsistent {
                 name: "outputs.bem.grid / outputs.bem.seed".into(),
                 requirement: "not used with a height map (its file sets the grid)".into(),
             });
         }
-        let size = check::positive("spectrum.size", *size)?;
-        let bytes = crate::io::read(file)?;
-        // A float32 file of this length holds at most len/4 values.
-        let n_max = ((bytes.len() / 4) as f64).sqrt() as usize;
-        if n_max > crate::bem::MIN_GRID {
-            check_memory(n_max.min(crate::bem::MAX_GRID), boundary).map_err(named)?;
-        }
-        return surface::height_map_from_bytes(file, &bytes, size);
+        return m.bem_surface(boundary).map_err(|e| match e {
+            Error::InvalidParameter {
+                name,
+                value,
+                requirement,
+            } if name == "size" => Error::InvalidParameter {
+                name: "spectrum.size".into(),
+                value,
+                requirement,
+            },
+            e => e,
+        });
     }
     let n = b
         .grid
@@ -106,7 +110,7 @@ pub fn bem_rough(scene: &Scene, b: &BemOutput) -> Result<RoughReport> {
     let e_star = scene.material()?.contact_modulus();
     let surf = bem_surface(scene, b, boundary)?;
     let source = match &scene.spectrum {
-        Some(SpectrumSpec::HeightMap { file, .. }) => SurfaceSource::height_map(file),
+        Some(SpectrumSpec::HeightMap(m)) => SurfaceSource::height_map(&m.file),
         _ => SurfaceSource::synthesised(scene.spectrum()?.as_ref(), b.seed.unwrap_or(1))?,
     };
     let options = RoughOptions {

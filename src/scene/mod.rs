@@ -31,6 +31,7 @@ use crate::stress::Start;
 
 #[cfg(feature = "bem")]
 mod bem;
+mod measured;
 #[cfg(feature = "plot")]
 pub mod plot;
 pub mod report;
@@ -63,8 +64,10 @@ impl Scene {
             ));
         }
         let base = path.parent().unwrap_or(Path::new("."));
-        if let Some(SpectrumSpec::Tabulated { file, .. } | SpectrumSpec::HeightMap { file, .. }) =
-            &mut s.spectrum
+        if let Some(
+            SpectrumSpec::Tabulated { file, .. }
+            | SpectrumSpec::HeightMap(HeightMapSpec { file, .. }),
+        ) = &mut s.spectrum
         {
             if file.is_relative() {
                 *file = base.join(&*file);
@@ -254,7 +257,10 @@ impl Scene {
     /// The input files the scene reads.
     pub fn input_paths(&self) -> Vec<PathBuf> {
         match &self.spectrum {
-            Some(SpectrumSpec::Tabulated { file, .. } | SpectrumSpec::HeightMap { file, .. }) => {
+            Some(
+                SpectrumSpec::Tabulated { file, .. }
+                | SpectrumSpec::HeightMap(HeightMapSpec { file, .. }),
+            ) => {
                 vec![file.clone()]
             }
             _ => vec![],
@@ -267,9 +273,10 @@ impl Scene {
 /// # Errors
 /// A file that cannot be written (written atomically).
 pub fn write_data(scene: &Scene, report: &SceneReport, dir: &Path) -> Result<Vec<PathBuf>> {
-    use crate::table::Tabulate;
     let mut written = Vec::new();
+    #[cfg(feature = "bem")]
     if let (Some(out), Some(r)) = (&scene.outputs.bem, &report.bem) {
+        use crate::table::Tabulate;
         if let Some(file) = &out.histogram {
             if let Some(t) = r.tables().into_iter().find(|t| t.name == "bem_histogram") {
                 let p = dir.join(file);
@@ -278,6 +285,8 @@ pub fn write_data(scene: &Scene, report: &SceneReport, dir: &Path) -> Result<Vec
             }
         }
     }
+    #[cfg(not(feature = "bem"))]
+    let _ = (scene, report, dir, &mut written);
     Ok(written)
 }
 
@@ -314,6 +323,7 @@ pub fn render_plots(scene: &Scene, report: &SceneReport, dir: &Path) -> Result<V
     if let (Some(out), Some(r)) = (&o.stress, &report.stress) {
         draw(&out.plot, &|| plot::stress(r))?;
     }
+    #[cfg(feature = "bem")]
     if let (Some(out), Some(r)) = (&o.bem, &report.bem) {
         draw(&out.plot, &|| plot::bem(r))?;
     }

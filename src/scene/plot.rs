@@ -213,3 +213,23 @@ pub fn spectrum(r: &SpectrumReport) -> Result<Figure> {
     };
     plot::spectrum(&q, &c, Some(law))
 }
+
+/// C(q) of a measured surface with its Hurst fit over the band.
+///
+/// # Errors
+/// An inconsistent report.
+#[cfg(feature = "topography")]
+pub fn measured_spectrum(a: &crate::topography::Analysis) -> Result<Figure> {
+    let law = PowerLaw {
+        prefactor: a.fit.prefactor,
+        exponent: -2.0 * (a.hurst + 1.0),
+        q_range: Some((a.q_min, a.q_max)),
+    };
+    let mut fig = plot::spectrum(&a.psd.q, &a.psd.c, Some(law))?;
+    fig.title = format!(
+        "Power spectrum C(q) of the measured surface, H = {} ± {}",
+        number(a.hurst, 3),
+        number(a.hurst_error, 2)
+    );
+    Ok(fig)
+}

@@ -766,7 +766,8 @@ pub struct SceneReport {
     /// Stress distributions.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub stress: Option<StressReport>,
-    /// FFT-BEM rough contact.
+    /// FFT-BEM rough contact (feature `bem`).
+    #[cfg(feature = "bem")]
     #[serde(skip_serializing_if = "Option::is_none")]
     pub bem: Option<crate::bem::rough::RoughReport>,
     /// FFT-BEM Hertz convergence.
@@ -777,6 +778,10 @@ pub struct SceneReport {
 impl Tabulate for SceneReport {
     fn tables(&self) -> Vec<Table> {
         let mut out = Vec::new();
+        #[cfg(feature = "bem")]
+        let bem = self.bem.as_ref().map(|r| r as &dyn Tabulate);
+        #[cfg(not(feature = "bem"))]
+        let bem = None;
         let parts: [Option<&dyn Tabulate>; 9] = [
             self.spectrum.as_ref().map(|r| r as &dyn Tabulate),
             self.kappa.as_ref().map(|r| r as &dyn Tabulate),
@@ -785,7 +790,7 @@ impl Tabulate for SceneReport {
             self.theories.as_ref().map(|r| r as &dyn Tabulate),
             self.separation.as_ref().map(|r| r as &dyn Tabulate),
             self.stress.as_ref().map(|r| r as &dyn Tabulate),
-            self.bem.as_ref().map(|r| r as &dyn Tabulate),
+            bem,
             self.bem_hertz.as_ref().map(|r| r as &dyn Tabulate),
         ];
         for p in parts.into_iter().flatten() {

@@ -41,11 +41,14 @@ impl Surface {
         spectrum_section: &str,
         material_section: &str,
     ) -> Result<Self> {
-        let s = spectrum.build().map_err(|e| prefix(spectrum_section, e))?;
+        let (s, measured) = spectrum
+            .build_described()
+            .map_err(|e| prefix(spectrum_section, e))?;
         let m: Material = material.build().map_err(|e| prefix(material_section, e))?;
         let description = (*spectrum == SpectrumSpec::example()
             && *material == MaterialSpec::example())
-        .then(|| EXAMPLE.to_string());
+        .then(|| EXAMPLE.to_string())
+        .or(measured);
         Ok(Surface {
             spectrum: s,
             contact_modulus: m.contact_modulus(),

@@ -144,15 +144,68 @@ pub enum SpectrumSpec {
         #[serde(default, skip_serializing_if = "Option::is_none")]
         size: Option<f64>,
     },
-    /// A measured height map of the rigid surface, for `outputs.bem` only
-    /// (`.npy` float64/float32 2-D square, else a whitespace-separated text
-    /// matrix; relative paths are relative to the scene file).
-    HeightMap {
-        /// The file.
-        file: PathBuf,
-        /// Its physical side L (unit of length of the scene).
-        size: f64,
-    },
+    /// A measured height map (or line scans): its isotropic spectrum serves
+    /// every output, and `outputs.bem` solves on the map itself (relative
+    /// paths are relative to the scene file).
+    HeightMap(HeightMapSpec),
+}
+
+/// A measured surface, read with [`crate::topography::read()`] and
+/// conditioned as [`crate::topography::analyse`] does (feature `topography`);
+/// the same fields as the flags `--surface`, `--size`, `--pixel-size`,
+/// `--periodic`, `--detrend`, `--window`, `--fill-undefined`, `--q-max`.
+#[derive(Debug, Clone, PartialEq, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct HeightMapSpec {
+    /// The file: `.npy`, text matrix, `.xyz`, `.gsf`, `.x3p` or a two-column line scan.
+    pub file: PathBuf,
+    /// Physical size: `Lx` (square pixels) or `[Lx, Ly]`, m (not for files that store it).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub size: Option<Sides>,
+    /// Pixel size Δ (square pixels), m, instead of `size`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pixel_size: Option<f64>,
+    /// Whether the surface repeats itself (default: not, a measurement).
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub periodic: bool,
+    /// Detrending (default: plane for non-periodic maps, none for periodic ones).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub detrend: Option<DetrendName>,
+    /// Window (default: hann for non-periodic maps, none for periodic ones).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub window: Option<WindowName>,
+    /// Fill undefined points by harmonic interpolation instead of failing.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub fill_undefined: bool,
+    /// Upper end of the band, 1/m (default: the Nyquist wavevector π/Δ).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub q_max: Option<f64>,
+}
+
+/// A physical size: one side `Lx` (square pixels) or both `[Lx, Ly]`, m.
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize, Serialize, JsonSchema)]
+#[serde(untagged)]
+pub enum Sides {
+    /// `Lx`; `Ly = Lx·ny/nx`.
+    One(f64),
+    /// `[Lx, Ly]`.
+    Two([f64; 2]),
+}
+
+impl HeightMapSpec {
+    /// A spec with every option at its default.
+    pub fn new(file: PathBuf) -> Self {
+        HeightMapSpec {
+            file,
+            size: None,
+            pixel_size: None,
+            periodic: false,
+            detrend: None,
+            window: None,
+            fill_undefined: false,
+            q_max: None,
+        }
+    }
 }
 
 impl SpectrumSpec {
@@ -169,11 +222,11 @@ impl SpectrumSpec {
         }
     }
 
-    /// Build the spectrum.
+    /// Build the spectrum (a height map's: its binned isotropic spectrum,
+    /// feature `topography`).
     ///
     /// # Errors
-    /// Missing or invalid fields (named as in the scene file); file errors;
-    /// a height map (it has no spectrum).
+    /// Missing or invalid fields (named as in the scene file); file errors.
     pub fn build(&self) -> Result<Box<dyn Spectrum>> {
         match self {
             SpectrumSpec::SelfAffine {
@@ -203,11 +256,26 @@ impl SpectrumSpec {
                 file,
                 convention,
                 size,
-            } => Ok(Box::new(Tabulated::from_csv(file, convention.with(*size)?)?)),
-            SpectrumSpec::HeightMap { .. } => Err(Error::Inconsistent {
-                name: "kind = height_map".into(),
-                requirement: "a height map serves only outputs.bem; the other outputs need a spectrum (self_affine or tabulated)".into(),
-            }),
+            } => Ok(Box::new(Tabulated::from_csv(
+                file,
+                convention.with(*size)?,
+            )?)),
+            SpectrumSpec::HeightMap(m) => m.spectrum(),
+        }
+    }
+
+    /// As [`SpectrumSpec::build`], with what a measured surface assumed
+    /// (detrend, window, periodicity, band) in words for the report titles.
+    ///
+    /// # Errors
+    /// As [`SpectrumSpec::build`].
+    pub fn build_described(&self) -> Result<(Box<dyn Spectrum>, Option<String>)> {
+        match self {
+            SpectrumSpec::HeightMap(m) => {
+                let (s, d) = m.spectrum_described()?;
+                Ok((Box::new(s), Some(d)))
+            }
+            _ => Ok((self.build()?, None)),
         }
     }
 
@@ -637,4 +705,30 @@ pub fn json_schema() -> String {
     let mut s = serde_json::to_string_pretty(&schema).unwrap_or_default();
     s.push('\n');
     s
+}
+
+names! {
+    /// Least-squares detrending of a measured surface.
+    DetrendName {
+        /// Heights as they are.
+        None = "none",
+        /// The mean height.
+        Mean = "mean",
+        /// The least-squares plane.
+        Plane = "plane",
+        /// The least-squares quadratic.
+        Curvature = "curvature",
+    }
+}
+
+names! {
+    /// Window applied before the spectrum of a measured surface.
+    WindowName {
+        /// No window.
+        None = "none",
+        /// Radial Hann window.
+        Hann = "hann",
+        /// Radial Blackman window.
+        Blackman = "blackman",
+    }
 }

@@ -353,6 +353,10 @@ pub struct Analysis {
     pub q_max: f64,
     /// The binned isotropic spectrum (Persson's normalisation).
     pub psd: Psd,
+    /// The Hurst fit (its prefactor draws the fit line; `hurst` and
+    /// `hurst_error` above are its H and standard error).
+    #[serde(skip)]
+    pub fit: HurstFit,
 }
 
 /// Condition the topography, compute its isotropic spectrum (for line scans:
@@ -410,6 +414,7 @@ pub fn analyse(t: &Topography, options: &AnalysisOptions) -> Result<Analysis> {
         q_min: psd.q_min,
         q_max: psd.q_max,
         psd,
+        fit,
     })
 }
 

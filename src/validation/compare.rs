@@ -8,7 +8,11 @@ use super::report::{
     DensityCurve, Fitted, HistogramComparison, KappaFits, MeanSeparation, PressureDistribution,
     TheoryCurve, TheoryKappa,
 };
-use super::sweep::{default_pressures, sweep, BandLimited, SweepProgress, SweepSettings};
+use super::sweep::{
+    default_pressures, resolution_grids, sweep_source, BandLimited, SweepProgress, SweepSettings,
+    SweepSource,
+};
+use crate::bem::{Boundary, Surface};
 use crate::corrected::{self, Theory};
 use crate::error::{check, Error, Result};
 use crate::kappa::Kappa;
@@ -118,7 +122,7 @@ fn theory_curves(model: &Persson, pressures: &[f64]) -> Result<Vec<TheoryCurve>>
 ///
 /// The spectrum is clipped to what the coarsest grid resolves
 /// ([`SweepSettings::band`]); the theories use the clipped spectrum too. The
-/// BEM runs on every grid for every seed ([`sweep`]), A(N) is extrapolated
+/// BEM runs on every grid for every seed ([`super::sweep::sweep`]), A(N) is extrapolated
 /// to N → ∞ ([`super::continuum_limit`]), κ is fitted to every curve below
 /// A/A0 = [`KAPPA_MAX_FRACTION`], the finest grid's pressure histograms are
 /// set against Persson's P(σ) from a flat start, the BEM mean gap against
@@ -132,11 +136,52 @@ pub fn compare(
     config: &ComparisonConfig,
     progress: &mut dyn FnMut(SweepProgress),
 ) -> Result<Comparison> {
+    compare_on(spectrum, None, config, progress)
+}
+
+/// Compare every theory, evaluated on a measured map's spectrum, with the
+/// FFT-BEM on the map itself (`persson compare --surface`).
+///
+/// The BEM runs on the map (`N × N`, side L, the given boundary: periodic
+/// for a periodic map, free otherwise) and on its block-averaged copies
+/// `N/2, N/4, …` (`config.sweep.levels` grids; [`super::sweep::coarsened`]),
+/// whose A(N) give the continuum limit as for [`compare`]. The map is one
+/// realisation: only the first seed is used and the seed scatter is absent.
+/// The theories use `spectrum` over its whole band (no clipping: the finest
+/// grid holds every mode of the map). `config.sweep.grid` is ignored.
+///
+/// # Errors
+/// As [`compare`]; `N` not divisible by `2^(levels−1)` or a coarsest grid
+/// below [`crate::bem::MIN_GRID`].
+pub fn compare_surface(
+    spectrum: &dyn Spectrum,
+    map: &Surface,
+    boundary: Boundary,
+    config: &ComparisonConfig,
+    progress: &mut dyn FnMut(SweepProgress),
+) -> Result<Comparison> {
+    compare_on(spectrum, Some((map, boundary)), config, progress)
+}
+
+fn compare_on(
+    spectrum: &dyn Spectrum,
+    map: Option<(&Surface, Boundary)>,
+    config: &ComparisonConfig,
+    progress: &mut dyn FnMut(SweepProgress),
+) -> Result<Comparison> {
     let e_star = check::positive("contact_modulus", config.contact_modulus)?;
     let q_l = spectrum.q_min();
-    let sweep_config = config.sweep.config(q_l)?;
-    let resolved = config.sweep.band(q_l, Some(spectrum.q_max()))?;
-    let band = BandLimited::new(spectrum, resolved.q_s)?;
+    let mut sweep_config = config.sweep.config(q_l)?;
+    let q_s = match map {
+        None => config.sweep.band(q_l, Some(spectrum.q_max()))?.q_s,
+        Some((m, _)) => {
+            sweep_config.grids = resolution_grids(m.n, config.sweep.levels)?;
+            sweep_config.size = m.size;
+            sweep_config.seeds.truncate(1);
+            spectrum.q_max()
+        }
+    };
+    let band = BandLimited::new(spectrum, q_s)?;
     let rms_slope = band.rms_slope(q_l, band.q_max())?.value;
     let rms_height = band.rms_height(q_l, band.q_max())?.value;
     let pressures = if !config.nominal_pressure.is_empty() {
@@ -154,7 +199,11 @@ pub fn compare(
     let theories = theory_curves(&model, &pressures)?;
 
     // The BEM sweep and its continuum limit.
-    let sw = sweep(&band, e_star, &pressures, &sweep_config, progress)?;
+    let source = match map {
+        None => SweepSource::Synthesised(&band),
+        Some((m, b)) => SweepSource::Map(m, b),
+    };
+    let sw = sweep_source(source, e_star, &pressures, &sweep_config, progress)?;
     let means = sw.mean_contact_fraction();
     let gaps = sw.mean_separation();
     let cont = sw.extrapolate(config.sweep.alpha)?;

@@ -55,7 +55,7 @@ pub use data::{density_distance, interpolate_log, score, Score, UserData, UserHi
 pub use kappa::{fit_kappa, KappaEstimate, KappaFit};
 
 #[cfg(feature = "bem")]
-pub use compare::{compare, ComparisonConfig, KAPPA_MAX_FRACTION};
+pub use compare::{compare, compare_surface, ComparisonConfig, KAPPA_MAX_FRACTION};
 #[cfg(feature = "bem")]
 pub use hertz::{hertz, HertzValidation};
 #[cfg(feature = "bem")]
@@ -66,7 +66,8 @@ pub use kappa_study::{kappa_study, HurstKappa, KappaStudy, KappaStudyConfig};
 pub use report::Comparison;
 #[cfg(feature = "bem")]
 pub use sweep::{
-    continuum_limit, default_pressures, nested_surfaces, resolution_grids, resolvable_q_max,
-    resolve_q_s, sweep, BandLimited, Continuum, ResolvedBand, Sweep, SweepConfig, SweepProgress,
-    SweepSettings, DEFAULT_LEVELS, DEFAULT_PIXELS_PER_WAVELENGTH,
+    coarsened, continuum_limit, default_pressures, nested_surfaces, resolution_grids,
+    resolvable_q_max, resolve_q_s, sweep, sweep_source, BandLimited, Continuum, ResolvedBand,
+    Sweep, SweepConfig, SweepProgress, SweepSettings, SweepSource, DEFAULT_LEVELS,
+    DEFAULT_PIXELS_PER_WAVELENGTH,
 };

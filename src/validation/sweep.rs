@@ -400,6 +400,92 @@ pub fn sweep(
     config: &SweepConfig,
     progress: &mut dyn FnMut(SweepProgress),
 ) -> Result<Sweep> {
+    sweep_source(
+        SweepSource::Synthesised(spectrum),
+        contact_modulus,
+        pressures,
+        config,
+        progress,
+    )
+}
+
+/// Where a sweep's surfaces come from.
+#[derive(Clone, Copy)]
+pub enum SweepSource<'a> {
+    /// Synthesised from a spectrum, one periodic realisation per seed
+    /// ([`nested_surfaces`]).
+    Synthesised(&'a dyn Spectrum),
+    /// A height map on the finest grid, one realisation (the first seed
+    /// only), and its block-averaged copies on the coarser grids
+    /// ([`coarsened`]), solved with the given boundary.
+    Map(&'a Surface, Boundary),
+}
+
+/// A height map on coarser grids by averaging `r × r` blocks (`r = N/n`):
+/// the finest grid is the map itself; each copy keeps the map's modes up to
+/// its own Nyquist wavevector (attenuated by the block average's
+/// `sinc(q_x Δ/2)·sinc(q_y Δ/2)`, Δ its pixel).
+///
+/// # Errors
+/// The finest grid is not the map's; grids not ascending, each dividing the
+/// next; as [`Surface::new`].
+pub fn coarsened(map: &Surface, grids: &[usize]) -> Result<Vec<Surface>> {
+    let nf = map.n;
+    let ok = grids.last() == Some(&nf)
+        && grids
+            .windows(2)
+            .all(|w| w[0] < w[1] && w[1].is_multiple_of(w[0]));
+    if !ok {
+        return Err(Error::Inconsistent {
+            name: "grids".into(),
+            requirement: format!(
+                "ascending, each dividing the next, the finest the map's {nf} (got {grids:?})"
+            ),
+        });
+    }
+    grids
+        .iter()
+        .map(|&n| {
+            let r = nf / n;
+            let w = 1.0 / (r * r) as f64;
+            let heights = (0..n * n)
+                .map(|k| {
+                    let (i, j) = (k / n, k % n);
+                    if r == 1 {
+                        return map.heights[k];
+                    }
+                    let mut sum = 0.0;
+                    for a in 0..r {
+                        let row = (i * r + a) * nf + j * r;
+                        sum += map.heights[row..row + r].iter().sum::<f64>();
+                    }
+                    sum * w
+                })
+                .collect();
+            Surface::new(n, map.size, heights)
+        })
+        .collect()
+}
+
+/// [`sweep`] on the surfaces of `source`.
+///
+/// # Errors
+/// As [`sweep`] and [`coarsened`].
+pub fn sweep_source(
+    source: SweepSource<'_>,
+    contact_modulus: f64,
+    pressures: &[f64],
+    config: &SweepConfig,
+    progress: &mut dyn FnMut(SweepProgress),
+) -> Result<Sweep> {
+    let boundary = match source {
+        SweepSource::Synthesised(_) => Boundary::Periodic,
+        SweepSource::Map(_, b) => b,
+    };
+    let seeds = match source {
+        SweepSource::Synthesised(_) => &config.seeds[..],
+        SweepSource::Map(..) => config.seeds.get(..1).unwrap_or_default(),
+    };
     check::positive("contact_modulus", contact_modulus)?;
     if pressures.is_empty() {
         return Err(Error::invalid("nominal_pressure", 0.0, "at least one"));
@@ -407,18 +493,18 @@ pub fn sweep(
     for &p in pressures {
         check::positive("nominal_pressure", p)?;
     }
-    if config.seeds.is_empty() {
+    if seeds.is_empty() {
         return Err(Error::invalid("seeds", 0.0, ">= 1"));
     }
     let finest = *config
         .grids
         .last()
         .ok_or_else(|| Error::invalid("grids", 0.0, "at least one grid"))?;
-    bem::check_memory(finest, Boundary::Periodic)?;
+    bem::check_memory(finest, boundary)?;
     let mut order: Vec<usize> = (0..pressures.len()).collect();
     order.sort_by(|&a, &b| pressures[a].total_cmp(&pressures[b]));
     let sorted: Vec<f64> = order.iter().map(|&k| pressures[k]).collect();
-    let ns = config.seeds.len();
+    let ns = seeds.len();
     let np = pressures.len();
     let mut grids: Vec<GridResult> = config
         .grids
@@ -437,13 +523,18 @@ pub fn sweep(
         pressures.iter().map(|&p| PressureCounts::new(p)).collect();
     let total = ns * np * config.grids.len();
     let options = RoughOptions {
-        boundary: Boundary::Periodic,
+        boundary,
         solver: config.options,
         bins: None,
     };
     let mut done = 0;
-    for (si, &seed) in config.seeds.iter().enumerate() {
-        let surfaces = nested_surfaces(spectrum, &config.grids, config.size, seed)?;
+    for (si, &seed) in seeds.iter().enumerate() {
+        let surfaces = match source {
+            SweepSource::Synthesised(spectrum) => {
+                nested_surfaces(spectrum, &config.grids, config.size, seed)?
+            }
+            SweepSource::Map(map, _) => coarsened(map, &config.grids)?,
+        };
         for (gi, surf) in surfaces.iter().enumerate() {
             grids[gi].surface_rms_slope[si] = surf.rms_slope()?;
             let mut observer = SweepObserver {

@@ -213,7 +213,7 @@ fn finish(path: &Path, mut raw: Raw, options: &ReadOptions) -> Result<Topography
         if !options.fill_undefined {
             return Err(bad(format!(
                 "{undefined} of {} points are undefined (NaN, infinite or the format's missing-data marker); \
-                 ask for them to be filled by harmonic interpolation",
+                 fill them by harmonic interpolation with --fill-undefined (scenes: fill_undefined)",
                 raw.heights.len()
             )));
         }
