@@ -25,19 +25,18 @@ pub fn run(a: Args) -> anyhow::Result<()> {
 }
 
 /// Warn on stderr when q_s is clipped to what the coarsest grid resolves.
-fn warn_clipped(band: &validation::ResolvedBand, q_l: f64, bem: &BemArgs) -> anyhow::Result<()> {
+fn warn_clipped(band: &validation::ResolvedBand, q_l: f64, coarsest: usize, bem: &BemArgs) {
     if let (true, Some(q)) = (band.clipped, band.q_s_requested) {
         eprintln!(
             "warning: q_s = {} is not resolved by the coarsest grid ({}², {} pixels per wavelength); \
              the theories and the BEM use q_s = {} (= {}·q_l)",
             number(q, 6),
-            bem.settings()?.grids()?[0],
+            coarsest,
             number(bem.pixels_per_wavelength, 6),
             number(band.q_s, 6),
             number(band.q_s / q_l, 6)
         );
     }
-    Ok(())
 }
 
 /// The sweep's progress on stderr (one line per solve in logs of runs from 512²).
@@ -58,6 +57,9 @@ fn with_progress<T>(run: impl FnOnce(&mut dyn FnMut(SweepProgress)) -> T) -> T {
 fn compare(a: &MainArgs) -> anyhow::Result<()> {
     super::compare_plot::check(a)?;
     let map = a.measured.spec(a.spectrum.q_s)?;
+    if let (Some(_), Some(flag)) = (&map, a.bem.unused_with_surface()) {
+        anyhow::bail!("{flag} is not used with --surface: the map sets the grid");
+    }
     let (spectrum, described) = match &map {
         Some(m) => SpectrumSpec::HeightMap(m.clone()).build_described()?,
         None => (a.spectrum.build()?, None),
@@ -84,6 +86,12 @@ fn compare(a: &MainArgs) -> anyhow::Result<()> {
             if let Some(d) = described {
                 eprintln!("note: {d}; BEM on the map, {} boundary", boundary.name());
             }
+            if m.periodic {
+                let q_l = spectrum.q_min();
+                let band = config.sweep.map_band(q_l, spectrum.q_max(), surface.n)?;
+                let coarsest = validation::resolution_grids(surface.n, config.sweep.levels)?[0];
+                warn_clipped(&band, q_l, coarsest, &a.bem);
+            }
             with_progress(|p| {
                 validation::compare_surface(spectrum.as_ref(), &surface, boundary, &config, p)
             })?
@@ -93,8 +101,9 @@ fn compare(a: &MainArgs) -> anyhow::Result<()> {
             warn_clipped(
                 &config.sweep.band(q_l, Some(spectrum.q_max()))?,
                 q_l,
+                config.sweep.grids()?[0],
                 &a.bem,
-            )?;
+            );
             with_progress(|p| validation::compare(spectrum.as_ref(), &config, p))?
         }
     };
@@ -114,7 +123,12 @@ fn kappa_study(a: &KappaArgs) -> anyhow::Result<()> {
         nominal_pressure: a.pressure.clone(),
         sweep: a.bem.settings()?,
     };
-    warn_clipped(&config.sweep.band(a.q_l, a.q_s)?, a.q_l, &a.bem)?;
+    warn_clipped(
+        &config.sweep.band(a.q_l, a.q_s)?,
+        a.q_l,
+        config.sweep.grids()?[0],
+        &a.bem,
+    );
     let report = with_progress(|p| validation::kappa_study(&config, p))?;
     super::compare_plot::kappa(a, &report)?;
     print(&report, &a.format)

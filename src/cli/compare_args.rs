@@ -29,18 +29,18 @@ pub enum Study {
 /// BEM knobs shared by `compare` and `compare kappa`.
 #[derive(clap::Args, Debug, Clone)]
 pub struct BemArgs {
-    /// Finest grid side N; the BEM runs on N/4, N/2 and N (see --levels).
-    #[arg(long, default_value = "256")]
-    pub grid: usize,
+    /// Finest grid side N; the BEM runs on N/4, N/2 and N (see --levels) [default: 256].
+    #[arg(long, value_name = "N")]
+    pub grid: Option<usize>,
     /// Number of grids, each half the next (≥ 2).
     #[arg(long, default_value_t = DEFAULT_LEVELS)]
     pub levels: usize,
-    /// Number of realisations (seeds first-seed … first-seed + K − 1); A is averaged.
-    #[arg(long, default_value = "1")]
-    pub seeds: usize,
-    /// First seed (Pcg64Mcg, value-stable).
-    #[arg(long, default_value = "1")]
-    pub seed: u64,
+    /// Number of realisations (seeds first-seed … first-seed + K − 1); A is averaged [default: 1].
+    #[arg(long, value_name = "K")]
+    pub seeds: Option<usize>,
+    /// First seed (Pcg64Mcg, value-stable) [default: 1].
+    #[arg(long, value_name = "SEED")]
+    pub seed: Option<u64>,
     /// Exponent α of A(N) = A∞ + c N^−α (Campañá & Müser 2007: 0.7).
     #[arg(long, default_value_t = DEFAULT_ALPHA, allow_negative_numbers = true, conflicts_with = "fit_alpha")]
     pub alpha: f64,
@@ -56,12 +56,24 @@ pub struct BemArgs {
 }
 
 impl BemArgs {
+    /// The flags a measured map makes meaningless, if given.
+    pub fn unused_with_surface(&self) -> Option<&'static str> {
+        [
+            (self.grid.is_some(), "--grid"),
+            (self.seed.is_some(), "--seed"),
+            (self.seeds.is_some(), "--seeds"),
+        ]
+        .into_iter()
+        .find_map(|(given, flag)| given.then_some(flag))
+    }
+
     pub fn settings(&self) -> anyhow::Result<SweepSettings> {
-        anyhow::ensure!(self.seeds >= 1, "--seeds must be at least 1");
+        let (count, first) = (self.seeds.unwrap_or(1), self.seed.unwrap_or(1));
+        anyhow::ensure!(count >= 1, "--seeds must be at least 1");
         Ok(SweepSettings {
-            grid: self.grid,
+            grid: self.grid.unwrap_or(256),
             levels: self.levels,
-            seeds: (0..self.seeds as u64).map(|k| self.seed + k).collect(),
+            seeds: (0..count as u64).map(|k| first + k).collect(),
             alpha: (!self.fit_alpha).then_some(self.alpha),
             pixels_per_wavelength: self.pixels_per_wavelength,
             options: self.solver.options()?,
@@ -73,10 +85,11 @@ impl BemArgs {
 pub struct MainArgs {
     #[command(flatten)]
     pub spectrum: SpectrumArgs,
-    /// With --surface the BEM solves on the map itself (square N × N, periodic
-    /// with --periodic, else a free boundary) and on its 2×2-block-averaged
-    /// copies (--levels grids); --grid, --seed(s) and --pixels-per-wavelength
-    /// do not apply.
+    /// With --surface the BEM solves on the map (square N × N) and coarser copies
+    /// (--levels grids): a --periodic map low-passed at the q_s its coarsest copy
+    /// resolves (--pixels-per-wavelength) and resampled, plus the map as measured;
+    /// a non-periodic one (free boundary) as measured and block-averaged. The map
+    /// sets the grid: --grid, --seed and --seeds are errors.
     #[command(flatten)]
     pub measured: MeasuredArgs,
     #[command(flatten)]

@@ -9,8 +9,8 @@ use super::report::{
     TheoryCurve, TheoryKappa,
 };
 use super::sweep::{
-    default_pressures, resolution_grids, sweep_source, BandLimited, SweepProgress, SweepSettings,
-    SweepSource,
+    default_pressures, resolution_grids, sweep_source, BandLimited, SweepConfig, SweepProgress,
+    SweepSettings, SweepSource,
 };
 use crate::bem::{Boundary, Surface};
 use crate::corrected::{self, Theory};
@@ -142,17 +142,28 @@ pub fn compare(
 /// Compare every theory, evaluated on a measured map's spectrum, with the
 /// FFT-BEM on the map itself (`persson compare --surface`).
 ///
-/// The BEM runs on the map (`N × N`, side L, the given boundary: periodic
-/// for a periodic map, free otherwise) and on its block-averaged copies
-/// `N/2, N/4, …` (`config.sweep.levels` grids; [`super::sweep::coarsened`]),
-/// whose A(N) give the continuum limit as for [`compare`]. The map is one
-/// realisation: only the first seed is used and the seed scatter is absent.
-/// The theories use `spectrum` over its whole band (no clipping: the finest
-/// grid holds every mode of the map). `config.sweep.grid` is ignored.
+/// A **periodic** map (`N × N`, side L) is treated as a synthesised surface
+/// is in [`compare`]: q_s is clipped to what the coarsest grid `N/2^(levels−1)`
+/// resolves ([`SweepSettings::map_band`], `config.sweep.pixels_per_wavelength`),
+/// the map is low-passed there ([`super::sweep::band_limited_map`]) and
+/// sampled on every grid ([`super::sweep::band_limited_copies`]), so that
+/// every grid holds the same continuous surface and A(N) converges to its
+/// continuum limit; the theories use `spectrum` clipped at the same q_s. The
+/// unfiltered map is solved too, on its own grid, and reported as
+/// [`Comparison::measured`] ("the map as measured").
+///
+/// A map with a **free** boundary cannot be low-passed without ringing at its
+/// edges: the BEM runs on the map and on its block-averaged copies
+/// ([`super::sweep::coarsened`]), each a smoother surface, and the theories
+/// use `spectrum` over its whole band; the extrapolation is then a trend, not
+/// a continuum limit.
+///
+/// The map is one realisation: only the first seed is used and the seed
+/// scatter is absent. `config.sweep.grid` is ignored.
 ///
 /// # Errors
 /// As [`compare`]; `N` not divisible by `2^(levels−1)` or a coarsest grid
-/// below [`crate::bem::MIN_GRID`].
+/// below [`crate::bem::MIN_GRID`]; `pixels_per_wavelength` ≤ 2 on a periodic map.
 pub fn compare_surface(
     spectrum: &dyn Spectrum,
     map: &Surface,
@@ -174,11 +185,14 @@ fn compare_on(
     let mut sweep_config = config.sweep.config(q_l)?;
     let q_s = match map {
         None => config.sweep.band(q_l, Some(spectrum.q_max()))?.q_s,
-        Some((m, _)) => {
+        Some((m, b)) => {
             sweep_config.grids = resolution_grids(m.n, config.sweep.levels)?;
             sweep_config.size = m.size;
             sweep_config.seeds.truncate(1);
-            spectrum.q_max()
+            match b {
+                Boundary::Periodic => config.sweep.map_band(q_l, spectrum.q_max(), m.n)?.q_s,
+                Boundary::Free => spectrum.q_max(),
+            }
         }
     };
     let band = BandLimited::new(spectrum, q_s)?;
@@ -201,9 +215,37 @@ fn compare_on(
     // The BEM sweep and its continuum limit.
     let source = match map {
         None => SweepSource::Synthesised(&band),
+        Some((m, Boundary::Periodic)) => SweepSource::BandLimitedMap(m, q_s),
         Some((m, b)) => SweepSource::Map(m, b),
     };
     let sw = sweep_source(source, e_star, &pressures, &sweep_config, progress)?;
+    // The periodic map as measured (unfiltered), on its own grid.
+    let measured = match map {
+        Some((m, Boundary::Periodic)) => {
+            let own = SweepConfig {
+                grids: vec![m.n],
+                ..sweep_config.clone()
+            };
+            let s = sweep_source(
+                SweepSource::Map(m, Boundary::Periodic),
+                e_star,
+                &pressures,
+                &own,
+                progress,
+            )?;
+            s.grids.first().map(|g| BemGrid {
+                grid: g.grid,
+                contact_fraction: g.contact_fraction[0].clone(),
+                seed_scatter: vec![None; pressures.len()],
+                mean_separation: g.mean_separation[0].clone(),
+                surface_rms_slope: g.surface_rms_slope.clone(),
+                iterations: g.iterations,
+                residual: g.residual,
+                seconds: g.seconds,
+            })
+        }
+        _ => None,
+    };
     let means = sw.mean_contact_fraction();
     let gaps = sw.mean_separation();
     let cont = sw.extrapolate(config.sweep.alpha)?;
@@ -394,6 +436,7 @@ fn compare_on(
         },
         data,
         data_histogram,
+        measured,
     })
 }
 

@@ -66,8 +66,8 @@ pub use kappa_study::{kappa_study, HurstKappa, KappaStudy, KappaStudyConfig};
 pub use report::Comparison;
 #[cfg(feature = "bem")]
 pub use sweep::{
-    coarsened, continuum_limit, default_pressures, nested_surfaces, resolution_grids,
-    resolvable_q_max, resolve_q_s, sweep, sweep_source, BandLimited, Continuum, ResolvedBand,
-    Sweep, SweepConfig, SweepProgress, SweepSettings, SweepSource, DEFAULT_LEVELS,
-    DEFAULT_PIXELS_PER_WAVELENGTH,
+    band_limited_copies, band_limited_map, coarsened, continuum_limit, default_pressures,
+    nested_surfaces, resolution_grids, resolvable_q_max, resolve_q_s, sweep, sweep_source,
+    BandLimited, Continuum, ResolvedBand, Sweep, SweepConfig, SweepProgress, SweepSettings,
+    SweepSource, DEFAULT_LEVELS, DEFAULT_PIXELS_PER_WAVELENGTH,
 };

@@ -328,6 +328,10 @@ pub struct Comparison {
     /// The user's pressure histogram.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub data_histogram: Option<HistogramComparison>,
+    /// `compare --surface` on a periodic map: the BEM on the map as measured
+    /// (unfiltered, its own grid), beside the band-limited sweep.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub measured: Option<BemGrid>,
 }
 
 impl Comparison {
@@ -435,6 +439,12 @@ impl Tabulate for Comparison {
                 &format!("N = {}", g.grid),
             );
         }
+        if let Some(m) = &self.measured {
+            bem = bem.column(
+                "contact_fraction_as_measured",
+                &format!("N = {}, map as measured", m.grid),
+            );
+        }
         bem = bem
             .column("contact_fraction_extrapolated", "N → ∞")
             .column_digits("standard_error", "standard error", 2)
@@ -442,6 +452,9 @@ impl Tabulate for Comparison {
         for (k, c) in self.extrapolated.iter().enumerate() {
             let mut row = vec![Cell::Num(c.nominal_pressure)];
             row.extend(self.bem.iter().map(|g| Cell::Num(g.contact_fraction[k])));
+            if let Some(m) = &self.measured {
+                row.push(Cell::Num(m.contact_fraction[k]));
+            }
             row.extend([
                 Cell::Measured {
                     value: c.contact_fraction,
@@ -595,18 +608,26 @@ impl Tabulate for Comparison {
             );
         }
 
-        let mut solves = Table::new("bem_solves", "FFT-BEM solves (Polonsky & Keer 1999)")
+        let mut solves = Table::new("bem_solves", "FFT-BEM solves (Polonsky & Keer 1999)");
+        let labelled = self.measured.is_some();
+        if labelled {
+            solves = solves.column("surface", "surface");
+        }
+        solves = solves
             .column("grid", "N")
             .column("iterations", "iterations")
             .column_digits("residual", "largest residual ε", 2)
             .column_digits("seconds", "s", 3);
-        for g in &self.bem {
-            solves.push(vec![
+        let rows = self.bem.iter().map(|g| ("band-limited map", g));
+        for (what, g) in rows.chain(self.measured.iter().map(|g| ("map as measured", g))) {
+            let mut row = if labelled { vec![what.into()] } else { vec![] };
+            row.extend([
                 g.grid.into(),
                 g.iterations.into(),
                 g.residual.into(),
                 g.seconds.into(),
             ]);
+            solves.push(row);
         }
         tables.push(solves);
         tables

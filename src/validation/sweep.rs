@@ -299,6 +299,17 @@ impl SweepSettings {
         resolve_q_s(q_l, requested, grids[0], self.pixels_per_wavelength)
     }
 
+    /// The q_s of a sweep on a periodic `n × n` map (its grids `n/2^(levels−1)
+    /// … n`) whose spectrum runs from `q_l` up to `q_max`: the same rule as
+    /// [`SweepSettings::band`], with the map's grid as the finest.
+    ///
+    /// # Errors
+    /// As [`resolution_grids`] and [`resolve_q_s`].
+    pub fn map_band(&self, q_l: f64, q_max: f64, n: usize) -> Result<ResolvedBand> {
+        let grids = resolution_grids(n, self.levels)?;
+        resolve_q_s(q_l, Some(q_max), grids[0], self.pixels_per_wavelength)
+    }
+
     /// The sweep's configuration for a surface of lower cut-off `q_l`
     /// (side L = 2π/q_l).
     ///
@@ -419,6 +430,106 @@ pub enum SweepSource<'a> {
     /// only), and its block-averaged copies on the coarser grids
     /// ([`coarsened`]), solved with the given boundary.
     Map(&'a Surface, Boundary),
+    /// A periodic height map low-passed at `q_s` (1/unit of L) and sampled on
+    /// every grid ([`band_limited_copies`]): one surface on every grid, as
+    /// for [`SweepSource::Synthesised`]; the first seed only.
+    BandLimitedMap(&'a Surface, f64),
+}
+
+/// A periodic map low-passed in Fourier space: every mode with
+/// `|q| > q_s` removed (a circular cut, `q = 2π k/L`), the mean kept.
+///
+/// # Formula
+/// ```text
+/// h̃(x) = Σ_{|q| ≤ q_s} ĥ_q e^{iq·x},   ĥ_q = N⁻² Σ_x h(x) e^{−iq·x}
+/// ```
+///
+/// # Errors
+/// `q_s` not positive; internal FFT errors.
+pub fn band_limited_map(map: &Surface, q_s: f64) -> Result<Surface> {
+    check::positive("q_s", q_s)?;
+    let n = map.n;
+    let k_max = q_s * map.size / std::f64::consts::TAU;
+    let k2_max = k_max * k_max * (1.0 + 1e-12);
+    let mut fft = crate::bem::fft::Fft2::new(n, n)?;
+    let mut x = map.heights.clone();
+    let mut spec = vec![rustfft::num_complex::Complex64::new(0.0, 0.0); fft.spectrum_len()];
+    fft.forward(&mut x, &mut spec)?;
+    let scale = 1.0 / (n * n) as f64;
+    for kj in 0..fft.nc() {
+        for ki in 0..n {
+            let kx = if ki <= n / 2 {
+                ki as f64
+            } else {
+                ki as f64 - n as f64
+            };
+            let k2 = kx * kx + (kj * kj) as f64;
+            let z = &mut spec[kj * n + ki];
+            *z = if k2 <= k2_max { *z * scale } else { 0.0.into() };
+        }
+    }
+    let mut heights = vec![0.0; n * n];
+    fft.inverse(&mut spec, &mut heights)?;
+    Surface::new(n, map.size, heights)
+}
+
+/// A periodic map low-passed at `q_s` ([`band_limited_map`]) and sampled on
+/// every grid of `grids` (ascending, each dividing the next, the finest the
+/// map's): the band-limited map on its own grid, every `r`-th node of it on
+/// the coarser ones. Every mode lies below the coarsest grid's Nyquist
+/// wavevector (enforced), so each copy is the same continuous surface: its
+/// trigonometric interpolant is the band-limited map's (the coarse samples
+/// equal the Fourier-truncated resampling).
+///
+/// # Errors
+/// Grids as for [`coarsened`]; modes at or above the coarsest grid's Nyquist
+/// wavevector (`⌊q_s L/2π⌋ ≥ N_coarsest/2`: fewer than 2 pixels per
+/// wavelength); as [`band_limited_map`].
+pub fn band_limited_copies(map: &Surface, q_s: f64, grids: &[usize]) -> Result<Vec<Surface>> {
+    check_map_grids(map, grids)?;
+    let coarsest = grids[0];
+    let k_max = q_s * map.size / std::f64::consts::TAU;
+    if (k_max * (1.0 + 1e-12)).floor() >= (coarsest / 2) as f64 {
+        return Err(Error::invalid(
+            "q_s",
+            q_s,
+            format!(
+                "below the coarsest grid's Nyquist wavevector: q_s L/2π < {coarsest}/2 (L = {:e}; more than 2 pixels per wavelength)",
+                map.size
+            ),
+        ));
+    }
+    let fine = band_limited_map(map, q_s)?;
+    let nf = fine.n;
+    grids
+        .iter()
+        .map(|&n| {
+            let r = nf / n;
+            let heights = (0..n * n)
+                .map(|k| fine.heights[(k / n) * r * nf + (k % n) * r])
+                .collect();
+            Surface::new(n, map.size, heights)
+        })
+        .collect()
+}
+
+/// The grids of a map: ascending, each dividing the next, the finest the map's.
+fn check_map_grids(map: &Surface, grids: &[usize]) -> Result<()> {
+    let nf = map.n;
+    let ok = grids.last() == Some(&nf)
+        && grids
+            .windows(2)
+            .all(|w| w[0] < w[1] && w[1].is_multiple_of(w[0]));
+    if ok {
+        Ok(())
+    } else {
+        Err(Error::Inconsistent {
+            name: "grids".into(),
+            requirement: format!(
+                "ascending, each dividing the next, the finest the map's {nf} (got {grids:?})"
+            ),
+        })
+    }
 }
 
 /// A height map on coarser grids by averaging `r × r` blocks (`r = N/n`):
@@ -431,18 +542,7 @@ pub enum SweepSource<'a> {
 /// next; as [`Surface::new`].
 pub fn coarsened(map: &Surface, grids: &[usize]) -> Result<Vec<Surface>> {
     let nf = map.n;
-    let ok = grids.last() == Some(&nf)
-        && grids
-            .windows(2)
-            .all(|w| w[0] < w[1] && w[1].is_multiple_of(w[0]));
-    if !ok {
-        return Err(Error::Inconsistent {
-            name: "grids".into(),
-            requirement: format!(
-                "ascending, each dividing the next, the finest the map's {nf} (got {grids:?})"
-            ),
-        });
-    }
+    check_map_grids(map, grids)?;
     grids
         .iter()
         .map(|&n| {
@@ -479,12 +579,14 @@ pub fn sweep_source(
     progress: &mut dyn FnMut(SweepProgress),
 ) -> Result<Sweep> {
     let boundary = match source {
-        SweepSource::Synthesised(_) => Boundary::Periodic,
+        SweepSource::Synthesised(_) | SweepSource::BandLimitedMap(..) => Boundary::Periodic,
         SweepSource::Map(_, b) => b,
     };
     let seeds = match source {
         SweepSource::Synthesised(_) => &config.seeds[..],
-        SweepSource::Map(..) => config.seeds.get(..1).unwrap_or_default(),
+        SweepSource::Map(..) | SweepSource::BandLimitedMap(..) => {
+            config.seeds.get(..1).unwrap_or_default()
+        }
     };
     check::positive("contact_modulus", contact_modulus)?;
     if pressures.is_empty() {
@@ -534,6 +636,7 @@ pub fn sweep_source(
                 nested_surfaces(spectrum, &config.grids, config.size, seed)?
             }
             SweepSource::Map(map, _) => coarsened(map, &config.grids)?,
+            SweepSource::BandLimitedMap(map, q_s) => band_limited_copies(map, q_s, &config.grids)?,
         };
         for (gi, surf) in surfaces.iter().enumerate() {
             grids[gi].surface_rms_slope[si] = surf.rms_slope()?;
