@@ -326,9 +326,13 @@ fn a_scene_with_a_height_map_runs_area_and_bem() {
     assert_eq!(v["bem"]["grid"], 64);
 }
 
+/// A∞ of a band-limited map and of the synthesised surface of the same
+/// spectrum and seed differ by the map's tabulated (binned) spectrum and the
+/// synthesis' cell averages near q_s; the test asks for agreement within the
+/// synthesised compare's stated standard error.
 #[cfg(feature = "bem")]
 #[test]
-fn compare_on_a_map_solves_the_map_itself_and_its_coarsened_copies() {
+fn compare_on_a_periodic_map_converges_on_its_band_limited_copies() {
     let (map, size) = synthesised_map("compare_map.npy");
     let (m, s) = (map.to_string_lossy().into_owned(), format!("{size:?}"));
     let flags = [
@@ -343,32 +347,94 @@ fn compare_on_a_map_solves_the_map_itself_and_its_coarsened_copies() {
     ];
     let mut args = vec!["compare", "--periodic", "--json"];
     args.extend(flags);
-    let c = json(&args);
+    let (code, out, err) = common::persson(&args);
+    assert_eq!(code, 0, "{err}");
+    let c: serde_json::Value = serde_json::from_str(&out).unwrap();
     assert_eq!(c["grids"], serde_json::json!([16, 32, 64]));
     assert_eq!(c["size"].as_f64().unwrap(), size);
-    // The theories see the map's spectrum over its whole band, unclipped.
-    assert_eq!(c["spectrum"]["clipped"], false);
+    // q_s is clipped to what the coarsest grid resolves, 16 q_l / 4, with a
+    // warning naming both values; the theories use the clipped spectrum.
     let q_l = c["spectrum"]["q_l"].as_f64().unwrap();
     assert!((q_l / 1e4 - 1.0).abs() < 1e-12, "q_l = 2π/L: {q_l}");
-    // The finest grid is the map: `bem rough --surface` to the last digit.
+    assert_eq!(c["spectrum"]["clipped"], true);
+    let q_s = c["spectrum"]["q_s"].as_f64().unwrap();
+    assert!((q_s / (4.0 * q_l) - 1.0).abs() < 1e-12, "q_s = {q_s}");
+    assert!(
+        err.contains("warning: q_s = 306145") && err.contains("use q_s = 40000"),
+        "{err}"
+    );
+    // The map as measured: `bem rough --surface` to the last digit.
     let mut rough = vec!["bem", "rough", "--json"];
     rough.extend(flags);
     let r = json(&rough);
-    let finest = c["bem"].as_array().unwrap().last().unwrap().clone();
-    assert_eq!(finest["grid"], 64);
+    let measured = &c["measured"];
+    assert_eq!(measured["grid"], 64);
     for k in 0..2 {
-        assert_eq!(
-            finest["contact_fraction"][k],
-            r["points"][k]["contact_fraction"]
-        );
-        assert_eq!(
-            finest["mean_separation"][k],
-            r["points"][k]["mean_separation"]
+        for key in ["contact_fraction", "mean_separation"] {
+            assert_eq!(measured[key][k], r["points"][k][key], "{key}");
+        }
+    }
+    // A(N) converges: it falls with N by less at each step, and A∞ is
+    // positive, at most the finest grid's value and at least the lowest
+    // theory (Persson's), within its standard error.
+    let bem = c["bem"].as_array().unwrap();
+    let theories = c["theories"].as_array().unwrap();
+    let mut synthesised = vec![
+        "compare",
+        "--example",
+        "--grid",
+        "64",
+        "--contact-modulus",
+        "1e9",
+        "--pressure",
+        "1e6,1e7",
+        "--json",
+    ];
+    let y = json(&synthesised);
+    synthesised.clear();
+    let at = |g: usize, k: usize| bem[g]["contact_fraction"][k].as_f64().unwrap();
+    let k = 0; // σ0 = 1e6, A/A0 ≈ 0.2: the other is in full contact
+    let (a16, a32, a64) = (at(0, k), at(1, k), at(2, k));
+    assert!(a16 > a32 && a32 > a64, "A(N) = {a16}, {a32}, {a64}");
+    assert!(a16 - a32 > a32 - a64, "A(N) = {a16}, {a32}, {a64}");
+    let e = &c["extrapolated"][k];
+    let (a_inf, se) = (
+        e["contact_fraction"].as_f64().unwrap(),
+        e["standard_error"].as_f64().unwrap(),
+    );
+    let original = theories[0]["contact_fraction"][k].as_f64().unwrap();
+    assert_eq!(theories[0]["theory"], "original");
+    assert!(a_inf > 0.0 && a_inf <= a64 + se, "A∞ = {a_inf} ± {se}");
+    assert!(
+        a_inf >= original - se,
+        "A∞ = {a_inf} ± {se}, Persson {original}"
+    );
+    // The synthesised compare on the same spectrum and seed.
+    let ye = &y["extrapolated"][k];
+    let (b_inf, b_se) = (
+        ye["contact_fraction"].as_f64().unwrap(),
+        ye["standard_error"].as_f64().unwrap(),
+    );
+    assert!(
+        (a_inf - b_inf).abs() <= b_se,
+        "map A∞ = {a_inf} ± {se}, synthesised {b_inf} ± {b_se}"
+    );
+    // --grid, --seed and --seeds: the map sets the grid.
+    for flag in [["--grid", "64"], ["--seed", "2"], ["--seeds", "2"]] {
+        let mut args = vec!["compare", "--periodic"];
+        args.extend(flags);
+        args.extend(flag);
+        let (code, out, err) = common::persson(&args);
+        assert_eq!(code, 2, "{flag:?}: {err}");
+        assert!(out.is_empty());
+        assert!(
+            err.contains(&format!(
+                "{} is not used with --surface: the map sets the grid",
+                flag[0]
+            )),
+            "{err}"
         );
     }
-    // A coarsened copy is a smoother surface: more contact at the same load.
-    let coarse = c["bem"][0]["contact_fraction"][0].as_f64().unwrap();
-    assert!(coarse > finest["contact_fraction"][0].as_f64().unwrap());
     // The BEM needs a square map.
     let oblong = dir().join("oblong.txt");
     std::fs::write(
@@ -396,4 +462,76 @@ fn compare_on_a_map_solves_the_map_itself_and_its_coarsened_copies() {
         err.contains("oblong.txt") && err.contains("8 × 10 points") && err.contains("square"),
         "{err}"
     );
+}
+
+/// The finest grid of `compare --surface` on a periodic map is the
+/// band-limited map itself, solved directly to the last bit; the coarser
+/// copies sample the same continuous surface (equal rms slope of their
+/// trigonometric interpolants).
+#[cfg(feature = "bem")]
+#[test]
+fn the_finest_grid_of_a_periodic_map_is_its_band_limited_map() {
+    use persson::bem::rough::{self, RoughOptions};
+    use persson::bem::Boundary;
+    use persson::validation::{
+        band_limited_copies, band_limited_map, compare_surface, ComparisonConfig,
+    };
+    let (map, size) = synthesised_map("library_map.npy");
+    let surface = rough::read_surface(&map, size, Boundary::Periodic).unwrap();
+    let o = ReadOptions {
+        size: Some(SizeSpec::Size(size, None)),
+        periodic: true,
+        ..Default::default()
+    };
+    let a = analyse(&read(&map, &o).unwrap(), &AnalysisOptions::default()).unwrap();
+    let spectrum = a.psd.to_tabulated().unwrap();
+    let mut config = ComparisonConfig::new(1e9);
+    config.nominal_pressure = vec![1e6, 3e6];
+    let c = compare_surface(
+        &spectrum,
+        &surface,
+        Boundary::Periodic,
+        &config,
+        &mut |_| {},
+    )
+    .unwrap();
+    let q_s = c.spectrum.q_s;
+    let band = band_limited_map(&surface, q_s).unwrap();
+    let options = RoughOptions {
+        boundary: Boundary::Periodic,
+        solver: config.sweep.options,
+        bins: None,
+    };
+    let direct = rough::solve(&band, 1e9, &config.nominal_pressure, &options, &mut ()).unwrap();
+    let finest = c.bem.last().unwrap();
+    assert_eq!(finest.grid, 64);
+    for (k, p) in direct.iter().enumerate() {
+        assert_eq!(finest.contact_fraction[k], p.contact_fraction);
+        assert_eq!(finest.mean_separation[k], p.mean_separation);
+    }
+    let measured = c.measured.as_ref().unwrap();
+    let raw = rough::solve(&surface, 1e9, &config.nominal_pressure, &options, &mut ()).unwrap();
+    assert_eq!(measured.contact_fraction[0], raw[0].contact_fraction);
+    // One continuous surface on every grid: the interpolants' rms slopes
+    // agree to rounding, and no mode above q_s is left.
+    let copies = band_limited_copies(&surface, q_s, &[16, 32, 64]).unwrap();
+    let slope = copies[2].rms_slope().unwrap();
+    for s in &copies {
+        assert!((s.rms_slope().unwrap() / slope - 1.0).abs() < 1e-12);
+    }
+    assert_eq!(band_limited_map(&band, q_s).unwrap().heights.len(), 64 * 64);
+    let again = band_limited_map(&band, q_s).unwrap();
+    let diff = again
+        .heights
+        .iter()
+        .zip(&band.heights)
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f64::max);
+    assert!(
+        diff <= 1e-12 * band.rms_height(),
+        "low-pass not idempotent: {diff:e}"
+    );
+    // Fewer than 2 pixels per wavelength on the coarsest grid: modes on its
+    // Nyquist wavevector would alias.
+    assert!(band_limited_copies(&surface, 8.0 * 1e4, &[16, 32, 64]).is_err());
 }
