@@ -91,6 +91,12 @@ fn compare(a: &MainArgs) -> anyhow::Result<()> {
                 let band = config.sweep.map_band(q_l, spectrum.q_max(), surface.n)?;
                 let coarsest = validation::resolution_grids(surface.n, config.sweep.levels)?[0];
                 warn_clipped(&band, q_l, coarsest, &a.bem);
+            } else {
+                eprintln!(
+                    "warning: the map is not periodic: its coarser copies are block averages, \
+                     each a smoother surface, so N → ∞ is a resolution trend, not a continuum \
+                     limit; trust the finest grid (the map as measured)"
+                );
             }
             with_progress(|p| {
                 validation::compare_surface(spectrum.as_ref(), &surface, boundary, &config, p)
