@@ -140,13 +140,26 @@ pub fn separation(r: &SeparationReport) -> Result<Figure> {
 /// # Errors
 /// None in practice.
 pub fn stress(r: &StressReport) -> Result<Figure> {
+    // With a yield stress the legend gives A = A_el + A_pl.
+    let plastic_note = |el: f64, pl: f64| {
+        if pl > 0.0 {
+            format!(" (A_el {}, A_pl {})", number(el, 3), number(pl, 3))
+        } else {
+            String::new()
+        }
+    };
     let (x, y) = if r.physical() {
         ("normal stress σ (unit of E*)", "P(σ, ζ) (1/unit of E*)")
     } else {
         ("normal stress σ/σH", "σH P(σ, ζ)")
     };
+    let yield_note = match (r.yield_stress, r.yield_ratio) {
+        (Some(y), _) => format!(", σY = {}", number(y, 4)),
+        (None, Some(y)) => format!(", σY/σH = {}", number(y, 4)),
+        _ => String::new(),
+    };
     let mut fig = Figure::new(
-        format!("Stress distribution P(σ, ζ), {} start", r.start),
+        format!("Stress distribution P(σ, ζ), {} start{yield_note}", r.start),
         Axis::linear(x),
         Axis::linear(y),
     );
@@ -155,19 +168,21 @@ pub fn stress(r: &StressReport) -> Result<Figure> {
         let (label, s, p) = match c.zeta {
             Some(z) => (
                 format!(
-                    "ζ = {}, G = {}, A/A0 = {}",
+                    "ζ = {}, G = {}, A/A0 = {}{}",
                     number(z, 6),
                     number(c.g, 3),
-                    number(c.contact_fraction, 3)
+                    number(c.contact_fraction, 3),
+                    plastic_note(c.elastic_fraction, c.plastic_fraction)
                 ),
                 &c.sigma,
                 &c.density,
             ),
             None => (
                 format!(
-                    "G = {}, A/A0 = {}",
+                    "G = {}, A/A0 = {}{}",
                     number(c.g, 6),
-                    number(c.contact_fraction, 3)
+                    number(c.contact_fraction, 3),
+                    plastic_note(c.elastic_fraction, c.plastic_fraction)
                 ),
                 &c.sigma_ratio,
                 &c.scaled_density,
