@@ -42,6 +42,7 @@ impl SolverArgs {
             tolerance: self.tolerance,
             max_iterations: self.max_iterations,
             warm_start: true,
+            yield_stress: None,
         })
     }
 }
