@@ -3,8 +3,11 @@
 //! plastic disc, bad input.
 #![cfg(feature = "bem")]
 
+use persson::bem::histogram::integral;
 use persson::bem::surface::synthesize;
-use persson::bem::{hertz, Boundary, Control, Operator, Options, Solution, Solver};
+use persson::bem::{
+    hertz, saturated_histogram, Boundary, Control, Operator, Options, Solution, Solver,
+};
 use persson::spectrum::{Amplitude, SelfAffine};
 use persson::Error;
 
@@ -220,5 +223,47 @@ fn bad_yield_stress_is_rejected() {
     match s.solve(&h, Control::MeanPressure(0.005), &tight) {
         Err(Error::NotConverged { residual, .. }) => assert!(residual > TOL),
         other => panic!("{other:?}"),
+    }
+}
+
+/// Tamaas 2.9 `KatoSaturated` on the same surface (persson's synthesis:
+/// H = 0.8, rms slope 0.1, q_l = 2π, q_r = 4 q_l, q_s = 16 q_l, seed 1, L = 1,
+/// 64²), E* = 1, p̄ = 0.006, tol 1e-10 (examples/tamaas_compare.py
+/// --grids 64 --yield-stress 0.02 0.05): nodes in contact and at σY.
+const TAMAAS_64: [(f64, usize, usize); 2] = [(0.02, 1340, 1135), (0.05, 672, 326)];
+
+/// Nodes the counts may move by: a node within rounding of a bound can
+/// flip on another platform; any change of the solution moves more.
+const TAMAAS_NODES: usize = 2;
+
+/// Relative agreement of the histogram's integral with the contact
+/// fraction (a sum of N²-normalised counts).
+const HISTOGRAM_REL_TOL: f64 = 1e-12;
+
+#[test]
+fn saturated_matches_tamaas_kato_saturated_at_64() {
+    let n = 64;
+    let h = rough(n, 1);
+    for (y, contact, plastic) in TAMAAS_64 {
+        let s = solve(
+            Boundary::Periodic,
+            &h,
+            n,
+            Control::MeanPressure(0.006),
+            Some(y),
+        );
+        let nodes = |f: f64| (f * (n * n) as f64).round() as usize;
+        assert!(nodes(s.contact_fraction).abs_diff(contact) <= TAMAAS_NODES);
+        assert!(nodes(s.plastic_fraction).abs_diff(plastic) <= TAMAAS_NODES);
+        // The histogram keeps the plastic peak apart.
+        let hist = saturated_histogram(&s.pressure, 20, y).unwrap();
+        assert_eq!(hist.plastic_fraction, s.plastic_fraction);
+        let el = integral(&hist.bins);
+        assert!((el - s.elastic_fraction).abs() <= HISTOGRAM_REL_TOL * s.elastic_fraction);
+        assert!(
+            (el + hist.plastic_fraction - s.contact_fraction).abs()
+                <= HISTOGRAM_REL_TOL * s.contact_fraction
+        );
+        assert_eq!(hist.bins.last().unwrap().sigma_high, y);
     }
 }

@@ -43,7 +43,7 @@ pub mod saturated;
 pub mod solver;
 pub mod surface;
 
-pub use histogram::{pressure_histogram, HistogramBin};
+pub use histogram::{pressure_histogram, saturated_histogram, HistogramBin, SaturatedHistogram};
 pub use kernel::{Boundary, Operator};
 pub use solver::{Control, Iteration, Options, Solution, Solver};
 pub use surface::Surface;
