@@ -267,3 +267,58 @@ fn saturated_matches_tamaas_kato_saturated_at_64() {
         assert_eq!(hist.bins.last().unwrap().sigma_high, y);
     }
 }
+
+/// `persson bem rough --yield-stress`: the JSON point carries the elastic
+/// and plastic fractions, which add up to the total; σY ≤ σ0 is refused.
+#[cfg(feature = "cli")]
+#[test]
+fn cli_rough_yield_stress() {
+    let run = |y: &str| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_persson"))
+            .args([
+                "bem",
+                "rough",
+                "--hurst",
+                "0.8",
+                "--q-l",
+                "6.283",
+                "--q-r",
+                "25.13",
+                "--q-s",
+                "100",
+                "--rms-slope",
+                "0.1",
+                "--size",
+                "1",
+                "--grid",
+                "32",
+                "--modulus",
+                "1",
+                "--pressure",
+                "0.006",
+                "--yield-stress",
+                y,
+                "--json",
+            ])
+            .env("RUST_BACKTRACE", "0")
+            .output()
+            .unwrap()
+    };
+    let out = run("0.02");
+    assert!(out.status.success());
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["yield_stress"], 0.02);
+    let p = &v["points"][0];
+    let (total, el, pl) = (
+        p["contact_fraction"].as_f64().unwrap(),
+        p["elastic_fraction"].as_f64().unwrap(),
+        p["plastic_fraction"].as_f64().unwrap(),
+    );
+    assert!(pl > 0.0);
+    // Node counts over 32²: the sum is exact.
+    assert_eq!(el + pl, total);
+    assert!(p["plastic_displacement_max"].as_f64().unwrap() > 0.0);
+    let bad = run("0.006");
+    assert!(!bad.status.success());
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("no solution"));
+}
