@@ -84,11 +84,7 @@ pub(super) fn solve(
             ));
         }
     }
-    let elastic = Options {
-        yield_stress: None,
-        ..*opts
-    };
-    let mut sol = solver.solve_observed(heights, control, &elastic, observer)?;
+    let mut sol = solver.solve_elastic(heights, control, opts, observer)?;
     if sol.pressure.iter().all(|&p| p <= y) {
         // The elastic solution satisfies the bound: it is the saturated one.
         sol.seconds = start.elapsed().as_secs_f64();

@@ -312,9 +312,20 @@ impl Solver {
         opts: &Options,
         observer: &mut dyn FnMut(Iteration),
     ) -> Result<Solution> {
-        if let Some(y) = opts.yield_stress {
-            return super::saturated::solve(self, heights, control, y, opts, observer);
+        match opts.yield_stress {
+            Some(y) => super::saturated::solve(self, heights, control, y, opts, observer),
+            None => self.solve_elastic(heights, control, opts, observer),
         }
+    }
+
+    /// The elastic problem (`opts.yield_stress` is not read).
+    pub(super) fn solve_elastic(
+        &mut self,
+        heights: &[f64],
+        control: Control,
+        opts: &Options,
+        observer: &mut dyn FnMut(Iteration),
+    ) -> Result<Solution> {
         let start = Instant::now();
         let n = self.op.n();
         let n2 = n * n;
