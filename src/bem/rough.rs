@@ -71,7 +71,8 @@ pub struct RoughPoint {
     pub nominal_pressure: f64,
     /// A/A0: fraction of nodes with p > 0.
     pub contact_fraction: f64,
-    /// Mean gap ū = Σ gap / N² (unit of L).
+    /// Mean gap ū = Σ gap / N² (unit of L); with a yield stress the
+    /// plastic nodes' interpenetration enters it as a negative gap.
     pub mean_separation: f64,
     /// Approach from first touch (unit of L).
     pub approach: f64,
