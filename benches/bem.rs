@@ -63,3 +63,31 @@ fn rough_periodic(bencher: divan::Bencher, n: usize) {
             .contact_fraction
     });
 }
+
+#[divan::bench(args = [256, 512], sample_count = 3)]
+fn rough_saturated(bencher: divan::Bencher, n: usize) {
+    // The surface of rough_periodic at p = 0.006 E* with σY = 0.02 E*
+    // (the Tamaas KatoSaturated comparison of examples/tamaas_compare.py).
+    let ql = std::f64::consts::TAU;
+    let s = SelfAffine::new(
+        ql,
+        4.0 * ql,
+        ql * n as f64 / 4.0,
+        0.8,
+        Amplitude::RmsSlope(0.1),
+    )
+    .unwrap();
+    let surf = synthesize(&s, n, 1.0, 1).unwrap();
+    let opts = Options {
+        tolerance: 1e-10,
+        yield_stress: Some(0.02),
+        ..Options::default()
+    };
+    bencher.bench_local(|| {
+        let mut solver = Solver::new(Operator::new(Boundary::Periodic, n, 1.0, 1.0).unwrap());
+        solver
+            .solve(&surf.heights, Control::MeanPressure(0.006), &opts)
+            .unwrap()
+            .plastic_fraction
+    });
+}

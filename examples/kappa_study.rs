@@ -29,6 +29,7 @@ fn main() -> persson::Result<()> {
                 tolerance: 1e-8,
                 max_iterations: 10_000,
                 warm_start: true,
+                yield_stress: None,
             },
             ..SweepSettings::default()
         },

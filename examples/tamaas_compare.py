@@ -16,6 +16,14 @@ a rough case (self-affine H = 0.8, rms slope 0.1, q_l = 2π/L, q_r = 4 q_l,
 q_s = (N/4)(2π/L), seed 1, mean pressure 0.005 E*), and prints one line per
 case: both times, their ratio, the contact fractions and the largest pressure
 difference relative to the peak pressure.
+
+With `--yield-stress Y1 Y2 …` it compares the saturated contact instead
+(0 ≤ p ≤ σY, Tamaas' KatoSaturated against `Options::yield_stress` through
+`examples/saturated_solve.rs`, build it with
+`cargo build --release --example saturated_solve`): the rough surface above
+at mean pressure `--pressure` (default 0.006 E*), one line per grid and σY
+with both times, the total and plastic fractions and their relative
+differences.
 """
 import argparse
 import json
@@ -42,6 +50,48 @@ def tamaas_solve(heights, pressure, tol):
     return np.array(model.traction).reshape(n, n), dt
 
 
+def tamaas_saturated(heights, pressure, y, tol):
+    n = heights.shape[0]
+    model = tm.ModelFactory.createModel(tm.model_type.basic_2d, [1.0, 1.0], [n, n])
+    model.E = 1.0
+    model.nu = 0.0
+    solver = tm.KatoSaturated(model, heights, tol, y)
+    solver.max_iter = 100000
+    t = time.perf_counter()
+    solver.solve(pressure)
+    dt = time.perf_counter() - t
+    return np.array(model.traction).reshape(n, n), dt
+
+
+def saturated(a, tmp):
+    ql = 2 * math.pi
+    for n in a.grids:
+        surf = os.path.join(tmp, "rough.npy")
+        pf = os.path.join(tmp, "p_rough.npy")
+        # The surface: persson's synthesis (seed 1), written to .npy.
+        ours(a.bin, ["rough", "--hurst", "0.8", "--q-l", repr(ql), "--q-r", repr(4 * ql),
+                     "--q-s", repr(ql * n / 4), "--rms-slope", "0.1", "--size", "1",
+                     "--grid", str(n), "--seed", "1", "--modulus", "1",
+                     "--pressure", repr(a.pressure), "--tolerance", "1e-4",
+                     "--surface-out", surf])
+        heights = np.load(surf)
+        for y in a.yield_stress:
+            out = subprocess.run([a.saturated_bin, surf, repr(a.pressure), repr(y),
+                                  repr(a.tolerance), pf],
+                                 check=True, capture_output=True, text=True).stdout
+            us = json.loads(out)
+            p_tm, t_tm = tamaas_saturated(heights, a.pressure, y, a.tolerance)
+            tot = float((p_tm > 0).mean())
+            pl = float((p_tm >= y * (1 - 1e-12)).mean())
+            rel = lambda x, ref: abs(x - ref) / ref if ref > 0 else abs(x)
+            print(f"saturated {n:>5}  sigma_Y {y:g}  tamaas {t_tm:7.3f} s  persson "
+                  f"{us['seconds']:7.3f} s  speed-up {t_tm / us['seconds']:6.1f}x  "
+                  f"A/A0 {tot:.6f} vs {us['contact_fraction']:.6f} "
+                  f"(rel {rel(us['contact_fraction'], tot):.1e})  A_pl/A0 {pl:.6f} vs "
+                  f"{us['plastic_fraction']:.6f} (rel {rel(us['plastic_fraction'], pl):.1e})  "
+                  f"mean p {p_tm.mean():.6e}  iterations {us['iterations']}", flush=True)
+
+
 def ours(binary, args):
     out = subprocess.run([binary, "bem"] + args + ["--json"], check=True,
                          capture_output=True, text=True).stdout
@@ -65,10 +115,16 @@ def main():
     ap.add_argument("--grids", type=int, nargs="+", default=[512, 1024])
     ap.add_argument("--tolerance", type=float, default=1e-10)
     ap.add_argument("--bin", default="target/release/persson")
+    ap.add_argument("--yield-stress", type=float, nargs="*", default=None)
+    ap.add_argument("--pressure", type=float, default=0.006)
+    ap.add_argument("--saturated-bin", default="target/release/examples/saturated_solve")
     a = ap.parse_args()
     if os.environ.get("OMP_NUM_THREADS") != "1":
         print("warning: set OMP_NUM_THREADS=1 for a one-thread comparison")
     tmp = tempfile.mkdtemp()
+    if a.yield_stress:
+        saturated(a, tmp)
+        return
     for n in a.grids:
         # Hertz, periodic: the same nodes and paraboloid as `persson bem hertz`.
         x = np.arange(n) / n - 0.5

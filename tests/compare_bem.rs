@@ -40,6 +40,7 @@ fn config(finest: usize, seeds: u64) -> SweepConfig {
             tolerance: 1e-8,
             max_iterations: 10_000,
             warm_start: true,
+            yield_stress: None,
         },
         size: std::f64::consts::TAU,
     }

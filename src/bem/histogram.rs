@@ -71,6 +71,65 @@ pub fn pressure_histogram(pressure: &[f64], bins: usize) -> Result<Vec<Histogram
         .collect())
 }
 
+/// A pressure histogram with a yield stress: the elastic part in bins and
+/// the plastic part (the δ-peak at σY) as its own number.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[non_exhaustive]
+pub struct SaturatedHistogram {
+    /// Bins of the nodes with 0 < p < σY, equal widths from 0 to σY:
+    /// they integrate to `elastic_fraction`.
+    pub bins: Vec<HistogramBin>,
+    /// Fraction of nodes at p = σY (the weight of the δ-peak at σY).
+    pub plastic_fraction: f64,
+}
+
+/// Histogram of a saturated solution ([`super::Options::yield_stress`]):
+/// the nodes with `0 < p < σY` in `bins` equal bins on `[0, σY)`, the nodes
+/// at `p ≥ σY` counted apart (not smeared into the last bin).
+///
+/// # Formula
+/// ```text
+/// P_k = #{i : p_i ∈ bin k, 0 < p_i < σY} / (N² Δσ),  Δσ = σY / bins
+/// Σ_k P_k Δσ + #{p_i = σY}/N² = A/A0
+/// ```
+///
+/// # Errors
+/// `bins == 0`, σY not finite and > 0.
+pub fn saturated_histogram(
+    pressure: &[f64],
+    bins: usize,
+    yield_stress: f64,
+) -> Result<SaturatedHistogram> {
+    if bins == 0 {
+        return Err(Error::invalid("bins", 0.0, ">= 1"));
+    }
+    let y = crate::error::check::positive("yield_stress", yield_stress)?;
+    let width = y / bins as f64;
+    let mut counts = vec![0usize; bins];
+    let mut plastic = 0usize;
+    for &p in pressure.iter().filter(|p| **p > 0.0) {
+        if p >= y {
+            plastic += 1;
+        } else {
+            counts[((p / width) as usize).min(bins - 1)] += 1;
+        }
+    }
+    let nodes = pressure.len().max(1) as f64;
+    let norm = 1.0 / (nodes * width);
+    Ok(SaturatedHistogram {
+        bins: counts
+            .iter()
+            .enumerate()
+            .map(|(k, &c)| HistogramBin {
+                sigma_low: k as f64 * width,
+                sigma_high: (k + 1) as f64 * width,
+                density: c as f64 * norm,
+            })
+            .collect(),
+        plastic_fraction: plastic as f64 / nodes,
+    })
+}
+
 /// Fine bins per nominal pressure σ0 of [`PressureCounts`] (rebinned to the
 /// requested number of bins at the end, on edges that are multiples of σ0/200).
 const FINE_BINS_PER_SIGMA0: f64 = 200.0;

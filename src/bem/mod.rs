@@ -19,6 +19,7 @@
 //! - [`fft`]: planned 2-D real FFT (rustfft + realfft), no allocation per call.
 //! - [`kernel`]: the compliance operators 𝒢 (periodic, free).
 //! - [`solver`]: Polonsky–Keer constrained conjugate gradient.
+//! - [`saturated`]: the same with a yield stress, 0 ≤ p ≤ σY.
 //! - [`hertz`]: closed-form Hertz solution and the η validation.
 //! - [`surface`]: Fourier synthesis from any [`crate::Spectrum`], height-map I/O.
 //! - [`rough`]: the rough-contact loop (one solve per nominal pressure) and its report.
@@ -38,10 +39,11 @@ pub mod hertz;
 pub mod histogram;
 pub mod kernel;
 pub mod rough;
+pub mod saturated;
 pub mod solver;
 pub mod surface;
 
-pub use histogram::{pressure_histogram, HistogramBin};
+pub use histogram::{pressure_histogram, saturated_histogram, HistogramBin, SaturatedHistogram};
 pub use kernel::{Boundary, Operator};
 pub use solver::{Control, Iteration, Options, Solution, Solver};
 pub use surface::Surface;

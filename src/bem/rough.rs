@@ -31,7 +31,7 @@ use std::path::Path;
 
 use serde::Serialize;
 
-use super::histogram::{pressure_histogram, HistogramBin};
+use super::histogram::{pressure_histogram, saturated_histogram, HistogramBin};
 use super::{check_memory, surface, Boundary, Control, Iteration, Operator, Options, Solution};
 use super::{Solver, Surface};
 use crate::error::{check, Error, Result};
@@ -71,7 +71,8 @@ pub struct RoughPoint {
     pub nominal_pressure: f64,
     /// A/A0: fraction of nodes with p > 0.
     pub contact_fraction: f64,
-    /// Mean gap ū = Σ gap / N² (unit of L).
+    /// Mean gap ū = Σ gap / N² (unit of L); with a yield stress the
+    /// plastic nodes' interpenetration enters it as a negative gap.
     pub mean_separation: f64,
     /// Approach from first touch (unit of L).
     pub approach: f64,
@@ -81,9 +82,24 @@ pub struct RoughPoint {
     pub residual: f64,
     /// Wall time of the solve, s.
     pub seconds: f64,
-    /// P(σ) of the solve, when bins were asked for.
+    /// P(σ) of the solve, when bins were asked for (with a yield stress:
+    /// the nodes below σY, on `[0, σY)`; the δ-peak at σY is
+    /// `plastic_fraction`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub histogram: Option<Vec<HistogramBin>>,
+    /// With a yield stress: fraction of nodes with 0 < p < σY.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub elastic_fraction: Option<f64>,
+    /// With a yield stress: fraction of nodes at p = σY.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub plastic_fraction: Option<f64>,
+    /// With a yield stress: mean plastic displacement (interpenetration)
+    /// over the nodes at σY (unit of L).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub plastic_displacement_mean: Option<f64>,
+    /// With a yield stress: largest plastic displacement (unit of L).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub plastic_displacement_max: Option<f64>,
 }
 
 /// Progress of [`solve`], once per solver iteration.
@@ -158,10 +174,13 @@ pub fn solve(
             },
         )?;
         observer.solution(index, &sol)?;
-        let histogram = match options.bins {
-            Some(b) => Some(pressure_histogram(&sol.pressure, b)?),
-            None => None,
+        let yield_stress = options.solver.yield_stress;
+        let histogram = match (options.bins, yield_stress) {
+            (Some(b), Some(y)) => Some(saturated_histogram(&sol.pressure, b, y)?.bins),
+            (Some(b), None) => Some(pressure_histogram(&sol.pressure, b)?),
+            (None, _) => None,
         };
+        let plastic = |v: f64| yield_stress.map(|_| v);
         points.push(RoughPoint {
             nominal_pressure: p,
             contact_fraction: sol.contact_fraction,
@@ -171,6 +190,10 @@ pub fn solve(
             residual: sol.residual,
             seconds: sol.seconds,
             histogram,
+            elastic_fraction: plastic(sol.elastic_fraction),
+            plastic_fraction: plastic(sol.plastic_fraction),
+            plastic_displacement_mean: plastic(sol.plastic_displacement_mean),
+            plastic_displacement_max: plastic(sol.plastic_displacement_max),
         });
     }
     Ok(points)
@@ -284,6 +307,9 @@ pub struct RoughReport {
     pub contact_modulus: f64,
     /// Solver tolerance ε.
     pub tolerance: f64,
+    /// Yield stress σY (unit of E*), when the pressures are bounded by it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub yield_stress: Option<f64>,
     /// rms height of the surface on the grid (unit of L).
     pub rms_height: f64,
     /// rms slope of the surface on the grid (its trigonometric interpolant).
@@ -313,6 +339,7 @@ pub fn rough_contact(
         boundary: options.boundary,
         contact_modulus,
         tolerance: options.solver.tolerance,
+        yield_stress: options.solver.yield_stress,
         rms_height: surface.rms_height(),
         rms_slope: surface.rms_slope()?,
         surface: source,
@@ -336,6 +363,9 @@ impl Tabulate for RoughReport {
         .scalar("tolerance", "tolerance ε", self.tolerance)
         .scalar("rms_height", "h_rms", self.rms_height)
         .scalar("rms_slope", "h'_rms", self.rms_slope);
+        if let Some(y) = self.yield_stress {
+            t = t.scalar("yield_stress", "σY", y);
+        }
         match &self.surface {
             SurfaceSource::HeightMap { file } => t = t.scalar("file", "surface", file.as_str()),
             SurfaceSource::Synthesised { seed, spectrum } => {
@@ -354,8 +384,16 @@ impl Tabulate for RoughReport {
             .column("iterations", "iterations")
             .column_digits("residual", "residual ε", 2)
             .column_digits("seconds", "s", 3);
+        let saturated = self.yield_stress.is_some();
+        if saturated {
+            t = t
+                .column("elastic_fraction", "A_el/A0")
+                .column("plastic_fraction", "A_pl/A0")
+                .column("plastic_displacement_mean", "mean plastic displacement")
+                .column("plastic_displacement_max", "max plastic displacement");
+        }
         for p in &self.points {
-            t.push(vec![
+            let mut row: Vec<Cell> = vec![
                 p.nominal_pressure.into(),
                 p.contact_fraction.into(),
                 p.mean_separation.into(),
@@ -363,7 +401,18 @@ impl Tabulate for RoughReport {
                 p.iterations.into(),
                 p.residual.into(),
                 p.seconds.into(),
-            ]);
+            ];
+            if saturated {
+                for v in [
+                    p.elastic_fraction,
+                    p.plastic_fraction,
+                    p.plastic_displacement_mean,
+                    p.plastic_displacement_max,
+                ] {
+                    row.push(v.unwrap_or(0.0).into());
+                }
+            }
+            t.push(row);
         }
         let mut tables = vec![t];
         if self.points.iter().any(|p| p.histogram.is_some()) {

@@ -79,15 +79,20 @@ pub struct Options {
     /// Start from the previous solution (rescaled to the new load) when the
     /// workspace holds one: speeds up load sweeps.
     pub warm_start: bool,
+    /// Yield stress σY (hardness, unit of E*): pressures are bounded by
+    /// `0 ≤ p ≤ σY` (the saturated problem, see [`super::saturated`]).
+    /// `None`: the elastic problem, solved exactly as without this field.
+    pub yield_stress: Option<f64>,
 }
 
 impl Default for Options {
-    /// `tolerance = 1e-10`, `max_iterations = 10 000`, no warm start.
+    /// `tolerance = 1e-10`, `max_iterations = 10 000`, no warm start, no yield stress.
     fn default() -> Self {
         Options {
             tolerance: 1e-10,
             max_iterations: 10_000,
             warm_start: false,
+            yield_stress: None,
         }
     }
 }
@@ -116,8 +121,17 @@ pub struct Solution {
     pub mean_pressure: f64,
     /// Approach δ from first touch (see the module docs), unit of L.
     pub approach: f64,
-    /// A/A0: fraction of nodes with p > 0.
+    /// A/A0: fraction of nodes with p > 0 (elastic + plastic).
     pub contact_fraction: f64,
+    /// Fraction of nodes with 0 < p < σY (all of the contact without a yield stress).
+    pub elastic_fraction: f64,
+    /// Fraction of nodes with p = σY (0 without a yield stress).
+    pub plastic_fraction: f64,
+    /// Mean interpenetration (plastic displacement, −gap) over the nodes at
+    /// p = σY, unit of L (0 without plastic nodes).
+    pub plastic_displacement_mean: f64,
+    /// Largest interpenetration over the nodes at p = σY, unit of L.
+    pub plastic_displacement_max: f64,
     /// CG iterations used.
     pub iterations: usize,
     /// Final ε (≤ tol).
@@ -134,15 +148,15 @@ pub struct Solution {
 /// next solve.
 #[derive(Debug)]
 pub struct Solver {
-    op: Operator,
-    p: Vec<f64>,
-    g: Vec<f64>,
-    t: Vec<f64>,
-    r: Vec<f64>,
+    pub(super) op: Operator,
+    pub(super) p: Vec<f64>,
+    pub(super) g: Vec<f64>,
+    pub(super) t: Vec<f64>,
+    pub(super) r: Vec<f64>,
     /// Indices and values of the sparse correction of one step.
     sparse_idx: Vec<usize>,
     sparse_val: Vec<f64>,
-    warm: bool,
+    pub(super) warm: bool,
 }
 
 /// Independent partial sums per reduction (lets the compiler vectorise).
@@ -292,6 +306,20 @@ impl Solver {
     /// # Errors
     /// As [`Solver::solve`].
     pub fn solve_observed(
+        &mut self,
+        heights: &[f64],
+        control: Control,
+        opts: &Options,
+        observer: &mut dyn FnMut(Iteration),
+    ) -> Result<Solution> {
+        match opts.yield_stress {
+            Some(y) => super::saturated::solve(self, heights, control, y, opts, observer),
+            None => self.solve_elastic(heights, control, opts, observer),
+        }
+    }
+
+    /// The elastic problem (`opts.yield_stress` is not read).
+    pub(super) fn solve_elastic(
         &mut self,
         heights: &[f64],
         control: Control,
@@ -561,6 +589,10 @@ impl Solver {
             mean_pressure,
             approach,
             contact_fraction: stats.count as f64 / n2 as f64,
+            elastic_fraction: stats.count as f64 / n2 as f64,
+            plastic_fraction: 0.0,
+            plastic_displacement_mean: 0.0,
+            plastic_displacement_max: 0.0,
             iterations: k,
             residual,
             seconds: start.elapsed().as_secs_f64(),
@@ -714,6 +746,10 @@ impl Solver {
             mean_pressure: pm,
             approach: u0,
             contact_fraction: 1.0,
+            elastic_fraction: 1.0,
+            plastic_fraction: 0.0,
+            plastic_displacement_mean: 0.0,
+            plastic_displacement_max: 0.0,
             iterations: 0,
             residual: 0.0,
             seconds: start.elapsed().as_secs_f64(),

@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use anyhow::Context;
 use persson::bem::rough::{self, Observer, RoughOptions, RoughProgress, SurfaceSource};
 use persson::bem::surface::{synthesize, write_npy};
-use persson::bem::{check_memory, hertz::HertzCase, Solution};
+use persson::bem::{check_memory, hertz::HertzCase, Options, Solution};
 use persson::error::check;
 use persson::table::csv_number;
 
@@ -68,7 +68,10 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
     let pressures = super::args::pressures(&a.pressure, a.spectrum.example)?;
     let options = RoughOptions {
         boundary: a.boundary,
-        solver: a.solver.options()?,
+        solver: Options {
+            yield_stress: a.yield_stress,
+            ..a.solver.options()?
+        },
         bins: a.histogram.as_ref().map(|_| a.bins),
     };
     let e_star = a.material.build(a.spectrum.example)?.contact_modulus();

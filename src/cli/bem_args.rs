@@ -42,6 +42,7 @@ impl SolverArgs {
             tolerance: self.tolerance,
             max_iterations: self.max_iterations,
             warm_start: true,
+            yield_stress: None,
         })
     }
 }
@@ -120,6 +121,10 @@ pub struct RoughArgs {
     /// Write the (synthesised or read) surface heights as .npy.
     #[arg(long)]
     pub surface_out: Option<PathBuf>,
+    /// Yield stress σY (hardness, unit of the pressure): pressures are bounded by
+    /// 0 ≤ p ≤ σY and each point reports the elastic and plastic fractions.
+    #[arg(long, allow_negative_numbers = true)]
+    pub yield_stress: Option<f64>,
     #[command(flatten)]
     pub solver: SolverArgs,
     #[command(flatten)]

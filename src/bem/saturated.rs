@@ -1,0 +1,325 @@
+//! The saturated (elastic–perfectly-plastic) contact: pressures bounded by
+//! the yield stress, `0 ≤ p ≤ σY`.
+//!
+//! # What it solves
+//! The model of Persson's finite-σY theory: the material yields where the
+//! local pressure reaches the hardness σY, and there the surfaces
+//! interpenetrate by the plastic deformation. With the compliance operator 𝒢
+//! and the rigid heights `h` (see [`super::solver`]):
+//! ```text
+//! minimise  ½ ⟨p, 𝒢p⟩ − ⟨p, h⟩   subject to  0 ≤ p ≤ σY  and the load (or the approach)
+//! KKT, gap g = 𝒢p − (h − max h) − δ:
+//!   p = 0       ⇒ g ≥ 0
+//!   0 < p < σY  ⇒ g = 0
+//!   p = σY      ⇒ g ≤ 0   (−g is the plastic displacement)
+//! ```
+//! The problem is convex (𝒢 is positive definite), so the solution is unique.
+//!
+//! # Algorithm
+//! First the elastic problem is solved by [`Solver`]'s Polonsky–Keer
+//! conjugate gradient; if its largest pressure is ≤ σY it is the saturated
+//! solution too (returned as it is: bit for bit the elastic answer).
+//! Otherwise, starting from the elastic pressure clipped at σY, the
+//! Polonsky–Keer conjugate gradient (Polonsky & Keer 1999) runs on the free
+//! set `{0 < p < σY}` with the box projection of the bound-constrained
+//! variants (Almqvist et al. 2007; Bugnicourt et al. 2018; Frérot et al.
+//! 2020, Tamaas' `KatoSaturated` solves the same problem by a projected
+//! gradient): after each step the pressure is clipped to `[0, σY]`, nodes at
+//! `p = 0` that overlap (`g < ḡ`) and nodes at `p = σY` that open (`g > ḡ`)
+//! re-enter the free set (restarting the conjugation), and under load
+//! control the pressure below σY is scaled back to the load with the bound
+//! kept: `Σ_{p<σY} min(s p, σY) + σY N_pl = N² p̄`, solved for `s` by
+//! Newton's method from below
+//! (exact in a few steps: the sum is piecewise linear and concave in `s`).
+//! ḡ is the mean gap over the free set (the approach), 0 under penetration
+//! control. The gap is recomputed from `p` every iteration (two applications
+//! of 𝒢 per iteration).
+//!
+//! # Convergence criterion
+//! ```text
+//! ε = [Σ_{0<p<σY} p |g − ḡ| + Σ_{p=σY} σY max(0, g − ḡ)] / (Σ p · σ_h)
+//! ```
+//! the elastic solver's measure on the free set plus the violation at the
+//! plastic nodes; a solve stops when ε ≤ `tolerance` and no node at `p = 0`
+//! overlaps by more than `tolerance · σ_h`, and fails with
+//! [`Error::NotConverged`] (with ε) after `max_iterations` iterations (both
+//! stages together).
+//!
+//! # References
+//! I. A. Polonsky & L. M. Keer, Wear 231, 206–219 (1999),
+//! doi:10.1016/S0043-1648(99)00113-1.
+//! A. Almqvist, F. Sahlin, R. Larsson & S. Glavatskih, Tribol. Int. 40,
+//! 574–579 (2007), doi:10.1016/j.triboint.2005.11.008 (elastic–perfectly
+//! plastic contact with the pressure bounded by the hardness).
+//! R. Bugnicourt, P. Sainsot, D. Dureisseix, C. Gauthier & A. A. Lubrecht,
+//! Tribol. Lett. 66, 29 (2018), doi:10.1007/s11249-017-0980-z.
+//! L. Frérot, G. Anciaux, V. Rey, S. Pham-Ba & J.-F. Molinari, J. Open
+//! Source Softw. 5, 2121 (2020), doi:10.21105/joss.02121 (Tamaas).
+
+use std::time::Instant;
+
+use super::solver::{Control, Iteration, Options, Solution, Solver};
+use crate::error::{check, Error, Result};
+
+/// Solve with the yield stress `y` (called by [`Solver::solve_observed`]
+/// when `opts.yield_stress` is set).
+pub(super) fn solve(
+    solver: &mut Solver,
+    heights: &[f64],
+    control: Control,
+    y: f64,
+    opts: &Options,
+    observer: &mut dyn FnMut(Iteration),
+) -> Result<Solution> {
+    let start = Instant::now();
+    check::positive("yield_stress", y)?;
+    if let Control::MeanPressure(pm) = control {
+        if pm.is_finite() && pm > 0.0 && y <= pm {
+            return Err(Error::invalid(
+                "yield_stress",
+                y,
+                format!(
+                    "above the mean pressure {pm:e}: with σY ≤ p̄ the load cannot be carried (no solution exists)"
+                ),
+            ));
+        }
+    }
+    let mut sol = solver.solve_elastic(heights, control, opts, observer)?;
+    if sol.pressure.iter().all(|&p| p <= y) {
+        // The elastic solution satisfies the bound: it is the saturated one.
+        sol.seconds = start.elapsed().as_secs_f64();
+        return Ok(sol);
+    }
+    let n = solver.op.n();
+    let n2 = n * n;
+    let h_max = heights.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let h_mean = heights.iter().sum::<f64>() / n2 as f64;
+    let sigma_h =
+        (heights.iter().map(|h| (h - h_mean).powi(2)).sum::<f64>() / (n2 as f64 - 1.0)).sqrt();
+    let (target, offset) = match control {
+        Control::MeanPressure(pm) => (Some(pm * n2 as f64), h_max),
+        Control::Penetration(d) => (None, h_max - d),
+    };
+    let stiffness = solver.op.e_star() * std::f64::consts::PI * n as f64 / solver.op.size();
+
+    let mut p = std::mem::take(&mut sol.pressure);
+    p.iter_mut().for_each(|v| *v = v.min(y));
+    if let Some(total) = target {
+        project_load(&mut p, y, total);
+    }
+    let mut g = std::mem::take(&mut sol.gap);
+    let mut r = std::mem::take(&mut sol.displacement);
+    let mut t = vec![0.0; n2];
+    let mut k = sol.iterations;
+    let mut conjugate = false;
+    let mut g_old = 1.0;
+    let (residual, g_bar) = loop {
+        solver.op.apply(&p, &mut r)?;
+        for ((g, u), h) in g.iter_mut().zip(&r).zip(heights) {
+            *g = u - (h - offset);
+        }
+        // The free set's mean gap (the approach under load control).
+        let (mut nf, mut sum_gf, mut g_max_pl) = (0usize, 0.0, f64::NEG_INFINITY);
+        for (&pk, &gk) in p.iter().zip(&g) {
+            if pk > 0.0 && pk < y {
+                nf += 1;
+                sum_gf += gk;
+            } else if pk >= y {
+                g_max_pl = g_max_pl.max(gk);
+            }
+        }
+        let g_bar = match target {
+            Some(_) if nf > 0 => sum_gf / nf as f64,
+            Some(_) if g_max_pl.is_finite() => g_max_pl,
+            _ => 0.0,
+        };
+        let (mut sum_p, mut num, mut off_min) = (0.0, 0.0, f64::INFINITY);
+        for (&pk, &gk) in p.iter().zip(&g) {
+            let dg = gk - g_bar;
+            sum_p += pk;
+            if pk <= 0.0 {
+                off_min = off_min.min(dg);
+            } else if pk < y {
+                num += pk * dg.abs();
+            } else {
+                num += y * dg.max(0.0);
+            }
+        }
+        let eps = if sum_p > 0.0 {
+            num / (sum_p * sigma_h)
+        } else {
+            0.0
+        };
+        let contact = p.iter().filter(|&&v| v > 0.0).count();
+        observer(Iteration {
+            iteration: k,
+            residual: eps,
+            contact_fraction: contact as f64 / n2 as f64,
+        });
+        if eps <= opts.tolerance && off_min >= -opts.tolerance * sigma_h {
+            break (eps, g_bar);
+        }
+        if k >= opts.max_iterations {
+            return Err(Error::NotConverged {
+                what: "saturated Polonsky–Keer contact solver (yield stress)".into(),
+                iterations: k,
+                residual: eps,
+                tolerance: opts.tolerance,
+            });
+        }
+        // Search direction on the free set, conjugate to the last one.
+        let g_norm: f64 = p
+            .iter()
+            .zip(&g)
+            .filter(|(&pk, _)| pk > 0.0 && pk < y)
+            .map(|(_, &gk)| (gk - g_bar).powi(2))
+            .sum();
+        let beta = if conjugate && g_old > 0.0 {
+            g_norm / g_old
+        } else {
+            0.0
+        };
+        g_old = g_norm;
+        for ((tk, &pk), &gk) in t.iter_mut().zip(&p).zip(&g) {
+            *tk = if pk > 0.0 && pk < y {
+                gk - g_bar + beta * *tk
+            } else {
+                0.0
+            };
+        }
+        solver.op.apply(&t, &mut r)?;
+        let (mut s_t, mut s_r, mut s_rt, mut s_gt) = (0.0, 0.0, 0.0, 0.0);
+        for (((&pk, &gk), &tk), &rk) in p.iter().zip(&g).zip(&t).zip(&r) {
+            if pk > 0.0 && pk < y {
+                s_t += tk;
+                s_r += rk;
+                s_rt += rk * tk;
+                s_gt += (gk - g_bar) * tk;
+            }
+        }
+        let denom = match target {
+            Some(_) if nf > 0 => s_rt - s_r / nf as f64 * s_t,
+            _ => s_rt,
+        };
+        let tau = if denom > 0.0 && denom.is_finite() {
+            s_gt / denom
+        } else {
+            0.0
+        };
+        // Step, box projection, re-entry at both bounds.
+        let entry = if tau > 0.0 { tau } else { stiffness };
+        let mut changed = false;
+        for ((pk, &tk), &gk) in p.iter_mut().zip(&t).zip(&g) {
+            let dg = gk - g_bar;
+            let v = if *pk <= 0.0 {
+                if dg < 0.0 {
+                    changed = true;
+                    -entry * dg
+                } else {
+                    0.0
+                }
+            } else if *pk >= y {
+                if dg > 0.0 {
+                    changed = true;
+                    y - entry * dg
+                } else {
+                    y
+                }
+            } else {
+                *pk - tau * tk
+            };
+            *pk = v.clamp(0.0, y);
+        }
+        conjugate = !changed;
+        if let Some(total) = target {
+            project_load(&mut p, y, total);
+        }
+        k += 1;
+    };
+
+    // Final state: r = 𝒢p and g from it (convergence is declared only on a
+    // fresh gap); the gap is measured from the free set's level.
+    let mut contact = 0usize;
+    let mut plastic = 0usize;
+    let (mut d_sum, mut d_max) = (0.0, 0.0f64);
+    for (&pk, gk) in p.iter().zip(g.iter_mut()) {
+        *gk -= g_bar;
+        if pk > 0.0 {
+            contact += 1;
+        }
+        if pk >= y {
+            plastic += 1;
+            let d = (-*gk).max(0.0);
+            d_sum += d;
+            d_max = d_max.max(d);
+        }
+    }
+    let mean_pressure = p.iter().sum::<f64>() / n2 as f64;
+    solver.p.clone_from(&p);
+    solver.warm = true;
+    let approach = match control {
+        Control::MeanPressure(_) => g_bar,
+        Control::Penetration(d) => d,
+    };
+    Ok(Solution {
+        pressure: p,
+        gap: g,
+        displacement: r,
+        mean_pressure,
+        approach,
+        contact_fraction: contact as f64 / n2 as f64,
+        elastic_fraction: (contact - plastic) as f64 / n2 as f64,
+        plastic_fraction: plastic as f64 / n2 as f64,
+        plastic_displacement_mean: if plastic > 0 {
+            d_sum / plastic as f64
+        } else {
+            0.0
+        },
+        plastic_displacement_max: d_max,
+        iterations: k,
+        residual,
+        seconds: start.elapsed().as_secs_f64(),
+    })
+}
+
+/// Scale the pressure to the load with the bound kept: `p ← min(s p, y)`
+/// on the nodes below `y` (the plastic nodes stay at `y`), with
+/// `Σ p = total`; all nodes are scaled when the plastic ones alone carry
+/// more than the load. Newton's method from below (the sum is concave and
+/// piecewise linear in `s`, so every step stays below the root and ends on
+/// it after at most one step per saturated group). When even all contact
+/// nodes at `y` carry less than the load, they are all set to `y` (the next
+/// step's re-entry widens the contact).
+fn project_load(p: &mut [f64], y: f64, total: f64) {
+    let plastic = p.iter().filter(|&&v| v >= y).count() as f64 * y;
+    let (fixed, rest) = if plastic < total {
+        (y, total - plastic)
+    } else {
+        (f64::INFINITY, total)
+    };
+    let sum: f64 = p.iter().filter(|&&v| v < fixed).sum();
+    if sum <= 0.0 {
+        return;
+    }
+    let mut s = rest / sum;
+    for _ in 0..200 {
+        let (mut f, mut slope) = (0.0, 0.0);
+        for &v in p.iter().filter(|&&v| v < fixed) {
+            let w = s * v;
+            if w < y {
+                f += w;
+                slope += v;
+            } else {
+                f += y;
+            }
+        }
+        let miss = rest - f;
+        if miss <= 1e-15 * rest || slope <= 0.0 {
+            break;
+        }
+        s += miss / slope;
+    }
+    p.iter_mut()
+        .filter(|v| **v < fixed)
+        .for_each(|v| *v = (s * *v).min(y));
+}

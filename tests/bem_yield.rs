@@ -1,0 +1,324 @@
+//! The saturated contact (yield stress, 0 ≤ p ≤ σY) of the boundary-element
+//! solver (issue 14): the elastic limit, the KKT conditions, the Hertz
+//! plastic disc, bad input.
+#![cfg(feature = "bem")]
+
+use persson::bem::histogram::integral;
+use persson::bem::surface::synthesize;
+use persson::bem::{
+    hertz, saturated_histogram, Boundary, Control, Operator, Options, Solution, Solver,
+};
+use persson::spectrum::{Amplitude, SelfAffine};
+use persson::Error;
+
+/// Tolerance of the solves here (ε of the module docs).
+const TOL: f64 = 1e-12;
+
+/// The saturated solution equals the elastic one when σY is above the
+/// elastic maximum (issue 14: to 1e-12; the solver returns the elastic
+/// answer itself, so the difference is exactly 0).
+const ELASTIC_LIMIT_TOL: f64 = 1e-12;
+
+/// Load balance: Σp/N² = p̄ up to rounding of N² terms.
+const LOAD_REL_TOL: f64 = 1e-12;
+
+/// KKT residuals relative to the rms height: the gap on the free set and
+/// the overlap off the contact are within the tolerance of ε (times a
+/// margin for the pointwise vs the pressure-weighted measure).
+const GAP_REL_TOL: f64 = 1e-8;
+
+fn rough(n: usize, seed: u64) -> Vec<f64> {
+    let ql = std::f64::consts::TAU;
+    let s = SelfAffine::new(
+        ql,
+        4.0 * ql,
+        ql * n as f64 / 4.0,
+        0.8,
+        Amplitude::RmsSlope(0.1),
+    )
+    .unwrap();
+    synthesize(&s, n, 1.0, seed).unwrap().heights
+}
+
+fn rms(h: &[f64]) -> f64 {
+    let m = h.iter().sum::<f64>() / h.len() as f64;
+    (h.iter().map(|v| (v - m).powi(2)).sum::<f64>() / (h.len() as f64 - 1.0)).sqrt()
+}
+
+fn opts(y: Option<f64>) -> Options {
+    Options {
+        tolerance: TOL,
+        yield_stress: y,
+        ..Options::default()
+    }
+}
+
+fn solve(boundary: Boundary, h: &[f64], n: usize, control: Control, y: Option<f64>) -> Solution {
+    let mut s = Solver::new(Operator::new(boundary, n, 1.0, 1.0).unwrap());
+    s.solve(h, control, &opts(y)).unwrap()
+}
+
+/// The KKT conditions of the saturated problem, to rounding.
+fn check_kkt(sol: &Solution, y: f64, sigma_h: f64) {
+    let n2 = sol.pressure.len() as f64;
+    let (mut contact, mut plastic) = (0usize, 0usize);
+    for (&p, &g) in sol.pressure.iter().zip(&sol.gap) {
+        assert!((0.0..=y).contains(&p), "p = {p} outside [0, {y}]");
+        if p == 0.0 {
+            assert!(g >= -GAP_REL_TOL * sigma_h, "overlap {g} at p = 0");
+        } else if p < y {
+            assert!(g.abs() <= GAP_REL_TOL * sigma_h, "gap {g} at 0 < p < σY");
+        } else {
+            assert!(g <= GAP_REL_TOL * sigma_h, "opening {g} at p = σY");
+        }
+        contact += usize::from(p > 0.0);
+        plastic += usize::from(p >= y);
+        // Interpenetration (g < 0 beyond rounding) only where p = σY.
+        if g < -GAP_REL_TOL * sigma_h {
+            assert_eq!(p, y);
+        }
+    }
+    assert_eq!(sol.contact_fraction, contact as f64 / n2);
+    assert_eq!(sol.plastic_fraction, plastic as f64 / n2);
+    assert_eq!(
+        sol.elastic_fraction,
+        (contact - plastic) as f64 / n2,
+        "elastic + plastic = total"
+    );
+    assert!(sol.residual <= TOL);
+}
+
+#[test]
+fn yield_above_elastic_maximum_is_the_elastic_solution() {
+    let n = 32;
+    let h = rough(n, 1);
+    for boundary in [Boundary::Periodic, Boundary::Free] {
+        let e = solve(boundary, &h, n, Control::MeanPressure(0.005), None);
+        let p_max = e.pressure.iter().copied().fold(0.0, f64::max);
+        for y in [1.0001 * p_max, 1e300] {
+            let s = solve(boundary, &h, n, Control::MeanPressure(0.005), Some(y));
+            for (a, b) in s.pressure.iter().zip(&e.pressure) {
+                assert!((a - b).abs() <= ELASTIC_LIMIT_TOL * p_max);
+            }
+            assert_eq!(s.contact_fraction, e.contact_fraction);
+            assert_eq!(s.plastic_fraction, 0.0);
+            assert_eq!(s.elastic_fraction, e.contact_fraction);
+        }
+    }
+}
+
+#[test]
+fn saturated_rough_solution_satisfies_kkt() {
+    let n = 64;
+    let h = rough(n, 2);
+    let sh = rms(&h);
+    for boundary in [Boundary::Periodic, Boundary::Free] {
+        let pm = 0.006;
+        let e = solve(boundary, &h, n, Control::MeanPressure(pm), None);
+        for y in [0.02, 0.05] {
+            let s = solve(boundary, &h, n, Control::MeanPressure(pm), Some(y));
+            check_kkt(&s, y, sh);
+            assert!((s.mean_pressure - pm).abs() <= LOAD_REL_TOL * pm);
+            assert!(
+                s.plastic_fraction > 0.0,
+                "σY = {y} is below the elastic peak"
+            );
+            // Saturation spreads the load: more contact than elastic.
+            assert!(s.contact_fraction > e.contact_fraction);
+            assert!(s.plastic_displacement_max >= s.plastic_displacement_mean);
+            assert!(s.plastic_displacement_mean > 0.0);
+            // The reported plastic displacement is the interpenetration at p = σY.
+            let d_max = s
+                .pressure
+                .iter()
+                .zip(&s.gap)
+                .filter(|(&p, _)| p == y)
+                .map(|(_, &g)| -g)
+                .fold(0.0, f64::max);
+            assert_eq!(s.plastic_displacement_max, d_max);
+        }
+    }
+}
+
+#[test]
+fn saturated_penetration_control_satisfies_kkt() {
+    let n = 64;
+    let h = rough(n, 3);
+    let sh = rms(&h);
+    let e = solve(
+        Boundary::Periodic,
+        &h,
+        n,
+        Control::MeanPressure(0.006),
+        None,
+    );
+    let y = 0.02;
+    let s = solve(
+        Boundary::Periodic,
+        &h,
+        n,
+        Control::Penetration(e.approach),
+        Some(y),
+    );
+    check_kkt(&s, y, sh);
+    // Same approach, softer material: less load than the elastic solve.
+    assert!(s.mean_pressure < e.mean_pressure);
+}
+
+/// Radius of the plastic zone of the Hertz case with σY = 0.8 p₀, from the
+/// count of nodes at σY (c = √(n Δ²/π)), at N and 2N.
+#[test]
+fn hertz_plastic_zone_is_a_converging_disc() {
+    let radius = |n: usize| {
+        let case = hertz::HertzCase::new(n, Boundary::Free);
+        let y = 0.8 * case.peak_pressure();
+        let mut s = Solver::new(Operator::new(Boundary::Free, n, 1.0, 1.0).unwrap());
+        let sol = s
+            .solve(
+                &case.heights(),
+                Control::MeanPressure(case.mean_pressure()),
+                &opts(Some(y)),
+            )
+            .unwrap();
+        let r = case.radii();
+        let dx = 1.0 / n as f64;
+        // A disc: every plastic node lies within the equivalent radius plus
+        // one cell diagonal, and every node well inside is plastic.
+        let count = sol.pressure.iter().filter(|&&p| p == y).count();
+        let c = (count as f64 * dx * dx / std::f64::consts::PI).sqrt();
+        for (&p, &rk) in sol.pressure.iter().zip(&r) {
+            if p == y {
+                assert!(rk <= c + 1.5 * dx, "plastic node at r = {rk}, c = {c}");
+            } else if rk < c - 1.5 * dx {
+                panic!("elastic node at r = {rk} inside the plastic disc c = {c}");
+            }
+        }
+        c
+    };
+    let (c64, c128) = (radius(64), radius(128));
+    // Between the grids the radius moves by less than one 64² cell.
+    const RADIUS_STEP: f64 = 1.0 / 64.0;
+    assert!((c64 - c128).abs() < RADIUS_STEP, "c = {c64}, {c128}");
+    // And it is a fraction of the Hertz radius a = 0.1 (σY = 0.8 p₀: the
+    // elastic disc r < 0.6 a would yield; plasticity widens it).
+    assert!(c128 > 0.04 && c128 < 0.1, "c = {c128}");
+}
+
+#[test]
+fn bad_yield_stress_is_rejected() {
+    let n = 32;
+    let h = rough(n, 4);
+    let mut s = Solver::new(Operator::new(Boundary::Periodic, n, 1.0, 1.0).unwrap());
+    for y in [0.0, -1.0, f64::NAN, f64::INFINITY, 0.005, 0.004] {
+        let r = s.solve(&h, Control::MeanPressure(0.005), &opts(Some(y)));
+        match r {
+            Err(Error::InvalidParameter { name, .. }) => assert_eq!(name, "yield_stress"),
+            other => panic!("σY = {y}: {other:?}"),
+        }
+    }
+    let tight = Options {
+        max_iterations: 3,
+        ..opts(Some(0.01))
+    };
+    match s.solve(&h, Control::MeanPressure(0.005), &tight) {
+        Err(Error::NotConverged { residual, .. }) => assert!(residual > TOL),
+        other => panic!("{other:?}"),
+    }
+}
+
+/// Tamaas 2.9 `KatoSaturated` on the same surface (persson's synthesis:
+/// H = 0.8, rms slope 0.1, q_l = 2π, q_r = 4 q_l, q_s = 16 q_l, seed 1, L = 1,
+/// 64²), E* = 1, p̄ = 0.006, tol 1e-10 (examples/tamaas_compare.py
+/// --grids 64 --yield-stress 0.02 0.05): nodes in contact and at σY.
+const TAMAAS_64: [(f64, usize, usize); 2] = [(0.02, 1340, 1135), (0.05, 672, 326)];
+
+/// Nodes the counts may move by: a node within rounding of a bound can
+/// flip on another platform; any change of the solution moves more.
+const TAMAAS_NODES: usize = 2;
+
+/// Relative agreement of the histogram's integral with the contact
+/// fraction (a sum of N²-normalised counts).
+const HISTOGRAM_REL_TOL: f64 = 1e-12;
+
+#[test]
+fn saturated_matches_tamaas_kato_saturated_at_64() {
+    let n = 64;
+    let h = rough(n, 1);
+    for (y, contact, plastic) in TAMAAS_64 {
+        let s = solve(
+            Boundary::Periodic,
+            &h,
+            n,
+            Control::MeanPressure(0.006),
+            Some(y),
+        );
+        let nodes = |f: f64| (f * (n * n) as f64).round() as usize;
+        assert!(nodes(s.contact_fraction).abs_diff(contact) <= TAMAAS_NODES);
+        assert!(nodes(s.plastic_fraction).abs_diff(plastic) <= TAMAAS_NODES);
+        // The histogram keeps the plastic peak apart.
+        let hist = saturated_histogram(&s.pressure, 20, y).unwrap();
+        assert_eq!(hist.plastic_fraction, s.plastic_fraction);
+        let el = integral(&hist.bins);
+        assert!((el - s.elastic_fraction).abs() <= HISTOGRAM_REL_TOL * s.elastic_fraction);
+        assert!(
+            (el + hist.plastic_fraction - s.contact_fraction).abs()
+                <= HISTOGRAM_REL_TOL * s.contact_fraction
+        );
+        assert_eq!(hist.bins.last().unwrap().sigma_high, y);
+    }
+}
+
+/// `persson bem rough --yield-stress`: the JSON point carries the elastic
+/// and plastic fractions, which add up to the total; σY ≤ σ0 is refused.
+#[cfg(feature = "cli")]
+#[test]
+fn cli_rough_yield_stress() {
+    let run = |y: &str| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_persson"))
+            .args([
+                "bem",
+                "rough",
+                "--hurst",
+                "0.8",
+                "--q-l",
+                "6.283",
+                "--q-r",
+                "25.13",
+                "--q-s",
+                "100",
+                "--rms-slope",
+                "0.1",
+                "--size",
+                "1",
+                "--grid",
+                "32",
+                "--modulus",
+                "1",
+                "--pressure",
+                "0.006",
+                "--yield-stress",
+                y,
+                "--json",
+            ])
+            .env("RUST_BACKTRACE", "0")
+            .output()
+            .unwrap()
+    };
+    let out = run("0.02");
+    assert!(out.status.success());
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["yield_stress"], 0.02);
+    let p = &v["points"][0];
+    let (total, el, pl) = (
+        p["contact_fraction"].as_f64().unwrap(),
+        p["elastic_fraction"].as_f64().unwrap(),
+        p["plastic_fraction"].as_f64().unwrap(),
+    );
+    assert!(pl > 0.0);
+    // Node counts over 32²: the sum is exact.
+    assert_eq!(el + pl, total);
+    assert!(p["plastic_displacement_max"].as_f64().unwrap() > 0.0);
+    let bad = run("0.006");
+    assert!(!bad.status.success());
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("no solution"));
+}
