@@ -101,8 +101,10 @@ impl Error {
     }
 }
 
-/// Validation helpers: each returns the value when it is in range, else an
+/// Validation helpers (for the `persson` binary too, hence public but hidden):
+/// each returns the value when it is in range, else an
 /// [`Error::InvalidParameter`] naming the parameter and the allowed range.
+#[doc(hidden)]
 pub mod check {
     use super::{Error, Result};
 

@@ -16,7 +16,7 @@
 //!   with every area).
 //!
 //! # Pieces
-//! - [`fft`]: planned 2-D real FFT (rustfft + realfft), no allocation per call.
+//! - `fft` (internal): planned 2-D real FFT (rustfft + realfft), no allocation per call.
 //! - [`kernel`]: the compliance operators 𝒢 (periodic, free).
 //! - [`solver`]: Polonsky–Keer constrained conjugate gradient.
 //! - [`hertz`]: closed-form Hertz solution and the η validation.
@@ -33,7 +33,7 @@
 //! # Ok(()) }
 //! ```
 
-pub mod fft;
+pub(crate) mod fft;
 pub mod hertz;
 pub mod histogram;
 pub mod kernel;
