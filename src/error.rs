@@ -67,7 +67,7 @@ pub enum Error {
 }
 
 /// A number as a person writes it: plain in [1e-4, 1e7), else scientific.
-pub fn num(v: f64) -> String {
+pub(crate) fn num(v: f64) -> String {
     if v == 0.0 || !v.is_finite() || (1e-4..1e7).contains(&v.abs()) {
         format!("{v}")
     } else {
