@@ -198,7 +198,15 @@ fn error_time_figure() -> BoxResult<Figure> {
     let mut adaptive = Vec::new();
     for k in 2..=13 {
         let tol = 10f64.powi(-k);
-        let (t, r) = time(|| persson::quad::integrate("gallery", f, 0.0, 1.0, 0.0, tol, 1_000_000));
+        // bilby's adaptive G10K21 rule, as the crate's own quadrature uses it
+        let (t, r) = time(|| {
+            bilby::AdaptiveIntegrator::default()
+                .with_pair(bilby::GKPair::G10K21)
+                .with_rel_tol(tol)
+                .with_abs_tol(0.0)
+                .with_max_evals(1_000_000)
+                .integrate(0.0, 1.0, f)
+        });
         adaptive.push((t, rel(r?.value)));
     }
     let mut trapezoid = Vec::new();

@@ -23,7 +23,7 @@
 //! ```text
 //! G(G_e) = ∫₀^{G_e} dg / f(A(g)) = G_e + ∫₀^{G_e} (1 − f)/f dg
 //! ```
-//! is a quadrature (adaptive Gauss–Kronrod in ln g, [`crate::quad::integrate`]),
+//! is a quadrature (adaptive Gauss–Kronrod in ln g, by bilby),
 //! inverted for G_e by safeguarded Newton steps (dG/dG_e = 1/f). Several loads
 //! are solved in increasing G, each one continuing the quadrature of the last,
 //! so a load curve costs little more than its largest point. The error bound
@@ -360,6 +360,7 @@ impl Theory {
 
 /// A/A0 from one theory at one G, with its error bound.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[non_exhaustive]
 pub struct Solution {
     /// G = V_c/(2σ0²), the input.
     pub g: f64,
@@ -619,6 +620,7 @@ impl OdeSolver {
 
 /// One point of a corrected-theory area curve.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[non_exhaustive]
 pub struct TheoryPoint {
     /// Nominal pressure σ0.
     pub nominal_pressure: f64,

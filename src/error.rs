@@ -67,7 +67,7 @@ pub enum Error {
 }
 
 /// A number as a person writes it: plain in [1e-4, 1e7), else scientific.
-pub fn num(v: f64) -> String {
+pub(crate) fn num(v: f64) -> String {
     if v == 0.0 || !v.is_finite() || (1e-4..1e7).contains(&v.abs()) {
         format!("{v}")
     } else {
@@ -101,8 +101,10 @@ impl Error {
     }
 }
 
-/// Validation helpers: each returns the value when it is in range, else an
+/// Validation helpers (for the `persson` binary too, hence public but hidden):
+/// each returns the value when it is in range, else an
 /// [`Error::InvalidParameter`] naming the parameter and the allowed range.
+#[doc(hidden)]
 pub mod check {
     use super::{Error, Result};
 

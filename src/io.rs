@@ -104,7 +104,7 @@ pub fn check_writable(path: &Path) -> Result<()> {
 ///
 /// # Errors
 /// [`Error::Io`] naming `path`.
-pub fn read(path: &Path) -> Result<Vec<u8>> {
+pub(crate) fn read(path: &Path) -> Result<Vec<u8>> {
     std::fs::read(path).map_err(|source| io_error(path, source))
 }
 

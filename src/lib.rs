@@ -119,16 +119,12 @@
 //! | [`stress`] | the stress distribution P(σ, ζ) for flat, Hertz, cylinder and tabulated starts, elastic or with a yield stress |
 //! | [`separation`] | the mean interfacial separation ū, the contact stiffness and the stored elastic energy |
 //! | `bem` | (feature `bem`) the FFT boundary-element solver: elastic kernels, surface synthesis, the Polonsky–Keer solver, Hertz validation |
-//! | [`compare`] | validation of numerical codes: continuum extrapolation, κ fits, scoring a user's data against the theories |
-//! | `compare_bem` | (feature `bem`) the theories against the BEM at several resolutions of one surface |
+//! | [`validation`] | validation of numerical codes: continuum extrapolation, κ fits, scoring a user's data against the theories, and (feature `bem`) the theories against the BEM at several resolutions of one surface |
 //! | [`scene`] | scene files: one calculation described in a versioned JSON document, and running it |
 //! | [`report`] | error against run time of every method, and the stability sweep over extreme inputs |
 //! | [`table`] | the one table type every report renders to, as aligned text or CSV |
 //! | `plot` | (feature `plot`) figures as SVG or PNG from the typed reports |
-//! | [`quad`] | adaptive Gauss–Kronrod quadrature with an error estimate, and the [`quad::Estimate`] (value and error bound) many functions return |
-//! | [`special`] | special functions (erf, erfc, ln erfc, J1, E1) accurate over the whole f64 range |
-//! | [`io`] | file output that never loses what the user had (write to a temporary file, then rename) |
-//! | [`error`] | the crate's [`Error`] and [`Result`] |
+//! | [`error`] | the crate's [`Error`] and [`Result`]; [`Estimate`] is a value with its error bound, which many functions return |
 //!
 //! ## References
 //!
@@ -155,17 +151,20 @@
 pub mod bem;
 pub mod corrected;
 pub mod error;
+// File output for the `persson` binary (a separate crate): not part of the
+// library's API.
+#[doc(hidden)]
 pub mod io;
 pub mod kappa;
 pub mod material;
 #[cfg(feature = "plot")]
 pub mod plot;
-pub mod quad;
+mod quad;
 pub mod reference;
 pub mod report;
 pub mod scene;
 pub mod separation;
-pub mod special;
+mod special;
 pub mod spectrum;
 pub mod stress;
 pub mod table;
@@ -176,4 +175,6 @@ pub mod validation;
 
 pub use error::{Error, Result};
 pub use material::Material;
+/// A value with a bound on its absolute error, returned by every integral.
+pub use quad::Estimate;
 pub use spectrum::Spectrum;

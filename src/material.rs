@@ -2,7 +2,7 @@
 
 use crate::error::{check, Result};
 
-/// One elastic body: Young's modulus E [Pa] and Poisson ratio ν ∈ (−1, 0.5].
+/// One elastic body: Young's modulus E \[Pa\] and Poisson ratio ν ∈ (−1, 0.5].
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Body {

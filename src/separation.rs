@@ -10,7 +10,7 @@
 //! U/A0  = (π/2) E* ∫ q² C(q) erf(w p/E*) dq = ∫_ū^∞ p(ū′) dū′            [J/m²]
 //! ```
 //! The inner p′ integral is exact: with s = (w p′/E*)², dp′/p′ = ds/(2s), so it
-//! equals ½ ∫_{(wp/E*)²}^∞ e^{−s}/s ds = ½ E1((w p/E*)²) ([`crate::special::e1`]).
+//! equals ½ ∫_{(wp/E*)²}^∞ e^{−s}/s ds = ½ E1((w p/E*)²) (E1 by its series and continued fraction).
 //! K follows analytically from d/dp ½E1((wp/E*)²) = −(1/p) e^{−(wp/E*)²}.
 //!
 //! The energy is the work of the load, U/A0 = ∫_0^p p′ (−dū/dp′) dp′: with
@@ -62,6 +62,7 @@ const UNDERFLOW_ARG: f64 = 745.0;
 
 /// Mean separation, stiffness and elastic energy at one pressure.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[non_exhaustive]
 pub struct SeparationPoint {
     /// Nominal pressure σ0, Pa.
     pub nominal_pressure: f64,
@@ -82,6 +83,7 @@ pub struct SeparationPoint {
 
 /// Small-load asymptote ū ≈ u0 ln(p_ref/p).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[non_exhaustive]
 pub struct LowLoadLaw {
     /// u0 = √π ∫ q² C w dq, m.
     pub length: Estimate,

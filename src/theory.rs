@@ -12,6 +12,7 @@ const AREA_ULPS: f64 = 8.0;
 
 /// The contact area A/A0 and its complement, each to full relative accuracy.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[non_exhaustive]
 pub struct ContactFraction {
     /// A/A0 = erf(1/(2√G)).
     pub fraction: f64,
@@ -68,6 +69,7 @@ pub fn contact_fraction(g: f64, g_error: f64) -> Result<ContactFraction> {
 
 /// One point of an area curve.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[non_exhaustive]
 pub struct AreaPoint {
     /// Nominal pressure σ0.
     pub nominal_pressure: f64,

@@ -8,6 +8,9 @@ use persson::plot::{
     Series, Style, DEFAULT_SIZE, PALETTE,
 };
 use persson::Error;
+
+#[path = "common/oracle.rs"]
+mod oracle;
 use std::path::{Path, PathBuf};
 
 /// The eight bytes every PNG file starts with (PNG spec §5.2).
@@ -104,7 +107,7 @@ fn standard_figures() -> Vec<(&'static str, Figure, Vec<&'static str>)> {
     let g: Vec<f64> = zeta.iter().map(|z| 0.01 * (z * z - 1.0) + 1e-3).collect();
     let area: Vec<f64> = g
         .iter()
-        .map(|g| persson::special::erf(1.0 / (2.0 * g.sqrt())))
+        .map(|g| oracle::erf(1.0 / (2.0 * g.sqrt())))
         .collect();
     let pressure = geomspace(1e3, 1e7, 30);
     let load_area: Vec<f64> = pressure.iter().map(|p| (1.6 * p / 1e7).min(1.0)).collect();

@@ -11,6 +11,7 @@ use crate::error::{Error, Result};
 
 /// One bin of a pressure histogram.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[non_exhaustive]
 pub struct HistogramBin {
     /// Lower edge σ of the bin (unit of the pressure).
     pub sigma_low: f64,

@@ -16,7 +16,7 @@
 //!   with every area).
 //!
 //! # Pieces
-//! - [`fft`]: planned 2-D real FFT (rustfft + realfft), no allocation per call.
+//! - `fft` (internal): planned 2-D real FFT (rustfft + realfft), no allocation per call.
 //! - [`kernel`]: the compliance operators 𝒢 (periodic, free).
 //! - [`solver`]: Polonsky–Keer constrained conjugate gradient.
 //! - [`saturated`]: the same with a yield stress, 0 ≤ p ≤ σY.
@@ -34,7 +34,7 @@
 //! # Ok(()) }
 //! ```
 
-pub mod fft;
+pub(crate) mod fft;
 pub mod hertz;
 pub mod histogram;
 pub mod kernel;

@@ -104,6 +104,7 @@ pub struct RoughPoint {
 
 /// Progress of [`solve`], once per solver iteration.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct RoughProgress {
     /// Index of the current pressure in the caller's list.
     pub index: usize,

@@ -99,6 +99,7 @@ impl Default for Options {
 
 /// One iteration's state, reported to an observer (progress bars, logs).
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct Iteration {
     /// Iteration number, from 0.
     pub iteration: usize,
@@ -110,6 +111,7 @@ pub struct Iteration {
 
 /// A converged contact solution.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub struct Solution {
     /// Nodal pressures, `N × N` row-major (unit of E*).
     pub pressure: Vec<f64>,

@@ -9,12 +9,12 @@ use crate::error::{Error, Result};
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
 pub enum Convention {
-    /// Persson's: columns q [1/m], C(q) [m⁴] (identity).
+    /// Persson's: columns q \[1/m\], C(q) \[m⁴\] (identity).
     Persson,
     /// SurfaceTopography / contact.engineering isotropic PSD:
     /// `C_Persson(q) = C_ST(q) / (2π)²`.
     SurfaceTopography,
-    /// A 1D profile (line-scan) spectrum `C_1D(q)` [m³] of an isotropic
+    /// A 1D profile (line-scan) spectrum `C_1D(q)` \[m³\] of an isotropic
     /// surface, in Persson's 1D normalisation `C_1D(q) = (2π)⁻¹ ∫ dx ⟨h(x)h(0)⟩ e^{−iqx}`.
     ///
     /// For a power law `C_1D = A q^{−(2H+1)}` the 2D spectrum is exactly
@@ -26,7 +26,7 @@ pub enum Convention {
     /// on power-law stretches; a locally non-decaying stretch (slope ≥ −1,
     /// H ≤ 0) has no 2D counterpart of this form and is rejected.
     Profile1D,
-    /// Dimensionless FFT-grid spectrum of a periodic surface of side `size` [m]:
+    /// Dimensionless FFT-grid spectrum of a periodic surface of side `size` \[m\]:
     /// columns k (wavenumber in units of 2π/L) and φ(k), with
     /// `q = 2πk/L` and `C_Persson(q) = (L/2π)² φ(k)`.
     Grid {
@@ -36,7 +36,7 @@ pub enum Convention {
 }
 
 impl Convention {
-    /// Convert points of this convention to Persson's (q [1/m], C [m⁴]).
+    /// Convert points of this convention to Persson's (q \[1/m\], C \[m⁴\]).
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] naming `C[i]` where a profile spectrum is

@@ -31,7 +31,7 @@ pub enum Amplitude {
 /// with Hurst exponent H ∈ (0, 1) (fractal dimension D_f = 3 − H), roll-off
 /// q_r and cut-offs q_l ≤ q_r < q_s, all in 1/m. The moments
 /// `m_k(a,b) = C_r q_r^{k+1} ∫ t^{k} (or t^{k−2H−2}) dt` over `t = q/q_r` are
-/// evaluated in closed form by [`power::integral`], which is stable as the
+/// evaluated in closed form by `power::integral`, which is stable as the
 /// exponent crosses −1 (H → 0 for `m_1`, H → 1 for `m_3`).
 ///
 /// # References

@@ -75,6 +75,7 @@ const SERIES_PLASTIC_RATIO: f64 = 0.25;
 
 /// A stress distribution at one magnification, dimensionless.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
+#[non_exhaustive]
 pub struct StressCurve {
     /// s = σ/σH where the density was evaluated.
     pub sigma_ratio: Vec<f64>,
@@ -476,6 +477,7 @@ pub struct StressScene {
 
 /// P(σ, ζ) in physical units at one magnification.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
+#[non_exhaustive]
 pub struct PhysicalCurve {
     /// Magnification ζ.
     pub zeta: f64,

@@ -348,6 +348,7 @@ pub struct SweepConfig {
 
 /// Progress of a sweep, reported once per solver iteration.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct SweepProgress {
     /// Solves finished so far.
     pub done: usize,
