@@ -212,9 +212,20 @@ impl Table {
         out
     }
 
-    /// The table as CSV: one header line of keys, then one line per row.
-    /// Scalars are not written (they are in the JSON report).
+    /// The table as CSV: one header line of keys, then one line per row;
+    /// each column of reals in one form, plain digits or, where any of its
+    /// values needs an exponent, all in exponent form (both the shortest that
+    /// reads back to the same `f64`). Scalars are not written (they are in
+    /// the JSON report) unless the table has no columns: then it is the
+    /// scalars, as `key,value` lines.
     pub fn to_csv(&self) -> String {
+        if self.columns.is_empty() {
+            let mut s = String::from("key,value\n");
+            for (key, _, value) in &self.scalars {
+                s.push_str(&format!("{},{}\n", csv_escape(key), csv_cell(value, false)));
+            }
+            return s;
+        }
         let mut s = self
             .columns
             .iter()
@@ -222,8 +233,20 @@ impl Table {
             .collect::<Vec<_>>()
             .join(",");
         s.push('\n');
+        let exponent: Vec<bool> = (0..self.columns.len())
+            .map(|j| {
+                self.rows.iter().any(|r| match &r[j] {
+                    Cell::Num(v) | Cell::Measured { value: v, .. } => needs_exponent(*v),
+                    _ => false,
+                })
+            })
+            .collect();
         for r in &self.rows {
-            let cells: Vec<String> = r.iter().map(csv_cell).collect();
+            let cells: Vec<String> = r
+                .iter()
+                .zip(&exponent)
+                .map(|(c, &e)| csv_cell(c, e))
+                .collect();
             s.push_str(&cells.join(","));
             s.push('\n');
         }
@@ -298,9 +321,6 @@ fn non_finite(v: f64) -> String {
 /// `v` with `digits` significant digits in scientific notation, mantissa
 /// trailing zeros kept so a column lines up: `1.23400e-5`.
 fn scientific(v: f64, digits: usize) -> String {
-    if v == 0.0 {
-        return "0".into();
-    }
     let d = digits.saturating_sub(1);
     format!("{v:.d$e}")
 }
@@ -363,14 +383,24 @@ pub fn measured(value: f64, error: f64) -> String {
     format!("{value:.d$} ± {error:.d$}")
 }
 
-/// A cell for CSV: shortest round-trip reals, integers as integers.
-fn csv_cell(c: &Cell) -> String {
+/// A cell for CSV: shortest round-trip reals (in exponent form if
+/// `exponent`), integers as integers.
+fn csv_cell(c: &Cell, exponent: bool) -> String {
     match c {
         Cell::Int(i) => i.to_string(),
+        Cell::Num(v) | Cell::Measured { value: v, .. } if exponent && v.is_finite() => {
+            format!("{v:e}")
+        }
         Cell::Num(v) | Cell::Measured { value: v, .. } => csv_number(*v),
         Cell::Text(t) => csv_escape(t),
         Cell::Empty => String::new(),
     }
+}
+
+/// Whether plain digits would be long for `v`: outside [1e-4, 1e16).
+fn needs_exponent(v: f64) -> bool {
+    let a = v.abs();
+    a != 0.0 && a.is_finite() && !(1e-4..1e16).contains(&a)
 }
 
 /// The shortest text that reads back to the same `f64`: plain digits in
@@ -385,11 +415,10 @@ pub fn csv_number(v: f64) -> String {
             "-inf".into()
         };
     }
-    let a = v.abs();
-    if a == 0.0 || (1e-4..1e16).contains(&a) {
-        format!("{v}")
-    } else {
+    if needs_exponent(v) {
         format!("{v:e}")
+    } else {
+        format!("{v}")
     }
 }
 
@@ -474,6 +503,22 @@ mod tests {
         assert!(
             text.contains("0.500000") && text.contains("0.125000"),
             "{text}"
+        );
+    }
+
+    #[test]
+    fn csv_column_in_one_form_and_scalar_tables() {
+        let mut t = Table::new("t", "T").column("stiffness", "K");
+        for k in [8.085e9, 5.96e16, 0.0] {
+            t.push(vec![Cell::Num(k)]);
+        }
+        assert_eq!(t.to_csv(), "stiffness\n8.085e9\n5.96e16\n0e0\n");
+        let s = Table::new("s", "S")
+            .scalar("energy_error", "η", 0.0113)
+            .scalar("iterations", "iterations", 27usize);
+        assert_eq!(
+            s.to_csv(),
+            "key,value\nenergy_error,0.0113\niterations,27\n"
         );
     }
 }

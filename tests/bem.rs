@@ -597,7 +597,7 @@ mod cli {
         // Full contact at a high pressure is an answer: no gap left anywhere
         // (the gap on the contact is ≤ 1e-8 of the rms height, see above).
         assert_eq!(pts[1]["contact_fraction"].as_f64(), Some(1.0));
-        let h = v["rms_height"].as_f64().unwrap();
+        let h = v["surface_rms_height"].as_f64().unwrap();
         assert!(pts[1]["mean_separation"].as_f64().unwrap().abs() < 1e-8 * h);
         let (_, again, _) = persson(&args);
         let w: serde_json::Value = serde_json::from_str(&again).unwrap();

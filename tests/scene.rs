@@ -4,7 +4,9 @@
 
 use std::path::{Path, PathBuf};
 
-use persson::scene::{BoundaryName, ConventionName, Scene, StartName, TheoryName};
+#[cfg(feature = "cli")]
+use persson::scene::{BoundaryName, ConventionName, StartName};
+use persson::scene::{Scene, TheoryName};
 use persson::table::number;
 use persson::Error;
 

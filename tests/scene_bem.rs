@@ -120,7 +120,7 @@ mod bem {
             last = pt.contact_fraction;
             assert!(pt.histogram.is_none());
         }
-        assert!((b.rms_slope - surf.rms_slope().unwrap()).abs() <= SAME_SOLVE_TOL);
+        assert!((b.surface_rms_slope - surf.rms_slope().unwrap()).abs() <= SAME_SOLVE_TOL);
     }
 
     #[test]

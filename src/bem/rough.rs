@@ -312,9 +312,9 @@ pub struct RoughReport {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub yield_stress: Option<f64>,
     /// rms height of the surface on the grid (unit of L).
-    pub rms_height: f64,
+    pub surface_rms_height: f64,
     /// rms slope of the surface on the grid (its trigonometric interpolant).
-    pub rms_slope: f64,
+    pub surface_rms_slope: f64,
     /// Where the surface came from.
     pub surface: SurfaceSource,
     /// One point per nominal pressure, in the caller's order.
@@ -341,8 +341,8 @@ pub fn rough_contact(
         contact_modulus,
         tolerance: options.solver.tolerance,
         yield_stress: options.solver.yield_stress,
-        rms_height: surface.rms_height(),
-        rms_slope: surface.rms_slope()?,
+        surface_rms_height: surface.rms_height(),
+        surface_rms_slope: surface.rms_slope()?,
         surface: source,
         points,
     })
@@ -362,8 +362,16 @@ impl Tabulate for RoughReport {
         .scalar("size", "L", self.size)
         .scalar("contact_modulus", "E*", self.contact_modulus)
         .scalar("tolerance", "tolerance ε", self.tolerance)
-        .scalar("rms_height", "h_rms", self.rms_height)
-        .scalar("rms_slope", "h'_rms", self.rms_slope);
+        .scalar(
+            "surface_rms_height",
+            "h_rms on the grid",
+            self.surface_rms_height,
+        )
+        .scalar(
+            "surface_rms_slope",
+            "h'_rms on the grid",
+            self.surface_rms_slope,
+        );
         if let Some(y) = self.yield_stress {
             t = t.scalar("yield_stress", "σY", y);
         }

@@ -8,7 +8,7 @@ use persson::bem::rough::{self, Observer, RoughOptions, RoughProgress, SurfaceSo
 use persson::bem::surface::{synthesize, write_npy};
 use persson::bem::{check_memory, hertz::HertzCase, Options, Solution};
 use persson::error::check;
-use persson::table::csv_number;
+use persson::table::Tabulate;
 
 pub use super::bem_args::{Args, SolverArgs};
 use super::bem_args::{Cmd, RoughArgs};
@@ -109,14 +109,13 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
     solves.bar.finish();
     let report = report?;
     if let Some(path) = &a.histogram {
-        for (k, p) in report.points.iter().enumerate() {
-            let mut s = String::from("sigma_low,sigma_high,density\n");
-            for b in p.histogram.iter().flatten() {
-                let cells = [b.sigma_low, b.sigma_high, b.density].map(csv_number);
-                s.push_str(&format!("{}\n", cells.join(",")));
-            }
-            let file = indexed(path, several.then_some(k));
-            std::fs::write(&file, s).map_err(|source| persson::Error::Io { path: file, source })?;
+        // The report's own histogram table: every pressure in one CSV.
+        if let Some(t) = report
+            .tables()
+            .into_iter()
+            .find(|t| t.name == "bem_histogram")
+        {
+            persson::io::write_atomic(path, t.to_csv().as_bytes())?;
         }
     }
     print(&report, &a.format)

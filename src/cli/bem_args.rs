@@ -111,8 +111,9 @@ pub struct RoughArgs {
     /// the extension when several pressures are given.
     #[arg(long)]
     pub pressure_field: Option<PathBuf>,
-    /// Write the histogram P(σ) of each solve as CSV (sigma_low, sigma_high,
-    /// density; the bins integrate to A/A0).
+    /// Write the histograms P(σ) of every solve into one CSV (nominal_pressure,
+    /// sigma_low, sigma_high, density; each pressure's bins integrate to its
+    /// elastic A/A0, the plastic peak at σY is `plastic_fraction` in the report).
     #[arg(long)]
     pub histogram: Option<PathBuf>,
     /// Number of histogram bins.

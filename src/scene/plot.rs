@@ -210,7 +210,7 @@ pub fn bem(r: &crate::bem::rough::RoughReport) -> Result<Figure> {
     let label = format!("FFT-BEM, {0}×{0} {1}", r.grid, r.boundary.name());
     let law = LinearLaw {
         contact_modulus: r.contact_modulus,
-        rms_slope: r.rms_slope,
+        rms_slope: r.surface_rms_slope,
     };
     plot::area_vs_load(&p, &[(label.as_str(), &a)], "unit of E*", Some(law))
 }
