@@ -75,6 +75,15 @@ fn example_runs_in_every_format() {
         let v = json(&[cmd, "--example", "--json"]);
         assert!(v.is_object(), "{cmd}");
     }
+    // The BEM commands say it on stderr, their stdout being the report alone.
+    for args in [
+        &["bem", "rough", "--example", "--grid", "16", "--pressure", "1e6"][..],
+        &["compare", "--example", "--grid", "16", "--levels", "2", "--pressure", "1e6"][..],
+    ] {
+        let (code, _, err) = persson(args);
+        assert_eq!(code, 0, "{args:?}: {err}");
+        assert!(err.contains(example), "{args:?}: {err}");
+    }
     // `g` is the hidden old name of `magnification`, `--modulus` of `--contact-modulus`.
     assert_eq!(
         json(&["g", "--example", "--json"]),

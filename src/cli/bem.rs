@@ -65,6 +65,10 @@ impl Observer for Solves<'_> {
 }
 
 fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
+    if a.spectrum.example {
+        // Say what the example is (stdout stays the report alone).
+        eprintln!("persson: {}", persson::scene::EXAMPLE);
+    }
     let pressures = super::args::pressures(&a.pressure, a.spectrum.example)?;
     let options = RoughOptions {
         boundary: a.boundary,

@@ -55,6 +55,10 @@ fn with_progress<T>(run: impl FnOnce(&mut dyn FnMut(SweepProgress)) -> T) -> T {
 }
 
 fn compare(a: &MainArgs) -> anyhow::Result<()> {
+    if a.spectrum.example {
+        // Say what the example is (stdout stays the report alone).
+        eprintln!("persson: {}", persson::scene::EXAMPLE);
+    }
     super::compare_plot::check(a)?;
     let map = a.measured.spec(a.spectrum.q_s)?;
     if let (Some(_), Some(flag)) = (&map, a.bem.unused_with_surface()) {
