@@ -77,8 +77,25 @@ fn example_runs_in_every_format() {
     }
     // The BEM commands say it on stderr, their stdout being the report alone.
     for args in [
-        &["bem", "rough", "--example", "--grid", "16", "--pressure", "1e6"][..],
-        &["compare", "--example", "--grid", "16", "--levels", "2", "--pressure", "1e6"][..],
+        &[
+            "bem",
+            "rough",
+            "--example",
+            "--grid",
+            "16",
+            "--pressure",
+            "1e6",
+        ][..],
+        &[
+            "compare",
+            "--example",
+            "--grid",
+            "16",
+            "--levels",
+            "2",
+            "--pressure",
+            "1e6",
+        ][..],
     ] {
         let (code, _, err) = persson(args);
         assert_eq!(code, 0, "{args:?}: {err}");

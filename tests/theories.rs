@@ -652,7 +652,7 @@ mod cli {
         }
         assert!(std::fs::read_to_string(&u)
             .unwrap()
-            .contains("u0 ln(p_ref/σ0)"));
+            .contains("u0 ln(σ_ref/σ0)"));
         std::fs::remove_dir_all(&dir).unwrap();
     }
 

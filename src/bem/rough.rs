@@ -391,8 +391,8 @@ impl Tabulate for RoughReport {
             .column("mean_separation", "ū")
             .column("approach", "δ")
             .column("iterations", "iterations")
-            .column_digits("residual", "residual ε", 2)
-            .column_digits("seconds", "s", 3);
+            .column_digits("residual", "residual", 2)
+            .column_digits("seconds", "time (s)", 3);
         let saturated = self.yield_stress.is_some();
         if saturated {
             t = t

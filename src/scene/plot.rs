@@ -127,7 +127,7 @@ pub fn separation(r: &SeparationReport) -> Result<Figure> {
     .with_series(Series::line("ū(σ0)", u))
     .with_series(Series::dashed(
         format!(
-            "u0 ln(p_ref/σ0), u0 = {} m, p_ref = {}",
+            "u0 ln(σ_ref/σ0), u0 = {} m, σ_ref = {}",
             number(u0, 3),
             number(p_ref, 3)
         ),

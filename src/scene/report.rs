@@ -411,8 +411,8 @@ impl Tabulate for SeparationReport {
         )
         .scalar("rms_height", "rms height h_rms", self.rms_height)
         .scalar("rms_slope", "rms slope h'_rms", self.rms_slope)
-        .scalar("low_load_length", "u0 of ū ≈ u0 ln(p_ref/σ0)", self.low_load_length)
-        .scalar("reference_pressure", "p_ref", self.reference_pressure)
+        .scalar("low_load_length", "u0 of ū ≈ u0 ln(σ_ref/σ0)", self.low_load_length)
+        .scalar("reference_pressure", "σ_ref", self.reference_pressure)
         .scalar("full_contact_energy", "U_el at full contact", self.full_contact_energy)
         .column_digits(
             "nominal_pressure",
@@ -422,7 +422,7 @@ impl Tabulate for SeparationReport {
         .column("mean_separation", "ū")
         .column("stiffness", "K = −dσ0/dū")
         .column("elastic_energy", "U_el")
-        .column_digits("relative_error_bound", "relative bound", 2);
+        .column_digits("relative_error_bound", "largest relative bound", 2);
         for p in &self.points {
             let rel = relative(p.mean_separation_error_bound, p.mean_separation)
                 .max(relative(p.stiffness_error_bound, p.stiffness))

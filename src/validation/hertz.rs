@@ -153,7 +153,7 @@ impl Tabulate for HertzValidation {
                 "iterations",
                 Cell::Int(self.iterations as i64),
             )
-            .scalar("residual", "residual ε", self.residual)
-            .scalar("seconds", "s", self.seconds)]
+            .scalar("residual", "residual", self.residual)
+            .scalar("seconds", "time (s)", self.seconds)]
     }
 }

@@ -617,7 +617,7 @@ impl Tabulate for Comparison {
             .column("grid", "N")
             .column("iterations", "iterations")
             .column_digits("residual", "largest residual ε", 2)
-            .column_digits("seconds", "s", 3);
+            .column_digits("seconds", "time (s)", 3);
         let rows = self.bem.iter().map(|g| ("band-limited map", g));
         for (what, g) in rows.chain(self.measured.iter().map(|g| ("map as measured", g))) {
             let mut row = if labelled { vec![what.into()] } else { vec![] };
