@@ -208,6 +208,7 @@ impl Tabulate for MagnificationReport {
         .column_digits("g", "G", 10)
         .column_digits("g_error_bound", "± bound", 2)
         .column_digits("contact_fraction", "A/A0", 10)
+        .column_digits("error_bound", "± bound", 2)
         .column("rms_slope", "h'_rms(ζ)");
         for p in &self.points {
             t.push(vec![
@@ -215,6 +216,7 @@ impl Tabulate for MagnificationReport {
                 p.g.into(),
                 p.g_error_bound.into(),
                 p.contact_fraction.into(),
+                p.error_bound.into(),
                 p.rms_slope.into(),
             ]);
         }
