@@ -5,6 +5,9 @@
 //! checked against the mpmath oracle table of `tests/reference/core.py`.
 //! Failing cases are persisted in `tests/properties.proptest-regressions`.
 
+#[path = "common/oracle.rs"]
+mod oracle;
+
 use persson::spectrum::{Amplitude, SelfAffine, Spectrum, Tabulated};
 use persson::theory::{contact_fraction, Persson};
 use proptest::prelude::*;
@@ -120,64 +123,9 @@ fn rel(a: f64, b: f64) -> f64 {
     }
 }
 
-/// The independent erf against the mpmath oracle (tests/core.rs, AREA):
-/// (G, erf(1/(2√G)), erfc, ln erfc), 50 digits.
-#[allow(clippy::excessive_precision)]
-const ORACLE: [(f64, f64, f64, f64); 9] = [
-    (1e-6, 1.0, 0.0, -2.500067869750413482e5),
-    (
-        1e-3,
-        1.0,
-        9.5053977665541412415e-111,
-        -2.5333508549913602946e2,
-    ),
-    (
-        0.01,
-        9.9999999999846254021e-1,
-        1.5374597944280356657e-12,
-        -2.7200889545537433892e1,
-    ),
-    (
-        0.6,
-        6.3868957147382118834e-1,
-        3.6131042852617881166e-1,
-        -1.0180177773475634027,
-    ),
-    (
-        2.0,
-        3.8292492254802620728e-1,
-        6.1707507745197379272e-1,
-        -4.8276458103367329946e-1,
-    ),
-    (
-        100.0,
-        5.6371977797016623831e-2,
-        9.4362802220298337617e-1,
-        -5.8023234768983510648e-2,
-    ),
-    (
-        1e10,
-        5.6418958354305470709e-6,
-        9.9999435810416456945e-1,
-        -5.6419117509847186225e-6,
-    ),
-    (
-        1e20,
-        5.6418958354775628695e-11,
-        9.9999999994358104165e-1,
-        -5.6418958356367178126e-11,
-    ),
-    (
-        1e30,
-        5.6418958354775628134e-16,
-        9.9999999999999943581e-1,
-        -5.6418958354775644049e-16,
-    ),
-];
-
 #[test]
 fn independent_erf_matches_the_oracle() {
-    for (g, erf, erfc, ln_erfc) in ORACLE {
+    for (g, erf, erfc, ln_erfc) in oracle::AREA {
         let (a, c, l) = erf_independent(1.0 / (2.0 * g.sqrt()));
         assert!(rel(a, erf) < CLAIM, "G = {g}: erf {a} vs {erf}");
         if c > f64::MIN_POSITIVE {
