@@ -6,7 +6,7 @@ use super::kappa::fit_kappa;
 use super::report::{
     AreaTheory, BemGrid, ComparedSpectrum, Comparison, ContinuumPoint, DataComparison, DataScore,
     DensityCurve, Fitted, HistogramComparison, KappaFits, MeanSeparation, PressureDistribution,
-    TheoryCurve, TheoryKappa,
+    TheoryArea, TheoryKappa,
 };
 use super::sweep::{
     default_pressures, resolution_grids, sweep_source, BandLimited, SweepConfig, SweepProgress,
@@ -74,10 +74,10 @@ impl ComparisonConfig {
 }
 
 /// The theories' A/A0 at `pressures`.
-fn theory_curves(model: &Persson, pressures: &[f64]) -> Result<Vec<TheoryCurve>> {
+fn theory_curves(model: &Persson, pressures: &[f64]) -> Result<Vec<TheoryArea>> {
     let zeta = model.zeta_max();
     let points = model.load_curve(pressures, zeta)?;
-    let curve = |theory, gamma, f: &dyn Fn(&crate::theory::AreaPoint) -> f64, kappa| TheoryCurve {
+    let curve = |theory, gamma, f: &dyn Fn(&crate::theory::AreaPoint) -> f64, kappa| TheoryArea {
         theory,
         gamma,
         contact_fraction: points.iter().map(f).collect(),
@@ -108,7 +108,7 @@ fn theory_curves(model: &Persson, pressures: &[f64]) -> Result<Vec<TheoryCurve>>
             continue;
         }
         let c = corrected::load_curve(model, t, zeta, pressures, THEORY_TOLERANCE)?;
-        out.push(TheoryCurve {
+        out.push(TheoryArea {
             theory: t.into(),
             gamma: t.gamma(),
             contact_fraction: c.iter().map(|p| p.contact_fraction).collect(),

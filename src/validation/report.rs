@@ -69,7 +69,7 @@ impl From<Theory> for AreaTheory {
 /// A theory's A/A0 at the compared pressures.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[non_exhaustive]
-pub struct TheoryCurve {
+pub struct TheoryArea {
     /// Which law.
     pub theory: AreaTheory,
     /// Its γ, for the corrected theories.
@@ -267,7 +267,7 @@ pub struct DataComparison {
     /// Their A/A0.
     pub contact_fraction: Vec<f64>,
     /// The theories at their pressures.
-    pub theories: Vec<TheoryCurve>,
+    pub theories: Vec<TheoryArea>,
     /// A∞ interpolated (log–log) at their pressures, where inside the range.
     pub bem_extrapolated: Vec<Option<f64>>,
     /// Scores against each theory and A∞.
@@ -309,7 +309,7 @@ pub struct Comparison {
     /// Nominal pressures σ0.
     pub nominal_pressure: Vec<f64>,
     /// The theories' A/A0.
-    pub theories: Vec<TheoryCurve>,
+    pub theories: Vec<TheoryArea>,
     /// The BEM per grid.
     pub bem: Vec<BemGrid>,
     /// The continuum limit per pressure.
@@ -336,7 +336,7 @@ pub struct Comparison {
 
 impl Comparison {
     /// The theory curve of `t`, if compared.
-    pub fn theory(&self, t: AreaTheory) -> Option<&TheoryCurve> {
+    pub fn theory(&self, t: AreaTheory) -> Option<&TheoryArea> {
         self.theories.iter().find(|c| c.theory == t)
     }
 
