@@ -204,13 +204,7 @@ impl Tabulate for KappaStudy {
             let mut row = vec![Cell::Num(p.hurst)];
             row.extend(p.per_grid.iter().map(|g| Cell::Num(g.estimate.kappa)));
             let e = &p.bem_extrapolated;
-            row.push(match e.standard_error {
-                Some(error) => Cell::Measured {
-                    value: e.kappa,
-                    error,
-                },
-                None => Cell::Num(e.kappa),
-            });
+            row.push(Cell::Num(e.kappa));
             row.push(e.standard_error.into());
             t.push(row);
         }

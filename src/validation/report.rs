@@ -351,9 +351,9 @@ impl Comparison {
     }
 }
 
-/// A row of the κ table. A theory's curve is exact: its κ prints in full
-/// (the fit's standard error only measures the curve's bend); a measured κ
-/// (BEM, data) prints with the digits its standard error supports.
+/// A row of the κ table: κ in the column's one style; the standard error
+/// only for a measured κ (BEM, data). A theory's curve is exact, and its
+/// fit's standard error only measures the curve's bend (it stays in the JSON).
 fn kappa_row(
     t: &mut Table,
     source: &str,
@@ -366,14 +366,13 @@ fn kappa_row(
     t.push(vec![
         source.into(),
         grid.map_or(Cell::Empty, Cell::from),
-        match (se, closed) {
-            (Some(e), None) => Cell::Measured {
-                value: kappa,
-                error: e,
-            },
-            _ => Cell::Num(kappa),
+        Cell::Num(kappa),
+        // A theory's fit error only measures its curve's bend: not shown.
+        if closed.is_some() {
+            Cell::Empty
+        } else {
+            se.into()
         },
-        se.into(),
         closed.into(),
         points.into(),
     ]);
@@ -456,10 +455,7 @@ impl Tabulate for Comparison {
                 row.push(Cell::Num(m.contact_fraction[k]));
             }
             row.extend([
-                Cell::Measured {
-                    value: c.contact_fraction,
-                    error: c.standard_error,
-                },
+                Cell::Num(c.contact_fraction),
                 Cell::Num(c.standard_error),
                 Cell::Num(c.alpha),
             ]);
