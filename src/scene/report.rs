@@ -627,7 +627,7 @@ impl Tabulate for BemHertzReport {
         .column_digits("peak_pressure_error", "σH error", 3)
         .column("contact_fraction", "A/A0")
         .column("iterations", "iterations")
-        .column_digits("seconds", "seconds", 3);
+        .column_digits("seconds", "time (s)", 3);
         for r in &self.rows {
             t.push(vec![
                 r.grid.into(),
