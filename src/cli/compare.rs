@@ -71,6 +71,7 @@ fn compare(a: &MainArgs) -> anyhow::Result<()> {
     let mut config = ComparisonConfig::new(a.material.build(a.spectrum.example)?.contact_modulus());
     config.nominal_pressure = a.pressure.clone();
     config.sweep = a.bem.settings()?;
+    config.sweep.options.yield_stress = a.yield_stress;
     config.data = a.data.as_deref().map(UserData::from_csv).transpose()?;
     config.data_histogram = a
         .data_histogram
@@ -79,6 +80,7 @@ fn compare(a: &MainArgs) -> anyhow::Result<()> {
         .transpose()?;
     config.histogram_pressure = a.histogram_pressure;
     config.bins = a.bins;
+    config.wide = a.wide;
     let report = match &map {
         Some(m) => {
             let boundary = if m.periodic {

@@ -100,6 +100,10 @@ pub struct MainArgs {
     pub pressure: Vec<f64>,
     #[command(flatten)]
     pub bem: BemArgs,
+    /// Yield stress σY (hardness), same unit as --pressure: the saturated BEM (0 ≤ p ≤ σY)
+    /// against Persson's finite-σY P(σ), with A_el/A0 and A_pl/A0 (must exceed every σ0).
+    #[arg(long, value_name = "Y", allow_negative_numbers = true)]
+    pub yield_stress: Option<f64>,
     /// Your own results: CSV with columns nominal_pressure, contact_fraction (header and # comments allowed).
     #[arg(long, value_name = "FILE.csv")]
     pub data: Option<PathBuf>,
@@ -114,6 +118,10 @@ pub struct MainArgs {
     /// Number of bins of the BEM pressure histograms.
     #[arg(long, default_value = "40")]
     pub bins: usize,
+    /// Text tables with every column (default: each fits 100 characters, the coarser
+    /// grids' columns of a wider table left out and named).
+    #[arg(long)]
+    pub wide: bool,
     #[command(flatten)]
     pub format: Format,
     #[command(flatten)]

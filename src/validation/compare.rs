@@ -55,6 +55,8 @@ pub struct ComparisonConfig {
     pub histogram_pressure: Option<f64>,
     /// Bins of the BEM pressure histograms.
     pub bins: usize,
+    /// Text tables with every column (see [`Comparison::wide`]).
+    pub wide: bool,
 }
 
 impl ComparisonConfig {
@@ -69,6 +71,7 @@ impl ComparisonConfig {
             data_histogram: None,
             histogram_pressure: None,
             bins: 40,
+            wide: false,
         }
     }
 }
@@ -208,6 +211,8 @@ fn compare_on(
     for &p in &pressures {
         check::positive("nominal_pressure", p)?;
     }
+    let yield_stress = config.sweep.options.yield_stress;
+    super::plastic::check_yield_stress(yield_stress, &pressures)?;
     let model = Persson::new(&band, e_star)?;
     let zeta = model.zeta_max();
     let theories = theory_curves(&model, &pressures)?;
@@ -239,6 +244,10 @@ fn compare_on(
                 seed_scatter: vec![None; pressures.len()],
                 mean_separation: g.mean_separation[0].clone(),
                 surface_rms_slope: g.surface_rms_slope.clone(),
+                elastic_fraction: yield_stress.map(|_| g.elastic_fraction[0].clone()),
+                plastic_fraction: yield_stress.map(|_| g.plastic_fraction[0].clone()),
+                plastic_displacement_mean: yield_stress
+                    .map(|_| g.plastic_displacement_mean[0].clone()),
                 iterations: g.iterations,
                 residual: g.residual,
                 seconds: g.seconds,
@@ -269,14 +278,20 @@ fn compare_on(
         Fitted::from_result(sw.kappa(e_star, rms_slope, KAPPA_MAX_FRACTION, config.sweep.alpha));
 
     // Pressure distributions: finest-grid histogram against flat-start P(σ) at ζ_max.
+    let split = sw.mean_plastic_split();
+    let finest_split = split
+        .last()
+        .ok_or_else(|| Error::invalid("grids", 0.0, "at least one"))?;
     let mut distributions = Vec::with_capacity(pressures.len());
     for (k, &p) in pressures.iter().enumerate() {
         let bins = sw.histograms[k].bins(config.bins);
         let centres: Vec<f64> = bins.iter().map(|b| b.sigma()).collect();
-        let scene = StressScene::flat(p, None)?;
+        let scene = StressScene::flat(p, yield_stress)?;
         let curve = first(scene.curves(&model, &[zeta], &centres, STRESS_TOLERANCE)?)?;
-        // The theory also beyond the BEM's largest pressure, to show its tail.
+        // The theory also beyond the BEM's largest pressure, to show its tail
+        // (up to σY with a yield stress: P(σ) = 0 beyond).
         let top = THEORY_TAIL * bins.last().map_or(p, |b| b.sigma_high);
+        let top = yield_stress.unwrap_or(top);
         let sigma: Vec<f64> = (1..=THEORY_POINTS)
             .map(|i| top * i as f64 / THEORY_POINTS as f64)
             .collect();
@@ -293,6 +308,10 @@ fn compare_on(
                 sigma,
                 density: tail.density,
             },
+            bem_elastic_fraction: yield_stress.map(|_| finest_split.0[k]),
+            bem_plastic_fraction: yield_stress.map(|_| finest_split.1[k]),
+            theory_elastic_fraction: yield_stress.map(|_| curve.elastic_fraction),
+            theory_plastic_fraction: yield_stress.map(|_| curve.plastic_fraction),
         });
     }
     let histogram_index = chosen_histogram(config.histogram_pressure, &pressures, &finest.0);
@@ -301,7 +320,7 @@ fn compare_on(
     let data_histogram = match &config.data_histogram {
         Some(h) => {
             let p = pressures[histogram_index];
-            let theory = first(StressScene::flat(p, None)?.curves(
+            let theory = first(StressScene::flat(p, yield_stress)?.curves(
                 &model,
                 &[zeta],
                 &h.sigma,
@@ -374,25 +393,39 @@ fn compare_on(
         None => None,
     };
 
+    let displacement = sw.mean_plastic_displacement();
     let bem = sw
         .grids
         .iter()
         .zip(means.iter().zip(&gaps))
-        .map(|(g, (m, u))| BemGrid {
+        .zip(split.iter().zip(displacement))
+        .map(|((g, (m, u)), (s, d))| BemGrid {
             grid: g.grid,
             contact_fraction: m.0.clone(),
             seed_scatter: m.1.clone(),
             mean_separation: u.0.clone(),
             surface_rms_slope: g.surface_rms_slope.clone(),
+            elastic_fraction: yield_stress.map(|_| s.0.clone()),
+            plastic_fraction: yield_stress.map(|_| s.1.clone()),
+            plastic_displacement_mean: yield_stress.map(|_| d),
             iterations: g.iterations,
             residual: g.residual,
             seconds: g.seconds,
         })
         .collect();
+    let split_limit = match yield_stress {
+        Some(_) => sw
+            .extrapolate_plastic_split(&cont)?
+            .into_iter()
+            .map(Some)
+            .collect(),
+        None => vec![None; cont.len()],
+    };
     let extrapolated = cont
         .iter()
         .zip(&pressures)
-        .map(|(c, &p)| ContinuumPoint {
+        .zip(&split_limit)
+        .map(|((c, &p), s)| ContinuumPoint {
             nominal_pressure: p,
             contact_fraction: c.fit.value,
             standard_error: c.standard_error,
@@ -401,6 +434,10 @@ fn compare_on(
             seed_scatter: c.seed_scatter,
             alpha: c.fit.alpha,
             coefficient: c.fit.coefficient,
+            elastic_fraction: s.map(|s| s.0.fit.value),
+            elastic_fraction_standard_error: s.map(|s| s.0.standard_error),
+            plastic_fraction: s.map(|s| s.1.fit.value),
+            plastic_fraction_standard_error: s.map(|s| s.1.standard_error),
         })
         .collect();
     Ok(Comparison {
@@ -418,6 +455,7 @@ fn compare_on(
         grids: sweep_config.grids.clone(),
         seeds: sweep_config.seeds.clone(),
         tolerance: sweep_config.options.tolerance,
+        yield_stress,
         nominal_pressure: pressures,
         theories,
         bem,
@@ -437,6 +475,7 @@ fn compare_on(
         data,
         data_histogram,
         measured,
+        wide: config.wide,
     })
 }
 

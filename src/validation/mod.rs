@@ -46,6 +46,8 @@ mod hertz;
 #[cfg(feature = "bem")]
 mod kappa_study;
 #[cfg(feature = "bem")]
+mod plastic;
+#[cfg(feature = "bem")]
 pub mod report;
 #[cfg(feature = "bem")]
 pub mod sweep;

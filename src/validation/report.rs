@@ -115,6 +115,18 @@ pub struct BemGrid {
     pub mean_separation: Vec<f64>,
     /// rms slope of each seed's surface on this grid.
     pub surface_rms_slope: Vec<f64>,
+    /// With a yield stress: A_el/A0 (nodes with 0 < p < σY) at each
+    /// pressure, mean over seeds.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub elastic_fraction: Option<Vec<f64>>,
+    /// With a yield stress: A_pl/A0 (nodes at p = σY) at each pressure,
+    /// mean over seeds; `elastic_fraction + plastic_fraction = contact_fraction`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub plastic_fraction: Option<Vec<f64>>,
+    /// With a yield stress: mean plastic displacement over the nodes at σY
+    /// (unit of L) at each pressure, mean over seeds.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub plastic_displacement_mean: Option<Vec<f64>>,
     /// Solver iterations, all solves of this grid.
     pub iterations: usize,
     /// Largest final residual.
@@ -143,6 +155,18 @@ pub struct ContinuumPoint {
     pub alpha: f64,
     /// Amplitude c of the correction c N^−α.
     pub coefficient: f64,
+    /// With a yield stress: A_el/A0 extrapolated to N → ∞ (same α).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub elastic_fraction: Option<f64>,
+    /// Its combined error of the fit and over seeds.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub elastic_fraction_standard_error: Option<f64>,
+    /// With a yield stress: A_pl/A0 extrapolated to N → ∞ (same α).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub plastic_fraction: Option<f64>,
+    /// Its combined error of the fit and over seeds.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub plastic_fraction_standard_error: Option<f64>,
 }
 
 /// A fit, or why there is none.
@@ -223,8 +247,22 @@ pub struct PressureDistribution {
     pub theory_contact_fraction: f64,
     /// G at ζ = q_s/q_l.
     pub g: f64,
-    /// Persson's P(σ) beyond the BEM's largest pressure, for the tail.
+    /// Persson's P(σ) beyond the BEM's largest pressure, for the tail
+    /// (with a yield stress: on (0, σY]).
     pub theory_curve: DensityCurve,
+    /// With a yield stress: the BEM's A_el/A0 (finest grid, mean over
+    /// seeds); `bem` holds only these nodes and integrates to it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub bem_elastic_fraction: Option<f64>,
+    /// With a yield stress: the BEM's A_pl/A0, the weight of the δ-peak at σY.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub bem_plastic_fraction: Option<f64>,
+    /// With a yield stress: Persson's A_el/A0 (P(σ) on (0, σY) with P(σY) = 0).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub theory_elastic_fraction: Option<f64>,
+    /// With a yield stress: Persson's A_pl/A0, the weight of the δ-peak at σY.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub theory_plastic_fraction: Option<f64>,
 }
 
 /// A density P(σ) sampled at points σ.
@@ -306,6 +344,10 @@ pub struct Comparison {
     pub seeds: Vec<u64>,
     /// Solver tolerance ε.
     pub tolerance: f64,
+    /// Yield stress σY of the saturated BEM and of Persson's finite-σY
+    /// P(σ) (`None`: elastic).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub yield_stress: Option<f64>,
     /// Nominal pressures σ0.
     pub nominal_pressure: Vec<f64>,
     /// The theories' A/A0.
@@ -332,6 +374,11 @@ pub struct Comparison {
     /// (unfiltered, its own grid), beside the band-limited sweep.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub measured: Option<BemGrid>,
+    /// Text tables with every column; `false` (the default): each table
+    /// fits [`TEXT_WIDTH`] characters, the coarser grids' columns of a wide
+    /// table left out (named under its title). Not in the JSON.
+    #[serde(skip)]
+    pub wide: bool,
 }
 
 impl Comparison {
@@ -423,11 +470,9 @@ impl Tabulate for Comparison {
 
         let mut bem = Table::new(
             "area_bem",
-            format!(
-                "Contact area A/A0 of the FFT-BEM on {} and its continuum limit (Campañá & Müser 2007)",
-                self.grid_list()
-            ),
+            "Contact area A/A0 of the FFT-BEM and its continuum limit (Campañá & Müser 2007)",
         )
+        .scalar("grids", "grids", self.grid_list().as_str())
         .scalar("size", "L", self.size)
         .scalar("seeds", "seeds", self.seeds.len())
         .scalar("tolerance", "tolerance ε", self.tolerance)
@@ -441,7 +486,7 @@ impl Tabulate for Comparison {
         if let Some(m) = &self.measured {
             bem = bem.column(
                 "contact_fraction_as_measured",
-                &format!("N = {}, map as measured", m.grid),
+                &format!("{} as measured", m.grid),
             );
         }
         bem = bem
@@ -508,17 +553,21 @@ impl Tabulate for Comparison {
             }
         }
         if let Some(Fitted::Fit(f)) = &self.kappa.data {
-            kappa_row(
-                &mut kappa,
-                "your data",
-                None,
-                f.kappa,
-                f.standard_error,
-                None,
-                f.points,
-            );
+            // The fit's standard error of your curve measures only its bend
+            // (no noise model): in the JSON, not here.
+            kappa.push(vec![
+                "your data".into(),
+                Cell::Empty,
+                Cell::Num(f.kappa),
+                Cell::Empty,
+                Cell::Empty,
+                f.points.into(),
+            ]);
         }
         let mut tables = vec![theory, bem, kappa];
+        if let Some(y) = self.yield_table() {
+            tables.push(y);
+        }
 
         let finest = self.grids.last().copied().unwrap_or(0);
         let mut sep = Table::new(
@@ -541,17 +590,40 @@ impl Tabulate for Comparison {
             let mut t = Table::new(
                 "pressure_distribution",
                 format!(
-                    "Pressure distribution P(σ) at σ0 = {}: BEM {}² (A/A0 = {}) and Persson, flat start (A/A0 = {})",
+                    "Pressure distribution P(σ) at σ0 = {}: BEM {}² and Persson, flat start",
                     number(d.nominal_pressure, 4),
                     d.grid,
-                    number(d.bem_contact_fraction, 4),
-                    number(d.theory_contact_fraction, 4)
                 ),
             )
-            .column("sigma_low", "σ low")
-            .column("sigma_high", "σ high")
-            .column("bem_density", "P(σ) BEM")
-            .column("theory_density", "P(σ) theory");
+            .scalar("bem_contact_fraction", "A/A0 BEM", d.bem_contact_fraction)
+            .scalar(
+                "theory_contact_fraction",
+                "A/A0 theory",
+                d.theory_contact_fraction,
+            );
+            if let (Some(y), Some(bp), Some(tp)) = (
+                self.yield_stress,
+                d.bem_plastic_fraction,
+                d.theory_plastic_fraction,
+            ) {
+                t = t
+                    .scalar("yield_stress", "σY", y)
+                    .scalar(
+                        "bem_plastic_fraction",
+                        "δ-peak at σY: A_pl/A0 BEM (not in the bins)",
+                        bp,
+                    )
+                    .scalar(
+                        "theory_plastic_fraction",
+                        "δ-peak at σY: A_pl/A0 theory",
+                        tp,
+                    );
+            }
+            t = t
+                .column("sigma_low", "σ low")
+                .column("sigma_high", "σ high")
+                .column("bem_density", "P(σ) BEM")
+                .column("theory_density", "P(σ) theory");
             for (b, th) in d.bem.iter().zip(&d.theory_density) {
                 t.push(vec![
                     b.sigma_low.into(),
@@ -626,6 +698,74 @@ impl Tabulate for Comparison {
             solves.push(row);
         }
         tables.push(solves);
+        if !self.wide {
+            for t in &mut tables {
+                narrow(t, TEXT_WIDTH);
+            }
+        }
         tables
+    }
+}
+
+/// Width in characters that the default text tables of a [`Comparison`] fit
+/// (`wide` prints every column).
+pub const TEXT_WIDTH: usize = 100;
+
+/// Widest line of a table's text.
+fn text_width(t: &Table) -> usize {
+    t.to_text()
+        .lines()
+        .map(|l| l.chars().count())
+        .max()
+        .unwrap_or(0)
+}
+
+/// Fit a table into `width` characters: a long title wrapped at spaces,
+/// then the columns of the coarser grids (`contact_fraction_<N>`, all but
+/// the finest) dropped, coarsest first, with a line saying so.
+fn narrow(t: &mut Table, width: usize) {
+    if t.title.chars().count() > width {
+        let mut lines = vec![String::new()];
+        for word in t.title.split(' ') {
+            let last = lines.last_mut().expect("one line");
+            if !last.is_empty() && last.chars().count() + 1 + word.chars().count() > width {
+                lines.push(format!("  {word}"));
+            } else {
+                if !last.is_empty() {
+                    last.push(' ');
+                }
+                last.push_str(word);
+            }
+        }
+        t.title = lines.join("\n");
+    }
+    let grid_columns = |t: &Table| -> Vec<usize> {
+        (0..t.columns.len())
+            .filter(|&j| {
+                t.columns[j]
+                    .key
+                    .strip_prefix("contact_fraction_")
+                    .is_some_and(|g| g.parse::<usize>().is_ok())
+            })
+            .collect()
+    };
+    let mut dropped = Vec::new();
+    while text_width(t) > width {
+        let cols = grid_columns(t);
+        if cols.len() < 2 {
+            break;
+        }
+        let j = cols[0];
+        dropped.push(t.columns.remove(j).heading);
+        for r in &mut t.rows {
+            r.remove(j);
+        }
+    }
+    if !dropped.is_empty() {
+        t.scalars.push((
+            "omitted".into(),
+            "not shown (--wide shows them)".into(),
+            Cell::Text(dropped.join(", ")),
+        ));
     }
 }

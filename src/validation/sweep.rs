@@ -376,6 +376,15 @@ pub struct GridResult {
     pub mean_separation: Vec<Vec<f64>>,
     /// rms slope of each seed's surface (trigonometric interpolant).
     pub surface_rms_slope: Vec<f64>,
+    /// With a yield stress: fraction of nodes with 0 < p < σY,
+    /// `[seed][pressure]` (without: equal to `contact_fraction`).
+    pub elastic_fraction: Vec<Vec<f64>>,
+    /// With a yield stress: fraction of nodes at p = σY, `[seed][pressure]`
+    /// (without: 0).
+    pub plastic_fraction: Vec<Vec<f64>>,
+    /// With a yield stress: mean plastic displacement over the nodes at σY
+    /// (unit of L), `[seed][pressure]` (without: 0).
+    pub plastic_displacement_mean: Vec<Vec<f64>>,
     /// CG iterations, all solves of this grid.
     pub iterations: usize,
     /// Largest final residual ε of this grid's solves.
@@ -393,8 +402,11 @@ pub struct Sweep {
     /// One entry per grid, ascending.
     pub grids: Vec<GridResult>,
     /// Contact-pressure counts of the finest grid, one per pressure,
-    /// accumulated over seeds.
+    /// accumulated over seeds (with a yield stress: the nodes below σY only;
+    /// the δ-peak at σY is the finest grid's `plastic_fraction`).
     pub histograms: Vec<PressureCounts>,
+    /// The yield stress of the solves (`None`: elastic).
+    pub yield_stress: Option<f64>,
 }
 
 /// Solve every pressure on every grid for every seed.
@@ -617,6 +629,9 @@ pub fn sweep_source(
             contact_fraction: vec![vec![0.0; np]; ns],
             mean_separation: vec![vec![0.0; np]; ns],
             surface_rms_slope: vec![0.0; ns],
+            elastic_fraction: vec![vec![0.0; np]; ns],
+            plastic_fraction: vec![vec![0.0; np]; ns],
+            plastic_displacement_mean: vec![vec![0.0; np]; ns],
             iterations: 0,
             residual: 0.0,
             seconds: 0.0,
@@ -649,6 +664,7 @@ pub fn sweep_source(
                 seed,
                 order: &order,
                 counts: (gi + 1 == surfaces.len()).then_some(&mut histograms),
+                yield_stress: config.options.yield_stress,
             };
             let points = rough::solve(surf, contact_modulus, &sorted, &options, &mut observer)?;
             done += points.len();
@@ -656,6 +672,9 @@ pub fn sweep_source(
             for (pt, &k) in points.iter().zip(&order) {
                 g.contact_fraction[si][k] = pt.contact_fraction;
                 g.mean_separation[si][k] = pt.mean_separation;
+                g.elastic_fraction[si][k] = pt.elastic_fraction.unwrap_or(pt.contact_fraction);
+                g.plastic_fraction[si][k] = pt.plastic_fraction.unwrap_or(0.0);
+                g.plastic_displacement_mean[si][k] = pt.plastic_displacement_mean.unwrap_or(0.0);
                 g.iterations += pt.iterations;
                 g.residual = g.residual.max(pt.residual);
                 g.seconds += pt.seconds;
@@ -666,6 +685,7 @@ pub fn sweep_source(
         nominal_pressure: pressures.to_vec(),
         grids,
         histograms,
+        yield_stress: config.options.yield_stress,
     })
 }
 
@@ -678,6 +698,7 @@ struct SweepObserver<'a> {
     seed: u64,
     order: &'a [usize],
     counts: Option<&'a mut Vec<PressureCounts>>,
+    yield_stress: Option<f64>,
 }
 
 impl rough::Observer for SweepObserver<'_> {
@@ -694,7 +715,18 @@ impl rough::Observer for SweepObserver<'_> {
 
     fn solution(&mut self, index: usize, solution: &Solution) -> Result<()> {
         if let Some(h) = self.counts.as_deref_mut() {
-            h[self.order[index]].add(&solution.pressure);
+            match self.yield_stress {
+                // The nodes at σY are the δ-peak, counted apart (plastic_fraction).
+                Some(y) => {
+                    let below: Vec<f64> = solution
+                        .pressure
+                        .iter()
+                        .map(|&p| if p >= y { 0.0 } else { p })
+                        .collect();
+                    h[self.order[index]].add(&below);
+                }
+                None => h[self.order[index]].add(&solution.pressure),
+            }
         }
         Ok(())
     }
@@ -773,6 +805,61 @@ impl Sweep {
         self.grids
             .iter()
             .map(|g| per_pressure_mean(&g.mean_separation, self.nominal_pressure.len()))
+            .collect()
+    }
+
+    /// Seed-averaged A_el/A0 and A_pl/A0 per grid: `[grid][pressure]` each.
+    pub fn mean_plastic_split(&self) -> Vec<(Vec<f64>, Vec<f64>)> {
+        let np = self.nominal_pressure.len();
+        self.grids
+            .iter()
+            .map(|g| {
+                (
+                    per_pressure_mean(&g.elastic_fraction, np).0,
+                    per_pressure_mean(&g.plastic_fraction, np).0,
+                )
+            })
+            .collect()
+    }
+
+    /// Seed-averaged mean plastic displacement per grid: `[grid][pressure]`.
+    pub fn mean_plastic_displacement(&self) -> Vec<Vec<f64>> {
+        let np = self.nominal_pressure.len();
+        self.grids
+            .iter()
+            .map(|g| per_pressure_mean(&g.plastic_displacement_mean, np).0)
+            .collect()
+    }
+
+    /// The continuum limit of A_el/A0 and of A_pl/A0 at each pressure, each
+    /// with the α of the total's limit `cont` at that pressure.
+    ///
+    /// # Errors
+    /// As [`continuum_limit`].
+    pub fn extrapolate_plastic_split(
+        &self,
+        cont: &[Continuum],
+    ) -> Result<Vec<(Continuum, Continuum)>> {
+        let grids: Vec<usize> = self.grids.iter().map(|g| g.grid).collect();
+        let at = |field: fn(&GridResult) -> &Vec<Vec<f64>>, k: usize, alpha: f64| {
+            let a: Vec<Vec<Vec<f64>>> = self
+                .grids
+                .iter()
+                .map(|g| field(g).iter().map(|s| vec![s[k]]).collect())
+                .collect();
+            continuum_limit(&grids, &a, Some(alpha)).and_then(|mut v| {
+                v.pop()
+                    .ok_or_else(|| Error::invalid("nominal_pressure", 0.0, "at least one"))
+            })
+        };
+        cont.iter()
+            .enumerate()
+            .map(|(k, c)| {
+                Ok((
+                    at(|g| &g.elastic_fraction, k, c.fit.alpha)?,
+                    at(|g| &g.plastic_fraction, k, c.fit.alpha)?,
+                ))
+            })
             .collect()
     }
 
