@@ -75,6 +75,29 @@ pub fn comparison(a: &MainArgs, r: &Comparison) -> anyhow::Result<()> {
                 xy(&d.nominal_pressure, &d.contact_fraction),
             ));
         }
+        if let Some(y) = r.yield_stress {
+            // The plastic parts A_pl/A0: theory and BEM extrapolated.
+            let theory: Vec<f64> = r
+                .pressure_distribution
+                .iter()
+                .filter_map(|d| d.theory_plastic_fraction)
+                .collect();
+            let bem: Vec<f64> = r
+                .extrapolated
+                .iter()
+                .filter_map(|c| c.plastic_fraction)
+                .collect();
+            let y = persson::table::number(y, 4);
+            fig.push(Series::new(
+                format!("Persson A_pl/A0, σY = {y}"),
+                xy(p, &theory),
+                Style::Dashed,
+            ));
+            fig.push(Series::line_markers(
+                format!("BEM A_pl/A0, N → ∞"),
+                xy(p, &bem),
+            ));
+        }
         Ok(fig)
     })?;
     let Some(d) = r.shown_distribution() else {
@@ -103,9 +126,58 @@ pub fn comparison(a: &MainArgs, r: &Comparison) -> anyhow::Result<()> {
         if let Some(h) = &r.data_histogram {
             fig.push(Series::markers("your histogram", xy(&h.sigma, &h.density)));
         }
+        if let Some(y) = r.yield_stress {
+            plastic_peaks(&mut fig, d, y);
+        }
         persson::plot::render(&fig, path)?;
     }
     Ok(())
+}
+
+/// The δ-peaks at σY (weight A_pl/A0) of the BEM and of the theory, each a
+/// vertical bar at σY as high as one histogram bin of that weight (A_pl/Δσ),
+/// labelled with A_pl/A0.
+#[cfg(feature = "plot")]
+fn plastic_peaks(
+    fig: &mut persson::plot::Figure,
+    d: &persson::validation::report::PressureDistribution,
+    y: f64,
+) {
+    use persson::plot::{Series, Style, PALETTE};
+    use persson::table::number;
+    let width = d
+        .bem
+        .first()
+        .map_or(y / 40.0, |b| b.sigma_high - b.sigma_low);
+    // Bottom of the bars: the smallest positive density drawn (log axes).
+    let floor = d
+        .bem
+        .iter()
+        .map(|b| b.density)
+        .chain(d.theory_curve.density.iter().copied())
+        .filter(|v| *v > 0.0)
+        .fold(f64::INFINITY, f64::min);
+    let floor = if floor.is_finite() { floor } else { 0.0 };
+    for (who, a_pl, style, colour) in [
+        ("BEM", d.bem_plastic_fraction, Style::Line, PALETTE[0]),
+        (
+            "Persson",
+            d.theory_plastic_fraction,
+            Style::Dashed,
+            PALETTE[1],
+        ),
+    ] {
+        let Some(a) = a_pl.filter(|a| *a > 0.0) else {
+            continue;
+        };
+        let label = format!(
+            "{who} δ-peak at σY = {}: A_pl/A0 = {}",
+            number(y, 4),
+            number(a, 3)
+        );
+        let bar = vec![(y, floor), (y, (a / width).max(floor))];
+        fig.push(Series::new(label, bar, style).with_color(colour));
+    }
 }
 
 /// κ against H with error bars, next to Persson's and Bush's κ (`--plot`).
