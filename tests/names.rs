@@ -138,6 +138,7 @@ fn commands(out_dir: &Path) -> Vec<Vec<Vec<String>>> {
         "bem hertz --grid 32",
         "bem rough --example --grid 32",
         "compare --example --grid 32 --levels 2",
+        "compare --example --grid 32 --levels 2 --yield-stress 6e6",
         "spectrum --surface tests/reference/data/map_a.npy --pixel-size 1e-6",
         "compare --surface tests/reference/data/map_b.npy --pixel-size 2e-6 --periodic --contact-modulus 1e9",
         "report stability",
