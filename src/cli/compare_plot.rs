@@ -93,10 +93,7 @@ pub fn comparison(a: &MainArgs, r: &Comparison) -> anyhow::Result<()> {
                 xy(p, &theory),
                 Style::Dashed,
             ));
-            fig.push(Series::line_markers(
-                format!("BEM A_pl/A0, N → ∞"),
-                xy(p, &bem),
-            ));
+            fig.push(Series::line_markers("BEM A_pl/A0, N → ∞", xy(p, &bem)));
         }
         Ok(fig)
     })?;
