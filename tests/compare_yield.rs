@@ -261,6 +261,38 @@ mod cli {
         assert!(!out.contains("Elastic–plastic") && !out.contains("δ-peak"));
     }
 
+    /// A periodic measured map: the map as measured is solved with σY too.
+    #[test]
+    fn measured_map_as_measured_has_its_fractions() {
+        let args = [
+            "compare",
+            "--surface",
+            "tests/reference/data/map_b.npy",
+            "--pixel-size",
+            "2e-6",
+            "--periodic",
+            "--contact-modulus",
+            "1e9",
+            "--yield-stress",
+            "8e5",
+        ];
+        let mut j = args.to_vec();
+        j.push("--json");
+        let v = json(&j);
+        let m = &v["measured"];
+        let n = v["nominal_pressure"].as_array().unwrap().len();
+        for k in 0..n {
+            let f = |key: &str| m[key][k].as_f64().unwrap();
+            let sum = f("elastic_fraction") + f("plastic_fraction");
+            assert!((sum - f("contact_fraction")).abs() < super::ROUNDING);
+        }
+        assert!(m["plastic_fraction"][n - 1].as_f64().unwrap() > 0.0);
+        let (code, out, err) = persson(&args);
+        assert_eq!(code, 0, "{err}");
+        assert_eq!(out.matches("BEM, map as measured").count(), n, "{out}");
+        assert!(out.lines().all(|l| l.chars().count() <= 100), "{out}");
+    }
+
     #[test]
     fn bad_yield_stress_is_an_error_naming_it() {
         for (y, says) in [

@@ -66,11 +66,12 @@ impl Comparison {
                     Cell::Empty,
                 ]);
             }
-            for g in &self.bem {
+            let measured = self.measured.iter().map(|g| ("BEM, map as measured", g));
+            for (source, g) in self.bem.iter().map(|g| ("BEM", g)).chain(measured) {
                 let at = |v: &Option<Vec<f64>>| v.as_ref().and_then(|v| v.get(k).copied());
                 t.push(vec![
                     p.into(),
-                    "BEM".into(),
+                    source.into(),
                     g.grid.into(),
                     g.contact_fraction[k].into(),
                     at(&g.elastic_fraction).into(),

@@ -436,8 +436,13 @@ impl Tabulate for Comparison {
         let mut theory = Table::new(
             "area_theory",
             format!(
-                "Contact area A/A0 of the theories, ζ = {}",
-                number(s.zeta, 6)
+                "Contact area A/A0 of the theories, ζ = {}{}",
+                number(s.zeta, 6),
+                if self.yield_stress.is_some() {
+                    " (elastic; with σY: the table \"Elastic–plastic contact\")"
+                } else {
+                    ""
+                }
             ),
         )
         .scalar("contact_modulus", "E*", self.contact_modulus)
@@ -572,7 +577,14 @@ impl Tabulate for Comparison {
         let finest = self.grids.last().copied().unwrap_or(0);
         let mut sep = Table::new(
             "mean_separation",
-            format!("Mean separation ū: BEM mean gap ({finest}²) and Persson's theory"),
+            format!(
+                "Mean separation ū: BEM mean gap ({finest}²) and Persson's theory{}",
+                if self.yield_stress.is_some() {
+                    " (elastic; the BEM's plastic interpenetration enters as a negative gap)"
+                } else {
+                    ""
+                }
+            ),
         )
         .column("nominal_pressure", "σ0")
         .column("bem_mean_separation", "ū BEM")
