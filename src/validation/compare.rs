@@ -131,9 +131,19 @@ fn theory_curves(model: &Persson, pressures: &[f64]) -> Result<Vec<TheoryArea>> 
 /// set against Persson's P(σ) from a flat start, the BEM mean gap against
 /// ū(σ0), and the user's data are scored against each theory and A∞.
 ///
+/// With a yield stress σY (`config.sweep.options.yield_stress`) the BEM is
+/// the saturated solver ([`crate::bem::saturated`]): each grid reports
+/// A_el/A0 and A_pl/A0 beside A/A0, both extrapolated with the α of A; the
+/// histograms hold the nodes below σY and the δ-peak at σY is the finest
+/// grid's A_pl/A0; Persson's P(σ) is the finite-σY series (P(σY) = 0, flat
+/// start at σ0, ζ = q_s/q_l) with its A_el/A0 and A_pl/A0
+/// ([`crate::stress::StressScene::flat`]).
+///
 /// # Errors
-/// Invalid settings or pressures; a theory or the BEM failing (NotConverged).
-/// A κ that cannot be fitted is reported in the result, not as an error.
+/// Invalid settings or pressures; σY not finite and positive or not above
+/// every nominal pressure (no solution exists); a theory or the BEM failing
+/// (NotConverged). A κ that cannot be fitted is reported in the result, not
+/// as an error.
 pub fn compare(
     spectrum: &dyn Spectrum,
     config: &ComparisonConfig,

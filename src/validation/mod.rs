@@ -4,7 +4,10 @@
 //! - [`compare`] (feature `bem`): every theory against the BEM at several
 //!   resolutions of one physical surface, its continuum limit, κ, pressure
 //!   distributions, mean separation and the user's data, as one typed
-//!   [`Comparison`] (what `persson compare` prints and plots).
+//!   [`Comparison`] (what `persson compare` prints and plots). With a yield
+//!   stress on the solver options (`config.sweep.options.yield_stress`) the
+//!   BEM is the saturated one and the theory Persson's finite-σY P(σ), with
+//!   A_el/A0 and A_pl/A0 on both sides (`persson compare --yield-stress`).
 //! - [`kappa_study`] (feature `bem`): κ against the Hurst exponent
 //!   ([`KappaStudy`], `persson compare kappa`).
 //! - [`hertz`] (feature `bem`): the BEM against the Hertz closed form
