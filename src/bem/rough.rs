@@ -425,18 +425,38 @@ impl Tabulate for RoughReport {
         }
         let mut tables = vec![t];
         if self.points.iter().any(|p| p.histogram.is_some()) {
+            // With a yield stress, the δ-peak at σY is a row of its own
+            // (σ low = σ high = σY, no density) with its weight in the
+            // column `plastic_fraction`, empty on the bins' rows.
             let mut h = Table::new("bem_histogram", "Pressure histograms P(σ) of the FFT-BEM")
                 .column("nominal_pressure", "σ0")
                 .column("sigma_low", "σ low")
                 .column("sigma_high", "σ high")
                 .column("density", "P(σ)");
+            if saturated {
+                h = h.column("plastic_fraction", "A_pl/A0 (δ-peak at σY)");
+            }
             for p in &self.points {
-                for b in p.histogram.iter().flatten() {
-                    h.push(vec![
+                let Some(bins) = &p.histogram else { continue };
+                for b in bins {
+                    let mut row: Vec<Cell> = vec![
                         p.nominal_pressure.into(),
                         b.sigma_low.into(),
                         b.sigma_high.into(),
                         b.density.into(),
+                    ];
+                    if saturated {
+                        row.push(Cell::Empty);
+                    }
+                    h.push(row);
+                }
+                if let Some(y) = self.yield_stress {
+                    h.push(vec![
+                        p.nominal_pressure.into(),
+                        y.into(),
+                        y.into(),
+                        Cell::Empty,
+                        p.plastic_fraction.into(),
                     ]);
                 }
             }
