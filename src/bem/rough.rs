@@ -319,6 +319,72 @@ pub struct RoughReport {
     pub surface: SurfaceSource,
     /// One point per nominal pressure, in the caller's order.
     pub points: Vec<RoughPoint>,
+    /// The pressure field of the last solve, kept only by
+    /// [`rough_contact_mapped`] (for `bem rough --plot`); not serialised.
+    #[serde(skip)]
+    pub pressure_map: Option<PressureMap>,
+}
+
+/// The pressure field of one solve (row-major N × N, unit of E*).
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub struct PressureMap {
+    /// Index of the solve in the pressure list.
+    pub index: usize,
+    /// Its nominal pressure σ0.
+    pub nominal_pressure: f64,
+    /// The nodal pressures, `p[i·N + j]`.
+    pub pressure: Vec<f64>,
+}
+
+/// Keeps the last solution's pressure, forwarding everything else.
+struct Keep<'a> {
+    inner: &'a mut dyn Observer,
+    last: Option<(usize, Vec<f64>)>,
+}
+
+impl Observer for Keep<'_> {
+    fn iteration(&mut self, progress: RoughProgress) {
+        self.inner.iteration(progress);
+    }
+    fn solution(&mut self, index: usize, solution: &Solution) -> Result<()> {
+        self.inner.solution(index, solution)?;
+        match &mut self.last {
+            Some((k, p)) => {
+                *k = index;
+                p.clone_from(&solution.pressure);
+            }
+            None => self.last = Some((index, solution.pressure.clone())),
+        }
+        Ok(())
+    }
+}
+
+/// [`rough_contact`], keeping the pressure field of the last solve in
+/// [`RoughReport::pressure_map`] (one N² copy per solve; [`rough_contact`]
+/// keeps none).
+///
+/// # Errors
+/// As [`rough_contact`].
+pub fn rough_contact_mapped(
+    surface: &Surface,
+    source: SurfaceSource,
+    contact_modulus: f64,
+    pressures: &[f64],
+    options: &RoughOptions,
+    observer: &mut dyn Observer,
+) -> Result<RoughReport> {
+    let mut keep = Keep {
+        inner: observer,
+        last: None,
+    };
+    let mut report = rough_contact(surface, source, contact_modulus, pressures, options, &mut keep)?;
+    report.pressure_map = keep.last.map(|(index, pressure)| PressureMap {
+        index,
+        nominal_pressure: pressures[index],
+        pressure,
+    });
+    Ok(report)
 }
 
 /// [`solve`] and its report.
@@ -345,6 +411,7 @@ pub fn rough_contact(
         surface_rms_slope: surface.rms_slope()?,
         surface: source,
         points,
+        pressure_map: None,
     })
 }
 

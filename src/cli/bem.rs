@@ -102,6 +102,10 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
         eprintln!("persson: {}", persson::scene::EXAMPLE);
     }
     let pressures = super::args::pressures(&a.pressure, a.spectrum.example)?;
+    let plot = super::plot::PlotArg {
+        plot: a.plot.clone(),
+    };
+    plot.check()?;
     let options = RoughOptions {
         boundary: a.boundary,
         solver: Options {
@@ -141,9 +145,22 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
         several,
         n: surface.n,
     };
-    let report = rough::rough_contact(&surface, source, e_star, &pressures, &options, &mut solves);
+    let report = if a.plot.is_some() {
+        rough::rough_contact_mapped(&surface, source, e_star, &pressures, &options, &mut solves)
+    } else {
+        rough::rough_contact(&surface, source, e_star, &pressures, &options, &mut solves)
+    };
     solves.bar.finish();
     let report = report?;
+    if let Some(path) = &a.plot {
+        #[cfg(feature = "plot")]
+        persson::plot::map::render_map(&persson::plot::map::rough_map(&report)?, path)?;
+        #[cfg(not(feature = "plot"))]
+        anyhow::bail!(
+            "--plot {}: this persson was built without the `plot` feature",
+            path.display()
+        );
+    }
     if let Some(path) = &a.histogram {
         // The report's own histogram table: every pressure in one CSV.
         if let Some(t) = report

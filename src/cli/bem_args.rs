@@ -135,6 +135,11 @@ pub struct RoughArgs {
     pub yield_stress: Option<f64>,
     #[command(flatten)]
     pub solver: SolverArgs,
+    /// Also draw the last pressure's map (plastic nodes in red with --yield-stress)
+    /// and its histogram P(σ) (the plastic δ-peak at σY as a labelled bar) into
+    /// this file (.svg or .png).
+    #[arg(long, value_name = "FILE.svg|png")]
+    pub plot: Option<PathBuf>,
     #[command(flatten)]
     pub format: Format,
 }
