@@ -77,7 +77,12 @@ fn main() -> persson::Result<()> {
                 let k = row * n + j;
                 let r = rr[k];
                 if r > 0.5 * a && r < 1.05 * a {
-                    println!("  r/a {:.4}  1-p/Y {:.3e}  gap {:.3e}", r / a, 1.0 - sol.pressure[k] / y, sol.gap[k]);
+                    println!(
+                        "  r/a {:.4}  1-p/Y {:.3e}  gap {:.3e}",
+                        r / a,
+                        1.0 - sol.pressure[k] / y,
+                        sol.gap[k]
+                    );
                 }
             }
         }

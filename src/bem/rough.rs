@@ -378,7 +378,14 @@ pub fn rough_contact_mapped(
         inner: observer,
         last: None,
     };
-    let mut report = rough_contact(surface, source, contact_modulus, pressures, options, &mut keep)?;
+    let mut report = rough_contact(
+        surface,
+        source,
+        contact_modulus,
+        pressures,
+        options,
+        &mut keep,
+    )?;
     report.pressure_map = keep.last.map(|(index, pressure)| PressureMap {
         index,
         nominal_pressure: pressures[index],

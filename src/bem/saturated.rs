@@ -167,6 +167,32 @@ pub(super) fn solve(
                 tolerance: opts.tolerance,
             });
         }
+        if let (Some(total), 0) = (target, nf) {
+            // Every contact node is at σY and they carry less than the load
+            // (else ε = 0 and the overlap test passes): the free set is empty,
+            // so no step exists. The overlapping nodes enter with the missing
+            // load shared in proportion to their overlap (a step from the
+            // stiffest mode would overshoot them all to σY, and scaling
+            // back would empty the plastic set: a cycle of two states).
+            let missing = total - sum_p;
+            let weight: f64 = p
+                .iter()
+                .zip(&g)
+                .filter(|(&pk, &gk)| pk <= 0.0 && gk < g_bar)
+                .map(|(_, &gk)| g_bar - gk)
+                .sum();
+            if missing > 0.0 && weight > 0.0 {
+                for (pk, &gk) in p.iter_mut().zip(&g) {
+                    if *pk <= 0.0 && gk < g_bar {
+                        *pk = (missing * (g_bar - gk) / weight).min(y);
+                    }
+                }
+                project_load(&mut p, y, total);
+                conjugate = false;
+                k += 1;
+                continue;
+            }
+        }
         // Search direction on the free set, conjugate to the last one.
         let g_norm: f64 = p
             .iter()

@@ -4,9 +4,9 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::Context;
+use persson::bem::hertz::{self, HertzCase};
 use persson::bem::rough::{self, Observer, RoughOptions, RoughProgress, SurfaceSource};
 use persson::bem::surface::{synthesize, write_npy};
-use persson::bem::hertz::{self, HertzCase};
 use persson::bem::{check_memory, Options, Solution, MIN_GRID};
 use persson::error::check;
 use persson::table::Tabulate;

@@ -129,7 +129,11 @@ impl MapFigure {
 
 /// Viridis at `t` in [0, 1].
 fn viridis(t: f64) -> RGBColor {
-    let t = if t.is_finite() { t.clamp(0.0, 1.0) } else { 0.0 };
+    let t = if t.is_finite() {
+        t.clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
     let x = t * 4.0;
     let i = (x.floor() as usize).min(3);
     let f = x - i as f64;
@@ -146,10 +150,16 @@ fn font(size: f64, k: u32) -> FontDesc<'static> {
 }
 
 /// Draws the figure on any backend at `k` times its size.
-fn draw_map<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, f: &MapFigure, k: u32) -> DrawResult<DB> {
+fn draw_map<DB: DrawingBackend>(
+    root: DrawingArea<DB, Shift>,
+    f: &MapFigure,
+    k: u32,
+) -> DrawResult<DB> {
     let px = |v: u32| v * k;
     root.fill(&WHITE)?;
-    let root = root.margin(px(8), 0, 0, 0).titled(&f.title, font(17.0, k))?;
+    let root = root
+        .margin(px(8), 0, 0, 0)
+        .titled(&f.title, font(17.0, k))?;
     let (w, h) = root.dim_in_pixel();
     // A square map: its plotting area is as wide as it is high.
     let side = h.saturating_sub(px(45 + 20));
@@ -159,8 +169,17 @@ fn draw_map<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, f: &MapFigure, k: 
 
     // The map.
     let (m, mean, plastic) = f.cells();
-    let p_max = f.pressure.iter().copied().filter(|p| p.is_finite()).fold(0.0, f64::max);
-    let top = f.yield_stress.unwrap_or(p_max).max(p_max).max(f64::MIN_POSITIVE);
+    let p_max = f
+        .pressure
+        .iter()
+        .copied()
+        .filter(|p| p.is_finite())
+        .fold(0.0, f64::max);
+    let top = f
+        .yield_stress
+        .unwrap_or(p_max)
+        .max(p_max)
+        .max(f64::MIN_POSITIVE);
     let l = f.side;
     let mut chart = ChartBuilder::on(&map_area)
         .margin(px(10))
@@ -209,7 +228,10 @@ fn draw_map<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, f: &MapFigure, k: 
     let steps = 100;
     bar.draw_series((0..steps).map(|s| {
         let (a, b) = (s as f64 / steps as f64, (s + 1) as f64 / steps as f64);
-        Rectangle::new([(0.0, a * top), (1.0, b * top)], viridis(0.5 * (a + b)).filled())
+        Rectangle::new(
+            [(0.0, a * top), (1.0, b * top)],
+            viridis(0.5 * (a + b)).filled(),
+        )
     }))?;
     if let Some(y) = f.yield_stress {
         // The plastic colour as a band at σY.
@@ -247,7 +269,10 @@ fn draw_map<DB: DrawingBackend>(root: DrawingArea<DB, Shift>, f: &MapFigure, k: 
         .draw()?;
     let elastic: f64 = f.bins.iter().map(|b| b.2 * (b.1 - b.0)).sum();
     let bars_label = match f.yield_stress {
-        Some(_) => format!("P(σ), σ < σY: A_el/A0 = {}", crate::table::number(elastic, 4)),
+        Some(_) => format!(
+            "P(σ), σ < σY: A_el/A0 = {}",
+            crate::table::number(elastic, 4)
+        ),
         None => format!("P(σ): A/A0 = {}", crate::table::number(elastic, 4)),
     };
     hist.draw_series(
@@ -374,7 +399,10 @@ pub fn rough_map(r: &crate::bem::rough::RoughReport) -> Result<MapFigure> {
         crate::table::number(map.nominal_pressure, 4)
     );
     if let Some(y) = r.yield_stress {
-        title.push_str(&format!(", σY = {} (red: p = σY)", crate::table::number(y, 4)));
+        title.push_str(&format!(
+            ", σY = {} (red: p = σY)",
+            crate::table::number(y, 4)
+        ));
     }
     Ok(MapFigure {
         title,
