@@ -1,100 +1,63 @@
-//! scratch
+//! The Hertz ball with a yield stress below its elastic peak pressure
+//! (σY = 0.8 p₀, free boundary, a_H = 0.1 L, R = L = E* = 1, tolerance
+//! 1e-12): the radius c of the plastic disc (node count, c = √(n_pl Δ²/π)),
+//! the contact radius and the approach per grid, against the 1-D
+//! axisymmetric solution of examples/hertz_plastic_rings.py
+//! (c/a_H = 0.7402 ± 0.0002, δ/δ_H = 1.0104824).
+//!
+//! `cargo run --release --example hertz_plastic_disc [-- 64 128 256 512]`
+//! (`-- --ratio 0.6 …` for another σY/p₀).
+
 #[cfg(not(feature = "bem"))]
-fn main() {}
+fn main() {
+    eprintln!("hertz_plastic_disc needs the feature bem");
+}
 
 #[cfg(feature = "bem")]
 fn main() -> persson::Result<()> {
-    use persson::bem::{hertz::HertzCase, Boundary, Control, Operator, Options, Solver};
+    use persson::bem::{hertz, Boundary, Options};
     let args: Vec<String> = std::env::args().skip(1).collect();
-    let tol: f64 = args[0].parse().unwrap();
-    let a_ratio: f64 = args[1].parse().unwrap();
-    let grids: Vec<usize> = args[2..].iter().filter_map(|a| a.parse().ok()).collect();
-    println!("tol {tol:e} a {a_ratio}");
-    println!("    N   c_count/a   c_fitp/a  c_fitd/a  a_count/a a_fit/a  iters  s");
-    for n in grids {
-        let mut case = HertzCase::new(n, Boundary::Free);
-        case.contact_radius = a_ratio;
-        let y = 0.8 * case.peak_pressure();
-        let opts = Options {
-            tolerance: tol,
-            yield_stress: Some(y),
-            ..Options::default()
-        };
-        let mut s = Solver::new(Operator::new(Boundary::Free, n, 1.0, 1.0)?);
-        let sol = s.solve(
-            &case.heights(),
-            Control::MeanPressure(case.mean_pressure()),
-            &opts,
-        )?;
-        let a = case.contact_radius;
-        let dx = 1.0 / n as f64;
-        let radius = |f: f64| (f / std::f64::consts::PI).sqrt();
-        let c0 = radius(sol.plastic_fraction);
-        let rr = case.radii();
-        // fit (Y-p)^2 = m (r - c) over elastic nodes c0 < r < c0 + 0.25 a
-        let fit = |xs: &[(f64, f64)]| {
-            let m = xs.len() as f64;
-            let (sx, sy) = xs.iter().fold((0.0, 0.0), |s, v| (s.0 + v.0, s.1 + v.1));
-            let (mx, my) = (sx / m, sy / m);
-            let (mut sxy, mut sxx) = (0.0, 0.0);
-            for v in xs {
-                sxy += (v.0 - mx) * (v.1 - my);
-                sxx += (v.0 - mx).powi(2);
-            }
-            let b = sxy / sxx;
-            mx - my / b
-        };
-        let pts: Vec<(f64, f64)> = sol
-            .pressure
-            .iter()
-            .zip(&rr)
-            .filter(|(&p, &r)| p < y && p > 0.0 && r > c0 && r < c0 + 0.2 * a)
-            .map(|(&p, &r)| (r, (y - p).powi(2)))
-            .collect();
-        let cp = fit(&pts);
-        let ptd: Vec<(f64, f64)> = sol
-            .pressure
-            .iter()
-            .zip(&rr)
-            .zip(&sol.gap)
-            .filter(|((&p, &r), _)| p >= y && r > c0 - 0.3 * a)
-            .map(|((_, &r), &g)| (r, (-g).max(0.0).powf(2.0 / 3.0)))
-            .collect();
-        let cd = fit(&ptd);
-        // contact edge: fit p^2 vs r^2 near a
-        let pta: Vec<(f64, f64)> = sol
-            .pressure
-            .iter()
-            .zip(&rr)
-            .filter(|(&p, &r)| p > 0.0 && p < y && r > 0.9 * a)
-            .map(|(&p, &r)| (r * r, p * p))
-            .collect();
-        let af = fit(&pta).sqrt();
-        let _ = dx;
-        if std::env::var("PROFILE").is_ok() {
-            let row = n / 2;
-            for j in n / 2..n {
-                let k = row * n + j;
-                let r = rr[k];
-                if r > 0.5 * a && r < 1.05 * a {
-                    println!(
-                        "  r/a {:.4}  1-p/Y {:.3e}  gap {:.3e}",
-                        r / a,
-                        1.0 - sol.pressure[k] / y,
-                        sol.gap[k]
-                    );
-                }
-            }
-        }
+    let ratio = args
+        .iter()
+        .position(|a| a == "--ratio")
+        .and_then(|k| args.get(k + 1))
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(0.8);
+    let grids: Vec<usize> = args.iter().filter_map(|a| a.parse().ok()).collect();
+    let grids: Vec<usize> = if grids.is_empty() {
+        vec![64, 128, 256, 512]
+    } else {
+        grids.into_iter().filter(|&n| n >= 8).collect()
+    };
+    let case = hertz::HertzCase::new(grids[0], Boundary::Free);
+    let opts = Options {
+        tolerance: 1e-12,
+        ..Options::default()
+    };
+    let r = hertz::plastic_disc(
+        &case,
+        &grids,
+        ratio * case.peak_pressure(),
+        &opts,
+        &mut |_, _| {},
+    )?;
+    let a = case.contact_radius;
+    let delta_h = a * a / case.radius;
+    println!("σY/p₀ = {ratio}");
+    println!("    N   c/a_H     Δc/cell   contact radius/a_H   δ/δ_H        A_pl/A0       iterations   s");
+    for row in &r.rows {
+        let cell = case.size / row.grid as f64;
         println!(
-            "{n:>5}   {:.5}   {:.5}   {:.5}   {:.5}   {:.5}  {:>5}  {:.3}",
-            c0 / a,
-            cp / a,
-            cd / a,
-            radius(sol.contact_fraction) / a,
-            af / a,
-            sol.iterations,
-            sol.seconds
+            "{:>5}   {:.5}   {:>7}   {:>18.5}   {:.7}   {:.6e}   {:>10}   {:.3}",
+            row.grid,
+            row.plastic_radius_ratio,
+            row.plastic_radius_change
+                .map_or("–".to_string(), |d| format!("{:+.3}", d / cell)),
+            row.contact_radius / a,
+            row.approach / delta_h,
+            row.plastic_fraction,
+            row.iterations,
+            row.seconds
         );
     }
     Ok(())

@@ -473,7 +473,13 @@ fn saturated_solve_with_an_all_plastic_contact_converges() {
     let n = 32;
     let h = rough(n, 1);
     let (pm, y) = (0.004, 0.02);
-    let s = solve(Boundary::Periodic, &h, n, Control::MeanPressure(pm), Some(y));
+    let s = solve(
+        Boundary::Periodic,
+        &h,
+        n,
+        Control::MeanPressure(pm),
+        Some(y),
+    );
     check_kkt(&s, y, rms(&h));
     assert!((s.mean_pressure - pm).abs() <= LOAD_REL_TOL * pm);
     assert!(s.plastic_fraction > 0.0 && s.elastic_fraction > 0.0);
