@@ -644,10 +644,11 @@ impl Tabulate for BemHertzReport {
                 r.seconds.into(),
             ]);
         }
-        let mut out = vec![t];
         #[cfg(feature = "bem")]
-        out.extend(self.plastic.iter().flat_map(|p| p.tables()));
-        out
+        let plastic = self.plastic.iter().flat_map(|p| p.tables());
+        #[cfg(not(feature = "bem"))]
+        let plastic = std::iter::empty();
+        std::iter::once(t).chain(plastic).collect()
     }
 }
 
