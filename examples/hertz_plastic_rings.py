@@ -1,7 +1,18 @@
-# 1-D axisymmetric oracle: Hertz paraboloid (R = 1, E* = 1, a_H = 1) with the
-# pressure capped at Y = ratio * p0; piecewise-constant pressure on M rings,
-# collocation at ring midpoints, exact displacement of uniformly loaded discs
-# (Johnson 3.29), active-set solution of the complementarity problem.
+"""1-D axisymmetric reference for the Hertz ball with a yield stress (the
+oracle of tests/bem_yield.rs and of the README's "Hertz ball with a yield
+stress"): a rigid paraboloid (R = 1) on an elastic half-space (E* = 1) at the
+load of the elastic Hertz radius a_H = 1, the pressure capped at
+Y = ratio * p0_H. Piecewise-constant pressure on M rings of [0, RMAX],
+collocation at the ring midpoints, exact displacements of uniformly loaded
+discs (K. L. Johnson, Contact Mechanics, eq. 3.29; complete elliptic integrals
+by the arithmetic-geometric mean), and an active-set solution of
+p = Y (gap <= 0) / 0 < p < Y (gap = 0) / p = 0 (gap >= 0) with the load.
+c and a are ring edges (resolution RMAX/M); the approach is continuous.
+Check: ratio >= 1 gives the elastic Hertz approach 1 (0.999999 at M = 400).
+
+    /work/venv-tamaas/bin/python examples/hertz_plastic_rings.py 0.8 1600 3200
+    RMAX=1.13 /work/venv-tamaas/bin/python examples/hertz_plastic_rings.py 0.8 3200
+"""
 import sys, numpy as np
 def ellipke(k):
     k = np.asarray(k, float); kp = np.sqrt(1 - k*k)
