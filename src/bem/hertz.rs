@@ -13,6 +13,12 @@
 //! The rigid surface is the paraboloid `h(r) = −r²/(2R)` (Hertz's
 //! approximation of the sphere), centred on the node `(L/2, L/2)`.
 //!
+//! # With a yield stress
+//! [`plastic_disc`] solves the same ball with `0 ≤ p ≤ σY` (σY below p₀:
+//! a plastic disc p = σY of radius c inside an elastic annulus) on a list
+//! of grids. Reference: a 1-D axisymmetric solution of the same problem
+//! (examples/hertz_plastic_rings.py), c/a_H = 0.7402 at σY = 0.8 p₀.
+//!
 //! # References
 //! H. Hertz, J. reine angew. Math. 92, 156 (1882); K. L. Johnson, *Contact
 //! Mechanics* (CUP 1985), §4.2; the closed forms are those of

@@ -28,14 +28,7 @@ pub fn run(a: Args) -> anyhow::Result<()> {
                     h.grid
                 ),
             };
-            let case = HertzCase {
-                grid,
-                boundary: h.boundary,
-                size: h.size,
-                radius: h.radius,
-                e_star: h.contact_modulus,
-                contact_radius: h.contact_radius.unwrap_or(0.1 * h.size),
-            };
+            let case = hertz_case(&h, grid);
             let mut bar = Progress::spinner(&format!("Hertz {grid}²"));
             let r = persson::validation::hertz(&case, &h.solver.options()?, &mut |it| {
                 bar.update(0, &|| "Hertz".into(), it)
