@@ -136,6 +136,7 @@ fn commands(out_dir: &Path) -> Vec<Vec<Vec<String>>> {
         "stress --start hertz --g 0.6 --points 11",
         "separation --example",
         "bem hertz --grid 32",
+        "bem hertz --grid 16,32 --yield-stress 0.05",
         "bem rough --example --grid 32",
         "compare --example --grid 32 --levels 2",
         "compare --example --grid 32 --levels 2 --yield-stress 6e6",

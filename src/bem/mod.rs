@@ -20,7 +20,8 @@
 //! - [`kernel`]: the compliance operators 𝒢 (periodic, free).
 //! - [`solver`]: Polonsky–Keer constrained conjugate gradient.
 //! - [`saturated`]: the same with a yield stress, 0 ≤ p ≤ σY.
-//! - [`hertz`]: closed-form Hertz solution and the η validation.
+//! - [`hertz`]: closed-form Hertz solution and the η validation; with a
+//!   yield stress, the plastic disc per grid ([`hertz::plastic_disc`]).
 //! - [`surface`]: Fourier synthesis from any [`crate::Spectrum`], height-map I/O.
 //! - [`rough`]: the rough-contact loop (one solve per nominal pressure) and its report.
 //! - [`histogram`]: pressure histograms P(σ) that integrate to A/A0.

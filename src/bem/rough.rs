@@ -319,6 +319,79 @@ pub struct RoughReport {
     pub surface: SurfaceSource,
     /// One point per nominal pressure, in the caller's order.
     pub points: Vec<RoughPoint>,
+    /// The pressure field of the last solve, kept only by
+    /// [`rough_contact_mapped`] (for `bem rough --plot`); not serialised.
+    #[serde(skip)]
+    pub pressure_map: Option<PressureMap>,
+}
+
+/// The pressure field of one solve (row-major N × N, unit of E*).
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub struct PressureMap {
+    /// Index of the solve in the pressure list.
+    pub index: usize,
+    /// Its nominal pressure σ0.
+    pub nominal_pressure: f64,
+    /// The nodal pressures, `p[i·N + j]`.
+    pub pressure: Vec<f64>,
+}
+
+/// Keeps the last solution's pressure, forwarding everything else.
+struct Keep<'a> {
+    inner: &'a mut dyn Observer,
+    last: Option<(usize, Vec<f64>)>,
+}
+
+impl Observer for Keep<'_> {
+    fn iteration(&mut self, progress: RoughProgress) {
+        self.inner.iteration(progress);
+    }
+    fn solution(&mut self, index: usize, solution: &Solution) -> Result<()> {
+        self.inner.solution(index, solution)?;
+        match &mut self.last {
+            Some((k, p)) => {
+                *k = index;
+                p.clone_from(&solution.pressure);
+            }
+            None => self.last = Some((index, solution.pressure.clone())),
+        }
+        Ok(())
+    }
+}
+
+/// [`rough_contact`], keeping the pressure field of the last solve in
+/// [`RoughReport::pressure_map`] (one N² copy per solve; [`rough_contact`]
+/// keeps none).
+///
+/// # Errors
+/// As [`rough_contact`].
+pub fn rough_contact_mapped(
+    surface: &Surface,
+    source: SurfaceSource,
+    contact_modulus: f64,
+    pressures: &[f64],
+    options: &RoughOptions,
+    observer: &mut dyn Observer,
+) -> Result<RoughReport> {
+    let mut keep = Keep {
+        inner: observer,
+        last: None,
+    };
+    let mut report = rough_contact(
+        surface,
+        source,
+        contact_modulus,
+        pressures,
+        options,
+        &mut keep,
+    )?;
+    report.pressure_map = keep.last.map(|(index, pressure)| PressureMap {
+        index,
+        nominal_pressure: pressures[index],
+        pressure,
+    });
+    Ok(report)
 }
 
 /// [`solve`] and its report.
@@ -345,6 +418,7 @@ pub fn rough_contact(
         surface_rms_slope: surface.rms_slope()?,
         surface: source,
         points,
+        pressure_map: None,
     })
 }
 
@@ -425,18 +499,38 @@ impl Tabulate for RoughReport {
         }
         let mut tables = vec![t];
         if self.points.iter().any(|p| p.histogram.is_some()) {
+            // With a yield stress, the δ-peak at σY is a row of its own
+            // (σ low = σ high = σY, no density) with its weight in the
+            // column `plastic_fraction`, empty on the bins' rows.
             let mut h = Table::new("bem_histogram", "Pressure histograms P(σ) of the FFT-BEM")
                 .column("nominal_pressure", "σ0")
                 .column("sigma_low", "σ low")
                 .column("sigma_high", "σ high")
                 .column("density", "P(σ)");
+            if saturated {
+                h = h.column("plastic_fraction", "A_pl/A0 (δ-peak at σY)");
+            }
             for p in &self.points {
-                for b in p.histogram.iter().flatten() {
-                    h.push(vec![
+                let Some(bins) = &p.histogram else { continue };
+                for b in bins {
+                    let mut row: Vec<Cell> = vec![
                         p.nominal_pressure.into(),
                         b.sigma_low.into(),
                         b.sigma_high.into(),
                         b.density.into(),
+                    ];
+                    if saturated {
+                        row.push(Cell::Empty);
+                    }
+                    h.push(row);
+                }
+                if let Some(y) = self.yield_stress {
+                    h.push(vec![
+                        p.nominal_pressure.into(),
+                        y.into(),
+                        y.into(),
+                        Cell::Empty,
+                        p.plastic_fraction.into(),
                     ]);
                 }
             }

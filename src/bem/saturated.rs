@@ -32,7 +32,13 @@
 //! Newton's method from below
 //! (exact in a few steps: the sum is piecewise linear and concave in `s`).
 //! ḡ is the mean gap over the free set (the approach), 0 under penetration
-//! control. The gap is recomputed from `p` every iteration (two applications
+//! control. When every contact node is at σY and the load is short, the
+//! overlapping nodes enter with the missing load shared in proportion to
+//! their overlap. When ε has not dropped by 10 % in 100 iterations (the
+//! active sets cycle: seen in 3 of 135 random 32²–128² cases), an
+//! accelerated projected gradient (FISTA with gradient restart, exact
+//! projection onto the box and the load) finishes the solve; it cannot
+//! cycle, and the same criterion ends it. The gap is recomputed from `p` every iteration (two applications
 //! of 𝒢 per iteration).
 //!
 //! # Convergence criterion
@@ -51,6 +57,9 @@
 //! A. Almqvist, F. Sahlin, R. Larsson & S. Glavatskih, Tribol. Int. 40,
 //! 574–579 (2007), doi:10.1016/j.triboint.2005.11.008 (elastic–perfectly
 //! plastic contact with the pressure bounded by the hardness).
+//! A. Beck & M. Teboulle, SIAM J. Imaging Sci. 2, 183–202 (2009),
+//! doi:10.1137/080716542 (FISTA); B. O'Donoghue & E. Candès, Found. Comput.
+//! Math. 15, 715–732 (2015), doi:10.1007/s10208-013-9150-3 (restart).
 //! R. Bugnicourt, P. Sainsot, D. Dureisseix, C. Gauthier & A. A. Lubrecht,
 //! Tribol. Lett. 66, 29 (2018), doi:10.1007/s11249-017-0980-z.
 //! L. Frérot, G. Anciaux, V. Rey, S. Pham-Ba & J.-F. Molinari, J. Open
@@ -113,43 +122,19 @@ pub(super) fn solve(
     let mut k = sol.iterations;
     let mut conjugate = false;
     let mut g_old = 1.0;
+    let (mut best, mut stalled) = (f64::INFINITY, 0usize);
     let (residual, g_bar) = loop {
         solver.op.apply(&p, &mut r)?;
         for ((g, u), h) in g.iter_mut().zip(&r).zip(heights) {
             *g = u - (h - offset);
         }
-        // The free set's mean gap (the approach under load control).
-        let (mut nf, mut sum_gf, mut g_max_pl) = (0usize, 0.0, f64::NEG_INFINITY);
-        for (&pk, &gk) in p.iter().zip(&g) {
-            if pk > 0.0 && pk < y {
-                nf += 1;
-                sum_gf += gk;
-            } else if pk >= y {
-                g_max_pl = g_max_pl.max(gk);
-            }
-        }
-        let g_bar = match target {
-            Some(_) if nf > 0 => sum_gf / nf as f64,
-            Some(_) if g_max_pl.is_finite() => g_max_pl,
-            _ => 0.0,
-        };
-        let (mut sum_p, mut num, mut off_min) = (0.0, 0.0, f64::INFINITY);
-        for (&pk, &gk) in p.iter().zip(&g) {
-            let dg = gk - g_bar;
-            sum_p += pk;
-            if pk <= 0.0 {
-                off_min = off_min.min(dg);
-            } else if pk < y {
-                num += pk * dg.abs();
-            } else {
-                num += y * dg.max(0.0);
-            }
-        }
-        let eps = if sum_p > 0.0 {
-            num / (sum_p * sigma_h)
-        } else {
-            0.0
-        };
+        let Measure {
+            eps,
+            g_bar,
+            off_min,
+            nf,
+            sum_p,
+        } = measure(&p, &g, y, target.is_some(), sigma_h);
         let contact = p.iter().filter(|&&v| v > 0.0).count();
         observer(Iteration {
             iteration: k,
@@ -166,6 +151,50 @@ pub(super) fn solve(
                 residual: eps,
                 tolerance: opts.tolerance,
             });
+        }
+        // A cycle of active sets (seen on 0.3 % of random 32²–128² cases)
+        // makes no progress: finish with the projected gradient, which
+        // cannot cycle.
+        if eps < 0.9 * best {
+            best = eps;
+            stalled = 0;
+        } else {
+            stalled += 1;
+        }
+        if stalled >= STALL_ITERATIONS {
+            projected_gradient(
+                solver, heights, offset, y, target, sigma_h, opts, &mut k, &mut p, &mut g, &mut r,
+                observer,
+            )?;
+            stalled = 0;
+            best = f64::INFINITY;
+            conjugate = false;
+            continue;
+        }
+        if let (Some(total), 0) = (target, nf) {
+            // Every contact node is at σY and they carry less than the load:
+            // the free set is empty, so no step exists. The overlapping nodes enter with the missing
+            // load shared in proportion to their overlap (a step from the
+            // stiffest mode would overshoot them all to σY, and scaling
+            // back would empty the plastic set: a cycle of two states).
+            let missing = total - sum_p;
+            let weight: f64 = p
+                .iter()
+                .zip(&g)
+                .filter(|(&pk, &gk)| pk <= 0.0 && gk < g_bar)
+                .map(|(_, &gk)| g_bar - gk)
+                .sum();
+            if missing > 0.0 && weight > 0.0 {
+                for (pk, &gk) in p.iter_mut().zip(&g) {
+                    if *pk <= 0.0 && gk < g_bar {
+                        *pk = (missing * (g_bar - gk) / weight).min(y);
+                    }
+                }
+                project_load(&mut p, y, total);
+                conjugate = false;
+                k += 1;
+                continue;
+            }
         }
         // Search direction on the free set, conjugate to the last one.
         let g_norm: f64 = p
@@ -280,6 +309,189 @@ pub(super) fn solve(
         residual,
         seconds: start.elapsed().as_secs_f64(),
     })
+}
+
+/// Iterations of the conjugate gradient without a 10 % drop of ε after which
+/// [`projected_gradient`] takes over.
+const STALL_ITERATIONS: usize = 100;
+
+/// The convergence measure of a state (see the module docs).
+struct Measure {
+    eps: f64,
+    g_bar: f64,
+    off_min: f64,
+    nf: usize,
+    sum_p: f64,
+}
+
+/// ε, ḡ and the largest overlap off the contact of the pressure `p` with
+/// the gap `g` (ḡ: the free set's mean gap under load control, else 0).
+fn measure(p: &[f64], g: &[f64], y: f64, load_control: bool, sigma_h: f64) -> Measure {
+    let (mut nf, mut sum_gf, mut g_max_pl) = (0usize, 0.0, f64::NEG_INFINITY);
+    for (&pk, &gk) in p.iter().zip(g) {
+        if pk > 0.0 && pk < y {
+            nf += 1;
+            sum_gf += gk;
+        } else if pk >= y {
+            g_max_pl = g_max_pl.max(gk);
+        }
+    }
+    let g_bar = match load_control {
+        true if nf > 0 => sum_gf / nf as f64,
+        true if g_max_pl.is_finite() => g_max_pl,
+        _ => 0.0,
+    };
+    let (mut sum_p, mut num, mut off_min) = (0.0, 0.0, f64::INFINITY);
+    for (&pk, &gk) in p.iter().zip(g) {
+        let dg = gk - g_bar;
+        sum_p += pk;
+        if pk <= 0.0 {
+            off_min = off_min.min(dg);
+        } else if pk < y {
+            num += pk * dg.abs();
+        } else {
+            num += y * dg.max(0.0);
+        }
+    }
+    let eps = if sum_p > 0.0 {
+        num / (sum_p * sigma_h)
+    } else {
+        0.0
+    };
+    Measure {
+        eps,
+        g_bar,
+        off_min,
+        nf,
+        sum_p,
+    }
+}
+
+/// The fallback of a stalled solve: accelerated projected gradient (FISTA,
+/// A. Beck & M. Teboulle, SIAM J. Imaging Sci. 2, 183 (2009),
+/// doi:10.1137/080716542, with the gradient restart of B. O'Donoghue &
+/// E. Candès, Found. Comput. Math. 15, 715 (2015),
+/// doi:10.1007/s10208-013-9150-3) on the same energy, step 1/λ_max(𝒢)
+/// (power iteration), each step projected exactly onto
+/// `{0 ≤ p ≤ σY, Σp = load}` (`p = clamp(v − λ, 0, σY)`, λ by bisection).
+/// It returns when the module's criterion holds (checked every 10 steps) or
+/// at `max_iterations`, with `p` on the load and `g`, `r` of the last check.
+#[allow(clippy::too_many_arguments)]
+fn projected_gradient(
+    solver: &mut Solver,
+    heights: &[f64],
+    offset: f64,
+    y: f64,
+    target: Option<f64>,
+    sigma_h: f64,
+    opts: &Options,
+    k: &mut usize,
+    p: &mut [f64],
+    g: &mut [f64],
+    r: &mut [f64],
+    observer: &mut dyn FnMut(Iteration),
+) -> Result<()> {
+    let n2 = p.len();
+    // λ_max of 𝒢 by power iteration (Rayleigh quotient, from a fixed
+    // pseudo-random start), with a margin for the estimate from below.
+    let mut v: Vec<f64> = (0..n2)
+        .map(|i| ((i.wrapping_mul(7919) % 1009) as f64 / 1009.0) - 0.5)
+        .collect();
+    let mut lambda = 0.0;
+    for _ in 0..40 {
+        let norm = v.iter().map(|x| x * x).sum::<f64>().sqrt();
+        if norm <= 0.0 {
+            break;
+        }
+        v.iter_mut().for_each(|x| *x /= norm);
+        solver.op.apply(&v, r)?;
+        lambda = v.iter().zip(r.iter()).map(|(a, b)| a * b).sum::<f64>();
+        v.copy_from_slice(r);
+    }
+    let step = 1.0 / (1.1 * lambda.max(f64::MIN_POSITIVE));
+    let project = |w: &mut [f64]| match target {
+        Some(total) => project_box_load(w, y, total),
+        None => w.iter_mut().for_each(|x| *x = x.clamp(0.0, y)),
+    };
+    let mut prev = p.to_vec();
+    let mut z = p.to_vec();
+    let mut t_k = 1.0f64;
+    let mut steps = 0usize;
+    loop {
+        // Gradient of ½⟨p, 𝒢p⟩ − ⟨p, h − offset⟩ at z: the gap.
+        solver.op.apply(&z, r)?;
+        for ((zk, &u), &h) in z.iter_mut().zip(r.iter()).zip(heights) {
+            *zk -= step * (u - (h - offset));
+        }
+        project(&mut z);
+        // z is p_{k+1}; restart when the step turns against the momentum.
+        let mut turn = 0.0;
+        for ((&zn, &pk), &pp) in z.iter().zip(p.iter()).zip(&prev) {
+            turn += (pp - zn) * (zn - pk);
+        }
+        let t_next = if turn > 0.0 {
+            1.0
+        } else {
+            0.5 * (1.0 + (1.0 + 4.0 * t_k * t_k).sqrt())
+        };
+        let beta = if turn > 0.0 {
+            0.0
+        } else {
+            (t_k - 1.0) / t_next
+        };
+        t_k = t_next;
+        prev.copy_from_slice(p);
+        p.copy_from_slice(&z);
+        for ((zk, &pk), &pp) in z.iter_mut().zip(p.iter()).zip(&prev) {
+            *zk = pk + beta * (pk - pp);
+        }
+        project(&mut z);
+        *k += 1;
+        steps += 1;
+        if steps.is_multiple_of(10) || *k >= opts.max_iterations {
+            solver.op.apply(p, r)?;
+            for ((gk, &u), &h) in g.iter_mut().zip(r.iter()).zip(heights) {
+                *gk = u - (h - offset);
+            }
+            let m = measure(p, g, y, target.is_some(), sigma_h);
+            let contact = p.iter().filter(|&&v| v > 0.0).count();
+            observer(Iteration {
+                iteration: *k,
+                residual: m.eps,
+                contact_fraction: contact as f64 / n2 as f64,
+            });
+            if (m.eps <= opts.tolerance && m.off_min >= -opts.tolerance * sigma_h)
+                || *k >= opts.max_iterations
+            {
+                if let Some(total) = target {
+                    project_load(p, y, total);
+                }
+                return Ok(());
+            }
+        }
+    }
+}
+
+/// The Euclidean projection onto `{0 ≤ p ≤ y, Σp = total}`:
+/// `p ← clamp(p − λ, 0, y)` with λ by bisection (the sum decreases in λ).
+fn project_box_load(p: &mut [f64], y: f64, total: f64) {
+    let sum = |lam: f64| p.iter().map(|&v| (v - lam).clamp(0.0, y)).sum::<f64>();
+    let lo0 = p.iter().copied().fold(f64::INFINITY, f64::min) - y;
+    let hi0 = p.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let (mut lo, mut hi) = (lo0, hi0);
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        if sum(mid) > total {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let lam = 0.5 * (lo + hi);
+    p.iter_mut().for_each(|v| *v = (*v - lam).clamp(0.0, y));
 }
 
 /// Scale the pressure to the load with the bound kept: `p ← min(s p, y)`

@@ -4,14 +4,15 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::Context;
+use persson::bem::hertz::{self, HertzCase};
 use persson::bem::rough::{self, Observer, RoughOptions, RoughProgress, SurfaceSource};
 use persson::bem::surface::{synthesize, write_npy};
-use persson::bem::{check_memory, hertz::HertzCase, Options, Solution};
+use persson::bem::{check_memory, Options, Solution, MIN_GRID};
 use persson::error::check;
 use persson::table::Tabulate;
 
 pub use super::bem_args::{Args, SolverArgs};
-use super::bem_args::{Cmd, RoughArgs};
+use super::bem_args::{Cmd, HertzArgs, RoughArgs};
 use super::output::print;
 use super::progress::Progress;
 
@@ -19,15 +20,16 @@ use super::progress::Progress;
 pub fn run(a: Args) -> anyhow::Result<()> {
     match a.cmd {
         Cmd::Hertz(h) => {
-            let case = HertzCase {
-                grid: h.grid,
-                boundary: h.boundary,
-                size: h.size,
-                radius: h.radius,
-                e_star: h.contact_modulus,
-                contact_radius: h.contact_radius.unwrap_or(0.1 * h.size),
+            let grid = match (h.grid.as_slice(), h.yield_stress) {
+                (_, Some(y)) => return plastic_disc(&h, y),
+                ([n], None) => *n,
+                (_, None) => anyhow::bail!(
+                    "--grid {:?}: one grid side without --yield-stress (a list only with --yield-stress)",
+                    h.grid
+                ),
             };
-            let mut bar = Progress::spinner(&format!("Hertz {}²", h.grid));
+            let case = hertz_case(&h, grid);
+            let mut bar = Progress::spinner(&format!("Hertz {grid}²"));
             let r = persson::validation::hertz(&case, &h.solver.options()?, &mut |it| {
                 bar.update(0, &|| "Hertz".into(), it)
             });
@@ -35,6 +37,29 @@ pub fn run(a: Args) -> anyhow::Result<()> {
             print(&r?, &h.format)
         }
         Cmd::Rough(r) => rough_contact(&r),
+    }
+}
+
+/// `persson bem hertz --yield-stress Y`: the plastic disc on each grid.
+fn plastic_disc(h: &HertzArgs, y: f64) -> anyhow::Result<()> {
+    let case = hertz_case(h, h.grid.first().copied().unwrap_or(MIN_GRID));
+    let mut bar = Progress::solves(h.grid.len(), None);
+    let grids = &h.grid;
+    let r = hertz::plastic_disc(&case, grids, y, &h.solver.options()?, &mut |k, it| {
+        bar.update(k, &|| format!("Hertz σY {}²", grids[k]), it)
+    });
+    bar.finish();
+    print(&r?, &h.format)
+}
+
+fn hertz_case(h: &HertzArgs, grid: usize) -> HertzCase {
+    HertzCase {
+        grid,
+        boundary: h.boundary,
+        size: h.size,
+        radius: h.radius,
+        e_star: h.contact_modulus,
+        contact_radius: h.contact_radius.unwrap_or(0.1 * h.size),
     }
 }
 
@@ -70,6 +95,10 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
         eprintln!("persson: {}", persson::scene::EXAMPLE);
     }
     let pressures = super::args::pressures(&a.pressure, a.spectrum.example)?;
+    let plot = super::plot::PlotArg {
+        plot: a.plot.clone(),
+    };
+    plot.check()?;
     let options = RoughOptions {
         boundary: a.boundary,
         solver: Options {
@@ -109,9 +138,22 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
         several,
         n: surface.n,
     };
-    let report = rough::rough_contact(&surface, source, e_star, &pressures, &options, &mut solves);
+    let report = if a.plot.is_some() {
+        rough::rough_contact_mapped(&surface, source, e_star, &pressures, &options, &mut solves)
+    } else {
+        rough::rough_contact(&surface, source, e_star, &pressures, &options, &mut solves)
+    };
     solves.bar.finish();
     let report = report?;
+    if let Some(path) = &a.plot {
+        #[cfg(feature = "plot")]
+        persson::plot::map::render_map(&persson::plot::map::rough_map(&report)?, path)?;
+        #[cfg(not(feature = "plot"))]
+        anyhow::bail!(
+            "--plot {}: this persson was built without the `plot` feature",
+            path.display()
+        );
+    }
     if let Some(path) = &a.histogram {
         // The report's own histogram table: every pressure in one CSV.
         if let Some(t) = report

@@ -49,9 +49,10 @@ impl SolverArgs {
 
 #[derive(clap::Args, Debug)]
 pub struct HertzArgs {
-    /// Grid side N (nodes per side), at least 8.
-    #[arg(long, default_value = "256")]
-    pub grid: usize,
+    /// Grid side N (nodes per side), at least 8; with --yield-stress a list
+    /// (comma-separated or repeated) for the plastic disc's convergence.
+    #[arg(long, value_delimiter = ',', default_value = "256")]
+    pub grid: Vec<usize>,
     /// Boundary condition of the elastic half-space: free (an isolated contact, zero-padded to 2N) or periodic.
     #[arg(long, default_value = "free")]
     pub boundary: Boundary,
@@ -72,6 +73,10 @@ pub struct HertzArgs {
     /// Hertz contact radius a that sets the load (default 0.1 L).
     #[arg(long, allow_negative_numbers = true)]
     pub contact_radius: Option<f64>,
+    /// Yield stress σY (unit of E*, below the Hertz peak pressure p₀ = 2E*a/(πR)
+    /// for a plastic zone): report the plastic disc's radius per grid instead of η.
+    #[arg(long, allow_negative_numbers = true)]
+    pub yield_stress: Option<f64>,
     #[command(flatten)]
     pub solver: SolverArgs,
     #[command(flatten)]
@@ -113,7 +118,9 @@ pub struct RoughArgs {
     pub pressure_field: Option<PathBuf>,
     /// Write the histograms P(σ) of every solve into one CSV (nominal_pressure,
     /// sigma_low, sigma_high, density; each pressure's bins integrate to its
-    /// elastic A/A0, the plastic peak at σY is `plastic_fraction` in the report).
+    /// A/A0). With --yield-stress the bins stop at σY and integrate to A_el/A0;
+    /// the δ-peak at σY is one more row per pressure (sigma_low = sigma_high = σY,
+    /// empty density) with its weight A_pl/A0 in the column plastic_fraction.
     #[arg(long)]
     pub histogram: Option<PathBuf>,
     /// Number of histogram bins.
@@ -128,6 +135,11 @@ pub struct RoughArgs {
     pub yield_stress: Option<f64>,
     #[command(flatten)]
     pub solver: SolverArgs,
+    /// Also draw the last pressure's map (plastic nodes in red with --yield-stress)
+    /// and its histogram P(σ) (the plastic δ-peak at σY as a labelled bar) into
+    /// this file (.svg or .png).
+    #[arg(long, value_name = "FILE.svg|png")]
+    pub plot: Option<PathBuf>,
     #[command(flatten)]
     pub format: Format,
 }

@@ -43,6 +43,7 @@
 
 mod draw;
 pub mod figures;
+pub mod map;
 mod prepare;
 mod ticks;
 

@@ -45,10 +45,24 @@ pub fn bem_hertz(h: &BemHertzOutput) -> Result<BemHertzReport> {
             })
         })
         .collect::<Result<Vec<_>>>()?;
+    let plastic = match h.yield_stress {
+        Some(y) => Some(
+            hertz::plastic_disc(
+                &hertz::HertzCase::new(grids[0], boundary),
+                &grids,
+                y,
+                &opts,
+                &mut |_, _| {},
+            )
+            .map_err(named)?,
+        ),
+        None => None,
+    };
     Ok(BemHertzReport {
         boundary: boundary_name,
         tolerance: tol,
         rows,
+        plastic,
     })
 }
 
@@ -118,6 +132,7 @@ pub fn bem_rough(scene: &Scene, b: &BemOutput) -> Result<RoughReport> {
         solver: Options {
             tolerance: tol,
             warm_start: true,
+            yield_stress: b.yield_stress,
             ..Options::default()
         },
         bins: b.histogram.as_ref().map(|_| bins),

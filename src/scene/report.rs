@@ -608,6 +608,10 @@ pub struct BemHertzReport {
     pub tolerance: f64,
     /// One row per grid.
     pub rows: Vec<BemHertzRow>,
+    /// With `yield_stress`: the plastic disc per grid.
+    #[cfg(feature = "bem")]
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub plastic: Option<crate::bem::hertz::PlasticDiscReport>,
 }
 
 impl Tabulate for BemHertzReport {
@@ -640,7 +644,11 @@ impl Tabulate for BemHertzReport {
                 r.seconds.into(),
             ]);
         }
-        vec![t]
+        #[cfg(feature = "bem")]
+        let plastic = self.plastic.iter().flat_map(|p| p.tables());
+        #[cfg(not(feature = "bem"))]
+        let plastic = std::iter::empty();
+        std::iter::once(t).chain(plastic).collect()
     }
 }
 

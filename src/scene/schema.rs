@@ -673,6 +673,11 @@ pub struct BemOutput {
     /// Draw A/A0 against load with the Bush linear law (.svg or .png).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub plot: Option<PathBuf>,
+    /// Yield stress σY (unit of E*): pressures bounded by 0 ≤ p ≤ σY; each
+    /// point reports the elastic and plastic fractions, the histogram keeps
+    /// the plastic peak at σY as its own row.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub yield_stress: Option<f64>,
 }
 
 /// FFT-BEM Hertz convergence: sphere R = L, a = 0.1 L, E* = 1 (Molinari,
@@ -689,6 +694,10 @@ pub struct BemHertzOutput {
     /// Solver tolerance ε (default 1e-12).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tolerance: Option<f64>,
+    /// Yield stress σY (unit of E*; the peak pressure is p₀ = 0.2/π ≈ 0.0637):
+    /// adds the plastic disc's radius and fractions per grid.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub yield_stress: Option<f64>,
 }
 
 /// A missing input.
