@@ -21,8 +21,9 @@ pub(super) fn check_yield_stress(yield_stress: Option<f64>, pressures: &[f64]) -
             "yield_stress",
             y,
             format!(
-                "> every nominal pressure (largest {top:e}): with 0 ≤ p ≤ σY no contact carries \
-                 a mean pressure σ0 ≥ σY, so no solution exists"
+                "> every nominal pressure (largest {}): with 0 ≤ p ≤ σY no contact carries \
+                 a mean pressure σ0 ≥ σY, so no solution exists",
+                number(top, 6)
             ),
         ));
     }
