@@ -66,11 +66,17 @@ pub fn map<'a>(arg: &str, a: &'a PyReadonlyArrayDyn<'_, f64>) -> PyResult<([usiz
             shape.len()
         )));
     }
-    let values = a.as_slice().map_err(|_| {
+    // `as_slice` accepts Fortran order too, which would read the map
+    // transposed: only C order is taken as it is.
+    let not_c = || {
         value_error(format!(
             "{arg}: not C-contiguous (a transposed or strided view); pass numpy.ascontiguousarray({arg})"
         ))
-    })?;
+    };
+    if !a.is_c_contiguous() {
+        return Err(not_c());
+    }
+    let values = a.as_slice().map_err(|_| not_c())?;
     Ok(([shape[0], shape[1]], values))
 }
 
