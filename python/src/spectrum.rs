@@ -8,7 +8,7 @@ use numpy::ndarray::Zip;
 use persson::scene::{
     ConventionName, DetrendName, HeightMapSpec, Sides, SpectrumSpec, WindowName, EXAMPLE,
 };
-use persson::spectrum::Spectrum as _;
+use persson::spectrum::{Spectrum as _, Tabulated};
 use persson::topography::{self as topo, AnalysisOptions, Topography};
 use persson::{Estimate, Result};
 use pyo3::prelude::*;
@@ -56,16 +56,59 @@ pub struct Spectrum {
     pub breaks: Vec<f64>,
     /// What the spectrum is, in words (the example, a measured surface).
     pub description: Option<String>,
+    /// How to build it again (pickling, for multiprocessing and Dask).
+    pub recipe: Recipe,
+}
+
+/// What rebuilds a spectrum exactly: a self-affine spec (as scene JSON) or
+/// the points of a tabulated one in Persson's normalisation.
+#[derive(Clone)]
+pub enum Recipe {
+    SelfAffine(String),
+    Points(Vec<(f64, f64)>),
+}
+
+impl Spectrum {
+    fn tabulated_spectrum(t: Tabulated, description: Option<String>) -> Self {
+        let points = t.points().collect();
+        Spectrum {
+            shared: Shared(Arc::new(t)),
+            breaks: vec![],
+            description,
+            recipe: Recipe::Points(points),
+        }
+    }
 }
 
 impl Spectrum {
     fn from_spec(spec: &SpectrumSpec) -> PyResult<Self> {
-        let (s, description) = spec.build_described().map_err(err)?;
-        Ok(Spectrum {
-            shared: Shared(Arc::from(s)),
-            breaks: spec.breaks(),
-            description,
-        })
+        match spec {
+            SpectrumSpec::SelfAffine { .. } => {
+                let (s, description) = spec.build_described().map_err(err)?;
+                Ok(Spectrum {
+                    shared: Shared(Arc::from(s)),
+                    breaks: spec.breaks(),
+                    description,
+                    recipe: Recipe::SelfAffine(
+                        serde_json::to_string(spec).map_err(|e| value_error(e.to_string()))?,
+                    ),
+                })
+            }
+            // As SpectrumSpec::build, keeping the concrete Tabulated.
+            SpectrumSpec::Tabulated {
+                file,
+                convention,
+                size,
+            } => {
+                let t =
+                    Tabulated::from_csv(file, convention.with(*size).map_err(err)?).map_err(err)?;
+                Ok(Self::tabulated_spectrum(t, None))
+            }
+            SpectrumSpec::HeightMap(m) => {
+                let (t, d) = m.spectrum_described().map_err(err)?;
+                Ok(Self::tabulated_spectrum(t, Some(d)))
+            }
+        }
     }
 
     /// The library's surface: this spectrum on a body of contact modulus E*.
@@ -136,11 +179,7 @@ fn analysis(
 
 fn measured(a: topo::Analysis, what: &str) -> PyResult<Spectrum> {
     let s = a.psd.to_tabulated().map_err(err)?;
-    Ok(Spectrum {
-        shared: Shared(Arc::new(s)),
-        breaks: vec![],
-        description: Some(describe(what, &a)),
-    })
+    Ok(Spectrum::tabulated_spectrum(s, Some(describe(what, &a))))
 }
 
 /// What the spectrum of a measured surface assumed, in the words of the
@@ -244,12 +283,8 @@ impl Spectrum {
             .map_err(err)?
             .to_persson(&pts)
             .map_err(err)?;
-        let s = persson::spectrum::Tabulated::new(&pts).map_err(err)?;
-        Ok(Spectrum {
-            shared: Shared(Arc::new(s)),
-            breaks: vec![],
-            description: None,
-        })
+        let s = Tabulated::new(&pts).map_err(err)?;
+        Ok(Self::tabulated_spectrum(s, None))
     }
 
     /// A tabulated spectrum from a CSV file of two columns q, C (as the
@@ -475,6 +510,45 @@ impl Spectrum {
         )
         .map_err(err)?;
         to_dict(py, &r)
+    }
+
+    /// Pickling (multiprocessing, Dask): the spectrum is rebuilt from its
+    /// self-affine parameters or its tabulated points, so the copy gives
+    /// the same numbers.
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<Bound<'py, PyAny>> {
+        let py = slf.py();
+        let s = slf.get();
+        let restore = py.get_type::<Spectrum>().getattr("_restore")?;
+        let state = match &s.recipe {
+            Recipe::SelfAffine(json) => ("self_affine", json.clone().into_pyobject(py)?.into_any()),
+            Recipe::Points(p) => ("points", p.clone().into_pyobject(py)?.into_any()),
+        };
+        (restore, (state.0, state.1, s.description.clone()))
+            .into_pyobject(py)
+            .map(|t| t.into_any())
+    }
+
+    /// Rebuild a pickled spectrum (see `__reduce__`).
+    #[staticmethod]
+    fn _restore(
+        kind: &str,
+        payload: &Bound<'_, PyAny>,
+        description: Option<String>,
+    ) -> PyResult<Self> {
+        let mut s = match kind {
+            "self_affine" => {
+                let spec: SpectrumSpec = serde_json::from_str(&payload.extract::<String>()?)
+                    .map_err(|e| value_error(e.to_string()))?;
+                Self::from_spec(&spec)?
+            }
+            "points" => {
+                let points: Vec<(f64, f64)> = payload.extract()?;
+                Self::tabulated_spectrum(Tabulated::new(&points).map_err(err)?, None)
+            }
+            _ => return Err(value_error(format!("invalid kind = '{kind}'"))),
+        };
+        s.description = description;
+        Ok(s)
     }
 
     fn __repr__(&self) -> String {

@@ -55,9 +55,11 @@ def test_solve_pressure_and_gap_match_cli(tmp_path):
     point = cli["points"][0]
     for key in ["contact_fraction", "mean_separation", "approach", "iterations", "residual"]:
         assert summary[key] == point[key], key
-    # The arrays are the solver's own buffers handed over, not copies:
-    # writable numpy arrays that own no separate data block.
-    assert p.flags["WRITEABLE"] and p.flags["C_CONTIGUOUS"]
+    # The arrays are the solver's own buffers handed over, not copies: numpy
+    # does not own their memory, the Rust vector behind `base` does.
+    for a in (p, gap):
+        assert a.flags["WRITEABLE"] and a.flags["C_CONTIGUOUS"] and a.dtype == np.float64
+        assert not a.flags["OWNDATA"] and a.base is not None
     # The mean pressure is the load asked for; the gap is ≥ 0, and 0 in
     # contact to the solver's tolerance (1e-10 relative to the heights).
     assert abs(p.mean() - 0.02) < 1e-12

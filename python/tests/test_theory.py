@@ -247,3 +247,20 @@ def test_run_scene_path_and_dict_match_cli(tmp_path):
         same(persson.run_scene(path), cli)
         import json
         same(persson.run_scene(json.loads(path.read_text())), cli)
+
+
+def test_spectra_pickle_to_the_same_numbers(tmp_path):
+    import pickle
+    path = tmp_path / "psd.csv"
+    path.write_text("q,C\n1e3,1e-20\n1e5,1e-26\n1e7,1e-33\n")
+    spectra = [spectrum(), persson.Spectrum.example(), persson.Spectrum.from_csv(path),
+               persson.Spectrum.tabulated([1e3, 1e5, 1e7], [1e-20, 1e-26, 1e-33], "surface-topography"),
+               persson.Spectrum.from_height_map(height_map(), 2e-7)]
+    p = np.logspace(5, 8, 7)
+    for s in spectra:
+        copy = pickle.loads(pickle.dumps(s))
+        assert repr(copy) == repr(s)
+        for theory in THEORIES:
+            assert np.array_equal(persson.contact_area(copy, E_STAR, p, theory),
+                                  persson.contact_area(s, E_STAR, p, theory))
+        same(persson.separation(copy, E_STAR, [1e6]), persson.separation(s, E_STAR, [1e6]))
