@@ -234,15 +234,21 @@ fn bem_hertz<'py>(
 /// seeds from `seed`, the continuum limit A(N) = A∞ + c N^−α (α = `alpha`,
 /// or fitted when None), κ, pressure distributions, mean separation, and
 /// the user's data (CSV files) scored against them (Campañá & Müser, EPL
-/// 77, 38005 (2007)).
+/// 77, 38005 (2007)). With `heights` (N × N, m) and `size` (m): the BEM on
+/// that map and its coarser copies instead (as `compare --surface`; a
+/// `periodic` map on a periodic half-space, otherwise a free one), the
+/// theories on `spectrum` (e.g. `Spectrum.from_height_map` of the same map).
 #[pyfunction]
-#[pyo3(signature = (spectrum, modulus, pressure=None, *, grid=256, levels=validation::DEFAULT_LEVELS, seeds=1, seed=1, alpha=Some(validation::DEFAULT_ALPHA), pixels_per_wavelength=validation::DEFAULT_PIXELS_PER_WAVELENGTH, tolerance=1e-10, max_iterations=10_000, bins=40, histogram_pressure=None, data=None, data_histogram=None))]
+#[pyo3(signature = (spectrum, modulus, pressure=None, *, heights=None, size=None, periodic=false, grid=256, levels=validation::DEFAULT_LEVELS, seeds=1, seed=1, alpha=Some(validation::DEFAULT_ALPHA), pixels_per_wavelength=validation::DEFAULT_PIXELS_PER_WAVELENGTH, tolerance=1e-10, max_iterations=10_000, bins=40, histogram_pressure=None, data=None, data_histogram=None))]
 #[allow(clippy::too_many_arguments)]
 fn compare<'py>(
     py: Python<'py>,
     spectrum: &Spectrum,
     modulus: f64,
     pressure: Option<&Bound<'py, PyAny>>,
+    heights: Option<&Bound<'py, PyAny>>,
+    size: Option<f64>,
+    periodic: bool,
     grid: usize,
     levels: usize,
     seeds: usize,
@@ -285,8 +291,22 @@ fn compare<'py>(
     config.histogram_pressure = histogram_pressure;
     config.bins = bins;
     let s = &spectrum.shared;
-    let r = py
-        .detach(|| validation::compare(s, &config, &mut |_| {}))
-        .map_err(err)?;
+    let r = match heights {
+        None => py.detach(|| validation::compare(s, &config, &mut |_| {})),
+        Some(h) => {
+            let size = size.ok_or_else(|| value_error("size: required with heights"))?;
+            let map = surface(h, size)?;
+            let b = if periodic {
+                Boundary::Periodic
+            } else {
+                Boundary::Free
+            };
+            py.detach(|| -> persson::Result<_> {
+                check_memory(map.n, b)?;
+                validation::compare_surface(s, &map, b, &config, &mut |_| {})
+            })
+        }
+    }
+    .map_err(err)?;
     to_dict(py, &r)
 }

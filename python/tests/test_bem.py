@@ -85,6 +85,22 @@ def test_compare_matches_cli():
     same(r, cli)
 
 
+@pytest.mark.parametrize("periodic", [True, False])
+def test_compare_on_a_map_matches_cli(tmp_path, periodic):
+    h = persson.synthesize(spectrum(), 64, seed=6)
+    path = tmp_path / "h.npy"
+    np.save(path, h)
+    flag = ["--periodic"] if periodic else []
+    cli = run_cli("compare", "--surface", path, "--size", 1, *flag, "--contact-modulus", 1,
+                  "--levels", 3, "--pressure", "0.005,0.01")
+    s = persson.Spectrum.from_file(path, size=[1.0], periodic=periodic)
+    r = persson.compare(s, 1.0, [0.005, 0.01], heights=h, size=1.0, periodic=periodic, levels=3)
+    same(r, cli)
+    s = persson.Spectrum.from_height_map(h, 1.0 / 64, periodic=periodic)
+    r = persson.compare(s, 1.0, [0.005, 0.01], heights=h, size=1.0, periodic=periodic, levels=3)
+    same(r, cli, drop=("seconds", "surface"))
+
+
 def test_scene_with_bem_matches_cli(tmp_path):
     import pathlib
     path = pathlib.Path(__file__).resolve().parents[2] / "scenes" / "bem_rough.json"
