@@ -264,3 +264,13 @@ def test_spectra_pickle_to_the_same_numbers(tmp_path):
             assert np.array_equal(persson.contact_area(copy, E_STAR, p, theory),
                                   persson.contact_area(s, E_STAR, p, theory))
         same(persson.separation(copy, E_STAR, [1e6]), persson.separation(s, E_STAR, [1e6]))
+
+
+def test_g_and_contact_area_over_zeta_match_magnification_cli():
+    cli = run_cli("magnification", *flags(), "--pressure", 3e6, "--points", 13)
+    z = np.array([p["zeta"] for p in cli["points"]])
+    gv, gb = persson.g(spectrum(), E_STAR, 3e6, z, error_bound=True)
+    assert gv.tolist() == [p["g"] for p in cli["points"]]
+    assert gb.tolist() == [p["g_error_bound"] for p in cli["points"]]
+    a = persson.contact_area(spectrum(), E_STAR, 3e6, zeta=z)
+    assert a.tolist() == [p["contact_fraction"] for p in cli["points"]]
