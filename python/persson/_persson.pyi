@@ -203,9 +203,11 @@ def mean_separation(
 ) -> dict[str, FloatArray]:
     """ū (m), K (unit of E*/m), U_el (J/m²) and their error bounds as arrays."""
 def stress(
-    start: Start,
+    start: Optional[Start],
     g: ArrayLike,
     *,
+    table: Optional[Tuple[ArrayLike, ArrayLike]] = None,
+    table_normalisation: float = 1e-6,
     yield_ratio: Optional[float] = None,
     sigma_ratio: Optional[ArrayLike] = None,
     points: int = 201,

@@ -9,7 +9,7 @@ use persson::scene::{
     StartName, StressOutput, TheoriesOutput, TheoryName, TheorySpec,
 };
 use persson::separation::Separation;
-use persson::stress::Start;
+use persson::stress::{Start, TabulatedStart};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -226,21 +226,36 @@ fn mean_separation<'py>(
 /// `persson stress --json`: the dimensionless stress distribution σH P(σ)
 /// against σ/σH at each G (Persson, Bucher & Chiaia, Phys. Rev. B 65,
 /// 184106 (2002), Figs. 2–4) for the start "flat", "hertz" or "cylinder",
-/// elastic or with the yield stress σY/σH = `yield_ratio`; at `sigma_ratio`
-/// or `points` values over the distribution; with A/A0, its elastic and
-/// plastic parts and error bounds.
+/// or a tabulated start `table` = (σ/σH, σH P0) whose integral is 1 within
+/// `table_normalisation` (the CLI's `--table`); elastic or with the yield
+/// stress σY/σH = `yield_ratio`; at `sigma_ratio` or `points` values over
+/// the distribution; with A/A0, its elastic and plastic parts and error bounds.
 #[pyfunction]
-#[pyo3(signature = (start, g, *, yield_ratio=None, sigma_ratio=None, points=201, tolerance=1e-12))]
+#[pyo3(signature = (start, g, *, table=None, table_normalisation=1e-6, yield_ratio=None, sigma_ratio=None, points=201, tolerance=1e-12))]
+#[allow(clippy::too_many_arguments)]
 fn stress<'py>(
     py: Python<'py>,
-    start: &str,
+    start: Option<&str>,
     g: &Bound<'py, PyAny>,
+    table: Option<(Bound<'py, PyAny>, Bound<'py, PyAny>)>,
+    table_normalisation: f64,
     yield_ratio: Option<f64>,
     sigma_ratio: Option<&Bound<'py, PyAny>>,
     points: usize,
     tolerance: f64,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let start = Start::from(name::<StartName>("start", start)?);
+    let start = match (start, table) {
+        (Some(s), None) => Start::from(name::<StartName>("start", s)?),
+        (None, Some((s, p))) => Start::Tabulated(
+            TabulatedStart::new(
+                &float_list("table", &s)?,
+                &float_list("table", &p)?,
+                table_normalisation,
+            )
+            .map_err(err)?,
+        ),
+        _ => return Err(value_error("start, table: give exactly one")),
+    };
     let g = float_list("g", g)?;
     let sigma = sigma_ratio
         .map(|s| float_list("sigma_ratio", s))

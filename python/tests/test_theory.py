@@ -274,3 +274,15 @@ def test_g_and_contact_area_over_zeta_match_magnification_cli():
     assert gb.tolist() == [p["g_error_bound"] for p in cli["points"]]
     a = persson.contact_area(spectrum(), E_STAR, 3e6, zeta=z)
     assert a.tolist() == [p["contact_fraction"] for p in cli["points"]]
+
+
+def test_tabulated_start_matches_cli(tmp_path):
+    sigma = np.linspace(0, 1, 41)
+    density = 2 * sigma  # the Hertz start, 2σ/σH², tabulated
+    path = tmp_path / "start.txt"
+    path.write_text("".join(f"{float(a)!r} {float(b)!r}\n" for a, b in zip(sigma, density)))
+    cli = run_cli("stress", "--table", path, "--g", 0.4, "--points", 11, "--yield-ratio", 1.5)
+    r = persson.stress(None, 0.4, table=(sigma, density), points=11, yield_ratio=1.5)
+    same(r, cli)
+    with pytest.raises(ValueError, match="^start, table: give exactly one"):
+        persson.stress("flat", 0.4, table=(sigma, density))
