@@ -1,0 +1,297 @@
+"""Type stubs of the compiled module persson._persson (re-exported by persson).
+
+Units: SI; pressures and moduli in any one unit (that of ``modulus``);
+q in 1/m (angular); C(q) in m⁴ (Persson's normalisation); lengths in m.
+Dicts are the CLI's ``--json`` for the same input.
+"""
+
+from __future__ import annotations
+
+import os
+from typing import Any, Literal, Optional, Protocol, Sequence, Tuple, Union, overload
+
+import numpy as np
+import numpy.typing as npt
+
+FloatArray = npt.NDArray[np.float64]
+ArrayLike = Union[float, Sequence[float], FloatArray]
+PathLike = Union[str, os.PathLike[str]]
+Report = dict[str, Any]
+Theory = Literal["original", "yang-persson", "wang-muser", "xu"]
+Convention = Literal["persson", "surface-topography", "profile1d", "grid"]
+Detrend = Literal["none", "mean", "plane", "curvature"]
+Window = Literal["none", "hann", "blackman"]
+Boundary = Literal["periodic", "free"]
+Start = Literal["flat", "hertz", "cylinder"]
+
+class TopographyLike(Protocol):
+    """A SurfaceTopography Topography: heights indexed [x, y], sizes (Lx, Ly) in m."""
+
+    physical_sizes: Sequence[float]
+    def heights(self) -> FloatArray: ...
+
+def version() -> str: ...
+
+class Spectrum:
+    """Isotropic roughness power spectrum C(q), Persson's normalisation (m⁴)."""
+
+    @staticmethod
+    def self_affine(
+        hurst: float,
+        q_l: float,
+        q_s: float,
+        *,
+        q_r: Optional[float] = None,
+        rms_height: Optional[float] = None,
+        rms_slope: Optional[float] = None,
+        c_r: Optional[float] = None,
+    ) -> Spectrum:
+        """Self-affine with roll-off; exactly one amplitude (rms height m, rms slope, C(q_r) m⁴)."""
+    @staticmethod
+    def example() -> Spectrum:
+        """The CLI's --example: H = 0.8, q_l = 1e4, q_r = 1e5, q_s = 1e8 1/m, h_rms = 1 µm."""
+    @staticmethod
+    def tabulated(
+        q: ArrayLike, c: ArrayLike, convention: Convention = "persson", size: Optional[float] = None
+    ) -> Spectrum:
+        """Points (q, C) in the given convention (`grid` needs the side `size`, m)."""
+    @staticmethod
+    def from_csv(
+        path: PathLike, convention: Convention = "persson", size: Optional[float] = None
+    ) -> Spectrum:
+        """A two-column CSV file q, C (the CLI's --psd)."""
+    @staticmethod
+    def from_file(
+        path: PathLike,
+        *,
+        size: Optional[Sequence[float]] = None,
+        pixel_size: Optional[float] = None,
+        periodic: bool = False,
+        detrend: Optional[Detrend] = None,
+        window: Optional[Window] = None,
+        fill_undefined: bool = False,
+        q_max: Optional[float] = None,
+    ) -> Spectrum:
+        """The spectrum of a measured surface file (the CLI's --surface)."""
+    @staticmethod
+    def from_height_map(
+        heights: FloatArray,
+        pixel_size: Union[float, Tuple[float, float]],
+        *,
+        periodic: bool = False,
+        detrend: Optional[Detrend] = None,
+        window: Optional[Window] = None,
+        q_max: Optional[float] = None,
+    ) -> Spectrum:
+        """The spectrum of a height map (rows along y, m) with pixel size Δ or (Δx, Δy), m."""
+    @staticmethod
+    def from_topography(
+        topography: TopographyLike,
+        *,
+        periodic: Optional[bool] = None,
+        detrend: Optional[Detrend] = None,
+        window: Optional[Window] = None,
+        q_max: Optional[float] = None,
+    ) -> Spectrum:
+        """The spectrum of a SurfaceTopography Topography (duck-typed)."""
+    @overload
+    def c(self, q: float) -> float: ...
+    @overload
+    def c(self, q: Union[Sequence[float], FloatArray]) -> FloatArray: ...
+    @property
+    def q_l(self) -> float: ...
+    @property
+    def q_s(self) -> float: ...
+    @property
+    def description(self) -> Optional[str]: ...
+    @overload
+    def rms_height(self, q_min: Optional[float] = None, q_max: Optional[float] = None, *, error_bound: Literal[False] = False) -> float: ...
+    @overload
+    def rms_height(self, q_min: Optional[float] = None, q_max: Optional[float] = None, *, error_bound: Literal[True]) -> Tuple[float, float]: ...
+    @overload
+    def rms_slope(self, q_min: Optional[float] = None, q_max: Optional[float] = None, *, error_bound: Literal[False] = False) -> float: ...
+    @overload
+    def rms_slope(self, q_min: Optional[float] = None, q_max: Optional[float] = None, *, error_bound: Literal[True]) -> Tuple[float, float]: ...
+    @overload
+    def rms_curvature(self, q_min: Optional[float] = None, q_max: Optional[float] = None, *, error_bound: Literal[False] = False) -> float: ...
+    @overload
+    def rms_curvature(self, q_min: Optional[float] = None, q_max: Optional[float] = None, *, error_bound: Literal[True]) -> Tuple[float, float]: ...
+    def report(self, q_min: Optional[float] = None, q_max: Optional[float] = None, points: int = 11) -> Report:
+        """`persson spectrum --json`."""
+
+def analyse_height_map(
+    heights: FloatArray,
+    pixel_size: Union[float, Tuple[float, float]],
+    *,
+    periodic: bool = False,
+    detrend: Optional[Detrend] = None,
+    window: Optional[Window] = None,
+    q_max: Optional[float] = None,
+) -> Report:
+    """`persson spectrum --surface FILE --json` for an array."""
+
+def contact_modulus(
+    young: float, poisson: float, young2: Optional[float] = None, poisson2: Optional[float] = None
+) -> float:
+    """E* from 1/E* = (1 − ν₁²)/E₁ + (1 − ν₂²)/E₂ (second body rigid when absent)."""
+
+@overload
+def g(spectrum: Spectrum, modulus: float, pressure: ArrayLike, zeta: Optional[ArrayLike] = None, *, error_bound: Literal[False] = False) -> Union[float, FloatArray]: ...
+@overload
+def g(spectrum: Spectrum, modulus: float, pressure: ArrayLike, zeta: Optional[ArrayLike] = None, *, error_bound: Literal[True]) -> Tuple[Union[float, FloatArray], Union[float, FloatArray]]: ...
+@overload
+def contact_area(
+    spectrum: Spectrum,
+    modulus: float,
+    pressure: ArrayLike,
+    theory: Theory = "original",
+    gamma: Optional[float] = None,
+    *,
+    zeta: Optional[ArrayLike] = None,
+    tolerance: float = 1e-12,
+    error_bound: Literal[False] = False,
+) -> Union[float, FloatArray]:
+    """A/A0 at nominal pressures σ0 and magnifications ζ (default q_s/q_l), broadcast."""
+@overload
+def contact_area(
+    spectrum: Spectrum,
+    modulus: float,
+    pressure: ArrayLike,
+    theory: Theory = "original",
+    gamma: Optional[float] = None,
+    *,
+    zeta: Optional[ArrayLike] = None,
+    tolerance: float = 1e-12,
+    error_bound: Literal[True],
+) -> Tuple[Union[float, FloatArray], Union[float, FloatArray]]: ...
+def kappa(law: Literal["bush", "persson"] = "persson") -> float:
+    """κ_Bush = √(2π), κ_Persson = √(8/π)."""
+def low_load_kappa(theory: Theory = "original", gamma: Optional[float] = None) -> float: ...
+def area(
+    spectrum: Spectrum,
+    modulus: float,
+    pressure: ArrayLike,
+    theory: Theory = "original",
+    gamma: Optional[float] = None,
+    *,
+    zeta: Optional[float] = None,
+    tolerance: float = 1e-12,
+) -> Report:
+    """`persson area --json`."""
+def magnification(
+    spectrum: Spectrum, modulus: float, pressure: float, zeta: Optional[ArrayLike] = None, *, points: int = 21
+) -> Report:
+    """`persson magnification --json`."""
+def kappa_report(
+    spectrum: Optional[Spectrum] = None, modulus: Optional[float] = None, pressure: Optional[ArrayLike] = None
+) -> Report:
+    """`persson kappa --json`."""
+def theories(
+    spectrum: Spectrum,
+    modulus: float,
+    pressure: ArrayLike,
+    theories: Optional[Sequence[Theory]] = None,
+    *,
+    zeta: Optional[float] = None,
+    tolerance: Optional[float] = None,
+) -> Report:
+    """The scene output `theories`: A/A0 of every theory against load."""
+def separation(spectrum: Spectrum, modulus: float, pressure: ArrayLike, *, tolerance: float = 1e-10) -> Report:
+    """`persson separation --json`."""
+def mean_separation(
+    spectrum: Spectrum, modulus: float, pressure: ArrayLike, *, tolerance: float = 1e-10
+) -> dict[str, FloatArray]:
+    """ū (m), K (unit of E*/m), U_el (J/m²) and their error bounds as arrays."""
+def stress(
+    start: Optional[Start],
+    g: ArrayLike,
+    *,
+    table: Optional[Tuple[ArrayLike, ArrayLike]] = None,
+    table_normalisation: float = 1e-6,
+    yield_ratio: Optional[float] = None,
+    sigma_ratio: Optional[ArrayLike] = None,
+    points: int = 201,
+    tolerance: float = 1e-12,
+) -> Report:
+    """`persson stress --json`: σH P against σ/σH at each G."""
+def stress_physical(
+    spectrum: Spectrum,
+    modulus: float,
+    zeta: ArrayLike,
+    start: Start = "flat",
+    *,
+    peak_pressure: Optional[float] = None,
+    ball: Optional[Tuple[float, float]] = None,
+    cylinder: Optional[Tuple[float, float]] = None,
+    yield_stress: Optional[float] = None,
+    points: int = 201,
+    tolerance: float = 1e-12,
+) -> Report:
+    """P(σ) in the pressure unit at magnifications ζ (scene output `stress` with `zeta`)."""
+def run_scene(scene: Union[PathLike, dict[str, Any]]) -> Report:
+    """`persson run SCENE --json`."""
+def synthesize(spectrum: Spectrum, grid: int, *, size: Optional[float] = None, seed: int = 1) -> FloatArray:
+    """A grid × grid Gaussian surface of side `size` (default 2π/q_l), m."""
+def bem_solve(
+    heights: FloatArray,
+    size: float,
+    modulus: float,
+    *,
+    pressure: Optional[float] = None,
+    penetration: Optional[float] = None,
+    boundary: Boundary = "periodic",
+    yield_stress: Optional[float] = None,
+    tolerance: float = 1e-10,
+    max_iterations: int = 10000,
+) -> Tuple[FloatArray, FloatArray, dict[str, Any]]:
+    """One FFT-BEM solve: (pressure N×N, gap N×N, summary)."""
+def bem_rough(
+    modulus: float,
+    pressure: ArrayLike,
+    *,
+    heights: Optional[FloatArray] = None,
+    size: Optional[float] = None,
+    spectrum: Optional[Spectrum] = None,
+    grid: Optional[int] = None,
+    seed: int = 1,
+    boundary: Boundary = "periodic",
+    yield_stress: Optional[float] = None,
+    bins: Optional[int] = None,
+    tolerance: float = 1e-10,
+    max_iterations: int = 10000,
+) -> Report:
+    """`persson bem rough --json`."""
+def bem_hertz(
+    *,
+    grid: int = 256,
+    boundary: Boundary = "free",
+    size: float = 1.0,
+    radius: float = 1.0,
+    modulus: float = 1.0,
+    contact_radius: Optional[float] = None,
+    tolerance: float = 1e-10,
+    max_iterations: int = 10000,
+) -> Report:
+    """`persson bem hertz --json`."""
+def compare(
+    spectrum: Spectrum,
+    modulus: float,
+    pressure: Optional[ArrayLike] = None,
+    *,
+    heights: Optional[FloatArray] = None,
+    size: Optional[float] = None,
+    periodic: bool = False,
+    grid: int = 256,
+    levels: int = 3,
+    seeds: int = 1,
+    seed: int = 1,
+    alpha: Optional[float] = 0.7,
+    pixels_per_wavelength: float = 4.0,
+    tolerance: float = 1e-10,
+    max_iterations: int = 10000,
+    bins: int = 40,
+    histogram_pressure: Optional[float] = None,
+    data: Optional[PathLike] = None,
+    data_histogram: Optional[PathLike] = None,
+) -> Report:
+    """`persson compare --json`."""

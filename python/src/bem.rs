@@ -1,0 +1,312 @@
+//! The FFT boundary-element method from numpy: one solve on a height map
+//! (pressure and gap arrays), `persson bem rough` / `bem hertz` and
+//! `persson compare` as dicts, surface synthesis.
+
+use std::path::{Path, PathBuf};
+
+use persson::bem::hertz::HertzCase;
+use persson::bem::rough::{self, RoughOptions, SurfaceSource};
+use persson::bem::surface::{synthesize as synth, Surface};
+use persson::bem::{check_memory, Boundary, Control, Operator, Options, Solver};
+use persson::error::check;
+use persson::scene::BoundaryName;
+use persson::validation::{self, ComparisonConfig, SweepSettings, UserData, UserHistogram};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+use crate::arrays::{float_list, floats, map, square};
+use crate::spectrum::Spectrum;
+use crate::{err, name, to_dict, value_error};
+
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(synthesize, m)?)?;
+    m.add_function(wrap_pyfunction!(bem_solve, m)?)?;
+    m.add_function(wrap_pyfunction!(bem_rough, m)?)?;
+    m.add_function(wrap_pyfunction!(bem_hertz, m)?)?;
+    m.add_function(wrap_pyfunction!(compare, m)?)?;
+    Ok(())
+}
+
+fn boundary(b: &str) -> PyResult<Boundary> {
+    Ok(name::<BoundaryName>("boundary", b)?.into())
+}
+
+fn options(tolerance: f64, max_iterations: usize, yield_stress: Option<f64>) -> PyResult<Options> {
+    check::tolerance("tolerance", tolerance).map_err(err)?;
+    Ok(Options {
+        tolerance,
+        max_iterations,
+        warm_start: true,
+        yield_stress,
+    })
+}
+
+/// A square height map (N × N, float64, C-contiguous) of side `size` as the
+/// solver's surface (one copy: the solver's own buffer).
+fn surface(heights: &Bound<'_, PyAny>, size: f64) -> PyResult<Surface> {
+    let a = floats("heights", heights)?;
+    let ([rows, cols], values) = map("heights", &a)?;
+    if rows != cols {
+        return Err(value_error(format!(
+            "heights: a {rows} × {cols} array; the BEM solves on square N × N maps (crop or resample it)"
+        )));
+    }
+    Surface::new(rows, size, values.to_vec()).map_err(err)
+}
+
+/// A Gaussian random surface of the spectrum on an N × N periodic grid of
+/// side `size` (default 2π/q_l), heights in m (N × N numpy array),
+/// reproducible from `seed` (Pcg64Mcg; the CLI's `bem rough --seed`).
+#[pyfunction]
+#[pyo3(signature = (spectrum, grid, *, size=None, seed=1))]
+fn synthesize<'py>(
+    py: Python<'py>,
+    spectrum: &Spectrum,
+    grid: usize,
+    size: Option<f64>,
+    seed: u64,
+) -> PyResult<Bound<'py, PyAny>> {
+    let size = size.unwrap_or(std::f64::consts::TAU / spectrum.shared.0.q_min());
+    check::positive("size", size).map_err(err)?;
+    let s = &spectrum.shared;
+    let surface = py.detach(|| synth(s, grid, size, seed)).map_err(err)?;
+    square(py, surface.n, surface.heights)
+}
+
+/// One FFT-BEM solve (Polonsky & Keer, Wear 231, 206 (1999)): a rigid rough
+/// surface `heights` (N × N float64 array, m) of side `size` (m) pressed on
+/// an elastic half-space of contact modulus `modulus`, at the mean pressure
+/// `pressure` (unit of E*) or the penetration `penetration` (m, from first
+/// touch); "periodic" or "free" boundary; pressures bounded by
+/// `yield_stress` when given. Returns (pressure, gap, summary): two N × N
+/// arrays (unit of E*; m) and a dict with the mean pressure, A/A0 (and its
+/// elastic and plastic parts with a yield stress), the mean separation,
+/// the approach, iterations, residual and seconds.
+#[pyfunction]
+#[pyo3(signature = (heights, size, modulus, *, pressure=None, penetration=None, boundary="periodic", yield_stress=None, tolerance=1e-10, max_iterations=10_000))]
+#[allow(clippy::too_many_arguments)]
+fn bem_solve<'py>(
+    py: Python<'py>,
+    heights: &Bound<'py, PyAny>,
+    size: f64,
+    modulus: f64,
+    pressure: Option<f64>,
+    penetration: Option<f64>,
+    boundary: &str,
+    yield_stress: Option<f64>,
+    tolerance: f64,
+    max_iterations: usize,
+) -> PyResult<Bound<'py, PyAny>> {
+    let control = match (pressure, penetration) {
+        (Some(p), None) => Control::MeanPressure(check::positive("pressure", p).map_err(err)?),
+        (None, Some(d)) => {
+            Control::Penetration(check::non_negative("penetration", d).map_err(err)?)
+        }
+        _ => return Err(value_error("pressure, penetration: give exactly one")),
+    };
+    let b = self::boundary(boundary)?;
+    let opts = options(tolerance, max_iterations, yield_stress)?;
+    let s = surface(heights, size)?;
+    let sol = py
+        .detach(|| -> persson::Result<_> {
+            check_memory(s.n, b)?;
+            let op = Operator::new(b, s.n, s.size, modulus)?;
+            Solver::new(op).solve(&s.heights, control, &opts)
+        })
+        .map_err(err)?;
+    let summary = PyDict::new(py);
+    summary.set_item("nominal_pressure", sol.mean_pressure)?;
+    summary.set_item("contact_fraction", sol.contact_fraction)?;
+    summary.set_item(
+        "mean_separation",
+        sol.gap.iter().sum::<f64>() / sol.gap.len() as f64,
+    )?;
+    summary.set_item("approach", sol.approach)?;
+    if yield_stress.is_some() {
+        summary.set_item("elastic_fraction", sol.elastic_fraction)?;
+        summary.set_item("plastic_fraction", sol.plastic_fraction)?;
+        summary.set_item("plastic_displacement_mean", sol.plastic_displacement_mean)?;
+        summary.set_item("plastic_displacement_max", sol.plastic_displacement_max)?;
+    }
+    summary.set_item("iterations", sol.iterations)?;
+    summary.set_item("residual", sol.residual)?;
+    summary.set_item("seconds", sol.seconds)?;
+    let n = s.n;
+    let p = square(py, n, sol.pressure)?;
+    let g = square(py, n, sol.gap)?;
+    Ok((p, g, summary).into_pyobject(py)?.into_any())
+}
+
+/// `persson bem rough --json`: solves at each nominal pressure (warm
+/// started along the list) on a given height map (`heights` and `size`) or
+/// on a surface synthesised from `spectrum` on `grid`² nodes with `seed`
+/// (side `size`, default 2π/q_l); with `bins`, each solve's pressure
+/// histogram.
+#[pyfunction]
+#[pyo3(signature = (modulus, pressure, *, heights=None, size=None, spectrum=None, grid=None, seed=1, boundary="periodic", yield_stress=None, bins=None, tolerance=1e-10, max_iterations=10_000))]
+#[allow(clippy::too_many_arguments)]
+fn bem_rough<'py>(
+    py: Python<'py>,
+    modulus: f64,
+    pressure: &Bound<'py, PyAny>,
+    heights: Option<&Bound<'py, PyAny>>,
+    size: Option<f64>,
+    spectrum: Option<&Spectrum>,
+    grid: Option<usize>,
+    seed: u64,
+    boundary: &str,
+    yield_stress: Option<f64>,
+    bins: Option<usize>,
+    tolerance: f64,
+    max_iterations: usize,
+) -> PyResult<Bound<'py, PyAny>> {
+    let pressures = float_list("pressure", pressure)?;
+    let b = self::boundary(boundary)?;
+    let opts = RoughOptions {
+        boundary: b,
+        solver: options(tolerance, max_iterations, yield_stress)?,
+        bins,
+    };
+    let r = match (heights, spectrum, grid) {
+        (Some(h), None, None) => {
+            let size = size.ok_or_else(|| value_error("size: required with heights"))?;
+            let s = surface(h, size)?;
+            let source = SurfaceSource::height_map(Path::new("(array)"));
+            py.detach(|| rough::rough_contact(&s, source, modulus, &pressures, &opts, &mut ()))
+        }
+        (None, Some(sp), Some(n)) => {
+            let shared = &sp.shared;
+            py.detach(|| -> persson::Result<_> {
+                check_memory(n, b)?;
+                let size = check::positive(
+                    "size",
+                    size.unwrap_or(std::f64::consts::TAU / shared.0.q_min()),
+                )?;
+                let s = synth(shared, n, size, seed)?;
+                let source = SurfaceSource::synthesised(shared, seed)?;
+                rough::rough_contact(&s, source, modulus, &pressures, &opts, &mut ())
+            })
+        }
+        _ => {
+            return Err(value_error(
+                "no surface: give heights and size, or spectrum and grid",
+            ))
+        }
+    }
+    .map_err(err)?;
+    to_dict(py, &r)
+}
+
+/// `persson bem hertz --json`: the BEM against the Hertz closed form (a
+/// ball of radius `radius` on a grid of side `size`, load from the contact
+/// radius, default 0.1 L): energy-norm error η, contact radius and peak pressure.
+#[pyfunction]
+#[pyo3(signature = (*, grid=256, boundary="free", size=1.0, radius=1.0, modulus=1.0, contact_radius=None, tolerance=1e-10, max_iterations=10_000))]
+#[allow(clippy::too_many_arguments)]
+fn bem_hertz<'py>(
+    py: Python<'py>,
+    grid: usize,
+    boundary: &str,
+    size: f64,
+    radius: f64,
+    modulus: f64,
+    contact_radius: Option<f64>,
+    tolerance: f64,
+    max_iterations: usize,
+) -> PyResult<Bound<'py, PyAny>> {
+    let case = HertzCase {
+        grid,
+        boundary: self::boundary(boundary)?,
+        size,
+        radius,
+        e_star: modulus,
+        contact_radius: contact_radius.unwrap_or(0.1 * size),
+    };
+    let opts = options(tolerance, max_iterations, None)?;
+    let r = py
+        .detach(|| validation::hertz(&case, &opts, &mut |_| {}))
+        .map_err(err)?;
+    to_dict(py, &r)
+}
+
+/// `persson compare --json`: every theory against the BEM at `levels`
+/// resolutions (finest `grid`²) of one synthesised surface over `seeds`
+/// seeds from `seed`, the continuum limit A(N) = A∞ + c N^−α (α = `alpha`,
+/// or fitted when None), κ, pressure distributions, mean separation, and
+/// the user's data (CSV files) scored against them (Campañá & Müser, EPL
+/// 77, 38005 (2007)). With `heights` (N × N, m) and `size` (m): the BEM on
+/// that map and its coarser copies instead (as `compare --surface`; a
+/// `periodic` map on a periodic half-space, otherwise a free one), the
+/// theories on `spectrum` (e.g. `Spectrum.from_height_map` of the same map).
+#[pyfunction]
+#[pyo3(signature = (spectrum, modulus, pressure=None, *, heights=None, size=None, periodic=false, grid=256, levels=validation::DEFAULT_LEVELS, seeds=1, seed=1, alpha=Some(validation::DEFAULT_ALPHA), pixels_per_wavelength=validation::DEFAULT_PIXELS_PER_WAVELENGTH, tolerance=1e-10, max_iterations=10_000, bins=40, histogram_pressure=None, data=None, data_histogram=None))]
+#[allow(clippy::too_many_arguments)]
+fn compare<'py>(
+    py: Python<'py>,
+    spectrum: &Spectrum,
+    modulus: f64,
+    pressure: Option<&Bound<'py, PyAny>>,
+    heights: Option<&Bound<'py, PyAny>>,
+    size: Option<f64>,
+    periodic: bool,
+    grid: usize,
+    levels: usize,
+    seeds: usize,
+    seed: u64,
+    alpha: Option<f64>,
+    pixels_per_wavelength: f64,
+    tolerance: f64,
+    max_iterations: usize,
+    bins: usize,
+    histogram_pressure: Option<f64>,
+    data: Option<PathBuf>,
+    data_histogram: Option<PathBuf>,
+) -> PyResult<Bound<'py, PyAny>> {
+    if seeds < 1 {
+        return Err(value_error("seeds: must be at least 1"));
+    }
+    let mut config = ComparisonConfig::new(modulus);
+    config.nominal_pressure = pressure
+        .map(|p| float_list("pressure", p))
+        .transpose()?
+        .unwrap_or_default();
+    config.sweep = SweepSettings {
+        grid,
+        levels,
+        seeds: (0..seeds as u64).map(|k| seed + k).collect(),
+        alpha,
+        pixels_per_wavelength,
+        options: options(tolerance, max_iterations, None)?,
+    };
+    config.data = data
+        .as_deref()
+        .map(UserData::from_csv)
+        .transpose()
+        .map_err(err)?;
+    config.data_histogram = data_histogram
+        .as_deref()
+        .map(UserHistogram::from_csv)
+        .transpose()
+        .map_err(err)?;
+    config.histogram_pressure = histogram_pressure;
+    config.bins = bins;
+    let s = &spectrum.shared;
+    let r = match heights {
+        None => py.detach(|| validation::compare(s, &config, &mut |_| {})),
+        Some(h) => {
+            let size = size.ok_or_else(|| value_error("size: required with heights"))?;
+            let map = surface(h, size)?;
+            let b = if periodic {
+                Boundary::Periodic
+            } else {
+                Boundary::Free
+            };
+            py.detach(|| -> persson::Result<_> {
+                check_memory(map.n, b)?;
+                validation::compare_surface(s, &map, b, &config, &mut |_| {})
+            })
+        }
+    }
+    .map_err(err)?;
+    to_dict(py, &r)
+}

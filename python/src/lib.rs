@@ -1,0 +1,69 @@
+//! Python bindings of `persson`: the compiled module `persson._persson`,
+//! which the package `persson` (python/persson/) re-exports.
+//!
+//! Every function is a thin wrapper over one library function, the one the
+//! CLI calls for the same job, so a Python result and the CLI's `--json` are
+//! the same numbers. Long computations run with the interpreter released
+//! (`Python::detach`, pyo3's `allow_threads`). Library errors become
+//! `OSError` (files) or `ValueError` (everything else) with the CLI's text.
+
+mod arrays;
+mod bem;
+mod reports;
+mod spectrum;
+mod theory;
+
+use pyo3::exceptions::{PyOSError, PyValueError};
+use pyo3::prelude::*;
+use serde::de::DeserializeOwned;
+use serde::Serialize;
+
+/// A library error as a Python exception: `OSError` when a file could not
+/// be read or written, `ValueError` otherwise; the message is the CLI's.
+pub(crate) fn err(e: persson::Error) -> PyErr {
+    match e {
+        persson::Error::Io { .. } => PyOSError::new_err(e.to_string()),
+        _ => PyValueError::new_err(e.to_string()),
+    }
+}
+
+/// Shorthand for a `ValueError`.
+pub(crate) fn value_error(msg: impl Into<String>) -> PyErr {
+    PyValueError::new_err(msg.into())
+}
+
+/// A typed report as the dict `json.loads` makes of the CLI's `--json`: the
+/// same serde serialisation, so the same keys and the same digits.
+pub(crate) fn to_dict<'py, T: Serialize>(
+    py: Python<'py>,
+    report: &T,
+) -> PyResult<Bound<'py, PyAny>> {
+    let text = serde_json::to_string(report).map_err(|e| value_error(e.to_string()))?;
+    py.import("json")?.call_method1("loads", (text,))
+}
+
+/// A value of a closed set (theory, boundary, start, convention, detrend,
+/// window) spelled as on the command line; a `ValueError` naming `arg` and
+/// the allowed values otherwise.
+pub(crate) fn name<T: DeserializeOwned>(arg: &str, value: &str) -> PyResult<T> {
+    serde_json::from_value(serde_json::Value::String(value.to_string()))
+        .map_err(|e| value_error(format!("invalid {arg} = '{value}': {e}")))
+}
+
+/// The version of the persson crate this module was built from.
+#[pyfunction]
+fn version() -> &'static str {
+    env!("CARGO_PKG_VERSION")
+}
+
+/// The compiled module.
+#[pymodule]
+fn _persson(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(version, m)?)?;
+    m.add_class::<spectrum::Spectrum>()?;
+    m.add_function(wrap_pyfunction!(spectrum::analyse_height_map, m)?)?;
+    theory::register(m)?;
+    reports::register(m)?;
+    bem::register(m)?;
+    Ok(())
+}

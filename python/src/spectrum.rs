@@ -1,0 +1,592 @@
+//! `persson.Spectrum`: a roughness power spectrum C(q) in Persson's
+//! normalisation, built as the CLI and scenes build it.
+
+use std::path::PathBuf;
+use std::sync::Arc;
+
+use numpy::ndarray::Zip;
+use persson::scene::{
+    ConventionName, DetrendName, HeightMapSpec, Sides, SpectrumSpec, WindowName, EXAMPLE,
+};
+use persson::spectrum::{Spectrum as _, Tabulated};
+use persson::topography::{self as topo, AnalysisOptions, Topography};
+use persson::{Estimate, Result};
+use pyo3::prelude::*;
+
+use crate::arrays::{floats, map, output};
+use crate::{err, name, to_dict, value_error};
+
+/// A spectrum shared between Python objects and the library's reports.
+#[derive(Clone)]
+pub struct Shared(pub Arc<dyn persson::Spectrum>);
+
+impl persson::Spectrum for Shared {
+    fn c(&self, q: f64) -> f64 {
+        self.0.c(q)
+    }
+    fn q_min(&self) -> f64 {
+        self.0.q_min()
+    }
+    fn q_max(&self) -> f64 {
+        self.0.q_max()
+    }
+    fn moment(&self, k: i32, a: f64, b: f64) -> Result<Estimate> {
+        self.0.moment(k, a, b)
+    }
+    fn rms_height(&self, a: f64, b: f64) -> Result<Estimate> {
+        self.0.rms_height(a, b)
+    }
+    fn rms_slope(&self, a: f64, b: f64) -> Result<Estimate> {
+        self.0.rms_slope(a, b)
+    }
+    fn rms_curvature(&self, a: f64, b: f64) -> Result<Estimate> {
+        self.0.rms_curvature(a, b)
+    }
+}
+
+/// An isotropic roughness power spectrum C(q) in Persson's normalisation
+/// (m⁴, q the angular wavevector in 1/m), zero outside [q_l, q_s].
+///
+/// Build it with one of the static methods: `self_affine`, `tabulated`,
+/// `from_csv`, `from_height_map`, `from_file`, `from_topography`, `example`.
+#[pyclass(frozen, module = "persson")]
+pub struct Spectrum {
+    pub shared: Shared,
+    /// Kinks of C(q) inside the band (the roll-off), for the separation integrals.
+    pub breaks: Vec<f64>,
+    /// What the spectrum is, in words (the example, a measured surface).
+    pub description: Option<String>,
+    /// How to build it again (pickling, for multiprocessing and Dask).
+    pub recipe: Recipe,
+}
+
+/// What rebuilds a spectrum exactly: a self-affine spec (as scene JSON) or
+/// the points of a tabulated one in Persson's normalisation.
+#[derive(Clone)]
+pub enum Recipe {
+    SelfAffine(String),
+    Points(Vec<(f64, f64)>),
+}
+
+impl Spectrum {
+    fn tabulated_spectrum(t: Tabulated, description: Option<String>) -> Self {
+        let points = t.points().collect();
+        Spectrum {
+            shared: Shared(Arc::new(t)),
+            breaks: vec![],
+            description,
+            recipe: Recipe::Points(points),
+        }
+    }
+}
+
+impl Spectrum {
+    fn from_spec(spec: &SpectrumSpec) -> PyResult<Self> {
+        match spec {
+            SpectrumSpec::SelfAffine { .. } => {
+                let (s, description) = spec.build_described().map_err(err)?;
+                Ok(Spectrum {
+                    shared: Shared(Arc::from(s)),
+                    breaks: spec.breaks(),
+                    description,
+                    recipe: Recipe::SelfAffine(
+                        serde_json::to_string(spec).map_err(|e| value_error(e.to_string()))?,
+                    ),
+                })
+            }
+            // As SpectrumSpec::build, keeping the concrete Tabulated.
+            SpectrumSpec::Tabulated {
+                file,
+                convention,
+                size,
+            } => {
+                let t =
+                    Tabulated::from_csv(file, convention.with(*size).map_err(err)?).map_err(err)?;
+                Ok(Self::tabulated_spectrum(t, None))
+            }
+            SpectrumSpec::HeightMap(m) => {
+                let (t, d) = m.spectrum_described().map_err(err)?;
+                Ok(Self::tabulated_spectrum(t, Some(d)))
+            }
+        }
+    }
+
+    /// The library's surface: this spectrum on a body of contact modulus E*.
+    pub fn surface(&self, contact_modulus: f64) -> PyResult<persson::scene::run::Surface> {
+        persson::error::check::positive("contact_modulus", contact_modulus).map_err(err)?;
+        Ok(persson::scene::run::Surface {
+            spectrum: Box::new(self.shared.clone()),
+            contact_modulus,
+            breaks: self.breaks.clone(),
+            description: self.description.clone(),
+        })
+    }
+
+    fn band(&self, q_min: Option<f64>, q_max: Option<f64>) -> (f64, f64) {
+        (
+            q_min.unwrap_or(self.shared.q_min()),
+            q_max.unwrap_or(self.shared.q_max()),
+        )
+    }
+}
+
+fn heights_topography(
+    heights: &Bound<'_, PyAny>,
+    sides: impl FnOnce([usize; 2]) -> PyResult<(f64, f64)>,
+    periodic: bool,
+) -> PyResult<Topography> {
+    let a = floats("heights", heights)?;
+    if a.as_array().ndim() == 1 {
+        let v = a.as_array();
+        let nx = v.len();
+        let (lx, _) = sides([1, nx])?;
+        let h: Vec<f64> = v.iter().copied().collect();
+        return Topography::line_scans(nx, 1, lx, h, periodic).map_err(err);
+    }
+    let ([ny, nx], values) = map("heights", &a)?;
+    let (lx, ly) = sides([ny, nx])?;
+    Topography::map(nx, ny, lx, ly, values.to_vec(), periodic).map_err(err)
+}
+
+fn pixel_sides(pixel_size: &Bound<'_, PyAny>) -> PyResult<(f64, Option<f64>)> {
+    let d = crate::arrays::float_list("pixel_size", pixel_size)?;
+    match d[..] {
+        [dx] => Ok((dx, None)),
+        [dx, dy] => Ok((dx, Some(dy))),
+        _ => Err(value_error(format!(
+            "pixel_size: {} values, expected Δ or (Δx, Δy)",
+            d.len()
+        ))),
+    }
+}
+
+fn analysis(
+    t: &Topography,
+    detrend: Option<&str>,
+    window: Option<&str>,
+    q_max: Option<f64>,
+) -> PyResult<topo::Analysis> {
+    let detrend: Option<DetrendName> = detrend.map(|d| name("detrend", d)).transpose()?;
+    let window: Option<WindowName> = window.map(|w| name("window", w)).transpose()?;
+    let options = AnalysisOptions {
+        detrend: detrend.map(Into::into),
+        window: window.map(Into::into),
+        q_max,
+        bins: None,
+    };
+    topo::analyse(t, &options).map_err(err)
+}
+
+fn measured(a: topo::Analysis, what: &str) -> PyResult<Spectrum> {
+    let s = a.psd.to_tabulated().map_err(err)?;
+    Ok(Spectrum::tabulated_spectrum(s, Some(describe(what, &a))))
+}
+
+/// What the spectrum of a measured surface assumed, in the words of the
+/// CLI's titles (the library's `scene::measured::describe`, which is private).
+fn describe(what: &str, a: &topo::Analysis) -> String {
+    use persson::table::number;
+    let pixel: Vec<String> = a.pixel_size.iter().map(|d| number(*d, 6)).collect();
+    format!(
+        "measured surface {} ({} × {} points, pixel {} m, {}; detrend {}, window {}; band q = {} … {} 1/m)",
+        what,
+        a.shape[0],
+        a.shape[1],
+        pixel.join(" × "),
+        if a.periodic { "periodic" } else { "not periodic" },
+        a.detrend.name(),
+        a.window.name(),
+        number(a.q_min, 6),
+        number(a.q_max, 6),
+    )
+}
+
+/// The map's sides from its pixel size, as the file readers compute them
+/// (Lx = nx·Δx, Ly = ny·Δy).
+fn sides_from_pixel(
+    pixel_size: &Bound<'_, PyAny>,
+) -> PyResult<impl FnOnce([usize; 2]) -> PyResult<(f64, f64)>> {
+    let (dx, dy) = pixel_sides(pixel_size)?;
+    persson::error::check::positive("pixel_size", dx).map_err(err)?;
+    if let Some(dy) = dy {
+        persson::error::check::positive("pixel_size", dy).map_err(err)?;
+    }
+    Ok(move |[ny, nx]: [usize; 2]| Ok((nx as f64 * dx, ny as f64 * dy.unwrap_or(dx))))
+}
+
+#[pymethods]
+impl Spectrum {
+    /// Self-affine spectrum with roll-off (Persson, Bucher & Chiaia 2002,
+    /// Eq. 5): C = C(q_r) for q_l ≤ q < q_r, C(q_r)(q/q_r)^(−2(H+1)) up to q_s.
+    ///
+    /// hurst: H in (0, 1). q_l, q_s, q_r: cut-offs and roll-off, 1/m
+    /// (q_r defaults to q_l: no roll-off). Exactly one amplitude:
+    /// rms_height (m) or rms_slope over [q_l, q_s], or c_r = C(q_r) (m⁴).
+    #[staticmethod]
+    #[pyo3(signature = (hurst, q_l, q_s, *, q_r=None, rms_height=None, rms_slope=None, c_r=None))]
+    #[allow(clippy::too_many_arguments)]
+    fn self_affine(
+        hurst: f64,
+        q_l: f64,
+        q_s: f64,
+        q_r: Option<f64>,
+        rms_height: Option<f64>,
+        rms_slope: Option<f64>,
+        c_r: Option<f64>,
+    ) -> PyResult<Self> {
+        Self::from_spec(&SpectrumSpec::SelfAffine {
+            hurst,
+            q_l,
+            q_r,
+            q_s,
+            rms_height,
+            rms_slope,
+            c_r,
+        })
+    }
+
+    /// The CLI's built-in example (`--example`): H = 0.8, q_l = 1e4,
+    /// q_r = 1e5, q_s = 1e8 1/m, rms height 1 µm (use it with E* = 1e9 Pa).
+    #[staticmethod]
+    fn example() -> PyResult<Self> {
+        let mut s = Self::from_spec(&SpectrumSpec::example())?;
+        s.description = Some(EXAMPLE.to_string());
+        Ok(s)
+    }
+
+    /// A tabulated spectrum from arrays q (1/m) and C, piecewise power law
+    /// between the points; `convention` says C's normalisation: "persson"
+    /// (m⁴), "surface-topography" (C/(2π)²), "profile1d" (a 1D profile
+    /// spectrum, m³) or "grid" (q in units of 2π/L and a dimensionless φ,
+    /// with `size` = L in m).
+    #[staticmethod]
+    #[pyo3(signature = (q, c, convention="persson", size=None))]
+    fn tabulated(
+        q: &Bound<'_, PyAny>,
+        c: &Bound<'_, PyAny>,
+        convention: &str,
+        size: Option<f64>,
+    ) -> PyResult<Self> {
+        let conv: ConventionName = name("convention", convention)?;
+        let q = crate::arrays::float_list("q", q)?;
+        let c = crate::arrays::float_list("c", c)?;
+        if q.len() != c.len() {
+            return Err(value_error(format!(
+                "q and c: {} and {} values, expected the same number",
+                q.len(),
+                c.len()
+            )));
+        }
+        let pts: Vec<(f64, f64)> = q.into_iter().zip(c).collect();
+        let pts = conv
+            .with(size)
+            .map_err(err)?
+            .to_persson(&pts)
+            .map_err(err)?;
+        let s = Tabulated::new(&pts).map_err(err)?;
+        Ok(Self::tabulated_spectrum(s, None))
+    }
+
+    /// A tabulated spectrum from a CSV file of two columns q, C (as the
+    /// CLI's `--psd FILE --psd-convention … --psd-size …`).
+    #[staticmethod]
+    #[pyo3(signature = (path, convention="persson", size=None))]
+    fn from_csv(path: PathBuf, convention: &str, size: Option<f64>) -> PyResult<Self> {
+        Self::from_spec(&SpectrumSpec::Tabulated {
+            file: path,
+            convention: name("convention", convention)?,
+            size,
+        })
+    }
+
+    /// The binned isotropic spectrum of a measured height map in a file
+    /// (.npy, text matrix, .xyz, .gsf, .x3p, two-column line scan), as the
+    /// CLI's `--surface FILE` with `--size`/`--pixel-size`, `--periodic`,
+    /// `--detrend`, `--window`, `--fill-undefined`, `--q-max`.
+    #[staticmethod]
+    #[pyo3(signature = (path, *, size=None, pixel_size=None, periodic=false, detrend=None, window=None, fill_undefined=false, q_max=None))]
+    #[allow(clippy::too_many_arguments)]
+    fn from_file(
+        path: PathBuf,
+        size: Option<Vec<f64>>,
+        pixel_size: Option<f64>,
+        periodic: bool,
+        detrend: Option<&str>,
+        window: Option<&str>,
+        fill_undefined: bool,
+        q_max: Option<f64>,
+    ) -> PyResult<Self> {
+        let size = match size.as_deref() {
+            None => None,
+            Some([l]) => Some(Sides::One(*l)),
+            Some([lx, ly]) => Some(Sides::Two([*lx, *ly])),
+            Some(v) => {
+                return Err(value_error(format!(
+                    "size: {} values, expected L or (Lx, Ly)",
+                    v.len()
+                )))
+            }
+        };
+        let mut spec = HeightMapSpec::new(path);
+        spec.size = size;
+        spec.pixel_size = pixel_size;
+        spec.periodic = periodic;
+        spec.detrend = detrend.map(|d| name("detrend", d)).transpose()?;
+        spec.window = window.map(|w| name("window", w)).transpose()?;
+        spec.fill_undefined = fill_undefined;
+        spec.q_max = q_max;
+        Self::from_spec(&SpectrumSpec::HeightMap(spec))
+    }
+
+    /// The binned isotropic spectrum of a height map given as a numpy array
+    /// (rows along y, columns along x; a 1-D array is one line scan) with
+    /// its pixel size Δ or (Δx, Δy) in m. Non-periodic maps are detrended
+    /// (plane) and windowed (Hann) unless `detrend`/`window` say otherwise
+    /// ("none", "mean", "plane", "curvature"; "none", "hann", "blackman");
+    /// the band ends at the Nyquist wavevector π/Δ or `q_max`.
+    #[staticmethod]
+    #[pyo3(signature = (heights, pixel_size, *, periodic=false, detrend=None, window=None, q_max=None))]
+    fn from_height_map(
+        py: Python<'_>,
+        heights: &Bound<'_, PyAny>,
+        pixel_size: &Bound<'_, PyAny>,
+        periodic: bool,
+        detrend: Option<&str>,
+        window: Option<&str>,
+        q_max: Option<f64>,
+    ) -> PyResult<Self> {
+        let t = heights_topography(heights, sides_from_pixel(pixel_size)?, periodic)?;
+        let a = py.detach(|| analysis(&t, detrend, window, q_max))?;
+        measured(a, "(array)")
+    }
+
+    /// The spectrum of a SurfaceTopography `Topography` (or anything with
+    /// `.heights()` indexed [x, y] and `.physical_sizes`), duck-typed: no
+    /// import of SurfaceTopography. `periodic` defaults to the object's
+    /// `is_periodic` when it has one.
+    #[staticmethod]
+    #[pyo3(signature = (topography, *, periodic=None, detrend=None, window=None, q_max=None))]
+    fn from_topography(
+        py: Python<'_>,
+        topography: &Bound<'_, PyAny>,
+        periodic: Option<bool>,
+        detrend: Option<&str>,
+        window: Option<&str>,
+        q_max: Option<f64>,
+    ) -> PyResult<Self> {
+        let heights = topography.call_method0("heights").map_err(|e| {
+            value_error(format!(
+                "topography: no .heights() ({e}); pass a SurfaceTopography Topography"
+            ))
+        })?;
+        // SurfaceTopography indexes heights [x, y]; persson's maps are rows along y.
+        let heights = heights.getattr("T")?;
+        let sizes = crate::arrays::float_list(
+            "topography.physical_sizes",
+            &topography
+                .getattr("physical_sizes")
+                .map_err(|e| value_error(format!("topography: no .physical_sizes ({e})")))?,
+        )?;
+        let periodic = match periodic {
+            Some(p) => p,
+            None => topography
+                .getattr("is_periodic")
+                .and_then(|p| p.extract::<bool>())
+                .unwrap_or(false),
+        };
+        let contiguous = py
+            .import("numpy")?
+            .call_method1("ascontiguousarray", (heights,))?;
+        let t = heights_topography(
+            &contiguous,
+            |_| match sizes[..] {
+                [lx] => Ok((lx, lx)),
+                [lx, ly] => Ok((lx, ly)),
+                _ => Err(value_error(
+                    "topography.physical_sizes: expected (Lx,) or (Lx, Ly)",
+                )),
+            },
+            periodic,
+        )?;
+        let a = py.detach(|| analysis(&t, detrend, window, q_max))?;
+        measured(a, "(topography)")
+    }
+
+    /// C(q) in m⁴ at the wavevectors q (1/m; a number or an array), 0
+    /// outside the band.
+    fn c<'py>(&self, py: Python<'py>, q: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+        let q = floats("q", q)?;
+        let v = q.as_array();
+        let mut out = vec![0.0; v.len()];
+        let s = &self.shared;
+        Zip::from(
+            numpy::ndarray::ArrayViewMut::from_shape(v.raw_dim(), &mut out[..])
+                .map_err(|e| value_error(e.to_string()))?,
+        )
+        .and(&v)
+        .for_each(|o, &q| *o = persson::Spectrum::c(s, q));
+        output(py, v.shape(), out)
+    }
+
+    /// Lower end q_l of the band, 1/m.
+    #[getter]
+    fn q_l(&self) -> f64 {
+        self.shared.q_min()
+    }
+
+    /// Upper end q_s of the band, 1/m.
+    #[getter]
+    fn q_s(&self) -> f64 {
+        self.shared.q_max()
+    }
+
+    /// What the spectrum is in words (the example, a measured map), or None.
+    #[getter]
+    fn description(&self) -> Option<String> {
+        self.description.clone()
+    }
+
+    /// rms height √(2π ∫ q C dq) over [q_min, q_max] (default the band), m;
+    /// with `error_bound=True` the pair (value, bound on its absolute error).
+    #[pyo3(signature = (q_min=None, q_max=None, *, error_bound=false))]
+    fn rms_height<'py>(
+        &self,
+        py: Python<'py>,
+        q_min: Option<f64>,
+        q_max: Option<f64>,
+        error_bound: bool,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let (a, b) = self.band(q_min, q_max);
+        estimate(py, self.shared.rms_height(a, b).map_err(err)?, error_bound)
+    }
+
+    /// rms slope √(2π ∫ q³ C dq) over [q_min, q_max] (default the band).
+    #[pyo3(signature = (q_min=None, q_max=None, *, error_bound=false))]
+    fn rms_slope<'py>(
+        &self,
+        py: Python<'py>,
+        q_min: Option<f64>,
+        q_max: Option<f64>,
+        error_bound: bool,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let (a, b) = self.band(q_min, q_max);
+        estimate(py, self.shared.rms_slope(a, b).map_err(err)?, error_bound)
+    }
+
+    /// rms curvature √(2π ∫ q⁵ C dq) over [q_min, q_max] (default the band), 1/m.
+    #[pyo3(signature = (q_min=None, q_max=None, *, error_bound=false))]
+    fn rms_curvature<'py>(
+        &self,
+        py: Python<'py>,
+        q_min: Option<f64>,
+        q_max: Option<f64>,
+        error_bound: bool,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let (a, b) = self.band(q_min, q_max);
+        estimate(
+            py,
+            self.shared.rms_curvature(a, b).map_err(err)?,
+            error_bound,
+        )
+    }
+
+    /// `persson spectrum --json` as a dict: rms height, slope and curvature
+    /// over [q_min, q_max] with error bounds, a power-law fit over the upper
+    /// half of the band, C(q) at `points` log-spaced q and a 201-point curve.
+    #[pyo3(signature = (q_min=None, q_max=None, points=11))]
+    fn report<'py>(
+        &self,
+        py: Python<'py>,
+        q_min: Option<f64>,
+        q_max: Option<f64>,
+        points: usize,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let r = persson::scene::run::spectrum(
+            &self.shared,
+            self.description.clone(),
+            q_min,
+            q_max,
+            points,
+        )
+        .map_err(err)?;
+        to_dict(py, &r)
+    }
+
+    /// Pickling (multiprocessing, Dask): the spectrum is rebuilt from its
+    /// self-affine parameters or its tabulated points, so the copy gives
+    /// the same numbers.
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<Bound<'py, PyAny>> {
+        let py = slf.py();
+        let s = slf.get();
+        let restore = py.get_type::<Spectrum>().getattr("_restore")?;
+        let state = match &s.recipe {
+            Recipe::SelfAffine(json) => ("self_affine", json.clone().into_pyobject(py)?.into_any()),
+            Recipe::Points(p) => ("points", p.clone().into_pyobject(py)?.into_any()),
+        };
+        (restore, (state.0, state.1, s.description.clone()))
+            .into_pyobject(py)
+            .map(|t| t.into_any())
+    }
+
+    /// Rebuild a pickled spectrum (see `__reduce__`).
+    #[staticmethod]
+    fn _restore(
+        kind: &str,
+        payload: &Bound<'_, PyAny>,
+        description: Option<String>,
+    ) -> PyResult<Self> {
+        let mut s = match kind {
+            "self_affine" => {
+                let spec: SpectrumSpec = serde_json::from_str(&payload.extract::<String>()?)
+                    .map_err(|e| value_error(e.to_string()))?;
+                Self::from_spec(&spec)?
+            }
+            "points" => {
+                let points: Vec<(f64, f64)> = payload.extract()?;
+                Self::tabulated_spectrum(Tabulated::new(&points).map_err(err)?, None)
+            }
+            _ => return Err(value_error(format!("invalid kind = '{kind}'"))),
+        };
+        s.description = description;
+        Ok(s)
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "persson.Spectrum(q_l={:e}, q_s={:e}{})",
+            self.shared.q_min(),
+            self.shared.q_max(),
+            self.description
+                .as_deref()
+                .map(|d| format!(", description={d:?}"))
+                .unwrap_or_default()
+        )
+    }
+}
+
+fn estimate<'py>(py: Python<'py>, e: Estimate, error_bound: bool) -> PyResult<Bound<'py, PyAny>> {
+    if error_bound {
+        Ok((e.value, e.error).into_pyobject(py)?.into_any())
+    } else {
+        Ok(pyo3::types::PyFloat::new(py, e.value).into_any())
+    }
+}
+
+/// `persson spectrum --surface FILE --json` for a height map given as an
+/// array: shape, pixel size, real-space and spectral rms values, the Hurst
+/// fit and the binned spectrum `psd` (Persson's normalisation).
+#[pyfunction]
+#[pyo3(signature = (heights, pixel_size, *, periodic=false, detrend=None, window=None, q_max=None))]
+pub fn analyse_height_map<'py>(
+    py: Python<'py>,
+    heights: &Bound<'py, PyAny>,
+    pixel_size: &Bound<'py, PyAny>,
+    periodic: bool,
+    detrend: Option<&str>,
+    window: Option<&str>,
+    q_max: Option<f64>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let t = heights_topography(heights, sides_from_pixel(pixel_size)?, periodic)?;
+    let a = py.detach(|| analysis(&t, detrend, window, q_max))?;
+    to_dict(py, &a)
+}
