@@ -172,9 +172,11 @@ pub mod theory;
 #[cfg(feature = "topography")]
 pub mod topography;
 pub mod validation;
+pub mod warning;
 
 pub use error::{Error, Result};
 pub use material::Material;
 /// A value with a bound on its absolute error, returned by every integral.
 pub use quad::Estimate;
 pub use spectrum::Spectrum;
+pub use warning::Warning;

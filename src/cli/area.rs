@@ -3,7 +3,7 @@
 use persson::scene::{run, AreaOutput, TheoryName};
 
 use super::args::{measured_surface, pressures, MaterialArgs, MeasuredArgs, SpectrumArgs};
-use super::output::{print, Format};
+use super::output::{print_warned, Format};
 
 /// Arguments of `persson area`.
 #[derive(clap::Args, Debug)]
@@ -63,5 +63,5 @@ pub fn run(a: Args) -> anyhow::Result<()> {
     let report = run::area(&surface, &pressures, &out)?;
     #[cfg(feature = "plot")]
     a.plot.draw(|| persson::scene::plot::area(&report))?;
-    print(&report, &a.format)
+    print_warned(&report, &report.warnings, &a.format)
 }

@@ -12,7 +12,7 @@ use persson::table::Tabulate;
 
 pub use super::bem_args::{Args, SolverArgs};
 use super::bem_args::{Cmd, RoughArgs};
-use super::output::print;
+use super::output::{print, print_warned};
 use super::progress::Progress;
 
 /// Run `persson bem`.
@@ -122,7 +122,7 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
             persson::io::write_atomic(path, t.to_csv().as_bytes())?;
         }
     }
-    print(&report, &a.format)
+    print_warned(&report, &persson::warning::of_rough(&report), &a.format)
 }
 
 /// `dir/name.ext` → `dir/name_k.ext` when `k` is given.

@@ -3,7 +3,7 @@
 use persson::scene::run;
 
 use super::args::{pressures, surface, MaterialArgs, SpectrumArgs};
-use super::output::{print, Format};
+use super::output::{print_warned, Format};
 
 /// Arguments of `persson kappa`.
 #[derive(clap::Args, Debug)]
@@ -28,5 +28,5 @@ pub fn run(a: Args) -> anyhow::Result<()> {
     } else {
         run::kappa(None)?
     };
-    print(&report, &a.format)
+    print_warned(&report, &report.warnings, &a.format)
 }

@@ -4,7 +4,7 @@
 use persson::scene::{run, MagnificationOutput};
 
 use super::args::{measured_surface, MaterialArgs, MeasuredArgs, SpectrumArgs};
-use super::output::{print, Format};
+use super::output::{print_warned, Format};
 
 /// Arguments of `persson magnification`.
 #[derive(clap::Args, Debug)]
@@ -60,5 +60,5 @@ pub fn run(a: Args) -> anyhow::Result<()> {
         a.plot.draw(|| plot::magnification_area(&report))?;
         plot_g.draw(|| plot::magnification_g(&report))?;
     }
-    print(&report, &a.format)
+    print_warned(&report, &report.warnings, &a.format)
 }

@@ -5,7 +5,7 @@
 use persson::scene::{run, SeparationOutput, TheoriesOutput};
 
 use super::args::{measured_surface, pressures, MaterialArgs, MeasuredArgs, SpectrumArgs};
-use super::output::{print, Format};
+use super::output::{print_warned, Format};
 
 /// Arguments of `persson separation`.
 #[derive(clap::Args, Debug)]
@@ -70,7 +70,7 @@ pub fn run(a: Args) -> anyhow::Result<()> {
     }
     #[cfg(not(feature = "plot"))]
     let _ = TheoriesOutput::default();
-    print(&report, &a.format)
+    print_warned(&report, &report.warnings, &a.format)
 }
 
 /// `n` log-spaced pressures spanning the given ones (σ0/100 to 100 σ0 for one).

@@ -7,7 +7,7 @@ use std::path::PathBuf;
 use persson::scene::run;
 
 use super::args::{MeasuredArgs, SpectrumArgs};
-use super::output::{print, Format};
+use super::output::{print_warned, Format};
 
 /// Arguments of `persson spectrum`.
 #[derive(clap::Args, Debug)]
@@ -41,15 +41,21 @@ pub fn run(a: Args) -> anyhow::Result<()> {
     if let Some(map) = a.measured.spec(a.q_max)? {
         return measured(&a, &map);
     }
-    let s = a.spectrum.build()?;
+    let spec = a.spectrum.spec()?;
+    let s = spec.build()?;
     let description = a
         .spectrum
         .is_example()
         .then(|| persson::scene::EXAMPLE.to_string());
-    let report = run::spectrum(s.as_ref(), description, a.q_min, a.q_max, a.points)?;
+    let mut report = run::spectrum(s.as_ref(), description, a.q_min, a.q_max, a.points)?;
+    for w in run::spectrum_warnings(&spec, s.as_ref()) {
+        if !report.warnings.contains(&w) {
+            report.warnings.push(w);
+        }
+    }
     #[cfg(feature = "plot")]
     a.plot.draw(|| persson::scene::plot::spectrum(&report))?;
-    print(&report, &a.format)
+    print_warned(&report, &report.warnings, &a.format)
 }
 
 /// `--surface`: the analysis of the map, its CSV and plot.
@@ -65,7 +71,7 @@ fn measured(a: &Args, map: &persson::scene::HeightMapSpec) -> anyhow::Result<()>
     #[cfg(feature = "plot")]
     a.plot
         .draw(|| persson::scene::plot::measured_spectrum(&report))?;
-    print(&report, &a.format)
+    print_warned(&report, &[], &a.format)
 }
 
 /// Without the feature `topography`, `--surface` is an error.

@@ -6,7 +6,7 @@ use persson::scene::{run, StartName};
 use persson::stress::{Start, TabulatedStart};
 use persson::Error;
 
-use super::output::{print, Format};
+use super::output::{print_warned, Format};
 
 /// Arguments of `persson stress`.
 #[derive(clap::Args, Debug)]
@@ -87,7 +87,7 @@ pub fn run(a: Args) -> anyhow::Result<()> {
     )?;
     #[cfg(feature = "plot")]
     a.plot.draw(|| persson::scene::plot::stress(&report))?;
-    print(&report, &a.format)
+    print_warned(&report, &report.warnings, &a.format)
 }
 
 /// Two columns of numbers; `#` starts a comment.

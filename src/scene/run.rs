@@ -9,6 +9,7 @@ use crate::separation::Separation;
 use crate::spectrum::Spectrum;
 use crate::stress::{HertzContact, Solver, Start, StressScene};
 use crate::theory::{log_zetas, Persson};
+use crate::warning::{self, Warning};
 
 use super::report::*;
 use super::schema::*;
@@ -23,6 +24,9 @@ pub struct Surface {
     pub breaks: Vec<f64>,
     /// What the surface is (the built-in example says so), shown in titles.
     pub description: Option<String>,
+    /// Remarks on the spectrum (its file's convention, a steep slope), passed
+    /// on to every report of this surface.
+    pub warnings: Vec<Warning>,
 }
 
 impl Surface {
@@ -49,12 +53,27 @@ impl Surface {
             && *material == MaterialSpec::example())
         .then(|| EXAMPLE.to_string())
         .or(measured);
+        let warnings = spectrum_warnings(spectrum, s.as_ref());
         Ok(Surface {
             spectrum: s,
             contact_modulus: m.contact_modulus(),
             breaks: spectrum.breaks(),
             description,
+            warnings,
         })
+    }
+
+    /// The surface's warnings with those of the nominal pressures and the
+    /// magnifications of one output.
+    fn warnings(&self, pressures: &[f64], zetas: &[f64]) -> Vec<Warning> {
+        let mut w = self.warnings.clone();
+        warning::push(
+            &mut w,
+            Warning::high_pressure(pressures, self.contact_modulus),
+        );
+        let zeta_max = self.spectrum.q_max() / self.spectrum.q_min();
+        warning::push(&mut w, Warning::zeta_beyond_band(zetas, zeta_max));
+        w
     }
 
     fn model(&self) -> Result<Persson<'_>> {
@@ -89,6 +108,7 @@ pub fn area(surface: &Surface, pressures: &[f64], out: &AreaOutput) -> Result<Ar
     let original = out.theory == TheoryName::Original;
     let (q_l, q_s) = surface.band();
     Ok(AreaReport {
+        warnings: surface.warnings(pressures, &[zeta]),
         surface: surface.description.clone(),
         contact_modulus: surface.contact_modulus,
         rms_height: surface.spectrum.rms_height(q_l, q_s)?.value,
@@ -120,6 +140,7 @@ pub fn magnification(surface: &Surface, out: &MagnificationOutput) -> Result<Mag
         out.zeta.clone()
     };
     Ok(MagnificationReport {
+        warnings: surface.warnings(&[out.nominal_pressure], &zeta),
         surface: surface.description.clone(),
         nominal_pressure: out.nominal_pressure,
         contact_modulus: surface.contact_modulus,
@@ -139,8 +160,10 @@ pub fn kappa(surface: Option<(&Surface, &[f64])>) -> Result<KappaReport> {
         kappa_persson: Kappa::Persson.value(),
         rms_slope: None,
         points: vec![],
+        warnings: vec![],
     };
     if let Some((s, pressures)) = surface {
+        r.warnings = s.warnings(pressures, &[]);
         let (q_l, q_s) = s.band();
         let slope = s.spectrum.rms_slope(q_l, q_s)?.value;
         r.rms_slope = Some(slope);
@@ -199,6 +222,7 @@ pub fn theories(
         })
         .collect::<Result<Vec<_>>>()?;
     Ok(TheoriesReport {
+        warnings: surface.warnings(pressures, &[zeta]),
         contact_modulus: surface.contact_modulus,
         zeta,
         rms_slope: model.slope_variance(zeta)?.value.sqrt(),
@@ -234,6 +258,7 @@ pub fn separation(
     let full = model.full_contact_energy()?;
     let (q_l, q_s) = surface.band();
     Ok(SeparationReport {
+        warnings: surface.warnings(pressures, &[]),
         surface: surface.description.clone(),
         contact_modulus: surface.contact_modulus,
         rms_height: surface.spectrum.rms_height(q_l, q_s)?.value,
@@ -309,6 +334,7 @@ pub fn stress_dimensionless(
         yield_ratio,
         yield_stress: None,
         curves,
+        warnings: vec![],
     })
 }
 
@@ -376,6 +402,7 @@ pub fn stress_physical(surface: &Surface, out: &StressOutput) -> Result<StressRe
         yield_ratio: None,
         yield_stress: out.yield_stress,
         curves,
+        warnings: surface.warnings(&[problem.nominal_pressure()], &out.zeta),
     })
 }
 
@@ -449,7 +476,36 @@ pub fn spectrum(
         },
         table,
         curve,
+        warnings: Warning::steep_slope(m.value).into_iter().collect(),
     })
+}
+
+/// The warnings a spectrum gives whatever is computed from it: the
+/// normalisation a spectrum file was read in (and a C(q) that rises, as a
+/// height profile would), and an rms slope over the band above 1.
+pub fn spectrum_warnings(spec: &SpectrumSpec, s: &dyn Spectrum) -> Vec<Warning> {
+    let mut w = Vec::new();
+    if let SpectrumSpec::Tabulated {
+        file, convention, ..
+    } = spec
+    {
+        w.push(Warning::PsdConvention {
+            file: file.clone(),
+            convention: convention.to_string(),
+        });
+        let (c_first, c_last) = (s.c(s.q_min()), s.c(s.q_max()));
+        if c_last >= c_first {
+            w.push(Warning::RisingSpectrum {
+                file: file.clone(),
+                c_first,
+                c_last,
+            });
+        }
+    }
+    if let Ok(m) = s.rms_slope(s.q_min(), s.q_max()) {
+        warning::push(&mut w, Warning::steep_slope(m.value));
+    }
+    w
 }
 
 /// Prefix the parameter name of an error with its section.
