@@ -149,7 +149,10 @@ impl fmt::Display for Warning {
                 count,
             } => {
                 let which = if *count > 1 {
-                    format!("{count} nominal pressures, up to σ0 = {}, are", n(*nominal_pressure))
+                    format!(
+                        "{count} nominal pressures, up to σ0 = {}, are",
+                        n(*nominal_pressure)
+                    )
                 } else {
                     format!("the nominal pressure σ0 = {} is", n(*nominal_pressure))
                 };
@@ -257,7 +260,10 @@ impl Serialize for Warning {
 pub fn of_rough(r: &crate::bem::rough::RoughReport) -> Vec<Warning> {
     let mut w = Vec::new();
     let pressures: Vec<f64> = r.points.iter().map(|p| p.nominal_pressure).collect();
-    push(&mut w, Warning::high_pressure(&pressures, r.contact_modulus));
+    push(
+        &mut w,
+        Warning::high_pressure(&pressures, r.contact_modulus),
+    );
     if let crate::bem::rough::SurfaceSource::Synthesised { spectrum, .. } = &r.surface {
         push(
             &mut w,

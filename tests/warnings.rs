@@ -107,7 +107,10 @@ fn steep_slope_is_outside_the_theory() {
     let slope = v["rms_slope"].as_f64().unwrap();
     assert!(slope > 1e5, "{slope}");
     assert_eq!(w.len(), 1, "{w:?}");
-    assert!(w[0].contains("rms slope") && w[0].contains("small-slope"), "{w:?}");
+    assert!(
+        w[0].contains("rms slope") && w[0].contains("small-slope"),
+        "{w:?}"
+    );
     // The spectrum summary warns too; a slope of exactly 1 does not.
     let (v, _) = run(&format!("spectrum {SA} --rms-height 1"));
     assert_eq!(warnings(&v).len(), 1);
@@ -144,7 +147,11 @@ fn psd_file(name: &str, rising: bool) -> String {
     let mut text = String::from("q,C\n");
     for i in 0..=40 {
         let q = 1e4 * 10f64.powf(f64::from(i) / 10.0);
-        let c = if rising { 1e-30 * q } else { 1e-20 * (q / 1e4).powf(-3.6) };
+        let c = if rising {
+            1e-30 * q
+        } else {
+            1e-20 * (q / 1e4).powf(-3.6)
+        };
         text.push_str(&format!("{q:e},{c:e}\n"));
     }
     std::fs::write(&p, text).unwrap();
@@ -187,7 +194,10 @@ fn spectrum_file_names_its_convention() {
     .unwrap();
     let (sc, lines) = run(&format!("run {}", scene.display()));
     let w = same(&sc, &lines);
-    assert!(w.len() == 1 && w[0].contains("`persson` convention"), "{w:?}");
+    assert!(
+        w.len() == 1 && w[0].contains("`persson` convention"),
+        "{w:?}"
+    );
     assert_eq!(sc["area"]["points"], v_area(&file)["points"]);
 }
 

@@ -13,8 +13,8 @@ use persson::validation::{
 pub use super::compare_args::Args;
 use super::compare_args::{BemArgs, KappaArgs, MainArgs, Study};
 use super::output::print_warned;
-use persson::Warning;
 use super::progress::Progress;
+use persson::Warning;
 
 /// Run `persson compare`.
 pub fn run(a: Args) -> anyhow::Result<()> {

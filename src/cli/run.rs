@@ -68,7 +68,10 @@ pub fn run(a: Args) -> anyhow::Result<()> {
     }
     if a.out.is_some() {
         let p = dir.join("report.json");
-        persson::io::write_atomic(&p, serde_json::to_string_pretty(&Warned::new(&report, &report.warnings))?.as_bytes())?;
+        persson::io::write_atomic(
+            &p,
+            serde_json::to_string_pretty(&Warned::new(&report, &report.warnings))?.as_bytes(),
+        )?;
         eprintln!("wrote {}", p.display());
     }
     if a.csv {

@@ -17,10 +17,10 @@ pub struct Args {
     #[command(flatten)]
     material: MaterialArgs,
     /// Nominal (mean) pressure σ0, same unit as E*; repeatable or comma-separated.
-    #[arg(long, value_delimiter = ',', allow_negative_numbers = true)]
+    #[arg(long, value_delimiter = ',', allow_negative_numbers = true, value_parser = super::args::number)]
     pressure: Vec<f64>,
     /// Relative tolerance of the wavevector integrals.
-    #[arg(long, default_value = "1e-10", allow_negative_numbers = true)]
+    #[arg(long, default_value = "1e-10", allow_negative_numbers = true, value_parser = super::args::number)]
     tolerance: f64,
     #[command(flatten)]
     format: Format,

@@ -17,11 +17,11 @@ pub struct Args {
     #[command(flatten)]
     measured: MeasuredArgs,
     /// Lower end of the q range for the moments (default q_l), 1/m.
-    #[arg(long, allow_negative_numbers = true, conflicts_with = "surface")]
+    #[arg(long, allow_negative_numbers = true, conflicts_with = "surface", value_parser = super::args::number)]
     q_min: Option<f64>,
     /// Upper end of the q range for the moments (default q_s), 1/m; with
     /// --surface the upper end of the band (default the Nyquist wavevector π/Δ).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_negative_numbers = true, value_parser = super::args::number)]
     q_max: Option<f64>,
     /// Number of log-spaced q values in the C(q) table.
     #[arg(long, default_value_t = 11, conflicts_with = "surface")]
@@ -42,7 +42,7 @@ pub fn run(a: Args) -> anyhow::Result<()> {
         return measured(&a, &map);
     }
     let spec = a.spectrum.spec()?;
-    let s = spec.build()?;
+    let s = spec.build().map_err(|e| a.spectrum.psd_hint(e))?;
     let description = a
         .spectrum
         .is_example()

@@ -522,6 +522,13 @@ pub struct StressReport {
     /// σH (pressure-unit curves).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub peak_pressure: Option<f64>,
+    /// σ0 = (σ0/σH) σH, the nominal mean pressure of the start (pressure-unit curves).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub nominal_pressure: Option<f64>,
+    /// Contact radius a (ball) or half-width a (cylinder) of the smooth
+    /// Hertz contact, m (pressure-unit curves of a ball or a cylinder).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub contact_radius: Option<f64>,
     /// σY/σH (dimensionless curves; absent: elastic).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub yield_ratio: Option<f64>,
@@ -578,6 +585,23 @@ impl Tabulate for StressReport {
                 .scalar("elastic_fraction", "A_el/A0", c.elastic_fraction)
                 .scalar("plastic_fraction", "A_pl/A0", c.plastic_fraction)
                 .scalar("error_bound", "error bound", c.error_bound);
+                if let Some(sh) = self.peak_pressure {
+                    t = t.scalar("peak_pressure", "σH", sh);
+                }
+                if let Some(s0) = self.nominal_pressure {
+                    t = t.scalar("nominal_pressure", "σ0", s0);
+                }
+                if let Some(a) = self.contact_radius {
+                    let label = if self.start == "cylinder" {
+                        "half-width a (m)"
+                    } else {
+                        "contact radius a (m)"
+                    };
+                    t = t.scalar("contact_radius", label, a);
+                }
+                if let Some(y) = self.yield_stress {
+                    t = t.scalar("yield_stress", "σY", y);
+                }
                 if let Some(tau) = c.tau {
                     t = t.scalar("tau", "τ = (σ0/σH)² G", tau);
                 }

@@ -135,6 +135,7 @@ pub fn area(surface: &Surface, pressures: &[f64], out: &AreaOutput) -> Result<Ar
 pub fn magnification(surface: &Surface, out: &MagnificationOutput) -> Result<MagnificationReport> {
     let model = surface.model()?;
     let zeta = if out.zeta.is_empty() {
+        check_points(out.points)?;
         log_zetas(model.zeta_max(), out.points)
     } else {
         out.zeta.clone()
@@ -297,6 +298,9 @@ pub fn stress_dimensionless(
             "outputs.stress.g (dimensionless) or outputs.stress.zeta (pressure unit)",
         ));
     }
+    if sigma_ratio.is_empty() {
+        check_points(points)?;
+    }
     let curves = g
         .iter()
         .map(|&g| {
@@ -331,6 +335,8 @@ pub fn stress_dimensionless(
         start: start.name().into(),
         mean_ratio: start.mean_ratio(),
         peak_pressure: None,
+        nominal_pressure: None,
+        contact_radius: None,
         yield_ratio,
         yield_stress: None,
         curves,
@@ -343,24 +349,31 @@ pub fn stress_dimensionless(
 /// # Errors
 /// Inconsistent start and contact; as [`StressScene::curves`].
 pub fn stress_physical(surface: &Surface, out: &StressOutput) -> Result<StressReport> {
+    check_points(out.points)?;
+    if out.zeta.is_empty() {
+        return Err(required("zeta (a non-empty list of magnifications)"));
+    }
     let model = surface.model()?;
     let e_star = surface.contact_modulus;
     let start = Start::from(out.start);
-    let problem = match (&out.ball, &out.cylinder, out.peak_pressure) {
-        (Some(b), None, None) if out.start == StartName::Hertz => StressScene::hertz(
-            &HertzContact::ball(b.radius, b.load, e_star)?,
-            out.yield_stress,
-        ),
-        (None, Some(c), None) if out.start == StartName::Cylinder => StressScene::hertz(
-            &HertzContact::cylinder(c.radius, c.load_per_length, e_star)?,
-            out.yield_stress,
-        ),
-        (None, None, Some(p)) => StressScene::new(start.clone(), p, out.yield_stress),
+    let contact = match (&out.ball, &out.cylinder, out.peak_pressure) {
+        (Some(b), None, None) if out.start == StartName::Hertz => {
+            Some(HertzContact::ball(b.radius, b.load, e_star)?)
+        }
+        (None, Some(c), None) if out.start == StartName::Cylinder => {
+            Some(HertzContact::cylinder(c.radius, c.load_per_length, e_star)?)
+        }
+        (None, None, Some(_)) => None,
         _ => {
             return Err(required(
                 "exactly one of peak_pressure, ball (start hertz), cylinder (start cylinder)",
             ))
         }
+    };
+    let problem = match (&contact, out.peak_pressure) {
+        (Some(c), _) => StressScene::hertz(c, out.yield_stress),
+        (None, Some(p)) => StressScene::new(start.clone(), p, out.yield_stress),
+        (None, None) => Err(required("peak_pressure, ball or cylinder")),
     }?;
     // σ from 0 to σY, or (elastic) to σH plus four standard deviations
     // √(2G) σ0 of the widest curve.
@@ -371,7 +384,7 @@ pub fn stress_physical(surface: &Surface, out: &StressOutput) -> Result<StressRe
     let top = out
         .yield_stress
         .unwrap_or(problem.peak_pressure + 4.0 * (2.0 * g_max).sqrt() * problem.nominal_pressure());
-    let n = out.points.max(2);
+    let n = out.points;
     let sigma: Vec<f64> = (0..n).map(|i| top * i as f64 / (n - 1) as f64).collect();
     let curves = problem
         .curves(&model, &out.zeta, &sigma, out.tolerance)?
@@ -399,6 +412,8 @@ pub fn stress_physical(surface: &Surface, out: &StressOutput) -> Result<StressRe
         start: out.start.name().into(),
         mean_ratio: start.mean_ratio(),
         peak_pressure: Some(problem.peak_pressure),
+        nominal_pressure: Some(problem.nominal_pressure()),
+        contact_radius: contact.map(|c| c.contact_radius),
         yield_ratio: None,
         yield_stress: out.yield_stress,
         curves,
@@ -418,6 +433,7 @@ pub fn spectrum(
     q_max: Option<f64>,
     points: usize,
 ) -> Result<SpectrumReport> {
+    check_points(points)?;
     let lo = check::positive("q_min", q_min.unwrap_or(s.q_min()))?;
     let hi = check::positive("q_max", q_max.unwrap_or(s.q_max()))?;
     if hi <= lo {
@@ -444,7 +460,7 @@ pub fn spectrum(
         .map(|p| (p.q, p.c))
         .collect();
     let fit = crate::spectrum::fit_power_law(&upper)?;
-    let n = points.max(2);
+    let n = points;
     let table = (0..n)
         .map(|i| {
             let q = if i + 1 == n {
@@ -506,6 +522,18 @@ pub fn spectrum_warnings(spec: &SpectrumSpec, s: &dyn Spectrum) -> Vec<Warning> 
         warning::push(&mut w, Warning::steep_slope(m.value));
     }
     w
+}
+
+/// A number of points of a curve or table: at least 2 (its two ends).
+fn check_points(points: usize) -> Result<usize> {
+    if points < 2 {
+        return Err(Error::invalid(
+            "points",
+            points as f64,
+            "an integer >= 2 (the curve's two ends)",
+        ));
+    }
+    Ok(points)
 }
 
 /// Prefix the parameter name of an error with its section.
