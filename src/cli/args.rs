@@ -60,9 +60,10 @@ pub struct SpectrumArgs {
 }
 
 impl SpectrumArgs {
-    /// Whether the built-in example stands in for the spectrum.
+    /// Whether the built-in example stands in for the spectrum (the
+    /// self-affine flags given replace parts of it).
     pub fn is_example(&self) -> bool {
-        self.psd.is_none() && self.example && self.hurst.is_none() && self.q_l.is_none()
+        self.psd.is_none() && self.example
     }
 
     /// Whether any spectrum is given (flags, a file or the example).
@@ -83,10 +84,24 @@ impl SpectrumArgs {
             });
         }
         if self.is_example() {
-            return Ok(SpectrumSpec::example());
+            return Ok(self.over_example());
         }
         let (Some(hurst), Some(q_l), Some(q_s)) = (self.hurst, self.q_l, self.q_s) else {
-            bail!("no spectrum: give --hurst, --q-l, --q-s and one of --rms-height, --rms-slope, --c-r; or --psd FILE; or --surface FILE; or --example");
+            let missing: Vec<&str> = [
+                ("--hurst", self.hurst),
+                ("--q-l", self.q_l),
+                ("--q-s", self.q_s),
+            ]
+            .into_iter()
+            .filter_map(|(flag, v)| v.is_none().then_some(flag))
+            .collect();
+            if missing.len() == 3 && self.q_r.is_none() {
+                bail!("no spectrum: give --hurst, --q-l, --q-s and one of --rms-height, --rms-slope, --c-r; or --psd FILE; or --surface FILE; or --example");
+            }
+            bail!(
+                "incomplete self-affine spectrum: missing {} (or add --example, whose spectrum the given flags then modify)",
+                missing.join(", ")
+            );
         };
         if self.rms_height.is_none() && self.rms_slope.is_none() && self.c_r.is_none() {
             bail!("no spectrum amplitude: give one of --rms-height, --rms-slope, --c-r");
@@ -100,6 +115,38 @@ impl SpectrumArgs {
             rms_slope: self.rms_slope,
             c_r: self.c_r,
         })
+    }
+
+    /// The example's spectrum with the self-affine flags given in place of its
+    /// values (a new --q-l without --q-r drops the example's roll-off; an
+    /// amplitude flag replaces its rms height).
+    fn over_example(&self) -> SpectrumSpec {
+        let SpectrumSpec::SelfAffine {
+            hurst,
+            q_l,
+            q_r,
+            q_s,
+            rms_height,
+            rms_slope,
+            c_r,
+        } = SpectrumSpec::example()
+        else {
+            return SpectrumSpec::example();
+        };
+        let amplitude = self.rms_height.is_some() || self.rms_slope.is_some() || self.c_r.is_some();
+        SpectrumSpec::SelfAffine {
+            hurst: self.hurst.unwrap_or(hurst),
+            q_l: self.q_l.unwrap_or(q_l),
+            q_r: self.q_r.or(if self.q_l.is_some() { None } else { q_r }),
+            q_s: self.q_s.unwrap_or(q_s),
+            rms_height: if amplitude {
+                self.rms_height
+            } else {
+                rms_height
+            },
+            rms_slope: if amplitude { self.rms_slope } else { rms_slope },
+            c_r: if amplitude { self.c_r } else { c_r },
+        }
     }
 
     /// Build the spectrum from the flags.
@@ -125,7 +172,7 @@ impl SpectrumArgs {
 #[derive(clap::Args, Debug, Clone, Default)]
 pub struct MaterialArgs {
     /// Contact modulus E*, 1/E* = Σ (1 − ν²)/E (same unit as the pressures).
-    #[arg(long, alias = "modulus", allow_negative_numbers = true, conflicts_with_all = ["young", "poisson"])]
+    #[arg(long, alias = "modulus", allow_negative_numbers = true, value_parser = number, conflicts_with_all = ["young", "poisson"])]
     pub contact_modulus: Option<f64>,
     /// Young's modulus E of the elastic body (against a rigid one unless --young2).
     #[arg(long, requires = "poisson", allow_negative_numbers = true, value_parser = number)]
@@ -134,7 +181,7 @@ pub struct MaterialArgs {
     #[arg(long, requires = "young", allow_negative_numbers = true, value_parser = number)]
     pub poisson: Option<f64>,
     /// Young's modulus of the second body.
-    #[arg(long, requires_all = ["young", "poisson2"], allow_negative_numbers = true)]
+    #[arg(long, requires_all = ["young", "poisson2"], allow_negative_numbers = true, value_parser = number)]
     pub young2: Option<f64>,
     /// Poisson ratio of the second body.
     #[arg(long, requires = "young2", allow_negative_numbers = true, value_parser = number)]

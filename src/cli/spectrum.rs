@@ -43,10 +43,14 @@ pub fn run(a: Args) -> anyhow::Result<()> {
     }
     let spec = a.spectrum.spec()?;
     let s = spec.build().map_err(|e| a.spectrum.psd_hint(e))?;
-    let description = a
-        .spectrum
-        .is_example()
-        .then(|| persson::scene::EXAMPLE.to_string());
+    let description = a.spectrum.is_example().then(|| {
+        let example = persson::scene::EXAMPLE;
+        if spec == persson::scene::SpectrumSpec::example() {
+            example.to_string()
+        } else {
+            format!("{example} (the given flags replace parts of it)")
+        }
+    });
     let mut report = run::spectrum(s.as_ref(), description, a.q_min, a.q_max, a.points)?;
     for w in run::spectrum_warnings(&spec, s.as_ref()) {
         if !report.warnings.contains(&w) {
