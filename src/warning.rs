@@ -291,10 +291,10 @@ mod tests {
 
     #[test]
     fn one_line_and_serialised_as_its_text() {
-        let w = Warning::high_pressure(&[1e5, 1e6], 1.333e7).unwrap();
+        let w = Warning::high_pressure(&[1e5, 1e6], 1.333e6).unwrap();
         let text = w.to_string();
         assert!(!text.contains('\n'), "{text}");
-        assert!(text.contains("1e6") && text.contains("1.333e7"), "{text}");
+        assert!(text.contains("1e6") && text.contains("1.333e6"), "{text}");
         assert_eq!(serde_json::to_value(&w).unwrap(), serde_json::json!(text));
         assert!(Warning::high_pressure(&[1e6], 1e7).is_none()); // exactly 0.1 E*
         assert!(Warning::steep_slope(1.0).is_none());
