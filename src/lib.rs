@@ -125,6 +125,7 @@
 //! | [`table`] | the one table type every report renders to, as aligned text or CSV |
 //! | `plot` | (feature `plot`) figures as SVG or PNG from the typed reports |
 //! | [`error`] | the crate's [`Error`] and [`Result`]; [`Estimate`] is a value with its error bound, which many functions return |
+//! | [`warning`] | [`Warning`]: a remark on the input (a pressure near E*, a slope above 1, ζ beyond the band, a spectrum file's convention) that never changes a number, carried by the reports |
 //!
 //! ## References
 //!
