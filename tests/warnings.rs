@@ -192,6 +192,12 @@ fn spectrum_file_names_its_convention() {
         ),
     )
     .unwrap();
+    // The BEM on a synthesised surface from the file names it too.
+    let (b, lines) = run(&format!(
+        "bem rough --psd {file} --grid 32 --contact-modulus 1e9 --pressure 1e6"
+    ));
+    let w = same(&b, &lines);
+    assert!(w[0].contains("`persson` convention"), "{w:?}");
     let (sc, lines) = run(&format!("run {}", scene.display()));
     let w = same(&sc, &lines);
     assert!(

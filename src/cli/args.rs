@@ -154,6 +154,19 @@ impl SpectrumArgs {
         self.spec()?.build().map_err(|e| self.psd_hint(e))
     }
 
+    /// The warning of a `--psd` file (the convention it was read in), for the
+    /// commands that build the spectrum without a [`Surface`].
+    #[cfg_attr(not(feature = "bem"), allow(dead_code))]
+    pub fn file_warnings(&self) -> Vec<persson::Warning> {
+        self.psd
+            .iter()
+            .map(|file| persson::Warning::PsdConvention {
+                file: file.clone(),
+                convention: self.psd_convention.to_string(),
+            })
+            .collect()
+    }
+
     /// A `--psd` file that could not be read as a spectrum but looks like a
     /// height map: say so, and name `--surface`.
     pub fn psd_hint(&self, e: persson::Error) -> anyhow::Error {

@@ -122,7 +122,9 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
             persson::io::write_atomic(path, t.to_csv().as_bytes())?;
         }
     }
-    print_warned(&report, &persson::warning::of_rough(&report), &a.format)
+    let mut warnings = a.spectrum.file_warnings();
+    warnings.extend(persson::warning::of_rough(&report));
+    print_warned(&report, &warnings, &a.format)
 }
 
 /// `dir/name.ext` → `dir/name_k.ext` when `k` is given.

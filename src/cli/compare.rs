@@ -83,7 +83,7 @@ fn compare(a: &MainArgs) -> anyhow::Result<()> {
         .transpose()?;
     config.histogram_pressure = a.histogram_pressure;
     config.bins = a.bins;
-    let mut warnings = Vec::new();
+    let mut warnings = a.spectrum.file_warnings();
     let report = match &map {
         Some(m) => {
             let boundary = if m.periodic {
