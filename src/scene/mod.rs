@@ -177,6 +177,16 @@ impl Scene {
                 .map(|s| (s, self.nominal_pressure.as_slice()));
             report.kappa = Some(run::kappa(with)?);
         }
+        if let Some(SpectrumSpec::Tabulated {
+            file, convention, ..
+        }) = &self.spectrum
+        {
+            // Whatever output reads it (the BEM's synthesis too).
+            report.warnings.push(crate::Warning::PsdConvention {
+                file: file.clone(),
+                convention: convention.to_string(),
+            });
+        }
         let Some(surface) = surface else {
             report.collect_warnings();
             return Ok(report);
