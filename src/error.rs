@@ -32,7 +32,7 @@ pub enum Error {
         requirement: String,
     },
     /// A file could not be parsed.
-    #[error("{}:{line}:{column}: {message}", path.display())]
+    #[error("{}{}: {message}", path.display(), position(*.line, *.column))]
     Parse {
         /// The file.
         path: PathBuf,
@@ -64,6 +64,15 @@ pub enum Error {
         /// The tolerance asked for.
         tolerance: f64,
     },
+}
+
+/// `:line:column`, `:line` (column unknown) or nothing (the whole file).
+fn position(line: usize, column: usize) -> String {
+    match (line, column) {
+        (0, _) => String::new(),
+        (l, 0) => format!(":{l}"),
+        (l, c) => format!(":{l}:{c}"),
+    }
 }
 
 /// A number as a person writes it: plain in [1e-4, 1e7), else scientific.

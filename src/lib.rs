@@ -125,6 +125,7 @@
 //! | [`table`] | the one table type every report renders to, as aligned text or CSV |
 //! | `plot` | (feature `plot`) figures as SVG or PNG from the typed reports |
 //! | [`error`] | the crate's [`Error`] and [`Result`]; [`Estimate`] is a value with its error bound, which many functions return |
+//! | [`warning`] | [`Warning`]: a remark on the input (a pressure near E*, a slope above 1, ζ beyond the band, a spectrum file's convention) that never changes a number, carried by the reports |
 //!
 //! ## References
 //!
@@ -172,9 +173,11 @@ pub mod theory;
 #[cfg(feature = "topography")]
 pub mod topography;
 pub mod validation;
+pub mod warning;
 
 pub use error::{Error, Result};
 pub use material::Material;
 /// A value with a bound on its absolute error, returned by every integral.
 pub use quad::Estimate;
 pub use spectrum::Spectrum;
+pub use warning::Warning;

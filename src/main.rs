@@ -2,10 +2,14 @@
 
 use std::process::ExitCode;
 
+use clap::error::ErrorKind;
 use clap::Parser;
 
 fn main() -> ExitCode {
-    let cli = persson_cli::Cli::parse();
+    let cli = match persson_cli::Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => return usage_error(&e),
+    };
     match persson_cli::run(cli) {
         Ok(()) => ExitCode::SUCCESS,
         // A closed pipe (`persson … | head`) is not an error of ours.
@@ -25,6 +29,62 @@ fn main() -> ExitCode {
             ExitCode::from(2)
         }
     }
+}
+
+/// A command line clap could not parse: one line `persson: error: …` and
+/// the usage hint after it, exit code 2. `--help`, `--version` and a bare
+/// `persson` print as clap does.
+fn usage_error(e: &clap::Error) -> ExitCode {
+    if matches!(
+        e.kind(),
+        ErrorKind::DisplayHelp
+            | ErrorKind::DisplayVersion
+            | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand
+    ) {
+        let _ = e.print();
+        return ExitCode::from(u8::try_from(e.exit_code()).unwrap_or(2));
+    }
+    let text = e.render().to_string();
+    let (message, usage) = split_usage(&text);
+    eprintln!("persson: error: {message}");
+    match usage {
+        Some(usage) => eprintln!("{usage} (more: --help)"),
+        None => {
+            let sub = std::env::args()
+                .skip(1)
+                .find(|a| !a.starts_with('-'))
+                .map_or(String::new(), |s| format!("{s} "));
+            eprintln!("Usage: persson {sub}--help");
+        }
+    }
+    ExitCode::from(2)
+}
+
+/// clap's message on one line (its list items and tips joined) and its usage line.
+fn split_usage(text: &str) -> (String, Option<String>) {
+    let mut one = String::new();
+    let mut usage = None;
+    for raw in text.lines() {
+        let line = raw.trim();
+        if let Some(u) = line.strip_prefix("Usage:") {
+            usage = Some(format!("Usage: {}", u.trim()));
+            break;
+        }
+        let line = line.strip_prefix("error:").unwrap_or(line).trim();
+        if line.is_empty() || line.starts_with("For more information") {
+            continue;
+        }
+        if !one.is_empty() {
+            let item = raw.starts_with(' ') && !line.starts_with("tip:");
+            one.push_str(match (one.ends_with(':'), item) {
+                (true, _) => " ",
+                (false, true) => ", ",
+                (false, false) => "; ",
+            });
+        }
+        one.push_str(line);
+    }
+    (one, usage)
 }
 
 #[path = "cli/mod.rs"]

@@ -111,6 +111,36 @@ fn cases() -> Vec<(String, String)> {
         ("stress --start hertz --g 1 --tolerance 0".into(), "tol"),
         (format!("stress --table {} --g 1", file("p0neg.csv", b"0,0\n0.5,-1\n1,2\n")), "table"),
         (format!("stress --table {} --g 1", file("p0norm.csv", b"0,0\n1,5\n")), "table"),
+        // --points below 2 (issue 15), wherever a number of points exists
+        ("stress --start hertz --g 0.6 --points 0".into(), "invalid points = 0: must be an integer >= 2"),
+        ("stress --start hertz --g 0.6 --points 1".into(), "invalid points = 1"),
+        ("stress --example --flat --pressure 1e6 --points 1".into(), "invalid points = 1"),
+        ("magnification --example --points 1".into(), "invalid points = 1"),
+        ("spectrum --example --points 0".into(), "invalid points = 0"),
+        (format!("run {}", file("points.json", br#"{"schema":1,"outputs":{"stress":{"start":"hertz","g":[0.6],"points":1}}}"#)), "outputs.stress.points = 1"),
+        // the physical stress distribution
+        ("stress --start hertz".into(), "no G: give --g G"),
+        ("stress --example --ball-radius -1 --load 10".into(), "radius"),
+        ("stress --example --cylinder-radius 0.5 --load-per-length 0".into(), "load"),
+        ("stress --example --flat --pressure 1e6 --yield-stress 1e5".into(), "yield_stress = 100000: must be finite and > the peak pressure 1e6"),
+        ("stress --example --start hertz --peak-pressure 1e6 --zeta 0.5".into(), "zeta"),
+        ("stress --example --zeta 10 --g 1".into(), "cannot be used with"),
+        ("stress --example --start hertz --g 1".into(), "needs a physical contact"),
+        ("stress --example --ball-radius 0.01".into(), "--load"),
+        // usage errors: one line with the prefix, the usage hint after it
+        ("area --exmple".into(), "persson: error: unexpected argument '--exmple' found; tip: a similar argument exists: '--example'"),
+        ("bogus".into(), "persson: error: unrecognized subcommand 'bogus'"),
+        ("area --example --pressure".into(), "a value is required for '--pressure"),
+        // units typed after a number: the plain SI number named
+        ("area --example --pressure 1MPa".into(), "`1MPa` is not a plain number: give SI numbers without units (1e6 for 1MPa, in Pa)"),
+        ("area --example --rms-height 2.5um".into(), "2.5e-6 for 2.5um, in m"),
+        ("area --example --contact-modulus 1.5GPa".into(), "1.5e9 for 1.5GPa"),
+        ("area --example --pressure abc".into(), "`abc` is not a number"),
+        // a partial spectrum names what is missing, and --example only when not given
+        ("area --hurst 0.5 --contact-modulus 1 --pressure 1".into(), "incomplete self-affine spectrum: missing --q-l, --q-s (or add --example"),
+        // a height map where a spectrum file is expected
+        (format!("area --psd {} --contact-modulus 1 --pressure 1", file("map.npy", b"\x93NUMPY\x01\x00v\x00{'descr': '<f8'}")), "give it as --surface"),
+        (format!("area --psd {} --contact-modulus 1 --pressure 1", file("map.txt", b"1 2 3\n4 5 6\n7 8 9\n")), "looks like a height map, not a spectrum: give it as --surface"),
         // corrected theories and separation
         (format!("area {SA} --contact-modulus 1 --pressure 1 --theory yang-persson --gamma 5"), "gamma"),
         (format!("area {SA} --contact-modulus 1 --pressure 1 --theory wang-muser --gamma 0"), "gamma"),
@@ -149,9 +179,12 @@ fn every_bad_input_exits_2_with_a_named_one_line_error() {
         );
         let ok = code == Some(2)
             && stdout.is_empty()
+            && stderr.starts_with("persson: error: ")
+            && !stderr.contains(":0:0")
             && stderr.contains(needle.as_str())
             && !stderr.contains("panicked")
-            && stderr.trim_end().lines().count() <= 1 + usize::from(stderr.contains("Usage"));
+            && stderr.trim_end().lines().count()
+                <= 1 + usize::from(stderr.contains("\nUsage: persson "));
         if !ok {
             failures.push(format!("{line}\n  -> code {code:?}, stdout {stdout:?}, stderr {stderr:?} (wanted '{needle}')"));
         }

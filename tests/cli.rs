@@ -263,3 +263,66 @@ fn bad_input_exits_2_naming_the_field() {
         assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: {err}");
     }
 }
+
+#[test]
+fn help_and_version_exit_0_on_stdout() {
+    for args in [
+        &["--help"][..],
+        &["--version"],
+        &["stress", "--help"],
+        &["area", "-h"],
+    ] {
+        let (code, out, err) = persson(args);
+        assert_eq!(code, 0, "{args:?}: {err}");
+        assert!(!out.is_empty() && err.is_empty(), "{args:?}: {err}");
+        assert!(!out.contains("persson: error"), "{args:?}");
+    }
+    let (_, out, _) = persson(&["stress", "--help"]);
+    for flag in [
+        "--ball-radius",
+        "--cylinder-radius",
+        "--flat",
+        "--yield-stress",
+        "--zeta",
+    ] {
+        assert!(out.contains(flag), "stress --help lacks {flag}");
+    }
+}
+
+/// `--example` with self-affine flags: the flags replace those parts of the
+/// example's spectrum (the same numbers as the full flags).
+#[test]
+fn example_flags_replace_parts_of_the_example() {
+    let over = json(&[
+        "area",
+        "--example",
+        "--hurst",
+        "0.5",
+        "--pressure",
+        "1e6",
+        "--json",
+    ]);
+    let full = json(&[
+        "area",
+        "--hurst",
+        "0.5",
+        "--q-l",
+        "1e4",
+        "--q-r",
+        "1e5",
+        "--q-s",
+        "1e8",
+        "--rms-height",
+        "1e-6",
+        "--contact-modulus",
+        "1e9",
+        "--pressure",
+        "1e6",
+        "--json",
+    ]);
+    assert_eq!(over["points"], full["points"]);
+    assert_eq!(over["rms_slope"], full["rms_slope"]);
+    // No flag: the example itself.
+    let plain = json(&["area", "--example", "--pressure", "1e6", "--json"]);
+    assert_ne!(plain["rms_slope"], over["rms_slope"]);
+}

@@ -134,6 +134,7 @@ fn commands(out_dir: &Path) -> Vec<Vec<Vec<String>>> {
         "area --example",
         "kappa --example",
         "stress --start hertz --g 0.6 --points 11",
+        "stress --example --ball-radius 0.01 --load 10 --zeta 10 --yield-stress 1e8 --points 5",
         "separation --example",
         "bem hertz --grid 32",
         "bem hertz --grid 16,32 --yield-stress 0.05",

@@ -538,7 +538,15 @@ mod cli {
         a.extend_from_slice(&FLAGS);
         a.extend_from_slice(extra);
         a.push("--json");
-        json(&a)
+        body(json(&a))
+    }
+
+    /// A subcommand's JSON without its top-level `warnings` (which a scene
+    /// gathers at its own top level).
+    fn body(mut v: serde_json::Value) -> serde_json::Value {
+        let w = v.as_object_mut().unwrap().remove("warnings");
+        assert!(w.is_some_and(|w| w.is_array()), "no warnings array");
+        v
     }
 
     fn run_scene(outputs: &str) -> serde_json::Value {
@@ -581,6 +589,7 @@ mod cli {
             "5",
             "--json",
         ]);
+        let cli = body(cli);
         assert_eq!(cli, sp["spectrum"]);
         assert_eq!(
             with(
@@ -593,7 +602,92 @@ mod cli {
         let cli = json(&[
             "stress", "--start", "cylinder", "--g", "0.6", "--points", "11", "--json",
         ]);
+        let cli = body(cli);
         assert_eq!(cli, st["stress"]);
+    }
+
+    /// `persson stress` in physical units prints the scene's physical stress
+    /// output to the last digit (and the same warnings), for each contact.
+    #[test]
+    fn physical_stress_equals_the_scene_to_the_last_digit() {
+        // The rail–wheel scene as shipped (σH = 542 MPa, cylinder start).
+        let dir = scratch("rail");
+        let rail = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/rail_wheel.json");
+        let r = json(&[
+            "run",
+            rail.to_str().unwrap(),
+            "--out",
+            dir.to_str().unwrap(),
+            "--json",
+        ]);
+        let words = "stress --young 1e11 --poisson 0.3 --hurst 0.5 --q-l 628.3185307179587 \
+                     --q-r 2e4 --q-s 1e9 --rms-height 6.717514421272201e-7 --start cylinder \
+                     --peak-pressure 542e6 --zeta 100,400 --points 201 --json";
+        let args: Vec<&str> = words.split_whitespace().collect();
+        let mut cli = json(&args);
+        assert_eq!(cli["warnings"], r["warnings"], "rail–wheel warnings");
+        let cli = body(cli.take());
+        assert_eq!(cli, r["stress"]);
+        assert_eq!(cli["curves"].as_array().unwrap().len(), 2);
+
+        // A ball, a cylinder and a flat punch on the example surface, with a yield stress.
+        let example = r#""material": {"contact_modulus": 1e9},
+            "spectrum": {"kind": "self_affine", "hurst": 0.8, "q_l": 1e4, "q_r": 1e5, "q_s": 1e8, "rms_height": 1e-6}"#;
+        for (stress, flags) in [
+            (
+                r#"{"start": "hertz", "ball": {"radius": 0.01, "load": 10}, "zeta": [10, 100], "yield_stress": 3e8, "points": 51}"#,
+                "--ball-radius 0.01 --load 10 --zeta 10,100 --yield-stress 3e8 --points 51",
+            ),
+            (
+                r#"{"start": "cylinder", "cylinder": {"radius": 0.5, "load_per_length": 1e5}, "zeta": [1, 1000], "points": 31}"#,
+                "--cylinder-radius 0.5 --load-per-length 1e5 --zeta 1,1000 --points 31",
+            ),
+            (
+                r#"{"start": "flat", "peak_pressure": 1e7, "zeta": [10000], "yield_stress": 5e7, "tolerance": 1e-10, "points": 11}"#,
+                "--flat --pressure 1e7 --yield-stress 5e7 --tolerance 1e-10 --points 11",
+            ),
+        ] {
+            let d = scratch("phys");
+            let p = d.join("s.json");
+            std::fs::write(
+                &p,
+                format!(r#"{{"schema": 1, {example}, "outputs": {{"stress": {stress}}}}}"#),
+            )
+            .unwrap();
+            let sc = json(&["run", p.to_str().unwrap(), "--json"]);
+            let mut args = vec!["stress", "--example"];
+            args.extend(flags.split_whitespace());
+            args.push("--json");
+            let mut cli = json(&args);
+            assert_eq!(cli["warnings"], sc["warnings"], "{flags}");
+            assert_eq!(body(cli.take()), sc["stress"], "{flags}");
+        }
+        // The ball's smooth start: a = (3FR/(4E*))^(1/3), σH = 3F/(2πa²) (Johnson, Eqs. 4.22–4.24).
+        let v = json(&[
+            "stress",
+            "--example",
+            "--ball-radius",
+            "0.01",
+            "--load",
+            "10",
+            "--json",
+        ]);
+        let a = (3.0 * 10.0 * 0.01 / (4.0 * 1e9f64)).cbrt();
+        let sh = 3.0 * 10.0 / (2.0 * std::f64::consts::PI * a * a);
+        let rel = |x: &serde_json::Value, y: f64| (x.as_f64().unwrap() / y - 1.0).abs();
+        assert!(
+            rel(&v["contact_radius"], a) < 1e-14,
+            "{}",
+            v["contact_radius"]
+        );
+        assert!(
+            rel(&v["peak_pressure"], sh) < 1e-14,
+            "{}",
+            v["peak_pressure"]
+        );
+        assert!(rel(&v["nominal_pressure"], 2.0 * sh / 3.0) < 1e-14);
+        // Default ζ: full magnification q_s/q_l = 1e4.
+        assert_eq!(v["curves"][0]["zeta"], serde_json::json!(1e4));
     }
 
     #[test]

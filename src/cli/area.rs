@@ -3,7 +3,7 @@
 use persson::scene::{run, AreaOutput, TheoryName};
 
 use super::args::{measured_surface, pressures, MaterialArgs, MeasuredArgs, SpectrumArgs};
-use super::output::{print, Format};
+use super::output::{print_warned, Format};
 
 /// Arguments of `persson area`.
 #[derive(clap::Args, Debug)]
@@ -15,10 +15,10 @@ pub struct Args {
     #[command(flatten)]
     material: MaterialArgs,
     /// Nominal (mean) pressure σ0, same unit as E*; repeatable or comma-separated.
-    #[arg(long, value_delimiter = ',', allow_negative_numbers = true)]
+    #[arg(long, value_delimiter = ',', allow_negative_numbers = true, value_parser = super::args::number)]
     pressure: Vec<f64>,
     /// Magnification ζ (default q_s/q_l, full magnification).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_negative_numbers = true, value_parser = super::args::number)]
     zeta: Option<f64>,
     #[command(flatten)]
     theory: TheoryArgs,
@@ -36,14 +36,15 @@ pub struct TheoryArgs {
     #[arg(long, value_enum, default_value_t = TheoryName::Original)]
     pub theory: TheoryName,
     /// γ of the corrected theory (yang-persson and xu: [0.001, 1]; wang-muser: [0.02, 11/9]).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_negative_numbers = true, value_parser = super::args::number)]
     pub gamma: Option<f64>,
     /// Absolute tolerance on A/A0 of the corrected theories' solver.
     #[arg(
         long,
         alias = "theory-tolerance",
         default_value = "1e-12",
-        allow_negative_numbers = true
+        allow_negative_numbers = true,
+        value_parser = super::args::number,
     )]
     pub tolerance: f64,
 }
@@ -63,5 +64,5 @@ pub fn run(a: Args) -> anyhow::Result<()> {
     let report = run::area(&surface, &pressures, &out)?;
     #[cfg(feature = "plot")]
     a.plot.draw(|| persson::scene::plot::area(&report))?;
-    print(&report, &a.format)
+    print_warned(&report, &report.warnings, &a.format)
 }

@@ -13,7 +13,7 @@ use persson::table::Tabulate;
 
 pub use super::bem_args::{Args, SolverArgs};
 use super::bem_args::{Cmd, HertzArgs, RoughArgs};
-use super::output::print;
+use super::output::{print, print_warned};
 use super::progress::Progress;
 
 /// Run `persson bem`.
@@ -164,7 +164,9 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
             persson::io::write_atomic(path, t.to_csv().as_bytes())?;
         }
     }
-    print(&report, &a.format)
+    let mut warnings = a.spectrum.file_warnings();
+    warnings.extend(persson::warning::of_rough(&report));
+    print_warned(&report, &warnings, &a.format)
 }
 
 /// `dir/name.ext` → `dir/name_k.ext` when `k` is given.

@@ -6,15 +6,15 @@
 
 use persson::bem::Boundary;
 use persson::scene::SpectrumSpec;
-use persson::table::number;
 use persson::validation::{
     self, ComparisonConfig, KappaStudyConfig, SweepProgress, UserData, UserHistogram,
 };
 
 pub use super::compare_args::Args;
 use super::compare_args::{BemArgs, KappaArgs, MainArgs, Study};
-use super::output::print;
+use super::output::print_warned;
 use super::progress::Progress;
+use persson::Warning;
 
 /// Run `persson compare`.
 pub fn run(a: Args) -> anyhow::Result<()> {
@@ -24,18 +24,22 @@ pub fn run(a: Args) -> anyhow::Result<()> {
     }
 }
 
-/// Warn on stderr when q_s is clipped to what the coarsest grid resolves.
-fn warn_clipped(band: &validation::ResolvedBand, q_l: f64, coarsest: usize, bem: &BemArgs) {
-    if let (true, Some(q)) = (band.clipped, band.q_s_requested) {
-        eprintln!(
-            "warning: q_s = {} is not resolved by the coarsest grid ({}², {} pixels per wavelength); \
-             the theories and the BEM use q_s = {} (= {}·q_l)",
-            number(q, 6),
-            coarsest,
-            number(bem.pixels_per_wavelength, 6),
-            number(band.q_s, 6),
-            number(band.q_s / q_l, 6)
-        );
+/// The warning when q_s is clipped to what the coarsest grid resolves.
+fn warn_clipped(
+    band: &validation::ResolvedBand,
+    q_l: f64,
+    coarsest: usize,
+    bem: &BemArgs,
+) -> Option<Warning> {
+    match (band.clipped, band.q_s_requested) {
+        (true, Some(q)) => Some(Warning::ClippedBand {
+            q_s_requested: q,
+            q_s: band.q_s,
+            q_l,
+            grid: coarsest,
+            pixels_per_wavelength: bem.pixels_per_wavelength,
+        }),
+        _ => None,
     }
 }
 
@@ -81,6 +85,7 @@ fn compare(a: &MainArgs) -> anyhow::Result<()> {
     config.histogram_pressure = a.histogram_pressure;
     config.bins = a.bins;
     config.wide = a.wide;
+    let mut warnings = a.spectrum.file_warnings();
     let report = match &map {
         Some(m) => {
             let boundary = if m.periodic {
@@ -96,13 +101,9 @@ fn compare(a: &MainArgs) -> anyhow::Result<()> {
                 let q_l = spectrum.q_min();
                 let band = config.sweep.map_band(q_l, spectrum.q_max(), surface.n)?;
                 let coarsest = validation::resolution_grids(surface.n, config.sweep.levels)?[0];
-                warn_clipped(&band, q_l, coarsest, &a.bem);
+                warnings.extend(warn_clipped(&band, q_l, coarsest, &a.bem));
             } else {
-                eprintln!(
-                    "warning: the map is not periodic: its coarser copies are block averages, \
-                     each a smoother surface, so N → ∞ is a resolution trend, not a continuum \
-                     limit; trust the finest grid (the map as measured)"
-                );
+                warnings.push(Warning::MapNotPeriodic);
             }
             with_progress(|p| {
                 validation::compare_surface(spectrum.as_ref(), &surface, boundary, &config, p)
@@ -110,17 +111,17 @@ fn compare(a: &MainArgs) -> anyhow::Result<()> {
         }
         None => {
             let q_l = spectrum.q_min();
-            warn_clipped(
+            warnings.extend(warn_clipped(
                 &config.sweep.band(q_l, Some(spectrum.q_max()))?,
                 q_l,
                 config.sweep.grids()?[0],
                 &a.bem,
-            );
+            ));
             with_progress(|p| validation::compare(spectrum.as_ref(), &config, p))?
         }
     };
     super::compare_plot::comparison(a, &report)?;
-    print(&report, &a.format)
+    print_warned(&report, &warnings, &a.format)
 }
 
 fn kappa_study(a: &KappaArgs) -> anyhow::Result<()> {
@@ -135,13 +136,15 @@ fn kappa_study(a: &KappaArgs) -> anyhow::Result<()> {
         nominal_pressure: a.pressure.clone(),
         sweep: a.bem.settings()?,
     };
-    warn_clipped(
+    let warnings: Vec<Warning> = warn_clipped(
         &config.sweep.band(a.q_l, a.q_s)?,
         a.q_l,
         config.sweep.grids()?[0],
         &a.bem,
-    );
+    )
+    .into_iter()
+    .collect();
     let report = with_progress(|p| validation::kappa_study(&config, p))?;
     super::compare_plot::kappa(a, &report)?;
-    print(&report, &a.format)
+    print_warned(&report, &warnings, &a.format)
 }

@@ -3,7 +3,7 @@
 use persson::scene::run;
 
 use super::args::{pressures, surface, MaterialArgs, SpectrumArgs};
-use super::output::{print, Format};
+use super::output::{print_warned, Format};
 
 /// Arguments of `persson kappa`.
 #[derive(clap::Args, Debug)]
@@ -13,7 +13,7 @@ pub struct Args {
     #[command(flatten)]
     material: MaterialArgs,
     /// Nominal pressures: with a spectrum and material, print the linear contact fractions.
-    #[arg(long, value_delimiter = ',', allow_negative_numbers = true)]
+    #[arg(long, value_delimiter = ',', allow_negative_numbers = true, value_parser = super::args::number)]
     pressure: Vec<f64>,
     #[command(flatten)]
     format: Format,
@@ -28,5 +28,5 @@ pub fn run(a: Args) -> anyhow::Result<()> {
     } else {
         run::kappa(None)?
     };
-    print(&report, &a.format)
+    print_warned(&report, &report.warnings, &a.format)
 }

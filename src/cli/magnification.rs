@@ -4,7 +4,7 @@
 use persson::scene::{run, MagnificationOutput};
 
 use super::args::{measured_surface, MaterialArgs, MeasuredArgs, SpectrumArgs};
-use super::output::{print, Format};
+use super::output::{print_warned, Format};
 
 /// Arguments of `persson magnification`.
 #[derive(clap::Args, Debug)]
@@ -16,10 +16,10 @@ pub struct Args {
     #[command(flatten)]
     material: MaterialArgs,
     /// Nominal (mean) pressure σ0, same unit as E* (with --example: 1e7).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_negative_numbers = true, value_parser = super::args::number)]
     pressure: Option<f64>,
     /// Magnifications ζ ≥ 1 (comma-separated; default: --points values from 1 to q_s/q_l).
-    #[arg(long, value_delimiter = ',', allow_negative_numbers = true)]
+    #[arg(long, value_delimiter = ',', allow_negative_numbers = true, value_parser = super::args::number)]
     zeta: Vec<f64>,
     /// Number of log-spaced magnifications when --zeta is not given.
     #[arg(long, default_value_t = 21)]
@@ -60,5 +60,5 @@ pub fn run(a: Args) -> anyhow::Result<()> {
         a.plot.draw(|| plot::magnification_area(&report))?;
         plot_g.draw(|| plot::magnification_g(&report))?;
     }
-    print(&report, &a.format)
+    print_warned(&report, &report.warnings, &a.format)
 }

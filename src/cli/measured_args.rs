@@ -21,7 +21,8 @@ pub struct MeasuredArgs {
         long,
         requires = "surface",
         conflicts_with = "size",
-        allow_hyphen_values = true
+        allow_hyphen_values = true,
+        value_parser = super::args::number,
     )]
     pub pixel_size: Option<f64>,
     /// Physical size LX[,LY] of the --surface map, m (files that store it need none).
@@ -29,7 +30,8 @@ pub struct MeasuredArgs {
         long,
         requires = "surface",
         value_delimiter = ',',
-        allow_hyphen_values = true
+        allow_hyphen_values = true,
+        value_parser = super::args::number,
     )]
     pub size: Vec<f64>,
     /// Least-squares detrending of the --surface (default: plane, none if --periodic).

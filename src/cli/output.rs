@@ -5,6 +5,7 @@ use std::io::Write;
 
 use anyhow::Context;
 use persson::table::Tabulate;
+use persson::Warning;
 use serde::Serialize;
 
 /// How to print a report: text (default), `--json` or `--csv`.
@@ -18,13 +19,41 @@ pub struct Format {
     pub csv: bool,
 }
 
-/// Print a typed report in the chosen format: its JSON (`--json`), the CSV of
-/// its main table (`--csv`; the other tables are named on stderr), or every
-/// table as text.
+/// A report with the warnings of its calculation: its JSON is the report's
+/// with a top-level `"warnings"` array (empty when there are none).
+#[derive(Serialize)]
+pub struct Warned<'a, R: Serialize> {
+    #[serde(flatten)]
+    report: &'a R,
+    warnings: &'a [Warning],
+}
+
+impl<'a, R: Serialize> Warned<'a, R> {
+    /// The report and its warnings.
+    pub fn new(report: &'a R, warnings: &'a [Warning]) -> Self {
+        Warned { report, warnings }
+    }
+}
+
+/// Print a typed report in the chosen format, without warnings (see [`print_warned`]).
 pub fn print<R: Serialize + Tabulate>(report: &R, f: &Format) -> anyhow::Result<()> {
+    print_warned(report, &[], f)
+}
+
+/// Print each warning on stderr, then a typed report in the chosen format:
+/// its JSON with the warnings (`--json`), the CSV of its main table (`--csv`;
+/// the other tables are named on stderr), or every table as text.
+pub fn print_warned<R: Serialize + Tabulate>(
+    report: &R,
+    warnings: &[Warning],
+    f: &Format,
+) -> anyhow::Result<()> {
+    for w in warnings {
+        eprintln!("persson: warning: {w}");
+    }
     let mut out = std::io::stdout().lock();
     if f.json {
-        serde_json::to_writer_pretty(&mut out, report)?;
+        serde_json::to_writer_pretty(&mut out, &Warned::new(report, warnings))?;
         writeln!(out)?;
     } else {
         let tables = report.tables();

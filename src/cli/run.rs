@@ -6,7 +6,7 @@ use anyhow::Context;
 use persson::scene::Scene;
 use persson::table::Tabulate;
 
-use super::output::{print, Format};
+use super::output::{print_warned, Format, Warned};
 
 /// Arguments of `persson run`.
 #[derive(clap::Args, Debug)]
@@ -68,10 +68,16 @@ pub fn run(a: Args) -> anyhow::Result<()> {
     }
     if a.out.is_some() {
         let p = dir.join("report.json");
-        persson::io::write_atomic(&p, serde_json::to_string_pretty(&report)?.as_bytes())?;
+        persson::io::write_atomic(
+            &p,
+            serde_json::to_string_pretty(&Warned::new(&report, &report.warnings))?.as_bytes(),
+        )?;
         eprintln!("wrote {}", p.display());
     }
     if a.csv {
+        for w in &report.warnings {
+            eprintln!("persson: warning: {w}");
+        }
         return Ok(());
     }
     if !a.json {
@@ -79,8 +85,9 @@ pub fn run(a: Args) -> anyhow::Result<()> {
             println!("{text}\n");
         }
     }
-    print(
+    print_warned(
         &report,
+        &report.warnings,
         &Format {
             json: a.json,
             csv: false,

@@ -5,7 +5,7 @@
 use persson::scene::{run, SeparationOutput, TheoriesOutput};
 
 use super::args::{measured_surface, pressures, MaterialArgs, MeasuredArgs, SpectrumArgs};
-use super::output::{print, Format};
+use super::output::{print_warned, Format};
 
 /// Arguments of `persson separation`.
 #[derive(clap::Args, Debug)]
@@ -17,10 +17,10 @@ pub struct Args {
     #[command(flatten)]
     material: MaterialArgs,
     /// Nominal (mean) pressure σ0, same unit as E*; repeatable or comma-separated.
-    #[arg(long, value_delimiter = ',', allow_negative_numbers = true)]
+    #[arg(long, value_delimiter = ',', allow_negative_numbers = true, value_parser = super::args::number)]
     pressure: Vec<f64>,
     /// Relative tolerance of the wavevector integrals.
-    #[arg(long, default_value = "1e-10", allow_negative_numbers = true)]
+    #[arg(long, default_value = "1e-10", allow_negative_numbers = true, value_parser = super::args::number)]
     tolerance: f64,
     #[command(flatten)]
     format: Format,
@@ -70,7 +70,7 @@ pub fn run(a: Args) -> anyhow::Result<()> {
     }
     #[cfg(not(feature = "plot"))]
     let _ = TheoriesOutput::default();
-    print(&report, &a.format)
+    print_warned(&report, &report.warnings, &a.format)
 }
 
 /// `n` log-spaced pressures spanning the given ones (σ0/100 to 100 σ0 for one).

@@ -7,7 +7,7 @@ use std::path::PathBuf;
 use persson::scene::run;
 
 use super::args::{MeasuredArgs, SpectrumArgs};
-use super::output::{print, Format};
+use super::output::{print_warned, Format};
 
 /// Arguments of `persson spectrum`.
 #[derive(clap::Args, Debug)]
@@ -17,11 +17,11 @@ pub struct Args {
     #[command(flatten)]
     measured: MeasuredArgs,
     /// Lower end of the q range for the moments (default q_l), 1/m.
-    #[arg(long, allow_negative_numbers = true, conflicts_with = "surface")]
+    #[arg(long, allow_negative_numbers = true, conflicts_with = "surface", value_parser = super::args::number)]
     q_min: Option<f64>,
     /// Upper end of the q range for the moments (default q_s), 1/m; with
     /// --surface the upper end of the band (default the Nyquist wavevector π/Δ).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_negative_numbers = true, value_parser = super::args::number)]
     q_max: Option<f64>,
     /// Number of log-spaced q values in the C(q) table.
     #[arg(long, default_value_t = 11, conflicts_with = "surface")]
@@ -41,15 +41,25 @@ pub fn run(a: Args) -> anyhow::Result<()> {
     if let Some(map) = a.measured.spec(a.q_max)? {
         return measured(&a, &map);
     }
-    let s = a.spectrum.build()?;
-    let description = a
-        .spectrum
-        .is_example()
-        .then(|| persson::scene::EXAMPLE.to_string());
-    let report = run::spectrum(s.as_ref(), description, a.q_min, a.q_max, a.points)?;
+    let spec = a.spectrum.spec()?;
+    let s = spec.build().map_err(|e| a.spectrum.psd_hint(e))?;
+    let description = a.spectrum.is_example().then(|| {
+        let example = persson::scene::EXAMPLE;
+        if spec == persson::scene::SpectrumSpec::example() {
+            example.to_string()
+        } else {
+            format!("{example} (the given flags replace parts of it)")
+        }
+    });
+    let mut report = run::spectrum(s.as_ref(), description, a.q_min, a.q_max, a.points)?;
+    for w in run::spectrum_warnings(&spec, s.as_ref()) {
+        if !report.warnings.contains(&w) {
+            report.warnings.push(w);
+        }
+    }
     #[cfg(feature = "plot")]
     a.plot.draw(|| persson::scene::plot::spectrum(&report))?;
-    print(&report, &a.format)
+    print_warned(&report, &report.warnings, &a.format)
 }
 
 /// `--surface`: the analysis of the map, its CSV and plot.
@@ -65,7 +75,7 @@ fn measured(a: &Args, map: &persson::scene::HeightMapSpec) -> anyhow::Result<()>
     #[cfg(feature = "plot")]
     a.plot
         .draw(|| persson::scene::plot::measured_spectrum(&report))?;
-    print(&report, &a.format)
+    print_warned(&report, &[], &a.format)
 }
 
 /// Without the feature `topography`, `--surface` is an error.

@@ -142,16 +142,20 @@ impl Scene {
         if let Some(sp) = &o.spectrum {
             let s = self.spectrum()?;
             let example = self.spectrum == Some(SpectrumSpec::example());
-            report.spectrum = Some(
-                run::spectrum(
-                    s.as_ref(),
-                    example.then(|| EXAMPLE.to_string()),
-                    sp.q_min,
-                    sp.q_max,
-                    sp.points,
-                )
-                .map_err(|e| prefix("outputs.spectrum.", e))?,
-            );
+            let mut r = run::spectrum(
+                s.as_ref(),
+                example.then(|| EXAMPLE.to_string()),
+                sp.q_min,
+                sp.q_max,
+                sp.points,
+            )
+            .map_err(|e| prefix("outputs.spectrum.", e))?;
+            if let Some(spec) = &self.spectrum {
+                for w in run::spectrum_warnings(spec, s.as_ref()) {
+                    crate::warning::push(&mut r.warnings, Some(w));
+                }
+            }
+            report.spectrum = Some(r);
         }
         self.run_bem(&mut report)?;
         let with_surface = self.spectrum.is_some() && self.material.is_some();
@@ -173,7 +177,18 @@ impl Scene {
                 .map(|s| (s, self.nominal_pressure.as_slice()));
             report.kappa = Some(run::kappa(with)?);
         }
+        if let Some(SpectrumSpec::Tabulated {
+            file, convention, ..
+        }) = &self.spectrum
+        {
+            // Whatever output reads it (the BEM's synthesis too).
+            report.warnings.push(crate::Warning::PsdConvention {
+                file: file.clone(),
+                convention: convention.to_string(),
+            });
+        }
         let Some(surface) = surface else {
+            report.collect_warnings();
             return Ok(report);
         };
         if let Some(a) = &o.area {
@@ -192,6 +207,7 @@ impl Scene {
             report.stress =
                 Some(run::stress_physical(&surface, st).map_err(|e| prefix("outputs.stress.", e))?);
         }
+        report.collect_warnings();
         Ok(report)
     }
 

@@ -141,15 +141,16 @@ pub fn separation(r: &SeparationReport) -> Result<Figure> {
 /// None in practice.
 pub fn stress(r: &StressReport) -> Result<Figure> {
     // With a yield stress the legend gives A = A_el + A_pl.
+    let plastic = r.yield_stress.is_some() || r.yield_ratio.is_some();
     let plastic_note = |el: f64, pl: f64| {
-        if pl > 0.0 {
+        if plastic || pl > 0.0 {
             format!(" (A_el {}, A_pl {})", number(el, 3), number(pl, 3))
         } else {
             String::new()
         }
     };
     let (x, y) = if r.physical() {
-        ("normal stress σ (unit of E*)", "P(σ, ζ) (1/unit of E*)")
+        ("normal stress σ (Pa, or the unit of E*)", "P(σ, ζ) (1/Pa)")
     } else {
         ("normal stress σ/σH", "σH P(σ, ζ)")
     };
@@ -196,6 +197,28 @@ pub fn stress(r: &StressReport) -> Result<Figure> {
             .filter(|p| p.1.is_finite())
             .collect();
         fig.push(Series::new(label, pts, styles[i % styles.len()]));
+    }
+    // σY marked by a grey vertical line over the height of the curves (the
+    // plastic part A_pl/A0 is the δ at σ = σY, not drawn).
+    let at = match (r.yield_stress, r.yield_ratio) {
+        (Some(y), _) => Some((y, format!("σY = {}", number(y, 4)))),
+        (None, Some(y)) => Some((y, format!("σY/σH = {}", number(y, 4)))),
+        _ => None,
+    };
+    if let Some((y, label)) = at {
+        let top = r
+            .curves
+            .iter()
+            .flat_map(|c| c.density.iter().chain(&c.scaled_density))
+            .copied()
+            .filter(|p| p.is_finite())
+            .fold(0.0f64, f64::max);
+        if top > 0.0 {
+            fig.push(
+                Series::new(label, vec![(y, 0.0), (y, top)], Style::Dashed)
+                    .with_color(crate::plot::Rgb(128, 128, 128)),
+            );
+        }
     }
     Ok(fig)
 }

@@ -99,6 +99,10 @@ pub struct AreaReport {
     /// corrected theory).
     #[serde(skip)]
     pub original_contact_fraction: Vec<f64>,
+    /// Remarks on the input (never a change of a number); the CLI prints them
+    /// on stderr and in the top-level `warnings` of `--json`.
+    #[serde(skip)]
+    pub warnings: Vec<crate::warning::Warning>,
 }
 
 /// Significant digits that print every input as given (its shortest
@@ -190,6 +194,10 @@ pub struct MagnificationReport {
     pub zeta_max: f64,
     /// One point per magnification (original theory).
     pub points: Vec<AreaPoint>,
+    /// Remarks on the input (never a change of a number); the CLI prints them
+    /// on stderr and in the top-level `warnings` of `--json`.
+    #[serde(skip)]
+    pub warnings: Vec<crate::warning::Warning>,
 }
 
 impl Tabulate for MagnificationReport {
@@ -253,6 +261,10 @@ pub struct KappaReport {
     /// The linear fractions at the pressures (with a surface).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub points: Vec<LinearPoint>,
+    /// Remarks on the input (never a change of a number); the CLI prints them
+    /// on stderr and in the top-level `warnings` of `--json`.
+    #[serde(skip)]
+    pub warnings: Vec<crate::warning::Warning>,
 }
 
 impl Tabulate for KappaReport {
@@ -318,6 +330,10 @@ pub struct TheoriesReport {
     pub rms_slope: f64,
     /// One curve per theory.
     pub curves: Vec<TheoryCurve>,
+    /// Remarks on the input (never a change of a number); the CLI prints them
+    /// on stderr and in the top-level `warnings` of `--json`.
+    #[serde(skip)]
+    pub warnings: Vec<crate::warning::Warning>,
 }
 
 impl Tabulate for TheoriesReport {
@@ -391,6 +407,10 @@ pub struct SeparationReport {
     /// The curve for the figure (log-spaced pressures), when one is drawn.
     #[serde(skip)]
     pub plot_points: Vec<SeparationPoint>,
+    /// Remarks on the input (never a change of a number); the CLI prints them
+    /// on stderr and in the top-level `warnings` of `--json`.
+    #[serde(skip)]
+    pub warnings: Vec<crate::warning::Warning>,
 }
 
 fn relative(err: f64, value: f64) -> f64 {
@@ -502,6 +522,13 @@ pub struct StressReport {
     /// σH (pressure-unit curves).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub peak_pressure: Option<f64>,
+    /// σ0 = (σ0/σH) σH, the nominal mean pressure of the start (pressure-unit curves).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub nominal_pressure: Option<f64>,
+    /// Contact radius a (ball) or half-width a (cylinder) of the smooth
+    /// Hertz contact, m (pressure-unit curves of a ball or a cylinder).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub contact_radius: Option<f64>,
     /// σY/σH (dimensionless curves; absent: elastic).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub yield_ratio: Option<f64>,
@@ -510,6 +537,10 @@ pub struct StressReport {
     pub yield_stress: Option<f64>,
     /// One curve per G or ζ.
     pub curves: Vec<StressCurveReport>,
+    /// Remarks on the input (never a change of a number); the CLI prints them
+    /// on stderr and in the top-level `warnings` of `--json`.
+    #[serde(skip)]
+    pub warnings: Vec<crate::warning::Warning>,
 }
 
 impl StressReport {
@@ -554,6 +585,23 @@ impl Tabulate for StressReport {
                 .scalar("elastic_fraction", "A_el/A0", c.elastic_fraction)
                 .scalar("plastic_fraction", "A_pl/A0", c.plastic_fraction)
                 .scalar("error_bound", "error bound", c.error_bound);
+                if let Some(sh) = self.peak_pressure {
+                    t = t.scalar("peak_pressure", "σH", sh);
+                }
+                if let Some(s0) = self.nominal_pressure {
+                    t = t.scalar("nominal_pressure", "σ0", s0);
+                }
+                if let Some(a) = self.contact_radius {
+                    let label = if self.start == "cylinder" {
+                        "half-width a (m)"
+                    } else {
+                        "contact radius a (m)"
+                    };
+                    t = t.scalar("contact_radius", label, a);
+                }
+                if let Some(y) = self.yield_stress {
+                    t = t.scalar("yield_stress", "σY", y);
+                }
                 if let Some(tau) = c.tau {
                     t = t.scalar("tau", "τ = (σ0/σH)² G", tau);
                 }
@@ -686,6 +734,10 @@ pub struct SpectrumReport {
     /// C(q) on a fine grid, for the figure.
     #[serde(skip)]
     pub curve: Vec<SpectrumPoint>,
+    /// Remarks on the input (never a change of a number); the CLI prints them
+    /// on stderr and in the top-level `warnings` of `--json`.
+    #[serde(skip)]
+    pub warnings: Vec<crate::warning::Warning>,
 }
 
 /// A power law fitted to C(q).
@@ -783,6 +835,36 @@ pub struct SceneReport {
     /// FFT-BEM Hertz convergence.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub bem_hertz: Option<BemHertzReport>,
+    /// Remarks on the input (never a change of a number); the CLI prints them
+    /// on stderr and in the top-level `warnings` of `--json`.
+    #[serde(skip)]
+    pub warnings: Vec<crate::warning::Warning>,
+}
+
+impl SceneReport {
+    /// Gather the warnings of every output into the scene's, once each.
+    pub(crate) fn collect_warnings(&mut self) {
+        let lists = [
+            self.spectrum.as_ref().map(|r| &r.warnings),
+            self.kappa.as_ref().map(|r| &r.warnings),
+            self.area.as_ref().map(|r| &r.warnings),
+            self.magnification.as_ref().map(|r| &r.warnings),
+            self.theories.as_ref().map(|r| &r.warnings),
+            self.separation.as_ref().map(|r| &r.warnings),
+            self.stress.as_ref().map(|r| &r.warnings),
+        ];
+        let mut all = std::mem::take(&mut self.warnings);
+        for w in lists.into_iter().flatten().flatten() {
+            crate::warning::push(&mut all, Some(w.clone()));
+        }
+        #[cfg(feature = "bem")]
+        if let Some(r) = &self.bem {
+            for w in crate::warning::of_rough(r) {
+                crate::warning::push(&mut all, Some(w));
+            }
+        }
+        self.warnings = all;
+    }
 }
 
 impl Tabulate for SceneReport {

@@ -9,6 +9,7 @@ use crate::separation::Separation;
 use crate::spectrum::Spectrum;
 use crate::stress::{HertzContact, Solver, Start, StressScene};
 use crate::theory::{log_zetas, Persson};
+use crate::warning::{self, Warning};
 
 use super::report::*;
 use super::schema::*;
@@ -23,6 +24,9 @@ pub struct Surface {
     pub breaks: Vec<f64>,
     /// What the surface is (the built-in example says so), shown in titles.
     pub description: Option<String>,
+    /// Remarks on the spectrum (its file's convention, a steep slope), passed
+    /// on to every report of this surface.
+    pub warnings: Vec<Warning>,
 }
 
 impl Surface {
@@ -49,12 +53,27 @@ impl Surface {
             && *material == MaterialSpec::example())
         .then(|| EXAMPLE.to_string())
         .or(measured);
+        let warnings = spectrum_warnings(spectrum, s.as_ref());
         Ok(Surface {
             spectrum: s,
             contact_modulus: m.contact_modulus(),
             breaks: spectrum.breaks(),
             description,
+            warnings,
         })
+    }
+
+    /// The surface's warnings with those of the nominal pressures and the
+    /// magnifications of one output.
+    fn warnings(&self, pressures: &[f64], zetas: &[f64]) -> Vec<Warning> {
+        let mut w = self.warnings.clone();
+        warning::push(
+            &mut w,
+            Warning::high_pressure(pressures, self.contact_modulus),
+        );
+        let zeta_max = self.spectrum.q_max() / self.spectrum.q_min();
+        warning::push(&mut w, Warning::zeta_beyond_band(zetas, zeta_max));
+        w
     }
 
     fn model(&self) -> Result<Persson<'_>> {
@@ -89,6 +108,7 @@ pub fn area(surface: &Surface, pressures: &[f64], out: &AreaOutput) -> Result<Ar
     let original = out.theory == TheoryName::Original;
     let (q_l, q_s) = surface.band();
     Ok(AreaReport {
+        warnings: surface.warnings(pressures, &[zeta]),
         surface: surface.description.clone(),
         contact_modulus: surface.contact_modulus,
         rms_height: surface.spectrum.rms_height(q_l, q_s)?.value,
@@ -115,11 +135,13 @@ pub fn area(surface: &Surface, pressures: &[f64], out: &AreaOutput) -> Result<Ar
 pub fn magnification(surface: &Surface, out: &MagnificationOutput) -> Result<MagnificationReport> {
     let model = surface.model()?;
     let zeta = if out.zeta.is_empty() {
+        check_points(out.points)?;
         log_zetas(model.zeta_max(), out.points)
     } else {
         out.zeta.clone()
     };
     Ok(MagnificationReport {
+        warnings: surface.warnings(&[out.nominal_pressure], &zeta),
         surface: surface.description.clone(),
         nominal_pressure: out.nominal_pressure,
         contact_modulus: surface.contact_modulus,
@@ -139,8 +161,10 @@ pub fn kappa(surface: Option<(&Surface, &[f64])>) -> Result<KappaReport> {
         kappa_persson: Kappa::Persson.value(),
         rms_slope: None,
         points: vec![],
+        warnings: vec![],
     };
     if let Some((s, pressures)) = surface {
+        r.warnings = s.warnings(pressures, &[]);
         let (q_l, q_s) = s.band();
         let slope = s.spectrum.rms_slope(q_l, q_s)?.value;
         r.rms_slope = Some(slope);
@@ -199,6 +223,7 @@ pub fn theories(
         })
         .collect::<Result<Vec<_>>>()?;
     Ok(TheoriesReport {
+        warnings: surface.warnings(pressures, &[zeta]),
         contact_modulus: surface.contact_modulus,
         zeta,
         rms_slope: model.slope_variance(zeta)?.value.sqrt(),
@@ -234,6 +259,7 @@ pub fn separation(
     let full = model.full_contact_energy()?;
     let (q_l, q_s) = surface.band();
     Ok(SeparationReport {
+        warnings: surface.warnings(pressures, &[]),
         surface: surface.description.clone(),
         contact_modulus: surface.contact_modulus,
         rms_height: surface.spectrum.rms_height(q_l, q_s)?.value,
@@ -272,6 +298,9 @@ pub fn stress_dimensionless(
             "outputs.stress.g (dimensionless) or outputs.stress.zeta (pressure unit)",
         ));
     }
+    if sigma_ratio.is_empty() {
+        check_points(points)?;
+    }
     let curves = g
         .iter()
         .map(|&g| {
@@ -306,9 +335,12 @@ pub fn stress_dimensionless(
         start: start.name().into(),
         mean_ratio: start.mean_ratio(),
         peak_pressure: None,
+        nominal_pressure: None,
+        contact_radius: None,
         yield_ratio,
         yield_stress: None,
         curves,
+        warnings: vec![],
     })
 }
 
@@ -317,24 +349,31 @@ pub fn stress_dimensionless(
 /// # Errors
 /// Inconsistent start and contact; as [`StressScene::curves`].
 pub fn stress_physical(surface: &Surface, out: &StressOutput) -> Result<StressReport> {
+    check_points(out.points)?;
+    if out.zeta.is_empty() {
+        return Err(required("zeta (a non-empty list of magnifications)"));
+    }
     let model = surface.model()?;
     let e_star = surface.contact_modulus;
     let start = Start::from(out.start);
-    let problem = match (&out.ball, &out.cylinder, out.peak_pressure) {
-        (Some(b), None, None) if out.start == StartName::Hertz => StressScene::hertz(
-            &HertzContact::ball(b.radius, b.load, e_star)?,
-            out.yield_stress,
-        ),
-        (None, Some(c), None) if out.start == StartName::Cylinder => StressScene::hertz(
-            &HertzContact::cylinder(c.radius, c.load_per_length, e_star)?,
-            out.yield_stress,
-        ),
-        (None, None, Some(p)) => StressScene::new(start.clone(), p, out.yield_stress),
+    let contact = match (&out.ball, &out.cylinder, out.peak_pressure) {
+        (Some(b), None, None) if out.start == StartName::Hertz => {
+            Some(HertzContact::ball(b.radius, b.load, e_star)?)
+        }
+        (None, Some(c), None) if out.start == StartName::Cylinder => {
+            Some(HertzContact::cylinder(c.radius, c.load_per_length, e_star)?)
+        }
+        (None, None, Some(_)) => None,
         _ => {
             return Err(required(
                 "exactly one of peak_pressure, ball (start hertz), cylinder (start cylinder)",
             ))
         }
+    };
+    let problem = match (&contact, out.peak_pressure) {
+        (Some(c), _) => StressScene::hertz(c, out.yield_stress),
+        (None, Some(p)) => StressScene::new(start.clone(), p, out.yield_stress),
+        (None, None) => Err(required("peak_pressure, ball or cylinder")),
     }?;
     // σ from 0 to σY, or (elastic) to σH plus four standard deviations
     // √(2G) σ0 of the widest curve.
@@ -345,7 +384,7 @@ pub fn stress_physical(surface: &Surface, out: &StressOutput) -> Result<StressRe
     let top = out
         .yield_stress
         .unwrap_or(problem.peak_pressure + 4.0 * (2.0 * g_max).sqrt() * problem.nominal_pressure());
-    let n = out.points.max(2);
+    let n = out.points;
     let sigma: Vec<f64> = (0..n).map(|i| top * i as f64 / (n - 1) as f64).collect();
     let curves = problem
         .curves(&model, &out.zeta, &sigma, out.tolerance)?
@@ -373,9 +412,12 @@ pub fn stress_physical(surface: &Surface, out: &StressOutput) -> Result<StressRe
         start: out.start.name().into(),
         mean_ratio: start.mean_ratio(),
         peak_pressure: Some(problem.peak_pressure),
+        nominal_pressure: Some(problem.nominal_pressure()),
+        contact_radius: contact.map(|c| c.contact_radius),
         yield_ratio: None,
         yield_stress: out.yield_stress,
         curves,
+        warnings: surface.warnings(&[problem.nominal_pressure()], &out.zeta),
     })
 }
 
@@ -391,6 +433,7 @@ pub fn spectrum(
     q_max: Option<f64>,
     points: usize,
 ) -> Result<SpectrumReport> {
+    check_points(points)?;
     let lo = check::positive("q_min", q_min.unwrap_or(s.q_min()))?;
     let hi = check::positive("q_max", q_max.unwrap_or(s.q_max()))?;
     if hi <= lo {
@@ -417,7 +460,7 @@ pub fn spectrum(
         .map(|p| (p.q, p.c))
         .collect();
     let fit = crate::spectrum::fit_power_law(&upper)?;
-    let n = points.max(2);
+    let n = points;
     let table = (0..n)
         .map(|i| {
             let q = if i + 1 == n {
@@ -449,7 +492,48 @@ pub fn spectrum(
         },
         table,
         curve,
+        warnings: Warning::steep_slope(m.value).into_iter().collect(),
     })
+}
+
+/// The warnings a spectrum gives whatever is computed from it: the
+/// normalisation a spectrum file was read in (and a C(q) that rises, as a
+/// height profile would), and an rms slope over the band above 1.
+pub fn spectrum_warnings(spec: &SpectrumSpec, s: &dyn Spectrum) -> Vec<Warning> {
+    let mut w = Vec::new();
+    if let SpectrumSpec::Tabulated {
+        file, convention, ..
+    } = spec
+    {
+        w.push(Warning::PsdConvention {
+            file: file.clone(),
+            convention: convention.to_string(),
+        });
+        let (c_first, c_last) = (s.c(s.q_min()), s.c(s.q_max()));
+        if c_last >= c_first {
+            w.push(Warning::RisingSpectrum {
+                file: file.clone(),
+                c_first,
+                c_last,
+            });
+        }
+    }
+    if let Ok(m) = s.rms_slope(s.q_min(), s.q_max()) {
+        warning::push(&mut w, Warning::steep_slope(m.value));
+    }
+    w
+}
+
+/// A number of points of a curve or table: at least 2 (its two ends).
+fn check_points(points: usize) -> Result<usize> {
+    if points < 2 {
+        return Err(Error::invalid(
+            "points",
+            points as f64,
+            "an integer >= 2 (the curve's two ends)",
+        ));
+    }
+    Ok(points)
 }
 
 /// Prefix the parameter name of an error with its section.
