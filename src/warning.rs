@@ -254,6 +254,23 @@ impl Serialize for Warning {
     }
 }
 
+/// A report with the warnings of its calculation, serialised as the report
+/// with a top-level `"warnings"` array (empty when there are none): the shape
+/// of the `persson` binary's `--json` output and of the Python package's dicts.
+#[derive(Serialize)]
+pub struct Warned<'a, R: Serialize> {
+    #[serde(flatten)]
+    report: &'a R,
+    warnings: &'a [Warning],
+}
+
+impl<'a, R: Serialize> Warned<'a, R> {
+    /// The report and its warnings.
+    pub fn new(report: &'a R, warnings: &'a [Warning]) -> Self {
+        Warned { report, warnings }
+    }
+}
+
 /// The warnings of an FFT-BEM rough contact: a synthesised surface
 /// band-limited by its grid, pressures above 0.1 E*, a surface steeper than 1.
 #[cfg(feature = "bem")]

@@ -271,8 +271,10 @@ def bem_hertz(
     contact_radius: Optional[float] = None,
     tolerance: float = 1e-10,
     max_iterations: int = 10000,
+    yield_stress: Optional[float] = None,
+    grids: Optional[Sequence[int]] = None,
 ) -> Report:
-    """`persson bem hertz --json`."""
+    """`persson bem hertz --json`; with `yield_stress`, `bem hertz --yield-stress` on `grids`."""
 def compare(
     spectrum: Spectrum,
     modulus: float,
@@ -293,5 +295,6 @@ def compare(
     histogram_pressure: Optional[float] = None,
     data: Optional[PathLike] = None,
     data_histogram: Optional[PathLike] = None,
+    yield_stress: Optional[float] = None,
 ) -> Report:
-    """`persson compare --json`."""
+    """`persson compare --json` (with `yield_stress`: `compare --yield-stress`)."""

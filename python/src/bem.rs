@@ -4,7 +4,7 @@
 
 use std::path::{Path, PathBuf};
 
-use persson::bem::hertz::HertzCase;
+use persson::bem::hertz::{self, HertzCase};
 use persson::bem::rough::{self, RoughOptions, SurfaceSource};
 use persson::bem::surface::{synthesize as synth, Surface};
 use persson::bem::{check_memory, Boundary, Control, Operator, Options, Solver};
@@ -16,7 +16,7 @@ use pyo3::types::PyDict;
 
 use crate::arrays::{float_list, floats, map, square};
 use crate::spectrum::Spectrum;
-use crate::{err, name, to_dict, value_error};
+use crate::{err, name, to_dict, to_dict_warned, value_error};
 
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(synthesize, m)?)?;
@@ -194,14 +194,19 @@ fn bem_rough<'py>(
         }
     }
     .map_err(err)?;
-    to_dict(py, &r)
+    to_dict_warned(py, &r, &persson::warning::of_rough(&r))
 }
 
 /// `persson bem hertz --json`: the BEM against the Hertz closed form (a
 /// ball of radius `radius` on a grid of side `size`, load from the contact
 /// radius, default 0.1 L): energy-norm error η, contact radius and peak pressure.
+///
+/// With `yield_stress` σY (unit of `modulus`): `persson bem hertz --yield-stress
+/// --json`, the plastic disc (pressure capped at σY) on each of `grids`
+/// (default `[grid]`): its radius and convergence, the fractions and the
+/// plastic displacement.
 #[pyfunction]
-#[pyo3(signature = (*, grid=256, boundary="free", size=1.0, radius=1.0, modulus=1.0, contact_radius=None, tolerance=1e-10, max_iterations=10_000))]
+#[pyo3(signature = (*, grid=256, boundary="free", size=1.0, radius=1.0, modulus=1.0, contact_radius=None, tolerance=1e-10, max_iterations=10_000, yield_stress=None, grids=None))]
 #[allow(clippy::too_many_arguments)]
 fn bem_hertz<'py>(
     py: Python<'py>,
@@ -213,7 +218,15 @@ fn bem_hertz<'py>(
     contact_radius: Option<f64>,
     tolerance: f64,
     max_iterations: usize,
+    yield_stress: Option<f64>,
+    grids: Option<Vec<usize>>,
 ) -> PyResult<Bound<'py, PyAny>> {
+    let grids = grids.unwrap_or_else(|| vec![grid]);
+    if yield_stress.is_none() && grids != [grid] {
+        return Err(value_error(
+            "grids: a list of grids only with yield_stress (give grid without it)",
+        ));
+    }
     let case = HertzCase {
         grid,
         boundary: self::boundary(boundary)?,
@@ -223,6 +236,16 @@ fn bem_hertz<'py>(
         contact_radius: contact_radius.unwrap_or(0.1 * size),
     };
     let opts = options(tolerance, max_iterations, None)?;
+    if let Some(y) = yield_stress {
+        let case = HertzCase {
+            grid: grids.first().copied().unwrap_or(grid),
+            ..case
+        };
+        let r = py
+            .detach(|| hertz::plastic_disc(&case, &grids, y, &opts, &mut |_, _| {}))
+            .map_err(err)?;
+        return to_dict(py, &r);
+    }
     let r = py
         .detach(|| validation::hertz(&case, &opts, &mut |_| {}))
         .map_err(err)?;
@@ -238,8 +261,11 @@ fn bem_hertz<'py>(
 /// that map and its coarser copies instead (as `compare --surface`; a
 /// `periodic` map on a periodic half-space, otherwise a free one), the
 /// theories on `spectrum` (e.g. `Spectrum.from_height_map` of the same map).
+/// With `yield_stress` σY (unit of `modulus`, above every pressure): the
+/// saturated BEM against Persson's finite-σY P(σ), A_el and A_pl, as
+/// `compare --yield-stress`.
 #[pyfunction]
-#[pyo3(signature = (spectrum, modulus, pressure=None, *, heights=None, size=None, periodic=false, grid=256, levels=validation::DEFAULT_LEVELS, seeds=1, seed=1, alpha=Some(validation::DEFAULT_ALPHA), pixels_per_wavelength=validation::DEFAULT_PIXELS_PER_WAVELENGTH, tolerance=1e-10, max_iterations=10_000, bins=40, histogram_pressure=None, data=None, data_histogram=None))]
+#[pyo3(signature = (spectrum, modulus, pressure=None, *, heights=None, size=None, periodic=false, grid=256, levels=validation::DEFAULT_LEVELS, seeds=1, seed=1, alpha=Some(validation::DEFAULT_ALPHA), pixels_per_wavelength=validation::DEFAULT_PIXELS_PER_WAVELENGTH, tolerance=1e-10, max_iterations=10_000, bins=40, histogram_pressure=None, data=None, data_histogram=None, yield_stress=None))]
 #[allow(clippy::too_many_arguments)]
 fn compare<'py>(
     py: Python<'py>,
@@ -261,6 +287,7 @@ fn compare<'py>(
     histogram_pressure: Option<f64>,
     data: Option<PathBuf>,
     data_histogram: Option<PathBuf>,
+    yield_stress: Option<f64>,
 ) -> PyResult<Bound<'py, PyAny>> {
     if seeds < 1 {
         return Err(value_error("seeds: must be at least 1"));
@@ -276,7 +303,7 @@ fn compare<'py>(
         seeds: (0..seeds as u64).map(|k| seed + k).collect(),
         alpha,
         pixels_per_wavelength,
-        options: options(tolerance, max_iterations, None)?,
+        options: options(tolerance, max_iterations, yield_stress)?,
     };
     config.data = data
         .as_deref()

@@ -42,6 +42,22 @@ pub(crate) fn to_dict<'py, T: Serialize>(
     py.import("json")?.call_method1("loads", (text,))
 }
 
+/// A report with warnings as the dict of the CLI's `--json` (its top-level
+/// `"warnings"` list), each warning also raised as a Python `UserWarning`
+/// (the CLI's `persson: warning:` line on stderr).
+pub(crate) fn to_dict_warned<'py, T: Serialize>(
+    py: Python<'py>,
+    report: &T,
+    warnings: &[persson::Warning],
+) -> PyResult<Bound<'py, PyAny>> {
+    let category = py.get_type::<pyo3::exceptions::PyUserWarning>();
+    for w in warnings {
+        let text = std::ffi::CString::new(w.to_string()).map_err(|e| value_error(e.to_string()))?;
+        PyErr::warn(py, category.as_any(), &text, 2)?;
+    }
+    to_dict(py, &persson::warning::Warned::new(report, warnings))
+}
+
 /// A value of a closed set (theory, boundary, start, convention, detrend,
 /// window) spelled as on the command line; a `ValueError` naming `arg` and
 /// the allowed values otherwise.

@@ -15,7 +15,7 @@ use pyo3::types::PyDict;
 
 use crate::arrays::float_list;
 use crate::spectrum::Spectrum;
-use crate::{err, name, to_dict, value_error};
+use crate::{err, name, to_dict_warned, value_error};
 
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(area, m)?)?;
@@ -57,7 +57,7 @@ fn area<'py>(
     let r = py
         .detach(|| run::area(&surface, &pressures, &out))
         .map_err(err)?;
-    to_dict(py, &r)
+    to_dict_warned(py, &r, &r.warnings)
 }
 
 /// `persson magnification --json`: G(ζ) and A/A0 against magnification at
@@ -86,7 +86,7 @@ fn magnification<'py>(
     let r = py
         .detach(|| run::magnification(&surface, &out))
         .map_err(err)?;
-    to_dict(py, &r)
+    to_dict_warned(py, &r, &r.warnings)
 }
 
 /// `persson kappa --json`: κ of Bush and of Persson and, with a spectrum,
@@ -112,7 +112,7 @@ fn kappa_report<'py>(
         _ => return Err(value_error("spectrum and modulus: give both or neither")),
     }
     .map_err(err)?;
-    to_dict(py, &r)
+    to_dict_warned(py, &r, &r.warnings)
 }
 
 /// `persson theories --json`: A/A0 against load for every theory (or the
@@ -149,7 +149,7 @@ fn theories<'py>(
     let r = py
         .detach(|| run::theories(&surface, &pressures, &out))
         .map_err(err)?;
-    to_dict(py, &r)
+    to_dict_warned(py, &r, &r.warnings)
 }
 
 /// `persson separation --json`: the mean interfacial separation ū, the
@@ -172,7 +172,7 @@ fn separation<'py>(
     let r = py
         .detach(|| run::separation(&surface, &pressures, &out, &[]))
         .map_err(err)?;
-    to_dict(py, &r)
+    to_dict_warned(py, &r, &r.warnings)
 }
 
 /// The mean separation ū (m), stiffness K (Pa/m, unit of E* per m) and
@@ -264,7 +264,7 @@ fn stress<'py>(
     let r = py
         .detach(|| run::stress_dimensionless(&start, &g, yield_ratio, tolerance, &sigma, points))
         .map_err(err)?;
-    to_dict(py, &r)
+    to_dict_warned(py, &r, &r.warnings)
 }
 
 /// The stress distribution P(σ) in the pressure unit (1/unit of σ) at the
@@ -308,7 +308,7 @@ fn stress_physical<'py>(
     let r = py
         .detach(|| run::stress_physical(&surface, &out))
         .map_err(err)?;
-    to_dict(py, &r)
+    to_dict_warned(py, &r, &r.warnings)
 }
 
 /// `persson run SCENE --json`: run a scene given as a path to its JSON file
@@ -331,5 +331,5 @@ fn run_scene<'py>(py: Python<'py>, scene: &Bound<'py, PyAny>) -> PyResult<Bound<
     }
     .map_err(err)?;
     let r = py.detach(|| parsed.run()).map_err(err)?;
-    to_dict(py, &r)
+    to_dict_warned(py, &r, &r.warnings)
 }

@@ -14,7 +14,7 @@ use persson::{Estimate, Result};
 use pyo3::prelude::*;
 
 use crate::arrays::{floats, map, output};
-use crate::{err, name, to_dict, value_error};
+use crate::{err, name, to_dict, to_dict_warned, value_error};
 
 /// A spectrum shared between Python objects and the library's reports.
 #[derive(Clone)]
@@ -58,6 +58,9 @@ pub struct Spectrum {
     pub description: Option<String>,
     /// How to build it again (pickling, for multiprocessing and Dask).
     pub recipe: Recipe,
+    /// Remarks on the spectrum (a file's convention, a slope above 1), as
+    /// the CLI's for the same spectrum; passed on to every report.
+    pub warnings: Vec<persson::Warning>,
 }
 
 /// What rebuilds a spectrum exactly: a self-affine spec (as scene JSON) or
@@ -71,17 +74,30 @@ pub enum Recipe {
 impl Spectrum {
     fn tabulated_spectrum(t: Tabulated, description: Option<String>) -> Self {
         let points = t.points().collect();
+        let warnings = t
+            .rms_slope(t.q_min(), t.q_max())
+            .ok()
+            .and_then(|m| persson::Warning::steep_slope(m.value))
+            .into_iter()
+            .collect();
         Spectrum {
             shared: Shared(Arc::new(t)),
             breaks: vec![],
             description,
             recipe: Recipe::Points(points),
+            warnings,
         }
     }
 }
 
 impl Spectrum {
     fn from_spec(spec: &SpectrumSpec) -> PyResult<Self> {
+        let mut s = Self::from_spec_quiet(spec)?;
+        s.warnings = persson::scene::run::spectrum_warnings(spec, &s.shared);
+        Ok(s)
+    }
+
+    fn from_spec_quiet(spec: &SpectrumSpec) -> PyResult<Self> {
         match spec {
             SpectrumSpec::SelfAffine { .. } => {
                 let (s, description) = spec.build_described().map_err(err)?;
@@ -92,6 +108,7 @@ impl Spectrum {
                     recipe: Recipe::SelfAffine(
                         serde_json::to_string(spec).map_err(|e| value_error(e.to_string()))?,
                     ),
+                    warnings: vec![],
                 })
             }
             // As SpectrumSpec::build, keeping the concrete Tabulated.
@@ -119,6 +136,7 @@ impl Spectrum {
             contact_modulus,
             breaks: self.breaks.clone(),
             description: self.description.clone(),
+            warnings: self.warnings.clone(),
         })
     }
 
@@ -509,7 +527,13 @@ impl Spectrum {
             points,
         )
         .map_err(err)?;
-        to_dict(py, &r)
+        let mut warnings = r.warnings.clone();
+        for w in &self.warnings {
+            if !warnings.contains(w) {
+                warnings.push(w.clone());
+            }
+        }
+        to_dict_warned(py, &r, &warnings)
     }
 
     /// Pickling (multiprocessing, Dask): the spectrum is rebuilt from its

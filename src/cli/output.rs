@@ -5,6 +5,7 @@ use std::io::Write;
 
 use anyhow::Context;
 use persson::table::Tabulate;
+use persson::warning::Warned;
 use persson::Warning;
 use serde::Serialize;
 
@@ -17,22 +18,6 @@ pub struct Format {
     /// Print the table as CSV on stdout.
     #[arg(long)]
     pub csv: bool,
-}
-
-/// A report with the warnings of its calculation: its JSON is the report's
-/// with a top-level `"warnings"` array (empty when there are none).
-#[derive(Serialize)]
-pub struct Warned<'a, R: Serialize> {
-    #[serde(flatten)]
-    report: &'a R,
-    warnings: &'a [Warning],
-}
-
-impl<'a, R: Serialize> Warned<'a, R> {
-    /// The report and its warnings.
-    pub fn new(report: &'a R, warnings: &'a [Warning]) -> Self {
-        Warned { report, warnings }
-    }
 }
 
 /// Print a typed report in the chosen format, without warnings (see [`print_warned`]).

@@ -6,7 +6,8 @@ use anyhow::Context;
 use persson::scene::Scene;
 use persson::table::Tabulate;
 
-use super::output::{print_warned, Format, Warned};
+use super::output::{print_warned, Format};
+use persson::warning::Warned;
 
 /// Arguments of `persson run`.
 #[derive(clap::Args, Debug)]
