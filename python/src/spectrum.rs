@@ -197,26 +197,10 @@ fn analysis(
 
 fn measured(a: topo::Analysis, what: &str) -> PyResult<Spectrum> {
     let s = a.psd.to_tabulated().map_err(err)?;
-    Ok(Spectrum::tabulated_spectrum(s, Some(describe(what, &a))))
-}
-
-/// What the spectrum of a measured surface assumed, in the words of the
-/// CLI's titles (the library's `scene::measured::describe`, which is private).
-fn describe(what: &str, a: &topo::Analysis) -> String {
-    use persson::table::number;
-    let pixel: Vec<String> = a.pixel_size.iter().map(|d| number(*d, 6)).collect();
-    format!(
-        "measured surface {} ({} × {} points, pixel {} m, {}; detrend {}, window {}; band q = {} … {} 1/m)",
-        what,
-        a.shape[0],
-        a.shape[1],
-        pixel.join(" × "),
-        if a.periodic { "periodic" } else { "not periodic" },
-        a.detrend.name(),
-        a.window.name(),
-        number(a.q_min, 6),
-        number(a.q_max, 6),
-    )
+    Ok(Spectrum::tabulated_spectrum(
+        s,
+        Some(persson::scene::describe(std::path::Path::new(what), &a)),
+    ))
 }
 
 /// The map's sides from its pixel size, as the file readers compute them

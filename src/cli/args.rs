@@ -8,6 +8,7 @@ use anyhow::bail;
 use persson::scene::{ConventionName, MaterialSpec, SpectrumSpec, Surface, EXAMPLE};
 
 pub use super::measured_args::MeasuredArgs;
+#[cfg(feature = "bem")]
 use persson::spectrum::Spectrum;
 use persson::Material;
 
@@ -150,6 +151,7 @@ impl SpectrumArgs {
     }
 
     /// Build the spectrum from the flags.
+    #[cfg(feature = "bem")]
     pub fn build(&self) -> anyhow::Result<Box<dyn Spectrum>> {
         self.spec()?.build().map_err(|e| self.psd_hint(e))
     }

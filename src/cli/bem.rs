@@ -24,8 +24,8 @@ pub fn run(a: Args) -> anyhow::Result<()> {
                 (_, Some(y)) => return plastic_disc(&h, y),
                 ([n], None) => *n,
                 (_, None) => anyhow::bail!(
-                    "--grid {:?}: one grid side without --yield-stress (a list only with --yield-stress)",
-                    h.grid
+                    "--grid {}: one grid side without --yield-stress (a list only with --yield-stress)",
+                    h.grid.iter().map(usize::to_string).collect::<Vec<_>>().join(",")
                 ),
             };
             let case = hertz_case(&h, grid);

@@ -6,8 +6,10 @@ use crate::error::{Error, Result};
 use crate::spectrum::{Spectrum, Tabulated};
 
 use super::schema::HeightMapSpec;
+#[cfg(any(feature = "bem", feature = "topography"))]
+use super::schema::Sides;
 #[cfg(feature = "topography")]
-use super::schema::{DetrendName, Sides, WindowName};
+use super::schema::{DetrendName, WindowName};
 
 #[cfg(feature = "topography")]
 use crate::topography::{self as topo, Analysis, AnalysisOptions, Detrend, Topography, Window};

@@ -38,6 +38,8 @@ pub mod report;
 pub mod run;
 pub mod schema;
 
+#[cfg(feature = "topography")]
+pub use measured::describe;
 pub use report::*;
 pub use run::Surface;
 pub use schema::*;

@@ -227,6 +227,7 @@ pub fn stress(r: &StressReport) -> Result<Figure> {
 ///
 /// # Errors
 /// An inconsistent report.
+#[cfg(feature = "bem")]
 pub fn bem(r: &crate::bem::rough::RoughReport) -> Result<Figure> {
     let p: Vec<f64> = r.points.iter().map(|x| x.nominal_pressure).collect();
     let a: Vec<f64> = r.points.iter().map(|x| x.contact_fraction).collect();
