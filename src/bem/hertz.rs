@@ -507,8 +507,8 @@ impl Tabulate for PlasticDiscReport {
         .column("contact_fraction", "A/A0")
         .column("elastic_fraction", "A_el/A0")
         .column("plastic_fraction", "A_pl/A0")
-        .column("plastic_displacement_mean", "mean plastic displacement")
-        .column("plastic_displacement_max", "max plastic displacement")
+        .column("plastic_displacement_mean", "u_pl mean")
+        .column("plastic_displacement_max", "u_pl max")
         .column("iterations", "iterations")
         .column_digits("residual", "residual", 2)
         .column_digits("seconds", "time (s)", 3);

@@ -472,8 +472,8 @@ impl Tabulate for RoughReport {
             t = t
                 .column("elastic_fraction", "A_el/A0")
                 .column("plastic_fraction", "A_pl/A0")
-                .column("plastic_displacement_mean", "mean plastic displacement")
-                .column("plastic_displacement_max", "max plastic displacement");
+                .column("plastic_displacement_mean", "u_pl mean")
+                .column("plastic_displacement_max", "u_pl max");
         }
         for p in &self.points {
             let mut row: Vec<Cell> = vec![
