@@ -506,3 +506,41 @@ fn stalled_saturated_solves_finish_by_projected_gradient() {
         assert!(s.plastic_fraction > 0.0 && s.elastic_fraction > 0.0);
     }
 }
+
+/// With σY just above σ0 (rough) or far below p₀ (Hertz) nearly the whole
+/// load sits at σY and the plastic set alone carried too little: ε was 0
+/// (no free node) and the solve stopped with the load short (14 % carried at
+/// σY = 1.05 σ0, 54 % for the Hertz ball at σY = 0.31 p₀). The load is a
+/// stopping condition now: Σp/N² = σ0, the KKT conditions hold, and
+/// A/A0 ≥ σ0/σY (no contact at p ≤ σY carries σ0 on less).
+#[test]
+fn nearly_all_plastic_contact_carries_the_load() {
+    let n = 32;
+    let h = rough(n, 1);
+    for (pm, y) in [(0.002, 0.0021), (0.002, 0.0022), (0.002, 0.003)] {
+        let s = solve(
+            Boundary::Periodic,
+            &h,
+            n,
+            Control::MeanPressure(pm),
+            Some(y),
+        );
+        check_kkt(&s, y, rms(&h));
+        assert!((s.mean_pressure - pm).abs() <= LOAD_REL_TOL * pm, "σY = {y}");
+        assert!(s.contact_fraction >= pm / y, "σY = {y}: A/A0 = {}", s.contact_fraction);
+    }
+    let case = hertz::HertzCase::new(64, Boundary::Free);
+    let pm = case.mean_pressure();
+    for y in [0.02, 0.01] {
+        let mut solver = Solver::new(
+            Operator::new(case.boundary, case.grid, case.size, case.e_star).unwrap(),
+        );
+        let s = solver
+            .solve(&case.heights(), Control::MeanPressure(pm), &opts(Some(y)))
+            .unwrap();
+        assert!((s.mean_pressure - pm).abs() <= LOAD_REL_TOL * pm, "σY = {y}");
+        assert!(s.contact_fraction >= pm / y, "σY = {y}: A/A0 = {}", s.contact_fraction);
+        let sum: f64 = s.pressure.iter().sum::<f64>() / s.pressure.len() as f64;
+        assert!((sum - pm).abs() <= LOAD_REL_TOL * pm);
+    }
+}

@@ -47,7 +47,8 @@
 //! ```
 //! the elastic solver's measure on the free set plus the violation at the
 //! plastic nodes; a solve stops when ε ≤ `tolerance` and no node at `p = 0`
-//! overlaps by more than `tolerance · σ_h`, and fails with
+//! overlaps by more than `tolerance · σ_h` and (load control) |Σp − N² p̄| ≤
+//! `tolerance` · N² p̄; it fails with
 //! [`Error::NotConverged`] (with ε) after `max_iterations` iterations (both
 //! stages together).
 //!
@@ -141,7 +142,13 @@ pub(super) fn solve(
             residual: eps,
             contact_fraction: contact as f64 / n2 as f64,
         });
-        if eps <= opts.tolerance && off_min >= -opts.tolerance * sigma_h {
+        // Under load control the load must be carried too: with every
+        // contact node at σY, ε is 0 whatever the load they carry.
+        let load_error = target.map_or(0.0, |total| (total - sum_p).abs() / total);
+        if eps <= opts.tolerance
+            && off_min >= -opts.tolerance * sigma_h
+            && load_error <= opts.tolerance
+        {
             break (eps, g_bar);
         }
         if k >= opts.max_iterations {
@@ -191,6 +198,17 @@ pub(super) fn solve(
                     }
                 }
                 project_load(&mut p, y, total);
+                conjugate = false;
+                k += 1;
+                continue;
+            }
+            if missing > 0.0 {
+                // No node overlaps the level of the plastic set: the body
+                // must move in. The nodes off the contact enter in the order
+                // they would touch (smallest gap first), each with σY until
+                // the load is carried; the last one takes the remainder and
+                // is the free set the conjugate gradient starts from.
+                fill_nearest(&mut p, &g, y, missing);
                 conjugate = false;
                 k += 1;
                 continue;
@@ -309,6 +327,21 @@ pub(super) fn solve(
         residual,
         seconds: start.elapsed().as_secs_f64(),
     })
+}
+
+/// Give the `missing` load to the nodes off the contact (p = 0) in the
+/// order of their gap, σY each, the last one the remainder.
+fn fill_nearest(p: &mut [f64], g: &[f64], y: f64, missing: f64) {
+    let mut off: Vec<usize> = (0..p.len()).filter(|&i| p[i] <= 0.0).collect();
+    off.sort_by(|&a, &b| g[a].total_cmp(&g[b]));
+    let mut left = missing;
+    for i in off {
+        if left <= 0.0 {
+            break;
+        }
+        p[i] = left.min(y);
+        left -= p[i];
+    }
 }
 
 /// Iterations of the conjugate gradient without a 10 % drop of ε after which
