@@ -62,9 +62,10 @@ fn map_marks_every_plastic_node_and_labels_the_peak() {
     let svg = render_map_svg_string(&fig).unwrap();
     assert!(svg.starts_with("<svg"));
     assert!(
-        svg.contains(&format!("{PRESSURE_LABEL} (unit of E*)")),
-        "colour bar label"
+        svg.contains(&format!("{PRESSURE_LABEL} (E*)")),
+        "colour bar label (E* = 1: pressures in units of E*)"
     );
+
     let label = format!(
         "δ-peak at σY = {}: A_pl/A0 = {}",
         number(y, 4),

@@ -526,20 +526,33 @@ fn nearly_all_plastic_contact_carries_the_load() {
             Some(y),
         );
         check_kkt(&s, y, rms(&h));
-        assert!((s.mean_pressure - pm).abs() <= LOAD_REL_TOL * pm, "σY = {y}");
-        assert!(s.contact_fraction >= pm / y, "σY = {y}: A/A0 = {}", s.contact_fraction);
+        assert!(
+            (s.mean_pressure - pm).abs() <= LOAD_REL_TOL * pm,
+            "σY = {y}"
+        );
+        assert!(
+            s.contact_fraction >= pm / y,
+            "σY = {y}: A/A0 = {}",
+            s.contact_fraction
+        );
     }
     let case = hertz::HertzCase::new(64, Boundary::Free);
     let pm = case.mean_pressure();
     for y in [0.02, 0.01] {
-        let mut solver = Solver::new(
-            Operator::new(case.boundary, case.grid, case.size, case.e_star).unwrap(),
-        );
+        let mut solver =
+            Solver::new(Operator::new(case.boundary, case.grid, case.size, case.e_star).unwrap());
         let s = solver
             .solve(&case.heights(), Control::MeanPressure(pm), &opts(Some(y)))
             .unwrap();
-        assert!((s.mean_pressure - pm).abs() <= LOAD_REL_TOL * pm, "σY = {y}");
-        assert!(s.contact_fraction >= pm / y, "σY = {y}: A/A0 = {}", s.contact_fraction);
+        assert!(
+            (s.mean_pressure - pm).abs() <= LOAD_REL_TOL * pm,
+            "σY = {y}"
+        );
+        assert!(
+            s.contact_fraction >= pm / y,
+            "σY = {y}: A/A0 = {}",
+            s.contact_fraction
+        );
         let sum: f64 = s.pressure.iter().sum::<f64>() / s.pressure.len() as f64;
         assert!((sum - pm).abs() <= LOAD_REL_TOL * pm);
     }

@@ -192,6 +192,8 @@ fn draw_map<DB: DrawingBackend>(
         .x_desc(format!("x ({})", f.length_unit))
         .y_desc(format!("y ({})", f.length_unit))
         .label_style(font(12.0, k))
+        .x_label_formatter(&|v| tick(*v))
+        .y_label_formatter(&|v| tick(*v))
         .axis_desc_style(font(14.0, k))
         .x_labels(5)
         .y_labels(5)
@@ -222,6 +224,7 @@ fn draw_map<DB: DrawingBackend>(
         .disable_x_axis()
         .y_desc(format!("{PRESSURE_LABEL} ({})", f.pressure_unit))
         .label_style(font(12.0, k))
+        .y_label_formatter(&|v| tick(*v))
         .axis_desc_style(font(14.0, k))
         .y_labels(6)
         .draw()?;
@@ -263,6 +266,8 @@ fn draw_map<DB: DrawingBackend>(
         .x_desc(format!("σ ({})", f.pressure_unit))
         .y_desc(format!("P(σ) (1/{})", f.pressure_unit))
         .label_style(font(12.0, k))
+        .x_label_formatter(&|v| tick(*v))
+        .y_label_formatter(&|v| tick(*v))
         .axis_desc_style(font(14.0, k))
         .x_labels(6)
         .y_labels(6)
@@ -408,8 +413,10 @@ pub fn rough_map(r: &crate::bem::rough::RoughReport) -> Result<MapFigure> {
         title,
         grid: n,
         side: r.size,
-        length_unit: "unit of L".into(),
-        pressure_unit: "unit of E*".into(),
+        // SI (README, Conventions): lengths in m; pressures in Pa, or in
+        // units of E* when E* = 1.
+        length_unit: "m".into(),
+        pressure_unit: if r.contact_modulus == 1.0 { "E*" } else { "Pa" }.into(),
         pressure: map.pressure.clone(),
         yield_stress: r.yield_stress,
         bins: bins
@@ -419,4 +426,10 @@ pub fn rough_map(r: &crate::bem::rough::RoughReport) -> Result<MapFigure> {
         plastic_fraction,
         size: MAP_SIZE,
     })
+}
+
+/// A tick label in the tables' number style (`1e8`, `0.0125`, `2.5e-9`):
+/// plotters' default prints `100000000.0` and rounds 1e-8 to `0.0`.
+fn tick(v: f64) -> String {
+    crate::table::number(v, 3)
 }

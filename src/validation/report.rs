@@ -473,9 +473,17 @@ impl Tabulate for Comparison {
             theory.push(row);
         }
 
+        // With a yield stress the BEM is the saturated one (0 ≤ p ≤ σY): say
+        // so where its A/A0 and κ stand beside the elastic theories.
+        let saturated = self
+            .yield_stress
+            .map(|y| format!(", saturated (σY = {})", number(y, 6)))
+            .unwrap_or_default();
         let mut bem = Table::new(
             "area_bem",
-            "Contact area A/A0 of the FFT-BEM and its continuum limit (Campañá & Müser 2007)",
+            format!(
+                "Contact area A/A0 of the FFT-BEM{saturated} and its continuum limit (Campañá & Müser 2007)"
+            ),
         )
         .scalar("grids", "grids", self.grid_list().as_str())
         .scalar("size", "L", self.size)
@@ -515,8 +523,13 @@ impl Tabulate for Comparison {
         let mut kappa = Table::new(
             "kappa",
             format!(
-                "κ of A/A0 = κ σ0/(E* h'_rms), fitted where A/A0 < {}",
-                number(self.kappa.max_fraction, 6)
+                "κ of A/A0 = κ σ0/(E* h'_rms), fitted where A/A0 < {}{}",
+                number(self.kappa.max_fraction, 6),
+                if saturated.is_empty() {
+                    String::new()
+                } else {
+                    format!(" (BEM rows{saturated})")
+                }
             ),
         )
         .column("source", "source")
