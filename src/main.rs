@@ -50,10 +50,26 @@ fn usage_error(e: &clap::Error) -> ExitCode {
     match usage {
         Some(usage) => eprintln!("{usage} (more: --help)"),
         None => {
-            let sub = std::env::args()
+            // The (sub)subcommand: `bem rough`, `report accuracy`, `compare kappa`.
+            let words: Vec<String> = std::env::args()
                 .skip(1)
-                .find(|a| !a.starts_with('-'))
-                .map_or(String::new(), |s| format!("{s} "));
+                .take_while(|a| !a.starts_with('-'))
+                .take(2)
+                .collect();
+            let depth = match words.as_slice() {
+                [a, b]
+                    if matches!(
+                        (a.as_str(), b.as_str()),
+                        ("bem", "hertz" | "rough")
+                            | ("report", "accuracy" | "stability")
+                            | ("compare", "kappa")
+                    ) =>
+                {
+                    2
+                }
+                _ => words.len().min(1),
+            };
+            let sub: String = words[..depth].iter().map(|w| format!("{w} ")).collect();
             eprintln!("Usage: persson {sub}--help");
         }
     }

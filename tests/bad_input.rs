@@ -111,6 +111,10 @@ fn cases() -> Vec<(String, String)> {
         ("stress --start hertz --g 1 --tolerance 0".into(), "tol"),
         (format!("stress --table {} --g 1", file("p0neg.csv", b"0,0\n0.5,-1\n1,2\n")), "table"),
         (format!("stress --table {} --g 1", file("p0norm.csv", b"0,0\n1,5\n")), "table"),
+        // A ball's --load with a cylinder (and the cylinder's load with a ball)
+        // names the conflict, not a list of "required" flags of the other body.
+        ("stress --example --cylinder-radius 0.01 --load 10".into(), "'--load <LOAD>'"),
+        ("stress --example --ball-radius 0.01 --load-per-length 10".into(), "'--load-per-length"),
         // --points below 2 (issue 15), wherever a number of points exists
         ("stress --start hertz --g 0.6 --points 0".into(), "invalid points = 0: must be an integer >= 2"),
         ("stress --start hertz --g 0.6 --points 1".into(), "invalid points = 1"),
@@ -196,4 +200,34 @@ fn every_bad_input_exits_2_with_a_named_one_line_error() {
         cases.len(),
         failures.join("\n")
     );
+}
+
+/// The usage hint after a parse error names the subcommand that was run,
+/// two words deep (`bem rough`, `compare kappa`), not only its first word.
+#[test]
+fn usage_hint_names_the_subcommand() {
+    for (args, hint) in [
+        (
+            &["bem", "rough", "--grid", "x"][..],
+            "Usage: persson bem rough --help",
+        ),
+        (
+            &["compare", "kappa", "--levels", "x"][..],
+            "Usage: persson compare kappa --help",
+        ),
+        (
+            &["area", "--pressure", "x"][..],
+            "Usage: persson area --help",
+        ),
+    ] {
+        let out = Command::new(env!("CARGO_BIN_EXE_persson"))
+            .args(args)
+            .env("RUST_BACKTRACE", "0")
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.starts_with("persson: error: "), "{args:?}: {err}");
+        assert_eq!(err.lines().nth(1), Some(hint), "{args:?}: {err}");
+    }
 }

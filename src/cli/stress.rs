@@ -70,15 +70,17 @@ pub struct Args {
     #[arg(long, requires = "load", allow_negative_numbers = true, value_parser = super::args::number,
           conflicts_with_all = ["cylinder_radius", "flat", "peak_pressure"])]
     ball_radius: Option<f64>,
-    /// Load F on the ball, N.
-    #[arg(long, requires = "ball_radius", allow_negative_numbers = true, value_parser = super::args::number)]
+    /// Load F on the ball, N (a cylinder takes --load-per-length, N/m).
+    #[arg(long, requires = "ball_radius", allow_negative_numbers = true, value_parser = super::args::number,
+          conflicts_with_all = ["cylinder_radius", "flat", "peak_pressure"])]
     load: Option<f64>,
     /// Physical mode: a Hertz cylinder of radius R (m), with --load-per-length F' (N/m).
     #[arg(long, requires = "load_per_length", allow_negative_numbers = true, value_parser = super::args::number,
           conflicts_with_all = ["flat", "peak_pressure"])]
     cylinder_radius: Option<f64>,
-    /// Load per unit length F' on the cylinder, N/m.
-    #[arg(long, requires = "cylinder_radius", allow_negative_numbers = true, value_parser = super::args::number)]
+    /// Load per unit length F' on the cylinder, N/m (a ball takes --load, N).
+    #[arg(long, requires = "cylinder_radius", allow_negative_numbers = true, value_parser = super::args::number,
+          conflicts_with_all = ["ball_radius", "flat", "peak_pressure"])]
     load_per_length: Option<f64>,
     /// Physical mode: a flat punch (uniform start) at the nominal pressure --pressure σ0 (Pa).
     #[arg(long, requires = "pressure", conflicts_with = "peak_pressure")]
