@@ -29,7 +29,7 @@ use super::kernel::{Boundary, Operator};
 use super::solver::{Control, Iteration, Options, Solver};
 use crate::error::{check, Error, Result};
 use crate::reference;
-use crate::table::{number, Table, Tabulate};
+use crate::table::{Table, Tabulate};
 
 /// Hertz contact radius `a = (3FR/(4E*))^{1/3}` (unit of R); see
 /// [`crate::reference::Ball`].
@@ -484,14 +484,12 @@ impl Tabulate for PlasticDiscReport {
         let mut t = Table::new(
             "bem_hertz_plastic",
             format!(
-                "Hertz ball with a yield stress (FFT-BEM, {} boundary, a_H = {}, R = {}, E* = {}): \
-                 plastic disc p = σY of radius c",
+                "Hertz ball with a yield stress (FFT-BEM, {} boundary): plastic disc p = σY of radius c",
                 self.boundary.name(),
-                number(self.hertz_contact_radius, 6),
-                number(self.radius, 6),
-                number(self.contact_modulus, 6)
             ),
         )
+        .scalar("radius", "R", self.radius)
+        .scalar("contact_modulus", "E*", self.contact_modulus)
         .scalar("yield_stress", "σY", self.yield_stress)
         .scalar("yield_ratio", "σY/p₀_H", self.yield_ratio)
         .scalar("hertz_peak_pressure", "p₀_H", self.hertz_peak_pressure)
@@ -500,9 +498,8 @@ impl Tabulate for PlasticDiscReport {
         .scalar("tolerance", "tolerance ε", self.tolerance)
         .column("grid", "N")
         .column_digits("plastic_radius_ratio", "c/a_H", 5)
-        .column("plastic_radius", "c")
-        .column_digits("plastic_radius_change", "c − c(previous N)", 2)
-        .column("contact_radius", "contact radius")
+        .column_digits("plastic_radius_change", "Δc (previous N)", 2)
+        .column("contact_radius", "a")
         .column("approach", "δ")
         .column("contact_fraction", "A/A0")
         .column("elastic_fraction", "A_el/A0")
@@ -516,7 +513,6 @@ impl Tabulate for PlasticDiscReport {
             t.push(vec![
                 r.grid.into(),
                 r.plastic_radius_ratio.into(),
-                r.plastic_radius.into(),
                 r.plastic_radius_change.into(),
                 r.contact_radius.into(),
                 r.approach.into(),
