@@ -133,7 +133,8 @@ pub trait Observer {
 impl Observer for () {}
 
 /// Solve the contact of `surface` at each nominal pressure, in the given
-/// order, on one solver (warm start as `options.solver.warm_start`).
+/// order, along one [`LoadPath`](super::LoadPath): each solve starts from the
+/// previous solution when `options.solver.warm_start`.
 ///
 /// # Errors
 /// No pressure, a pressure not finite and positive, `bins == Some(0)`;
@@ -158,11 +159,13 @@ pub fn solve(
     check_memory(surface.n, options.boundary)?;
     let op = Operator::new(options.boundary, surface.n, surface.size, contact_modulus)?;
     let mut solver = Solver::new(op);
+    let mut path = solver
+        .load_path(&surface.heights)
+        .warm(options.solver.warm_start);
     let total = pressures.len();
     let mut points = Vec::with_capacity(total);
     for (index, &p) in pressures.iter().enumerate() {
-        let sol = solver.solve_observed(
-            &surface.heights,
+        let sol = path.solve_observed(
             Control::MeanPressure(p),
             &options.solver,
             &mut |iteration| {

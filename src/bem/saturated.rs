@@ -16,9 +16,11 @@
 //! The problem is convex (𝒢 is positive definite), so the solution is unique.
 //!
 //! # Algorithm
-//! First the elastic problem is solved by [`Solver`]'s Polonsky–Keer
-//! conjugate gradient; if its largest pressure is ≤ σY it is the saturated
-//! solution too (returned as it is: bit for bit the elastic answer).
+//! First the elastic problem is solved by the solver's method
+//! ([`super::Method`]: preconditioned by default, see
+//! [`super::preconditioned`]); if its largest pressure is ≤ σY it is the
+//! saturated solution too (returned as it is: bit for bit the elastic
+//! answer).
 //! Otherwise, starting from the elastic pressure clipped at σY, the
 //! Polonsky–Keer conjugate gradient (Polonsky & Keer 1999) runs on the free
 //! set `{0 < p < σY}` with the box projection of the bound-constrained
@@ -68,20 +70,19 @@
 
 use std::time::Instant;
 
-use super::solver::{Control, Iteration, Options, Solution, Solver};
+use super::elastic;
+use super::kernel::Operator;
+use super::problem::{Control, Method, Options, Problem};
+use super::solution::{Iteration, Solution};
+use super::workspace::{Displacement, Finish, Workspace};
 use crate::error::{check, Error, Result};
 
-/// Solve with the yield stress `y` (called by [`Solver::solve_observed`]
-/// when `opts.yield_stress` is set).
-pub(super) fn solve(
-    solver: &mut Solver,
-    heights: &[f64],
-    control: Control,
-    y: f64,
-    opts: &Options,
-    observer: &mut dyn FnMut(Iteration),
-) -> Result<Solution> {
-    let start = Instant::now();
+/// Check a yield stress: finite and > 0, and above the mean pressure under
+/// load control.
+///
+/// # Errors
+/// [`Error::InvalidParameter`] naming `yield_stress`.
+pub(crate) fn check_yield_stress(y: f64, control: Control) -> Result<f64> {
     check::positive("yield_stress", y)?;
     if let Control::MeanPressure(pm) = control {
         if pm.is_finite() && pm > 0.0 && y <= pm {
@@ -94,169 +95,229 @@ pub(super) fn solve(
             ));
         }
     }
-    let mut sol = solver.solve_elastic(heights, control, opts, observer)?;
+    Ok(y)
+}
+
+/// Solve `problem` with the yield stress `y` (validated by the caller):
+/// the elastic solve by `method`, then the saturated stage if needed.
+///
+/// # Errors
+/// [`Error::NotConverged`] after `opts.max_iterations` iterations in all.
+pub(crate) fn solve(
+    problem: &Problem,
+    ws: &mut Workspace,
+    y: f64,
+    opts: &Options,
+    method: Method,
+    observer: &mut dyn FnMut(Iteration),
+) -> Result<Solution> {
+    let start = Instant::now();
+    let mut sol = elastic::solve(problem, ws, opts, method, observer)?;
     if sol.pressure.iter().all(|&p| p <= y) {
         // The elastic solution satisfies the bound: it is the saturated one.
         sol.seconds = start.elapsed().as_secs_f64();
         return Ok(sol);
     }
-    let n = solver.op.n();
-    let n2 = n * n;
-    let h_max = heights.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-    let h_mean = heights.iter().sum::<f64>() / n2 as f64;
-    let sigma_h =
-        (heights.iter().map(|h| (h - h_mean).powi(2)).sum::<f64>() / (n2 as f64 - 1.0)).sqrt();
-    let (target, offset) = match control {
-        Control::MeanPressure(pm) => (Some(pm * n2 as f64), h_max),
-        Control::Penetration(d) => (None, h_max - d),
-    };
-    let stiffness = solver.op.e_star() * std::f64::consts::PI * n as f64 / solver.op.size();
-
-    let mut p = std::mem::take(&mut sol.pressure);
-    p.iter_mut().for_each(|v| *v = v.min(y));
-    if let Some(total) = target {
-        project_load(&mut p, y, total);
-    }
-    let mut g = std::mem::take(&mut sol.gap);
-    let mut r = std::mem::take(&mut sol.displacement);
-    let mut t = vec![0.0; n2];
-    let mut k = sol.iterations;
-    let mut conjugate = false;
-    let mut g_old = 1.0;
-    let (mut best, mut stalled) = (f64::INFINITY, 0usize);
+    let (k0, fallback) = (sol.iterations, sol.fallback);
+    // The workspace keeps the elastic pressure; the solution's fields go.
+    drop(sol);
+    let mut run = Run::new(problem, ws, y, k0);
     let (residual, g_bar) = loop {
-        solver.op.apply(&p, &mut r)?;
-        for ((g, u), h) in g.iter_mut().zip(&r).zip(heights) {
-            *g = u - (h - offset);
-        }
-        let Measure {
-            eps,
-            g_bar,
-            off_min,
-            nf,
-            sum_p,
-        } = measure(&p, &g, y, target.is_some(), sigma_h);
-        let contact = p.iter().filter(|&&v| v > 0.0).count();
-        observer(Iteration {
-            iteration: k,
-            residual: eps,
-            contact_fraction: contact as f64 / n2 as f64,
-        });
+        run.gap(problem, ws)?;
+        let m = run.measure(problem, ws, observer);
         // Under load control the load must be carried too: with every
         // contact node at σY, ε is 0 whatever the load they carry.
-        let load_error = target.map_or(0.0, |total| (total - sum_p).abs() / total);
-        if eps <= opts.tolerance
-            && off_min >= -opts.tolerance * sigma_h
+        let load_error = run
+            .target
+            .map_or(0.0, |total| (total - m.sum_p).abs() / total);
+        if m.eps <= opts.tolerance
+            && m.off_min >= -opts.tolerance * problem.sigma_h()
             && load_error <= opts.tolerance
         {
-            break (eps, g_bar);
+            break (m.eps, m.g_bar);
         }
-        if k >= opts.max_iterations {
+        if run.k >= opts.max_iterations {
             return Err(Error::NotConverged {
                 what: "saturated Polonsky–Keer contact solver (yield stress)".into(),
-                iterations: k,
-                residual: eps,
+                iterations: run.k,
+                residual: m.eps,
                 tolerance: opts.tolerance,
             });
         }
-        // A cycle of active sets (seen on 0.3 % of random 32²–128² cases)
-        // makes no progress: finish with the projected gradient, which
-        // cannot cycle.
-        if eps < 0.9 * best {
-            best = eps;
-            stalled = 0;
-        } else {
-            stalled += 1;
-        }
-        if stalled >= STALL_ITERATIONS {
-            projected_gradient(
-                solver, heights, offset, y, target, sigma_h, opts, &mut k, &mut p, &mut g, &mut r,
-                observer,
-            )?;
-            stalled = 0;
-            best = f64::INFINITY;
-            conjugate = false;
+        if run.stalled(m.eps) {
+            // A cycle of active sets (seen on 0.3 % of random 32²–128²
+            // cases) makes no progress: finish with the projected
+            // gradient, which cannot cycle.
+            projected_gradient(problem, ws, y, opts, &mut run.k, observer)?;
+            run.conjugate = false;
             continue;
         }
-        if let (Some(total), 0) = (target, nf) {
-            // Every contact node is at σY and they carry less than the load:
-            // the free set is empty, so no step exists. The overlapping nodes enter with the missing
-            // load shared in proportion to their overlap (a step from the
-            // stiffest mode would overshoot them all to σY, and scaling
-            // back would empty the plastic set: a cycle of two states).
-            let missing = total - sum_p;
-            let weight: f64 = p
-                .iter()
-                .zip(&g)
-                .filter(|(&pk, &gk)| pk <= 0.0 && gk < g_bar)
-                .map(|(_, &gk)| g_bar - gk)
-                .sum();
-            if missing > 0.0 && weight > 0.0 {
-                for (pk, &gk) in p.iter_mut().zip(&g) {
-                    if *pk <= 0.0 && gk < g_bar {
-                        *pk = (missing * (g_bar - gk) / weight).min(y);
-                    }
-                }
-                project_load(&mut p, y, total);
-                conjugate = false;
-                k += 1;
-                continue;
-            }
-            if missing > 0.0 {
-                // No node overlaps the level of the plastic set: the body
-                // must move in. The nodes off the contact enter in the order
-                // they would touch (smallest gap first), each with σY until
-                // the load is carried; the last one takes the remainder and
-                // is the free set the conjugate gradient starts from.
-                fill_nearest(&mut p, &g, y, missing);
-                conjugate = false;
-                k += 1;
-                continue;
-            }
+        if run.refill(ws, &m) {
+            continue;
         }
+        run.cg_step(problem, ws, &m)?;
+    };
+    let mut done = run.finish(ws, g_bar);
+    done.approach = match problem.target_total() {
+        Some(_) => g_bar,
+        None => problem.penetration(),
+    };
+    done.residual = residual;
+    done.seconds = start.elapsed().as_secs_f64();
+    let mut sol = ws.finish(problem, done);
+    sol.fallback = fallback;
+    Ok(sol)
+}
+
+/// The saturated stage's state.
+struct Run {
+    y: f64,
+    target: Option<f64>,
+    k: usize,
+    conjugate: bool,
+    g_old: f64,
+    best: f64,
+    stalled: usize,
+}
+
+impl Run {
+    /// Start from the elastic pressure in the workspace, clipped at σY and
+    /// put back on the load.
+    fn new(problem: &Problem, ws: &mut Workspace, y: f64, k0: usize) -> Self {
+        let target = problem.target_total();
+        let f = ws.fields();
+        f.pressure.iter_mut().for_each(|v| *v = v.min(y));
+        if let Some(total) = target {
+            project_load(f.pressure, y, total);
+        }
+        f.direction.fill(0.0);
+        Run {
+            y,
+            target,
+            k: k0,
+            conjugate: false,
+            g_old: 1.0,
+            best: f64::INFINITY,
+            stalled: 0,
+        }
+    }
+
+    /// `r = 𝒢p` and the gap `g = r − (h − o)`, fresh every iteration.
+    fn gap(&self, problem: &Problem, ws: &mut Workspace) -> Result<()> {
+        let f = ws.fields();
+        displacement_and_gap(f.op, f.pressure, f.response, f.gap, problem)
+    }
+
+    /// ε and the sums of the state, reported to the observer.
+    fn measure(
+        &self,
+        problem: &Problem,
+        ws: &mut Workspace,
+        observer: &mut dyn FnMut(Iteration),
+    ) -> Measure {
+        let f = ws.fields();
+        let (p, g) = (&*f.pressure, &*f.gap);
+        let m = measure(p, g, self.y, self.target.is_some(), problem.sigma_h());
+        let contact = p.iter().filter(|&&v| v > 0.0).count();
+        observer(Iteration {
+            iteration: self.k,
+            residual: m.eps,
+            contact_fraction: contact as f64 / p.len() as f64,
+        });
+        m
+    }
+
+    /// No 10 % drop of ε in [`STALL_ITERATIONS`] iterations (counted here).
+    fn stalled(&mut self, eps: f64) -> bool {
+        if eps < 0.9 * self.best {
+            self.best = eps;
+            self.stalled = 0;
+        } else {
+            self.stalled += 1;
+        }
+        if self.stalled >= STALL_ITERATIONS {
+            self.stalled = 0;
+            self.best = f64::INFINITY;
+            return true;
+        }
+        false
+    }
+
+    /// Every contact node is at σY and they carry less than the load: the
+    /// free set is empty, so no step exists. New nodes take the missing
+    /// load; true if a step of this kind was taken.
+    fn refill(&mut self, ws: &mut Workspace, m: &Measure) -> bool {
+        let (Some(total), 0) = (self.target, m.nf) else {
+            return false;
+        };
+        let (y, g_bar) = (self.y, m.g_bar);
+        let f = ws.fields();
+        let (p, g) = (f.pressure, &*f.gap);
+        let missing = total - m.sum_p;
+        // The overlapping nodes enter with the missing load shared in
+        // proportion to their overlap (a step from the stiffest mode would
+        // overshoot them all to σY, and scaling back would empty the
+        // plastic set: a cycle of two states).
+        let weight: f64 = p
+            .iter()
+            .zip(g)
+            .filter(|(&pk, &gk)| pk <= 0.0 && gk < g_bar)
+            .map(|(_, &gk)| g_bar - gk)
+            .sum();
+        if missing > 0.0 && weight > 0.0 {
+            for (pk, &gk) in p.iter_mut().zip(g) {
+                if *pk <= 0.0 && gk < g_bar {
+                    *pk = (missing * (g_bar - gk) / weight).min(y);
+                }
+            }
+            project_load(p, y, total);
+        } else if missing > 0.0 {
+            // No node overlaps the level of the plastic set: the body must
+            // move in. The nodes off the contact enter in the order they
+            // would touch (smallest gap first), each with σY until the load
+            // is carried; the last one takes the remainder and is the free
+            // set the conjugate gradient starts from.
+            fill_nearest(p, g, y, missing);
+        } else {
+            return false;
+        }
+        self.conjugate = false;
+        self.k += 1;
+        true
+    }
+
+    /// One conjugate-gradient step on the free set `{0 < p < σY}`: box
+    /// projection, re-entry at both bounds, load projection.
+    fn cg_step(&mut self, problem: &Problem, ws: &mut Workspace, m: &Measure) -> Result<()> {
+        let (y, g_bar) = (self.y, m.g_bar);
+        let f = ws.fields();
+        let (p, g, t) = (&mut *f.pressure, &*f.gap, &mut *f.direction);
         // Search direction on the free set, conjugate to the last one.
         let g_norm: f64 = p
             .iter()
-            .zip(&g)
+            .zip(g)
             .filter(|(&pk, _)| pk > 0.0 && pk < y)
             .map(|(_, &gk)| (gk - g_bar).powi(2))
             .sum();
-        let beta = if conjugate && g_old > 0.0 {
-            g_norm / g_old
+        let beta = if self.conjugate && self.g_old > 0.0 {
+            g_norm / self.g_old
         } else {
             0.0
         };
-        g_old = g_norm;
-        for ((tk, &pk), &gk) in t.iter_mut().zip(&p).zip(&g) {
+        self.g_old = g_norm;
+        for ((tk, &pk), &gk) in t.iter_mut().zip(&*p).zip(g) {
             *tk = if pk > 0.0 && pk < y {
                 gk - g_bar + beta * *tk
             } else {
                 0.0
             };
         }
-        solver.op.apply(&t, &mut r)?;
-        let (mut s_t, mut s_r, mut s_rt, mut s_gt) = (0.0, 0.0, 0.0, 0.0);
-        for (((&pk, &gk), &tk), &rk) in p.iter().zip(&g).zip(&t).zip(&r) {
-            if pk > 0.0 && pk < y {
-                s_t += tk;
-                s_r += rk;
-                s_rt += rk * tk;
-                s_gt += (gk - g_bar) * tk;
-            }
-        }
-        let denom = match target {
-            Some(_) if nf > 0 => s_rt - s_r / nf as f64 * s_t,
-            _ => s_rt,
-        };
-        let tau = if denom > 0.0 && denom.is_finite() {
-            s_gt / denom
-        } else {
-            0.0
-        };
+        f.op.apply(t, f.response)?;
+        let tau = step_length(p, g, t, f.response, y, g_bar, self.target.is_some(), m.nf);
         // Step, box projection, re-entry at both bounds.
-        let entry = if tau > 0.0 { tau } else { stiffness };
+        let entry = if tau > 0.0 { tau } else { problem.stiffness() };
         let mut changed = false;
-        for ((pk, &tk), &gk) in p.iter_mut().zip(&t).zip(&g) {
+        for ((pk, &tk), &gk) in p.iter_mut().zip(&*t).zip(g) {
             let dg = gk - g_bar;
             let v = if *pk <= 0.0 {
                 if dg < 0.0 {
@@ -277,56 +338,97 @@ pub(super) fn solve(
             };
             *pk = v.clamp(0.0, y);
         }
-        conjugate = !changed;
-        if let Some(total) = target {
-            project_load(&mut p, y, total);
+        self.conjugate = !changed;
+        if let Some(total) = self.target {
+            project_load(p, y, total);
         }
-        k += 1;
-    };
+        self.k += 1;
+        Ok(())
+    }
 
-    // Final state: r = 𝒢p and g from it (convergence is declared only on a
-    // fresh gap); the gap is measured from the free set's level.
-    let mut contact = 0usize;
-    let mut plastic = 0usize;
-    let (mut d_sum, mut d_max) = (0.0, 0.0f64);
-    for (&pk, gk) in p.iter().zip(g.iter_mut()) {
-        *gk -= g_bar;
-        if pk > 0.0 {
-            contact += 1;
+    /// The final counts (the gap is measured from the free set's level `g_bar`).
+    fn finish(&self, ws: &mut Workspace, g_bar: f64) -> Finish {
+        let y = self.y;
+        let f = ws.fields();
+        let mut contact = 0usize;
+        let mut plastic = 0usize;
+        let (mut d_sum, mut d_max) = (0.0, 0.0f64);
+        for (&pk, &gk) in f.pressure.iter().zip(f.gap.iter()) {
+            if pk > 0.0 {
+                contact += 1;
+            }
+            if pk >= y {
+                plastic += 1;
+                let d = (-(gk - g_bar)).max(0.0);
+                d_sum += d;
+                d_max = d_max.max(d);
+            }
         }
-        if pk >= y {
-            plastic += 1;
-            let d = (-*gk).max(0.0);
-            d_sum += d;
-            d_max = d_max.max(d);
+        Finish {
+            gap_shift: g_bar,
+            contact,
+            plastic,
+            plastic_displacement_mean: if plastic > 0 {
+                d_sum / plastic as f64
+            } else {
+                0.0
+            },
+            plastic_displacement_max: d_max,
+            iterations: self.k,
+            displacement: Displacement::InResponse,
+            ..Finish::default()
         }
     }
-    let mean_pressure = p.iter().sum::<f64>() / n2 as f64;
-    solver.p.clone_from(&p);
-    solver.warm = true;
-    let approach = match control {
-        Control::MeanPressure(_) => g_bar,
-        Control::Penetration(d) => d,
+}
+
+/// `τ` of a step along `t` with the response `r = 𝒢t`: the sums over the
+/// free set `{0 < p < σY}` (with the load constraint's mean correction).
+#[allow(clippy::too_many_arguments)]
+fn step_length(
+    p: &[f64],
+    g: &[f64],
+    t: &[f64],
+    r: &[f64],
+    y: f64,
+    g_bar: f64,
+    load_control: bool,
+    nf: usize,
+) -> f64 {
+    let (mut s_t, mut s_r, mut s_rt, mut s_gt) = (0.0, 0.0, 0.0, 0.0);
+    for (((&pk, &gk), &tk), &rk) in p.iter().zip(g).zip(t).zip(r) {
+        if pk > 0.0 && pk < y {
+            s_t += tk;
+            s_r += rk;
+            s_rt += rk * tk;
+            s_gt += (gk - g_bar) * tk;
+        }
+    }
+    let denom = if load_control && nf > 0 {
+        s_rt - s_r / nf as f64 * s_t
+    } else {
+        s_rt
     };
-    Ok(Solution {
-        pressure: p,
-        gap: g,
-        displacement: r,
-        mean_pressure,
-        approach,
-        contact_fraction: contact as f64 / n2 as f64,
-        elastic_fraction: (contact - plastic) as f64 / n2 as f64,
-        plastic_fraction: plastic as f64 / n2 as f64,
-        plastic_displacement_mean: if plastic > 0 {
-            d_sum / plastic as f64
-        } else {
-            0.0
-        },
-        plastic_displacement_max: d_max,
-        iterations: k,
-        residual,
-        seconds: start.elapsed().as_secs_f64(),
-    })
+    if denom > 0.0 && denom.is_finite() {
+        s_gt / denom
+    } else {
+        0.0
+    }
+}
+
+/// `r = 𝒢p` and `g = r − (h − o)`.
+fn displacement_and_gap(
+    op: &mut Operator,
+    p: &[f64],
+    r: &mut [f64],
+    g: &mut [f64],
+    problem: &Problem,
+) -> Result<()> {
+    op.apply(p, r)?;
+    let offset = problem.offset();
+    for ((g, u), h) in g.iter_mut().zip(&*r).zip(problem.heights()) {
+        *g = u - (h - offset);
+    }
+    Ok(())
 }
 
 /// Give the `missing` load to the nodes off the contact (p = 0) in the
@@ -409,21 +511,18 @@ fn measure(p: &[f64], g: &[f64], y: f64, load_control: bool, sigma_h: f64) -> Me
 /// `{0 ≤ p ≤ σY, Σp = load}` (`p = clamp(v − λ, 0, σY)`, λ by bisection).
 /// It returns when the module's criterion holds (checked every 10 steps) or
 /// at `max_iterations`, with `p` on the load and `g`, `r` of the last check.
-#[allow(clippy::too_many_arguments)]
 fn projected_gradient(
-    solver: &mut Solver,
-    heights: &[f64],
-    offset: f64,
+    problem: &Problem,
+    ws: &mut Workspace,
     y: f64,
-    target: Option<f64>,
-    sigma_h: f64,
     opts: &Options,
     k: &mut usize,
-    p: &mut [f64],
-    g: &mut [f64],
-    r: &mut [f64],
     observer: &mut dyn FnMut(Iteration),
 ) -> Result<()> {
+    let (heights, offset) = (problem.heights(), problem.offset());
+    let (target, sigma_h) = (problem.target_total(), problem.sigma_h());
+    let f = ws.fields();
+    let (op, p, g, r) = (f.op, f.pressure, f.gap, f.response);
     let n2 = p.len();
     // λ_max of 𝒢 by power iteration (Rayleigh quotient, from a fixed
     // pseudo-random start), with a margin for the estimate from below.
@@ -437,7 +536,7 @@ fn projected_gradient(
             break;
         }
         v.iter_mut().for_each(|x| *x /= norm);
-        solver.op.apply(&v, r)?;
+        op.apply(&v, r)?;
         lambda = v.iter().zip(r.iter()).map(|(a, b)| a * b).sum::<f64>();
         v.copy_from_slice(r);
     }
@@ -452,7 +551,7 @@ fn projected_gradient(
     let mut steps = 0usize;
     loop {
         // Gradient of ½⟨p, 𝒢p⟩ − ⟨p, h − offset⟩ at z: the gap.
-        solver.op.apply(&z, r)?;
+        op.apply(&z, r)?;
         for ((zk, &u), &h) in z.iter_mut().zip(r.iter()).zip(heights) {
             *zk -= step * (u - (h - offset));
         }
@@ -482,7 +581,7 @@ fn projected_gradient(
         *k += 1;
         steps += 1;
         if steps.is_multiple_of(10) || *k >= opts.max_iterations {
-            solver.op.apply(p, r)?;
+            op.apply(p, r)?;
             for ((gk, &u), &h) in g.iter_mut().zip(r.iter()).zip(heights) {
                 *gk = u - (h - offset);
             }
