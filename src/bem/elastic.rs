@@ -8,7 +8,7 @@ use super::polonsky_keer;
 use super::preconditioned::{self, Outcome};
 use super::problem::{Method, Options, Problem};
 use super::solution::{Iteration, Solution};
-use super::workspace::Workspace;
+use super::workspace::{Start, Workspace};
 use crate::error::{Error, Result};
 
 /// Solve the elastic `problem` (`opts.yield_stress` is not read), starting
@@ -28,7 +28,12 @@ pub(crate) fn solve(
     if problem.is_flat() {
         return flat(problem, ws, start);
     }
-    ws.start(problem, opts.warm_start);
+    let warm = match method {
+        _ if !opts.warm_start => Start::Cold,
+        Method::Plain => Start::Rescaled,
+        Method::Preconditioned { .. } => Start::Predicted,
+    };
+    ws.start(problem, warm)?;
     let mut sol = match method {
         Method::Plain => polonsky_keer::solve(problem, ws, opts, 0, observer)?,
         Method::Preconditioned { stall_iterations } => {

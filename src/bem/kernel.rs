@@ -211,13 +211,13 @@ impl Operator {
     ///
     /// # Formula
     /// ```text
-    /// p̂(q) = E* |q| û(q) / 2,   p̂(0) = 0
-    /// periodic:  q = (2π/L)(k_x, k_y)      (𝒦 = 𝒢⁻¹ on every mode but the mean)
-    /// free:      q = (2π/2L)(k_x, k_y)     on the zero-padded 2N × 2N grid
+    /// periodic:  p̂(q) = E* |q| û(q) / 2,  q = (2π/L)(k_x, k_y),  p̂(0) = 0   (𝒦 = 𝒢⁻¹ but for the mean)
+    /// free:      p̂(k) = û(k) / K̂(k)   on the zero-padded 2N × 2N grid       (the inverse of 𝒢's circulant)
     /// ```
-    /// With the free boundary 𝒦 is the stiffness of a 2L-periodic system
-    /// (an approximate inverse of the free 𝒢, used as a preconditioner and
-    /// by gap-based loops).
+    /// K̂ is the free operator's multiplier (Love's cell kernel embedded in
+    /// the 2N × 2N circulant, positive at every k). With the free boundary
+    /// 𝒦 inverts 𝒢 for fields on the padded grid; restricted to the N × N
+    /// window it is an approximate inverse (used as a preconditioner).
     ///
     /// # Errors
     /// Internal FFT errors only.
@@ -271,11 +271,11 @@ impl Operator {
                     Symbol::Compliance => scale_column(col, half, |ki| m[ki]),
                     Symbol::Stiffness { mean } => {
                         let k2 = (kj * kj) as f64;
-                        let zero = if kj == 0 { mean * norm } else { 0.0 };
                         match boundary {
                             // 𝒢's own multiplier times (E*q/2)²: no square root.
                             Boundary::Periodic => {
                                 let c = (0.5 * e_star * dq).powi(2);
+                                let zero = if kj == 0 { mean * norm } else { 0.0 };
                                 scale_column(col, half, |ki| {
                                     if ki == 0 && kj == 0 {
                                         zero
@@ -284,15 +284,12 @@ impl Operator {
                                     }
                                 })
                             }
+                            // The inverse of the 2N circulant (its
+                            // multiplier is positive: ≥ 1.82 c at the
+                            // Nyquist corner, measured for N = 32 … 512).
                             Boundary::Free => {
-                                let c = 0.5 * e_star * dq * norm;
-                                scale_column(col, half, |ki| {
-                                    if ki == 0 && kj == 0 {
-                                        zero
-                                    } else {
-                                        c * ((ki * ki) as f64 + k2).sqrt()
-                                    }
-                                })
+                                let c = norm * norm;
+                                scale_column(col, half, |ki| c / m[ki])
                             }
                         }
                     }

@@ -64,7 +64,7 @@ pub use problem::{Control, Method, Options, Problem};
 pub use solution::{Fallback, Iteration, Solution};
 pub use solver::{LoadPath, Solver};
 pub use surface::Surface;
-pub use workspace::{Displacement, Fields, Finish, Workspace};
+pub use workspace::{Displacement, Fields, Finish, Start, Workspace};
 
 use crate::error::{Error, Result};
 

@@ -156,7 +156,8 @@ pub(crate) fn solve(
 }
 
 /// The stall test: the best ε must fall by [`STALL_FACTOR`] in every window.
-struct Stall {
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Stall {
     window: usize,
     since: usize,
     checkpoint: f64,
@@ -164,7 +165,7 @@ struct Stall {
 }
 
 impl Stall {
-    fn new(window: usize) -> Self {
+    pub fn new(window: usize) -> Self {
         Stall {
             window: window.max(1),
             since: 0,
@@ -174,7 +175,7 @@ impl Stall {
     }
 
     /// Record ε of iteration `k`; true when the window closed without progress.
-    fn stalled(&mut self, k: usize, eps: f64) -> bool {
+    pub fn stalled(&mut self, k: usize, eps: f64) -> bool {
         if !eps.is_finite() {
             return true;
         }
@@ -196,8 +197,7 @@ struct State {
     pending: Pending,
     p_scale: f64,
     g_ref: f64,
-    /// ⟨r, z⟩ of the last step (0: restart).
-    rz_old: f64,
+    conjugacy: Conjugacy,
     /// Stiffness of the mean mode in the preconditioner (see [`Operator::fundamental_stiffness`]).
     ///
     /// [`Operator::fundamental_stiffness`]: super::kernel::Operator
@@ -206,8 +206,8 @@ struct State {
 }
 
 /// Sums of the preconditioner pass.
-#[derive(Default, Clone, Copy)]
-struct Precond {
+#[derive(Debug, Default, Clone, Copy)]
+pub(crate) struct Precond {
     /// Nodes in the free set.
     free: f64,
     /// Σ_F r, ⟨r, t_old⟩, Σ_F t_old, ⟨r, z⟩, Σ_F z.
@@ -236,7 +236,7 @@ impl State {
             pending: Pending::NONE,
             p_scale: 1.0,
             g_ref: 0.0,
-            rz_old: 0.0,
+            conjugacy: Conjugacy::default(),
             mean_stiffness: f.op.fundamental_stiffness(),
             k: 0,
         })
@@ -287,11 +287,11 @@ impl State {
             0.0
         };
         self.g_ref = g_bar;
-        let pc = precondition(ws, g_bar, self.mean_stiffness)?;
-        let Some((beta, mu)) = self.conjugate(&pc) else {
+        let pc = precondition(ws, g_bar, f64::INFINITY, self.mean_stiffness)?;
+        let Some((beta, mu)) = self.conjugacy.next(&pc, self.load) else {
             return Ok(false);
         };
-        let [r_t, t_gt] = direction_and_response(ws, g_bar, beta, mu)?;
+        let [r_t, t_gt] = direction_and_response(ws, g_bar, f64::INFINITY, beta, mu)?;
         let tau = r_t / t_gt;
         if !(tau > 0.0 && tau.is_finite()) {
             return Ok(false);
@@ -336,14 +336,23 @@ impl State {
         self.k += 1;
         Ok(true)
     }
+}
 
-    /// β (Fletcher–Reeves, restarted when the direction would not descend)
-    /// and the mean μ removed from the direction; `None` if even the
+/// Fletcher–Reeves conjugacy of the preconditioned directions.
+#[derive(Debug, Default, Clone, Copy)]
+pub(crate) struct Conjugacy {
+    /// ⟨r, z⟩ of the last step (0: restart).
+    rz_old: f64,
+}
+
+impl Conjugacy {
+    /// β (restarted when the direction would not descend) and the mean μ
+    /// removed from the direction under load control; `None` if even the
     /// preconditioned residual does not descend.
-    fn conjugate(&mut self, pc: &Precond) -> Option<(f64, f64)> {
+    pub fn next(&mut self, pc: &Precond, load: bool) -> Option<(f64, f64)> {
         let free = pc.free.max(1.0);
         let mean = |beta: f64| {
-            if self.load {
+            if load {
                 (pc.sum_z + beta * pc.sum_t) / free
             } else {
                 0.0
@@ -366,18 +375,29 @@ impl State {
     }
 }
 
-/// `m_F` of a node: in contact, or at `p = 0` below the contact level.
+/// `m_F` of a node for pressures in `[0, y]` (`y = ∞`: the elastic
+/// problem): strictly inside, or at a bound that the gap pushes it off
+/// (`p = 0` below the level ḡ, `p = y` above it).
 #[inline(always)]
-fn free(p: f64, g: f64, g_bar: f64) -> f64 {
-    if (p > 0.0) | (g < g_bar) {
+fn free(p: f64, g: f64, g_bar: f64, y: f64) -> f64 {
+    let inside = (p > 0.0) & (p < y);
+    let lower = (p <= 0.0) & (g < g_bar);
+    let upper = (p >= y) & (g > g_bar);
+    if inside | lower | upper {
         1.0
     } else {
         0.0
     }
 }
 
-/// The preconditioner pass `z = [F] 𝒦 r` (z into `response`), with its sums.
-fn precondition(ws: &mut Workspace, g_bar: f64, mean_stiffness: f64) -> Result<Precond> {
+/// The preconditioner pass `z = [F] 𝒦 r` (z into `response`), with its sums;
+/// pressures bounded by `y` (∞ for the elastic problem).
+pub(crate) fn precondition(
+    ws: &mut Workspace,
+    g_bar: f64,
+    y: f64,
+    mean_stiffness: f64,
+) -> Result<Precond> {
     let f = ws.fields();
     let n = f.op.n();
     let (p, g, t) = (&*f.pressure, &*f.gap, &*f.direction);
@@ -389,14 +409,14 @@ fn precondition(ws: &mut Workspace, g_bar: f64, mean_stiffness: f64) -> Result<P
         mean_stiffness,
         &mut |i, row| {
             let k = i * n..(i + 1) * n;
-            let s = residual_row(&p[k.clone()], &g[k.clone()], &t[k], g_bar, row);
+            let s = residual_row(&p[k.clone()], &g[k.clone()], &t[k], g_bar, y, row);
             for (a, b) in fill_sums.iter_mut().zip(s) {
                 *a += b;
             }
         },
         &mut |i, row| {
             let k = i * n..(i + 1) * n;
-            let s = restrict_row(&p[k.clone()], &g[k.clone()], g_bar, row, &mut z[k]);
+            let s = restrict_row(&p[k.clone()], &g[k.clone()], g_bar, y, row, &mut z[k]);
             for (a, b) in emit_sums.iter_mut().zip(s) {
                 *a += b;
             }
@@ -408,7 +428,7 @@ fn precondition(ws: &mut Workspace, g_bar: f64, mean_stiffness: f64) -> Result<P
 }
 
 /// One row of `r = [F](g − ḡ)` into `out`; returns `[|F|, Σ r, Σ r t, Σ_F t]`.
-fn residual_row(p: &[f64], g: &[f64], t: &[f64], g_bar: f64, out: &mut [f64]) -> [f64; 4] {
+fn residual_row(p: &[f64], g: &[f64], t: &[f64], g_bar: f64, y: f64, out: &mut [f64]) -> [f64; 4] {
     let mut acc = [[0.0f64; LANES]; 4];
     let chunks = p
         .chunks(LANES)
@@ -417,7 +437,7 @@ fn residual_row(p: &[f64], g: &[f64], t: &[f64], g_bar: f64, out: &mut [f64]) ->
         .zip(out.chunks_mut(LANES));
     for (((pc, gc), tc), oc) in chunks {
         for l in 0..pc.len() {
-            let m = free(pc[l], gc[l], g_bar);
+            let m = free(pc[l], gc[l], g_bar, y);
             let r = m * (gc[l] - g_bar);
             oc[l] = r;
             acc[0][l] += m;
@@ -430,7 +450,7 @@ fn residual_row(p: &[f64], g: &[f64], t: &[f64], g_bar: f64, out: &mut [f64]) ->
 }
 
 /// One row of `z = [F] 𝒦r` into `z`; returns `[Σ r z, Σ z]`.
-fn restrict_row(p: &[f64], g: &[f64], g_bar: f64, kr: &[f64], z: &mut [f64]) -> [f64; 2] {
+fn restrict_row(p: &[f64], g: &[f64], g_bar: f64, y: f64, kr: &[f64], z: &mut [f64]) -> [f64; 2] {
     let mut acc = [[0.0f64; LANES]; 2];
     let chunks = p
         .chunks(LANES)
@@ -439,7 +459,7 @@ fn restrict_row(p: &[f64], g: &[f64], g_bar: f64, kr: &[f64], z: &mut [f64]) -> 
         .zip(z.chunks_mut(LANES));
     for (((pc, gc), kc), zc) in chunks {
         for l in 0..pc.len() {
-            let m = free(pc[l], gc[l], g_bar);
+            let m = free(pc[l], gc[l], g_bar, y);
             let v = m * kc[l];
             zc[l] = v;
             acc[0][l] += m * (gc[l] - g_bar) * v;
@@ -452,7 +472,13 @@ fn restrict_row(p: &[f64], g: &[f64], g_bar: f64, kr: &[f64], z: &mut [f64]) -> 
 /// The direction `t = [F](z + β t − μ)` (written row by row as the
 /// transform reads it) and `r = 𝒢t` into `response`; returns
 /// `[⟨g − ḡ, t⟩, ⟨t, 𝒢t⟩]`.
-fn direction_and_response(ws: &mut Workspace, g_bar: f64, beta: f64, mu: f64) -> Result<[f64; 2]> {
+pub(crate) fn direction_and_response(
+    ws: &mut Workspace,
+    g_bar: f64,
+    y: f64,
+    beta: f64,
+    mu: f64,
+) -> Result<[f64; 2]> {
     let f = ws.fields();
     let n = f.op.n();
     let (p, g) = (&*f.pressure, &*f.gap);
@@ -469,9 +495,7 @@ fn direction_and_response(ws: &mut Workspace, g_bar: f64, beta: f64, mu: f64) ->
                 &g[k.clone()],
                 &r[k.clone()],
                 &t[k],
-                g_bar,
-                beta,
-                mu,
+                [g_bar, y, beta, mu],
                 row,
             );
         },
@@ -496,15 +520,12 @@ fn direction_and_response(ws: &mut Workspace, g_bar: f64, beta: f64, mu: f64) ->
 
 /// One row of `t ← [F](z + β t − μ)`, written to `t` and `out`; returns
 /// `Σ (g − ḡ) t` over the row.
-#[allow(clippy::too_many_arguments)]
 fn direction_row(
     p: &[f64],
     g: &[f64],
     z: &[Cell<f64>],
     t: &[Cell<f64>],
-    g_bar: f64,
-    beta: f64,
-    mu: f64,
+    [g_bar, y, beta, mu]: [f64; 4],
     out: &mut [f64],
 ) -> f64 {
     let mut acc = [0.0f64; LANES];
@@ -515,7 +536,7 @@ fn direction_row(
         .zip(out.chunks_mut(LANES));
     for (((pc, gc), (zc, tc)), oc) in chunks {
         for l in 0..pc.len() {
-            let m = free(pc[l], gc[l], g_bar);
+            let m = free(pc[l], gc[l], g_bar, y);
             let v = m * (zc[l].get() + beta * tc[l].get() - mu);
             tc[l].set(v);
             oc[l] = v;

@@ -70,10 +70,19 @@
 
 use std::time::Instant;
 
+mod fista;
+mod measure;
+mod projection;
+
+use fista::projected_gradient;
+use measure::{measure, Measure};
+use projection::{fill_nearest, project_load};
+
 use super::elastic;
 use super::kernel::Operator;
+use super::preconditioned::{direction_and_response, precondition, Conjugacy, Stall};
 use super::problem::{Control, Method, Options, Problem};
-use super::solution::{Iteration, Solution};
+use super::solution::{Fallback, Iteration, Solution};
 use super::workspace::{Displacement, Finish, Workspace};
 use crate::error::{check, Error, Result};
 
@@ -121,7 +130,8 @@ pub(crate) fn solve(
     let (k0, fallback) = (sol.iterations, sol.fallback);
     // The workspace keeps the elastic pressure; the solution's fields go.
     drop(sol);
-    let mut run = Run::new(problem, ws, y, k0);
+    let mut run = Run::new(problem, ws, y, k0, method);
+    run.fallback = fallback;
     let (residual, g_bar) = loop {
         run.gap(problem, ws)?;
         let m = run.measure(problem, ws, observer);
@@ -144,6 +154,9 @@ pub(crate) fn solve(
                 tolerance: opts.tolerance,
             });
         }
+        if run.preconditioned_step(ws, &m)? {
+            continue;
+        }
         if run.stalled(m.eps) {
             // A cycle of active sets (seen on 0.3 % of random 32²–128²
             // cases) makes no progress: finish with the projected
@@ -165,7 +178,7 @@ pub(crate) fn solve(
     done.residual = residual;
     done.seconds = start.elapsed().as_secs_f64();
     let mut sol = ws.finish(problem, done);
-    sol.fallback = fallback;
+    sol.fallback = run.fallback;
     Ok(sol)
 }
 
@@ -174,17 +187,36 @@ struct Run {
     y: f64,
     target: Option<f64>,
     k: usize,
+    /// The preconditioned steps' state while they run (`None`: plain steps).
+    preconditioned: Option<Preconditioned>,
+    fallback: Option<Fallback>,
     conjugate: bool,
     g_old: f64,
     best: f64,
     stalled: usize,
 }
 
+/// State of the preconditioned steps of the saturated stage.
+#[derive(Debug, Clone, Copy)]
+struct Preconditioned {
+    stall: Stall,
+    conjugacy: Conjugacy,
+    mean_stiffness: f64,
+}
+
 impl Run {
     /// Start from the elastic pressure in the workspace, clipped at σY and
     /// put back on the load.
-    fn new(problem: &Problem, ws: &mut Workspace, y: f64, k0: usize) -> Self {
+    fn new(problem: &Problem, ws: &mut Workspace, y: f64, k0: usize, method: Method) -> Self {
         let target = problem.target_total();
+        let preconditioned = match method {
+            Method::Preconditioned { stall_iterations } => Some(Preconditioned {
+                stall: Stall::new(stall_iterations),
+                conjugacy: Conjugacy::default(),
+                mean_stiffness: ws.operator().fundamental_stiffness(),
+            }),
+            Method::Plain => None,
+        };
         let f = ws.fields();
         f.pressure.iter_mut().for_each(|v| *v = v.min(y));
         if let Some(total) = target {
@@ -195,6 +227,8 @@ impl Run {
             y,
             target,
             k: k0,
+            preconditioned,
+            fallback: None,
             conjugate: false,
             g_old: 1.0,
             best: f64::INFINITY,
@@ -225,6 +259,62 @@ impl Run {
             contact_fraction: contact as f64 / p.len() as f64,
         });
         m
+    }
+
+    /// One preconditioned step on the free set of the box (see
+    /// [`super::preconditioned`] with `p ≤ σY`), or a refill of a missing
+    /// load; false when the plain steps are to run (they do from now on if
+    /// the preconditioned ones stalled or degenerated: flagged).
+    fn preconditioned_step(&mut self, ws: &mut Workspace, m: &Measure) -> Result<bool> {
+        let Some(mut pre) = self.preconditioned else {
+            return Ok(false);
+        };
+        let taken = !pre.stall.stalled(self.k, m.eps) && self.pcg_step(ws, m, &mut pre)?;
+        if taken {
+            self.preconditioned = Some(pre);
+            return Ok(true);
+        }
+        // Stalled or degenerate: the plain steps finish, from this pressure.
+        self.preconditioned = None;
+        self.fallback = Some(Fallback {
+            iterations: self.k,
+            residual: m.eps,
+        });
+        self.conjugate = false;
+        Ok(false)
+    }
+
+    /// A refill of a missing load (restarting the conjugacy) or one
+    /// preconditioned step; false when the step is degenerate.
+    fn pcg_step(
+        &mut self,
+        ws: &mut Workspace,
+        m: &Measure,
+        pre: &mut Preconditioned,
+    ) -> Result<bool> {
+        if self.refill(ws, m) {
+            pre.conjugacy = Conjugacy::default();
+            return Ok(true);
+        }
+        let (y, g_bar) = (self.y, m.g_bar);
+        let pc = precondition(ws, g_bar, y, pre.mean_stiffness)?;
+        let Some((beta, mu)) = pre.conjugacy.next(&pc, self.target.is_some()) else {
+            return Ok(false);
+        };
+        let [r_t, t_gt] = direction_and_response(ws, g_bar, y, beta, mu)?;
+        let tau = r_t / t_gt;
+        if !(tau > 0.0 && tau.is_finite()) {
+            return Ok(false);
+        }
+        let f = ws.fields();
+        for (pk, &tk) in f.pressure.iter_mut().zip(&*f.direction) {
+            *pk = (*pk - tau * tk).clamp(0.0, y);
+        }
+        if let Some(total) = self.target {
+            project_load(f.pressure, y, total);
+        }
+        self.k += 1;
+        Ok(true)
     }
 
     /// No 10 % drop of ε in [`STALL_ITERATIONS`] iterations (counted here).
@@ -431,239 +521,6 @@ fn displacement_and_gap(
     Ok(())
 }
 
-/// Give the `missing` load to the nodes off the contact (p = 0) in the
-/// order of their gap, σY each, the last one the remainder.
-fn fill_nearest(p: &mut [f64], g: &[f64], y: f64, missing: f64) {
-    let mut off: Vec<usize> = (0..p.len()).filter(|&i| p[i] <= 0.0).collect();
-    off.sort_by(|&a, &b| g[a].total_cmp(&g[b]));
-    let mut left = missing;
-    for i in off {
-        if left <= 0.0 {
-            break;
-        }
-        p[i] = left.min(y);
-        left -= p[i];
-    }
-}
-
 /// Iterations of the conjugate gradient without a 10 % drop of ε after which
 /// [`projected_gradient`] takes over.
 const STALL_ITERATIONS: usize = 100;
-
-/// The convergence measure of a state (see the module docs).
-struct Measure {
-    eps: f64,
-    g_bar: f64,
-    off_min: f64,
-    nf: usize,
-    sum_p: f64,
-}
-
-/// ε, ḡ and the largest overlap off the contact of the pressure `p` with
-/// the gap `g` (ḡ: the free set's mean gap under load control, else 0).
-fn measure(p: &[f64], g: &[f64], y: f64, load_control: bool, sigma_h: f64) -> Measure {
-    let (mut nf, mut sum_gf, mut g_max_pl) = (0usize, 0.0, f64::NEG_INFINITY);
-    for (&pk, &gk) in p.iter().zip(g) {
-        if pk > 0.0 && pk < y {
-            nf += 1;
-            sum_gf += gk;
-        } else if pk >= y {
-            g_max_pl = g_max_pl.max(gk);
-        }
-    }
-    let g_bar = match load_control {
-        true if nf > 0 => sum_gf / nf as f64,
-        true if g_max_pl.is_finite() => g_max_pl,
-        _ => 0.0,
-    };
-    let (mut sum_p, mut num, mut off_min) = (0.0, 0.0, f64::INFINITY);
-    for (&pk, &gk) in p.iter().zip(g) {
-        let dg = gk - g_bar;
-        sum_p += pk;
-        if pk <= 0.0 {
-            off_min = off_min.min(dg);
-        } else if pk < y {
-            num += pk * dg.abs();
-        } else {
-            num += y * dg.max(0.0);
-        }
-    }
-    let eps = if sum_p > 0.0 {
-        num / (sum_p * sigma_h)
-    } else {
-        0.0
-    };
-    Measure {
-        eps,
-        g_bar,
-        off_min,
-        nf,
-        sum_p,
-    }
-}
-
-/// The fallback of a stalled solve: accelerated projected gradient (FISTA,
-/// A. Beck & M. Teboulle, SIAM J. Imaging Sci. 2, 183 (2009),
-/// doi:10.1137/080716542, with the gradient restart of B. O'Donoghue &
-/// E. Candès, Found. Comput. Math. 15, 715 (2015),
-/// doi:10.1007/s10208-013-9150-3) on the same energy, step 1/λ_max(𝒢)
-/// (power iteration), each step projected exactly onto
-/// `{0 ≤ p ≤ σY, Σp = load}` (`p = clamp(v − λ, 0, σY)`, λ by bisection).
-/// It returns when the module's criterion holds (checked every 10 steps) or
-/// at `max_iterations`, with `p` on the load and `g`, `r` of the last check.
-fn projected_gradient(
-    problem: &Problem,
-    ws: &mut Workspace,
-    y: f64,
-    opts: &Options,
-    k: &mut usize,
-    observer: &mut dyn FnMut(Iteration),
-) -> Result<()> {
-    let (heights, offset) = (problem.heights(), problem.offset());
-    let (target, sigma_h) = (problem.target_total(), problem.sigma_h());
-    let f = ws.fields();
-    let (op, p, g, r) = (f.op, f.pressure, f.gap, f.response);
-    let n2 = p.len();
-    // λ_max of 𝒢 by power iteration (Rayleigh quotient, from a fixed
-    // pseudo-random start), with a margin for the estimate from below.
-    let mut v: Vec<f64> = (0..n2)
-        .map(|i| ((i.wrapping_mul(7919) % 1009) as f64 / 1009.0) - 0.5)
-        .collect();
-    let mut lambda = 0.0;
-    for _ in 0..40 {
-        let norm = v.iter().map(|x| x * x).sum::<f64>().sqrt();
-        if norm <= 0.0 {
-            break;
-        }
-        v.iter_mut().for_each(|x| *x /= norm);
-        op.apply(&v, r)?;
-        lambda = v.iter().zip(r.iter()).map(|(a, b)| a * b).sum::<f64>();
-        v.copy_from_slice(r);
-    }
-    let step = 1.0 / (1.1 * lambda.max(f64::MIN_POSITIVE));
-    let project = |w: &mut [f64]| match target {
-        Some(total) => project_box_load(w, y, total),
-        None => w.iter_mut().for_each(|x| *x = x.clamp(0.0, y)),
-    };
-    let mut prev = p.to_vec();
-    let mut z = p.to_vec();
-    let mut t_k = 1.0f64;
-    let mut steps = 0usize;
-    loop {
-        // Gradient of ½⟨p, 𝒢p⟩ − ⟨p, h − offset⟩ at z: the gap.
-        op.apply(&z, r)?;
-        for ((zk, &u), &h) in z.iter_mut().zip(r.iter()).zip(heights) {
-            *zk -= step * (u - (h - offset));
-        }
-        project(&mut z);
-        // z is p_{k+1}; restart when the step turns against the momentum.
-        let mut turn = 0.0;
-        for ((&zn, &pk), &pp) in z.iter().zip(p.iter()).zip(&prev) {
-            turn += (pp - zn) * (zn - pk);
-        }
-        let t_next = if turn > 0.0 {
-            1.0
-        } else {
-            0.5 * (1.0 + (1.0 + 4.0 * t_k * t_k).sqrt())
-        };
-        let beta = if turn > 0.0 {
-            0.0
-        } else {
-            (t_k - 1.0) / t_next
-        };
-        t_k = t_next;
-        prev.copy_from_slice(p);
-        p.copy_from_slice(&z);
-        for ((zk, &pk), &pp) in z.iter_mut().zip(p.iter()).zip(&prev) {
-            *zk = pk + beta * (pk - pp);
-        }
-        project(&mut z);
-        *k += 1;
-        steps += 1;
-        if steps.is_multiple_of(10) || *k >= opts.max_iterations {
-            op.apply(p, r)?;
-            for ((gk, &u), &h) in g.iter_mut().zip(r.iter()).zip(heights) {
-                *gk = u - (h - offset);
-            }
-            let m = measure(p, g, y, target.is_some(), sigma_h);
-            let contact = p.iter().filter(|&&v| v > 0.0).count();
-            observer(Iteration {
-                iteration: *k,
-                residual: m.eps,
-                contact_fraction: contact as f64 / n2 as f64,
-            });
-            if (m.eps <= opts.tolerance && m.off_min >= -opts.tolerance * sigma_h)
-                || *k >= opts.max_iterations
-            {
-                if let Some(total) = target {
-                    project_load(p, y, total);
-                }
-                return Ok(());
-            }
-        }
-    }
-}
-
-/// The Euclidean projection onto `{0 ≤ p ≤ y, Σp = total}`:
-/// `p ← clamp(p − λ, 0, y)` with λ by bisection (the sum decreases in λ).
-fn project_box_load(p: &mut [f64], y: f64, total: f64) {
-    let sum = |lam: f64| p.iter().map(|&v| (v - lam).clamp(0.0, y)).sum::<f64>();
-    let lo0 = p.iter().copied().fold(f64::INFINITY, f64::min) - y;
-    let hi0 = p.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-    let (mut lo, mut hi) = (lo0, hi0);
-    for _ in 0..200 {
-        let mid = 0.5 * (lo + hi);
-        if mid <= lo || mid >= hi {
-            break;
-        }
-        if sum(mid) > total {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    let lam = 0.5 * (lo + hi);
-    p.iter_mut().for_each(|v| *v = (*v - lam).clamp(0.0, y));
-}
-
-/// Scale the pressure to the load with the bound kept: `p ← min(s p, y)`
-/// on the nodes below `y` (the plastic nodes stay at `y`), with
-/// `Σ p = total`; all nodes are scaled when the plastic ones alone carry
-/// more than the load. Newton's method from below (the sum is concave and
-/// piecewise linear in `s`, so every step stays below the root and ends on
-/// it after at most one step per saturated group). When even all contact
-/// nodes at `y` carry less than the load, they are all set to `y` (the next
-/// step's re-entry widens the contact).
-fn project_load(p: &mut [f64], y: f64, total: f64) {
-    let plastic = p.iter().filter(|&&v| v >= y).count() as f64 * y;
-    let (fixed, rest) = if plastic < total {
-        (y, total - plastic)
-    } else {
-        (f64::INFINITY, total)
-    };
-    let sum: f64 = p.iter().filter(|&&v| v < fixed).sum();
-    if sum <= 0.0 {
-        return;
-    }
-    let mut s = rest / sum;
-    for _ in 0..200 {
-        let (mut f, mut slope) = (0.0, 0.0);
-        for &v in p.iter().filter(|&&v| v < fixed) {
-            let w = s * v;
-            if w < y {
-                f += w;
-                slope += v;
-            } else {
-                f += y;
-            }
-        }
-        let miss = rest - f;
-        if miss <= 1e-15 * rest || slope <= 0.0 {
-            break;
-        }
-        s += miss / slope;
-    }
-    p.iter_mut()
-        .filter(|v| **v < fixed)
-        .for_each(|v| *v = (s * *v).min(y));
-}
