@@ -5,7 +5,7 @@
 use std::time::Instant;
 
 use super::polonsky_keer;
-use super::preconditioned::{self, Outcome};
+use super::preconditioned::{self, Cap, Outcome};
 use super::problem::{Method, Options, Problem};
 use super::solution::{Iteration, Solution};
 use super::workspace::{Start, Workspace};
@@ -24,9 +24,42 @@ pub(crate) fn solve(
     method: Method,
     observer: &mut dyn FnMut(Iteration),
 ) -> Result<Solution> {
+    match solve_capped(problem, ws, opts, method, None, observer)? {
+        Stage::Solved(sol) => Ok(sol),
+        Stage::Capped(k) => Err(Error::Inconsistent {
+            name: "elastic stage".into(),
+            requirement: format!(
+                "no cap was set, yet the loop stopped at one after {k} iterations"
+            ),
+        }),
+    }
+}
+
+/// How the elastic stage ended.
+#[derive(Debug)]
+pub(crate) enum Stage {
+    /// Converged.
+    Solved(Solution),
+    /// Stopped at the cap after this many iterations (the pressure is in the
+    /// workspace); only the preconditioned loop stops so.
+    Capped(usize),
+}
+
+/// [`solve`], stopping at `cap` (see [`Cap`]) with [`Method::Preconditioned`].
+///
+/// # Errors
+/// As [`solve`].
+pub(crate) fn solve_capped(
+    problem: &Problem,
+    ws: &mut Workspace,
+    opts: &Options,
+    method: Method,
+    cap: Option<Cap>,
+    observer: &mut dyn FnMut(Iteration),
+) -> Result<Stage> {
     let start = Instant::now();
     if problem.is_flat() {
-        return flat(problem, ws, start);
+        return flat(problem, ws, start).map(Stage::Solved);
     }
     let warm = match method {
         _ if !opts.warm_start => Start::Cold,
@@ -37,8 +70,9 @@ pub(crate) fn solve(
     let mut sol = match method {
         Method::Plain => polonsky_keer::solve(problem, ws, opts, 0, observer)?,
         Method::Preconditioned { stall_iterations } => {
-            match preconditioned::solve(problem, ws, opts, stall_iterations, observer)? {
+            match preconditioned::solve(problem, ws, opts, stall_iterations, cap, observer)? {
                 Outcome::Converged(sol) => sol,
+                Outcome::Capped(k) => return Ok(Stage::Capped(k)),
                 Outcome::Stalled(fallback) => {
                     // Never a wrong answer: the plain loop finishes from the
                     // last (feasible) pressure, and the solution says so.
@@ -52,7 +86,7 @@ pub(crate) fn solve(
         }
     };
     sol.seconds = start.elapsed().as_secs_f64();
-    Ok(sol)
+    Ok(Stage::Solved(sol))
 }
 
 /// A flat rigid surface: uniform pressure, full contact (load control).

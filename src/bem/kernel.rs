@@ -532,4 +532,57 @@ mod tests {
             }
         }
     }
+
+    #[test]
+    fn periodic_stiffness_inverts_the_compliance() {
+        // 𝒦𝒢p = p − mean(p): the two multipliers multiply to 1 on every
+        // mode but the mean (odd and even grids).
+        for n in [15, 64] {
+            let mut op = Operator::new(Boundary::Periodic, n, 2.0, 3.0).unwrap();
+            let p: Vec<f64> = (0..n * n).map(|k| ((k * 7 % 11) as f64) * 0.1).collect();
+            let mean = p.iter().sum::<f64>() / (n * n) as f64;
+            let (mut u, mut back) = (vec![0.0; n * n], vec![0.0; n * n]);
+            op.apply(&p, &mut u).unwrap();
+            op.apply_stiffness(&u, &mut back).unwrap();
+            let err = p
+                .iter()
+                .zip(&back)
+                .map(|(a, b)| (a - mean - b).abs())
+                .fold(0.0, f64::max);
+            assert!(err < FFT_TOL, "n = {n}: {err:e}");
+        }
+    }
+
+    #[test]
+    fn stiffness_is_symmetric_positive_definite() {
+        // ⟨x, 𝒦y⟩ = ⟨𝒦x, y⟩ and ⟨x, 𝒦x⟩ > 0 for fields of the N × N window
+        // (free: the inverse of the 2N circulant restricted to the window);
+        // with a mean stiffness w, 𝒦1 = w (periodic).
+        for boundary in [Boundary::Periodic, Boundary::Free] {
+            let n = 24;
+            let mut op = Operator::new(boundary, n, 1.5, 2.0).unwrap();
+            let x: Vec<f64> = (0..n * n).map(|k| ((k * 7 % 11) as f64) - 5.0).collect();
+            let y: Vec<f64> = (0..n * n).map(|k| ((k * 5 % 13) as f64) - 6.0).collect();
+            let (mut kx, mut ky) = (vec![0.0; n * n], vec![0.0; n * n]);
+            op.apply_stiffness(&x, &mut kx).unwrap();
+            op.apply_stiffness(&y, &mut ky).unwrap();
+            let dot = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(u, v)| u * v).sum::<f64>();
+            let (xky, kxy) = (dot(&x, &ky), dot(&kx, &y));
+            assert!(
+                (xky - kxy).abs() < FFT_TOL * xky.abs().max(1.0),
+                "{boundary:?}"
+            );
+            assert!(dot(&x, &kx) > 0.0, "{boundary:?}");
+        }
+        let n = 16;
+        let mut op = Operator::new(Boundary::Periodic, n, 1.0, 2.0).unwrap();
+        let w = op.fundamental_stiffness();
+        assert!((w - 2.0 * std::f64::consts::PI).abs() < 1e-15); // E* π / L
+        let mut k1 = vec![0.0; n * n];
+        op.apply_stiffness_rows_with_mean(w, &mut |_, row| row.fill(1.0), &mut |i, row| {
+            k1[i * n..(i + 1) * n].copy_from_slice(row)
+        })
+        .unwrap();
+        assert!(k1.iter().all(|v| (v - w).abs() < FFT_TOL * w));
+    }
 }

@@ -89,6 +89,21 @@ pub(crate) enum Outcome {
     /// Stalled: the pressure in the workspace is the last iterate (feasible,
     /// on the load); the plain loop is to finish.
     Stalled(Fallback),
+    /// The [`Cap`] was exceeded after this many iterations: the pressure in
+    /// the workspace is the last iterate, for the saturated stage.
+    Capped(usize),
+}
+
+/// Stop early, once ε ≤ `tolerance`, if the pressure exceeds `yield_stress`
+/// (the elastic stage of a saturated solve: its answer is to be clipped, so
+/// it need not be converged further). Below the cap the loop runs on,
+/// unchanged.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Cap {
+    /// σY.
+    pub yield_stress: f64,
+    /// ε at which the cap is tested.
+    pub tolerance: f64,
 }
 
 /// Ratio by which the best ε must fall within a stall window.
@@ -103,6 +118,7 @@ pub(crate) fn solve(
     ws: &mut Workspace,
     opts: &Options,
     stall_iterations: usize,
+    cap: Option<Cap>,
     observer: &mut dyn FnMut(Iteration),
 ) -> Result<Outcome> {
     let start = Instant::now();
@@ -122,6 +138,10 @@ pub(crate) fn solve(
             }
             state.refresh(problem, ws)?;
             continue;
+        }
+        if cap.is_some_and(|c| eps <= c.tolerance && st.p_max > c.yield_stress) {
+            state.hand_over(ws);
+            return Ok(Outcome::Capped(state.k));
         }
         if state.k >= opts.max_iterations {
             return Err(Error::NotConverged {
@@ -518,7 +538,8 @@ pub(crate) fn direction_and_response(
     Ok([r_t, t_gt])
 }
 
-/// One row of `t ← [F](z + β t − μ)`, written to `t` and `out`; returns
+/// One row of `t ← [F](z + β t − μ)`, zero where a bound binds (`p = 0`
+/// and `t > 0`, or `p = y` and `t < 0`), written to `t` and `out`; returns
 /// `Σ (g − ḡ) t` over the row.
 fn direction_row(
     p: &[f64],
@@ -538,6 +559,11 @@ fn direction_row(
         for l in 0..pc.len() {
             let m = free(pc[l], gc[l], g_bar, y);
             let v = m * (zc[l].get() + beta * tc[l].get() - mu);
+            // Nodes at a bound that the step would push out stay put (their
+            // clamp would make the step nonlinear: a fresh 𝒢p or a sparse
+            // correction per iteration).
+            let bind = ((pc[l] <= 0.0) & (v > 0.0)) | ((pc[l] >= y) & (v < 0.0));
+            let v = if bind { 0.0 } else { v };
             tc[l].set(v);
             oc[l] = v;
             acc[l] += (gc[l] - g_bar) * v;

@@ -33,7 +33,7 @@ use serde::Serialize;
 
 use super::histogram::{pressure_histogram, saturated_histogram, HistogramBin};
 use super::{check_memory, surface, Boundary, Control, Iteration, Operator, Options, Solution};
-use super::{Solver, Surface};
+use super::{Fallback, Solver, Surface};
 use crate::error::{check, Error, Result};
 use crate::spectrum::Spectrum;
 use crate::table::{number, Cell, Table, Tabulate};
@@ -100,6 +100,11 @@ pub struct RoughPoint {
     /// With a yield stress: largest plastic displacement (unit of L).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub plastic_displacement_max: Option<f64>,
+    /// Set when the preconditioned solver stalled and the plain one
+    /// finished this solve (same answer, more time): the application layer
+    /// warns about it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub fallback: Option<Fallback>,
 }
 
 /// Progress of [`solve`], once per solver iteration.
@@ -198,6 +203,7 @@ pub fn solve(
             plastic_fraction: plastic(sol.plastic_fraction),
             plastic_displacement_mean: plastic(sol.plastic_displacement_mean),
             plastic_displacement_max: plastic(sol.plastic_displacement_max),
+            fallback: sol.fallback,
         });
     }
     Ok(points)

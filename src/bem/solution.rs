@@ -15,7 +15,7 @@ pub struct Iteration {
 /// The preconditioned loop stalled and the plain one finished the solve
 /// (the answer is the plain solver's, to the same tolerance). The
 /// application layer turns this into a warning.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 #[non_exhaustive]
 pub struct Fallback {
     /// Iterations of the preconditioned loop before it was abandoned.

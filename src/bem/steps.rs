@@ -67,6 +67,8 @@ pub(crate) struct GapStats {
     pub count: usize,
     /// Lowest gap outside the contact set.
     pub g_min_off: f64,
+    /// Largest pressure.
+    pub p_max: f64,
 }
 
 impl GapStats {
@@ -145,6 +147,7 @@ pub(crate) fn gap_stats(
     let mut acc = [[0.0f64; LANES]; 6]; // Σp, Σpg, Σp|g|, Σ_c δg, Σ_c δg², count
     let mut g_min = [f64::INFINITY; LANES];
     let mut g_off = [f64::INFINITY; LANES];
+    let mut p_max = [0.0f64; LANES];
     let Pending {
         g_scale,
         tau,
@@ -180,6 +183,7 @@ pub(crate) fn gap_stats(
         };
         g_min[l] = if on < g_min[l] { on } else { g_min[l] };
         g_off[l] = if off < g_off[l] { off } else { g_off[l] };
+        p_max[l] = if pk > p_max[l] { pk } else { p_max[l] };
     };
     let body = n2 - n2 % LANES;
     for i in (0..body).step_by(LANES) {
@@ -201,6 +205,7 @@ pub(crate) fn gap_stats(
         count: sum(&acc[5]) as usize,
         g_min: min(&g_min),
         g_min_off: min(&g_off),
+        p_max: p_max.iter().copied().fold(0.0, f64::max),
     };
     if st.count == 0 {
         st.g_min = 0.0;
