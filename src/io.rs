@@ -15,7 +15,7 @@ static COUNTER: AtomicU64 = AtomicU64::new(0);
 ///
 /// Its name keeps the target's extension (the PNG encoder picks the format
 /// from it) and starts with a dot so that it is hidden while it exists.
-pub(crate) struct TempFile {
+pub struct TempFile {
     tmp: PathBuf,
     target: PathBuf,
     persisted: bool,
@@ -24,7 +24,7 @@ pub(crate) struct TempFile {
 impl TempFile {
     /// Creates the (empty) temporary file, failing if the directory is not
     /// writable.
-    pub(crate) fn create(target: &Path) -> Result<Self> {
+    pub fn create(target: &Path) -> Result<Self> {
         let dir = match target.parent() {
             Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
             _ => PathBuf::from("."),
@@ -55,12 +55,12 @@ impl TempFile {
     }
 
     /// The temporary file's path.
-    pub(crate) fn path(&self) -> &Path {
+    pub fn path(&self) -> &Path {
         &self.tmp
     }
 
     /// Renames the temporary file over the target.
-    pub(crate) fn persist(mut self) -> Result<()> {
+    pub fn persist(mut self) -> Result<()> {
         std::fs::rename(&self.tmp, &self.target).map_err(|source| Error::Io {
             path: self.target.clone(),
             source,
@@ -104,7 +104,7 @@ pub fn check_writable(path: &Path) -> Result<()> {
 ///
 /// # Errors
 /// [`Error::Io`] naming `path`.
-pub(crate) fn read(path: &Path) -> Result<Vec<u8>> {
+pub fn read(path: &Path) -> Result<Vec<u8>> {
     std::fs::read(path).map_err(|source| io_error(path, source))
 }
 
@@ -112,6 +112,26 @@ fn io_error(path: &Path, source: std::io::Error) -> Error {
     Error::Io {
         path: path.to_path_buf(),
         source,
+    }
+}
+
+/// The shortest text that reads back to the same `f64`: plain digits in
+/// [1e-4, 1e16), scientific otherwise (`1e-12`, not `0.000000000001`).
+pub fn csv_number(v: f64) -> String {
+    if !v.is_finite() {
+        return if v.is_nan() {
+            "NaN".into()
+        } else if v > 0.0 {
+            "inf".into()
+        } else {
+            "-inf".into()
+        };
+    }
+    let a = v.abs();
+    if a != 0.0 && !(1e-4..1e16).contains(&a) {
+        format!("{v:e}")
+    } else {
+        format!("{v}")
     }
 }
 

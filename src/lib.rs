@@ -119,13 +119,7 @@
 //! | [`stress`] | the stress distribution P(σ, ζ) for flat, Hertz, cylinder and tabulated starts, elastic or with a yield stress |
 //! | [`separation`] | the mean interfacial separation ū, the contact stiffness and the stored elastic energy |
 //! | `bem` | (feature `bem`) the FFT boundary-element solver: elastic kernels, surface synthesis, the Polonsky–Keer solver, Hertz validation |
-//! | [`validation`] | validation of numerical codes: continuum extrapolation, κ fits, scoring a user's data against the theories, and (feature `bem`) the theories against the BEM at several resolutions of one surface |
-//! | [`scene`] | scene files: one calculation described in a versioned JSON document, and running it |
-//! | [`report`] | error against run time of every method, and the stability sweep over extreme inputs |
-//! | [`table`] | the one table type every report renders to, as aligned text or CSV |
-//! | `plot` | (feature `plot`) figures as SVG or PNG from the typed reports |
 //! | [`error`] | the crate's [`Error`] and [`Result`]; [`Estimate`] is a value with its error bound, which many functions return |
-//! | [`warning`] | [`Warning`]: a remark on the input (a pressure near E*, a slope above 1, ζ beyond the band, a spectrum file's convention) that never changes a number, carried by the reports |
 //!
 //! ## References
 //!
@@ -152,32 +146,21 @@
 pub mod bem;
 pub mod corrected;
 pub mod error;
-// File output for the `persson` binary (a separate crate): not part of the
-// library's API.
-#[doc(hidden)]
 pub mod io;
 pub mod kappa;
 pub mod material;
-#[cfg(feature = "plot")]
-pub mod plot;
 mod quad;
 pub mod reference;
-pub mod report;
-pub mod scene;
 pub mod separation;
 mod special;
 pub mod spectrum;
 pub mod stress;
-pub mod table;
 pub mod theory;
 #[cfg(feature = "topography")]
 pub mod topography;
-pub mod validation;
-pub mod warning;
 
 pub use error::{Error, Result};
 pub use material::Material;
 /// A value with a bound on its absolute error, returned by every integral.
 pub use quad::Estimate;
 pub use spectrum::Spectrum;
-pub use warning::Warning;

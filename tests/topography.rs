@@ -1157,37 +1157,3 @@ fn surface_topography_profile_spectrum() {
         );
     }
 }
-
-#[test]
-fn analysis_prints_as_a_table_and_json() {
-    use persson::table::Tabulate;
-    let t = Topography::map(16, 12, 1.6e-5, 1.2e-5, sample(16, 12), false).unwrap();
-    let r = analyse(&t, &AnalysisOptions::default()).unwrap();
-    let tables = r.tables();
-    assert_eq!(tables.len(), 1);
-    assert_eq!(tables[0].name, "psd");
-    assert_eq!(tables[0].rows.len(), r.psd.q.len());
-    let text = tables[0].to_text();
-    assert!(
-        text.contains("12 × 16") && text.contains("plane") && text.contains("hann"),
-        "{text}"
-    );
-    let json = serde_json::to_value(&r).unwrap();
-    for key in [
-        "shape",
-        "pixel_size",
-        "rms_height",
-        "rms_slope",
-        "rms_curvature",
-        "hurst",
-        "hurst_error",
-        "q_min",
-        "q_max",
-        "psd",
-    ] {
-        assert!(json.get(key).is_some(), "JSON key {key}");
-    }
-    assert_eq!(json["psd"]["q"].as_array().unwrap().len(), r.psd.q.len());
-    assert_eq!(json["detrend"], "plane");
-    assert_eq!(json["layout"], "map");
-}

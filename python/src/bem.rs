@@ -9,8 +9,8 @@ use persson::bem::rough::{self, RoughOptions, SurfaceSource};
 use persson::bem::surface::{synthesize as synth, Surface};
 use persson::bem::{check_memory, Boundary, Control, Operator, Options, Solver};
 use persson::error::check;
-use persson::scene::BoundaryName;
-use persson::validation::{self, ComparisonConfig, SweepSettings, UserData, UserHistogram};
+use persson_studies::scene::BoundaryName;
+use persson_studies::validation::{self, ComparisonConfig, SweepSettings, UserData, UserHistogram};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -194,7 +194,7 @@ fn bem_rough<'py>(
         }
     }
     .map_err(err)?;
-    to_dict_warned(py, &r, &persson::warning::of_rough(&r))
+    to_dict_warned(py, &r, &persson_studies::warning::of_rough(&r))
 }
 
 /// `persson bem hertz --json`: the BEM against the Hertz closed form (a

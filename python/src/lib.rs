@@ -48,14 +48,14 @@ pub(crate) fn to_dict<'py, T: Serialize>(
 pub(crate) fn to_dict_warned<'py, T: Serialize>(
     py: Python<'py>,
     report: &T,
-    warnings: &[persson::Warning],
+    warnings: &[persson_studies::Warning],
 ) -> PyResult<Bound<'py, PyAny>> {
     let category = py.get_type::<pyo3::exceptions::PyUserWarning>();
     for w in warnings {
         let text = std::ffi::CString::new(w.to_string()).map_err(|e| value_error(e.to_string()))?;
         PyErr::warn(py, category.as_any(), &text, 2)?;
     }
-    to_dict(py, &persson::warning::Warned::new(report, warnings))
+    to_dict(py, &persson_studies::warning::Warned::new(report, warnings))
 }
 
 /// A value of a closed set (theory, boundary, start, convention, detrend,

@@ -4,12 +4,12 @@
 use std::path::{Path, PathBuf};
 
 use numpy::IntoPyArray;
-use persson::scene::{
+use persson::separation::Separation;
+use persson::stress::{Start, TabulatedStart};
+use persson_studies::scene::{
     run, AreaOutput, BallSpec, CylinderSpec, MagnificationOutput, Scene, SeparationOutput,
     StartName, StressOutput, TheoriesOutput, TheoryName, TheorySpec,
 };
-use persson::separation::Separation;
-use persson::stress::{Start, TabulatedStart};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 

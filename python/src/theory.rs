@@ -4,8 +4,8 @@ use std::collections::HashMap;
 
 use persson::corrected::{self, Theory};
 use persson::kappa::Kappa;
-use persson::scene::{MaterialSpec, TheoryName, TheorySpec};
 use persson::theory::{contact_fraction, Persson};
+use persson_studies::scene::{MaterialSpec, TheoryName, TheorySpec};
 use pyo3::prelude::*;
 
 use crate::arrays::{broadcast, floats, output};

@@ -29,7 +29,6 @@ use super::kernel::{Boundary, Operator};
 use super::solver::{Control, Iteration, Options, Solver};
 use crate::error::{check, Error, Result};
 use crate::reference;
-use crate::table::{Table, Tabulate};
 
 /// Hertz contact radius `a = (3FR/(4E*))^{1/3}` (unit of R); see
 /// [`crate::reference::Ball`].
@@ -477,57 +476,6 @@ pub fn plastic_disc(
         nominal_pressure: case.mean_pressure(),
         rows,
     })
-}
-
-impl Tabulate for PlasticDiscReport {
-    fn tables(&self) -> Vec<Table> {
-        let mut t = Table::new(
-            "bem_hertz_plastic",
-            format!(
-                "Hertz ball with a yield stress (FFT-BEM, {} boundary): plastic disc p = σY of radius c",
-                self.boundary.name(),
-            ),
-        )
-        .scalar("radius", "R", self.radius)
-        .scalar("contact_modulus", "E*", self.contact_modulus)
-        .scalar("yield_stress", "σY", self.yield_stress)
-        .scalar("yield_ratio", "σY/p₀_H", self.yield_ratio)
-        .scalar("hertz_peak_pressure", "p₀_H", self.hertz_peak_pressure)
-        .scalar("nominal_pressure", "σ0 = F/L²", self.nominal_pressure)
-        .scalar("hertz_contact_radius", "a_H", self.hertz_contact_radius)
-        .scalar("tolerance", "tolerance ε", self.tolerance)
-        .column("grid", "N")
-        .column_digits("plastic_radius_ratio", "c/a_H", 5)
-        .column_digits("plastic_radius_change", "Δc (previous N)", 2)
-        .column("contact_radius", "a")
-        .column("approach", "δ")
-        .column("contact_fraction", "A/A0")
-        .column("elastic_fraction", "A_el/A0")
-        .column("plastic_fraction", "A_pl/A0")
-        .column("plastic_displacement_mean", "u_pl mean")
-        .column("plastic_displacement_max", "u_pl max")
-        .column("iterations", "iterations")
-        .column_digits("residual", "residual", 2)
-        .column_digits("seconds", "time (s)", 3);
-        for r in &self.rows {
-            t.push(vec![
-                r.grid.into(),
-                r.plastic_radius_ratio.into(),
-                r.plastic_radius_change.into(),
-                r.contact_radius.into(),
-                r.approach.into(),
-                r.contact_fraction.into(),
-                r.elastic_fraction.into(),
-                r.plastic_fraction.into(),
-                r.plastic_displacement_mean.into(),
-                r.plastic_displacement_max.into(),
-                r.iterations.into(),
-                r.residual.into(),
-                r.seconds.into(),
-            ]);
-        }
-        vec![t]
-    }
 }
 
 #[cfg(test)]

@@ -35,7 +35,7 @@
 //! # Ok(()) }
 //! ```
 
-pub(crate) mod fft;
+pub mod fft;
 pub mod hertz;
 pub mod histogram;
 pub mod kernel;

@@ -24,8 +24,8 @@ mod tabulated;
 pub use convention::Convention;
 pub use function::FnSpectrum;
 pub use self_affine::{Amplitude, SelfAffine};
-pub(crate) use tabulated::parse_columns;
 pub use tabulated::Tabulated;
+pub use tabulated::{parse_columns, Rows};
 
 use crate::error::{Error, Result};
 use crate::quad::Estimate;

@@ -224,11 +224,11 @@ fn at_line(e: Error, path: &Path, lines: &[usize]) -> Error {
 }
 
 /// Parsed rows `(x, y)` and the 1-based file line of each.
-pub(crate) type Rows = (Vec<(f64, f64)>, Vec<usize>);
+pub type Rows = (Vec<(f64, f64)>, Vec<usize>);
 
 /// Parse rows of two numbers named `names` (used in messages); returns the
 /// points and their 1-based lines.
-pub(crate) fn parse_columns(path: &Path, text: &str, names: [&str; 2]) -> Result<Rows> {
+pub fn parse_columns(path: &Path, text: &str, names: [&str; 2]) -> Result<Rows> {
     let mut points = Vec::new();
     let mut lines = Vec::new();
     let mut first = true;

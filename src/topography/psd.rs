@@ -157,7 +157,7 @@ impl Psd {
     /// [`Convention::Persson`] reads back to the same points. Comment lines
     /// (`#`) state the convention and the band.
     pub fn to_csv(&self) -> String {
-        use crate::table::csv_number as num;
+        use crate::io::csv_number as num;
         let mut s = String::new();
         s.push_str(
             "# isotropic power spectrum, Persson's normalisation: q (1/m, angular), c (m^4)\n",
