@@ -117,6 +117,7 @@
 //! | [`kappa`] | κ of the low-load law A/A0 = κ σ0/(E* h'_rms): Bush and Persson |
 //! | [`corrected`] | the corrected theories (Yang–Persson, Wang–Müser, Xu et al.) with their parameter γ |
 //! | [`stress`] | the stress distribution P(σ, ζ) for flat, Hertz, cylinder and tabulated starts, elastic or with a yield stress |
+//! | [`adhesion`] | adhesion: the Persson–Tosatti energy balance Δγ_eff(ζ), the adhesive stress diffusion with the moving detachment boundary (A/A0 down to tensile σ0, pull-off stress) and the Pastewka–Robbins criterion |
 //! | [`separation`] | the mean interfacial separation ū, the contact stiffness and the stored elastic energy |
 //! | `bem` | (feature `bem`) the FFT boundary-element solver: elastic kernels, surface synthesis, the Polonsky–Keer solver, Hertz validation |
 //! | [`validation`] | validation of numerical codes: continuum extrapolation, κ fits, scoring a user's data against the theories, and (feature `bem`) the theories against the BEM at several resolutions of one surface |
@@ -148,6 +149,7 @@
 
 #![warn(missing_docs)]
 
+pub mod adhesion;
 #[cfg(feature = "bem")]
 pub mod bem;
 pub mod corrected;
