@@ -43,9 +43,13 @@ const DEFAULT_TOLERANCE: f64 = 1e-6;
 /// Default nodes per unit of ln ζ of the coarser mesh.
 const DEFAULT_NODES: usize = 24;
 /// Default cap on the finer mesh's nodes.
-const DEFAULT_MAX_NODES: usize = 20_000;
+const DEFAULT_MAX_NODES: usize = 8_000;
 /// Lévy grading starts at t = d²/LEVY_START (density ~1e-11 of its peak).
 const LEVY_START: f64 = 120.0;
+/// Bisection steps locating a sign change of γ_eff in ln ζ.
+const ONSET_BISECTIONS: usize = 50;
+/// Grading towards a sign change of γ_eff stops at this fraction of a mesh step.
+const ONSET_FLOOR: f64 = 1e-6;
 /// Rounding allowance added to every estimate (the sums have ≤ 1e4 terms of size ≤ 1).
 const ROUNDING: f64 = 1e-14;
 
@@ -127,7 +131,7 @@ impl Mesh {
 
 impl<'a> AdhesiveContact<'a> {
     /// The solver with tolerance 1e-6 on the fractions, 24 nodes per unit of
-    /// ln ζ to start and at most 20 000 nodes.
+    /// ln ζ to start and at most 8 000 nodes.
     pub fn new(model: AdhesionModel<'a>) -> Self {
         AdhesiveContact {
             model,
@@ -303,9 +307,50 @@ impl<'a> AdhesiveContact<'a> {
                 v *= ratio;
             }
         }
+        self.grade_onsets(&mut u, span, n, density)?;
         u.sort_by(f64::total_cmp);
         u.dedup_by(|a, b| (*a - *b).abs() <= 1e-15 * b.abs().max(1e-300));
         self.nodes_at(&u)
+    }
+
+    /// Geometric grading on both sides of each ln ζ where γ_eff changes sign:
+    /// there σ_a grows like √(ζ − ζ_c) and dσ_a/dt is infinite for an instant.
+    fn grade_onsets(&self, u: &mut Vec<f64>, span: f64, n: usize, density: usize) -> Result<()> {
+        if span <= 0.0 {
+            return Ok(());
+        }
+        let gamma = |v: f64| -> Result<f64> { Ok(self.model.gamma_sigma(v.exp())?.0.value) };
+        let step = span / n as f64;
+        let ratio = (4.0 / density as f64).exp().max(1.01);
+        let mut prev = gamma(0.0)?;
+        for i in 1..=n {
+            let (lo0, hi0) = (step * (i - 1) as f64, step * i as f64);
+            let next = gamma(hi0)?;
+            if (prev > 0.0) != (next > 0.0) {
+                let (mut lo, mut hi) = (lo0, hi0);
+                for _ in 0..ONSET_BISECTIONS {
+                    let mid = 0.5 * (lo + hi);
+                    if (gamma(mid)? > 0.0) == (prev > 0.0) {
+                        lo = mid;
+                    } else {
+                        hi = mid;
+                    }
+                }
+                let c = 0.5 * (lo + hi);
+                let mut h = step;
+                while h > ONSET_FLOOR * step {
+                    for v in [c - h, c + h] {
+                        if v > 0.0 && v < span {
+                            u.push(v);
+                        }
+                    }
+                    h /= ratio;
+                }
+                u.push(c);
+            }
+            prev = next;
+        }
+        Ok(())
     }
 
     /// Boundary nodes at u = ln ζ.
