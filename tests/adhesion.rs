@@ -7,9 +7,7 @@
 //! Reference values: tests/reference/adhesion_energy_mpmath.py (30 digits) and
 //! tests/reference/adhesion_diffusion_fd.py (Crank–Nicolson, Richardson).
 
-use persson::adhesion::{
-    true_area_ratio, AdhesionModel, AdhesiveContact, AreaEnhancement, Flag,
-};
+use persson::adhesion::{true_area_ratio, AdhesionModel, AdhesiveContact, AreaEnhancement, Flag};
 use persson::spectrum::{Amplitude, SelfAffine, Spectrum};
 use persson::theory::Persson;
 
@@ -51,7 +49,11 @@ fn true_area_ratio_matches_mpmath() {
     ];
     for (x, exact) in table {
         let a = true_area_ratio(x).unwrap();
-        assert!(rel(a.value, exact) < ENERGY_TOL, "{x}: {} vs {exact}", a.value);
+        assert!(
+            rel(a.value, exact) < ENERGY_TOL,
+            "{x}: {} vs {exact}",
+            a.value
+        );
         assert!((a.value - exact).abs() <= a.error, "{x}: bound {}", a.error);
     }
 }
@@ -62,15 +64,39 @@ fn energy_terms_match_mpmath() {
     let s = test_spectrum();
     let m = AdhesionModel::new(&s, 1.0, 0.01).unwrap();
     let table = [
-        (1.5, 3.191_782_163_008_749_858_6e-4, 1.000_818_275_079_176_509_9),
-        (2.0, 9.407_357_954_131_052_214_6e-4, 1.003_014_732_014_655_214_6),
-        (10.0, 4.269_699_880_940_366_358_7e-3, 1.031_221_801_774_719_343_6),
-        (100.0, 5.802_268_895_153_539_636_6e-3, 1.113_169_262_495_293_644_8),
+        (
+            1.5,
+            3.191_782_163_008_749_858_6e-4,
+            1.000_818_275_079_176_509_9,
+        ),
+        (
+            2.0,
+            9.407_357_954_131_052_214_6e-4,
+            1.003_014_732_014_655_214_6,
+        ),
+        (
+            10.0,
+            4.269_699_880_940_366_358_7e-3,
+            1.031_221_801_774_719_343_6,
+        ),
+        (
+            100.0,
+            5.802_268_895_153_539_636_6e-3,
+            1.113_169_262_495_293_644_8,
+        ),
     ];
     for (z, u, a) in table {
         let p = m.energy_point(z).unwrap();
-        assert!(rel(p.full_contact_energy, u) < ENERGY_TOL, "{z}: {}", p.full_contact_energy);
-        assert!(rel(p.true_area_ratio, a) < ENERGY_TOL, "{z}: {}", p.true_area_ratio);
+        assert!(
+            rel(p.full_contact_energy, u) < ENERGY_TOL,
+            "{z}: {}",
+            p.full_contact_energy
+        );
+        assert!(
+            rel(p.true_area_ratio, a) < ENERGY_TOL,
+            "{z}: {}",
+            p.true_area_ratio
+        );
         let dg_eff = 0.01 * a - u;
         assert!(
             (p.effective_interfacial_energy - dg_eff).abs() < ENERGY_TOL * 0.01 * a,
@@ -81,14 +107,34 @@ fn energy_terms_match_mpmath() {
     let s = rubber_spectrum();
     let m = AdhesionModel::new(&s, 1e6, 0.05).unwrap();
     let table = [
-        (10.0, 2.227_585_384_948_502_252_6e-2, 1.003_333_313_781_050_392_7),
-        (1e3, 1.267_320_224_700_807_507_7e-1, 1.158_279_512_214_218_232_2),
-        (1e4, 1.319_996_043_913_366_116_7e-1, 1.378_936_078_070_656_053),
+        (
+            10.0,
+            2.227_585_384_948_502_252_6e-2,
+            1.003_333_313_781_050_392_7,
+        ),
+        (
+            1e3,
+            1.267_320_224_700_807_507_7e-1,
+            1.158_279_512_214_218_232_2,
+        ),
+        (
+            1e4,
+            1.319_996_043_913_366_116_7e-1,
+            1.378_936_078_070_656_053,
+        ),
     ];
     for (z, u, a) in table {
         let p = m.energy_point(z).unwrap();
-        assert!(rel(p.full_contact_energy, u) < ENERGY_TOL, "{z}: {}", p.full_contact_energy);
-        assert!(rel(p.true_area_ratio, a) < ENERGY_TOL, "{z}: {}", p.true_area_ratio);
+        assert!(
+            rel(p.full_contact_energy, u) < ENERGY_TOL,
+            "{z}: {}",
+            p.full_contact_energy
+        );
+        assert!(
+            rel(p.true_area_ratio, a) < ENERGY_TOL,
+            "{z}: {}",
+            p.true_area_ratio
+        );
     }
 }
 
@@ -150,10 +196,38 @@ fn zero_work_of_adhesion_reproduces_the_non_adhesive_area() {
 fn adhesive_area_matches_the_finite_difference_reference() {
     // (Δγ, σ0, ζ, A/A0, tensile, carried): adhesion_diffusion_fd.py
     let table = [
-        (0.01, 0.05, 100.0, 0.976_892_325_966_274_1, 0.401_858_816_816_994_9, 0.055_151_056_231_873_32),
-        (0.01, 0.0, 100.0, 0.911_543_889_918_909_9, 0.432_425_532_871_708_9, 0.015_758_443_638_036_985),
-        (0.01, -0.03, 100.0, 0.802_225_742_611_548_8, 0.404_114_609_673_612_7, -0.000_410_796_156_946_811_34),
-        (0.01, 0.05, 10.0, 0.980_220_249_254_723_6, 0.327_729_562_560_086_23, 0.053_834_245_982_359_89),
+        (
+            0.01,
+            0.05,
+            100.0,
+            0.976_892_325_966_274_1,
+            0.401_858_816_816_994_9,
+            0.055_151_056_231_873_32,
+        ),
+        (
+            0.01,
+            0.0,
+            100.0,
+            0.911_543_889_918_909_9,
+            0.432_425_532_871_708_9,
+            0.015_758_443_638_036_985,
+        ),
+        (
+            0.01,
+            -0.03,
+            100.0,
+            0.802_225_742_611_548_8,
+            0.404_114_609_673_612_7,
+            -0.000_410_796_156_946_811_34,
+        ),
+        (
+            0.01,
+            0.05,
+            10.0,
+            0.980_220_249_254_723_6,
+            0.327_729_562_560_086_23,
+            0.053_834_245_982_359_89,
+        ),
     ];
     let s = test_spectrum();
     for (dg, sigma0, zeta, a, at, l) in table {
@@ -167,8 +241,16 @@ fn adhesive_area_matches_the_finite_difference_reference() {
             "σ0 = {sigma0}, ζ = {zeta}: {} vs {a}",
             p.contact_fraction
         );
-        assert!((p.tensile_fraction - at).abs() < FD_TENSILE_TOL, "{}", p.tensile_fraction);
-        assert!((p.carried_pressure - l).abs() < FD_CARRIED_TOL, "{}", p.carried_pressure);
+        assert!(
+            (p.tensile_fraction - at).abs() < FD_TENSILE_TOL,
+            "{}",
+            p.tensile_fraction
+        );
+        assert!(
+            (p.carried_pressure - l).abs() < FD_CARRIED_TOL,
+            "{}",
+            p.carried_pressure
+        );
     }
 }
 
@@ -212,11 +294,19 @@ fn normalisation_and_load_balance_hold() {
                 // ∫P dσ + detached = 1: two independent sums of one solution
                 let norm = p.contact_fraction + p.non_contact_fraction - 1.0;
                 let bound = p.contact_fraction_error_bound + p.non_contact_fraction_error_bound;
-                assert!(norm.abs() <= bound, "{dg} {sigma0} {}: {norm:e} > {bound:e}", p.zeta);
+                assert!(
+                    norm.abs() <= bound,
+                    "{dg} {sigma0} {}: {norm:e} > {bound:e}",
+                    p.zeta
+                );
                 // σ0 = ∫σP dσ − ∫σ_a dA_detached (the tensile part released)
                 let load = p.carried_pressure - p.released_tension - sigma0;
                 let bound = p.carried_pressure_error_bound + p.released_tension_error_bound;
-                assert!(load.abs() <= bound, "{dg} {sigma0} {}: {load:e} > {bound:e}", p.zeta);
+                assert!(
+                    load.abs() <= bound,
+                    "{dg} {sigma0} {}: {load:e} > {bound:e}",
+                    p.zeta
+                );
                 assert!(p.tensile_fraction >= -p.tensile_fraction_error_bound);
                 assert!(p.tensile_fraction <= p.contact_fraction + p.contact_fraction_error_bound);
             }
@@ -230,7 +320,11 @@ fn pull_off_stress_and_tensile_branch() {
     let m = AdhesionModel::new(&s, 1.0, 0.01).unwrap();
     let sp = m.pull_off_stress().unwrap();
     // σ_p = √(γ_eff(1) E* q_l), mpmath: γ_eff(1) = 0.0053294237297993968118
-    assert!(rel(sp.value, 0.073_002_902_201_209_759_93) < ENERGY_TOL, "{}", sp.value);
+    assert!(
+        rel(sp.value, 0.073_002_902_201_209_759_93) < ENERGY_TOL,
+        "{}",
+        sp.value
+    );
     let c = AdhesiveContact::new(m);
     // A/A0 at full magnification falls monotonically to 0 as σ0 → −σ_p
     let mut last = f64::INFINITY;
@@ -256,7 +350,11 @@ fn pull_off_stress_and_tensile_branch() {
     let theory = Persson::new(&s, 1.0).unwrap();
     let p = AdhesiveContact::new(weak).point(0.05, 100.0).unwrap();
     let a0 = theory.point(100.0, 0.05).unwrap().contact_fraction;
-    assert!(p.contact_fraction > 3.0 * a0, "{} vs {a0}", p.contact_fraction);
+    assert!(
+        p.contact_fraction > 3.0 * a0,
+        "{} vs {a0}",
+        p.contact_fraction
+    );
 }
 
 #[test]
@@ -278,7 +376,12 @@ fn pastewka_robbins_beside_persson_tosatti() {
     assert!(cmp.persson_tosatti); // Δγ = 0.01 > 0.0052
     assert_eq!(cmp.pastewka_robbins, pr.sticky);
     assert_eq!(cmp.agree, cmp.persson_tosatti == cmp.pastewka_robbins);
-    assert!(rel(cmp.persson_tosatti_threshold, 5.802_268_895_153_539_636_6e-3 / 1.113_169_262_495_293_644_8) < ENERGY_TOL);
+    assert!(
+        rel(
+            cmp.persson_tosatti_threshold,
+            5.802_268_895_153_539_636_6e-3 / 1.113_169_262_495_293_644_8
+        ) < ENERGY_TOL
+    );
 }
 
 #[test]
@@ -288,16 +391,34 @@ fn bad_input_names_the_field() {
         let e = r.err().unwrap_or_else(|| panic!("{name}: no error"));
         assert!(e.to_string().contains(name), "{name}: {e}");
     };
-    expect(AdhesionModel::new(&s, 1.0, -0.01).map(|_| ()), "work_of_adhesion");
-    expect(AdhesionModel::new(&s, 1.0, f64::NAN).map(|_| ()), "work_of_adhesion");
-    expect(AdhesionModel::new(&s, f64::NAN, 0.01).map(|_| ()), "contact_modulus");
-    expect(AdhesionModel::new(&s, 0.0, 0.01).map(|_| ()), "contact_modulus");
+    expect(
+        AdhesionModel::new(&s, 1.0, -0.01).map(|_| ()),
+        "work_of_adhesion",
+    );
+    expect(
+        AdhesionModel::new(&s, 1.0, f64::NAN).map(|_| ()),
+        "work_of_adhesion",
+    );
+    expect(
+        AdhesionModel::new(&s, f64::NAN, 0.01).map(|_| ()),
+        "contact_modulus",
+    );
+    expect(
+        AdhesionModel::new(&s, 0.0, 0.01).map(|_| ()),
+        "contact_modulus",
+    );
     let m = AdhesionModel::new(&s, 1.0, 0.01).unwrap();
-    expect(m.with_detachment_prefactor(-1.0).map(|_| ()), "detachment_prefactor");
+    expect(
+        m.with_detachment_prefactor(-1.0).map(|_| ()),
+        "detachment_prefactor",
+    );
     expect(m.pastewka_robbins(0.0).map(|_| ()), "adhesion_range");
     expect(m.pastewka_robbins(f64::NAN).map(|_| ()), "adhesion_range");
     expect(
-        AdhesionModel::new(&s, 1.0, 0.0).unwrap().pastewka_robbins(1e-3).map(|_| ()),
+        AdhesionModel::new(&s, 1.0, 0.0)
+            .unwrap()
+            .pastewka_robbins(1e-3)
+            .map(|_| ()),
         "work_of_adhesion",
     );
     expect(m.energy_point(0.5).map(|_| ()), "zeta");

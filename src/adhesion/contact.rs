@@ -39,13 +39,15 @@ use crate::error::{check, Error, Result};
 use crate::quad::Estimate;
 
 /// Default tolerance of the fractions.
-const DEFAULT_TOLERANCE: f64 = 1e-6;
+const DEFAULT_TOLERANCE: f64 = 1e-5;
 /// Default nodes per unit of ln ζ of the coarser mesh.
 const DEFAULT_NODES: usize = 24;
 /// Default cap on the finer mesh's nodes.
 const DEFAULT_MAX_NODES: usize = 8_000;
 /// Lévy grading starts at t = d²/LEVY_START (density ~1e-11 of its peak).
 const LEVY_START: f64 = 120.0;
+/// ln of the grading ratio times the mesh density (r = e^{1/24} at 24 nodes per e-fold).
+const LEVY_GRADING: f64 = 1.0;
 /// Bisection steps locating a sign change of γ_eff in ln ζ.
 const ONSET_BISECTIONS: usize = 50;
 /// Grading towards a sign change of γ_eff stops at this fraction of a mesh step.
@@ -130,7 +132,7 @@ impl Mesh {
 }
 
 impl<'a> AdhesiveContact<'a> {
-    /// The solver with tolerance 1e-6 on the fractions, 24 nodes per unit of
+    /// The solver with tolerance 1e-5 on the fractions, 24 nodes per unit of
     /// ln ζ to start and at most 8 000 nodes.
     pub fn new(model: AdhesionModel<'a>) -> Self {
         AdhesiveContact {
@@ -164,7 +166,11 @@ impl<'a> AdhesiveContact<'a> {
             ));
         }
         if !(16..=100_000).contains(&max_nodes) {
-            return Err(Error::invalid("max_nodes", max_nodes as f64, "from 16 to 1e5"));
+            return Err(Error::invalid(
+                "max_nodes",
+                max_nodes as f64,
+                "from 16 to 1e5",
+            ));
         }
         self.nodes_per_e_fold = nodes_per_e_fold;
         self.max_nodes = max_nodes;
@@ -208,7 +214,11 @@ impl<'a> AdhesiveContact<'a> {
         zetas: &[f64],
     ) -> Result<Vec<AdhesivePoint>> {
         if !nominal_pressure.is_finite() {
-            return Err(Error::invalid("nominal_pressure", nominal_pressure, "finite"));
+            return Err(Error::invalid(
+                "nominal_pressure",
+                nominal_pressure,
+                "finite",
+            ));
         }
         let zetas = zetas
             .iter()
@@ -266,7 +276,10 @@ impl<'a> AdhesiveContact<'a> {
             let points = self.compare(sigma0, zetas, pull, &coarse, &fine)?;
             let worst = points
                 .iter()
-                .map(|p| p.contact_fraction_error_bound.max(p.tensile_fraction_error_bound))
+                .map(|p| {
+                    p.contact_fraction_error_bound
+                        .max(p.tensile_fraction_error_bound)
+                })
                 .fold(0.0, f64::max);
             if worst <= self.tolerance {
                 return Ok(points);
@@ -289,28 +302,50 @@ impl<'a> AdhesiveContact<'a> {
     fn mesh(&self, sigma0: f64, zetas: &[f64], density: usize, pull: f64) -> Result<Mesh> {
         let top = zetas.iter().copied().fold(1.0, f64::max);
         let span = top.ln();
-        let n = ((density as f64 * span).ceil() as usize).max(4);
-        let mut u: Vec<f64> = (0..=n).map(|i| span * i as f64 / n as f64).collect();
-        u.extend(zetas.iter().map(|z| z.ln()));
-        // Lévy grading: t ≈ t′(0) u near ζ = 1
+        // at least `density` intervals however short the span (ζ near 1)
+        let n = ((density as f64 * span).ceil() as usize).max(density);
+        let step = span / n as f64;
+        // Geometric grading from Lévy's time scale of the start, t = d²/120,
+        // until its steps reach the uniform step: the detachment rate varies
+        // on the scale of t itself there.
         let d = sigma0 + pull;
-        let q_l = self.model.spectrum.q_min();
-        let e = self.model.contact_modulus;
-        let slope = 0.25 * std::f64::consts::PI * e * e * q_l.powi(4) * self.model.spectrum.c(q_l);
-        let u1 = span / n as f64;
-        if slope > 0.0 && span > 0.0 {
-            let u_min = d * d / (LEVY_START * slope);
-            let ratio = (4.0 / density as f64).exp().max(1.01);
-            let mut v = u_min;
-            while v < u1 {
-                u.push(v);
-                v *= ratio;
-            }
+        let ratio = (LEVY_GRADING / density as f64).exp();
+        let graded_to = (step / (ratio - 1.0)).min(span);
+        let start = self
+            .u_at_time(d * d / LEVY_START, span)?
+            .min(graded_to / ratio);
+        let mut u: Vec<f64> = (0..=n)
+            .map(|i| span * i as f64 / n as f64)
+            .filter(|&v| v < start || v >= graded_to)
+            .collect();
+        let mut v = start;
+        while v > 0.0 && v < graded_to {
+            u.push(v);
+            v *= ratio;
         }
+        u.extend(zetas.iter().map(|z| z.ln()));
         self.grade_onsets(&mut u, span, n, density)?;
         u.sort_by(f64::total_cmp);
         u.dedup_by(|a, b| (*a - *b).abs() <= 1e-15 * b.abs().max(1e-300));
         self.nodes_at(&u)
+    }
+
+    /// ln ζ where t(ζ) = `time` (bisection; `span` when t(ζ_end) < time).
+    fn u_at_time(&self, time: f64, span: f64) -> Result<f64> {
+        let t = |v: f64| -> Result<f64> { Ok(self.model.boundary_node(v.exp())?.t) };
+        if t(span)? <= time {
+            return Ok(span);
+        }
+        let (mut lo, mut hi) = (0.0, span);
+        for _ in 0..ONSET_BISECTIONS {
+            let mid = 0.5 * (lo + hi);
+            if t(mid)? < time {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        Ok(lo)
     }
 
     /// Geometric grading on both sides of each ln ζ where γ_eff changes sign:
@@ -358,7 +393,10 @@ impl<'a> AdhesiveContact<'a> {
         let top = self.model.zeta_max();
         let nodes = u
             .iter()
-            .map(|&v| self.model.boundary_node(if v == 0.0 { 1.0 } else { v.exp().min(top) }))
+            .map(|&v| {
+                self.model
+                    .boundary_node(if v == 0.0 { 1.0 } else { v.exp().min(top) })
+            })
             .collect::<Result<Vec<_>>>()?;
         Ok(Mesh { nodes })
     }

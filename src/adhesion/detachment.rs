@@ -91,8 +91,9 @@ impl AdhesionModel<'_> {
         let a = self.area(xi2.value);
         let dg = self.work_of_adhesion;
         let g = dg * a.value - u.value;
-        let g_err =
-            dg * (a.error + 0.5 * xi2.error) + u.error + 2.0 * f64::EPSILON * (dg * a.value + u.value);
+        let g_err = dg * (a.error + 0.5 * xi2.error)
+            + u.error
+            + 2.0 * f64::EPSILON * (dg * a.value + u.value);
         let gamma = Estimate {
             value: g,
             error: g_err,
@@ -201,8 +202,11 @@ mod tests {
                     m.boundary_node(z + h).unwrap(),
                 );
                 let fd = (hi.b - lo.b) / (hi.t - lo.t);
-                eprintln!("dg={dg} z={z}: db {} fd {}", mid.db, fd);
-                assert!((fd - mid.db).abs() <= 1e-5 * fd.abs().max(1e-8), "{fd} {}", mid.db);
+                assert!(
+                    (fd - mid.db).abs() <= 1e-5 * fd.abs().max(1e-8),
+                    "{fd} {}",
+                    mid.db
+                );
             }
         }
     }

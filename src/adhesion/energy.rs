@@ -124,8 +124,7 @@ impl AdhesionModel<'_> {
         let a_err = a.error + 0.5 * xi2.error;
         let dg = self.work_of_adhesion;
         let value = dg * a.value - u.value;
-        let error =
-            dg * a_err + u.error + 2.0 * f64::EPSILON * (dg * a.value + u.value).abs();
+        let error = dg * a_err + u.error + 2.0 * f64::EPSILON * (dg * a.value + u.value).abs();
         Ok(EnergyPoint {
             zeta,
             full_contact_energy: u.value,
@@ -163,8 +162,7 @@ impl AdhesionModel<'_> {
             points,
             sticky: top.sticky,
             effective_interfacial_energy: top.effective_interfacial_energy,
-            effective_interfacial_energy_error_bound: top
-                .effective_interfacial_energy_error_bound,
+            effective_interfacial_energy_error_bound: top.effective_interfacial_energy_error_bound,
             stickiness_transitions: self.transitions()?,
             threshold_work_of_adhesion: top.full_contact_energy / top.true_area_ratio,
         })
@@ -173,7 +171,9 @@ impl AdhesionModel<'_> {
     /// ζ where Δγ_eff changes sign.
     fn transitions(&self) -> Result<Vec<f64>> {
         let ln_top = self.zeta_max().ln();
-        let n = ((ln_top / std::f64::consts::LN_10) * SCAN_PER_DECADE).ceil().max(8.0) as usize;
+        let n = ((ln_top / std::f64::consts::LN_10) * SCAN_PER_DECADE)
+            .ceil()
+            .max(8.0) as usize;
         let f = |u: f64| -> Result<f64> {
             Ok(self
                 .energy_point(u.exp().min(self.zeta_max()))?

@@ -100,7 +100,7 @@ mod model;
 mod moving;
 mod pastewka_robbins;
 
-pub use contact::{AdhesivePoint, AdhesiveContact, Flag};
+pub use contact::{AdhesiveContact, AdhesivePoint, Flag};
 pub use detachment::DetachmentPoint;
 pub use energy::{true_area_ratio, EnergyPoint, Stickiness};
 pub use model::{AdhesionModel, AreaEnhancement};
