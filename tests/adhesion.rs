@@ -433,3 +433,29 @@ fn bad_input_names_the_field() {
     expect(c.with_nodes(1, 100).map(|_| ()), "nodes_per_e_fold");
     expect(c.with_nodes(8, 4).map(|_| ()), "max_nodes");
 }
+
+#[test]
+fn at_the_stickiness_threshold_the_solver_stays_finite() {
+    // Δγ at the threshold: γ_eff(1) = 0 to rounding, σ_a(ζ) starts from 0 at ζ = 1
+    let s = test_spectrum();
+    let thr = AdhesionModel::new(&s, 1.0, 1.0)
+        .unwrap()
+        .stickiness(&[])
+        .unwrap()
+        .threshold_work_of_adhesion;
+    for k in [1.0 - 1e-12, 1.0, 1.0 + 1e-12] {
+        let m = AdhesionModel::new(&s, 1.0, k * thr).unwrap();
+        let p = AdhesiveContact::new(m).point(0.05, 100.0).unwrap();
+        assert!(p.contact_fraction.is_finite() && p.contact_fraction_error_bound.is_finite());
+        let a0 = Persson::new(&s, 1.0)
+            .unwrap()
+            .point(100.0, 0.05)
+            .unwrap()
+            .contact_fraction;
+        assert!(
+            p.contact_fraction > a0 && p.contact_fraction < 1.0,
+            "{k}: {}",
+            p.contact_fraction
+        );
+    }
+}

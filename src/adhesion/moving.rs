@@ -83,6 +83,9 @@ pub(crate) fn solve(t: &[f64], b: &[f64], db: &[f64], x0: f64, at: &[usize]) -> 
     let mut g = vec![0.0; n];
     for k in 1..n {
         let (tk, bk, half_db) = (t[k], b[k], 0.5 * db[k]);
+        if tk <= 0.0 {
+            continue; // still at t = 0 (ζ rounded to 1): g = 0
+        }
         let d0 = bk - x0;
         let psi0 = heat(d0, tk) * (half_db - d0 / (2.0 * tk));
         let mut s = 0.0;
@@ -91,6 +94,9 @@ pub(crate) fn solve(t: &[f64], b: &[f64], db: &[f64], x0: f64, at: &[usize]) -> 
                 continue;
             }
             let dt = tk - t[j];
+            if dt <= 0.0 {
+                continue; // a repeated time: the diagonal, where Ψ = 0
+            }
             let dx = bk - b[j];
             s += w[j] * g[j] * heat(dx, dt) * (half_db - dx / (2.0 * dt));
         }
@@ -116,7 +122,7 @@ pub(crate) fn solve(t: &[f64], b: &[f64], db: &[f64], x0: f64, at: &[usize]) -> 
 
 /// [A, A_t, D, L, released] at node k from g.
 fn outputs_at(t: &[f64], b: &[f64], x0: f64, g: &[f64], w: &[f64], k: usize) -> [f64; 5] {
-    if k == 0 {
+    if k == 0 || t[k] <= 0.0 {
         return [1.0, if x0 < 0.0 { 1.0 } else { 0.0 }, 0.0, x0, 0.0];
     }
     let (tk, bk) = (t[k], b[k]);
@@ -129,6 +135,12 @@ fn outputs_at(t: &[f64], b: &[f64], x0: f64, g: &[f64], w: &[f64], k: usize) -> 
         let wj = w[j] * g[j];
         det += wj;
         rel -= wj * b[j];
+        if tk - t[j] <= 0.0 {
+            // a repeated time: the limits of the last node below
+            at -= if bk < 0.0 { 0.5 * wj } else { 0.0 };
+            carried -= wj * 0.5 * bk;
+            continue;
+        }
         let s = 2.0 * (tk - t[j]).sqrt();
         let u = (bk - b[j]) / s;
         a += wj * erf(u);
