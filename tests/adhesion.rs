@@ -6,6 +6,7 @@
 //!
 //! Reference values: tests/reference/adhesion_energy_mpmath.py (30 digits) and
 //! tests/reference/adhesion_diffusion_fd.py (Crank–Nicolson, Richardson).
+#![allow(clippy::excessive_precision)] // reference values keep the digits mpmath and the script printed
 
 use persson::adhesion::{true_area_ratio, AdhesionModel, AdhesiveContact, AreaEnhancement, Flag};
 use persson::spectrum::{Amplitude, SelfAffine, Spectrum};
