@@ -30,7 +30,9 @@ fn point_compressive() -> f64 {
     let s = test_spectrum();
     let m = AdhesionModel::new(&s, 1.0, 0.01).unwrap();
     let c = AdhesiveContact::new(m);
-    c.point(divan::black_box(0.05), 100.0).unwrap().contact_fraction
+    c.point(divan::black_box(0.05), 100.0)
+        .unwrap()
+        .contact_fraction
 }
 
 /// A/A0 at σ0 = 0 (the adhesive contact under no load), tolerance 1e-5.
@@ -39,7 +41,9 @@ fn point_zero_load() -> f64 {
     let s = test_spectrum();
     let m = AdhesionModel::new(&s, 1.0, 0.01).unwrap();
     let c = AdhesiveContact::new(m);
-    c.point(divan::black_box(0.0), 100.0).unwrap().contact_fraction
+    c.point(divan::black_box(0.0), 100.0)
+        .unwrap()
+        .contact_fraction
 }
 
 /// A/A0 at σ0 = −0.99 σ_p (close to pull-off), tolerance 1e-5.
@@ -60,5 +64,7 @@ fn point_rubber_zero_load() -> f64 {
     let s = SelfAffine::new(1e4, 1e5, 1e8, 0.8, Amplitude::RmsSlope(1.0)).unwrap();
     let m = AdhesionModel::new(&s, 1e6, 0.2).unwrap();
     let c = AdhesiveContact::new(m);
-    c.point(divan::black_box(0.0), 1e4).unwrap().contact_fraction
+    c.point(divan::black_box(0.0), 1e4)
+        .unwrap()
+        .contact_fraction
 }

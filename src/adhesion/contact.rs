@@ -15,11 +15,15 @@
 //! g = −dA/dt (Buonocore, Nobile & Ricciardi, Adv. Appl. Probab. 19, 784
 //! (1987)), whose kernel vanishes where σ_a is constant, so that Δγ = 0
 //! returns erf(1/(2√G)) (the image solution of [`crate::stress`]) to rounding.
-//! Product trapezoidal rule on a mesh uniform in ln ζ (`nodes_per_e_fold`
-//! nodes per unit of ln ζ) plus, when the start σ0 lies close to the boundary
-//! (d = σ0 + σ_a(1) small), geometric grading down to t ≈ d²/120, where
-//! Lévy's first-passage density d e^{−d²/4t}/√(4π t³) of the start is still
-//! ~1e-11 of its peak. O(N²) in the N nodes.
+//! Product trapezoidal rule (O(N²) in the N nodes) on a mesh in ln ζ:
+//! uniform with `nodes_per_e_fold` nodes per unit of ln ζ (at least that many
+//! however short the span), preceded by a geometric grading with ratio
+//! e^{1/nodes_per_e_fold} that starts where t(ζ) = d²/120 (d = σ0 + σ_a(1),
+//! the start's distance from the boundary; Lévy's first-passage density
+//! d e^{−d²/4t}/√(4π t³) is ~1e-11 of its peak there) and ends where its step
+//! reaches the uniform one, plus a geometric grading on both sides of every ζ
+//! where γ_eff changes sign (there σ_a grows like √(ζ − ζ_c)). The output ζ
+//! are mesh nodes.
 //!
 //! # Accuracy knob and error estimate
 //! Every point is solved on the mesh and on the mesh with every interval
