@@ -117,6 +117,7 @@
 //! | [`kappa`] | κ of the low-load law A/A0 = κ σ0/(E* h'_rms): Bush and Persson |
 //! | [`corrected`] | the corrected theories (Yang–Persson, Wang–Müser, Xu et al.) with their parameter γ |
 //! | [`stress`] | the stress distribution P(σ, ζ) for flat, Hertz, cylinder and tabulated starts, elastic or with a yield stress |
+//! | [`adhesion`] | adhesion: the Persson–Tosatti energy balance Δγ_eff(ζ), the adhesive stress diffusion with the moving detachment boundary (A/A0 down to tensile σ0, pull-off stress) and the Pastewka–Robbins criterion |
 //! | [`separation`] | the mean interfacial separation ū, the contact stiffness and the stored elastic energy |
 //! | `bem` | (feature `bem`) the FFT boundary-element solver: elastic kernels, surface synthesis, the Polonsky–Keer solver, Hertz validation |
 //! | [`error`] | the crate's [`Error`] and [`Result`]; [`Estimate`] is a value with its error bound, which many functions return |
@@ -142,6 +143,7 @@
 
 #![warn(missing_docs)]
 
+pub mod adhesion;
 #[cfg(feature = "bem")]
 pub mod bem;
 pub mod corrected;
