@@ -107,11 +107,29 @@ fn copy_dir(from: &Path, to: &Path) {
 /// This is the only test of this binary that depends on the working
 /// directory (it sets it to the scratch directory for trycmd, which runs the
 /// commands in the process's directory); the others use absolute paths.
+/// The scratch directory the commands run in; removed (and the working
+/// directory restored) when the test ends, also when it fails.
+struct Scratch {
+    dir: PathBuf,
+    root: PathBuf,
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::env::set_current_dir(&self.root);
+        let _ = std::fs::remove_dir_all(&self.dir);
+    }
+}
+
 #[test]
 fn commands_print_what_the_pages_show() {
     let root = root();
     let scratch = std::env::temp_dir().join(format!("persson-docs-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&scratch);
+    let _guard = Scratch {
+        dir: scratch.clone(),
+        root: root.clone(),
+    };
     copy_dir(&root.join("scenes"), &scratch.join("scenes"));
     copy_dir(
         &root.join("tests/reference/data"),
@@ -134,8 +152,6 @@ fn commands_print_what_the_pages_show() {
     // `trycmd=PAGE` filter left the README out).
     let filtered = std::env::args().any(|a| a.starts_with("trycmd="));
     if filtered && !scratch.join(FIGURE).exists() {
-        let _ = std::env::set_current_dir(&root);
-        let _ = std::fs::remove_dir_all(&scratch);
         return;
     }
     let drawn = read(&scratch.join(FIGURE));
@@ -143,8 +159,6 @@ fn commands_print_what_the_pages_show() {
     if std::env::var_os("TRYCMD").is_some_and(|v| v == "overwrite") {
         std::fs::write(&committed, &drawn).expect("write the README's figure");
     }
-    let _ = std::env::set_current_dir(&root);
-    let _ = std::fs::remove_dir_all(&scratch);
     assert!(
         drawn == std::fs::read_to_string(&committed).unwrap_or_default(),
         "{FIGURE} is not what the README's command draws: regenerate it with \
