@@ -1,13 +1,15 @@
 //! One name per quantity: the names table `src/names.md` is published
-//! verbatim in the README, and every JSON key the `persson` binary prints is a
-//! name of that table (or one of the few container keys allowed below).
+//! verbatim in the user guide (`docs/conventions.md`); every JSON key the
+//! `persson` binary prints is a name of that table (or one of the few
+//! container keys allowed below), which `crates/persson-cli/tests/names.rs`
+//! checks.
 #![cfg(feature = "bem")]
 
 use std::collections::BTreeSet;
 
 /// The one source of names.
 const NAMES: &str = include_str!("../src/names.md");
-const README: &str = include_str!("../README.md");
+const GUIDE: &str = include_str!("../docs/conventions.md");
 
 /// Keys that hold other values rather than name a quantity. Keep this list
 /// short: a quantity belongs in `src/names.md`, not here.
@@ -116,10 +118,10 @@ fn names_table_parses() {
 }
 
 #[test]
-fn readme_has_the_names_table() {
+fn guide_has_the_names_table() {
     let table = NAMES.trim();
     assert!(
-        README.contains(table),
-        "README.md must contain src/names.md verbatim (in its \"## Conventions\" section)"
+        GUIDE.contains(table),
+        "docs/conventions.md must contain src/names.md verbatim (in its \"## Names\" section)"
     );
 }

@@ -1,6 +1,7 @@
 //! One name per quantity: the names table `src/names.md` is published
-//! verbatim in the README, and every JSON key the `persson` binary prints is a
-//! name of that table (or one of the few container keys allowed below).
+//! verbatim in the user guide (`docs/conventions.md`), and every JSON key the
+//! `persson` binary prints is a name of that table (or one of the few
+//! container keys allowed below).
 #![cfg(feature = "bem")]
 
 mod common;

@@ -24,6 +24,10 @@
 
 #![warn(missing_docs)]
 
+// The README's and the guide's Rust examples, as doctests.
+#[cfg(all(doctest, feature = "bem", feature = "topography"))]
+mod guide;
+
 #[cfg(feature = "plot")]
 pub mod plot;
 pub mod report;
