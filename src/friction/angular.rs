@@ -143,6 +143,17 @@ impl AngularTable {
             vals[2][j] = v.loss_outside;
             vals[3][j] = v.modulus_squared_outside;
         }
+        if vals.iter().flatten().any(|v| !v.is_finite()) {
+            return Err(Error::NotConverged {
+                what: format!(
+                    "angular integrals of the master curve (not finite near w = {:e} rad/s)",
+                    a.exp()
+                ),
+                iterations: depth,
+                residual: f64::NAN,
+                tolerance: tol,
+            });
+        }
         let coef: [[f64; NODES]; 4] = std::array::from_fn(|f| coefficients(&vals[f]));
         let mut err: f64 = 0.0;
         for f in 0..4 {

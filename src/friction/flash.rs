@@ -54,7 +54,7 @@ impl Run<'_, '_> {
 
     /// The flash panel [a, a + h] (module docs); `ok = false` when Newton fails.
     pub(crate) fn panel_flash(&mut self, a: f64, h: f64, map: Map) -> PanelOut {
-        let nodes = Self::nodes(a, h, map);
+        let nodes = self.nodes(a, h, map);
         let c_q: [f64; NODES] = std::array::from_fn(|j| self.fr.spectrum.c(nodes[j].2));
         let h_q: [f64; NODES] = std::array::from_fn(|j| self.kernel(nodes[j].2));
         let mut out = PanelOut::default();

@@ -100,14 +100,6 @@ pub(crate) struct State {
     pub mu_out: f64,
 }
 
-/// Scales of the totals (from a coarse pre-pass) for the panel tolerances.
-#[derive(Clone, Copy, Default)]
-struct Scales {
-    mu: f64,
-    g: f64,
-    dt: f64,
-}
-
 /// One (v, T, σ0) calculation, isothermal or with the flash temperature.
 pub(crate) struct Run<'r, 'a> {
     pub fr: &'r Friction<'a>,
@@ -119,8 +111,6 @@ pub(crate) struct Run<'r, 'a> {
     pub heat_k: f64,
     pub x_lo: f64,
     length: f64,
-    scales: Scales,
-    adaptive: bool,
     pub state: State,
     decades: Vec<DecadeContribution>,
     profile: Vec<MagnificationPoint>,
@@ -144,8 +134,6 @@ impl<'r, 'a> Run<'r, 'a> {
             }),
             x_lo,
             length: fr.q1.ln() - x_lo,
-            scales: Scales::default(),
-            adaptive: false,
             state: State::default(),
             decades: Vec::new(),
             profile: Vec::new(),
@@ -196,12 +184,14 @@ impl<'r, 'a> Run<'r, 'a> {
         })
     }
 
-    /// Node positions of the panel [a, a + h]: (x, dx/dt, q).
-    pub fn nodes(a: f64, h: f64, map: Map) -> [(f64, f64, f64); NODES] {
+    /// Node positions of the panel [a, a + h]: (x, dx/dt, q), q clamped to
+    /// [q_l, q1] (e^{ln q} may round past the band, where C = 0).
+    pub fn nodes(&self, a: f64, h: f64, map: Map) -> [(f64, f64, f64); NODES] {
         let r = rule();
+        let (lo, hi) = (self.fr.spectrum.q_min(), self.fr.q1);
         std::array::from_fn(|j| {
             let (x, d) = map.at(a, h, r.t[j]);
-            (x, d, x.exp())
+            (x, d, x.exp().clamp(lo, hi))
         })
     }
 
@@ -211,7 +201,7 @@ impl<'r, 'a> Run<'r, 'a> {
         let f = self.c.factors;
         let mut out = PanelOut::default();
         let mut base = [Base::default(); NODES];
-        for (j, &(_, d, q)) in Self::nodes(a, h, map).iter().enumerate() {
+        for (j, &(_, d, q)) in self.nodes(a, h, map).iter().enumerate() {
             base[j] = self.base(q, self.fr.spectrum.c(q), 0.0, f);
             out.dxdt[j] = d;
             out.g[j] = base[j].g;
@@ -297,10 +287,8 @@ impl<'r, 'a> Run<'r, 'a> {
         out
     }
 
-    /// March over all panels; `adaptive` bisects on the error estimates,
-    /// otherwise only when the collocation equations fail.
-    fn march(&mut self, adaptive: bool) -> Result<()> {
-        self.adaptive = adaptive;
+    /// March over all panels, left to right.
+    fn march(&mut self) -> Result<()> {
         self.state = State {
             t: self.c.temperature,
             ..State::default()
@@ -350,7 +338,7 @@ impl<'r, 'a> Run<'r, 'a> {
             });
         }
         let e = self.estimates(&out, h);
-        let fine = out.ok && (!self.adaptive || e.within);
+        let fine = out.ok && e.within;
         if fine || !can_split {
             if !fine {
                 self.converged = false;
@@ -376,18 +364,9 @@ impl<'r, 'a> Run<'r, 'a> {
         });
     }
 
-    /// The coarse pre-pass (one panel per profile interval) for the scales,
-    /// then the adaptive march.
+    /// The adaptive march, then the result.
     pub fn solve(mut self) -> Result<FrictionResult> {
-        self.march(false)?;
-        self.scales = Scales {
-            mu: self.state.mu.abs(),
-            g: self.state.g.abs(),
-            dt: (self.state.t - self.c.temperature).abs(),
-        };
-        self.shift_extended = None;
-        self.omega_range = (f64::INFINITY, 0.0);
-        self.march(true)?;
+        self.march()?;
         self.result()
     }
 }
@@ -418,11 +397,14 @@ impl Run<'_, '_> {
         let e_g = (i_g - int(&out.g, &r.w8)).abs();
         let e_m = (i_m - int(&out.m, &r.w8)).abs();
         let e_f = (i_f - int(&out.f, &r.w8)).abs();
+        // Each panel meets the tolerance relative to its own integral plus its
+        // share of the total so far (all integrands are ≥ 0).
         let (tol, share) = (self.fr.tolerance, h / self.length);
-        let within = e_g <= tol * (i_g.abs() + self.scales.g * share)
-            && e_m <= tol * (i_m.abs() + self.scales.mu * share)
-            && e_f
-                <= tol * (i_f.abs() + self.scales.dt * share) + 1e-14 * self.c.temperature * share;
+        let s = &self.state;
+        let rise = s.t - self.c.temperature;
+        let within = e_g <= tol * (i_g.abs() + s.g * share)
+            && e_m <= tol * (i_m.abs() + s.mu * share)
+            && e_f <= tol * (i_f.abs() + rise * share) + 1e-14 * self.c.temperature * share;
         Estimates {
             i_g,
             i_m,

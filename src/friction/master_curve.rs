@@ -306,19 +306,21 @@ pub(crate) fn segment(v_lo: f64, sigma: f64, m: i32, lo: f64, hi: f64) -> f64 {
 fn series_low(sigma: f64, m: i32, lo: f64, hi: f64) -> f64 {
     let ln_rho = ((hi - lo) / lo).ln_1p();
     let base = sigma + f64::from(m) + 1.0;
+    let rho_base = (base * ln_rho).exp();
     let (lo2, hi2) = (lo * lo, hi * hi);
     let (mut c, mut lo_pow, mut hi_pow) = (1.0, 1.0, 1.0); // c_k, lo^{2k}, hi^{2k}
     let mut sum = 0.0;
     for k in 0..SERIES_MAX_TERMS {
         let n = base + 2.0 * k as f64;
         let x = n * ln_rho;
-        // lo^{2k} (ρ^n − 1)/n, with ρ^n lo^{2k} = ρ^{base} hi^{2k} where ρ^n overflows.
+        // lo^{2k} (ρ^n − 1)/n = (ρ^{base} hi^{2k} − lo^{2k})/n: by expm1 where
+        // the difference would cancel, directly elsewhere.
         let ratio = if n == 0.0 {
             lo_pow * ln_rho
-        } else if x < 700.0 {
+        } else if x.abs() < 0.5 {
             lo_pow * x.exp_m1() / n
         } else {
-            (hi_pow * (base * ln_rho).exp() - lo_pow) / n
+            (hi_pow * rho_base - lo_pow) / n
         };
         let term = c * ratio;
         sum += term;
@@ -337,6 +339,7 @@ fn series_high(p: f64, lo: f64, hi: f64) -> f64 {
     let beta = 0.5 * (p - 1.0);
     let v_hi = (1.0 - lo) * (1.0 + lo);
     let v_lo = (1.0 - hi) * (1.0 + hi);
+    // ln(v_hi/v_lo) ≥ 0 from the exact difference v_hi − v_lo = (hi − lo)(hi + lo).
     let ln_ratio = if v_lo > 0.0 {
         ((hi - lo) * (hi + lo) / v_lo).ln_1p()
     } else {
@@ -344,13 +347,14 @@ fn series_high(p: f64, lo: f64, hi: f64) -> f64 {
     };
     let mut d = 1.0; // C(β, k)(−1)^k
     let mut sum = 0.0;
+    let (mut hi_pow, mut lo_pow) = (v_hi.sqrt(), v_lo.sqrt()); // v^{k+1/2}
     for k in 0..SERIES_MAX_TERMS {
         let e = k as f64 + 0.5;
-        // v_hi^e − v_lo^e without cancellation.
-        let diff = if v_lo > 0.0 {
-            v_lo.powf(e) * (e * ln_ratio).exp_m1()
+        // v_hi^e − v_lo^e: by expm1 where it would cancel, directly elsewhere.
+        let diff = if e * ln_ratio < 0.5 {
+            hi_pow * -(-e * ln_ratio).exp_m1()
         } else {
-            v_hi.powf(e)
+            hi_pow - lo_pow
         };
         let term = d * diff / (2 * k + 1) as f64;
         sum += term;
@@ -358,6 +362,8 @@ fn series_high(p: f64, lo: f64, hi: f64) -> f64 {
             break;
         }
         d *= (k as f64 - beta) / (k + 1) as f64;
+        hi_pow *= v_hi;
+        lo_pow *= v_lo;
     }
     sum
 }
