@@ -101,8 +101,8 @@ impl AngularTable {
         let mut t = AngularTable {
             y_lo,
             y_hi,
-            below: m.angular(ys[0].exp() * 0.5),
-            above: m.angular(y_hi.exp()),
+            below: m.angular_ln(ys[0] - 1.0),
+            above: m.angular_ln(y_hi),
             starts: Vec::new(),
             panels: Vec::new(),
             error: 0.0,
@@ -137,7 +137,7 @@ impl AngularTable {
         let mut vals = [[0.0; NODES]; 4];
         for j in 0..NODES {
             let (y, _) = map.at(a, h, r.t[j]);
-            let v = m.angular(y.exp());
+            let v = m.angular_ln(y);
             vals[0][j] = v.loss;
             vals[1][j] = v.modulus_squared;
             vals[2][j] = v.loss_outside;

@@ -35,8 +35,9 @@ use crate::error::Result;
 /// Newton iterations allowed per panel before it is bisected.
 const MAX_NEWTON: usize = 30;
 
-/// Residual at which Newton stops, relative to the background temperature.
-const NEWTON_TOL: f64 = 1e-12;
+/// Residual at which Newton stops, relative to the rise at the panel's end
+/// (at least this, and at least 1e-3 × the tolerance).
+const NEWTON_TOL: f64 = 1e-14;
 
 /// Forward-difference step of ∂F/∂T, relative to the background temperature.
 const DIFF_STEP: f64 = 1e-6;
@@ -68,7 +69,8 @@ impl Run<'_, '_> {
         out
     }
 
-    /// Newton's method on the collocation equations; fills `out` on success.
+    /// Newton's method on the collocation equations for the node rises
+    /// T_j − T; fills `out` on success.
     fn newton(
         &mut self,
         a: f64,
@@ -78,53 +80,38 @@ impl Run<'_, '_> {
         out: &mut PanelOut,
     ) -> Result<bool> {
         let r = rule();
-        let t_a = self.state.t;
-        let step = DIFF_STEP * t_a;
-        let b0 = self.base_at(nodes[0].2, c_q[0], h_q[0], t_a)?;
-        let b0p = self.base_at(nodes[0].2, c_q[0], h_q[0], t_a + step)?;
+        let (t0, rise_a) = (self.c.temperature, self.state.rise);
+        let step = DIFF_STEP * t0;
+        let stop = NEWTON_TOL.max(1e-3 * self.fr.tolerance);
+        let b0 = self.base_at(nodes[0].2, c_q[0], h_q[0], t0 + rise_a)?;
+        let b0p = self.base_at(nodes[0].2, c_q[0], h_q[0], t0 + rise_a + step)?;
         let (s0, _, _) = self.sp(self.state.g);
-        let mut temp: [f64; NODES] = std::array::from_fn(|j| t_a + s0 * b0.hb * (nodes[j].0 - a));
-        temp[0] = t_a;
+        let mut rise: [f64; NODES] =
+            std::array::from_fn(|j| rise_a + s0 * b0.hb * (nodes[j].0 - a));
+        rise[0] = rise_a;
         for _ in 0..MAX_NEWTON {
             let mut base = [b0; NODES];
             let mut plus = [b0p; NODES];
             for j in 1..NODES {
-                base[j] = self.base_at(nodes[j].2, c_q[j], h_q[j], temp[j])?;
-                plus[j] = self.base_at(nodes[j].2, c_q[j], h_q[j], temp[j] + step)?;
+                base[j] = self.base_at(nodes[j].2, c_q[j], h_q[j], t0 + rise[j])?;
+                plus[j] = self.base_at(nodes[j].2, c_q[j], h_q[j], t0 + rise[j] + step)?;
             }
-            let mut df = [0.0; NODES];
-            for j in 0..NODES {
-                out.g[j] = base[j].g;
-            }
-            for j in 0..NODES {
-                let cum: f64 = (0..NODES)
-                    .map(|k| r.cum[j][k] * out.g[k] * out.dxdt[k])
-                    .sum();
-                out.big_g[j] = self.state.g + cum;
-                let (s, p, dsp) = self.sp(out.big_g[j]);
-                out.f[j] = s * base[j].hb;
-                df[j] = s * (plus[j].hb - base[j].hb) / step;
-                out.m[j] = s * p * base[j].mb;
-                out.dm_dg[j] = dsp * base[j].mb;
-                out.dm_dt[j] = s * p * (plus[j].mb - base[j].mb) / step;
-                out.g_out[j] = base[j].g_out;
-                out.m_out[j] = s * p * base[j].mb_out;
-                out.temp[j] = temp[j];
-            }
-            // Residuals of the 16 unknowns (node 0 is the known T_a).
+            let df = self.fill_nodes(&base, &plus, step, out);
+            // Residuals of the 16 unknowns (node 0 is the known rise at a).
             let mut res = [0.0; NODES];
-            let mut worst: f64 = 0.0;
+            let (mut worst, mut scale) = (0.0f64, rise_a.abs());
             for j in 1..NODES {
                 let cum: f64 = (0..NODES)
                     .map(|k| r.cum[j][k] * out.f[k] * out.dxdt[k])
                     .sum();
-                res[j - 1] = -(temp[j] - t_a - cum);
+                res[j - 1] = -(rise[j] - rise_a - cum);
                 worst = worst.max(res[j - 1].abs());
+                scale = scale.max(rise_a.abs() + cum.abs());
             }
             if !worst.is_finite() {
                 return Ok(false);
             }
-            if worst <= NEWTON_TOL * t_a {
+            if worst <= stop * scale {
                 for b in &base {
                     self.track_omega(b.omega);
                 }
@@ -133,17 +120,48 @@ impl Run<'_, '_> {
             let mut jac = [[0.0; NODES]; NODES];
             for j in 1..NODES {
                 for k in 1..NODES {
-                    jac[j - 1][k - 1] =
-                        f64::from(u8::from(j == k)) - r.cum[j][k] * out.dxdt[k] * df[k];
+                    let diagonal = f64::from(u8::from(j == k));
+                    jac[j - 1][k - 1] = diagonal - r.cum[j][k] * out.dxdt[k] * df[k];
                 }
             }
             if !solve(&mut jac, &mut res, NODES - 1) {
                 return Ok(false);
             }
             for j in 1..NODES {
-                temp[j] = (temp[j] + res[j - 1]).max(t_a);
+                rise[j] = (rise[j] + res[j - 1]).max(rise_a);
             }
         }
         Ok(false)
+    }
+
+    /// The node values of `out` from the integrands at the current rises
+    /// (`base`) and one step hotter (`plus`); returns ∂F/∂T at the nodes.
+    fn fill_nodes(
+        &self,
+        base: &[Base; NODES],
+        plus: &[Base; NODES],
+        step: f64,
+        out: &mut PanelOut,
+    ) -> [f64; NODES] {
+        let r = rule();
+        let mut df = [0.0; NODES];
+        for j in 0..NODES {
+            out.g[j] = base[j].g;
+        }
+        for j in 0..NODES {
+            let cum: f64 = (0..NODES)
+                .map(|k| r.cum[j][k] * out.g[k] * out.dxdt[k])
+                .sum();
+            out.big_g[j] = self.state.g + cum;
+            let (s, p, dsp) = self.sp(out.big_g[j]);
+            out.f[j] = s * base[j].hb;
+            df[j] = s * (plus[j].hb - base[j].hb) / step;
+            out.m[j] = s * p * base[j].mb;
+            out.dm_dg[j] = dsp * base[j].mb;
+            out.dm_dt[j] = s * p * (plus[j].mb - base[j].mb) / step;
+            out.g_out[j] = base[j].g_out;
+            out.m_out[j] = s * p * base[j].mb_out;
+        }
+        df
     }
 }

@@ -53,7 +53,6 @@ pub(crate) struct PanelOut {
     pub dm_dg: [f64; NODES],
     pub dm_dt: [f64; NODES],
     pub f: [f64; NODES],
-    pub temp: [f64; NODES],
     pub g_out: [f64; NODES],
     pub m_out: [f64; NODES],
     /// Whether the panel's collocation equations were solved.
@@ -70,7 +69,6 @@ impl Default for PanelOut {
             dm_dg: [0.0; NODES],
             dm_dt: [0.0; NODES],
             f: [0.0; NODES],
-            temp: [0.0; NODES],
             g_out: [0.0; NODES],
             m_out: [0.0; NODES],
             ok: true,
@@ -94,8 +92,9 @@ pub(crate) struct State {
     pub g_err: f64,
     pub mu: f64,
     pub mu_err: f64,
-    pub t: f64,
-    pub t_err: f64,
+    /// T_q − T (the flash temperature so far), K.
+    pub rise: f64,
+    pub rise_err: f64,
     pub g_out: f64,
     pub mu_out: f64,
 }
@@ -217,7 +216,6 @@ impl<'r, 'a> Run<'r, 'a> {
             out.dm_dg[j] = dsp * base[j].mb;
             out.g_out[j] = base[j].g_out;
             out.m_out[j] = s * p * base[j].mb_out;
-            out.temp[j] = self.c.temperature;
         }
         out
     }
@@ -289,10 +287,7 @@ impl<'r, 'a> Run<'r, 'a> {
 
     /// March over all panels, left to right.
     fn march(&mut self) -> Result<()> {
-        self.state = State {
-            t: self.c.temperature,
-            ..State::default()
-        };
+        self.state = State::default();
         let n_dec = ((self.length / DECADE) - 1e-12).ceil().max(1.0) as usize;
         let q_l = self.x_lo.exp();
         self.decades = (0..n_dec)
@@ -359,8 +354,8 @@ impl<'r, 'a> Run<'r, 'a> {
             g: self.state.g,
             contact_fraction: p,
             friction_coefficient: self.state.mu,
-            temperature: self.state.t,
-            flash_temperature: self.state.t - self.c.temperature,
+            temperature: self.c.temperature + self.state.rise,
+            flash_temperature: self.state.rise,
         });
     }
 
@@ -401,10 +396,10 @@ impl Run<'_, '_> {
         // share of the total so far (all integrands are ≥ 0).
         let (tol, share) = (self.fr.tolerance, h / self.length);
         let s = &self.state;
-        let rise = s.t - self.c.temperature;
+        let rise = s.rise;
         let within = e_g <= tol * (i_g.abs() + s.g * share)
             && e_m <= tol * (i_m.abs() + s.mu * share)
-            && e_f <= tol * (i_f.abs() + rise * share) + 1e-14 * self.c.temperature * share;
+            && e_f <= tol * (i_f.abs() + rise * share);
         Estimates {
             i_g,
             i_m,
@@ -429,7 +424,7 @@ impl Run<'_, '_> {
             prop += w
                 * (out.dm_dg[j].abs() * dg
                     + eps_i * out.m[j].abs()
-                    + out.dm_dt[j].abs() * (s.t_err + e.e_f));
+                    + out.dm_dt[j].abs() * (s.rise_err + e.e_f));
             abs_m += w * out.m[j].abs();
             self.state.g_out += w * out.g_out[j];
             self.state.mu_out += w * out.m_out[j];
@@ -440,13 +435,13 @@ impl Run<'_, '_> {
         self.state.g_err += e.e_g + (rounding + eps_i) * e.i_g.abs();
         self.state.mu += e.i_m;
         self.state.mu_err += mu_err;
-        self.state.t += e.i_f;
-        self.state.t_err += e.e_f + (rounding + eps_i) * e.i_f.abs();
+        self.state.rise += e.i_f;
+        self.state.rise_err += e.e_f + (rounding + eps_i) * e.i_f.abs();
         let k = (((a + 0.5 * h - self.x_lo) / DECADE).floor().max(0.0) as usize)
             .min(self.decades.len() - 1);
         self.decades[k].friction_coefficient += e.i_m;
         self.decades[k].friction_coefficient_error_bound += mu_err;
-        if !(self.state.mu.is_finite() && self.state.g.is_finite() && self.state.t.is_finite()) {
+        if !(self.state.mu.is_finite() && self.state.g.is_finite() && self.state.rise.is_finite()) {
             return Err(Error::NotConverged {
                 what: "friction integrand (not finite: moduli or pressures beyond f64?)".into(),
                 iterations: self.evaluations,
@@ -480,8 +475,8 @@ impl Run<'_, '_> {
             contact_fraction_error_bound: dp.abs() * s.g_err + 4.0 * f64::EPSILON * p,
             g: s.g,
             g_error_bound: s.g_err,
-            flash_temperature: s.t - self.c.temperature,
-            flash_temperature_error_bound: s.t_err,
+            flash_temperature: s.rise,
+            flash_temperature_error_bound: s.rise_err,
             decades: self.decades,
             profile: self.profile,
             table_excursion,

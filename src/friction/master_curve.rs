@@ -64,6 +64,7 @@ pub enum FrequencyUnit {
 #[derive(Debug, Clone, PartialEq)]
 pub struct MasterCurve {
     omega: Vec<f64>,
+    ln_omega: Vec<f64>,
     storage: Vec<f64>,
     loss: Vec<f64>,
     storage_slope: Vec<f64>,
@@ -132,6 +133,7 @@ impl MasterCurve {
                 .collect()
         };
         Ok(MasterCurve {
+            ln_omega: omega.iter().map(|w| w.ln()).collect(),
             storage_slope: slope(&storage),
             loss_slope: slope(&loss),
             omega,
@@ -211,35 +213,48 @@ impl MasterCurve {
     /// A(w), B(w) exactly (module docs) with the parts from outside the table;
     /// O(number of points below w).
     pub fn angular(&self, w: f64) -> AngularIntegrals {
+        self.angular_ln(w.ln())
+    }
+
+    /// [`Self::angular`] at y = ln w. The ratios u_i = ω_i/w = e^{−(y − ln ω_i)}
+    /// and 1 − u_i² = −expm1(−2(y − ln ω_i)) come from log differences: the
+    /// out-of-table parts vary like √(1 − u²) at the table's ends, where a
+    /// ratio rounded to 1 ± ε would cost √ε.
+    pub(crate) fn angular_ln(&self, y: f64) -> AngularIntegrals {
         let n = self.omega.len();
         let sq = |i: usize| self.storage[i].powi(2) + self.loss[i].powi(2);
-        // Below the table: u ∈ [0, a0], E = E_0.
-        let a0 = (self.omega[0] / w).min(1.0);
+        let ln_w = &self.ln_omega;
+        // Below the table: u ∈ [0, a0], E = E_0; 1 − √(1 − a0²) = a0²/(1 + √(1 − a0²)).
+        let d0 = (y - ln_w[0]).max(0.0);
+        let (a0, c0) = ((-d0).exp(), (-(-2.0 * d0).exp_m1()).sqrt());
         let mut r = AngularIntegrals {
-            loss_outside: self.loss[0] * a0 * a0 / (1.0 + ((1.0 - a0) * (1.0 + a0)).sqrt()),
-            modulus_squared_outside: sq(0) * a0.asin(),
+            loss_outside: self.loss[0] * a0 * a0 / (1.0 + c0),
+            modulus_squared_outside: sq(0) * a0.atan2(c0), // arcsin a0
             ..Default::default()
         };
         for i in 0..n - 1 {
-            let lo = self.omega[i] / w;
-            if lo >= 1.0 {
+            if y <= ln_w[i] {
                 break;
             }
-            let hi = (self.omega[i + 1] / w).min(1.0);
+            let lo = (ln_w[i] - y).exp();
+            let hi = (ln_w[i + 1] - y).exp().min(1.0);
             r.loss += segment(self.loss[i], self.loss_slope[i], 1, lo, hi);
-            r.modulus_squared +=
-                segment(
-                    self.storage[i].powi(2),
-                    2.0 * self.storage_slope[i],
-                    0,
-                    lo,
-                    hi,
-                ) + segment(self.loss[i].powi(2), 2.0 * self.loss_slope[i], 0, lo, hi);
+            let e1 = segment(
+                self.storage[i].powi(2),
+                2.0 * self.storage_slope[i],
+                0,
+                lo,
+                hi,
+            );
+            let e2 = segment(self.loss[i].powi(2), 2.0 * self.loss_slope[i], 0, lo, hi);
+            r.modulus_squared += e1 + e2;
         }
-        let top = self.omega[n - 1] / w;
-        if top < 1.0 {
-            r.loss_outside += self.loss[n - 1] * ((1.0 - top) * (1.0 + top)).sqrt();
-            r.modulus_squared_outside += sq(n - 1) * top.acos();
+        let dt = y - ln_w[n - 1];
+        if dt > 0.0 {
+            // Above the table: u ∈ [top, 1]: √(1 − top²) and arccos(top).
+            let (top, ct) = ((-dt).exp(), (-(-2.0 * dt).exp_m1()).sqrt());
+            r.loss_outside += self.loss[n - 1] * ct;
+            r.modulus_squared_outside += sq(n - 1) * ct.atan2(top); // arccos top
         }
         r.loss += r.loss_outside;
         r.modulus_squared += r.modulus_squared_outside;
@@ -371,7 +386,7 @@ fn series_high(p: f64, lo: f64, hi: f64) -> f64 {
 impl MasterCurve {
     /// The table's ln ω_i: where A and B have their (w − ω_i)^{3/2} kinks.
     pub(crate) fn ln_frequencies(&self) -> Vec<f64> {
-        self.omega.iter().map(|w| w.ln()).collect()
+        self.ln_omega.clone()
     }
 }
 
