@@ -19,8 +19,34 @@ const T_REF: f64 = 293.15;
 /// Relative tolerance asked of the solver in the accuracy tests.
 const TIGHT: f64 = 1e-12;
 
-/// The issue's accuracy target for μ against an independent quadrature.
-const REFERENCE_TOL: f64 = 1e-10;
+/// μ, G, A/A0 against an independent quadrature (issue 26 asks 1e-10): the
+/// solver runs at 1e-12 and the scipy reference is good to ~1e-13 (measured
+/// agreement ≤ 1.4e-13).
+const REFERENCE_TOL: f64 = 1e-12;
+
+/// The closed-form flash limits (solver at 1e-11; measured ≤ 3e-15: the
+/// integrands there are C's power laws times constants).
+const FLASH_LIMIT_TOL: f64 = 1e-12;
+
+/// The flash temperature against composite Simpson with 2×10⁵ intervals
+/// (its h⁴ error ~1e-15; measured agreement 3e-14).
+const SIMPSON_TOL: f64 = 1e-12;
+
+/// The coupled flash problem against RK4 (its own error, from halving the
+/// step, is ~2e-13; measured agreement ≤ 1.6e-13).
+const RK4_TOL: f64 = 1e-11;
+
+/// A master curve sampled at 40 points per decade against the analytic SLS:
+/// log-log interpolation of a Debye peak errs by ~(Δ ln ω)²/8 ≈ 4e-4 times its
+/// log-log curvature (≤ 1/4 here); measured ≤ 3.3e-5 in μ.
+const SAMPLED_TABLE_TOL: f64 = 1e-4;
+
+/// With a conductivity 10⁶ times rubber's the flash temperature is below
+/// this (K) and μ changes by less than this relative amount.
+const FAST_CONDUCTION_TOL: f64 = 1e-6;
+
+/// rms slope of the cut-off (bisection on the exact moment, 200 halvings).
+const CUTOFF_TOL: f64 = 1e-12;
 
 /// Identities that hold term by term (same nodes, same arithmetic up to the
 /// order of a few products): a few hundred ulps over ~10³ panel sums.
@@ -65,6 +91,7 @@ fn mu(p: &FrictionPoint) -> f64 {
 // (nominal_pressure, velocity, friction_coefficient, g, contact_fraction):
 // scipy DOP853 + QUADPACK, tests/reference/friction_sls.py (rtol 1e-12 and
 // 1e-13 agree to 1e-11; the angular integrals agree with mpmath to 1e-13).
+#[allow(clippy::excessive_precision)] // the references keep 17 digits
 const SLS_REFERENCE: [(f64, f64, f64, f64, f64); 16] = [
     (
         1e5,
@@ -253,6 +280,7 @@ fn loss_free_rubber_has_no_friction_and_the_elastic_g() {
 }
 
 // (nominal_pressure, gamma, friction_coefficient, g): tests/reference/friction_limits.py.
+#[allow(clippy::excessive_precision)] // the references keep 20 digits
 const CONSTANT_LOSS: [(f64, f64, f64, f64); 6] = [
     (
         1e5,
@@ -322,8 +350,8 @@ fn constant_loss_modulus_gives_a_velocity_independent_closed_form() {
             // table (1 to 100 rad/s): all of μ comes from outside it.
             let x = r.table_excursion.unwrap();
             if v == 1e-9 {
-                assert!((x.friction_fraction - 1.0).abs() <= 1e-12, "{x:?}");
-                assert!((x.decades_below - 7.0).abs() <= 1e-12, "{x:?}");
+                assert!((x.friction_fraction - 1.0).abs() <= IDENTITY_TOL, "{x:?}");
+                assert!((x.decades_below - 7.0).abs() <= IDENTITY_TOL, "{x:?}");
             }
         }
     }
@@ -410,7 +438,7 @@ fn cutoff_by_rms_slope_and_its_bounds() {
     };
     let f = Friction::new(&s, &rubber, &opts).unwrap();
     let slope = s.rms_slope(1e2, f.q1()).unwrap().value;
-    assert!((slope - 0.5).abs() <= 1e-12, "{slope}");
+    assert!((slope - 0.5).abs() <= CUTOFF_TOL, "{slope}");
     let p = f.point(1.0, T_REF, 1e5).unwrap();
     assert_eq!(p.q1, f.q1());
     assert!(p.isothermal.profile.last().unwrap().q == f.q1());
@@ -460,7 +488,7 @@ fn flash_temperature_limits_in_closed_form() {
     let flash = p.flash.as_ref().unwrap();
     let adiabatic = 2.0 * e2 * slope2 / (0.75 * rho * c);
     assert!(
-        rel(flash.flash_temperature, adiabatic) <= 1e-10,
+        rel(flash.flash_temperature, adiabatic) <= FLASH_LIMIT_TOL,
         "{} vs {adiabatic}",
         flash.flash_temperature
     );
@@ -469,7 +497,7 @@ fn flash_temperature_limits_in_closed_form() {
     let (v, m2) = (1e-9, s.moment(2, 1e2, 1e7).unwrap().value);
     let steady = 4.0 * v * e2 * m2 / (3.0 * 0.75 * kappa);
     let got = run(kappa, v).flash.unwrap().flash_temperature;
-    assert!(rel(got, steady) <= 1e-10, "{got} vs {steady}");
+    assert!(rel(got, steady) <= FLASH_LIMIT_TOL, "{got} vs {steady}");
 }
 
 /// Between the limits: the kernel integral by composite Simpson in ln q.
@@ -521,7 +549,7 @@ fn flash_temperature_of_a_temperature_independent_rubber() {
     let want = k * (simpson(l, r) + simpson(r, e));
     let last = profile.last().unwrap();
     assert!(
-        rel(last.flash_temperature, want) <= 1e-9,
+        rel(last.flash_temperature, want) <= SIMPSON_TOL,
         "{} vs {want}",
         last.flash_temperature
     );
@@ -594,26 +622,26 @@ fn flash_feedback_against_runge_kutta() {
     // RK4's own error (fourth order: fine − coarse ≈ 15 × the fine error).
     let rk_err = |j: usize| (fine[j] - coarse[j]).abs();
     assert!(
-        rk_err(2) <= 1e-9 * fine[2],
+        rk_err(2) <= RK4_TOL * fine[2],
         "RK4 not converged: {}",
         rk_err(2)
     );
     let dt = flash.flash_temperature;
     assert!(dt > 5.0, "a flash temperature worth testing: {dt}");
     assert!(
-        (T_REF + dt - fine[0]).abs() <= 1e-8 * dt + rk_err(0),
+        (T_REF + dt - fine[0]).abs() <= RK4_TOL * dt + rk_err(0),
         "T: {} vs {}",
         T_REF + dt,
         fine[0]
     );
     assert!(
-        rel(flash.friction_coefficient, fine[2]) <= 1e-8,
+        rel(flash.friction_coefficient, fine[2]) <= RK4_TOL,
         "μ: {} vs {}",
         flash.friction_coefficient,
         fine[2]
     );
     assert!(
-        rel(flash.g, fine[1]) <= 1e-8,
+        rel(flash.g, fine[1]) <= RK4_TOL,
         "G: {} vs {}",
         flash.g,
         fine[1]
@@ -634,7 +662,7 @@ fn flash_temperature_vanishes_with_fast_conduction() {
         .unwrap();
     let flash = p.flash.unwrap();
     assert!(
-        flash.flash_temperature < 1e-6,
+        flash.flash_temperature < FAST_CONDUCTION_TOL,
         "{}",
         flash.flash_temperature
     );
@@ -642,13 +670,12 @@ fn flash_temperature_vanishes_with_fast_conduction() {
         rel(
             flash.friction_coefficient,
             p.isothermal.friction_coefficient
-        ) <= 1e-6
+        ) <= FAST_CONDUCTION_TOL
     );
 }
 
-/// A master curve sampled from the SLS at 40 points per decade: the log-log
-/// interpolation error of a Debye peak at that spacing is ~(Δ ln ω)²/8 ≈ 4e-4
-/// times its curvature in log-log, and μ follows within 2e-4.
+/// A master curve (in Hz, from a file's text) sampled from the SLS at 40
+/// points per decade gives the SLS's μ within the interpolation error.
 #[test]
 fn master_curve_file_reproduces_the_analytic_rubber() {
     let mut text = String::from("# f (Hz), E' (Pa), E'' (Pa): an SLS sampled\nf,E',E''\n");
@@ -675,7 +702,7 @@ fn master_curve_file_reproduces_the_analytic_rubber() {
             mu(&fa.point(v, T_REF, 1e5).unwrap()),
             mu(&fb.point(v, T_REF, 1e5).unwrap()),
         );
-        assert!(rel(ma, mb) <= 2e-4, "v {v}: {ma} vs {mb}");
+        assert!(rel(ma, mb) <= SAMPLED_TABLE_TOL, "v {v}: {ma} vs {mb}");
     }
 }
 
@@ -690,7 +717,8 @@ fn table_excursion_is_reported() {
     let x = p.isothermal.table_excursion.unwrap();
     // Principal reduced frequencies q v from 1 to 1e5 rad/s against the table's 1e2..1e4.
     assert!(
-        (x.decades_below - 2.0).abs() < 1e-12 && (x.decades_above - 1.0).abs() < 1e-12,
+        (x.decades_below - 2.0).abs() < IDENTITY_TOL
+            && (x.decades_above - 1.0).abs() < IDENTITY_TOL,
         "{x:?}"
     );
     assert!(x.friction_fraction > 0.0 && x.friction_fraction < 1.0);

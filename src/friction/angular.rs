@@ -135,8 +135,8 @@ impl AngularTable {
     ) -> Result<()> {
         let r = rule();
         let mut vals = [[0.0; NODES]; 4];
-        for j in 0..NODES {
-            let (y, _) = map.at(a, h, r.t[j]);
+        for (j, &t) in r.t.iter().enumerate() {
+            let (y, _) = map.at(a, h, t);
             let v = m.angular_ln(y);
             vals[0][j] = v.loss;
             vals[1][j] = v.modulus_squared;
@@ -183,7 +183,7 @@ impl AngularTable {
     #[inline]
     pub fn eval(&self, w: f64) -> AngularIntegrals {
         let y = w.ln();
-        if !(y > self.y_lo) {
+        if y <= self.y_lo || y.is_nan() {
             return self.below;
         }
         if y >= self.y_hi {

@@ -182,6 +182,7 @@ pub(crate) fn clenshaw(c: &[f64], t: f64) -> f64 {
 
 /// Solve the dense system `m x = r` (n ≤ 17) by Gaussian elimination with
 /// partial pivoting, in place; `false` when singular.
+#[allow(clippy::needless_range_loop)] // row and column indices, as in the textbook
 pub(crate) fn solve(m: &mut [[f64; NODES]; NODES], r: &mut [f64; NODES], n: usize) -> bool {
     for col in 0..n {
         let p = (col..n)
@@ -251,6 +252,7 @@ mod tests {
     }
 
     #[test]
+    #[allow(clippy::needless_range_loop)]
     fn dense_solve() {
         let mut m = [[0.0; NODES]; NODES];
         let mut r = [0.0; NODES];

@@ -58,10 +58,10 @@ impl Run<'_, '_> {
         let nodes = self.nodes(a, h, map);
         let c_q: [f64; NODES] = std::array::from_fn(|j| self.fr.spectrum.c(nodes[j].2));
         let h_q: [f64; NODES] = std::array::from_fn(|j| self.kernel(nodes[j].2));
-        let mut out = PanelOut::default();
-        for j in 0..NODES {
-            out.dxdt[j] = nodes[j].1;
-        }
+        let mut out = PanelOut {
+            dxdt: std::array::from_fn(|j| nodes[j].1),
+            ..PanelOut::default()
+        };
         match self.newton(a, &nodes, &c_q, &h_q, &mut out) {
             Ok(true) => {}
             _ => out.ok = false,
@@ -145,9 +145,7 @@ impl Run<'_, '_> {
     ) -> [f64; NODES] {
         let r = rule();
         let mut df = [0.0; NODES];
-        for j in 0..NODES {
-            out.g[j] = base[j].g;
-        }
+        out.g = std::array::from_fn(|j| base[j].g);
         for j in 0..NODES {
             let cum: f64 = (0..NODES)
                 .map(|k| r.cum[j][k] * out.g[k] * out.dxdt[k])

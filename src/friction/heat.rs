@@ -37,6 +37,7 @@ use crate::error::{check, Result};
 use crate::special::{erf, erfcx};
 
 /// R(x) = Σ_k R_SERIES[k] x^k (mpmath, 20 digits; `tests/reference/friction_heat_kernel.py`).
+#[allow(clippy::excessive_precision)] // the references keep 20 digits
 const R_SERIES: [f64; 21] = [
     1.0,
     -1.504_505_556_127_350_1,
@@ -142,6 +143,7 @@ mod tests {
     use super::*;
 
     /// Values of R from mpmath (k-integral and erf form agree to 1e-30).
+    #[allow(clippy::excessive_precision)] // the references keep 20 digits
     const R_TABLE: [(f64, f64); 7] = [
         (1e-3, 9.984_969_929_408_657_4e-1),
         (0.05, 9.283_456_277_645_918_7e-1),

@@ -146,7 +146,7 @@ impl<'r, 'a> Run<'r, 'a> {
     /// S(G) P(G) and d(S P)/dG.
     #[inline]
     pub fn sp(&self, g: f64) -> (f64, f64, f64) {
-        if !(g > 0.0) {
+        if g <= 0.0 || g.is_nan() {
             return (1.0, 1.0, 0.0);
         }
         let x = 0.5 / g.sqrt();
@@ -206,16 +206,16 @@ impl<'r, 'a> Run<'r, 'a> {
             out.g[j] = base[j].g;
             self.track_omega(base[j].omega);
         }
-        for j in 0..NODES {
+        for (j, b) in base.iter().enumerate() {
             let cum: f64 = (0..NODES)
                 .map(|k| r.cum[j][k] * out.g[k] * out.dxdt[k])
                 .sum();
             out.big_g[j] = self.state.g + cum;
             let (s, p, dsp) = self.sp(out.big_g[j]);
-            out.m[j] = s * p * base[j].mb;
-            out.dm_dg[j] = dsp * base[j].mb;
-            out.g_out[j] = base[j].g_out;
-            out.m_out[j] = s * p * base[j].mb_out;
+            out.m[j] = s * p * b.mb;
+            out.dm_dg[j] = dsp * b.mb;
+            out.g_out[j] = b.g_out;
+            out.m_out[j] = s * p * b.mb_out;
         }
         out
     }

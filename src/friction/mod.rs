@@ -69,10 +69,10 @@
 //!
 //! # Stopping rule and error bounds
 //! A panel is accepted when the nested 17- and 9-point Clenshaw–Curtis values
-//! of ∫dG, ∫dμ (and ∫dT) differ by at most `tolerance` × (the panel's value
-//! + its share of the total from a coarse pre-pass); else it is bisected (at
-//! most 40 times; a panel that cannot converge is accepted, its estimate
-//! kept in the bound and `converged` set false). `friction_coefficient_error_bound`
+//! of ∫dG, ∫dμ (and ∫dT) differ by at most `tolerance` times the panel's
+//! value plus its share (by length in ln q) of the total so far; else it is
+//! bisected (at most 40 times; a panel that cannot converge is accepted, its
+//! estimate kept in the bound and `converged` set false). `friction_coefficient_error_bound`
 //! sums the panels' estimates, the propagation of G's (and T's) accumulated
 //! error bounds through ∂μ/∂G (and ∂μ/∂T), the interpolant's relative error
 //! and rounding.

@@ -327,7 +327,7 @@ impl TemperatureShift {
         let (ln_a, b_table) = match &self.horizontal {
             HorizontalShift::None => (0.0, None),
             HorizontalShift::Wlf { c1, c2 } => {
-                if !(dt + c2 > 0.0) {
+                if dt + c2 <= 0.0 || dt.is_nan() {
                     return Err(Error::invalid(
                         "temperature",
                         temperature,
