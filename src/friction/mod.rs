@@ -24,10 +24,15 @@
 //! with it T_q follows from the heat produced at the larger scales (see
 //! [`heat`](self#flash-temperature) below).
 //!
-//! Checks of the factors: for a frequency-independent real E the φ-integral of
-//! |E|² is 2π E² and G reduces to the crate's elastic
-//! G = (π/4)(E*/σ0)² ∫ q³ C dq, E* = E/(1 − ν²) ([`crate::theory`]); the four
-//! quadrants of the φ-integrals are equal (E″ odd, |E|² even in ω), so
+//! Checks of the factors (derived here): in full contact (P = S = 1) the
+//! rubber surface follows h(x − vt); the half-space's normal stress is
+//! σ(q, ω) = E(ω) q u(q, ω)/(2(1 − ν²)) and the dissipated power per area
+//! ⟨σ u̇⟩ = ∫ d²q C(q) ω Im[E(ω) q/(2(1 − ν²))], ω = q v cos φ (Persson's
+//! normalisation ⟨h²⟩ = ∫ d²q C), so μ = ⟨σ u̇⟩/(v σ0) is the formula above
+//! with its ½. For a frequency-independent real E the φ-integral of |E|² is
+//! 2π E² and G reduces to the crate's elastic G = (π/4)(E*/σ0)² ∫ q³ C dq,
+//! E* = E/(1 − ν²) ([`crate::theory`]), which fixes the ⅛. The four quadrants
+//! of the φ-integrals are equal (E″ odd, |E|² even in ω), so
 //! μ = 2 ∫ dq q³ C S P A(qv)/((1 − ν²)σ0) and G = ½ ∫ dq q³ C B(qv)/((1 − ν²)σ0)²
 //! with A, B the quarter-period integrals of [`AngularIntegrals`].
 //!
@@ -89,10 +94,11 @@
 //! - M. L. Williams, R. F. Landel, J. D. Ferry, J. Am. Chem. Soc. 77, 3701
 //!   (1955): the WLF shift.
 //!
-//! The equations above were compared with the statement and with the
+//! The equations above were compared with the statement, with the
 //! open implementation `perssonmodelling` (read, not copied: the same μ, G,
-//! P, S; |E| in G; S in μ only); the papers' full texts were not available
-//! here, so the equation numbers are not quoted.
+//! P, S; |E| in G; S in μ only) and with the two limits derived above; the
+//! papers' full texts (beyond their abstracts) were not available here, so
+//! their equation numbers are not quoted.
 //!
 //! # Examples
 //! A standard linear solid in full contact (σ0 ≫ E, so P = S = 1) on a
