@@ -143,16 +143,11 @@ impl<'r, 'a> Run<'r, 'a> {
         }
     }
 
-    /// S(G) P(G) and d(S P)/dG.
+    /// S(G), P(G) and d(S P)/dG.
     #[inline]
     pub fn sp(&self, g: f64) -> (f64, f64, f64) {
-        if g <= 0.0 || g.is_nan() {
-            return (1.0, 1.0, 0.0);
-        }
-        let x = 0.5 / g.sqrt();
-        let p = erf(x);
+        let (p, dp) = contact(g);
         let s = self.fr.gamma + (1.0 - self.fr.gamma) * p * p;
-        let dp = -(-x * x).exp() * x / (std::f64::consts::PI.sqrt() * g);
         (s, p, (s + 2.0 * (1.0 - self.fr.gamma) * p * p) * dp)
     }
 
@@ -366,6 +361,19 @@ impl<'r, 'a> Run<'r, 'a> {
     }
 }
 
+/// P(G) = erf(1/(2√G)) and dP/dG = −e^{−x²} x/(√π G), x = 1/(2√G) (P = 1 at G = 0).
+#[inline]
+fn contact(g: f64) -> (f64, f64) {
+    if g <= 0.0 || g.is_nan() {
+        return (1.0, 0.0);
+    }
+    let x = 0.5 / g.sqrt();
+    (
+        erf(x),
+        -(-x * x).exp() * x / (std::f64::consts::PI.sqrt() * g),
+    )
+}
+
 /// Error estimates of one panel and whether they meet the tolerance.
 pub(crate) struct Estimates {
     pub i_g: f64,
@@ -455,14 +463,7 @@ impl Run<'_, '_> {
     /// The typed result from the final state.
     fn result(self) -> Result<FrictionResult> {
         let s = self.state;
-        let (_, p, dsp) = self.sp(s.g);
-        // |dP/dG| from d(SP)/dG = (S + 2(1 − γ)P²) P′.
-        let (sg, _, _) = self.sp(s.g);
-        let dp = if s.g > 0.0 {
-            dsp / (sg + 2.0 * (1.0 - self.fr.gamma) * p * p)
-        } else {
-            0.0
-        };
+        let (p, dp) = contact(s.g);
         let table_excursion = self.excursion();
         let tol = self.fr.tolerance;
         let converged = self.converged
