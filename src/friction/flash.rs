@@ -45,11 +45,7 @@ const DIFF_STEP: f64 = 1e-6;
 impl Run<'_, '_> {
     /// The node integrands at temperature T.
     fn base_at(&mut self, q: f64, c_q: f64, h_q: f64, t: f64) -> Result<Base> {
-        let shift = self.fr.rubber.shift();
-        let f = shift.factors_extended(t)?;
-        if shift.beyond_table(t) {
-            self.shift_extended = Some(self.shift_extended.map_or(t, |m| m.max(t)));
-        }
+        let f = self.fr.rubber.shift().factors_extended(t)?;
         Ok(self.base(q, c_q, h_q, f))
     }
 

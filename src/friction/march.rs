@@ -444,6 +444,10 @@ impl Run<'_, '_> {
         self.state.mu += e.i_m;
         self.state.mu_err += mu_err;
         self.state.rise += e.i_f;
+        let hottest = self.c.temperature + self.state.rise; // the rise never decreases
+        if self.thermal.is_some() && self.fr.rubber.shift().beyond_table(hottest) {
+            self.shift_extended = Some(hottest);
+        }
         self.state.rise_err += e.e_f + (rounding + eps_i) * e.i_f.abs();
         let k = (((a + 0.5 * h - self.x_lo) / DECADE).floor().max(0.0) as usize)
             .min(self.decades.len() - 1);

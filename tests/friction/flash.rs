@@ -230,3 +230,25 @@ fn flash_temperature_vanishes_with_fast_conduction() {
         ) <= FAST_CONDUCTION_TOL
     );
 }
+
+/// Flash heating beyond a shift table's last row extends a_T linearly in
+/// ln a_T and says how far it went; the profile's top temperature is that.
+#[test]
+fn flash_beyond_the_shift_table_is_reported() {
+    let s = spectrum();
+    let table =
+        ShiftTable::new(&[(280.0, 10.0, None), (295.0, 1.0, None), (300.0, 0.5, None)]).unwrap();
+    let rubber = Rubber::new(sls(), TemperatureShift::table(295.0, table).unwrap())
+        .with_thermal(Thermal::new(0.25, 1200.0, 1500.0).unwrap());
+    let f = Friction::new(&s, &rubber, &options(1e-8)).unwrap();
+    let p = f.point(1.0, 299.0, 1e5).unwrap();
+    let flash = p.flash.unwrap();
+    let top = 299.0 + flash.flash_temperature;
+    assert!(top > 300.0, "not heated past the table: {top}");
+    let reached = flash.shift_table_extended_to.expect("reported");
+    assert!(
+        reached > 300.0 && reached <= top * (1.0 + IDENTITY_TOL),
+        "{reached} vs {top}"
+    );
+    assert!(p.isothermal.shift_table_extended_to.is_none());
+}
