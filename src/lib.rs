@@ -119,6 +119,7 @@
 //! | [`stress`] | the stress distribution P(σ, ζ) for flat, Hertz, cylinder and tabulated starts, elastic or with a yield stress |
 //! | [`adhesion`] | adhesion: the Persson–Tosatti energy balance Δγ_eff(ζ), the adhesive stress diffusion with the moving detachment boundary (A/A0 down to tensile σ0, pull-off stress) and the Pastewka–Robbins criterion |
 //! | [`separation`] | the mean interfacial separation ū, the contact stiffness and the stored elastic energy |
+//! | [`friction`] | rubber friction: Persson's viscoelastic μ(v, T) from a master curve, a Prony series or a standard linear solid, with time–temperature superposition, A(v)/A0 and the flash temperature |
 //! | `bem` | (feature `bem`) the FFT boundary-element solver: elastic kernels, surface synthesis, the Polonsky–Keer solver, Hertz validation |
 //! | [`error`] | the crate's [`Error`] and [`Result`]; [`Estimate`] is a value with its error bound, which many functions return |
 //!
@@ -148,6 +149,7 @@ pub mod adhesion;
 pub mod bem;
 pub mod corrected;
 pub mod error;
+pub mod friction;
 pub mod io;
 pub mod kappa;
 pub mod material;
