@@ -118,6 +118,7 @@
 //! | [`corrected`] | the corrected theories (Yang–Persson, Wang–Müser, Xu et al.) with their parameter γ |
 //! | [`stress`] | the stress distribution P(σ, ζ) for flat, Hertz, cylinder and tabulated starts, elastic or with a yield stress |
 //! | [`separation`] | the mean interfacial separation ū, the contact stiffness and the stored elastic energy |
+//! | [`gap`] | the distribution of interfacial separations P(u) and the magnification-resolved separation u1(ζ) |
 //! | `bem` | (feature `bem`) the FFT boundary-element solver: elastic kernels, surface synthesis, the Polonsky–Keer solver, Hertz validation |
 //! | [`validation`] | validation of numerical codes: continuum extrapolation, κ fits, scoring a user's data against the theories, and (feature `bem`) the theories against the BEM at several resolutions of one surface |
 //! | [`scene`] | scene files: one calculation described in a versioned JSON document, and running it |
@@ -152,6 +153,7 @@
 pub mod bem;
 pub mod corrected;
 pub mod error;
+pub mod gap;
 // File output for the `persson` binary (a separate crate): not part of the
 // library's API.
 #[doc(hidden)]
