@@ -118,6 +118,8 @@
 //! | [`corrected`] | the corrected theories (Yang–Persson, Wang–Müser, Xu et al.) with their parameter γ |
 //! | [`stress`] | the stress distribution P(σ, ζ) for flat, Hertz, cylinder and tabulated starts, elastic or with a yield stress |
 //! | [`separation`] | the mean interfacial separation ū, the contact stiffness and the stored elastic energy |
+//! | [`conductance`] | thermal and electrical contact conductance from the stiffness (Barber's identity) and the conductance through the gap |
+//! | [`leakage`] | the leak rate of a static seal: critical junction and effective medium |
 //! | [`gap`] | the distribution of interfacial separations P(u) and the magnification-resolved separation u1(ζ) |
 //! | `bem` | (feature `bem`) the FFT boundary-element solver: elastic kernels, surface synthesis, the Polonsky–Keer solver, Hertz validation |
 //! | [`validation`] | validation of numerical codes: continuum extrapolation, κ fits, scoring a user's data against the theories, and (feature `bem`) the theories against the BEM at several resolutions of one surface |
@@ -151,6 +153,7 @@
 
 #[cfg(feature = "bem")]
 pub mod bem;
+pub mod conductance;
 pub mod corrected;
 pub mod error;
 pub mod gap;
@@ -159,6 +162,7 @@ pub mod gap;
 #[doc(hidden)]
 pub mod io;
 pub mod kappa;
+pub mod leakage;
 pub mod material;
 #[cfg(feature = "plot")]
 pub mod plot;

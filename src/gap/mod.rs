@@ -429,6 +429,16 @@ impl SeparationDensity {
         self.sum(Node::fold, |n| n.volume_error)
     }
 
+    /// The largest separation any node's window reaches, max(u1 + 10h), m.
+    pub fn largest_separation(&self) -> f64 {
+        self.panels
+            .iter()
+            .flat_map(|p| p.nodes.iter())
+            .filter(|n| n.loss > 0.0 && n.u1.is_finite())
+            .map(|n| n.u1 + WINDOW * n.h)
+            .fold(0.0, f64::max)
+    }
+
     /// ∫ P_nc(u) f(u) du for f bounded on the window of every node: each
     /// node's folded Gaussian by adaptive Gauss–Kronrod (absolute tolerance
     /// `tolerance` × max|f| on the window), then the ζ-rule. `lipschitz`
