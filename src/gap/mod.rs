@@ -91,6 +91,9 @@ const WG: [f64; 4] = [
     0.417_959_183_673_469_4,
 ];
 
+/// Below this window/u1 ratio a node's Gaussian is treated as a point mass.
+const NARROW: f64 = 1e-6;
+
 /// Width, in units of h, of the u-window of one node's Gaussian.
 const WINDOW: f64 = 10.0;
 
@@ -481,6 +484,16 @@ fn node_expectation(f: &dyn Fn(f64) -> f64, u1: f64, h: f64, tolerance: f64) -> 
         return Ok(Estimate {
             value: f(u1.abs()),
             error: 0.0,
+        });
+    }
+    if WINDOW * h <= NARROW * u1 {
+        // The Gaussian is narrower than quadrature can resolve at u1: a point
+        // mass, with the variation of f over ±3h as the error.
+        let v = f(u1);
+        let spread = (f(u1 + 3.0 * h) - v).abs().max((f(u1 - 3.0 * h) - v).abs());
+        return Ok(Estimate {
+            value: v,
+            error: spread,
         });
     }
     let lo = (u1 - WINDOW * h).max(0.0);
