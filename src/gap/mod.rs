@@ -91,6 +91,9 @@ const WG: [f64; 4] = [
     0.417_959_183_673_469_4,
 ];
 
+/// Node weight (fraction of A0) below which a node does not set the largest separation.
+const NEGLIGIBLE_WEIGHT: f64 = 1e-18;
+
 /// Below this window/u1 ratio a node's Gaussian is treated as a point mass.
 const NARROW: f64 = 1e-6;
 
@@ -432,12 +435,14 @@ impl SeparationDensity {
         self.sum(Node::fold, |n| n.volume_error)
     }
 
-    /// The largest separation any node's window reaches, max(u1 + 10h), m.
+    /// The largest separation any node's window reaches, max(u1 + 10h), m,
+    /// over the nodes whose weight is above 1e−18 (near ζ = 1, u1 grows
+    /// without bound while −A′ vanishes faster).
     pub fn largest_separation(&self) -> f64 {
         self.panels
             .iter()
             .flat_map(|p| p.nodes.iter())
-            .filter(|n| n.loss > 0.0 && n.u1.is_finite())
+            .filter(|n| n.kronrod * n.loss > NEGLIGIBLE_WEIGHT && n.u1.is_finite())
             .map(|n| n.u1 + WINDOW * n.h)
             .fold(0.0, f64::max)
     }

@@ -205,10 +205,8 @@ impl<'a> EffectiveMedium<'a> {
         let hi = u_max.powi(3) / eta12;
         let residual = |s: f64| -> Result<Estimate> {
             let cube = s * eta12; // compare u³ with 12η σ_eff
-            let f = move |u: f64| {
-                let u3 = u * u * u;
-                (u3 - cube) / (u3 + cube)
-            };
+            // (u³ − c)/(u³ + c) = 1 − 2c/(u³ + c): finite where u³ overflows
+            let f = move |u: f64| 1.0 - 2.0 * cube / (u * u * u + cube);
             let e = density.expectation(&f, NODE_TOLERANCE, 0.0)?;
             Ok(Estimate {
                 value: e.value - a1,
