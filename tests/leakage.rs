@@ -341,10 +341,10 @@ mod reynolds {
             assert_eq!(fa.unknowns, fb.unknowns);
             let (x, y) = (fa.effective_flow_conductivity, fb.effective_flow_conductivity);
             assert!((x - y).abs() <= EXACT * x.abs().max(1e-30), "{a:?}: {x} vs {y}");
-            // the bound is 64 ulps of the fluxes' magnitudes, Σ c(|p_i| + |p_j|),
-            // which exceed Q by ~1e5 behind a narrow constriction
-            let bound = fa.effective_flow_conductivity_error_bound;
-            assert!(bound < 1e-8 * x.abs().max(1e-30), "{bound:e} vs {x:e}");
+            // the two solves differ only by rounding, which the bounds cover
+            let bound = fa.effective_flow_conductivity_error_bound
+                + fb.effective_flow_conductivity_error_bound;
+            assert!((x - y).abs() <= bound, "{:e} vs {bound:e}", x - y);
         }
     }
 
