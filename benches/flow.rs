@@ -22,9 +22,7 @@ fn seal() -> Seal {
         seal_width: 1e-3,
         seal_length: 1e-2,
         viscosity: 1e-3,
-        drive: Drive::Liquid {
-            pressure_drop: 1e5,
-        },
+        drive: Drive::Liquid { pressure_drop: 1e5 },
     }
 }
 
@@ -52,7 +50,9 @@ fn conductance_curve_100(b: divan::Bencher) {
 #[divan::bench]
 fn critical_junction_curve_100(b: divan::Bencher) {
     let s = spectrum();
-    let model = CriticalJunction::new(&s, 1e9, seal()).unwrap().with_breaks(&[4e4]);
+    let model = CriticalJunction::new(&s, 1e9, seal())
+        .unwrap()
+        .with_breaks(&[4e4]);
     let p = pressures();
     b.bench(|| model.load_curve(divan::black_box(&p)).unwrap());
 }
@@ -80,10 +80,20 @@ mod reynolds {
     /// percolates) or nowhere (`open`: every node an unknown, the largest system).
     fn field(n: usize, open: bool) -> GapField {
         let q_l = std::f64::consts::TAU;
-        let s = SelfAffine::new(q_l, 4.0 * q_l, (n / 4) as f64 * q_l, 0.8, Amplitude::RmsSlope(0.1))
-            .unwrap();
+        let s = SelfAffine::new(
+            q_l,
+            4.0 * q_l,
+            (n / 4) as f64 * q_l,
+            0.8,
+            Amplitude::RmsSlope(0.1),
+        )
+        .unwrap();
         let surf = synthesize(&s, n, 1.0, 5).unwrap();
-        let cut = if open { f64::INFINITY } else { 0.67 * surf.rms_height() };
+        let cut = if open {
+            f64::INFINITY
+        } else {
+            0.67 * surf.rms_height()
+        };
         let top = surf.heights.iter().cloned().fold(f64::MIN, f64::max);
         let gap = surf
             .heights

@@ -23,6 +23,9 @@ use persson::separation::Separation;
 use persson::spectrum::{Amplitude, SelfAffine};
 use persson::theory::Persson;
 
+/// One BEM solve: (A/A0, σ_eff, K/A0, h_gap, percolates).
+type Row = (f64, f64, f64, f64, bool);
+
 /// Keeps each converged solution.
 struct Keep(Vec<Solution>);
 
@@ -68,8 +71,7 @@ fn main() -> persson::Result<()> {
     let sep = Separation::new(&spectrum, e_star)?.with_breaks(&[q_r]);
     let theory = Persson::new(&spectrum, e_star)?;
 
-    // rows[load] = per seed (A, σ_bem, K_bem, h_gap_bem, percolates)
-    let mut bem: Vec<Vec<(f64, f64, f64, f64, bool)>> = vec![Vec::new(); pressures.len()];
+    let mut bem: Vec<Vec<Row>> = vec![Vec::new(); pressures.len()];
     let options = RoughOptions::default();
     for seed in 0..seeds {
         let surface = synthesize(&spectrum, n, size, seed)?;
@@ -99,7 +101,14 @@ fn main() -> persson::Result<()> {
     println!("ratios theory/BEM: mean over seeds [min, max]; σ_eff ratios over the seeds whose BEM gap percolates");
     println!(
         "{:>8} {:>7} {:>7} {:>5} {:>26} {:>26} {:>24} {:>24}",
-        "σ0/E*h'", "A_bem", "A_th", "perc", "σ_CJ/σ_bem", "σ_EMT/σ_bem", "K_th/K_bem", "h_gap,th/h_gap,bem"
+        "σ0/E*h'",
+        "A_bem",
+        "A_th",
+        "perc",
+        "σ_CJ/σ_bem",
+        "σ_EMT/σ_bem",
+        "K_th/K_bem",
+        "h_gap,th/h_gap,bem"
     );
     for (i, &p) in pressures.iter().enumerate() {
         let rows = &bem[i];
@@ -128,7 +137,11 @@ fn main() -> persson::Result<()> {
             a_th,
             format!("{}/{}", perc.len(), rows.len()),
             stat(perc.iter().map(|r| sigma_cj / r.1).collect()),
-            stat(perc.iter().map(|r| e.effective_flow_conductivity / r.1).collect()),
+            stat(
+                perc.iter()
+                    .map(|r| e.effective_flow_conductivity / r.1)
+                    .collect()
+            ),
             stat(rows.iter().map(|r| k_th / r.2).collect()),
             stat(rows.iter().map(|r| h_th / r.3).collect()),
         );

@@ -179,7 +179,11 @@ pub fn thermal_conductance(
 /// f·K with its error (K = +∞ at full contact stays +∞).
 fn scale(k: Estimate, f: f64) -> Result<Estimate> {
     if k.value.is_nan() || k.value < 0.0 {
-        return Err(Error::invalid("stiffness", k.value, "finite (or +inf) and >= 0"));
+        return Err(Error::invalid(
+            "stiffness",
+            k.value,
+            "finite (or +inf) and >= 0",
+        ));
     }
     Ok(Estimate {
         value: f * k.value,
@@ -225,13 +229,21 @@ impl GapLaw {
             }
             GapLaw::Table { points } => {
                 if points.len() < 2 {
-                    return Err(Error::invalid("gap_table", points.len() as f64, "at least 2 points"));
+                    return Err(Error::invalid(
+                        "gap_table",
+                        points.len() as f64,
+                        "at least 2 points",
+                    ));
                 }
                 for (i, &(u, a)) in points.iter().enumerate() {
                     check::non_negative("gap_table", u)?;
                     check::non_negative("gap_table", a)?;
                     if i > 0 && u <= points[i - 1].0 {
-                        return Err(Error::invalid("gap_table", u, "separations strictly ascending"));
+                        return Err(Error::invalid(
+                            "gap_table",
+                            u,
+                            "separations strictly ascending",
+                        ));
                     }
                 }
             }
@@ -305,7 +317,11 @@ pub fn gap_conductance_of_field(gap: &[f64], pressure: &[f64], law: &GapLaw) -> 
     if gap.len() != pressure.len() || gap.is_empty() {
         return Err(Error::Inconsistent {
             name: "gap, pressure".into(),
-            requirement: format!("equal, non-zero lengths; got {} and {}", gap.len(), pressure.len()),
+            requirement: format!(
+                "equal, non-zero lengths; got {} and {}",
+                gap.len(),
+                pressure.len()
+            ),
         });
     }
     let sum: f64 = gap
@@ -427,7 +443,8 @@ impl<'a> Conductance<'a> {
         );
         let gap = match &self.options.gap_law {
             Some(law) => {
-                let density = SeparationDensity::new(self.spectrum, self.contact_modulus, pressure, d)?;
+                let density =
+                    SeparationDensity::new(self.spectrum, self.contact_modulus, pressure, d)?;
                 Some(gap_conductance(&density, law)?)
             }
             None => None,

@@ -34,10 +34,18 @@ fn barber_on_holms_spot() {
         let k = exact(2.0 * e_star * a);
         let c = electrical_conductance(k, e_star, &Resistivity::new(r1, r2).unwrap()).unwrap();
         let holm = 4.0 * a / (r1 + r2);
-        assert!((c.value - holm).abs() <= ULPS * holm, "{} vs {holm}", c.value);
+        assert!(
+            (c.value - holm).abs() <= ULPS * holm,
+            "{} vs {holm}",
+            c.value
+        );
         let t = thermal_conductance(k, e_star, &Conductivity::new(k1, k2).unwrap()).unwrap();
         let holm_t = 4.0 * a * k1 * k2 / (k1 + k2);
-        assert!((t.value - holm_t).abs() <= ULPS * holm_t, "{} vs {holm_t}", t.value);
+        assert!(
+            (t.value - holm_t).abs() <= ULPS * holm_t,
+            "{} vs {holm_t}",
+            t.value
+        );
     }
 }
 
@@ -52,7 +60,11 @@ fn barber_on_a_hertz_ball() {
         let c = electrical_conductance(k, e_star, &rho).unwrap();
         let holm = 4.0 * ball.contact_radius / rho.sum();
         // K from F/δ of the closed form: ~4 roundings of the Hertz relations.
-        assert!((c.value - holm).abs() <= 4.0 * ULPS * holm, "{} vs {holm}", c.value);
+        assert!(
+            (c.value - holm).abs() <= 4.0 * ULPS * holm,
+            "{} vs {holm}",
+            c.value
+        );
     }
 }
 
@@ -66,7 +78,10 @@ fn theory_conductance_is_barber_on_the_separation_stiffness() {
         ..Default::default()
     };
     let model = Conductance::new(&s, e_star, opts).unwrap();
-    let sep = Separation::new(&s, e_star).unwrap().with_tolerance(1e-9).unwrap();
+    let sep = Separation::new(&s, e_star)
+        .unwrap()
+        .with_tolerance(1e-9)
+        .unwrap();
     for p in [1e5, 1e7, 1e9] {
         let pt = model.point(p).unwrap();
         let k = sep.stiffness(p).unwrap();
@@ -93,7 +108,11 @@ fn low_load_conductance_is_linear_in_load() {
         let k = sep.stiffness(p).unwrap().value;
         let h = thermal_conductance(exact(k), e_star, &Conductivity::both(2.0).unwrap()).unwrap();
         let linear = 2.0 * 1.0 * p / (e_star * u0);
-        assert!((h.value / linear - 1.0).abs() < 1e-6, "{p}: {} vs {linear}", h.value);
+        assert!(
+            (h.value / linear - 1.0).abs() < 1e-6,
+            "{p}: {} vs {linear}",
+            h.value
+        );
     }
 }
 
@@ -107,7 +126,11 @@ fn gap_conductance_of_a_constant_law_is_the_open_area() {
         };
         let h = gap_conductance(&d, &law).unwrap();
         let open = 3.5 * (1.0 - d.contact_fraction());
-        assert!((h.value - open).abs() <= h.error.max(1e-9 * open), "{} vs {open}", h.value);
+        assert!(
+            (h.value - open).abs() <= h.error.max(1e-9 * open),
+            "{} vs {open}",
+            h.value
+        );
         assert!(h.error < 1e-8 * open);
     }
 }
@@ -127,7 +150,11 @@ fn gap_conductance_of_a_gas_against_its_expansion() {
     let c = kappa / (2.0 * ell);
     let series = c * (d.non_contact_fraction().value - d.first_moment().value / (2.0 * ell));
     let rest = c * (d.largest_separation() / (2.0 * ell)).powi(2);
-    assert!((h.value - series).abs() <= rest, "{} vs {series} (±{rest})", h.value);
+    assert!(
+        (h.value - series).abs() <= rest,
+        "{} vs {series} (±{rest})",
+        h.value
+    );
 }
 
 #[test]
@@ -164,17 +191,47 @@ fn bad_input_names_the_field() {
     }
     let k = exact(1.0);
     let rho = Resistivity::both(1.0).unwrap();
-    assert_eq!(invalid_name(electrical_conductance(k, 0.0, &rho).unwrap_err()), "contact_modulus");
+    assert_eq!(
+        invalid_name(electrical_conductance(k, 0.0, &rho).unwrap_err()),
+        "contact_modulus"
+    );
     assert_eq!(
         invalid_name(electrical_conductance(exact(f64::NAN), 1.0, &rho).unwrap_err()),
         "stiffness"
     );
     for (law, name) in [
-        (GapLaw::Gas { gas_conductivity: -1.0, mean_free_path: 1e-7 }, "gas_conductivity"),
-        (GapLaw::Gas { gas_conductivity: 1.0, mean_free_path: -1e-7 }, "mean_free_path"),
-        (GapLaw::Table { points: vec![(0.0, 1.0)] }, "gap_table"),
-        (GapLaw::Table { points: vec![(1.0, 1.0), (0.5, 1.0)] }, "gap_table"),
-        (GapLaw::Table { points: vec![(0.0, 1.0), (1.0, f64::NAN)] }, "gap_table"),
+        (
+            GapLaw::Gas {
+                gas_conductivity: -1.0,
+                mean_free_path: 1e-7,
+            },
+            "gas_conductivity",
+        ),
+        (
+            GapLaw::Gas {
+                gas_conductivity: 1.0,
+                mean_free_path: -1e-7,
+            },
+            "mean_free_path",
+        ),
+        (
+            GapLaw::Table {
+                points: vec![(0.0, 1.0)],
+            },
+            "gap_table",
+        ),
+        (
+            GapLaw::Table {
+                points: vec![(1.0, 1.0), (0.5, 1.0)],
+            },
+            "gap_table",
+        ),
+        (
+            GapLaw::Table {
+                points: vec![(0.0, 1.0), (1.0, f64::NAN)],
+            },
+            "gap_table",
+        ),
     ] {
         assert_eq!(invalid_name(law.validate().unwrap_err()), name);
     }
@@ -203,17 +260,36 @@ mod bem {
         let mut solver = Solver::new(Operator::new(Boundary::Periodic, n, 1.0, 1.0).unwrap());
         let p0 = 0.01;
         let eps = 1e-4;
-        let mid = solver.solve(&surf.heights, Control::MeanPressure(p0), &opts).unwrap();
+        let mid = solver
+            .solve(&surf.heights, Control::MeanPressure(p0), &opts)
+            .unwrap();
         let hi = solver
-            .solve(&surf.heights, Control::MeanPressure(p0 * (1.0 + eps)), &opts)
+            .solve(
+                &surf.heights,
+                Control::MeanPressure(p0 * (1.0 + eps)),
+                &opts,
+            )
             .unwrap();
         let lo = solver
-            .solve(&surf.heights, Control::MeanPressure(p0 * (1.0 - eps)), &opts)
+            .solve(
+                &surf.heights,
+                Control::MeanPressure(p0 * (1.0 - eps)),
+                &opts,
+            )
             .unwrap();
         let fd = 2.0 * eps * p0 / (hi.approach - lo.approach);
-        let k = contact_stiffness(solver.operator(), &mid.pressure, &StiffnessOptions::default()).unwrap();
+        let k = contact_stiffness(
+            solver.operator(),
+            &mid.pressure,
+            &StiffnessOptions::default(),
+        )
+        .unwrap();
         assert!(k.stiffness_error_bound < 1e-8 * k.stiffness, "{k:?}");
-        assert!((k.stiffness / fd - 1.0).abs() < 1e-3, "{} vs {fd}", k.stiffness);
+        assert!(
+            (k.stiffness / fd - 1.0).abs() < 1e-3,
+            "{} vs {fd}",
+            k.stiffness
+        );
         // and the mean gap moves by −dδ (periodic operator): K = −dσ0/dū
         let mean = |g: &[f64]| g.iter().sum::<f64>() / g.len() as f64;
         let fd_u = -2.0 * eps * p0 / (mean(&hi.gap) - mean(&lo.gap));

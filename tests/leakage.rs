@@ -3,9 +3,7 @@
 //! and bad input.
 
 use persson::gap::{DensityOptions, SeparationDensity};
-use persson::leakage::{
-    bruggeman, CriticalJunction, Drive, EffectiveMedium, LeakStatus, Seal,
-};
+use persson::leakage::{bruggeman, CriticalJunction, Drive, EffectiveMedium, LeakStatus, Seal};
 use persson::separation::Separation;
 use persson::spectrum::{Amplitude, FnSpectrum, SelfAffine, Spectrum};
 use persson::theory::Persson;
@@ -24,9 +22,7 @@ fn seal() -> Seal {
         seal_width: 1e-3,
         seal_length: 2e-2,
         viscosity: 1e-3,
-        drive: Drive::Liquid {
-            pressure_drop: 1e5,
-        },
+        drive: Drive::Liquid { pressure_drop: 1e5 },
     }
 }
 
@@ -44,11 +40,18 @@ fn separation_density_is_normalised_and_its_mean_is_the_separation() {
         // A(ζ1) + ∫P_nc = A(1) = 1
         let nc = d.non_contact_fraction();
         let norm = d.contact_fraction() + nc.value;
-        assert!((norm - 1.0).abs() <= nc.error.max(DENSITY_TOL), "{p}: {norm}");
+        assert!(
+            (norm - 1.0).abs() <= nc.error.max(DENSITY_TOL),
+            "{p}: {norm}"
+        );
         // ∫(−A′)u1 dζ telescopes to ū of separation.rs
         let u = sep.mean_separation(p).unwrap().value;
         let m = d.unfolded_first_moment();
-        assert!((m.value - u).abs() <= DENSITY_TOL * u, "{p}: {} vs {u}", m.value);
+        assert!(
+            (m.value - u).abs() <= DENSITY_TOL * u,
+            "{p}: {} vs {u}",
+            m.value
+        );
         // the fold only adds: ∫uP = ū + shift, shift ≥ 0
         let shift = d.fold_shift().value;
         assert!(shift >= 0.0);
@@ -58,11 +61,19 @@ fn separation_density_is_normalised_and_its_mean_is_the_separation() {
         let top = d.largest_separation();
         let k = 4000;
         let (a, b) = ((1e-4 * u).ln(), top.ln());
-        let xs: Vec<f64> = (0..=k).map(|i| (a + (b - a) * i as f64 / k as f64).exp()).collect();
+        let xs: Vec<f64> = (0..=k)
+            .map(|i| (a + (b - a) * i as f64 / k as f64).exp())
+            .collect();
         let curve = d.curve(&xs);
         let (mut simpson, mut bound) = (0.0, 0.0);
         for i in 0..=k {
-            let w = if i == 0 || i == k { 1.0 } else if i % 2 == 1 { 4.0 } else { 2.0 };
+            let w = if i == 0 || i == k {
+                1.0
+            } else if i % 2 == 1 {
+                4.0
+            } else {
+                2.0
+            };
             simpson += w * curve[i].separation_density * xs[i];
             bound += w * curve[i].separation_density_error_bound * xs[i];
         }
@@ -71,16 +82,24 @@ fn separation_density_is_normalised_and_its_mean_is_the_separation() {
         let head = d.density(0.0);
         simpson += head.value * 1e-4 * u;
         bound += (head.error + head.value) * 1e-4 * u; // P_nc varies by O(itself) there
-        // Simpson on 4000 log-spaced points: 1e-5 relative (measured 1e-7)
+                                                       // Simpson on 4000 log-spaced points: 1e-5 relative (measured 1e-7)
         let tol = bound + 1e-5 * nc.value;
-        assert!((simpson - nc.value).abs() < tol, "{p}: {simpson} vs {} (±{tol})", nc.value);
+        assert!(
+            (simpson - nc.value).abs() < tol,
+            "{p}: {simpson} vs {} (±{tol})",
+            nc.value
+        );
     }
 }
 
 /// ū(ζ) of the cut problem from an independent path: a function spectrum
 /// (moments by quadrature) on [ζq_l, q_s] and separation.rs at p(ζ) = σ0/A(ζ).
 fn a_ubar(s: &SelfAffine, e_star: f64, p: f64, zeta: f64) -> (f64, f64) {
-    let a = Persson::new(s, e_star).unwrap().contact_fraction(zeta, p).unwrap().fraction;
+    let a = Persson::new(s, e_star)
+        .unwrap()
+        .contact_fraction(zeta, p)
+        .unwrap()
+        .fraction;
     let lo = zeta * s.q_min();
     let cut = FnSpectrum::new(|q| s.c(q), lo, s.q_max(), 1e-13)
         .unwrap()
@@ -103,13 +122,19 @@ fn critical_junction_against_an_independent_derivative() {
     // ~1e-12/1e-4: agreement to 1e-6 relative.
     let s = spectrum();
     let e_star = 1e9;
-    let cj = CriticalJunction::new(&s, e_star, seal()).unwrap().with_breaks(&[4e4]);
+    let cj = CriticalJunction::new(&s, e_star, seal())
+        .unwrap()
+        .with_breaks(&[4e4]);
     for p in [1e6, 1e7, 3e7] {
         let pt = cj.point(p).unwrap();
         assert_eq!(pt.status, LeakStatus::Leaking);
         let zc = pt.critical_zeta.unwrap();
         // A(ζ_c) = a_c
-        let a = Persson::new(&s, e_star).unwrap().contact_fraction(zc, p).unwrap().fraction;
+        let a = Persson::new(&s, e_star)
+            .unwrap()
+            .contact_fraction(zc, p)
+            .unwrap()
+            .fraction;
         assert!((a - 0.42).abs() < 1e-12, "{a}");
         let h = 1e-4 * zc;
         let (a_hi, u_hi) = a_ubar(&s, e_star, p, zc + h);
@@ -145,7 +170,14 @@ fn percolating_contact_gives_zero_leak_not_an_error() {
 #[test]
 fn bruggeman_two_phase_closed_form() {
     // a at σ = 0, 1 − a at σ1: σ_eff = σ1(1 − 2a) for a < ½, else 0.
-    for (a, s1) in [(0.0, 1.0), (0.1, 2.5e-18), (0.3, 7.0), (0.49, 1e10), (0.5, 1.0), (0.7, 3.0)] {
+    for (a, s1) in [
+        (0.0, 1.0),
+        (0.1, 2.5e-18),
+        (0.3, 7.0),
+        (0.49, 1e10),
+        (0.5, 1.0),
+        (0.7, 3.0),
+    ] {
         let got = bruggeman(&[(a, 0.0), (1.0 - a, s1)]).unwrap();
         let want = (s1 * (1.0 - 2.0 * a)).max(0.0);
         assert!((got - want).abs() <= 1e-12 * s1, "a = {a}: {got} vs {want}");
@@ -191,34 +223,102 @@ fn bad_input_names_the_field() {
     let s = spectrum();
     let base = seal();
     let cases: Vec<(Seal, &str)> = vec![
-        (Seal { viscosity: 0.0, ..base }, "viscosity"),
-        (Seal { viscosity: -1e-3, ..base }, "viscosity"),
-        (Seal { viscosity: f64::NAN, ..base }, "viscosity"),
-        (Seal { seal_width: 0.0, ..base }, "seal_width"),
-        (Seal { seal_length: -1.0, ..base }, "seal_length"),
-        (Seal { drive: Drive::Liquid { pressure_drop: 0.0 }, ..base }, "pressure_drop"),
-        (Seal { drive: Drive::Liquid { pressure_drop: -5.0 }, ..base }, "pressure_drop"),
         (
-            Seal { drive: Drive::Gas { inlet_pressure: 1e5, outlet_pressure: 2e5 }, ..base },
+            Seal {
+                viscosity: 0.0,
+                ..base
+            },
+            "viscosity",
+        ),
+        (
+            Seal {
+                viscosity: -1e-3,
+                ..base
+            },
+            "viscosity",
+        ),
+        (
+            Seal {
+                viscosity: f64::NAN,
+                ..base
+            },
+            "viscosity",
+        ),
+        (
+            Seal {
+                seal_width: 0.0,
+                ..base
+            },
+            "seal_width",
+        ),
+        (
+            Seal {
+                seal_length: -1.0,
+                ..base
+            },
+            "seal_length",
+        ),
+        (
+            Seal {
+                drive: Drive::Liquid { pressure_drop: 0.0 },
+                ..base
+            },
+            "pressure_drop",
+        ),
+        (
+            Seal {
+                drive: Drive::Liquid {
+                    pressure_drop: -5.0,
+                },
+                ..base
+            },
+            "pressure_drop",
+        ),
+        (
+            Seal {
+                drive: Drive::Gas {
+                    inlet_pressure: 1e5,
+                    outlet_pressure: 2e5,
+                },
+                ..base
+            },
             "outlet_pressure",
         ),
         (
-            Seal { drive: Drive::Gas { inlet_pressure: 1e5, outlet_pressure: 1e5 }, ..base },
+            Seal {
+                drive: Drive::Gas {
+                    inlet_pressure: 1e5,
+                    outlet_pressure: 1e5,
+                },
+                ..base
+            },
             "outlet_pressure",
         ),
         (
-            Seal { drive: Drive::Gas { inlet_pressure: -1.0, outlet_pressure: 1e5 }, ..base },
+            Seal {
+                drive: Drive::Gas {
+                    inlet_pressure: -1.0,
+                    outlet_pressure: 1e5,
+                },
+                ..base
+            },
             "inlet_pressure",
         ),
     ];
     for (seal, name) in cases {
         let e = CriticalJunction::new(&s, 1e9, seal).err().unwrap();
         assert_eq!(invalid_name(e), name);
-        let e = EffectiveMedium::new(&s, 1e9, seal, DensityOptions::default()).err().unwrap();
+        let e = EffectiveMedium::new(&s, 1e9, seal, DensityOptions::default())
+            .err()
+            .unwrap();
         assert_eq!(invalid_name(e), name);
     }
     for t in [0.0, 1.0, -0.1, 1.5, f64::NAN] {
-        let e = CriticalJunction::new(&s, 1e9, base).unwrap().with_threshold(t).err().unwrap();
+        let e = CriticalJunction::new(&s, 1e9, base)
+            .unwrap()
+            .with_threshold(t)
+            .err()
+            .unwrap();
         assert_eq!(invalid_name(e), "percolation_threshold");
     }
     let cj = CriticalJunction::new(&s, 1e9, base).unwrap();
@@ -251,7 +351,12 @@ mod reynolds {
     fn uniform_slot_is_poiseuille() {
         for n in [3, 8, 33] {
             let g = 3e-7;
-            let f = flow(&GapField::new(n, 1e-3, vec![g; n * n]).unwrap(), ETA, FlowDirection::Y).unwrap();
+            let f = flow(
+                &GapField::new(n, 1e-3, vec![g; n * n]).unwrap(),
+                ETA,
+                FlowDirection::Y,
+            )
+            .unwrap();
             assert!(f.percolates);
             let rel = f.effective_flow_conductivity / sigma(g) - 1.0;
             assert!(rel.abs() < EXACT, "{n}: {rel:e}");
@@ -277,7 +382,9 @@ mod reynolds {
         for dir in [FlowDirection::X, FlowDirection::Y] {
             let f = flow(&along(n, g, dir), ETA, dir).unwrap();
             // per line: conductance 1/Σ_faces 1/c; σ_eff = that × (N − 1)
-            let r: f64 = (0..n - 1).map(|a| 1.0 / face(sigma(g(a)), sigma(g(a + 1)))).sum();
+            let r: f64 = (0..n - 1)
+                .map(|a| 1.0 / face(sigma(g(a)), sigma(g(a + 1))))
+                .sum();
             let want = (n - 1) as f64 / r;
             let rel = f.effective_flow_conductivity / want - 1.0;
             assert!(rel.abs() < EXACT, "{dir:?}: {rel:e}");
@@ -334,13 +441,22 @@ mod reynolds {
             .collect();
         let field = GapField::new(n, 1e-3, gap).unwrap();
         let t = field.transposed();
-        for (a, b) in [(FlowDirection::X, FlowDirection::Y), (FlowDirection::Y, FlowDirection::X)] {
+        for (a, b) in [
+            (FlowDirection::X, FlowDirection::Y),
+            (FlowDirection::Y, FlowDirection::X),
+        ] {
             let fa = flow(&field, ETA, a).unwrap();
             let fb = flow(&t, ETA, b).unwrap();
             assert_eq!(fa.percolates, fb.percolates);
             assert_eq!(fa.unknowns, fb.unknowns);
-            let (x, y) = (fa.effective_flow_conductivity, fb.effective_flow_conductivity);
-            assert!((x - y).abs() <= EXACT * x.abs().max(1e-30), "{a:?}: {x} vs {y}");
+            let (x, y) = (
+                fa.effective_flow_conductivity,
+                fb.effective_flow_conductivity,
+            );
+            assert!(
+                (x - y).abs() <= EXACT * x.abs().max(1e-30),
+                "{a:?}: {x} vs {y}"
+            );
             // the two solves differ only by rounding, which the bounds cover
             let bound = fa.effective_flow_conductivity_error_bound
                 + fb.effective_flow_conductivity_error_bound;
@@ -354,12 +470,24 @@ mod reynolds {
             Error::InvalidParameter { name, .. } => name,
             other => panic!("{other:?}"),
         };
-        assert_eq!(name(GapField::new(4, 1.0, vec![1.0; 15]).unwrap_err()), "gap");
-        assert_eq!(name(GapField::new(4, 1.0, vec![-1.0; 16]).unwrap_err()), "gap");
-        assert_eq!(name(GapField::new(4, 0.0, vec![1.0; 16]).unwrap_err()), "size");
+        assert_eq!(
+            name(GapField::new(4, 1.0, vec![1.0; 15]).unwrap_err()),
+            "gap"
+        );
+        assert_eq!(
+            name(GapField::new(4, 1.0, vec![-1.0; 16]).unwrap_err()),
+            "gap"
+        );
+        assert_eq!(
+            name(GapField::new(4, 0.0, vec![1.0; 16]).unwrap_err()),
+            "size"
+        );
         let f = GapField::new(4, 1.0, vec![1.0; 16]).unwrap();
         for eta in [0.0, -1.0, f64::NAN] {
-            assert_eq!(name(flow(&f, eta, FlowDirection::X).unwrap_err()), "viscosity");
+            assert_eq!(
+                name(flow(&f, eta, FlowDirection::X).unwrap_err()),
+                "viscosity"
+            );
         }
     }
 }

@@ -84,7 +84,11 @@ impl GapField {
             return Err(Error::invalid("grid", n as f64, ">= 3"));
         }
         if gap.len() != n * n {
-            return Err(Error::invalid("gap", gap.len() as f64, format!("N² = {} values", n * n)));
+            return Err(Error::invalid(
+                "gap",
+                gap.len() as f64,
+                format!("N² = {} values", n * n),
+            ));
         }
         for &g in &gap {
             check::non_negative("gap", g)?;
@@ -310,12 +314,14 @@ pub fn flow(field: &GapField, viscosity: f64, direction: FlowDirection) -> Resul
             name: "Reynolds system".into(),
             requirement: format!("a valid sparse matrix ({e:?})"),
         })?;
-    let llt = matrix.sp_cholesky(Side::Lower).map_err(|e| Error::NotConverged {
-        what: format!("sparse Cholesky of the Reynolds system ({e:?})"),
-        iterations: 0,
-        residual: f64::NAN,
-        tolerance: 0.0,
-    })?;
+    let llt = matrix
+        .sp_cholesky(Side::Lower)
+        .map_err(|e| Error::NotConverged {
+            what: format!("sparse Cholesky of the Reynolds system ({e:?})"),
+            iterations: 0,
+            residual: f64::NAN,
+            tolerance: 0.0,
+        })?;
     let mut x = faer::Col::<f64>::from_fn(count, |i| rhs[i]);
     llt.solve_in_place(x.as_mat_mut());
     for k in 0..n * n {
@@ -329,7 +335,11 @@ pub fn flow(field: &GapField, viscosity: f64, direction: FlowDirection) -> Resul
         for b in 0..n {
             let (kf, ki) = (node(fixed, b), node(inner, b));
             let c = face(kf, ki);
-            let pi = if pressure[ki].is_nan() { pressure[kf] } else { pressure[ki] };
+            let pi = if pressure[ki].is_nan() {
+                pressure[kf]
+            } else {
+                pressure[ki]
+            };
             q += c * (pressure[kf] - pi);
             mag += c * (pressure[kf].abs() + pi.abs());
         }

@@ -91,9 +91,16 @@ pub fn contact_stiffness(
     let n = op.n();
     let n2 = n * n;
     if pressure.len() != n2 {
-        return Err(Error::invalid("pressure", pressure.len() as f64, format!("N² = {n2} values")));
+        return Err(Error::invalid(
+            "pressure",
+            pressure.len() as f64,
+            format!("N² = {n2} values"),
+        ));
     }
-    let mask: Vec<f64> = pressure.iter().map(|&p| if p > 0.0 { 1.0 } else { 0.0 }).collect();
+    let mask: Vec<f64> = pressure
+        .iter()
+        .map(|&p| if p > 0.0 { 1.0 } else { 0.0 })
+        .collect();
     let contact = mask.iter().filter(|&&m| m > 0.0).count();
     if contact == 0 || (contact == n2 && op.boundary() == Boundary::Periodic) {
         return Err(Error::invalid(

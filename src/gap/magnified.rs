@@ -243,14 +243,18 @@ impl<'a> Magnified<'a> {
         let vol = loss * u.value - du * a;
         out.volume_rate = Estimate {
             value: vol.max(0.0),
-            error: loss * u.error + a * du_err + 8.0 * f64::EPSILON * (loss * u.value + (du * a).abs()),
+            error: loss * u.error
+                + a * du_err
+                + 8.0 * f64::EPSILON * (loss * u.value + (du * a).abs()),
         };
         out.critical_separation = if loss > 0.0 {
             let ratio = a / loss;
             let u1 = u.value - du * ratio;
             Estimate {
                 value: u1.max(0.0),
-                error: u.error + ratio * du_err + 8.0 * f64::EPSILON * (u.value.abs() + (du * ratio).abs()),
+                error: u.error
+                    + ratio * du_err
+                    + 8.0 * f64::EPSILON * (u.value.abs() + (du * ratio).abs()),
             }
         } else {
             Estimate {
@@ -352,7 +356,7 @@ fn v_integral(
         } else {
             integrate(
                 what,
-                &integrand,
+                integrand,
                 pair[0],
                 pair[1],
                 f64::MIN_POSITIVE,

@@ -150,8 +150,7 @@ impl<'a> CriticalJunction<'a> {
         out.critical_separation = u1.value;
         out.critical_separation_error_bound = u1_err;
         out.leak_rate = q;
-        out.leak_rate_error_bound =
-            3.0 * f * u1.value * u1.value * u1_err + 8.0 * f64::EPSILON * q;
+        out.leak_rate_error_bound = 3.0 * f * u1.value * u1.value * u1_err + 8.0 * f64::EPSILON * q;
         Ok(out)
     }
 

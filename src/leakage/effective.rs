@@ -117,7 +117,9 @@ fn solve(r: &dyn Fn(f64) -> Result<Estimate>, hi: f64, lo: f64) -> Result<Estima
     let t = 0.5 * (a + b);
     let s = t.exp();
     // |dr/d ln σ| from the bracket; the residual's error moves the root by δr/|r′|.
-    let slope = ((fa - fb) / (b - a).max(f64::EPSILON)).abs().max(f64::MIN_POSITIVE);
+    let slope = ((fa - fb) / (b - a).max(f64::EPSILON))
+        .abs()
+        .max(f64::MIN_POSITIVE);
     Ok(Estimate {
         value: s,
         error: s * ((b - a) + last.error / slope),
@@ -178,7 +180,8 @@ impl<'a> EffectiveMedium<'a> {
     /// # Errors
     /// σ0 not finite and positive; quadrature failures.
     pub fn point(&self, pressure: f64) -> Result<EffectiveMediumPoint> {
-        let density = SeparationDensity::new(self.spectrum, self.contact_modulus, pressure, &self.options)?;
+        let density =
+            SeparationDensity::new(self.spectrum, self.contact_modulus, pressure, &self.options)?;
         self.point_from(&density)
     }
 
@@ -205,7 +208,7 @@ impl<'a> EffectiveMedium<'a> {
         let hi = u_max.powi(3) / eta12;
         let residual = |s: f64| -> Result<Estimate> {
             let cube = s * eta12; // compare u³ with 12η σ_eff
-            // (u³ − c)/(u³ + c) = 1 − 2c/(u³ + c): finite where u³ overflows
+                                  // (u³ − c)/(u³ + c) = 1 − 2c/(u³ + c): finite where u³ overflows
             let f = move |u: f64| 1.0 - 2.0 * cube / (u * u * u + cube);
             let e = density.expectation(&f, NODE_TOLERANCE, 0.0)?;
             Ok(Estimate {

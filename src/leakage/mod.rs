@@ -91,7 +91,10 @@ impl Drive {
                     return Err(Error::invalid(
                         "outlet_pressure",
                         outlet_pressure,
-                        format!("below inlet_pressure = {}", crate::error::num(inlet_pressure)),
+                        format!(
+                            "below inlet_pressure = {}",
+                            crate::error::num(inlet_pressure)
+                        ),
                     ));
                 }
             }
@@ -150,7 +153,9 @@ impl Seal {
     pub fn leak_rate(&self, flow_conductivity: f64) -> Result<f64> {
         self.validate()?;
         check::non_negative("flow_conductivity", flow_conductivity)?;
-        Ok(self.seal_length / self.seal_width * flow_conductivity * self.drive.driving_pressure()?)
+        Ok(self.seal_length / self.seal_width
+            * flow_conductivity
+            * self.drive.driving_pressure()?)
     }
 }
 
