@@ -39,6 +39,10 @@ fn conductance_curve_100(b: divan::Bencher) {
     let s = spectrum();
     let opts = ConductanceOptions {
         conductivity: Some(Conductivity::both(50.0).unwrap()),
+        density: DensityOptions {
+            breaks: vec![4e4],
+            ..Default::default()
+        },
         ..Default::default()
     };
     let model = Conductance::new(&s, 1e9, opts).unwrap();

@@ -33,10 +33,12 @@
 //! (ū = 0) gives ∫ (−A′/A0) u1 dζ = ū exactly, which the tests use.
 //!
 //! # Method
-//! Every q-integral in v = √(ln(q/(ζq_l))), adaptive Gauss–Kronrod with the
-//! relative tolerance `tolerance` (as [`crate::separation`], whose
-//! [`Separation`] gives F and K on the cut spectrum). A and A′ are closed
-//! forms of the spectrum's exact moment.
+//! The three q-integrals (F, 1/K, ∂F/∂ζ) in v = √(ln(q/(ζq_l))) as in
+//! [`crate::separation`], in one globally adaptive Gauss–Kronrod (G7/K15)
+//! pass over shared nodes (one evaluation of w, E1 and e^{−x²} serves all
+//! three), each to the relative tolerance `tolerance` with |K − G| summed
+//! over the panels as its error. A and A′ are closed forms of the spectrum's
+//! exact moment.
 //!
 //! # References
 //! - B. N. J. Persson, C. Yang, J. Phys.: Condens. Matter 20, 315011 (2008),
@@ -48,8 +50,7 @@
 use std::cell::RefCell;
 
 use crate::error::{check, Error, Result};
-use crate::quad::{integrate, Estimate};
-use crate::separation::Separation;
+use crate::quad::Estimate;
 use crate::special::{e1, erf};
 use crate::spectrum::Spectrum;
 
@@ -220,21 +221,13 @@ impl<'a> Magnified<'a> {
             inner: self.spectrum,
             lo,
         };
-        let sep = Separation::new(&band, self.contact_modulus)?
-            .with_tolerance(self.tolerance)?
-            .with_breaks(&self.breaks);
-        let u = sep.mean_separation(p)?;
-        let k = sep.stiffness(p)?;
+        let [u, c, dz] = self.cut_integrals(&band, zeta, p)?;
         out.mean_separation = u;
-        let dz = self.d_zeta(&band, zeta, p)?;
         let dp = self.pressure * loss / (a * a); // p′(ζ) = −σ0 A′/A² = σ0 loss/A²
-        let compliance = if k.value.is_infinite() {
-            zero
-        } else {
-            Estimate {
-                value: 1.0 / k.value,
-                error: k.error / (k.value * k.value),
-            }
+                                                 // −∂F/∂p = 1/K = (√π/p) ∫ q² C w e^{−x²} dq
+        let compliance = Estimate {
+            value: c.value / p,
+            error: c.error / p,
         };
         // ū′ = ∂F/∂ζ − p′/K;  u1 = ū + ū′ A/A′ = ū − ū′ A/loss.
         let du = dz.value - dp * compliance.value;
@@ -265,46 +258,107 @@ impl<'a> Magnified<'a> {
         Ok(out)
     }
 
-    /// ∂F/∂ζ at (ζ, p) on the cut spectrum `band` (module docs).
-    fn d_zeta(&self, band: &Band<'_>, zeta: f64, p: f64) -> Result<Estimate> {
+    /// [F, p/K, ∂F/∂ζ] at (ζ, p) on the cut spectrum `band` (module docs),
+    /// in one adaptive pass over shared nodes.
+    fn cut_integrals(&self, band: &Band<'_>, zeta: f64, p: f64) -> Result<[Estimate; 3]> {
         let q_l = self.spectrum.q_min();
         let lo = zeta * q_l;
         let dm = q_l * lo * lo * lo * self.spectrum.c(lo); // −∂m3/∂ζ
-        if dm == 0.0 {
-            return Ok(Estimate {
-                value: 0.0,
-                error: 0.0,
-            });
-        }
         let r = p / self.contact_modulus;
         let sqrt_pi = std::f64::consts::PI.sqrt();
         let half_pi = 0.5 * std::f64::consts::PI;
         let kernel = |q: f64, c: f64, w: f64| {
             let x2 = (w * r) * (w * r);
             if x2 >= UNDERFLOW_ARG {
-                0.0
-            } else {
-                sqrt_pi * q * q * c * half_pi * w * w * w * dm * (0.5 * e1(x2) - (-x2).exp())
+                return [0.0; 3];
             }
+            let base = sqrt_pi * q * q * c;
+            let (half_e1, ex) = (0.5 * e1(x2), (-x2).exp());
+            [
+                base * w * half_e1,
+                base * w * ex,
+                base * half_pi * w * w * w * dm * (half_e1 - ex),
+            ]
         };
-        let q = v_integral(band, &self.breaks, self.tolerance, "∂ū/∂ζ", kernel)?;
-        Ok(Estimate {
-            value: q.value,
-            error: q.error + 8.0 * f64::EPSILON * q.value.abs(),
-        })
+        let mut out = v_integral(band, &self.breaks, self.tolerance, kernel)?;
+        for e in &mut out {
+            e.error += 8.0 * f64::EPSILON * e.value.abs();
+        }
+        Ok(out)
     }
 }
 
-/// ∫_{q_min}^{q_max} kernel(q, C(q), w(q)) dq for a spectrum, in
-/// v = √(ln(q/q_min)) (v = t² on the first segment), w = (π m3(q_min, q))^{−1/2};
-/// the same substitution as [`crate::separation`], see there.
-fn v_integral(
+/// Gauss–Kronrod G7/K15 on [−1, 1]: abscissae (non-negative half,
+/// descending), Kronrod weights, Gauss weights of the odd-indexed abscissae.
+const GK_X: [f64; 8] = [
+    0.991_455_371_120_812_6,
+    0.949_107_912_342_758_5,
+    0.864_864_423_359_769_1,
+    0.741_531_185_599_394_4,
+    0.586_087_235_467_691_1,
+    0.405_845_151_377_397_2,
+    0.207_784_955_007_898_5,
+    0.0,
+];
+const GK_WK: [f64; 8] = [
+    0.022_935_322_010_529_22,
+    0.063_092_092_629_978_55,
+    0.104_790_010_322_250_2,
+    0.140_653_259_715_525_9,
+    0.169_004_726_639_267_9,
+    0.190_350_578_064_785_4,
+    0.204_432_940_075_298_9,
+    0.209_482_141_084_727_8,
+];
+const GK_WG: [f64; 4] = [
+    0.129_484_966_168_869_7,
+    0.279_705_391_489_276_7,
+    0.381_830_050_505_118_9,
+    0.417_959_183_673_469_4,
+];
+
+/// Rounding floor of a panel sum, relative to Σ|panel values| (≈ 100 ulps).
+const ROUNDOFF: f64 = 100.0 * f64::EPSILON;
+
+/// A G7/K15 panel of a vector integrand: (first, a, b, Kronrod values, |K − G|).
+type Panel<const M: usize> = (bool, f64, f64, [f64; M], [f64; M]);
+
+/// One G7/K15 panel of a vector integrand: (Kronrod values, |K − G|).
+fn gk15<const M: usize>(f: &dyn Fn(f64) -> [f64; M], a: f64, b: f64) -> ([f64; M], [f64; M]) {
+    let (half, mid) = (0.5 * (b - a), 0.5 * (a + b));
+    let (mut k, mut g) = ([0.0; M], [0.0; M]);
+    for (j, &x) in GK_X.iter().enumerate() {
+        let signs: &[f64] = if x == 0.0 { &[1.0] } else { &[-1.0, 1.0] };
+        for &s in signs {
+            let y = f(mid + s * half * x);
+            for i in 0..M {
+                k[i] += GK_WK[j] * y[i];
+                if j % 2 == 1 {
+                    g[i] += GK_WG[j / 2] * y[i];
+                }
+            }
+        }
+    }
+    let mut e = [0.0; M];
+    for i in 0..M {
+        e[i] = (k[i] - g[i]).abs() * half;
+        k[i] *= half;
+    }
+    (k, e)
+}
+
+/// ∫_{q_min}^{q_max} kernel(q, C(q), w(q)) dq for a spectrum and M integrands
+/// sharing their nodes, in v = √(ln(q/q_min)) (v = t² on the first segment),
+/// w = (π m3(q_min, q))^{−1/2}: the substitution of [`crate::separation`].
+/// Globally adaptive G7/K15: the panel with the largest error relative to its
+/// component's total is halved until every component's summed |K − G| is
+/// within `tolerance` of its total (or no panel can be halved in f64).
+fn v_integral<const M: usize>(
     spectrum: &dyn Spectrum,
     breaks: &[f64],
     tolerance: f64,
-    what: &str,
-    kernel: impl Fn(f64, f64, f64) -> f64,
-) -> Result<Estimate> {
+    kernel: impl Fn(f64, f64, f64) -> [f64; M],
+) -> Result<[Estimate; M]> {
     let q_l = spectrum.q_min();
     let q_s = spectrum.q_max();
     let mut knots = vec![0.0, (q_s / q_l).ln().sqrt()];
@@ -316,7 +370,7 @@ fn v_integral(
     knots.sort_by(f64::total_cmp);
     knots.dedup();
     let failure: RefCell<Option<Error>> = RefCell::new(None);
-    let integrand = |v: f64| {
+    let integrand = |v: f64| -> [f64; M] {
         let delta = q_l * (v * v).exp_m1();
         let q = q_l + delta;
         let width = q - q_l;
@@ -325,7 +379,7 @@ fn v_integral(
                 Ok(m) => m.value * (delta / width),
                 Err(e) => {
                     failure.borrow_mut().get_or_insert(e);
-                    return f64::NAN;
+                    return [0.0; M];
                 }
             }
         } else {
@@ -333,45 +387,101 @@ fn v_integral(
         };
         let c = spectrum.c(q);
         if m3.is_nan() || m3 <= 0.0 || c == 0.0 {
-            return 0.0;
+            return [0.0; M];
         }
         let w = 1.0 / (std::f64::consts::PI * m3).sqrt();
-        kernel(q, c, w) * 2.0 * v * q
+        let mut y = kernel(q, c, w);
+        for y_i in &mut y {
+            *y_i *= 2.0 * v * q;
+        }
+        y
     };
-    let mut total = Estimate {
-        value: 0.0,
-        error: 0.0,
+    // the first segment in t (v = t²), the others in v
+    let first = |t: f64| {
+        let mut y = integrand(t * t);
+        for y_i in &mut y {
+            *y_i *= 2.0 * t;
+        }
+        y
     };
-    for (i, pair) in knots.windows(2).enumerate() {
-        let r = if i == 0 {
-            integrate(
-                what,
-                |t: f64| integrand(t * t) * 2.0 * t,
-                pair[0].sqrt(),
-                pair[1].sqrt(),
-                f64::MIN_POSITIVE,
-                tolerance,
-                MAX_EVALS,
-            )
+    let pick = |is_first: bool| -> &dyn Fn(f64) -> [f64; M] {
+        if is_first {
+            &first
         } else {
-            integrate(
-                what,
-                integrand,
-                pair[0],
-                pair[1],
-                f64::MIN_POSITIVE,
-                tolerance,
-                MAX_EVALS,
-            )
+            &integrand
+        }
+    };
+    let mut panels: Vec<Panel<M>> = Vec::new();
+    for (i, pair) in knots.windows(2).enumerate() {
+        let (a, b) = if i == 0 {
+            (pair[0].sqrt(), pair[1].sqrt())
+        } else {
+            (pair[0], pair[1])
         };
+        let (k, e) = gk15(pick(i == 0), a, b);
+        panels.push((i == 0, a, b, k, e));
+    }
+    let mut evals = 15 * panels.len();
+    loop {
         if let Some(e) = failure.borrow_mut().take() {
             return Err(e);
         }
-        let r = r?;
-        total.value += r.value;
-        total.error += r.error;
+        let (mut total, mut error, mut size) = ([0.0; M], [0.0; M], [0.0; M]);
+        for p in &panels {
+            for i in 0..M {
+                total[i] += p.3[i];
+                error[i] += p.4[i];
+                size[i] += p.3[i].abs();
+            }
+        }
+        // A component whose total cancels below its panels' sizes cannot be
+        // had to better than rounding of those: the target is the larger of
+        // `tolerance` × total and ROUNDOFF × Σ|panel|.
+        let mut scale = [0.0; M];
+        for i in 0..M {
+            scale[i] = (tolerance * total[i].abs())
+                .max(ROUNDOFF * size[i])
+                .max(f64::MIN_POSITIVE);
+        }
+        let relative = |e: &[f64; M]| (0..M).map(|i| e[i] / scale[i]).fold(0.0, f64::max);
+        let done = (0..M).all(|i| error[i] <= scale[i]);
+        // the panel with the largest error relative to its component's total
+        let worst = panels
+            .iter()
+            .enumerate()
+            .filter(|(_, p)| p.2 - p.1 > 1e-14 * p.2.abs().max(p.1.abs()))
+            .map(|(j, p)| (j, relative(&p.4)))
+            .filter(|w| w.1 > 0.0)
+            .max_by(|a, b| a.1.total_cmp(&b.1));
+        let Some((j, _)) = worst.filter(|_| !done) else {
+            let mut out = [Estimate {
+                value: 0.0,
+                error: 0.0,
+            }; M];
+            for i in 0..M {
+                out[i] = Estimate {
+                    value: total[i],
+                    error: error[i],
+                };
+            }
+            return Ok(out);
+        };
+        if evals >= MAX_EVALS {
+            return Err(Error::NotConverged {
+                what: "q-integrals of the cut separation problem".into(),
+                iterations: evals,
+                residual: relative(&error),
+                tolerance,
+            });
+        }
+        let (is_first, a, b, _, _) = panels.swap_remove(j);
+        let m = 0.5 * (a + b);
+        let (k1, e1_) = gk15(pick(is_first), a, m);
+        let (k2, e2_) = gk15(pick(is_first), m, b);
+        panels.push((is_first, a, m, k1, e1_));
+        panels.push((is_first, m, b, k2, e2_));
+        evals += 30;
     }
-    Ok(total)
 }
 
 impl Magnified<'_> {
