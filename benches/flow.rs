@@ -102,7 +102,7 @@ mod reynolds {
         let gap = surf
             .heights
             .iter()
-            .map(|&h| if h > cut { (top - h) * 1e-3 } else { 0.0 })
+            .map(|&h| if h > cut { 0.0 } else { (top - h) * 1e-3 })
             .map(|g| g.max(0.0))
             .collect();
         GapField::new(n, 1e-3, gap).unwrap()
