@@ -150,6 +150,31 @@ fn critical_junction_against_an_independent_derivative() {
 }
 
 #[test]
+fn critical_junction_against_mpmath() {
+    // tests/reference/critical_junction.py (mpmath, 30 digits): ζ_c and u1 at
+    // σ0 = 1e7 Pa, E* = 1e9 Pa, a_c = 0.42 on `spectrum()`.
+    const ZETA_C: f64 = 2.309_059_584_758_520_5;
+    const U1: f64 = 1.055_936_513_130_348_1e-5;
+    let s = spectrum();
+    let cj = CriticalJunction::new(&s, 1e9, seal())
+        .unwrap()
+        .with_breaks(&[4e4]);
+    let pt = cj.point(1e7).unwrap();
+    let zc = pt.critical_zeta.unwrap();
+    // ζ_c from closed-form moments and Newton: 1e-13 relative
+    assert!((zc / ZETA_C - 1.0).abs() < 1e-13, "{zc}");
+    // u1 from q-integrals at relative tolerance 1e-10: 1e-9 relative, and
+    // within the reported bound
+    let err = (pt.critical_separation - U1).abs();
+    assert!(err < 1e-9 * U1, "{} vs {U1}", pt.critical_separation);
+    assert!(
+        err <= pt.critical_separation_error_bound,
+        "{err:e} > {:e}",
+        pt.critical_separation_error_bound
+    );
+}
+
+#[test]
 fn percolating_contact_gives_zero_leak_not_an_error() {
     let s = spectrum();
     let cj = CriticalJunction::new(&s, 1e9, seal()).unwrap();

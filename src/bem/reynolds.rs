@@ -458,9 +458,8 @@ fn cholesky_solve(
     .map_err(|e| failed(format!("{e:?}")))?;
     let par = Par::Seq;
     let mut values = vec![0.0f64; symbolic.len_val()];
-    let mut buffer = MemBuffer::new(
-        symbolic.factorize_numeric_llt_scratch::<f64>(par, Default::default()),
-    );
+    let mut buffer =
+        MemBuffer::new(symbolic.factorize_numeric_llt_scratch::<f64>(par, Default::default()));
     symbolic
         .factorize_numeric_llt::<f64>(
             &mut values,
