@@ -19,18 +19,19 @@
 //! Barber's identity: for frictionless elastic bodies the electrical
 //! conductance C of the contact and its incremental stiffness K = dF/dδ obey
 //! C = 2K/((ρ1 + ρ2)E*) whatever the shape of the contact (Barber 2003,
-//! Eq. 14; the proof maps the potential problem on the conductance problem of
+//! the proof maps the potential problem on the conductance problem of
 //! the same contact set). Check on one circular spot of radius a: the flat
-//! punch has K = 2E*a (Johnson, Contact Mechanics, Eq. 3.33), so
+//! punch has K = 2E*a (Boussinesq; Johnson, *Contact Mechanics*, ch. 3), so
 //! C = 4a/(ρ1 + ρ2), Holm's constriction conductance of two half-spaces
-//! (Holm, Electric Contacts (1967), §4); the Hertz ball has the same
+//! (Holm, *Electric Contacts* (1967)); the Hertz ball has the same
 //! K = dF/dδ = 2E*a and an isopotential circular contact, so the same C
 //! (tested). The thermal form replaces ρ_i by 1/κ_i: C_th = 2Kκ_s/E*, with
 //! 1/κ_s = 1/κ1 + 1/κ2 the series conductivity (Holm: 4aκ1κ2/(κ1 + κ2)).
 //! Persson, Lorenz & Volokitin (2010) write the contact part of the heat
 //! transfer coefficient the same way, α_contact = 2κ_s(−dσ0/dū)/E* with
-//! 1/κ_s = 1/κ1 + 1/κ2 and E* of the pair (their Eqs. 2–3; the paper's text
-//! was not at hand here, the factor is the one fixed above by Holm's spot).
+//! 1/κ_s = 1/κ1 + 1/κ2 and E* of the pair, to our reading (the paper's text
+//! was not at hand here, so no equation number is cited; the factor is the
+//! one fixed above by Holm's spot, which the tests check).
 //! Per nominal area, K/A0 turns C into h. The gap term counts only where the
 //! surfaces do not touch (the δ(u) of the contact is carried by K).
 //!
@@ -39,7 +40,7 @@
 //! - R. Holm, *Electric Contacts*, 4th ed., Springer (1967): constriction
 //!   resistance ρ/(4a) of a circular spot on a half-space.
 //! - B. N. J. Persson, B. Lorenz, A. I. Volokitin, Eur. Phys. J. E 31, 3 (2010),
-//!   doi:10.1140/epje/i2010-10543-0.
+//!   (heat transfer; equation numbers not checked here).
 //! - B. N. J. Persson, Phys. Rev. Lett. 99, 125502 (2007) (K from ū(σ0)).
 
 use serde::Serialize;

@@ -19,15 +19,15 @@
 //! Eqs. 4–6; [`crate::separation`]) applied to the roughness that is not yet
 //! resolved at ζ — the spectrum cut to `[ζ q_l, q_s]` — under the pressure
 //! p(ζ) that the apparent contact carries. This is the prescription of
-//! Persson & Yang (2008) Sec. 2 and Lorenz & Persson (2009) ("ū(ζ) … can be
-//! calculated from [the ū(p) law] if p is replaced with p(ζ) = F_N/A(ζ) and
-//! the integral over q is restricted to q > ζ q_L"). The papers leave w(q)'s
-//! lower limit implicit; we cut it too (w_ζ), so that ū(ζ) is exactly the
+//! Persson & Yang (2008) and Lorenz & Persson (2009) as we recall it (their
+//! text was not at hand here, so no equation numbers): p replaced by
+//! p(ζ) = F_N/A(ζ) and the q-integral restricted to q > ζ q_l. Where w(q)'s
+//! lower limit stays implicit we cut it too (w_ζ), so that ū(ζ) is exactly the
 //! separation theory of the cut spectrum — the boundary term of ∂F/∂ζ then
 //! vanishes (w_ζ → ∞ at q = ζ q_l, E1 → 0).
 //!
 //! u1 follows from the balance of the separation volume (Yang & Persson,
-//! J. Phys.: Condens. Matter 20, 215214 (2008), Sec. 4):
+//! J. Phys.: Condens. Matter 20, 215214 (2008)):
 //! A(ζ−dζ) ū(ζ−dζ) = A(ζ) ū(ζ) + [A(ζ−dζ) − A(ζ)] u1(ζ), i.e. u1 = (Aū)′/A′.
 //! Integrating −A′ u1 = −(Aū)′ from ζ = 1 (A = A0, ū(1) = ū) to q_s/q_l
 //! (ū = 0) gives ∫ (−A′/A0) u1 dζ = ū exactly, which the tests use.
@@ -42,7 +42,7 @@
 //!
 //! # References
 //! - B. N. J. Persson, C. Yang, J. Phys.: Condens. Matter 20, 315011 (2008),
-//!   doi:10.1088/0953-8984/20/31/315011, Sec. 2.
+//!   doi:10.1088/0953-8984/20/31/315011.
 //! - B. Lorenz, B. N. J. Persson, EPL 86, 44006 (2009), doi:10.1209/0295-5075/86/44006.
 //! - C. Yang, B. N. J. Persson, J. Phys.: Condens. Matter 20, 215214 (2008),
 //!   doi:10.1088/0953-8984/20/21/215214 (u1 = ū + ū′A/A′).

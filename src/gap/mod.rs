@@ -10,8 +10,8 @@
 //! separated by u1(ζ) on average (Yang & Persson 2008; [`magnified`]); the
 //! roughness not yet resolved at ζ (wavevectors above ζ q_l, rms height h(ζ))
 //! spreads that separation into a Gaussian, folded at u = 0 so that no
-//! separation is negative (Almqvist, Campañá, Prodanov & Persson 2011, Sec. 2,
-//! the P(u) of Persson's theory). The weights integrate to A(1)/A0 = 1
+//! separation is negative (Almqvist, Campañá, Prodanov & Persson 2011: the
+//! P(u) of Persson's theory). The weights integrate to A(1)/A0 = 1
 //! exactly, so P is normalised: `contact_fraction + ∫ P_nc du = 1`.
 //!
 //! Without the fold the first moment telescopes, ∫ (−A′) u1 dζ = ū(σ0) of
@@ -20,7 +20,7 @@
 //! standard normal density and distribution), reported as
 //! [`SeparationDensity::fold_shift`], so that ∫ u P(u) du = ū + fold_shift.
 //! (The paper's text was not available here; the fold is our reading of
-//! its Eq. for P(u), and the only choice not fixed by normalisation. Both
+//! its P(u), and the only choice not fixed by normalisation. Both
 //! numbers are reported so a user can see its size.)
 //!
 //! # Method
@@ -41,7 +41,7 @@
 //!
 //! # References
 //! - A. Almqvist, C. Campañá, N. Prodanov, B. N. J. Persson, J. Mech. Phys.
-//!   Solids 59, 2355 (2011), doi:10.1016/j.jmps.2011.08.004, Sec. 2 (P(u)).
+//!   Solids 59, 2355 (2011) (P(u)).
 //! - C. Yang, B. N. J. Persson, J. Phys.: Condens. Matter 20, 215214 (2008),
 //!   doi:10.1088/0953-8984/20/21/215214 (u1(ζ)).
 //! - B. N. J. Persson, Phys. Rev. Lett. 99, 125502 (2007) (ū(p)).

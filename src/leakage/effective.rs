@@ -34,7 +34,7 @@ const NODE_TOLERANCE: f64 = 1e-11;
 ///
 /// # References
 /// D. A. G. Bruggeman, Ann. Phys. 416, 636 (1935); S. Kirkpatrick, Rev. Mod.
-/// Phys. 45, 574 (1973), Eq. 5.2 (d = 2).
+/// Phys. 45, 574 (1973) (the d-dimensional form; d = 2 here).
 ///
 /// # Examples
 /// ```

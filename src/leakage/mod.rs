@@ -16,10 +16,10 @@
 //! apparent contact A(ζ)/A0 falls to the percolation threshold a_c (0.42 from
 //! simulations, the default), and let the fluid pass one square junction of
 //! height u1(ζ_c) ([`crate::gap::magnified`]) per square of the seal; the
-//! L_y/L_x junctions in parallel give Q (Persson & Yang 2008, Eqs. 1–3;
-//! Lorenz & Persson 2009, Eqs. 1–2). The effective medium is the 2-D
+//! L_y/L_x junctions in parallel give Q (Persson & Yang 2008; Lorenz &
+//! Persson 2009). The effective medium is the 2-D
 //! Bruggeman conductivity of the flow factor over the distribution P(u) of
-//! [`crate::gap`], the contact at σ = 0 (Lorenz & Persson 2010, Eq. 5); its
+//! [`crate::gap`], the contact at σ = 0 (Lorenz & Persson 2010); its
 //! own threshold is A(ζ1)/A0 = ½. For a gas the mass flux is σ ρ ∇p with
 //! ρ ∝ p, so p²/2 obeys the liquid's equation: Δ as above gives the
 //! volumetric flow at the outlet pressure.
@@ -29,11 +29,14 @@
 //! [`LeakStatus::Sealed`]: a result, not an error.
 //!
 //! # References
+//! (The papers' full texts were not available where this was written: the
+//! formulas are our reading of them, checked by the identities and closed
+//! forms in tests/leakage.rs; no equation numbers are cited.)
 //! - B. N. J. Persson, C. Yang, J. Phys.: Condens. Matter 20, 315011 (2008),
 //!   doi:10.1088/0953-8984/20/31/315011.
 //! - B. Lorenz, B. N. J. Persson, EPL 86, 44006 (2009), doi:10.1209/0295-5075/86/44006.
 //! - B. Lorenz, B. N. J. Persson, Eur. Phys. J. E 32, 281 (2010),
-//!   doi:10.1140/epje/i2010-10625-x (effective medium).
+//!   (effective medium).
 //! - D. A. G. Bruggeman, Ann. Phys. 416, 636 (1935) (the effective medium).
 //! - W. B. Dapp, A. Lücke, B. N. J. Persson, M. H. Müser, Phys. Rev. Lett.
 //!   108, 244301 (2012), doi:10.1103/PhysRevLett.108.244301 (a_c ≈ 0.42).
