@@ -186,67 +186,22 @@ pub fn flow(field: &GapField, viscosity: f64, direction: FlowDirection) -> Resul
     check::positive("viscosity", viscosity)?;
     let start = std::time::Instant::now();
     let n = field.n;
-    // node index of (a along the flow, b across it)
-    let node = |a: usize, b: usize| match direction {
-        FlowDirection::X => b * n + a,
-        FlowDirection::Y => a * n + b,
-    };
     let g_max = field.gap.iter().cloned().fold(0.0, f64::max);
     let scale = if g_max > 0.0 { g_max } else { 1.0 };
-    let sigma: Vec<f64> = field.gap.iter().map(|&g| (g / scale).powi(3)).collect();
-    let face = |i: usize, j: usize| {
-        let (a, b) = (sigma[i], sigma[j]);
-        if a > 0.0 && b > 0.0 {
-            2.0 * a * b / (a + b)
-        } else {
-            0.0
-        }
+    let net = Net {
+        n,
+        direction,
+        sigma: field.gap.iter().map(|&g| (g / scale).powi(3)).collect(),
     };
-    // neighbours of (a, b): along the flow within [0, n), across periodic
-    let neighbours = |a: usize, b: usize| {
-        let mut v = [(usize::MAX, usize::MAX); 4];
-        if a > 0 {
-            v[0] = (a - 1, b);
-        }
-        if a + 1 < n {
-            v[1] = (a + 1, b);
-        }
-        v[2] = (a, (b + 1) % n);
-        v[3] = (a, (b + n - 1) % n);
-        v
-    };
-    let reach = |from: usize| -> Vec<bool> {
-        let mut seen = vec![false; n * n];
-        let mut queue = VecDeque::new();
-        for b in 0..n {
-            let k = node(from, b);
-            seen[k] = true;
-            queue.push_back((from, b));
-        }
-        while let Some((a, b)) = queue.pop_front() {
-            let k = node(a, b);
-            for (a2, b2) in neighbours(a, b) {
-                if a2 == usize::MAX || a2 == 0 || a2 == n - 1 {
-                    continue; // fixed rows are not traversed
-                }
-                let k2 = node(a2, b2);
-                if !seen[k2] && face(k, k2) > 0.0 {
-                    seen[k2] = true;
-                    queue.push_back((a2, b2));
-                }
-            }
-        }
-        seen
-    };
-    let from_in = reach(0);
+    let from_in = net.reach(0);
     let percolates = (0..n).any(|b| {
-        let k = node(n - 2, b);
-        from_in[k] && face(k, node(n - 1, b)) > 0.0
+        let k = net.node(n - 2, b);
+        from_in[k] && net.face(k, net.node(n - 1, b)) > 0.0
     });
     let mut pressure = vec![f64::NAN; n * n];
     for b in 0..n {
-        pressure[node(0, b)] = 1.0;
-        pressure[node(n - 1, b)] = 0.0;
+        pressure[net.node(0, b)] = 1.0;
+        pressure[net.node(n - 1, b)] = 0.0;
     }
     let mut out = ReynoldsFlow {
         direction,
@@ -257,79 +212,169 @@ pub fn flow(field: &GapField, viscosity: f64, direction: FlowDirection) -> Resul
         seconds: 0.0,
         pressure: Vec::new(),
     };
-    if !percolates {
+    if percolates {
+        let from_out = net.reach(n - 1);
+        let (index, matrix, rhs) = net.assemble(&from_in, &from_out)?;
+        let order = dissection_order(n, &index, rhs.len(), &|a, b| net.node(a, b));
+        let x = cholesky_solve(&matrix, &order, &rhs)?;
+        for k in 0..n * n {
+            if index[k] != usize::MAX {
+                pressure[k] = x[index[k]];
+            }
+        }
+        let (q_in, m_in) = net.flux(&pressure, 0, 1);
+        let (q_out, m_out) = net.flux(&pressure, n - 1, n - 2);
+        let q = 0.5 * (q_in - q_out);
+        // σ_eff = Q (N−1)Δ/(NΔ ΔP) with ΔP = 1; σ = g³/(12η) = scale³ σ̂/(12η)
+        let unit = scale * scale * scale / (12.0 * viscosity) * (n - 1) as f64 / n as f64;
+        let defect = (q_in + q_out).abs();
+        out.effective_flow_conductivity = unit * q;
+        out.effective_flow_conductivity_error_bound =
+            unit * (defect + 64.0 * f64::EPSILON * (m_in + m_out));
+        out.unknowns = rhs.len();
+    } else {
         for (k, p) in pressure.iter_mut().enumerate() {
             if p.is_nan() && from_in[k] {
                 *p = 1.0;
             }
         }
-        out.pressure = pressure;
-        out.seconds = start.elapsed().as_secs_f64();
-        return Ok(out);
     }
-    let from_out = reach(n - 1);
-    // unknowns: interior nodes connected to a fixed row
-    let mut index = vec![usize::MAX; n * n];
-    let mut count = 0;
-    for a in 1..n - 1 {
-        for b in 0..n {
-            let k = node(a, b);
-            if from_in[k] || from_out[k] {
-                index[k] = count;
-                count += 1;
-            }
+    out.pressure = pressure;
+    out.seconds = start.elapsed().as_secs_f64();
+    Ok(out)
+}
+
+/// The network of a gap field for one flow direction: node conductances σ̂
+/// (scaled by the largest) and the faces between neighbours.
+struct Net {
+    n: usize,
+    direction: FlowDirection,
+    sigma: Vec<f64>,
+}
+
+/// The unknowns' numbering (`usize::MAX`: not an unknown), the lower
+/// triangle of the SPD matrix and the right-hand side (P_in = 1, P_out = 0).
+type System = (Vec<usize>, SparseColMat<usize, f64>, Vec<f64>);
+
+impl Net {
+    /// Node index of (a along the flow, b across it).
+    fn node(&self, a: usize, b: usize) -> usize {
+        match self.direction {
+            FlowDirection::X => b * self.n + a,
+            FlowDirection::Y => a * self.n + b,
         }
     }
-    let mut triplets = Vec::with_capacity(3 * count);
-    let mut rhs = vec![0.0; count];
-    for a in 1..n - 1 {
+
+    /// Face conductance: the harmonic mean of the two nodes' σ̂ (0 if either is 0).
+    fn face(&self, i: usize, j: usize) -> f64 {
+        let (a, b) = (self.sigma[i], self.sigma[j]);
+        if a > 0.0 && b > 0.0 {
+            2.0 * a * b / (a + b)
+        } else {
+            0.0
+        }
+    }
+
+    /// Neighbours of (a, b): along the flow within [0, N), across periodic;
+    /// `usize::MAX` marks a missing one.
+    fn neighbours(&self, a: usize, b: usize) -> [(usize, usize); 4] {
+        let n = self.n;
+        let mut v = [(usize::MAX, usize::MAX); 4];
+        if a > 0 {
+            v[0] = (a - 1, b);
+        }
+        if a + 1 < n {
+            v[1] = (a + 1, b);
+        }
+        v[2] = (a, (b + 1) % n);
+        v[3] = (a, (b + n - 1) % n);
+        v
+    }
+
+    /// The nodes joined to fixed row `from` by faces of c > 0 (breadth-first;
+    /// the fixed rows themselves are not traversed).
+    fn reach(&self, from: usize) -> Vec<bool> {
+        let n = self.n;
+        let mut seen = vec![false; n * n];
+        let mut queue = VecDeque::new();
         for b in 0..n {
-            let k = node(a, b);
-            let row = index[k];
-            if row == usize::MAX {
-                continue;
+            seen[self.node(from, b)] = true;
+            queue.push_back((from, b));
+        }
+        while let Some((a, b)) = queue.pop_front() {
+            let k = self.node(a, b);
+            for (a2, b2) in self.neighbours(a, b) {
+                if a2 == usize::MAX || a2 == 0 || a2 == n - 1 {
+                    continue;
+                }
+                let k2 = self.node(a2, b2);
+                if !seen[k2] && self.face(k, k2) > 0.0 {
+                    seen[k2] = true;
+                    queue.push_back((a2, b2));
+                }
             }
-            let mut diag = 0.0;
-            for (a2, b2) in neighbours(a, b) {
-                if a2 == usize::MAX {
+        }
+        seen
+    }
+
+    /// The finite-volume system of the interior nodes joined to a fixed row.
+    fn assemble(&self, from_in: &[bool], from_out: &[bool]) -> Result<System> {
+        let n = self.n;
+        let mut index = vec![usize::MAX; n * n];
+        let mut count = 0;
+        for a in 1..n - 1 {
+            for b in 0..n {
+                let k = self.node(a, b);
+                if from_in[k] || from_out[k] {
+                    index[k] = count;
+                    count += 1;
+                }
+            }
+        }
+        let mut triplets = Vec::with_capacity(3 * count);
+        let mut rhs = vec![0.0; count];
+        for a in 1..n - 1 {
+            for b in 0..n {
+                let k = self.node(a, b);
+                let row = index[k];
+                if row == usize::MAX {
                     continue;
                 }
-                let k2 = node(a2, b2);
-                let c = face(k, k2);
-                if c == 0.0 {
-                    continue;
-                }
-                diag += c;
-                if a2 == 0 {
-                    rhs[row] += c; // P_in = 1
-                } else if a2 != n - 1 {
-                    let col = index[k2];
-                    if col < row {
-                        triplets.push(Triplet::new(row, col, -c));
+                let mut diag = 0.0;
+                for (a2, b2) in self.neighbours(a, b) {
+                    if a2 == usize::MAX {
+                        continue;
+                    }
+                    let k2 = self.node(a2, b2);
+                    let c = self.face(k, k2);
+                    if c == 0.0 {
+                        continue;
+                    }
+                    diag += c;
+                    if a2 == 0 {
+                        rhs[row] += c; // P_in = 1
+                    } else if a2 != n - 1 && index[k2] < row {
+                        triplets.push(Triplet::new(row, index[k2], -c));
                     }
                 }
+                triplets.push(Triplet::new(row, row, diag));
             }
-            triplets.push(Triplet::new(row, row, diag));
         }
+        let matrix = SparseColMat::<usize, f64>::try_new_from_triplets(count, count, &triplets)
+            .map_err(|e| Error::Inconsistent {
+                name: "Reynolds system".into(),
+                requirement: format!("a valid sparse matrix ({e:?})"),
+            })?;
+        Ok((index, matrix, rhs))
     }
-    let matrix = SparseColMat::<usize, f64>::try_new_from_triplets(count, count, &triplets)
-        .map_err(|e| Error::Inconsistent {
-            name: "Reynolds system".into(),
-            requirement: format!("a valid sparse matrix ({e:?})"),
-        })?;
-    let order = dissection_order(n, &index, count, &node);
-    let x = cholesky_solve(&matrix, &order, &rhs)?;
-    for k in 0..n * n {
-        if index[k] != usize::MAX {
-            pressure[k] = x[index[k]];
-        }
-    }
-    // inflow through the faces of the inlet row, outflow through the outlet's
-    let flux = |fixed: usize, inner: usize| -> (f64, f64) {
+
+    /// Flux from fixed row `fixed` into row `inner`, and Σ c(|p_f| + |p_i|)
+    /// (the scale of its rounding).
+    fn flux(&self, pressure: &[f64], fixed: usize, inner: usize) -> (f64, f64) {
         let (mut q, mut mag) = (0.0, 0.0);
-        for b in 0..n {
-            let (kf, ki) = (node(fixed, b), node(inner, b));
-            let c = face(kf, ki);
+        for b in 0..self.n {
+            let (kf, ki) = (self.node(fixed, b), self.node(inner, b));
+            let c = self.face(kf, ki);
             let pi = if pressure[ki].is_nan() {
                 pressure[kf]
             } else {
@@ -339,20 +384,7 @@ pub fn flow(field: &GapField, viscosity: f64, direction: FlowDirection) -> Resul
             mag += c * (pressure[kf].abs() + pi.abs());
         }
         (q, mag)
-    };
-    let (q_in, m_in) = flux(0, 1);
-    let (q_out, m_out) = flux(n - 1, n - 2);
-    let q = 0.5 * (q_in - q_out);
-    // σ_eff = Q (N−1)Δ/(NΔ ΔP) with ΔP = 1; σ = g³/(12η) = scale³ σ̂/(12η)
-    let unit = scale * scale * scale / (12.0 * viscosity) * (n - 1) as f64 / n as f64;
-    let defect = (q_in + q_out).abs();
-    out.effective_flow_conductivity = unit * q;
-    out.effective_flow_conductivity_error_bound =
-        unit * (defect + 64.0 * f64::EPSILON * (m_in + m_out));
-    out.unknowns = count;
-    out.pressure = pressure;
-    out.seconds = start.elapsed().as_secs_f64();
-    Ok(out)
+    }
 }
 
 /// Side below which a block of the grid is not dissected further.
