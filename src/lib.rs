@@ -120,6 +120,9 @@
 //! | [`adhesion`] | adhesion: the Persson–Tosatti energy balance Δγ_eff(ζ), the adhesive stress diffusion with the moving detachment boundary (A/A0 down to tensile σ0, pull-off stress) and the Pastewka–Robbins criterion |
 //! | [`separation`] | the mean interfacial separation ū, the contact stiffness and the stored elastic energy |
 //! | [`friction`] | rubber friction: Persson's viscoelastic μ(v, T) from a master curve, a Prony series or a standard linear solid, with time–temperature superposition, A(v)/A0 and the flash temperature |
+//! | [`conductance`] | thermal and electrical contact conductance from the stiffness (Barber's identity) and the conductance through the gap |
+//! | [`leakage`] | the leak rate of a static seal: critical junction and effective medium |
+//! | [`gap`] | the distribution of interfacial separations P(u) and the magnification-resolved separation u1(ζ) |
 //! | `bem` | (feature `bem`) the FFT boundary-element solver: elastic kernels, surface synthesis, the Polonsky–Keer solver, Hertz validation |
 //! | [`error`] | the crate's [`Error`] and [`Result`]; [`Estimate`] is a value with its error bound, which many functions return |
 //!
@@ -147,11 +150,17 @@
 pub mod adhesion;
 #[cfg(feature = "bem")]
 pub mod bem;
+pub mod conductance;
 pub mod corrected;
 pub mod error;
 pub mod friction;
+pub mod gap;
+// File output for the `persson` binary (a separate crate): not part of the
+// library's API.
+#[doc(hidden)]
 pub mod io;
 pub mod kappa;
+pub mod leakage;
 pub mod material;
 mod quad;
 pub mod reference;

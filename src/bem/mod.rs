@@ -25,6 +25,7 @@
 //! - [`surface`]: Fourier synthesis from any [`crate::Spectrum`], height-map I/O.
 //! - [`rough`]: the rough-contact loop (one solve per nominal pressure) and its report.
 //! - [`histogram`]: pressure histograms P(σ) that integrate to A/A0.
+//! - [`reynolds`], [`stiffness`]: the exact flow through a solved gap (Reynolds' equation) and the exact contact stiffness (conductance by Barber's identity).
 //!
 //! # Example
 //! ```
@@ -39,9 +40,12 @@ pub mod fft;
 pub mod hertz;
 pub mod histogram;
 pub mod kernel;
+#[cfg(feature = "flow")]
+pub mod reynolds;
 pub mod rough;
 pub mod saturated;
 pub mod solver;
+pub mod stiffness;
 pub mod surface;
 
 pub use histogram::{pressure_histogram, saturated_histogram, HistogramBin, SaturatedHistogram};
