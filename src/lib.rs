@@ -152,9 +152,6 @@
 pub mod bem;
 pub mod corrected;
 pub mod error;
-// File output for the `persson` binary (a separate crate): not part of the
-// library's API.
-#[doc(hidden)]
 pub mod io;
 pub mod kappa;
 pub mod material;

@@ -75,7 +75,8 @@ fn measured(a: &Args, map: &persson::scene::HeightMapSpec) -> anyhow::Result<()>
     #[cfg(feature = "plot")]
     a.plot
         .draw(|| persson::scene::plot::measured_spectrum(&report))?;
-    print_warned(&report, &[], &a.format)
+    let warnings = persson::warning::of_measured(&map.file, &report);
+    print_warned(&report, &warnings, &a.format)
 }
 
 /// Without the feature `topography`, `--surface` is an error.

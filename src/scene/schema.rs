@@ -153,7 +153,8 @@ pub enum SpectrumSpec {
 /// A measured surface, read with [`crate::topography::read()`] and
 /// conditioned as [`crate::topography::analyse`] does (feature `topography`);
 /// the same fields as the flags `--surface`, `--size`, `--pixel-size`,
-/// `--periodic`, `--detrend`, `--window`, `--fill-undefined`, `--q-max`.
+/// `--periodic`, `--detrend`, `--window`, `--fill-undefined`, `--q-max`,
+/// `--height-unit`, `--lateral-unit`, `--transpose`.
 #[derive(Debug, Clone, PartialEq, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct HeightMapSpec {
@@ -180,6 +181,18 @@ pub struct HeightMapSpec {
     /// Upper end of the band, 1/m (default: the Nyquist wavevector π/Δ).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub q_max: Option<f64>,
+    /// Unit of the heights of a file that states none (default m; a file's
+    /// own unit must agree).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub height_unit: Option<LengthUnitName>,
+    /// Unit of the x (and y) coordinates of a line scan or XYZ file that
+    /// states none (default m).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub lateral_unit: Option<LengthUnitName>,
+    /// Swap the axes of the map after reading (a row of the file becomes a
+    /// column: for arrays saved in SurfaceTopography's `[ix, iy]` order).
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub transpose: bool,
 }
 
 /// A physical size: one side `Lx` (square pixels) or both `[Lx, Ly]`, m.
@@ -204,6 +217,9 @@ impl HeightMapSpec {
             window: None,
             fill_undefined: false,
             q_max: None,
+            height_unit: None,
+            lateral_unit: None,
+            transpose: false,
         }
     }
 }
@@ -270,12 +286,28 @@ impl SpectrumSpec {
     /// # Errors
     /// As [`SpectrumSpec::build`].
     pub fn build_described(&self) -> Result<(Box<dyn Spectrum>, Option<String>)> {
+        self.build_warned().map(|(s, d, _)| (s, d))
+    }
+
+    /// As [`SpectrumSpec::build_described`], with the warnings of a measured
+    /// surface's analysis (a resampled line scan, no Hurst fit, bins left
+    /// out).
+    ///
+    /// # Errors
+    /// As [`SpectrumSpec::build`].
+    pub fn build_warned(
+        &self,
+    ) -> Result<(
+        Box<dyn Spectrum>,
+        Option<String>,
+        Vec<crate::warning::Warning>,
+    )> {
         match self {
             SpectrumSpec::HeightMap(m) => {
-                let (s, d) = m.spectrum_described()?;
-                Ok((Box::new(s), Some(d)))
+                let (s, d, w) = m.spectrum_warned()?;
+                Ok((Box::new(s), Some(d), w))
             }
-            _ => Ok((self.build()?, None)),
+            _ => Ok((self.build()?, None, Vec::new())),
         }
     }
 
@@ -351,6 +383,24 @@ impl ConventionName {
             (ConventionName::SurfaceTopography, None) => Convention::SurfaceTopography,
             (ConventionName::Profile1d, None) => Convention::Profile1D,
         })
+    }
+}
+
+names! {
+    /// A unit of length, for the numbers of a file that states none.
+    LengthUnitName {
+        /// Metres.
+        M = "m",
+        /// Millimetres.
+        Mm = "mm",
+        /// Micrometres.
+        Um = "um",
+        /// Nanometres.
+        Nm = "nm",
+        /// Picometres.
+        Pm = "pm",
+        /// Ångström (1e-10 m).
+        Angstrom = "angstrom",
     }
 }
 

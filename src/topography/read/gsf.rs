@@ -1,10 +1,12 @@
 //! Gwyddion Simple Field (`.gsf`).
 //!
 //! A text header, first line `Gwyddion Simple Field 1.0`, then `Key = Value`
-//! lines (`XRes`, `YRes` required; `XReal`, `YReal` the physical sizes in m,
-//! optional), then 1–4 NUL bytes so that the header length is a multiple of
-//! 4, then `XRes·YRes` little-endian float32 heights, x fastest. NaN marks an
-//! undefined point.
+//! lines (`XRes`, `YRes` required; `XReal`, `YReal` the physical sizes,
+//! optional; `XYUnits`, `ZUnits` the units of sizes and values, optional),
+//! then 1–4 NUL bytes so that the header length is a multiple of 4, then
+//! `XRes·YRes` little-endian float32 heights, x fastest. NaN marks an
+//! undefined point. Units are base SI units (`m`); a `ZUnits` that is not a
+//! length (`deg` of a phase channel, `V`, `A` — the ampere) is an error.
 //!
 //! # References
 //! Gwyddion user guide, "Gwyddion Simple Field" file format
@@ -12,7 +14,8 @@
 
 use std::path::Path;
 
-use super::Raw;
+use super::units::Unit;
+use super::{Raw, Stored};
 use crate::error::{Error, Result};
 use crate::topography::Layout;
 
@@ -43,6 +46,8 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
         ));
     }
     let (mut xres, mut yres, mut xreal, mut yreal) = (None, None, None, None);
+    let (mut xy_unit, mut z_unit) = (Unit::Unstated, Unit::Unstated);
+    let mut resolution: f64 = 0.0;
     for (ln, line) in header.lines().enumerate().skip(1) {
         let line = line.trim();
         if line.is_empty() {
@@ -65,8 +70,24 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
         match k {
             "XRes" => xres = Some(int(v)?),
             "YRes" => yres = Some(int(v)?),
-            "XReal" => xreal = Some(num(v)?),
-            "YReal" => yreal = Some(num(v)?),
+            "XReal" | "YReal" => {
+                let x = num(v)?;
+                let r = crate::io::text::resolution(v) / x.abs();
+                if r.is_finite() {
+                    resolution = resolution.max(r);
+                }
+                if k == "XReal" {
+                    xreal = Some(x);
+                } else {
+                    yreal = Some(x);
+                }
+            }
+            "XYUnits" => {
+                xy_unit = Unit::declared("XYUnits: the sizes", v).map_err(|m| bad(ln + 1, m))?
+            }
+            "ZUnits" => {
+                z_unit = Unit::declared("ZUnits: the values", v).map_err(|m| bad(ln + 1, m))?
+            }
             _ => {}
         }
     }
@@ -93,7 +114,12 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
         .map(|c| f64::from(f32::from_le_bytes([c[0], c[1], c[2], c[3]])))
         .collect();
     let size = match (xreal, yreal) {
-        (Some(x), Some(y)) => Some((x, y)),
+        (Some(x), Some(y)) => Some(Stored {
+            lx: x,
+            ly: y,
+            unit: xy_unit,
+            resolution,
+        }),
         (None, None) => None,
         _ => {
             return Err(bad(
@@ -103,11 +129,9 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
         }
     };
     Ok(Raw {
-        nx: xres,
-        ny: yres,
-        heights,
         size,
-        layout: Layout::Map,
+        height_unit: z_unit,
+        ..Raw::map(xres, yres, heights)
     })
 }
 
