@@ -37,7 +37,9 @@ pub struct Row {
     /// The numbers, in the order written.
     pub values: Vec<f64>,
     /// One unit in the last written digit of the first two cells
-    /// ([`resolution`]), NaN where there is no such cell.
+    /// ([`resolution`]) when written with a decimal point or an exponent; 0
+    /// for an integer (taken as exact: `0 1 2` are indices, not rounded
+    /// positions); NaN where there is no such cell.
     pub resolution: [f64; 2],
 }
 
@@ -192,7 +194,11 @@ fn numbers(line: &str) -> Option<(Vec<f64>, [f64; 2])> {
     for (k, tok) in cells(line).enumerate() {
         v.push(tok.parse::<f64>().ok()?);
         if k < 2 {
-            res[k] = resolution(tok);
+            res[k] = if tok.contains(['.', 'e', 'E']) {
+                resolution(tok)
+            } else {
+                0.0
+            };
         }
     }
     (!v.is_empty()).then_some((v, res))

@@ -345,16 +345,18 @@ fn sizes(raw: &Raw, xy: f64, options: &ReadOptions) -> std::result::Result<(f64,
         let tol = s.resolution.max(1e-9);
         let off = |a: f64, b: f64| (a / b - 1.0).abs() > tol;
         if off(cx, lx) || (map && !implied_y && off(cy, ly)) {
-            let shown = if map {
-                format!("{} × {} m", crate::error::num(lx), crate::error::num(ly))
+            let n = crate::error::num;
+            let (file, given) = if map {
+                (
+                    format!("{} × {} m", n(lx), n(ly)),
+                    format!("{} × {} m", n(cx), n(cy)),
+                )
             } else {
-                format!("{} m", crate::error::num(lx))
+                (format!("{} m", n(lx)), format!("{} m", n(cx)))
             };
             return Err(format!(
-                "the file gives the size {shown}; the size given ({} × {} m) disagrees: \
-                 leave it out (the file's size is used)",
-                crate::error::num(cx),
-                crate::error::num(cy)
+                "the file gives the size {file}; the size given ({given}) disagrees: \
+                 leave it out (the file's size is used)"
             ));
         }
     }

@@ -5,8 +5,9 @@
 //! three columns are a line scan when the first counts the rows (index, x,
 //! h) or the last heading says `valid` (x, h, valid), XYZ triples when the
 //! first two columns take few distinct values, n ≤ n_x·n_y ≤ 2n for n rows
-//! with every (x, y) once; anything else is a matrix. A matrix's header
-//! gives its size and units ([`super::header`]).
+//! with every (x, y) once; anything else is a matrix, and so is any file
+//! whose header gives a map's size or shape. A matrix's header gives its
+//! size and units ([`super::header`]).
 
 use std::path::Path;
 
@@ -26,10 +27,20 @@ enum Kind {
 
 pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
     let rows = crate::io::text::rows(path, b)?;
+    let h = header::parse(rows.header.iter().chain(&rows.comments));
+    let map_header = h.width.is_some()
+        || h.height.is_some()
+        || h.pixel_size.is_some()
+        || h.rows.is_some()
+        || h.cols.is_some()
+        || h.value_unit.is_some();
+    if map_header {
+        return matrix(path, rows, &h);
+    }
     match kind(&rows) {
         Kind::LineScan => line::parse(path, &rows),
         Kind::Xyz => xyz::parse(path, &rows),
-        Kind::Matrix => matrix(path, rows),
+        Kind::Matrix => matrix(path, rows, &h),
     }
 }
 
@@ -69,9 +80,8 @@ fn looks_like_xyz(r: &Rows) -> bool {
 }
 
 /// A height matrix with the size and units of its header.
-fn matrix(path: &Path, rows: Rows) -> Result<Raw> {
+fn matrix(path: &Path, rows: Rows, h: &Header) -> Result<Raw> {
     let bad = |m: String| Error::parse(path, 0, 0, m);
-    let h = header::parse(rows.header.iter().chain(&rows.comments));
     let m = rows.into_matrix(path)?;
     let (ny, nx) = (m.rows, m.cols);
     if h.rows.is_some_and(|r| r != ny) || h.cols.is_some_and(|c| c != nx) {
@@ -82,7 +92,7 @@ fn matrix(path: &Path, rows: Rows) -> Result<Raw> {
         )));
     }
     let mut raw = Raw::map(nx, ny, m.values);
-    raw.size = size(&h, nx, ny).map_err(bad)?;
+    raw.size = size(h, nx, ny).map_err(bad)?;
     match (&h.value_unit, h.to_metres) {
         (_, Some(f)) => {
             raw.heights.iter_mut().for_each(|v| *v *= f);
