@@ -287,6 +287,44 @@ fn x3p_int16_is_signed_and_its_validity_mask_marks_undefined_points() {
 }
 
 #[test]
+fn x3p_written_by_surface_topography_as_int16_and_int32_with_masks() {
+    // matrix-4.txt written by SurfaceTopography's to_x3p with 378 points
+    // undefined: raw values over the whole signed range, undefined points
+    // stored as the minimum raw value and flagged in bindata/valid.bin.
+    let map = read::read(&data("matrix-4.txt"), &ReadOptions::default()).unwrap();
+    // The heights' range over the 2¹⁶ − 1 (2³² − 1) steps of the integers.
+    let (lo, hi) = map
+        .heights()
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &h| (a.min(h), b.max(h)));
+    for (name, steps) in [("st-int16-mask.x3p", 65535.0), ("st-int32-mask.x3p", 4294967295.0)] {
+        let p = data(name);
+        error_of(&p, &ReadOptions::default(), "378 of 22875 points are undefined");
+        let o = ReadOptions {
+            fill_undefined: true,
+            ..Default::default()
+        };
+        let t = read::read(&p, &o).unwrap();
+        assert_eq!((t.shape(), t.lx(), t.ly()), (map.shape(), map.lx(), map.ly()));
+        // Away from the undefined points the heights are the map's to half a
+        // step of the integer encoding (plus the rounding of raw·Increment + Offset).
+        let half_step = 0.5 * (hi - lo) / steps * (1.0 + 1e-6);
+        let (nx, ny) = (t.nx(), t.ny());
+        let mut checked = 0;
+        for k in 0..nx * ny {
+            let (ix, iy) = (k % nx, k / nx);
+            let undefined = (20..32).contains(&ix) && (100..112).contains(&iy) || (ix * ny + iy) % 97 == 0;
+            if !undefined {
+                let e = (t.heights()[k] - map.heights()[k]).abs();
+                assert!(e <= half_step + 4.0 * f64::EPSILON * hi.abs(), "{name} point {k}: {e:e}");
+                checked += 1;
+            }
+        }
+        assert_eq!(checked, nx * ny - 378);
+    }
+}
+
+#[test]
 fn x3p_int32_signed_with_mask_and_empty_offset() {
     let (nx, ny) = (4, 3);
     let raw: Vec<i32> = vec![-5, 7, -2_000_000_000, 3, 9, -1, 0, 4, i32::MIN, 12, -8, 6];
@@ -343,7 +381,7 @@ fn x3p_int32_signed_with_mask_and_empty_offset() {
 #[test]
 fn real_line_scans_with_rounded_x_read_as_equally_spaced() {
     // (file, points, Δ in m, first height in m): x written to 0.1 µm
-    // (Dektak, Latin-1, 30 header lines, µm), 8 significant digits (OPDx
+    // (Dektak, Latin-1, 28 header lines, µm), 8 significant digits (OPDx
     // export, m), 6 decimals (no unit: m).
     for (name, n, dx, h0) in [
         ("dektak-1.csv", 9600, 1499.8e-6 / 9599.0, -0.00933e-6),

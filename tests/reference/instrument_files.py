@@ -23,6 +23,14 @@ and what SurfaceTopography computes after removing the least-squares plane
 Undefined points (validity masks, NaN) are filled with SurfaceTopography's
 harmonic interpolation first.
 
+It also writes two x3p files with SurfaceTopography's writer (`to_x3p`), from
+the instrument map matrix-4.txt with 378 points made undefined (a 12 × 12
+block and every 97th point): st-int16-mask.x3p (DataType I) and
+st-int32-mask.x3p (DataType L). The writer uses the whole signed range (raw
+values from −32768), stores undefined points as the minimum raw value and
+marks them in bindata/valid.bin: read as unsigned, or without the mask, they
+are cliffs.
+
 Where SurfaceTopography reads a file differently from persson the script
 builds SurfaceTopography's object from the numbers persson reads, and says so
 in a comment of the generated file:
@@ -42,8 +50,7 @@ import os
 
 import numpy as np
 import SurfaceTopography
-from SurfaceTopography import read_topography
-from SurfaceTopography import UniformLineScan
+from SurfaceTopography import Topography, UniformLineScan, read_topography
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DATA = os.path.join(HERE, "..", "data")
@@ -111,12 +118,30 @@ def uniform_metres(t):
     return UniformLineScan(np.asarray(h) * f, n * dx * f, periodic=False, unit="m")
 
 
+def write_masked_x3p(path):
+    """st-int16-mask.x3p and st-int32-mask.x3p from matrix-4.txt."""
+    t = read_topography(path("matrix-4.txt"))
+    h = np.array(t.heights(), dtype=float)  # [ix, iy]
+    nx, ny = h.shape
+    undefined = np.zeros(h.shape, dtype=bool)
+    undefined[20:32, 100:112] = True
+    undefined.flat[::97] = True
+    h = np.ma.masked_array(h, mask=undefined)
+    u = Topography(h, t.physical_sizes, unit="m")
+    for dtype, name in [("I", "st-int16-mask.x3p"), ("L", "st-int32-mask.x3p")]:
+        u.to_x3p(path(name), dtype=dtype)
+    return int(undefined.sum())
+
+
 def main():
     path = lambda name: os.path.join(DATA, name)  # noqa: E731
+    undefined = write_masked_x3p(path)
+    assert undefined == 378, undefined
     maps = []
     for name in ["gwyddion-export-english.txt", "gwyddion-export-german.txt",
                  "txt_example.txt", "matrix-4.txt", "xyz-1.txt", "xyz-2.txt",
-                 "ISO5436-sample1_bin.x3p", "ISO5436-sample4_bin.x3p"]:
+                 "ISO5436-sample1_bin.x3p", "ISO5436-sample4_bin.x3p",
+                 "st-int16-mask.x3p", "st-int32-mask.x3p"]:
         t = read_topography(path(name))
         assert UNITS[t.unit] == 1.0, (name, t.unit)
         maps.append(map_entry(name, t))
