@@ -296,16 +296,28 @@ fn x3p_written_by_surface_topography_as_int16_and_int32_with_masks() {
     let (lo, hi) = map
         .heights()
         .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &h| (a.min(h), b.max(h)));
-    for (name, steps) in [("st-int16-mask.x3p", 65535.0), ("st-int32-mask.x3p", 4294967295.0)] {
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &h| {
+            (a.min(h), b.max(h))
+        });
+    for (name, steps) in [
+        ("st-int16-mask.x3p", 65535.0),
+        ("st-int32-mask.x3p", 4294967295.0),
+    ] {
         let p = data(name);
-        error_of(&p, &ReadOptions::default(), "378 of 22875 points are undefined");
+        error_of(
+            &p,
+            &ReadOptions::default(),
+            "378 of 22875 points are undefined",
+        );
         let o = ReadOptions {
             fill_undefined: true,
             ..Default::default()
         };
         let t = read::read(&p, &o).unwrap();
-        assert_eq!((t.shape(), t.lx(), t.ly()), (map.shape(), map.lx(), map.ly()));
+        assert_eq!(
+            (t.shape(), t.lx(), t.ly()),
+            (map.shape(), map.lx(), map.ly())
+        );
         // Away from the undefined points the heights are the map's to half a
         // step of the integer encoding (plus the rounding of raw·Increment + Offset).
         let half_step = 0.5 * (hi - lo) / steps * (1.0 + 1e-6);
@@ -313,10 +325,14 @@ fn x3p_written_by_surface_topography_as_int16_and_int32_with_masks() {
         let mut checked = 0;
         for k in 0..nx * ny {
             let (ix, iy) = (k % nx, k / nx);
-            let undefined = (20..32).contains(&ix) && (100..112).contains(&iy) || (ix * ny + iy) % 97 == 0;
+            let undefined =
+                (20..32).contains(&ix) && (100..112).contains(&iy) || (ix * ny + iy) % 97 == 0;
             if !undefined {
                 let e = (t.heights()[k] - map.heights()[k]).abs();
-                assert!(e <= half_step + 4.0 * f64::EPSILON * hi.abs(), "{name} point {k}: {e:e}");
+                assert!(
+                    e <= half_step + 4.0 * f64::EPSILON * hi.abs(),
+                    "{name} point {k}: {e:e}"
+                );
                 checked += 1;
             }
         }

@@ -160,7 +160,8 @@ pub enum SpectrumSpec {
 pub struct HeightMapSpec {
     /// The file: `.npy`, text matrix, `.xyz`, `.gsf`, `.x3p` or a two-column line scan.
     pub file: PathBuf,
-    /// Physical size: `Lx` (square pixels) or `[Lx, Ly]`, m (not for files that store it).
+    /// Physical size: `Lx` (square pixels) or `[Lx, Ly]`, m, `Lx` along a row of a
+    /// `.npy` or text matrix (checked against the size of files that store one).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub size: Option<Sides>,
     /// Pixel size Δ (square pixels), m, instead of `size`.

@@ -102,7 +102,7 @@ impl<'a, 'i> Xml<'a, 'i> {
 }
 
 /// The geometry and encoding `main.xml` declares.
-struct Layout3 {
+struct Declared {
     nx: usize,
     ny: usize,
     dx: f64,
@@ -140,7 +140,7 @@ impl Dtype {
     }
 }
 
-fn layout(x: &Xml) -> Result<Layout3> {
+fn layout(x: &Xml) -> Result<Declared> {
     let feature = x.text(&["Record1", "FeatureType"])?;
     let profile = match feature.as_str() {
         "SUR" => false,
@@ -185,7 +185,7 @@ fn layout(x: &Xml) -> Result<Layout3> {
             "main.xml: a profile (PRF) with SizeY = {ny}: need 1"
         )));
     }
-    Ok(Layout3 {
+    Ok(Declared {
         nx,
         ny,
         dx,
@@ -214,7 +214,7 @@ fn member(zip: &mut Archive, path: &Path, name: &str) -> Result<Vec<u8>> {
 
 /// The raw values from the binary member or the XML data list (NaN for an
 /// empty `Datum`).
-fn raw_values(x: &Xml, zip: &mut Archive, l: &Layout3, count: usize) -> Result<Vec<f64>> {
+fn raw_values(x: &Xml, zip: &mut Archive, l: &Declared, count: usize) -> Result<Vec<f64>> {
     if let Some(link) = x.text_opt(&["Record3", "DataLink", "PointDataLink"]) {
         let data = member(zip, x.path, &link)?;
         let item = l.dtype.size();
