@@ -117,7 +117,7 @@ pub fn decode<'a>(path: &Path, b: &'a [u8]) -> Result<Cow<'a, str>> {
             .map_err(|e| bad(format!("a UTF-8 byte-order mark, then invalid UTF-8 ({e})")));
     }
     let utf16 = |rest: &[u8], big: bool| -> Result<Cow<'a, str>> {
-        if rest.len() % 2 != 0 {
+        if !rest.len().is_multiple_of(2) {
             return Err(bad(
                 "UTF-16 text that ends within a character (truncated?)".into()
             ));
@@ -142,7 +142,7 @@ pub fn decode<'a>(path: &Path, b: &'a [u8]) -> Result<Cow<'a, str>> {
     }
     if let Some(k) = b.iter().position(|&c| c == 0) {
         return Err(bad(format!(
-            "not a text file: binary data (a NUL byte at byte {k})"
+            "not text (UTF-8, UTF-16 or Latin-1): binary data (a NUL byte at byte {k})"
         )));
     }
     Ok(match std::str::from_utf8(b) {

@@ -45,9 +45,10 @@ impl Surface {
         spectrum_section: &str,
         material_section: &str,
     ) -> Result<Self> {
-        let (s, measured, measured_warnings) = spectrum
+        let built = spectrum
             .build_warned()
             .map_err(|e| prefix(spectrum_section, e))?;
+        let (s, measured, measured_warnings) = (built.spectrum, built.description, built.warnings);
         let m: Material = material.build().map_err(|e| prefix(material_section, e))?;
         let description = (*spectrum == SpectrumSpec::example()
             && *material == MaterialSpec::example())

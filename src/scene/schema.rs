@@ -287,7 +287,7 @@ impl SpectrumSpec {
     /// # Errors
     /// As [`SpectrumSpec::build`].
     pub fn build_described(&self) -> Result<(Box<dyn Spectrum>, Option<String>)> {
-        self.build_warned().map(|(s, d, _)| (s, d))
+        self.build_warned().map(|b| (b.spectrum, b.description))
     }
 
     /// As [`SpectrumSpec::build_described`], with the warnings of a measured
@@ -296,19 +296,21 @@ impl SpectrumSpec {
     ///
     /// # Errors
     /// As [`SpectrumSpec::build`].
-    pub fn build_warned(
-        &self,
-    ) -> Result<(
-        Box<dyn Spectrum>,
-        Option<String>,
-        Vec<crate::warning::Warning>,
-    )> {
+    pub fn build_warned(&self) -> Result<BuiltSpectrum> {
         match self {
             SpectrumSpec::HeightMap(m) => {
                 let (s, d, w) = m.spectrum_warned()?;
-                Ok((Box::new(s), Some(d), w))
+                Ok(BuiltSpectrum {
+                    spectrum: Box::new(s),
+                    description: Some(d),
+                    warnings: w,
+                })
             }
-            _ => Ok((self.build()?, None, Vec::new())),
+            _ => Ok(BuiltSpectrum {
+                spectrum: self.build()?,
+                description: None,
+                warnings: Vec::new(),
+            }),
         }
     }
 
@@ -320,6 +322,16 @@ impl SpectrumSpec {
             _ => vec![],
         }
     }
+}
+
+/// A spectrum built from a scene's entry ([`SpectrumSpec::build_warned`]).
+pub struct BuiltSpectrum {
+    /// The spectrum.
+    pub spectrum: Box<dyn Spectrum>,
+    /// What a measured surface assumed, in words (`None` for the others).
+    pub description: Option<String>,
+    /// The warnings of a measured surface's analysis.
+    pub warnings: Vec<crate::warning::Warning>,
 }
 
 /// Defines a closed set of names: serde and (feature `cli`) clap spell the

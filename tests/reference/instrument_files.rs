@@ -2,6 +2,8 @@
 // 1.27.1, numpy 2.4.6: do not edit by hand.
 // Maps after detrend("height") (plane), line scans after detrend("height")
 // (line); spectra with a Hann window, C_ST = (2π)² C, C1D_ST = 2π C1D.
+// (Bins of the 4 × 4 maps of side 4 m fall on q = π/2, π: not constants.)
+#![allow(clippy::approx_constant)]
 
 /// SurfaceTopography's numbers for a map.
 pub struct Map {

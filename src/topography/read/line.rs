@@ -14,16 +14,20 @@ use crate::topography::{Layout, Note};
 /// in units of the spacing Δ, on top of the written precision of x.
 pub(crate) const SPACING_TOLERANCE: f64 = 0.01;
 
-/// Whether the first of three columns counts the rows (0, 1, 2, … or 1, 2, 3, …).
+/// Whether the first of three columns counts the rows (0, 1, 2, … or 1,
+/// 2, 3, …) of at least three rows whose second column increases: an index
+/// before x and h.
 pub(crate) fn index_column(r: &Rows) -> bool {
     let Some(first) = r.rows.first().and_then(|row| row.values.first()) else {
         return false;
     };
-    (*first == 0.0 || *first == 1.0)
+    r.rows.len() >= 3
+        && (*first == 0.0 || *first == 1.0)
         && r.rows
             .iter()
             .enumerate()
             .all(|(k, row)| row.values.len() == 3 && row.values[0] == first + k as f64)
+        && r.rows.windows(2).all(|w| w[1].values[1] > w[0].values[1])
 }
 
 /// Whether the third of three columns is a validity flag: a heading says

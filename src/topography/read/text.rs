@@ -2,8 +2,9 @@
 //! XYZ triples, or a line scan ([`crate::io::text`] reads the numbers).
 //!
 //! The kind is read from the numbers: two columns are a line scan (x, h);
-//! three columns are a line scan when the first counts the rows (index, x,
-//! h) or the last heading says `valid` (x, h, valid), XYZ triples when the
+//! three columns are a line scan when the first counts at least three rows
+//! and the second increases (index, x, h) or the last heading says `valid`
+//! (x, h, valid), XYZ triples when the
 //! first two columns take few distinct values, n ≤ n_x·n_y ≤ 2n for n rows
 //! with every (x, y) once; anything else is a matrix, and so is any file
 //! whose header gives a map's size or shape. A matrix's header gives its
