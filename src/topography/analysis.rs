@@ -309,19 +309,23 @@ impl crate::table::Tabulate for Analysis {
             t.push(vec![Cell::Num(*q), Cell::Num(*c), Cell::from(*n)]);
         }
         let mut tables = vec![t];
-        if let Some(p) = &self.psd_profile {
-            let mut t = Table::new(
-                "psd_profile",
-                "1D power spectrum C_1D(q) along the profiles (Persson's 1D normalisation)",
-            )
-            .column("q", "q (1/m)")
-            .column("c_1d", "C_1D (m³)")
-            .column("count", "modes");
-            for ((q, c), n) in p.q.iter().zip(&p.c_1d).zip(&p.count) {
-                t.push(vec![Cell::Num(*q), Cell::Num(*c), Cell::from(*n)]);
-            }
-            tables.push(t);
-        }
+        tables.extend(self.psd_profile.as_ref().map(profile_table));
         tables
     }
+}
+
+/// The table `psd_profile` of line scans: q, C_1D, modes per bin.
+fn profile_table(p: &ProfileSpectrum) -> crate::table::Table {
+    use crate::table::{Cell, Table};
+    let mut t = Table::new(
+        "psd_profile",
+        "1D power spectrum C_1D(q) along the profiles (Persson's 1D normalisation)",
+    )
+    .column("q", "q (1/m)")
+    .column("c_1d", "C_1D (m³)")
+    .column("count", "modes");
+    for ((q, c), n) in p.q.iter().zip(&p.c_1d).zip(&p.count) {
+        t.push(vec![Cell::Num(*q), Cell::Num(*c), Cell::from(*n)]);
+    }
+    t
 }
