@@ -265,7 +265,7 @@ fn unit_factors(raw: &Raw, options: &ReadOptions) -> std::result::Result<(f64, f
      -> std::result::Result<f64, String> {
         match (file, given) {
             (Unit::Stated(text, u), Some(g)) if *u != g => Err(format!(
-                "the file gives {what} in {text}, the given {flag} is {g}: leave it out \
+                "the file gives {what} in {text}, the {flag} given is {g}: leave it out \
                  (the file's unit is used)"
             )),
             (Unit::Stated(_, u), _) => Ok(u.metres()),
@@ -273,7 +273,7 @@ fn unit_factors(raw: &Raw, options: &ReadOptions) -> std::result::Result<(f64, f
             (Unit::Unstated, None) => match other {
                 Unit::Stated(text, _) => Err(format!(
                     "the file gives the unit of the {} ({text}) but not of the {what}: \
-                     give it ({flag})",
+                     give the {flag}",
                     if what == "heights" {
                         "coordinates"
                     } else {
@@ -286,7 +286,7 @@ fn unit_factors(raw: &Raw, options: &ReadOptions) -> std::result::Result<(f64, f
     };
     let z = one(
         "heights",
-        "height unit (--height-unit; scenes: height_unit)",
+        "height unit (--height-unit, scenes: height_unit)",
         &raw.height_unit,
         options.height_unit,
         lateral,
@@ -294,7 +294,7 @@ fn unit_factors(raw: &Raw, options: &ReadOptions) -> std::result::Result<(f64, f
     let xy = match &raw.size {
         Some(s) => one(
             "coordinates",
-            "lateral unit (--lateral-unit; scenes: lateral_unit)",
+            "lateral unit (--lateral-unit, scenes: lateral_unit)",
             &s.unit,
             options.lateral_unit,
             &raw.height_unit,
