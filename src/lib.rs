@@ -155,9 +155,6 @@ pub mod corrected;
 pub mod error;
 pub mod friction;
 pub mod gap;
-// File output for the `persson` binary (a separate crate): not part of the
-// library's API.
-#[doc(hidden)]
 pub mod io;
 pub mod kappa;
 pub mod leakage;

@@ -97,6 +97,8 @@ impl Tabulated {
     /// Cells may be separated by commas, semicolons, tabs or spaces; blank
     /// lines and lines starting with `#` are skipped; the first line may be a
     /// header (skipped when it starts with a letter and a cell is not a number).
+    /// The text is UTF-8, UTF-16 with a byte-order mark, or Latin-1
+    /// ([`crate::io::text::decode`]).
     ///
     /// # Errors
     /// [`Error::Io`] if the file cannot be read; [`Error::Parse`] with the line
@@ -112,9 +114,8 @@ impl Tabulated {
     /// # Errors
     /// As [`Tabulated::from_csv`], without the I/O errors.
     pub fn from_csv_bytes(path: &Path, bytes: &[u8], convention: Convention) -> Result<Self> {
-        let text = std::str::from_utf8(bytes)
-            .map_err(|e| Error::parse(path, 0, 0, format!("not UTF-8 text ({e})")))?;
-        let (points, lines) = parse_columns(path, text, ["q", "C"])?;
+        let text = crate::io::text::decode(path, bytes)?;
+        let (points, lines) = parse_columns(path, &text, ["q", "C"])?;
         let points = convention
             .to_persson(&points)
             .map_err(|e| at_line(e, path, &lines))?;

@@ -125,8 +125,8 @@ fn spectrum_of_the_reference_maps_is_the_library_analysis() {
             ("rms_height", a.rms_height),
             ("rms_slope", a.rms_slope),
             ("rms_curvature", a.rms_curvature),
-            ("hurst", a.hurst),
-            ("hurst_error", a.hurst_error),
+            ("hurst", a.hurst.unwrap()),
+            ("hurst_error", a.hurst_error.unwrap()),
             ("q_min", a.q_min),
             ("q_max", a.q_max),
         ];
@@ -535,4 +535,102 @@ fn the_finest_grid_of_a_periodic_map_is_its_band_limited_map() {
     // Fewer than 2 pixels per wavelength on the coarsest grid: modes on its
     // Nyquist wavevector would alias.
     assert!(band_limited_copies(&surface, 8.0 * 1e4, &[16, 32, 64]).is_err());
+}
+
+fn instrument_file(name: &str) -> String {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../..")
+        .join("tests/data")
+        .join(name)
+        .to_string_lossy()
+        .into_owned()
+}
+
+/// Issue 20 through the binary: a failed Hurst fit is `null` plus a warning
+/// (exit 0, statistics printed); a real line scan gives its 1D spectrum and
+/// statistics with the warnings of the 2D conversion; the new flags reach
+/// the reader; an unsupported binary format is one line, exit 2.
+#[test]
+fn instrument_files_through_the_command_line() {
+    let gwy = instrument_file("gwyddion-export-english.txt");
+    let v = json(&["spectrum", "--surface", &gwy, "--json"]);
+    assert!(v["hurst"].is_null() && v["hurst_error"].is_null(), "{v}");
+    let w = v["warnings"].as_array().unwrap();
+    assert_eq!(w.len(), 1, "{v}");
+    assert!(
+        w[0].as_str().unwrap().contains("no Hurst exponent"),
+        "{w:?}"
+    );
+    assert!(v["rms_height"].as_f64().unwrap() > 3.76);
+    // The header's size, checked against a given one.
+    let (code, _, err) = persson(&["spectrum", "--surface", &gwy, "--size", "1e-5,5.6789e-6"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("disagrees"), "{err}");
+
+    let dektak = instrument_file("dektak-1.csv");
+    let v = json(&["spectrum", "--surface", &dektak, "--json"]);
+    let p = &v["psd_profile"];
+    let bins = p["q"].as_array().unwrap().len();
+    assert_eq!(p["c_1d"].as_array().unwrap().len(), bins);
+    let kept = v["psd"]["q"].as_array().unwrap().len();
+    assert!(kept < bins, "{kept} of {bins}");
+    for key in ["rms_slope_profile", "rms_curvature_profile"] {
+        assert!(v[key].as_f64().unwrap() > 0.0, "{key}");
+    }
+    let w: Vec<&str> = v["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|w| w.as_str().unwrap())
+        .collect();
+    assert!(
+        w.iter()
+            .any(|w| w.contains(&format!("{} of {bins} bins", bins - kept))),
+        "{w:?}"
+    );
+    // area on the same scan: its 2D spectrum (the bins that convert), with the warning.
+    let (code, _, err) = persson(&[
+        "area",
+        "--surface",
+        &dektak,
+        "--contact-modulus",
+        "1e9",
+        "--pressure",
+        "1e5",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(err.contains("left out of C(q)"), "{err}");
+
+    // --height-unit and --transpose reach the reader.
+    let npy = dir().join("um.npy");
+    persson::io::npy::write(&npy, 2, 3, &[1.0, 2.0, 4.0, 3.0, 5.0, 9.0]).unwrap();
+    let npy = npy.to_string_lossy().into_owned();
+    let base = [
+        "spectrum",
+        "--surface",
+        &npy,
+        "--size",
+        "3e-6,2e-6",
+        "--json",
+    ];
+    let m = json(&base);
+    let mut um = base.to_vec();
+    um.extend(["--height-unit", "um"]);
+    let u = json(&um);
+    let ratio = u["rms_height"].as_f64().unwrap() / m["rms_height"].as_f64().unwrap();
+    assert!((ratio - 1e-6).abs() < 1e-20, "{ratio}");
+    let mut t = base.to_vec();
+    t.push("--transpose");
+    assert_eq!(json(&t)["shape"], serde_json::json!([3, 2]));
+
+    let sur = dir().join("scan.sur");
+    std::fs::write(&sur, b"DIGITAL SURF\0\0\0").unwrap();
+    let (code, out, err) = persson(&["spectrum", "--surface", &sur.to_string_lossy()]);
+    assert_eq!((code, out.as_str()), (2, ""), "{err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.contains("unsupported format (.sur): persson reads")
+            && err.contains("export to GSF or x3p with Gwyddion or SurfaceTopography"),
+        "{err}"
+    );
 }

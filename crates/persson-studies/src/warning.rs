@@ -95,6 +95,44 @@ pub enum Warning {
     /// A non-periodic measured map in a resolution study: its coarser copies
     /// are block averages, so N → ∞ is a resolution trend.
     MapNotPeriodic,
+    /// A measured line scan whose x positions are not equally spaced was
+    /// linearly interpolated onto equally spaced points.
+    Resampled {
+        /// The file.
+        file: PathBuf,
+        /// Points of the scan.
+        points: usize,
+        /// The largest deviation of an x from the equally spaced grid, in pixels.
+        max_deviation: f64,
+    },
+    /// No Hurst exponent for a measured surface: too few spectrum bins.
+    HurstNotFitted {
+        /// The file.
+        file: PathBuf,
+        /// Bins with C > 0 in the band.
+        bins: usize,
+    },
+    /// No Hurst exponent for a measured surface: the fit is outside (0, 1).
+    HurstOutOfRange {
+        /// The file.
+        file: PathBuf,
+        /// The fitted H.
+        hurst: f64,
+        /// Its standard error.
+        hurst_error: f64,
+    },
+    /// Bins of a measured line scan's 1D spectrum without an isotropic 2D
+    /// counterpart, left out of C(q).
+    BinsLeftOut {
+        /// The file.
+        file: PathBuf,
+        /// Bins left out.
+        count: usize,
+        /// Bins of the 1D spectrum.
+        of: usize,
+        /// Smallest and largest q left out, 1/m.
+        q_range: (f64, f64),
+    },
 }
 
 impl Warning {
@@ -238,6 +276,50 @@ impl fmt::Display for Warning {
                 n(*q_s),
                 n(*q_s / *q_l)
             ),
+            Warning::Resampled {
+                file,
+                points,
+                max_deviation,
+            } => write!(
+                f,
+                "{}: the x positions are not equally spaced (up to {} pixel(s) off the equally \
+                 spaced grid): the heights were linearly interpolated onto {points} equally \
+                 spaced points",
+                file.display(),
+                n(*max_deviation)
+            ),
+            Warning::HurstNotFitted { file, bins } => write!(
+                f,
+                "{}: no Hurst exponent (hurst null): {bins} spectrum bin(s) in the band, a fit \
+                 needs 3",
+                file.display()
+            ),
+            Warning::HurstOutOfRange {
+                file,
+                hurst,
+                hurst_error,
+            } => write!(
+                f,
+                "{}: no Hurst exponent (hurst null): the fit gives H = {} ± {}, outside (0, 1) \
+                 where the spectrum is self-affine",
+                file.display(),
+                n(*hurst),
+                n(*hurst_error)
+            ),
+            Warning::BinsLeftOut {
+                file,
+                count,
+                of,
+                q_range,
+            } => write!(
+                f,
+                "{}: {count} of {of} bins of the line scans' 1D spectrum (q = {} … {} 1/m) do \
+                 not fall faster than 1/q and have no isotropic 2D counterpart: left out of \
+                 C(q) (the rms values keep them)",
+                file.display(),
+                n(q_range.0),
+                n(q_range.1)
+            ),
             Warning::MapNotPeriodic => write!(
                 f,
                 "the map is not periodic: its coarser copies are block averages, each a \
@@ -291,6 +373,45 @@ pub fn of_rough(r: &persson::bem::rough::RoughReport) -> Vec<Warning> {
         push(&mut w, Warning::steep_slope(r.surface_rms_slope));
     }
     w
+}
+
+/// The warnings of a measured surface's analysis: what the reader did (a
+/// line scan resampled) and what the analysis could not do (no Hurst fit,
+/// bins left out of the 2D spectrum).
+#[cfg(feature = "topography")]
+pub fn of_measured(file: &std::path::Path, a: &persson::topography::Analysis) -> Vec<Warning> {
+    use persson::topography::Note;
+    let file = file.to_path_buf();
+    a.notes
+        .iter()
+        .map(|note| match note {
+            Note::Resampled {
+                points,
+                max_deviation,
+            } => Warning::Resampled {
+                file: file.clone(),
+                points: *points,
+                max_deviation: *max_deviation,
+            },
+            Note::HurstNotFitted { bins } => Warning::HurstNotFitted {
+                file: file.clone(),
+                bins: *bins,
+            },
+            Note::HurstOutOfRange { hurst, hurst_error } => Warning::HurstOutOfRange {
+                file: file.clone(),
+                hurst: *hurst,
+                hurst_error: *hurst_error,
+            },
+            Note::BinsLeftOut { q, of } => Warning::BinsLeftOut {
+                file: file.clone(),
+                count: q.len(),
+                of: *of,
+                q_range: q
+                    .iter()
+                    .fold((f64::INFINITY, 0.0), |(lo, hi), &v| (lo.min(v), hi.max(v))),
+            },
+        })
+        .collect()
 }
 
 /// Append `w` to `list` unless it is already there.

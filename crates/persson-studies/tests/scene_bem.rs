@@ -35,8 +35,9 @@ fn bem_outputs_need_the_feature() {
 #[cfg(feature = "bem")]
 mod bem {
     use super::*;
-    use persson::bem::surface::{synthesize, write_npy};
+    use persson::bem::surface::synthesize;
     use persson::bem::{hertz, Boundary, Control, Operator, Options, Solver};
+    use persson::io::npy;
     use persson::spectrum::{Amplitude, SelfAffine};
 
     /// Two runs of the same deterministic solve agree bit for bit; this
@@ -158,7 +159,7 @@ mod bem {
         let spec = SelfAffine::new(q, 2.0 * q, 8.0 * q, 0.8, Amplitude::RmsSlope(0.1)).unwrap();
         let surf = synthesize(&spec, 32, 1.0, 9).unwrap();
         let map = tmp("map.npy");
-        write_npy(&map, 32, 32, &surf.heights).unwrap();
+        npy::write(&map, 32, 32, &surf.heights).unwrap();
         let scene_path = tmp("scene.json");
         let text = r#"{
           "schema": 1,

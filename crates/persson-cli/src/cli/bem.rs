@@ -6,9 +6,10 @@ use std::path::{Path, PathBuf};
 use anyhow::Context;
 use persson::bem::hertz::{self, HertzCase};
 use persson::bem::rough::{self, Observer, RoughOptions, RoughProgress, SurfaceSource};
-use persson::bem::surface::{synthesize, write_npy};
+use persson::bem::surface::synthesize;
 use persson::bem::{check_memory, Options, Solution, MIN_GRID};
 use persson::error::check;
+use persson::io::npy;
 use persson_studies::table::Tabulate;
 
 pub use super::bem_args::{Args, SolverArgs};
@@ -78,7 +79,7 @@ impl Observer for Solves<'_> {
     }
     fn solution(&mut self, k: usize, s: &Solution) -> persson::Result<()> {
         match self.fields {
-            Some(path) => write_npy(
+            Some(path) => npy::write(
                 &indexed(path, self.several.then_some(k)),
                 self.n,
                 self.n,
@@ -129,7 +130,7 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
         (s, SurfaceSource::synthesised(spectrum.as_ref(), a.seed)?)
     };
     if let Some(path) = &a.surface_out {
-        write_npy(path, surface.n, surface.n, &surface.heights)?;
+        npy::write(path, surface.n, surface.n, &surface.heights)?;
     }
     let several = pressures.len() > 1;
     let mut solves = Solves {

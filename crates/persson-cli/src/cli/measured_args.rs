@@ -6,7 +6,7 @@
 use std::path::PathBuf;
 
 use anyhow::bail;
-use persson_studies::scene::{DetrendName, HeightMapSpec, Sides, WindowName};
+use persson_studies::scene::{DetrendName, HeightMapSpec, LengthUnitName, Sides, WindowName};
 
 /// A measured surface as the spectrum (`--surface FILE` and its conditioning),
 /// flattened next to [`SpectrumArgs`]; the scene's `height_map` spectrum.
@@ -25,7 +25,9 @@ pub struct MeasuredArgs {
         value_parser = super::args::number,
     )]
     pub pixel_size: Option<f64>,
-    /// Physical size LX[,LY] of the --surface map, m (files that store it need none).
+    /// Physical size LX[,LY] of the --surface map, m (files that store it need none; a
+    /// given one is checked against the file's). A row of a .npy or text matrix runs
+    /// along x: LX is along a row, the array of shape (ny, nx) has nx points along x.
     #[arg(
         long,
         requires = "surface",
@@ -46,6 +48,16 @@ pub struct MeasuredArgs {
     /// Fill undefined points (NaN, missing data) by harmonic interpolation.
     #[arg(long, requires = "surface")]
     pub fill_undefined: bool,
+    /// Unit of the --surface heights when the file states none (default m).
+    #[arg(long, value_enum, requires = "surface")]
+    pub height_unit: Option<LengthUnitName>,
+    /// Unit of the x (and y) columns of a --surface line scan or XYZ file that states none (default m).
+    #[arg(long, value_enum, requires = "surface")]
+    pub lateral_unit: Option<LengthUnitName>,
+    /// Swap the axes of the --surface map after reading (a row of the file becomes a
+    /// column; for arrays saved from SurfaceTopography's heights(), indexed [ix, iy]).
+    #[arg(long, requires = "surface")]
+    pub transpose: bool,
 }
 
 impl MeasuredArgs {
@@ -72,6 +84,9 @@ impl MeasuredArgs {
             window: self.window,
             fill_undefined: self.fill_undefined,
             q_max,
+            height_unit: self.height_unit,
+            lateral_unit: self.lateral_unit,
+            transpose: self.transpose,
             ..HeightMapSpec::new(file)
         }))
     }

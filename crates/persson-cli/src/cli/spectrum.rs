@@ -76,7 +76,8 @@ fn measured(a: &Args, map: &persson_studies::scene::HeightMapSpec) -> anyhow::Re
     #[cfg(feature = "plot")]
     a.plot
         .draw(|| persson_studies::scene::plot::measured_spectrum(&report))?;
-    print_warned(&report, &[], &a.format)
+    let warnings = persson_studies::warning::of_measured(&map.file, &report);
+    print_warned(&report, &warnings, &a.format)
 }
 
 /// Without the feature `topography`, `--surface` is an error.

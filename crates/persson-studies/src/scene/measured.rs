@@ -9,7 +9,7 @@ use super::schema::HeightMapSpec;
 #[cfg(any(feature = "bem", feature = "topography"))]
 use super::schema::Sides;
 #[cfg(feature = "topography")]
-use super::schema::{DetrendName, WindowName};
+use super::schema::{DetrendName, LengthUnitName, WindowName};
 
 #[cfg(feature = "topography")]
 use persson::topography::{self as topo, Analysis, AnalysisOptions, Detrend, Topography, Window};
@@ -22,6 +22,20 @@ impl From<DetrendName> for Detrend {
             DetrendName::Mean => Detrend::Mean,
             DetrendName::Plane => Detrend::Plane,
             DetrendName::Curvature => Detrend::Curvature,
+        }
+    }
+}
+
+#[cfg(feature = "topography")]
+impl From<LengthUnitName> for topo::LengthUnit {
+    fn from(u: LengthUnitName) -> Self {
+        match u {
+            LengthUnitName::M => topo::LengthUnit::Metre,
+            LengthUnitName::Mm => topo::LengthUnit::Millimetre,
+            LengthUnitName::Um => topo::LengthUnit::Micrometre,
+            LengthUnitName::Nm => topo::LengthUnit::Nanometre,
+            LengthUnitName::Pm => topo::LengthUnit::Picometre,
+            LengthUnitName::Angstrom => topo::LengthUnit::Angstrom,
         }
     }
 }
@@ -69,6 +83,9 @@ impl HeightMapSpec {
             periodic: self.periodic,
             fill_undefined: self.fill_undefined,
             format: None,
+            height_unit: self.height_unit.map(Into::into),
+            lateral_unit: self.lateral_unit.map(Into::into),
+            transpose: self.transpose,
         };
         topo::read(&self.file, &options)
     }
@@ -95,14 +112,31 @@ impl HeightMapSpec {
     /// As [`HeightMapSpec::analyse`] and [`persson::topography::Psd::to_tabulated`].
     #[cfg(feature = "topography")]
     pub fn spectrum_described(&self) -> Result<(Tabulated, String)> {
+        self.spectrum_warned().map(|(s, d, _)| (s, d))
+    }
+
+    /// As [`HeightMapSpec::spectrum_described`], with the warnings of the
+    /// analysis ([`crate::warning::of_measured`]).
+    ///
+    /// # Errors
+    /// As [`HeightMapSpec::spectrum_described`].
+    #[cfg(feature = "topography")]
+    pub fn spectrum_warned(&self) -> Result<(Tabulated, String, Vec<crate::warning::Warning>)> {
         let a = self.analyse()?;
         let s = a.psd.to_tabulated().map_err(|e| in_file(&self.file, e))?;
-        Ok((s, describe(&self.file, &a)))
+        let w = crate::warning::of_measured(&self.file, &a);
+        Ok((s, describe(&self.file, &a), w))
     }
 
     /// Without the `topography` feature a measured surface cannot be read.
     #[cfg(not(feature = "topography"))]
     pub fn spectrum_described(&self) -> Result<(Tabulated, String)> {
+        self.spectrum_warned().map(|(s, d, _)| (s, d))
+    }
+
+    /// Without the `topography` feature a measured surface cannot be read.
+    #[cfg(not(feature = "topography"))]
+    pub fn spectrum_warned(&self) -> Result<(Tabulated, String, Vec<crate::warning::Warning>)> {
         Err(Error::Inconsistent {
             name: "kind = height_map".into(),
             requirement:
@@ -177,9 +211,12 @@ impl HeightMapSpec {
         &self,
         boundary: persson::bem::Boundary,
     ) -> Result<persson::bem::surface::Surface> {
-        if let (Some(Sides::One(size)), None, true) =
-            (self.size, self.pixel_size, legacy_bem_format(&self.file))
-        {
+        let plain = self.height_unit.is_none() && !self.transpose;
+        if let (Some(Sides::One(size)), None, true) = (
+            self.size,
+            self.pixel_size,
+            plain && legacy_bem_format(&self.file),
+        ) {
             return persson::bem::rough::read_surface(&self.file, size, boundary);
         }
         self.bem_surface_read(boundary)

@@ -259,16 +259,19 @@ pub fn spectrum(r: &SpectrumReport) -> Result<Figure> {
 /// An inconsistent report.
 #[cfg(feature = "topography")]
 pub fn measured_spectrum(a: &persson::topography::Analysis) -> Result<Figure> {
-    let law = PowerLaw {
-        prefactor: a.fit.prefactor,
-        exponent: -2.0 * (a.hurst + 1.0),
+    let law = a.fit.map(|f| PowerLaw {
+        prefactor: f.prefactor,
+        exponent: -2.0 * (f.hurst + 1.0),
         q_range: Some((a.q_min, a.q_max)),
+    });
+    let mut fig = plot::spectrum(&a.psd.q, &a.psd.c, law)?;
+    fig.title = match a.fit {
+        Some(f) => format!(
+            "Power spectrum C(q) of the measured surface, H = {} ± {}",
+            number(f.hurst, 3),
+            number(f.hurst_error, 2)
+        ),
+        None => "Power spectrum C(q) of the measured surface (no Hurst fit)".into(),
     };
-    let mut fig = plot::spectrum(&a.psd.q, &a.psd.c, Some(law))?;
-    fig.title = format!(
-        "Power spectrum C(q) of the measured surface, H = {} ± {}",
-        number(a.hurst, 3),
-        number(a.hurst_error, 2)
-    );
     Ok(fig)
 }

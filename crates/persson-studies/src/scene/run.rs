@@ -45,15 +45,19 @@ impl Surface {
         spectrum_section: &str,
         material_section: &str,
     ) -> Result<Self> {
-        let (s, measured) = spectrum
-            .build_described()
+        let built = spectrum
+            .build_warned()
             .map_err(|e| prefix(spectrum_section, e))?;
+        let (s, measured, measured_warnings) = (built.spectrum, built.description, built.warnings);
         let m: Material = material.build().map_err(|e| prefix(material_section, e))?;
         let description = (*spectrum == SpectrumSpec::example()
             && *material == MaterialSpec::example())
         .then(|| EXAMPLE.to_string())
         .or(measured);
-        let warnings = spectrum_warnings(spectrum, s.as_ref());
+        let mut warnings = measured_warnings;
+        for w in spectrum_warnings(spectrum, s.as_ref()) {
+            warning::push(&mut warnings, Some(w));
+        }
         Ok(Surface {
             spectrum: s,
             contact_modulus: m.contact_modulus(),

@@ -153,13 +153,15 @@ pub enum SpectrumSpec {
 /// A measured surface, read with [`persson::topography::read()`] and
 /// conditioned as [`persson::topography::analyse`] does (feature `topography`);
 /// the same fields as the flags `--surface`, `--size`, `--pixel-size`,
-/// `--periodic`, `--detrend`, `--window`, `--fill-undefined`, `--q-max`.
+/// `--periodic`, `--detrend`, `--window`, `--fill-undefined`, `--q-max`,
+/// `--height-unit`, `--lateral-unit`, `--transpose`.
 #[derive(Debug, Clone, PartialEq, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct HeightMapSpec {
     /// The file: `.npy`, text matrix, `.xyz`, `.gsf`, `.x3p` or a two-column line scan.
     pub file: PathBuf,
-    /// Physical size: `Lx` (square pixels) or `[Lx, Ly]`, m (not for files that store it).
+    /// Physical size: `Lx` (square pixels) or `[Lx, Ly]`, m, `Lx` along a row of a
+    /// `.npy` or text matrix (checked against the size of files that store one).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub size: Option<Sides>,
     /// Pixel size Δ (square pixels), m, instead of `size`.
@@ -180,6 +182,18 @@ pub struct HeightMapSpec {
     /// Upper end of the band, 1/m (default: the Nyquist wavevector π/Δ).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub q_max: Option<f64>,
+    /// Unit of the heights of a file that states none (default m; a file's
+    /// own unit must agree).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub height_unit: Option<LengthUnitName>,
+    /// Unit of the x (and y) coordinates of a line scan or XYZ file that
+    /// states none (default m).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub lateral_unit: Option<LengthUnitName>,
+    /// Swap the axes of the map after reading (a row of the file becomes a
+    /// column: for arrays saved in SurfaceTopography's `[ix, iy]` order).
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub transpose: bool,
 }
 
 /// A physical size: one side `Lx` (square pixels) or both `[Lx, Ly]`, m.
@@ -204,6 +218,9 @@ impl HeightMapSpec {
             window: None,
             fill_undefined: false,
             q_max: None,
+            height_unit: None,
+            lateral_unit: None,
+            transpose: false,
         }
     }
 }
@@ -270,12 +287,30 @@ impl SpectrumSpec {
     /// # Errors
     /// As [`SpectrumSpec::build`].
     pub fn build_described(&self) -> Result<(Box<dyn Spectrum>, Option<String>)> {
+        self.build_warned().map(|b| (b.spectrum, b.description))
+    }
+
+    /// As [`SpectrumSpec::build_described`], with the warnings of a measured
+    /// surface's analysis (a resampled line scan, no Hurst fit, bins left
+    /// out).
+    ///
+    /// # Errors
+    /// As [`SpectrumSpec::build`].
+    pub fn build_warned(&self) -> Result<BuiltSpectrum> {
         match self {
             SpectrumSpec::HeightMap(m) => {
-                let (s, d) = m.spectrum_described()?;
-                Ok((Box::new(s), Some(d)))
+                let (s, d, w) = m.spectrum_warned()?;
+                Ok(BuiltSpectrum {
+                    spectrum: Box::new(s),
+                    description: Some(d),
+                    warnings: w,
+                })
             }
-            _ => Ok((self.build()?, None)),
+            _ => Ok(BuiltSpectrum {
+                spectrum: self.build()?,
+                description: None,
+                warnings: Vec::new(),
+            }),
         }
     }
 
@@ -287,6 +322,16 @@ impl SpectrumSpec {
             _ => vec![],
         }
     }
+}
+
+/// A spectrum built from a scene's entry ([`SpectrumSpec::build_warned`]).
+pub struct BuiltSpectrum {
+    /// The spectrum.
+    pub spectrum: Box<dyn Spectrum>,
+    /// What a measured surface assumed, in words (`None` for the others).
+    pub description: Option<String>,
+    /// The warnings of a measured surface's analysis.
+    pub warnings: Vec<crate::warning::Warning>,
 }
 
 /// Defines a closed set of names: serde and (feature `cli`) clap spell the
@@ -351,6 +396,24 @@ impl ConventionName {
             (ConventionName::SurfaceTopography, None) => Convention::SurfaceTopography,
             (ConventionName::Profile1d, None) => Convention::Profile1D,
         })
+    }
+}
+
+names! {
+    /// A unit of length, for the numbers of a file that states none.
+    LengthUnitName {
+        /// Metres.
+        M = "m",
+        /// Millimetres.
+        Mm = "mm",
+        /// Micrometres.
+        Um = "um",
+        /// Nanometres.
+        Nm = "nm",
+        /// Picometres.
+        Pm = "pm",
+        /// Ångström (1e-10 m).
+        Angstrom = "angstrom",
     }
 }
 

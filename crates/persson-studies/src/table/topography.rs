@@ -1,13 +1,15 @@
-//! The table of a measured surface's analysis ([`persson::topography`]): its
-//! statistics as scalars, then the binned spectrum.
+//! The tables of a measured surface's analysis ([`persson::topography`]): its
+//! statistics as scalars, then the binned spectrum; for line scans the 1D
+//! spectrum too.
 
-use persson::topography::{Analysis, Layout};
+use persson::topography::{Analysis, Layout, ProfileSpectrum};
 
 use super::{number, Cell, Table, Tabulate};
 
 impl Tabulate for Analysis {
     /// One table `psd`: the statistics as scalars under the title, then the
-    /// binned spectrum (q, C, modes per bin).
+    /// binned spectrum (q, C, modes per bin); for line scans a second table
+    /// `psd_profile`, the 1D spectrum (q, C_1D, modes per bin).
     fn tables(&self) -> Vec<Table> {
         let shape = format!("{} × {}", self.shape[0], self.shape[1]);
         let pixel = self
@@ -58,19 +60,46 @@ impl Tabulate for Analysis {
         .scalar(
             "hurst",
             "H (fit over the band)",
-            Cell::Measured {
-                value: self.hurst,
-                error: self.hurst_error,
+            match (self.hurst, self.hurst_error) {
+                (Some(value), Some(error)) => Cell::Measured { value, error },
+                _ => Cell::Empty,
             },
         )
         .scalar("q_min", "q_min = 2π/L (1/m)", self.q_min)
-        .scalar("q_max", "q_max (1/m)", self.q_max)
-        .column("q", "q (1/m)")
-        .column("c", "C (m⁴)")
-        .column("count", "modes");
+        .scalar("q_max", "q_max (1/m)", self.q_max);
+        if let (Some(s), Some(c)) = (self.rms_slope_profile, self.rms_curvature_profile) {
+            t = t
+                .scalar("rms_slope_profile", "h'_x rms along the profiles", s)
+                .scalar(
+                    "rms_curvature_profile",
+                    "h''_x rms along the profiles (1/m)",
+                    c,
+                );
+        }
+        let mut t = t
+            .column("q", "q (1/m)")
+            .column("c", "C (m⁴)")
+            .column("count", "modes");
         for ((q, c), n) in self.psd.q.iter().zip(&self.psd.c).zip(&self.psd.count) {
             t.push(vec![Cell::Num(*q), Cell::Num(*c), Cell::from(*n)]);
         }
-        vec![t]
+        let mut tables = vec![t];
+        tables.extend(self.psd_profile.as_ref().map(profile_table));
+        tables
     }
+}
+
+/// The table `psd_profile` of line scans: q, C_1D, modes per bin.
+fn profile_table(p: &ProfileSpectrum) -> Table {
+    let mut t = Table::new(
+        "psd_profile",
+        "1D power spectrum C_1D(q) along the profiles (Persson's 1D normalisation)",
+    )
+    .column("q", "q (1/m)")
+    .column("c_1d", "C_1D (m³)")
+    .column("count", "modes");
+    for ((q, c), n) in p.q.iter().zip(&p.c_1d).zip(&p.count) {
+        t.push(vec![Cell::Num(*q), Cell::Num(*c), Cell::from(*n)]);
+    }
+    t
 }

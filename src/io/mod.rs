@@ -1,12 +1,64 @@
-//! File output that never loses what the user had: write to a temporary file
-//! in the same directory, then rename over the target. Inputs are opened
-//! read-only.
+//! Grid file I/O: the one `.npy` reader and writer, the one text reader
+//! (matrices and columns of numbers, in UTF-8, UTF-16 or Latin-1), and
+//! atomic writes. The BEM's surfaces ([`crate::bem`]), the measured
+//! surfaces ([`crate::topography`]) and the tabulated spectra all read
+//! through here, so one file reads the same everywhere.
+//!
+//! | what | reader | writer |
+//! |---|---|---|
+//! | numpy `.npy`, float32/float64, either byte order, C or Fortran order, rank 2 | [`npy::parse`] | [`npy::write`] (atomic) |
+//! | text: rows of numbers, header lines, `#` comments | [`text::rows`], [`text::matrix`] | – |
+//! | any bytes | [`read`] (read-only) | [`write_atomic`] |
+//!
+//! # Conventions
+//! A [`Matrix`] is row-major, `values[row·cols + col]`, with `rows × cols`
+//! the shape numpy prints: the first index is the row. For a height map a
+//! row runs along x (numpy's image convention), so a map of `ny` rows and
+//! `nx` columns is the array of shape `(ny, nx)`. Every error is an
+//! [`Error::Parse`] naming the file (and the line where it helps).
+//!
+//! # Atomic writes
+//! [`write_atomic`] writes to a temporary file in the target's directory,
+//! then renames it over the target: a failed write leaves any existing file
+//! untouched and no partial file behind.
+
+pub mod npy;
+pub mod text;
 
 use std::fs::OpenOptions;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU64, Ordering};
 
 use crate::error::{Error, Result};
+
+/// A 2-D array of numbers, row-major: `values[row·cols + col]` (module docs).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Matrix {
+    /// Number of rows (numpy's first axis; y for a height map).
+    pub rows: usize,
+    /// Number of columns (numpy's second axis; x for a height map).
+    pub cols: usize,
+    /// The values, `rows·cols` of them, row by row.
+    pub values: Vec<f64>,
+}
+
+impl Matrix {
+    /// The transpose: `cols × rows`, element `(i, j)` of the result is
+    /// element `(j, i)` of `self`.
+    pub fn transposed(&self) -> Matrix {
+        let mut t = vec![0.0; self.values.len()];
+        for i in 0..self.rows {
+            for j in 0..self.cols {
+                t[j * self.rows + i] = self.values[i * self.cols + j];
+            }
+        }
+        Matrix {
+            rows: self.cols,
+            cols: self.rows,
+            values: t,
+        }
+    }
+}
 
 /// Distinguishes temporary files of concurrent renders in one process.
 static COUNTER: AtomicU64 = AtomicU64::new(0);
@@ -79,8 +131,8 @@ impl Drop for TempFile {
     }
 }
 
-/// Write `bytes` to `path` atomically: a failed write leaves any existing
-/// file untouched and no partial file behind.
+/// Write `bytes` to `path` atomically (module docs): a failed write leaves
+/// any existing file untouched and no partial file behind.
 ///
 /// # Errors
 /// [`Error::Io`] naming `path` when the directory does not exist or is not
