@@ -265,7 +265,7 @@ fn bem_hertz<'py>(
 /// saturated BEM against Persson's finite-σY P(σ), A_el and A_pl, as
 /// `compare --yield-stress`.
 #[pyfunction]
-#[pyo3(signature = (spectrum, modulus, pressure=None, *, heights=None, size=None, periodic=false, grid=256, levels=validation::DEFAULT_LEVELS, seeds=1, seed=1, alpha=Some(validation::DEFAULT_ALPHA), pixels_per_wavelength=validation::DEFAULT_PIXELS_PER_WAVELENGTH, tolerance=1e-10, max_iterations=10_000, bins=40, histogram_pressure=None, data=None, data_histogram=None, yield_stress=None))]
+#[pyo3(signature = (spectrum, modulus, pressure=None, *, heights=None, size=None, periodic=false, grid=256, levels=validation::DEFAULT_LEVELS, seeds=1, seed=1, alpha=Some(validation::DEFAULT_ALPHA), pixels_per_wavelength=validation::DEFAULT_PIXELS_PER_WAVELENGTH, tolerance=1e-10, max_iterations=10_000, bins=validation::DEFAULT_BINS, histogram_pressure=None, data=None, data_histogram=None, yield_stress=None))]
 #[allow(clippy::too_many_arguments)]
 fn compare<'py>(
     py: Python<'py>,

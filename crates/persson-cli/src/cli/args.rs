@@ -8,6 +8,7 @@ use anyhow::bail;
 use persson_studies::scene::{ConventionName, MaterialSpec, SpectrumSpec, Surface, EXAMPLE};
 
 pub use super::measured_args::MeasuredArgs;
+use super::number::number;
 #[cfg(feature = "bem")]
 use persson::spectrum::Spectrum;
 use persson::Material;
@@ -28,25 +29,25 @@ pub struct SpectrumArgs {
     #[arg(long)]
     pub example: bool,
     /// Hurst exponent H in (0, 1) of the self-affine spectrum.
-    #[arg(long, allow_negative_numbers = true, value_parser = number)]
+    #[arg(long, allow_hyphen_values = true, value_parser = number)]
     pub hurst: Option<f64>,
     /// Lower cut-off q_l, 1/m.
-    #[arg(long = "q-l", allow_negative_numbers = true, value_parser = number)]
+    #[arg(long = "q-l", allow_hyphen_values = true, value_parser = number)]
     pub q_l: Option<f64>,
     /// Roll-off wavevector q_r, 1/m (default: q_l, no roll-off).
-    #[arg(long = "q-r", allow_negative_numbers = true, value_parser = number)]
+    #[arg(long = "q-r", allow_hyphen_values = true, value_parser = number)]
     pub q_r: Option<f64>,
     /// Upper cut-off q_s, 1/m.
-    #[arg(long = "q-s", allow_negative_numbers = true, value_parser = number)]
+    #[arg(long = "q-s", allow_hyphen_values = true, value_parser = number)]
     pub q_s: Option<f64>,
     /// Amplitude as rms height over [q_l, q_s], m.
-    #[arg(long, group = "amplitude", allow_negative_numbers = true, value_parser = number)]
+    #[arg(long, group = "amplitude", allow_hyphen_values = true, value_parser = number)]
     pub rms_height: Option<f64>,
     /// Amplitude as rms slope over [q_l, q_s].
-    #[arg(long, group = "amplitude", allow_negative_numbers = true, value_parser = number)]
+    #[arg(long, group = "amplitude", allow_hyphen_values = true, value_parser = number)]
     pub rms_slope: Option<f64>,
     /// Amplitude as C(q_r), m^4.
-    #[arg(long = "c-r", group = "amplitude", allow_negative_numbers = true, value_parser = number)]
+    #[arg(long = "c-r", group = "amplitude", allow_hyphen_values = true, value_parser = number)]
     pub c_r: Option<f64>,
     /// Tabulated spectrum: CSV with columns q (1/m) and C (m^4, Persson's normalisation
     /// unless --psd-convention says otherwise).
@@ -56,7 +57,7 @@ pub struct SpectrumArgs {
     #[arg(long, value_enum, default_value_t = ConventionName::Persson, requires = "psd")]
     pub psd_convention: ConventionName,
     /// Side L (m) of the periodic surface, for --psd-convention grid.
-    #[arg(long, requires = "psd", allow_negative_numbers = true, value_parser = number)]
+    #[arg(long, requires = "psd", allow_hyphen_values = true, value_parser = number)]
     pub psd_size: Option<f64>,
 }
 
@@ -187,19 +188,19 @@ impl SpectrumArgs {
 #[derive(clap::Args, Debug, Clone, Default)]
 pub struct MaterialArgs {
     /// Contact modulus E*, 1/E* = Σ (1 − ν²)/E (same unit as the pressures).
-    #[arg(long, alias = "modulus", allow_negative_numbers = true, value_parser = number, conflicts_with_all = ["young", "poisson"])]
+    #[arg(long, alias = "modulus", allow_hyphen_values = true, value_parser = number, conflicts_with_all = ["young", "poisson"])]
     pub contact_modulus: Option<f64>,
     /// Young's modulus E of the elastic body (against a rigid one unless --young2).
-    #[arg(long, requires = "poisson", allow_negative_numbers = true, value_parser = number)]
+    #[arg(long, requires = "poisson", allow_hyphen_values = true, value_parser = number)]
     pub young: Option<f64>,
     /// Poisson ratio ν of the body.
-    #[arg(long, requires = "young", allow_negative_numbers = true, value_parser = number)]
+    #[arg(long, requires = "young", allow_hyphen_values = true, value_parser = number)]
     pub poisson: Option<f64>,
     /// Young's modulus of the second body.
-    #[arg(long, requires_all = ["young", "poisson2"], allow_negative_numbers = true, value_parser = number)]
+    #[arg(long, requires_all = ["young", "poisson2"], allow_hyphen_values = true, value_parser = number)]
     pub young2: Option<f64>,
     /// Poisson ratio of the second body.
-    #[arg(long, requires = "young2", allow_negative_numbers = true, value_parser = number)]
+    #[arg(long, requires = "young2", allow_hyphen_values = true, value_parser = number)]
     pub poisson2: Option<f64>,
 }
 
@@ -303,54 +304,4 @@ fn looks_like_height_map(path: &std::path::Path) -> bool {
                 .count()
                 > 2
         })
-}
-
-/// Units a number may have been typed with, and their factor to SI.
-const UNITS: [(&str, f64, &str); 14] = [
-    ("GPa", 1e9, "Pa"),
-    ("MPa", 1e6, "Pa"),
-    ("kPa", 1e3, "Pa"),
-    ("Pa", 1.0, "Pa"),
-    ("nm", 1e-9, "m"),
-    ("µm", 1e-6, "m"),
-    ("um", 1e-6, "m"),
-    ("mm", 1e-3, "m"),
-    ("cm", 1e-2, "m"),
-    ("m", 1.0, "m"),
-    ("kN", 1e3, "N"),
-    ("mN", 1e-3, "N"),
-    ("N", 1.0, "N"),
-    ("%", 1e-2, "(a fraction)"),
-];
-
-/// A number flag's value parser: a plain number (SI units: Pa, m, N, 1/m);
-/// a number with a unit is refused with the plain SI number it stands for.
-pub fn number(s: &str) -> Result<f64, String> {
-    let t = s.trim();
-    if let Ok(v) = t.parse::<f64>() {
-        return Ok(v);
-    }
-    for (unit, factor, si) in UNITS {
-        if let Some(n) = t.strip_suffix(unit).map(str::trim) {
-            if n.parse::<f64>().is_ok() {
-                // The number as typed, times the unit's power of ten.
-                let exp = factor.log10().round() as i32;
-                let (m, e0) = match n.split_once(['e', 'E']) {
-                    Some((m, e)) => (m, e.parse::<i32>().unwrap_or(0)),
-                    None => (n, 0),
-                };
-                let plain = match exp + e0 {
-                    0 => m.to_string(),
-                    e => format!("{m}e{e}"),
-                };
-                return Err(format!(
-                    "`{s}` is not a plain number: give SI numbers without units \
-                     ({plain} for {s}, in {si})"
-                ));
-            }
-        }
-    }
-    Err(format!(
-        "`{s}` is not a number: give a plain SI number (Pa, m, N, 1/m), e.g. 1e6, 2.5e-7"
-    ))
 }

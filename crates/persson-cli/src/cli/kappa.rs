@@ -13,7 +13,7 @@ pub struct Args {
     #[command(flatten)]
     material: MaterialArgs,
     /// Nominal pressures: with a spectrum and material, print the linear contact fractions.
-    #[arg(long, value_delimiter = ',', allow_negative_numbers = true, value_parser = super::args::number)]
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = super::number::number)]
     pressure: Vec<f64>,
     #[command(flatten)]
     format: Format,

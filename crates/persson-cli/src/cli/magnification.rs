@@ -16,13 +16,13 @@ pub struct Args {
     #[command(flatten)]
     material: MaterialArgs,
     /// Nominal (mean) pressure σ0, same unit as E* (with --example: 1e7).
-    #[arg(long, allow_negative_numbers = true, value_parser = super::args::number)]
+    #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
     pressure: Option<f64>,
     /// Magnifications ζ ≥ 1 (comma-separated; default: --points values from 1 to q_s/q_l).
-    #[arg(long, value_delimiter = ',', allow_negative_numbers = true, value_parser = super::args::number)]
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = super::number::number)]
     zeta: Vec<f64>,
     /// Number of log-spaced magnifications when --zeta is not given.
-    #[arg(long, default_value_t = 21)]
+    #[arg(long, default_value_t = 21, allow_hyphen_values = true, value_parser = super::number::count)]
     points: usize,
     #[command(flatten)]
     format: Format,

@@ -21,6 +21,10 @@ use persson::spectrum::Spectrum;
 use persson::stress::StressScene;
 use persson::theory::Persson;
 
+/// Bins of a BEM pressure histogram unless asked otherwise (`persson compare`,
+/// `persson bem rough --histogram`, the Python `compare`).
+pub const DEFAULT_BINS: usize = 50;
+
 /// Low-load regime of the κ fits: points with A/A0 below this.
 pub const KAPPA_MAX_FRACTION: f64 = 0.1;
 
@@ -61,7 +65,7 @@ pub struct ComparisonConfig {
 
 impl ComparisonConfig {
     /// Defaults for modulus `contact_modulus`: default pressures, the
-    /// default sweep, no data, 40 bins.
+    /// default sweep, no data, [`DEFAULT_BINS`] bins.
     pub fn new(contact_modulus: f64) -> Self {
         ComparisonConfig {
             contact_modulus,
@@ -70,7 +74,7 @@ impl ComparisonConfig {
             data: None,
             data_histogram: None,
             histogram_pressure: None,
-            bins: 40,
+            bins: DEFAULT_BINS,
             wide: false,
         }
     }

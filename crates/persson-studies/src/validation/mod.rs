@@ -60,7 +60,7 @@ pub use data::{density_distance, interpolate_log, score, Score, UserData, UserHi
 pub use kappa::{fit_kappa, KappaEstimate, KappaFit};
 
 #[cfg(feature = "bem")]
-pub use compare::{compare, compare_surface, ComparisonConfig, KAPPA_MAX_FRACTION};
+pub use compare::{compare, compare_surface, ComparisonConfig, DEFAULT_BINS, KAPPA_MAX_FRACTION};
 #[cfg(feature = "bem")]
 pub use hertz::{hertz, HertzValidation};
 #[cfg(feature = "bem")]
