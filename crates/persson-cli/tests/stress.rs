@@ -51,8 +51,19 @@ fn cli_stress_json_and_exit_codes() {
     );
     assert_eq!(v["scaled_density"].as_array().unwrap().len(), 3);
     assert_eq!(v["sigma_ratio"][2].as_f64().unwrap(), 1.0);
-    assert!(v["error_bound"].as_f64().unwrap() > 0.0);
-    assert!(v["method"].as_str().unwrap().contains("sine series"));
+    // one bound per quantity, the solver's own (no aggregate `error_bound`)
+    assert!(v.get("error_bound").is_none());
+    assert_eq!(
+        v["scaled_density_error_bound"].as_f64().unwrap(),
+        want.scaled_density_error_bound
+    );
+    assert_eq!(
+        v["plastic_fraction_error_bound"].as_f64().unwrap(),
+        want.plastic_fraction_error_bound
+    );
+    // the method as data: the density from the sine series and its terms
+    assert_eq!(v["method"]["density"]["kind"], "sine_series");
+    assert!(v["method"]["density"]["terms"].as_u64().unwrap() >= 1);
     for bad in [
         &["--start", "flat", "--g", "-1"][..],
         &["--start", "flat", "--g", "nan"],

@@ -495,19 +495,24 @@ pub struct StressCurveReport {
     /// 1 − A/A0 (dimensionless curves).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub non_contact_fraction: Option<f64>,
-    /// Bound on the absolute error of σH·P and of the fractions.
-    pub error_bound: f64,
-    /// Bound on the absolute error of σH·P alone (dimensionless curves).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub scaled_density_error_bound: Option<f64>,
-    /// Bound on the absolute error of A_el/A0 alone (dimensionless curves).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub elastic_fraction_error_bound: Option<f64>,
-    /// Bound on the absolute error of A_pl/A0 alone (dimensionless curves).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub plastic_fraction_error_bound: Option<f64>,
-    /// How the density was computed.
-    pub method: String,
+    /// Bound on the absolute error of σH·P (dimensionless; divided by σH, the
+    /// bound on P of a pressure-unit curve).
+    pub scaled_density_error_bound: f64,
+    /// Bound on the absolute error of A_el/A0.
+    pub elastic_fraction_error_bound: f64,
+    /// Bound on the absolute error of A_pl/A0.
+    pub plastic_fraction_error_bound: f64,
+    /// How the density and the fractions were computed.
+    pub method: persson::stress::StressMethod,
+}
+
+impl StressCurveReport {
+    /// The largest of the three error bounds: of σH·P, A_el/A0 and A_pl/A0.
+    pub fn error_bound(&self) -> f64 {
+        self.scaled_density_error_bound
+            .max(self.elastic_fraction_error_bound)
+            .max(self.plastic_fraction_error_bound)
+    }
 }
 
 /// Stress distributions P(σ, ζ) (`persson stress`, scene output `stress`;
@@ -516,7 +521,7 @@ pub struct StressCurveReport {
 #[non_exhaustive]
 pub struct StressReport {
     /// Start condition (`flat`, `hertz`, `cylinder`, `tabulated`).
-    pub start: String,
+    pub start: persson::stress::StartKind,
     /// σ0/σH of the start.
     pub mean_ratio: f64,
     /// σH (pressure-unit curves).
@@ -584,7 +589,7 @@ impl Tabulate for StressReport {
                 .scalar("contact_fraction", "A/A0", c.contact_fraction)
                 .scalar("elastic_fraction", "A_el/A0", c.elastic_fraction)
                 .scalar("plastic_fraction", "A_pl/A0", c.plastic_fraction)
-                .scalar("error_bound", "error bound", c.error_bound);
+                .scalar("error_bound", "error bound", c.error_bound());
                 if let Some(sh) = self.peak_pressure {
                     t = t.scalar("peak_pressure", "σH", sh);
                 }
@@ -592,7 +597,7 @@ impl Tabulate for StressReport {
                     t = t.scalar("nominal_pressure", "σ0", s0);
                 }
                 if let Some(a) = self.contact_radius {
-                    let label = if self.start == "cylinder" {
+                    let label = if self.start == persson::stress::StartKind::Cylinder {
                         "half-width a (m)"
                     } else {
                         "contact radius a (m)"

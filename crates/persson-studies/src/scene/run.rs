@@ -323,16 +323,15 @@ pub fn stress_dimensionless(
                 elastic_fraction: c.elastic_fraction,
                 plastic_fraction: c.plastic_fraction,
                 non_contact_fraction: Some(c.non_contact_fraction),
-                error_bound: c.error_bound,
-                scaled_density_error_bound: Some(c.scaled_density_error_bound),
-                elastic_fraction_error_bound: Some(c.elastic_fraction_error_bound),
-                plastic_fraction_error_bound: Some(c.plastic_fraction_error_bound),
+                scaled_density_error_bound: c.scaled_density_error_bound,
+                elastic_fraction_error_bound: c.elastic_fraction_error_bound,
+                plastic_fraction_error_bound: c.plastic_fraction_error_bound,
                 method: c.method,
             })
         })
         .collect::<Result<Vec<_>>>()?;
     Ok(StressReport {
-        start: start.name().into(),
+        start: start.kind(),
         mean_ratio: start.mean_ratio(),
         peak_pressure: None,
         nominal_pressure: None,
@@ -401,15 +400,14 @@ pub fn stress_physical(surface: &Surface, out: &StressOutput) -> Result<StressRe
             elastic_fraction: c.elastic_fraction,
             plastic_fraction: c.plastic_fraction,
             non_contact_fraction: None,
-            error_bound: c.error_bound,
-            scaled_density_error_bound: None,
-            elastic_fraction_error_bound: None,
-            plastic_fraction_error_bound: None,
+            scaled_density_error_bound: c.scaled_density_error_bound,
+            elastic_fraction_error_bound: c.elastic_fraction_error_bound,
+            plastic_fraction_error_bound: c.plastic_fraction_error_bound,
             method: c.method,
         })
         .collect();
     Ok(StressReport {
-        start: out.start.name().into(),
+        start: start.kind(),
         mean_ratio: start.mean_ratio(),
         peak_pressure: Some(problem.peak_pressure),
         nominal_pressure: Some(problem.nominal_pressure()),
