@@ -162,7 +162,7 @@ impl<'a> Images<'a> {
                         edge,
                         edge_bound,
                     },
-                    ImageQuadrature::WindowedGauss { window: l },
+                    ImageQuadrature::WindowedGauss { window_half_width: l },
                 )
             }
             Start::Tabulated(t) => (

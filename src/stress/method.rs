@@ -36,7 +36,7 @@ pub enum ImageQuadrature {
     /// (cylinder start, narrow kernel).
     WindowedGauss {
         /// L, the window's half-width in units of w.
-        window: f64,
+        window_half_width: f64,
     },
     /// Adaptive Gauss–Kronrod on each segment (tabulated start).
     AdaptiveGaussKronrod,
@@ -53,9 +53,9 @@ impl fmt::Display for ImageQuadrature {
                 f,
                 "quadrature images (Gauss-Legendre in s = sin θ, {nodes} nodes)"
             ),
-            ImageQuadrature::WindowedGauss { window } => write!(
+            ImageQuadrature::WindowedGauss { window_half_width } => write!(
                 f,
-                "quadrature images (windowed Gauss-Legendre/Gauss-Jacobi, |s - u| <= {window:.2} w)"
+                "quadrature images (windowed Gauss-Legendre/Gauss-Jacobi, |s - u| <= {window_half_width:.2} w)"
             ),
             ImageQuadrature::AdaptiveGaussKronrod => {
                 write!(f, "quadrature images (adaptive Gauss-Kronrod per segment)")
@@ -227,7 +227,7 @@ mod tests {
         };
         assert_eq!(elastic.to_string(), "contact fraction: erf closed form");
         assert_eq!(
-            ImageQuadrature::WindowedGauss { window: 6.2345 }.to_string(),
+            ImageQuadrature::WindowedGauss { window_half_width: 6.2345 }.to_string(),
             "quadrature images (windowed Gauss-Legendre/Gauss-Jacobi, |s - u| <= 6.23 w)"
         );
     }

@@ -165,7 +165,7 @@ impl SpectrumArgs {
             .iter()
             .map(|file| persson_studies::Warning::PsdConvention {
                 file: file.clone(),
-                convention: self.psd_convention.to_string(),
+                convention: self.psd_convention,
             })
             .collect()
     }

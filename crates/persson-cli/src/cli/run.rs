@@ -6,7 +6,7 @@ use anyhow::Context;
 use persson_studies::scene::Scene;
 use persson_studies::table::Tabulate;
 
-use super::output::{print_warned, Format};
+use super::output::{print_from, print_warning, Format, Source};
 use persson_studies::warning::Warned;
 
 /// Arguments of `persson run`.
@@ -77,7 +77,7 @@ pub fn run(a: Args) -> anyhow::Result<()> {
     }
     if a.csv {
         for w in &report.warnings {
-            eprintln!("persson: warning: {w}");
+            print_warning(w, Source::Scene);
         }
         return Ok(());
     }
@@ -86,13 +86,14 @@ pub fn run(a: Args) -> anyhow::Result<()> {
             println!("{text}\n");
         }
     }
-    print_warned(
+    print_from(
         &report,
         &report.warnings,
         &Format {
             json: a.json,
             csv: false,
         },
+        Source::Scene,
     )
 }
 

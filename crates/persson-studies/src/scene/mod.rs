@@ -186,7 +186,7 @@ impl Scene {
             // Whatever output reads it (the BEM's synthesis too).
             report.warnings.push(crate::Warning::PsdConvention {
                 file: file.clone(),
-                convention: convention.to_string(),
+                convention: *convention,
             });
         }
         let Some(surface) = surface else {

@@ -505,7 +505,7 @@ pub fn spectrum_warnings(spec: &SpectrumSpec, s: &dyn Spectrum) -> Vec<Warning> 
     {
         w.push(Warning::PsdConvention {
             file: file.clone(),
-            convention: convention.to_string(),
+            convention: *convention,
         });
         let (c_first, c_last) = (s.c(s.q_min()), s.c(s.q_max()));
         if c_last >= c_first {
