@@ -23,6 +23,7 @@
 //! - [`hertz`]: closed-form Hertz solution and the η validation; with a
 //!   yield stress, the plastic disc per grid ([`hertz::plastic_disc`]).
 //! - [`surface`]: Fourier synthesis from any [`crate::Spectrum`], height-map I/O.
+//! - [`resample`]: one surface on several grids (subsampled, low-passed, block-averaged).
 //! - [`rough`]: the rough-contact loop (one solve per nominal pressure) and its report.
 //! - [`histogram`]: pressure histograms P(σ) that integrate to A/A0.
 //!
@@ -39,6 +40,7 @@ pub mod fft;
 pub mod hertz;
 pub mod histogram;
 pub mod kernel;
+pub mod resample;
 pub mod rough;
 pub mod saturated;
 pub mod solver;

@@ -318,8 +318,9 @@ pub struct RoughReport {
     pub surface: SurfaceSource,
     /// One point per nominal pressure, in the caller's order.
     pub points: Vec<RoughPoint>,
-    /// The pressure field of the last solve, kept only by
-    /// [`rough_contact_mapped`] (for `bem rough --plot`); not serialised.
+    /// The pressure field of one solve in partial contact (A/A0 nearest
+    /// [`MAPPED_CONTACT_FRACTION`]), kept only by [`rough_contact_mapped`]
+    /// (for `bem rough --plot`); not serialised.
     #[serde(skip)]
     pub pressure_map: Option<PressureMap>,
 }
@@ -336,10 +337,17 @@ pub struct PressureMap {
     pub pressure: Vec<f64>,
 }
 
-/// Keeps the last solution's pressure, forwarding everything else.
+/// The contact fraction of the solve whose field [`rough_contact_mapped`]
+/// keeps: the one nearest it, a partial contact whose islands a map shows
+/// (the last load of a curve is often near full contact, a map of noise).
+pub const MAPPED_CONTACT_FRACTION: f64 = 0.1;
+
+/// Keeps the pressure of the solution whose A/A0 is nearest
+/// [`MAPPED_CONTACT_FRACTION`] (the first of equals), forwarding everything else.
 struct Keep<'a> {
     inner: &'a mut dyn Observer,
-    last: Option<(usize, Vec<f64>)>,
+    /// (index, |A/A0 − target|, pressure field).
+    kept: Option<(usize, f64, Vec<f64>)>,
 }
 
 impl Observer for Keep<'_> {
@@ -348,20 +356,22 @@ impl Observer for Keep<'_> {
     }
     fn solution(&mut self, index: usize, solution: &Solution) -> Result<()> {
         self.inner.solution(index, solution)?;
-        match &mut self.last {
-            Some((k, p)) => {
-                *k = index;
+        let distance = (solution.contact_fraction - MAPPED_CONTACT_FRACTION).abs();
+        match &mut self.kept {
+            Some((_, d, _)) if *d <= distance => {}
+            Some((k, d, p)) => {
+                (*k, *d) = (index, distance);
                 p.clone_from(&solution.pressure);
             }
-            None => self.last = Some((index, solution.pressure.clone())),
+            None => self.kept = Some((index, distance, solution.pressure.clone())),
         }
         Ok(())
     }
 }
 
-/// [`rough_contact`], keeping the pressure field of the last solve in
-/// [`RoughReport::pressure_map`] (one N² copy per solve; [`rough_contact`]
-/// keeps none).
+/// [`rough_contact`], keeping in [`RoughReport::pressure_map`] the pressure
+/// field of the solve whose A/A0 is nearest [`MAPPED_CONTACT_FRACTION`]
+/// (at most one N² copy per solve; [`rough_contact`] keeps none).
 ///
 /// # Errors
 /// As [`rough_contact`].
@@ -375,7 +385,7 @@ pub fn rough_contact_mapped(
 ) -> Result<RoughReport> {
     let mut keep = Keep {
         inner: observer,
-        last: None,
+        kept: None,
     };
     let mut report = rough_contact(
         surface,
@@ -385,7 +395,7 @@ pub fn rough_contact_mapped(
         options,
         &mut keep,
     )?;
-    report.pressure_map = keep.last.map(|(index, pressure)| PressureMap {
+    report.pressure_map = keep.kept.map(|(index, _, pressure)| PressureMap {
         index,
         nominal_pressure: pressures[index],
         pressure,

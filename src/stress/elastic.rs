@@ -162,13 +162,12 @@ impl<'a> Images<'a> {
                         edge,
                         edge_bound,
                     },
-                    ImageQuadrature::WindowedGauss { window_half_width: l },
+                    ImageQuadrature::WindowedGauss {
+                        window_half_width: l,
+                    },
                 )
             }
-            Start::Tabulated(t) => (
-                Kernel::Tabulated(t),
-                ImageQuadrature::AdaptiveGaussKronrod,
-            ),
+            Start::Tabulated(t) => (Kernel::Tabulated(t), ImageQuadrature::AdaptiveGaussKronrod),
         };
         Images {
             w,

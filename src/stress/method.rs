@@ -227,7 +227,10 @@ mod tests {
         };
         assert_eq!(elastic.to_string(), "contact fraction: erf closed form");
         assert_eq!(
-            ImageQuadrature::WindowedGauss { window_half_width: 6.2345 }.to_string(),
+            ImageQuadrature::WindowedGauss {
+                window_half_width: 6.2345
+            }
+            .to_string(),
             "quadrature images (windowed Gauss-Legendre/Gauss-Jacobi, |s - u| <= 6.23 w)"
         );
     }

@@ -59,9 +59,7 @@ mod physical;
 mod series;
 mod start;
 
-pub use method::{
-    DensityMethod, FractionMethod, FractionMethods, ImageQuadrature, StressMethod,
-};
+pub use method::{DensityMethod, FractionMethod, FractionMethods, ImageQuadrature, StressMethod};
 pub use physical::{PhysicalCurve, StressScene};
 pub use start::{HertzContact, Start, StartKind, TabulatedStart};
 

@@ -472,11 +472,10 @@ fn compare_on_a_periodic_map_converges_on_its_band_limited_copies() {
 #[cfg(feature = "bem")]
 #[test]
 fn the_finest_grid_of_a_periodic_map_is_its_band_limited_map() {
+    use persson::bem::resample::{band_limited_copies, band_limited_map};
     use persson::bem::rough::{self, RoughOptions};
     use persson::bem::Boundary;
-    use persson_studies::validation::{
-        band_limited_copies, band_limited_map, compare_surface, ComparisonConfig,
-    };
+    use persson_studies::validation::{compare_surface, ComparisonConfig};
     let (map, size) = synthesised_map("library_map.npy");
     let surface = rough::read_surface(&map, size, Boundary::Periodic).unwrap();
     let o = ReadOptions {

@@ -56,7 +56,11 @@ fn warnings(v: &Value) -> Vec<String> {
 /// flag that sets the input, if any, in parentheses after the message).
 fn same(v: &Value, lines: &[String]) -> Vec<String> {
     let w = warnings(v);
-    assert_eq!(w.len(), lines.len(), "stderr and --json disagree: {lines:?}");
+    assert_eq!(
+        w.len(),
+        lines.len(),
+        "stderr and --json disagree: {lines:?}"
+    );
     for (x, l) in w.iter().zip(lines) {
         let printed = l.trim_start_matches("persson: warning: ");
         let hint = printed.strip_prefix(x.as_str());

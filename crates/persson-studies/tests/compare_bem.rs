@@ -1,18 +1,18 @@
-//! Theory against the BEM: nested surfaces, the resolution sweep, its
+//! Theory against the BEM: the resolution sweep, its
 //! continuum limit, κ between Persson and Bush, histograms, the typed
 //! comparison, and the `persson compare` CLI (keys, user data, bad files).
 #![cfg(feature = "bem")]
 
 use persson::bem::histogram::integral;
+use persson::bem::resample::nested_surfaces;
 use persson::bem::rough::{self, RoughOptions};
-use persson::bem::Surface;
 use persson::kappa::Kappa;
 use persson::spectrum::{Amplitude, SelfAffine, Spectrum};
 use persson_studies::validation::report::AreaTheory;
 use persson_studies::validation::{
     compare, continuum_limit, default_pressures, extrapolate, interpolate_log, mean_and_error,
-    nested_surfaces, resolution_grids, resolvable_q_max, resolve_q_s, sweep, BandLimited,
-    ComparisonConfig, SweepConfig, SweepSettings, UserData,
+    resolution_grids, resolvable_q_max, resolve_q_s, sweep, ComparisonConfig, SweepConfig,
+    SweepSettings, UserData,
 };
 
 /// Rounding of sums over ≤ 256² values and of a few FFTs.
@@ -77,48 +77,14 @@ fn one_q_s_rule_for_compare_and_the_kappa_study() {
 }
 
 #[test]
-fn band_limit_clips_the_spectrum() {
-    let s = surface_spectrum(64.0);
-    let b = BandLimited::new(&s, 16.0).unwrap();
-    assert!(b.clipped());
-    assert_eq!(b.q_max(), 16.0);
-    assert_eq!(b.c(20.0), 0.0);
-    assert_eq!(b.c(10.0), s.c(10.0));
-    let m = b.moment(3, 0.0, 100.0).unwrap().value;
-    let r = s.moment(3, 0.0, 16.0).unwrap().value;
-    assert!((m - r).abs() <= ROUNDING * r);
-    assert!(!BandLimited::new(&s, 100.0).unwrap().clipped());
-    assert!(BandLimited::new(&s, 0.5).is_err());
-}
-
-#[test]
-fn nested_surfaces_are_one_band_limited_surface() {
-    // The coarse grids subsample the finest: the trigonometric interpolants
-    // coincide, so rms height and rms slope (computed by FFT on each grid)
-    // agree to rounding. Aliasing of any mode would break this.
-    let s = surface_spectrum(16.0);
-    let surfaces = nested_surfaces(&s, &[64, 128, 256], std::f64::consts::TAU, 7).unwrap();
-    let fine: &Surface = &surfaces[2];
-    let (h, g) = (fine.rms_height(), fine.rms_slope().unwrap());
-    for c in &surfaces[..2] {
-        assert!(
-            (c.rms_height() - h).abs() <= 1e-10 * h,
-            "{} vs {h}",
-            c.rms_height()
-        );
-        let gc = c.rms_slope().unwrap();
-        assert!((gc - g).abs() <= 1e-10 * g, "{gc} vs {g}");
-    }
-    // q_s beyond the coarsest Nyquist (16²: k < 8 − 1) is refused
-    assert!(nested_surfaces(&s, &[16, 32], std::f64::consts::TAU, 7).is_err());
-    assert!(nested_surfaces(&s, &[64, 96], std::f64::consts::TAU, 7).is_err());
-}
-
-#[test]
 fn helpers() {
-    let (m, se) = mean_and_error(&[1.0, 2.0, 3.0]);
-    assert!((m - 2.0).abs() < ROUNDING && (se.unwrap() - (1.0f64 / 3.0).sqrt()).abs() < ROUNDING);
-    assert_eq!(mean_and_error(&[4.0]), (4.0, None));
+    let m = mean_and_error(&[1.0, 2.0, 3.0]);
+    assert!(
+        (m.mean - 2.0).abs() < ROUNDING
+            && (m.standard_error.unwrap() - (1.0f64 / 3.0).sqrt()).abs() < ROUNDING
+    );
+    let one = mean_and_error(&[4.0]);
+    assert_eq!((one.mean, one.standard_error), (4.0, None));
     // exact on a power law
     let x = [1.0, 2.0, 4.0];
     let y: Vec<f64> = x.iter().map(|v: &f64| 3.0 * v.powf(1.5)).collect();
@@ -318,7 +284,7 @@ fn comparison_parts_agree_with_closed_forms_and_each_other() {
     let of = |name: &str| {
         d.scores
             .iter()
-            .find(|s| s.reference == name)
+            .find(|s| s.reference.name() == name)
             .unwrap()
             .score
             .clone()

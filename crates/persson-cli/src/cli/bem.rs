@@ -13,7 +13,7 @@ use persson_studies::table::Tabulate;
 
 pub use super::bem_args::{Args, SolverArgs};
 use super::bem_args::{Cmd, HertzArgs, RoughArgs};
-use super::output::{print, print_warned};
+use super::output::{print, print_narrowed};
 use super::progress::Progress;
 
 /// Run `persson bem`.
@@ -49,7 +49,7 @@ fn plastic_disc(h: &HertzArgs, y: f64) -> anyhow::Result<()> {
         bar.update(k, &|| format!("Hertz σY {}²", grids[k]), it)
     });
     bar.finish();
-    print(&r?, &h.format)
+    print_narrowed(&r?, &[], &h.format, h.wide)
 }
 
 fn hertz_case(h: &HertzArgs, grid: usize) -> HertzCase {
@@ -169,7 +169,7 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
     }
     let mut warnings = a.spectrum.file_warnings();
     warnings.extend(persson_studies::warning::of_rough(&report));
-    print_warned(&report, &warnings, &a.format)
+    print_narrowed(&report, &warnings, &a.format, a.wide)
 }
 
 /// `dir/name.ext` → `dir/name_k.ext` when `k` is given.

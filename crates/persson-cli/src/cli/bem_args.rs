@@ -78,6 +78,10 @@ pub struct HertzArgs {
     pub yield_stress: Option<f64>,
     #[command(flatten)]
     pub solver: SolverArgs,
+    /// Text tables with every column (default: each fits 100 characters, the
+    /// solver's columns of a wider table left out and named).
+    #[arg(long)]
+    pub wide: bool,
     #[command(flatten)]
     pub format: Format,
 }
@@ -133,9 +137,13 @@ pub struct RoughArgs {
     pub yield_stress: Option<f64>,
     #[command(flatten)]
     pub solver: SolverArgs,
-    /// Also draw the last pressure's map (plastic nodes in red with --yield-stress)
-    /// and its histogram P(σ) (the plastic δ-peak at σY as a labelled bar) into
-    /// this file (.svg or .png).
+    /// Text tables with every column (default: each fits 100 characters, the
+    /// solver's columns of a wider table left out and named).
+    #[arg(long)]
+    pub wide: bool,
+    /// Also draw the pressure map of the load in partial contact whose A/A0 is
+    /// nearest 0.1 (plastic nodes in red with --yield-stress) and its histogram
+    /// P(σ) (the plastic δ-peak at σY as a labelled bar) into this file (.svg or .png).
     #[arg(long, value_name = "FILE.svg|png")]
     pub plot: Option<PathBuf>,
     #[command(flatten)]

@@ -4,7 +4,7 @@
 use std::io::Write;
 
 use anyhow::Context;
-use persson_studies::table::Tabulate;
+use persson_studies::table::{narrow, Tabulate, TEXT_WIDTH};
 use persson_studies::warning::Warned;
 use persson_studies::Warning;
 use serde::Serialize;
@@ -53,9 +53,7 @@ pub fn hint(w: &Warning, source: Source) -> Option<&'static str> {
             Source::Scene,
         ) => Some("spectrum.convention: \"surface-topography\""),
         (Warning::RisingSpectrum { .. }, Source::Flags) => Some("--surface FILE"),
-        (Warning::RisingSpectrum { .. }, Source::Scene) => {
-            Some("spectrum.kind: \"height_map\"")
-        }
+        (Warning::RisingSpectrum { .. }, Source::Scene) => Some("spectrum.kind: \"height_map\""),
         _ => None,
     }
 }
@@ -91,6 +89,35 @@ pub fn print_from<R: Serialize + Tabulate>(
     f: &Format,
     source: Source,
 ) -> anyhow::Result<()> {
+    print_tables(report, warnings, f, source, None)
+}
+
+/// As [`print_warned`], with text tables that fit [`TEXT_WIDTH`] characters
+/// unless `wide` ([`narrow`]: long titles wrapped, the omittable columns
+/// left out and named; CSV and JSON keep every column).
+pub fn print_narrowed<R: Serialize + Tabulate>(
+    report: &R,
+    warnings: &[Warning],
+    f: &Format,
+    wide: bool,
+) -> anyhow::Result<()> {
+    print_tables(
+        report,
+        warnings,
+        f,
+        Source::Flags,
+        (!wide).then_some(TEXT_WIDTH),
+    )
+}
+
+/// Print the warnings and the report; text tables narrowed to `width`.
+fn print_tables<R: Serialize + Tabulate>(
+    report: &R,
+    warnings: &[Warning],
+    f: &Format,
+    source: Source,
+    width: Option<usize>,
+) -> anyhow::Result<()> {
     for w in warnings {
         print_warning(w, source);
     }
@@ -99,7 +126,12 @@ pub fn print_from<R: Serialize + Tabulate>(
         serde_json::to_writer_pretty(&mut out, &Warned::new(report, warnings))?;
         writeln!(out)?;
     } else {
-        let tables = report.tables();
+        let mut tables = report.tables();
+        if let (Some(w), false) = (width, f.csv) {
+            for t in &mut tables {
+                narrow(t, w, "not shown (--wide shows them)");
+            }
+        }
         if f.csv {
             if let Some(main) = tables.first() {
                 write!(out, "{}", main.to_csv())?;
