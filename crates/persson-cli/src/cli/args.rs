@@ -25,7 +25,7 @@ pub mod example {
 pub struct SpectrumArgs {
     /// Use the built-in example where spectrum, modulus or pressures are not
     /// given: self-affine H = 0.8, q_l = 1e4, q_r = 1e5, q_s = 1e8 1/m, rms height
-    /// 1 µm; E* = 1 GPa; σ0 = 1e4 … 3e8 Pa.
+    /// 1 µm; E* = 1 GPa; σ0 = 1e4 … 1e8 Pa (up to 0.1 E*).
     #[arg(long)]
     pub example: bool,
     /// Hurst exponent H in (0, 1) of the self-affine spectrum.

@@ -12,7 +12,8 @@ use persson_studies::warning::Warned;
 /// Arguments of `persson run`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// The scene file (JSON, "schema": 1; see scenes/schema.json).
+    /// The scene file (JSON, "schema": 1; its JSON Schema is
+    /// crates/persson-studies/schema/scene.schema.json).
     scene: PathBuf,
     /// Write report.json, one CSV per table and the plots into this directory
     /// (created if missing).

@@ -3,7 +3,7 @@
 //! A scene names the material, the spectrum, the loads and the outputs it
 //! wants; [`Scene::run`] computes exactly those outputs and nothing else.
 //! Unknown fields are rejected with their name, line and column. The file
-//! format is [`schema`] (its JSON Schema is `scenes/schema.json`), the
+//! format is [`schema`] (its JSON Schema is `crates/persson-studies/schema/scene.schema.json`), the
 //! computation [`run`] and the typed results [`report`]: the subcommands
 //! `area`, `magnification`, `kappa`, `separation` and `stress` call the same
 //! functions and print the same reports.
