@@ -133,7 +133,7 @@ fn hertz_lecture_measure_is_reported_for_the_free_boundary_only() {
         .zip(&sol.pressure)
         .zip(&sol.displacement)
     {
-        let (pe, ue) = (hertz::pressure(*r, a, p0), johnson(*r));
+        let (pe, ue) = (persson::reference::pressure_profile(*r, a, p0), johnson(*r));
         num += (u - ue) * (p - pe);
         den += ue * pe;
     }
