@@ -5,7 +5,7 @@
 use std::path::{Path, PathBuf};
 
 use persson::bem::hertz::{self, HertzCase};
-use persson::bem::rough::{self, RoughOptions, SurfaceSource};
+use persson::bem::rough::{self, RoughOptions, SurfaceOrigin};
 use persson::bem::surface::{synthesize as synth, Surface};
 use persson::bem::{check_memory, Boundary, Control, Operator, Options, Solver};
 use persson::error::check;
@@ -171,7 +171,7 @@ fn bem_rough<'py>(
         (Some(h), None, None) => {
             let size = size.ok_or_else(|| value_error("size: required with heights"))?;
             let s = surface(h, size)?;
-            let source = SurfaceSource::height_map(Path::new("(array)"));
+            let source = SurfaceOrigin::height_map(Path::new("(array)"));
             py.detach(|| rough::rough_contact(&s, source, modulus, &pressures, &opts, &mut ()))
         }
         (None, Some(sp), Some(n)) => {
@@ -183,7 +183,7 @@ fn bem_rough<'py>(
                     size.unwrap_or(std::f64::consts::TAU / shared.0.q_min()),
                 )?;
                 let s = synth(shared, n, size, seed)?;
-                let source = SurfaceSource::synthesised(shared, seed)?;
+                let source = SurfaceOrigin::synthesised(shared, seed)?;
                 rough::rough_contact(&s, source, modulus, &pressures, &opts, &mut ())
             })
         }

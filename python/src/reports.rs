@@ -46,7 +46,7 @@ fn area<'py>(
     tolerance: f64,
 ) -> PyResult<Bound<'py, PyAny>> {
     let pressures = float_list("pressure", pressure)?;
-    let surface = spectrum.surface(modulus)?;
+    let surface = spectrum.contact(modulus)?;
     let out = AreaOutput {
         zeta,
         theory: name("theory", theory)?,
@@ -72,7 +72,7 @@ fn magnification<'py>(
     zeta: Option<&Bound<'py, PyAny>>,
     points: usize,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let surface = spectrum.surface(modulus)?;
+    let surface = spectrum.contact(modulus)?;
     let out = MagnificationOutput {
         nominal_pressure: pressure,
         zeta: zeta
@@ -105,7 +105,7 @@ fn kappa_report<'py>(
                 .map(|p| float_list("pressure", p))
                 .transpose()?
                 .unwrap_or_default();
-            let surface = s.surface(m)?;
+            let surface = s.contact(m)?;
             run::kappa(Some((&surface, &pressures[..])))
         }
         (None, None) => run::kappa(None),
@@ -139,7 +139,7 @@ fn theories<'py>(
             })
         })
         .collect::<PyResult<Vec<_>>>()?;
-    let surface = spectrum.surface(modulus)?;
+    let surface = spectrum.contact(modulus)?;
     let out = TheoriesOutput {
         theories: list,
         zeta,
@@ -165,7 +165,7 @@ fn separation<'py>(
     tolerance: f64,
 ) -> PyResult<Bound<'py, PyAny>> {
     let pressures = float_list("pressure", pressure)?;
-    let surface = spectrum.surface(modulus)?;
+    let surface = spectrum.contact(modulus)?;
     let out = SeparationOutput {
         tolerance: Some(tolerance),
     };
@@ -288,7 +288,7 @@ fn stress_physical<'py>(
     points: usize,
     tolerance: f64,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let surface = spectrum.surface(modulus)?;
+    let surface = spectrum.contact(modulus)?;
     let out = StressOutput {
         start: name("start", start)?,
         g: vec![],

@@ -129,9 +129,12 @@ impl Spectrum {
     }
 
     /// The library's surface: this spectrum on a body of contact modulus E*.
-    pub fn surface(&self, contact_modulus: f64) -> PyResult<persson_studies::scene::run::Surface> {
+    pub fn contact(
+        &self,
+        contact_modulus: f64,
+    ) -> PyResult<persson_studies::scene::run::RoughContact> {
         persson::error::check::positive("contact_modulus", contact_modulus).map_err(err)?;
-        Ok(persson_studies::scene::run::Surface {
+        Ok(persson_studies::scene::run::RoughContact {
             spectrum: Box::new(self.shared.clone()),
             contact_modulus,
             breaks: self.breaks.clone(),

@@ -245,11 +245,12 @@ impl SpectrumSummary {
     }
 }
 
-/// Where the rigid surface of a rough contact came from.
+/// Where the rigid surface of a rough contact came from: a file, or a
+/// spectrum and a seed. Called `SurfaceSource` in persson 0.3.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(untagged)]
 #[non_exhaustive]
-pub enum SurfaceSource {
+pub enum SurfaceOrigin {
     /// A height map read from a file.
     HeightMap {
         /// The file, as given.
@@ -264,13 +265,17 @@ pub enum SurfaceSource {
     },
 }
 
-impl SurfaceSource {
+/// The name of [`SurfaceOrigin`] in persson 0.3.
+#[deprecated(since = "0.4.0", note = "renamed SurfaceOrigin")]
+pub type SurfaceSource = SurfaceOrigin;
+
+impl SurfaceOrigin {
     /// A synthesised surface's source.
     ///
     /// # Errors
     /// As [`SpectrumSummary::of`].
     pub fn synthesised(spectrum: &dyn Spectrum, seed: u64) -> Result<Self> {
-        Ok(SurfaceSource::Synthesised {
+        Ok(SurfaceOrigin::Synthesised {
             seed,
             spectrum: SpectrumSummary::of(spectrum)?,
         })
@@ -279,14 +284,14 @@ impl SurfaceSource {
     /// The seed of a synthesised surface (`None` for a height map).
     pub fn seed(&self) -> Option<u64> {
         match self {
-            SurfaceSource::Synthesised { seed, .. } => Some(*seed),
-            SurfaceSource::HeightMap { .. } => None,
+            SurfaceOrigin::Synthesised { seed, .. } => Some(*seed),
+            SurfaceOrigin::HeightMap { .. } => None,
         }
     }
 
     /// A height map's source.
     pub fn height_map(file: &Path) -> Self {
-        SurfaceSource::HeightMap {
+        SurfaceOrigin::HeightMap {
             file: file.display().to_string(),
         }
     }
@@ -315,7 +320,7 @@ pub struct RoughReport {
     /// rms slope of the surface on the grid (its trigonometric interpolant).
     pub surface_rms_slope: f64,
     /// Where the surface came from.
-    pub surface: SurfaceSource,
+    pub surface: SurfaceOrigin,
     /// One point per nominal pressure, in the caller's order.
     pub points: Vec<RoughPoint>,
     /// The pressure field of one solve in partial contact (A/A0 nearest
@@ -377,7 +382,7 @@ impl Observer for Keep<'_> {
 /// As [`rough_contact`].
 pub fn rough_contact_mapped(
     surface: &Surface,
-    source: SurfaceSource,
+    source: SurfaceOrigin,
     contact_modulus: f64,
     pressures: &[f64],
     options: &RoughOptions,
@@ -409,7 +414,7 @@ pub fn rough_contact_mapped(
 /// As [`solve`] and [`Surface::rms_slope`].
 pub fn rough_contact(
     surface: &Surface,
-    source: SurfaceSource,
+    source: SurfaceOrigin,
     contact_modulus: f64,
     pressures: &[f64],
     options: &RoughOptions,

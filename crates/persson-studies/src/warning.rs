@@ -335,7 +335,7 @@ pub fn of_rough(r: &persson::bem::rough::RoughReport) -> Vec<Warning> {
         &mut w,
         Warning::high_pressure(&pressures, r.contact_modulus),
     );
-    if let persson::bem::rough::SurfaceSource::Synthesised { spectrum, .. } = &r.surface {
+    if let persson::bem::rough::SurfaceOrigin::Synthesised { spectrum, .. } = &r.surface {
         push(
             &mut w,
             Warning::band_limited(r.grid, r.surface_rms_slope, spectrum.rms_slope),

@@ -3,7 +3,7 @@
 #![cfg(all(feature = "bem", feature = "plot"))]
 
 use persson::bem::rough::{
-    rough_contact, rough_contact_mapped, RoughOptions, SurfaceSource, MAPPED_CONTACT_FRACTION,
+    rough_contact, rough_contact_mapped, RoughOptions, SurfaceOrigin, MAPPED_CONTACT_FRACTION,
 };
 use persson::bem::surface::synthesize;
 use persson::bem::Options;
@@ -30,7 +30,7 @@ fn report(n: usize, y: Option<f64>, mapped: bool) -> persson::bem::rough::RoughR
     )
     .unwrap();
     let surface = synthesize(&s, n, 1.0, 1).unwrap();
-    let source = SurfaceSource::synthesised(&s, 1).unwrap();
+    let source = SurfaceOrigin::synthesised(&s, 1).unwrap();
     let options = RoughOptions {
         solver: Options {
             tolerance: 1e-10,

@@ -2,7 +2,7 @@
 
 use persson_studies::scene::{run, AreaOutput, TheoryName};
 
-use super::args::{measured_surface, pressures, MaterialArgs, MeasuredArgs, SpectrumArgs};
+use super::args::{measured_contact, pressures, MaterialArgs, MeasuredArgs, SpectrumArgs};
 use super::output::{print_warned, Format};
 
 /// Arguments of `persson area`.
@@ -52,7 +52,7 @@ pub struct TheoryArgs {
 /// Run `persson area`.
 pub fn run(a: Args) -> anyhow::Result<()> {
     a.plot.check()?;
-    let surface = measured_surface(&a.spectrum, &a.measured, &a.material)?;
+    let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
     let pressures = pressures(&a.pressure, a.spectrum.example)?;
     let out = AreaOutput {
         zeta: a.zeta,

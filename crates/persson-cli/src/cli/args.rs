@@ -5,7 +5,7 @@
 use std::path::PathBuf;
 
 use anyhow::bail;
-use persson_studies::scene::{ConventionName, MaterialSpec, SpectrumSpec, Surface, EXAMPLE};
+use persson_studies::scene::{ConventionName, MaterialSpec, RoughContact, SpectrumSpec, EXAMPLE};
 
 pub use super::measured_args::MeasuredArgs;
 use super::number::number;
@@ -158,7 +158,7 @@ impl SpectrumArgs {
     }
 
     /// The warning of a `--psd` file (the convention it was read in), for the
-    /// commands that build the spectrum without a [`Surface`].
+    /// commands that build the spectrum without a [`RoughContact`].
     #[cfg_attr(not(feature = "bem"), allow(dead_code))]
     pub fn file_warnings(&self) -> Vec<persson_studies::Warning> {
         self.psd
@@ -230,20 +230,20 @@ impl MaterialArgs {
     }
 }
 
-/// The spectrum and the material of the flags, as the library's [`Surface`].
-pub fn surface(s: &SpectrumArgs, m: &MaterialArgs) -> anyhow::Result<Surface> {
-    measured_surface(s, &MeasuredArgs::default(), m)
+/// The spectrum and the material of the flags, as the library's [`RoughContact`].
+pub fn contact(s: &SpectrumArgs, m: &MaterialArgs) -> anyhow::Result<RoughContact> {
+    measured_contact(s, &MeasuredArgs::default(), m)
 }
 
-/// As [`surface`], the spectrum from the measured surface if `--surface` is given.
-pub fn measured_surface(
+/// As [`contact`], the spectrum from the measured surface if `--surface` is given.
+pub fn measured_contact(
     s: &SpectrumArgs,
     h: &MeasuredArgs,
     m: &MaterialArgs,
-) -> anyhow::Result<Surface> {
+) -> anyhow::Result<RoughContact> {
     let spectrum = spectrum_spec(s, h)?;
     let material = m.spec(s.example)?;
-    let mut surface = Surface::new(&spectrum, &material).map_err(|e| s.psd_hint(e))?;
+    let mut surface = RoughContact::new(&spectrum, &material).map_err(|e| s.psd_hint(e))?;
     if s.is_example() && surface.description.is_none() {
         surface.description = Some(format!("{EXAMPLE} (the given flags replace parts of it)"));
     }

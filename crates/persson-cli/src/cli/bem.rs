@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 
 use anyhow::Context;
 use persson::bem::hertz::{self, HertzCase};
-use persson::bem::rough::{self, Observer, RoughOptions, RoughProgress, SurfaceSource};
+use persson::bem::rough::{self, Observer, RoughOptions, RoughProgress, SurfaceOrigin};
 use persson::bem::surface::{synthesize, write_npy};
 use persson::bem::{check_memory, Options, Solution, MIN_GRID};
 use persson::error::check;
@@ -113,7 +113,7 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
         map.size = a.size.map(persson_studies::scene::Sides::One);
         (
             map.bem_surface(a.boundary)?,
-            SurfaceSource::height_map(path),
+            SurfaceOrigin::height_map(path),
         )
     } else {
         let n = a
@@ -126,7 +126,7 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
             a.size.unwrap_or(std::f64::consts::TAU / spectrum.q_min()),
         )?;
         let s = synthesize(spectrum.as_ref(), n, size, a.seed)?;
-        (s, SurfaceSource::synthesised(spectrum.as_ref(), a.seed)?)
+        (s, SurfaceOrigin::synthesised(spectrum.as_ref(), a.seed)?)
     };
     if let Some(path) = &a.surface_out {
         write_npy(path, surface.n, surface.n, &surface.heights)?;

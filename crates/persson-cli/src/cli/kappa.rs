@@ -2,7 +2,7 @@
 
 use persson_studies::scene::run;
 
-use super::args::{pressures, surface, MaterialArgs, SpectrumArgs};
+use super::args::{contact, pressures, MaterialArgs, SpectrumArgs};
 use super::output::{print_warned, Format};
 
 /// Arguments of `persson kappa`.
@@ -22,7 +22,7 @@ pub struct Args {
 /// Run `persson kappa`.
 pub fn run(a: Args) -> anyhow::Result<()> {
     let report = if a.spectrum.is_given() {
-        let surface = surface(&a.spectrum, &a.material)?;
+        let surface = contact(&a.spectrum, &a.material)?;
         let pressures = pressures(&a.pressure, a.spectrum.example)?;
         run::kappa(Some((&surface, &pressures)))?
     } else {

@@ -3,7 +3,7 @@
 
 use persson_studies::scene::{run, MagnificationOutput};
 
-use super::args::{measured_surface, MaterialArgs, MeasuredArgs, SpectrumArgs};
+use super::args::{measured_contact, MaterialArgs, MeasuredArgs, SpectrumArgs};
 use super::output::{print_warned, Format};
 
 /// Arguments of `persson magnification`.
@@ -40,7 +40,7 @@ pub fn run(a: Args) -> anyhow::Result<()> {
         plot: a.plot_g.clone(),
     };
     plot_g.check()?;
-    let surface = measured_surface(&a.spectrum, &a.measured, &a.material)?;
+    let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
     let nominal_pressure = match (a.pressure, a.spectrum.example) {
         (Some(p), _) => p,
         (None, true) => super::args::example::PRESSURES[3],

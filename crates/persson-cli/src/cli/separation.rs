@@ -4,7 +4,7 @@
 
 use persson_studies::scene::{run, SeparationOutput, TheoriesOutput};
 
-use super::args::{measured_surface, pressures, MaterialArgs, MeasuredArgs, SpectrumArgs};
+use super::args::{measured_contact, pressures, MaterialArgs, MeasuredArgs, SpectrumArgs};
 use super::output::{print_warned, Format};
 
 /// Arguments of `persson separation`.
@@ -43,7 +43,7 @@ pub fn run(a: Args) -> anyhow::Result<()> {
         plot: a.plot_area.clone(),
     };
     plot_area.check()?;
-    let surface = measured_surface(&a.spectrum, &a.measured, &a.material)?;
+    let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
     let pressures = pressures(&a.pressure, a.spectrum.example)?;
     let grid = if a.plot.plot.is_some() || plot_area.plot.is_some() {
         plot_pressures(&pressures, a.plot_points)?

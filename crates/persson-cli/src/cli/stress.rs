@@ -7,7 +7,7 @@ use persson::stress::{Start, TabulatedStart};
 use persson::Error;
 use persson_studies::scene::{run, BallSpec, CylinderSpec, StartName, StressOutput};
 
-use super::args::{measured_surface, MaterialArgs, MeasuredArgs, SpectrumArgs};
+use super::args::{measured_contact, MaterialArgs, MeasuredArgs, SpectrumArgs};
 use super::output::{print_warned, Format};
 
 /// The flags of the physical mode; `--g`, `--table`, `--yield-ratio` and
@@ -186,7 +186,7 @@ pub fn run(a: Args) -> anyhow::Result<()> {
 /// The physical mode: the scene's `stress` output with `zeta`, on the surface
 /// of the spectrum (or `--surface`) and material flags.
 fn physical(a: &Args) -> anyhow::Result<()> {
-    let surface = measured_surface(&a.spectrum, &a.measured, &a.material)?;
+    let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
     let (start, ball, cylinder, peak_pressure) =
         match (a.ball_radius, a.cylinder_radius, a.peak_pressure, a.start) {
             (Some(radius), ..) => (

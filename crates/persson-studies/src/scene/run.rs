@@ -14,8 +14,11 @@ use persson::theory::{log_zetas, Persson};
 use super::report::*;
 use super::schema::*;
 
-/// A rough surface on an elastic body: the spectrum, E*, and what it is.
-pub struct Surface {
+/// A rough contact, the input of the theories: the spectrum of the rigid
+/// rough surface, the contact modulus E* of the elastic body pressed on it,
+/// and what they are (`persson::bem::GridSurface` is the BEM's height map, a
+/// different thing). Called `Surface` in persson 0.3.
+pub struct RoughContact {
     /// The roughness spectrum.
     pub spectrum: Box<dyn Spectrum>,
     /// E*.
@@ -29,7 +32,7 @@ pub struct Surface {
     pub warnings: Vec<Warning>,
 }
 
-impl Surface {
+impl RoughContact {
     /// Build from the flags' (or a scene's) spectrum and material.
     ///
     /// # Errors
@@ -38,7 +41,7 @@ impl Surface {
         Self::named(spectrum, material, "", "")
     }
 
-    /// As [`Surface::new`], naming the fields with the prefixes of their sections.
+    /// As [`RoughContact::new`], naming the fields with the prefixes of their sections.
     pub(crate) fn named(
         spectrum: &SpectrumSpec,
         material: &MaterialSpec,
@@ -54,7 +57,7 @@ impl Surface {
         .then(|| EXAMPLE.to_string())
         .or(measured);
         let warnings = spectrum_warnings(spectrum, s.as_ref());
-        Ok(Surface {
+        Ok(RoughContact {
             spectrum: s,
             contact_modulus: m.contact_modulus(),
             breaks: spectrum.breaks(),
@@ -89,7 +92,7 @@ impl Surface {
 ///
 /// # Errors
 /// A pressure not finite and positive; ζ < 1; γ invalid; solver failure.
-pub fn area(surface: &Surface, pressures: &[f64], out: &AreaOutput) -> Result<AreaReport> {
+pub fn area(surface: &RoughContact, pressures: &[f64], out: &AreaOutput) -> Result<AreaReport> {
     if pressures.is_empty() {
         return Err(required(
             "nominal_pressure (a non-empty list, for outputs.area)",
@@ -132,7 +135,10 @@ pub fn area(surface: &Surface, pressures: &[f64], out: &AreaOutput) -> Result<Ar
 ///
 /// # Errors
 /// ζ < 1; a pressure not finite and positive.
-pub fn magnification(surface: &Surface, out: &MagnificationOutput) -> Result<MagnificationReport> {
+pub fn magnification(
+    surface: &RoughContact,
+    out: &MagnificationOutput,
+) -> Result<MagnificationReport> {
     let model = surface.model()?;
     let zeta = if out.zeta.is_empty() {
         check_points(out.points)?;
@@ -154,7 +160,7 @@ pub fn magnification(surface: &Surface, out: &MagnificationOutput) -> Result<Mag
 ///
 /// # Errors
 /// A pressure not finite and positive.
-pub fn kappa(surface: Option<(&Surface, &[f64])>) -> Result<KappaReport> {
+pub fn kappa(surface: Option<(&RoughContact, &[f64])>) -> Result<KappaReport> {
     let mut r = KappaReport {
         surface: surface.and_then(|(s, _)| s.description.clone()),
         kappa_bush: Kappa::Bush.value(),
@@ -193,7 +199,7 @@ pub fn kappa(surface: Option<(&Surface, &[f64])>) -> Result<KappaReport> {
 /// # Errors
 /// As [`corrected::load_curve`].
 pub fn theories(
-    surface: &Surface,
+    surface: &RoughContact,
     pressures: &[f64],
     out: &TheoriesOutput,
 ) -> Result<TheoriesReport> {
@@ -238,7 +244,7 @@ pub fn theories(
 /// A pressure not finite and positive; a tolerance out of range; an integral
 /// that does not converge.
 pub fn separation(
-    surface: &Surface,
+    surface: &RoughContact,
     pressures: &[f64],
     out: &SeparationOutput,
     plot_pressures: &[f64],
@@ -347,7 +353,7 @@ pub fn stress_dimensionless(
 ///
 /// # Errors
 /// Inconsistent start and contact; as [`StressScene::curves`].
-pub fn stress_physical(surface: &Surface, out: &StressOutput) -> Result<StressReport> {
+pub fn stress_physical(surface: &RoughContact, out: &StressOutput) -> Result<StressReport> {
     check_points(out.points)?;
     if out.zeta.is_empty() {
         return Err(required("zeta (a non-empty list of magnifications)"));

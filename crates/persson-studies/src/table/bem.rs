@@ -2,7 +2,7 @@
 //! curve with its pressure histograms, and the Hertz ball with a yield stress.
 
 use persson::bem::hertz::PlasticDiscReport;
-use persson::bem::rough::{RoughReport, SurfaceSource};
+use persson::bem::rough::{RoughReport, SurfaceOrigin};
 
 use super::{number, Cell, Table, Tabulate};
 
@@ -99,8 +99,8 @@ fn load_table(r: &RoughReport) -> Table {
         t = t.scalar("yield_stress", "σY", y);
     }
     match &r.surface {
-        SurfaceSource::HeightMap { file } => t = t.scalar("file", "surface", file.as_str()),
-        SurfaceSource::Synthesised { seed, spectrum } => {
+        SurfaceOrigin::HeightMap { file } => t = t.scalar("file", "surface", file.as_str()),
+        SurfaceOrigin::Synthesised { seed, spectrum } => {
             t = t.scalar("seed", "seed", Cell::Int(*seed as i64)).scalar(
                 "q_s",
                 "q_l … q_s",
