@@ -32,8 +32,15 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
 
 /// `persson area --json`: A/A0 against the nominal pressures with G, its
 /// error bound, the effective G of a corrected theory and the linear laws.
+// The signatures spell the library's default tolerances as literals (so that
+// `inspect.signature` shows them, not `Ellipsis`); these keep them equal.
+const _: () = {
+    assert!(persson::corrected::DEFAULT_TOLERANCE == 1e-12);
+    assert!(persson::separation::DEFAULT_TOLERANCE == 1e-10);
+};
+
 #[pyfunction]
-#[pyo3(signature = (spectrum, modulus, pressure, theory="original", gamma=None, *, zeta=None, tolerance=persson::corrected::DEFAULT_TOLERANCE))]
+#[pyo3(signature = (spectrum, modulus, pressure, theory="original", gamma=None, *, zeta=None, tolerance=1e-12))]
 #[allow(clippy::too_many_arguments)]
 fn area<'py>(
     py: Python<'py>,
@@ -156,7 +163,7 @@ fn theories<'py>(
 /// contact stiffness K = −dσ0/dū and the stored elastic energy per area
 /// against load, with error bounds (Persson, Phys. Rev. Lett. 99, 125502 (2007)).
 #[pyfunction]
-#[pyo3(signature = (spectrum, modulus, pressure, *, tolerance=persson::separation::DEFAULT_TOLERANCE))]
+#[pyo3(signature = (spectrum, modulus, pressure, *, tolerance=1e-10))]
 fn separation<'py>(
     py: Python<'py>,
     spectrum: &Spectrum,
@@ -179,7 +186,7 @@ fn separation<'py>(
 /// elastic energy U_el (J/m²) at the nominal pressures, as a dict of numpy
 /// arrays with their error bounds (the `points` of `separation`).
 #[pyfunction]
-#[pyo3(signature = (spectrum, modulus, pressure, *, tolerance=persson::separation::DEFAULT_TOLERANCE))]
+#[pyo3(signature = (spectrum, modulus, pressure, *, tolerance=1e-10))]
 fn mean_separation<'py>(
     py: Python<'py>,
     spectrum: &Spectrum,
