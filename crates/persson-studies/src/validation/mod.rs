@@ -45,6 +45,8 @@ pub mod kappa;
 #[cfg(feature = "bem")]
 mod compare;
 #[cfg(feature = "bem")]
+mod distribution;
+#[cfg(feature = "bem")]
 mod hertz;
 #[cfg(feature = "bem")]
 mod kappa_study;

@@ -140,51 +140,16 @@ pub fn sweep_source(
     config: &SweepConfig,
     progress: &mut dyn FnMut(SweepProgress),
 ) -> Result<Sweep> {
-    let boundary = match source {
-        SweepSource::Synthesised(_) | SweepSource::BandLimitedMap(..) => Boundary::Periodic,
-        SweepSource::Map(_, b) => b,
-    };
-    let seeds = match source {
-        SweepSource::Synthesised(_) => &config.seeds[..],
-        SweepSource::Map(..) | SweepSource::BandLimitedMap(..) => {
-            config.seeds.get(..1).unwrap_or_default()
-        }
-    };
-    check::positive("contact_modulus", contact_modulus)?;
-    if pressures.is_empty() {
-        return Err(Error::invalid("nominal_pressure", 0.0, "at least one"));
-    }
-    for &p in pressures {
-        check::positive("nominal_pressure", p)?;
-    }
-    if seeds.is_empty() {
-        return Err(Error::invalid("seeds", 0.0, ">= 1"));
-    }
-    let finest = *config
-        .grids
-        .last()
-        .ok_or_else(|| Error::invalid("grids", 0.0, "at least one grid"))?;
-    bem::check_memory(finest, boundary)?;
+    let (boundary, seeds) = source.boundary_and_seeds(&config.seeds);
+    check_input(contact_modulus, pressures, seeds, config, boundary)?;
     let mut order: Vec<usize> = (0..pressures.len()).collect();
     order.sort_by(|&a, &b| pressures[a].total_cmp(&pressures[b]));
     let sorted: Vec<f64> = order.iter().map(|&k| pressures[k]).collect();
-    let ns = seeds.len();
-    let np = pressures.len();
+    let (ns, np) = (seeds.len(), pressures.len());
     let mut grids: Vec<GridResult> = config
         .grids
         .iter()
-        .map(|&g| GridResult {
-            grid: g,
-            contact_fraction: vec![vec![0.0; np]; ns],
-            mean_separation: vec![vec![0.0; np]; ns],
-            surface_rms_slope: vec![0.0; ns],
-            elastic_fraction: vec![vec![0.0; np]; ns],
-            plastic_fraction: vec![vec![0.0; np]; ns],
-            plastic_displacement_mean: vec![vec![0.0; np]; ns],
-            iterations: 0,
-            residual: 0.0,
-            seconds: 0.0,
-        })
+        .map(|&g| GridResult::zeros(g, ns, np))
         .collect();
     let mut histograms: Vec<PressureCounts> =
         pressures.iter().map(|&p| PressureCounts::new(p)).collect();
@@ -196,13 +161,7 @@ pub fn sweep_source(
     };
     let mut done = 0;
     for (si, &seed) in seeds.iter().enumerate() {
-        let surfaces = match source {
-            SweepSource::Synthesised(spectrum) => {
-                nested_surfaces(spectrum, &config.grids, config.size, seed)?
-            }
-            SweepSource::Map(map, _) => coarsened(map, &config.grids)?,
-            SweepSource::BandLimitedMap(map, q_s) => band_limited_copies(map, q_s, &config.grids)?,
-        };
+        let surfaces = source.surfaces(config, seed)?;
         for (gi, surf) in surfaces.iter().enumerate() {
             grids[gi].surface_rms_slope[si] = surf.rms_slope()?;
             let mut observer = SweepObserver {
@@ -217,17 +176,7 @@ pub fn sweep_source(
             };
             let points = rough::solve(surf, contact_modulus, &sorted, &options, &mut observer)?;
             done += points.len();
-            let g = &mut grids[gi];
-            for (pt, &k) in points.iter().zip(&order) {
-                g.contact_fraction[si][k] = pt.contact_fraction;
-                g.mean_separation[si][k] = pt.mean_separation;
-                g.elastic_fraction[si][k] = pt.elastic_fraction.unwrap_or(pt.contact_fraction);
-                g.plastic_fraction[si][k] = pt.plastic_fraction.unwrap_or(0.0);
-                g.plastic_displacement_mean[si][k] = pt.plastic_displacement_mean.unwrap_or(0.0);
-                g.iterations += pt.iterations;
-                g.residual = g.residual.max(pt.residual);
-                g.seconds += pt.seconds;
-            }
+            grids[gi].record(si, &points, &order);
         }
     }
     Ok(Sweep {
@@ -236,6 +185,90 @@ pub fn sweep_source(
         histograms,
         yield_stress: config.options.yield_stress,
     })
+}
+
+/// The inputs of a sweep: E* and every pressure finite and positive, a seed,
+/// a grid, and memory for the finest grid's solve.
+fn check_input(
+    contact_modulus: f64,
+    pressures: &[f64],
+    seeds: &[u64],
+    config: &SweepConfig,
+    boundary: Boundary,
+) -> Result<()> {
+    check::positive("contact_modulus", contact_modulus)?;
+    if pressures.is_empty() {
+        return Err(Error::invalid("nominal_pressure", 0.0, "at least one"));
+    }
+    for &p in pressures {
+        check::positive("nominal_pressure", p)?;
+    }
+    if seeds.is_empty() {
+        return Err(Error::invalid("seeds", 0.0, ">= 1"));
+    }
+    let finest = *config
+        .grids
+        .last()
+        .ok_or_else(|| Error::invalid("grids", 0.0, "at least one grid"))?;
+    bem::check_memory(finest, boundary)
+}
+
+impl SweepSource<'_> {
+    /// The boundary of the solves and the seeds used (a map is one
+    /// realisation: the first seed only).
+    fn boundary_and_seeds<'s>(&self, seeds: &'s [u64]) -> (Boundary, &'s [u64]) {
+        match *self {
+            SweepSource::Synthesised(_) => (Boundary::Periodic, seeds),
+            SweepSource::BandLimitedMap(..) => {
+                (Boundary::Periodic, seeds.get(..1).unwrap_or_default())
+            }
+            SweepSource::Map(_, b) => (b, seeds.get(..1).unwrap_or_default()),
+        }
+    }
+
+    /// The surface of `seed` on every grid of `config`.
+    fn surfaces(&self, config: &SweepConfig, seed: u64) -> Result<Vec<Surface>> {
+        match *self {
+            SweepSource::Synthesised(spectrum) => {
+                nested_surfaces(spectrum, &config.grids, config.size, seed)
+            }
+            SweepSource::Map(map, _) => coarsened(map, &config.grids),
+            SweepSource::BandLimitedMap(map, q_s) => band_limited_copies(map, q_s, &config.grids),
+        }
+    }
+}
+
+impl GridResult {
+    /// A grid's results before its solves: `ns` seeds × `np` pressures of zeros.
+    fn zeros(grid: usize, ns: usize, np: usize) -> Self {
+        GridResult {
+            grid,
+            contact_fraction: vec![vec![0.0; np]; ns],
+            mean_separation: vec![vec![0.0; np]; ns],
+            surface_rms_slope: vec![0.0; ns],
+            elastic_fraction: vec![vec![0.0; np]; ns],
+            plastic_fraction: vec![vec![0.0; np]; ns],
+            plastic_displacement_mean: vec![vec![0.0; np]; ns],
+            iterations: 0,
+            residual: 0.0,
+            seconds: 0.0,
+        }
+    }
+
+    /// The solves of seed `si` (pressures ascending; `order[i]` the caller's
+    /// index of the i-th) in the caller's order.
+    fn record(&mut self, si: usize, points: &[rough::RoughPoint], order: &[usize]) {
+        for (pt, &k) in points.iter().zip(order) {
+            self.contact_fraction[si][k] = pt.contact_fraction;
+            self.mean_separation[si][k] = pt.mean_separation;
+            self.elastic_fraction[si][k] = pt.elastic_fraction.unwrap_or(pt.contact_fraction);
+            self.plastic_fraction[si][k] = pt.plastic_fraction.unwrap_or(0.0);
+            self.plastic_displacement_mean[si][k] = pt.plastic_displacement_mean.unwrap_or(0.0);
+            self.iterations += pt.iterations;
+            self.residual = self.residual.max(pt.residual);
+            self.seconds += pt.seconds;
+        }
+    }
 }
 
 /// Progress and the finest grid's histograms, seen from [`rough::solve`].
