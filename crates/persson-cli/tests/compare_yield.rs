@@ -131,9 +131,10 @@ const YIELD_REFERENCE: [(f64, f64, f64, f64, f64); 6] = [
     (0.005, 0.08, 4.9999999999999997918e1, 3.6138912644065811489e-2, 4.4485120268986944968e-2),
 ];
 
-/// The absolute tolerance compare asks of the theory's fractions (its
-/// STRESS_TOLERANCE): each fraction's error bound is below it.
-const THEORY_ABSOLUTE: f64 = 1e-9;
+/// The fractions' claim, 1e-13 absolute (issue 3). Compare asks the solver
+/// for 1e-9 (its STRESS_TOLERANCE), but the series and image sums converge
+/// far below that at these τ/y²: measured at most 7e-18 against mpmath.
+const THEORY_ABSOLUTE: f64 = 1e-13;
 
 /// G of the theory: the closed form to rounding (the spectrum's moments are
 /// exact, G a product of them).

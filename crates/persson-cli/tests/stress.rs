@@ -51,16 +51,19 @@ fn cli_stress_json_and_exit_codes() {
     );
     assert_eq!(v["scaled_density"].as_array().unwrap().len(), 3);
     assert_eq!(v["sigma_ratio"][2].as_f64().unwrap(), 1.0);
-    // one bound per quantity, the solver's own (no aggregate `error_bound`)
+    // one bound per quantity, the solver's own (no aggregate `error_bound`);
+    // read back to an ulp (serde_json's default float parser, without its
+    // `float_roundtrip` feature, may miss the nearest double by one)
     assert!(v.get("error_bound").is_none());
-    assert_eq!(
-        v["scaled_density_error_bound"].as_f64().unwrap(),
-        want.scaled_density_error_bound
-    );
-    assert_eq!(
-        v["plastic_fraction_error_bound"].as_f64().unwrap(),
-        want.plastic_fraction_error_bound
-    );
+    let ulp = |a: f64, b: f64| (a - b).abs() <= f64::EPSILON * b.abs();
+    for (key, want) in [
+        ("scaled_density_error_bound", want.scaled_density_error_bound),
+        ("elastic_fraction_error_bound", want.elastic_fraction_error_bound),
+        ("plastic_fraction_error_bound", want.plastic_fraction_error_bound),
+    ] {
+        let got = v[key].as_f64().unwrap();
+        assert!(ulp(got, want), "{key}: {got:e} vs {want:e}");
+    }
     // the method as data: the density from the sine series and its terms
     assert_eq!(v["method"]["density"]["kind"], "sine_series");
     assert!(v["method"]["density"]["terms"].as_u64().unwrap() >= 1);
