@@ -322,7 +322,11 @@ fn pressures_over_twelve_decades_match_the_closed_form() {
     let pressures: Vec<f64> = FULL_MAGNIFICATION.iter().map(|r| r.0).collect();
     let pts = p.load_curve(&pressures, p.zeta_max()).unwrap();
     for (pt, &(sigma, a, nc)) in pts.iter().zip(&FULL_MAGNIFICATION) {
-        assert!(rel(pt.g, 1.0 / (8.0 * sigma * sigma)) < CLAIM, "σ0 = {sigma}: G = {}", pt.g);
+        assert!(
+            rel(pt.g, 1.0 / (8.0 * sigma * sigma)) < CLAIM,
+            "σ0 = {sigma}: G = {}",
+            pt.g
+        );
         assert!(
             rel(pt.contact_fraction, a) < CLAIM,
             "σ0 = {sigma}: A/A0 = {:e} vs {a:e}",

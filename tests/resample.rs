@@ -4,7 +4,7 @@
 #![cfg(feature = "bem")]
 
 use persson::bem::resample::{band_limited_copies, band_limited_map, coarsened, nested_surfaces};
-use persson::bem::Surface;
+use persson::bem::GridSurface;
 use persson::spectrum::{Amplitude, BandLimited, SelfAffine, Spectrum};
 
 /// Rounding of sums over ≤ 256² values and of a few FFTs.
@@ -37,7 +37,7 @@ fn nested_surfaces_are_one_band_limited_surface() {
     // agree to rounding. Aliasing of any mode would break this.
     let s = surface_spectrum(16.0);
     let surfaces = nested_surfaces(&s, &[64, 128, 256], std::f64::consts::TAU, 7).unwrap();
-    let fine: &Surface = &surfaces[2];
+    let fine: &GridSurface = &surfaces[2];
     let (h, g) = (fine.rms_height(), fine.rms_slope().unwrap());
     for c in &surfaces[..2] {
         assert!(
@@ -81,7 +81,7 @@ fn low_passed_copies_are_one_surface_and_block_means_keep_the_mean() {
     // 16² resolves |k| < 8: a cut at 8 is refused
     assert!(band_limited_copies(&map, 8.0, &[16, 128]).is_err());
     let blocks = coarsened(&map, &[32, 64, 128]).unwrap();
-    let mean = |m: &Surface| m.heights.iter().sum::<f64>() / m.heights.len() as f64;
+    let mean = |m: &GridSurface| m.heights.iter().sum::<f64>() / m.heights.len() as f64;
     for b in &blocks {
         assert!((mean(b) - mean(&map)).abs() <= ROUNDING * map.rms_height());
     }

@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 
 use persson::bem::hertz::{self, HertzCase};
 use persson::bem::rough::{self, RoughOptions, SurfaceOrigin};
-use persson::bem::surface::{synthesize as synth, Surface};
+use persson::bem::surface::{synthesize as synth, GridSurface};
 use persson::bem::{check_memory, Boundary, Control, Operator, Options, Solver};
 use persson::error::check;
 use persson_studies::scene::BoundaryName;
@@ -43,7 +43,7 @@ fn options(tolerance: f64, max_iterations: usize, yield_stress: Option<f64>) -> 
 
 /// A square height map (N × N, float64, C-contiguous) of side `size` as the
 /// solver's surface (one copy: the solver's own buffer).
-fn surface(heights: &Bound<'_, PyAny>, size: f64) -> PyResult<Surface> {
+fn surface(heights: &Bound<'_, PyAny>, size: f64) -> PyResult<GridSurface> {
     let a = floats("heights", heights)?;
     let ([rows, cols], values) = map("heights", &a)?;
     if rows != cols {
@@ -51,7 +51,7 @@ fn surface(heights: &Bound<'_, PyAny>, size: f64) -> PyResult<Surface> {
             "heights: a {rows} × {cols} array; the BEM solves on square N × N maps (crop or resample it)"
         )));
     }
-    Surface::new(rows, size, values.to_vec()).map_err(err)
+    GridSurface::new(rows, size, values.to_vec()).map_err(err)
 }
 
 // The Python signatures spell the library's defaults as literals (so that

@@ -49,7 +49,14 @@ pub mod surface;
 pub use histogram::{pressure_histogram, saturated_histogram, HistogramBin, SaturatedHistogram};
 pub use kernel::{Boundary, Operator};
 pub use solver::{Control, Iteration, Options, Solution, Solver};
-pub use surface::Surface;
+pub use surface::GridSurface;
+
+/// The name of [`GridSurface`] in persson 0.3 (kept for one release).
+#[deprecated(
+    since = "0.4.0",
+    note = "renamed GridSurface: a periodic height map on the BEM's N × N grid"
+)]
+pub type Surface = GridSurface;
 
 use crate::error::{Error, Result};
 

@@ -21,7 +21,7 @@
 //! (the resolution study: A(N) = A∞ + c N^{−α}).
 
 use super::fft::{Complex64, Fft2};
-use super::surface::{self, Surface};
+use super::surface::{self, GridSurface};
 use crate::error::{check, Error, Result};
 use crate::spectrum::Spectrum;
 
@@ -58,7 +58,7 @@ pub fn nested_surfaces(
     grids: &[usize],
     size: f64,
     seed: u64,
-) -> Result<Vec<Surface>> {
+) -> Result<Vec<GridSurface>> {
     check::positive("size", size)?;
     let (&coarsest, &finest) = match (grids.first(), grids.last()) {
         (Some(a), Some(b)) => (a, b),
@@ -87,7 +87,7 @@ pub fn nested_surfaces(
 }
 
 /// Every `r`-th node of `fine` on each grid `n` of `grids` (`r = N/n`).
-fn subsampled(fine: &Surface, grids: &[usize]) -> Result<Vec<Surface>> {
+fn subsampled(fine: &GridSurface, grids: &[usize]) -> Result<Vec<GridSurface>> {
     let nf = fine.n;
     grids
         .iter()
@@ -96,7 +96,7 @@ fn subsampled(fine: &Surface, grids: &[usize]) -> Result<Vec<Surface>> {
             let heights = (0..n * n)
                 .map(|k| fine.heights[(k / n) * r * nf + (k % n) * r])
                 .collect();
-            Surface::new(n, fine.size, heights)
+            GridSurface::new(n, fine.size, heights)
         })
         .collect()
 }
@@ -114,7 +114,7 @@ fn subsampled(fine: &Surface, grids: &[usize]) -> Result<Vec<Surface>> {
 ///
 /// # Examples
 /// ```
-/// use persson::bem::{resample::band_limited_map, Surface};
+/// use persson::bem::{resample::band_limited_map, GridSurface};
 /// # fn main() -> persson::Result<()> {
 /// // cos(2πx/L) + cos(2π·5y/L) on 16²: a cut at q = 3·2π/L keeps the first
 /// let n = 16;
@@ -122,11 +122,11 @@ fn subsampled(fine: &Surface, grids: &[usize]) -> Result<Vec<Surface>> {
 /// let h = (0..n * n)
 ///     .map(|k| (tau * (k % n) as f64 / n as f64).cos() + (tau * 5.0 * (k / n) as f64 / n as f64).cos())
 ///     .collect();
-/// let cut = band_limited_map(&Surface::new(n, 1.0, h)?, 3.0 * tau)?;
+/// let cut = band_limited_map(&GridSurface::new(n, 1.0, h)?, 3.0 * tau)?;
 /// assert!((cut.heights[0] - 1.0).abs() < 1e-14);
 /// # Ok(()) }
 /// ```
-pub fn band_limited_map(map: &Surface, q_s: f64) -> Result<Surface> {
+pub fn band_limited_map(map: &GridSurface, q_s: f64) -> Result<GridSurface> {
     check::positive("q_s", q_s)?;
     let n = map.n;
     let k_max = q_s * map.size / std::f64::consts::TAU;
@@ -150,7 +150,7 @@ pub fn band_limited_map(map: &Surface, q_s: f64) -> Result<Surface> {
     }
     let mut heights = vec![0.0; n * n];
     fft.inverse(&mut spec, &mut heights)?;
-    Surface::new(n, map.size, heights)
+    GridSurface::new(n, map.size, heights)
 }
 
 /// A periodic map low-passed at `q_s` ([`band_limited_map`]) and sampled on
@@ -164,7 +164,11 @@ pub fn band_limited_map(map: &Surface, q_s: f64) -> Result<Surface> {
 /// Grids as for [`coarsened`]; modes at or above the coarsest grid's Nyquist
 /// wavevector (`⌊q_s L/2π⌋ ≥ n/2`: fewer than 2 pixels per wavelength); as
 /// [`band_limited_map`].
-pub fn band_limited_copies(map: &Surface, q_s: f64, grids: &[usize]) -> Result<Vec<Surface>> {
+pub fn band_limited_copies(
+    map: &GridSurface,
+    q_s: f64,
+    grids: &[usize],
+) -> Result<Vec<GridSurface>> {
     check_map_grids(map, grids)?;
     let coarsest = grids[0];
     let k_max = q_s * map.size / std::f64::consts::TAU;
@@ -182,7 +186,7 @@ pub fn band_limited_copies(map: &Surface, q_s: f64, grids: &[usize]) -> Result<V
 }
 
 /// The grids of a map: ascending, each dividing the next, the finest the map's.
-fn check_map_grids(map: &Surface, grids: &[usize]) -> Result<()> {
+fn check_map_grids(map: &GridSurface, grids: &[usize]) -> Result<()> {
     let nf = map.n;
     let ok = grids.last() == Some(&nf)
         && grids
@@ -212,19 +216,19 @@ fn check_map_grids(map: &Surface, grids: &[usize]) -> Result<()> {
 ///
 /// # Errors
 /// The finest grid is not the map's; grids not ascending, each dividing the
-/// next; as [`Surface::new`].
+/// next; as [`GridSurface::new`].
 ///
 /// # Examples
 /// ```
-/// use persson::bem::{resample::coarsened, Surface};
+/// use persson::bem::{resample::coarsened, GridSurface};
 /// # fn main() -> persson::Result<()> {
 /// let h: Vec<f64> = (0..256).map(|k| k as f64).collect();
-/// let copies = coarsened(&Surface::new(16, 1.0, h)?, &[8, 16])?;
+/// let copies = coarsened(&GridSurface::new(16, 1.0, h)?, &[8, 16])?;
 /// // the first 2×2 block: (0 + 1 + 16 + 17)/4
 /// assert_eq!(copies[0].heights[0], 8.5);
 /// # Ok(()) }
 /// ```
-pub fn coarsened(map: &Surface, grids: &[usize]) -> Result<Vec<Surface>> {
+pub fn coarsened(map: &GridSurface, grids: &[usize]) -> Result<Vec<GridSurface>> {
     let nf = map.n;
     check_map_grids(map, grids)?;
     grids
@@ -246,7 +250,7 @@ pub fn coarsened(map: &Surface, grids: &[usize]) -> Result<Vec<Surface>> {
                     sum * w
                 })
                 .collect();
-            Surface::new(n, map.size, heights)
+            GridSurface::new(n, map.size, heights)
         })
         .collect()
 }

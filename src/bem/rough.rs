@@ -33,7 +33,7 @@ use serde::Serialize;
 
 use super::histogram::{pressure_histogram, saturated_histogram, HistogramBin};
 use super::{check_memory, surface, Boundary, Control, Iteration, Operator, Options, Solution};
-use super::{Solver, Surface};
+use super::{GridSurface, Solver};
 use crate::error::{check, Error, Result};
 use crate::spectrum::Spectrum;
 
@@ -139,7 +139,7 @@ impl Observer for () {}
 /// as [`check_memory`], [`Operator::new`] and [`Solver::solve`]
 /// ([`Error::NotConverged`]); whatever the observer returns.
 pub fn solve(
-    surface: &Surface,
+    surface: &GridSurface,
     contact_modulus: f64,
     pressures: &[f64],
     options: &RoughOptions,
@@ -204,7 +204,7 @@ pub fn solve(
 ///
 /// # Errors
 /// As [`check_memory`] and [`surface::height_map_from_bytes`].
-pub fn read_surface(path: &Path, size: f64, boundary: Boundary) -> Result<Surface> {
+pub fn read_surface(path: &Path, size: f64, boundary: Boundary) -> Result<GridSurface> {
     check::positive("size", size)?;
     let bytes = crate::io::read(path)?;
     // A float32 file of this length holds at most len/4 values.
@@ -381,7 +381,7 @@ impl Observer for Keep<'_> {
 /// # Errors
 /// As [`rough_contact`].
 pub fn rough_contact_mapped(
-    surface: &Surface,
+    surface: &GridSurface,
     source: SurfaceOrigin,
     contact_modulus: f64,
     pressures: &[f64],
@@ -411,9 +411,9 @@ pub fn rough_contact_mapped(
 /// [`solve`] and its report.
 ///
 /// # Errors
-/// As [`solve`] and [`Surface::rms_slope`].
+/// As [`solve`] and [`GridSurface::rms_slope`].
 pub fn rough_contact(
-    surface: &Surface,
+    surface: &GridSurface,
     source: SurfaceOrigin,
     contact_modulus: f64,
     pressures: &[f64],

@@ -110,7 +110,11 @@ fn cli_hertz_yield_stress() {
     assert!((a_h - 0.1).abs() < 1e-15);
     for (k, n) in [(0, 32.0), (1, 64.0)] {
         let cells = (c(k) - RINGS_PI_4.0 * a_h).abs() * n;
-        assert!(cells <= PLASTIC_RADIUS_CELLS, "{n}²: c = {}, {cells} cells", c(k));
+        assert!(
+            cells <= PLASTIC_RADIUS_CELLS,
+            "{n}²: c = {}, {cells} cells",
+            c(k)
+        );
     }
     let approach = rows[1]["approach"].as_f64().unwrap() / (a_h * a_h);
     assert!(

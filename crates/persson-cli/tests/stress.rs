@@ -57,9 +57,18 @@ fn cli_stress_json_and_exit_codes() {
     assert!(v.get("error_bound").is_none());
     let ulp = |a: f64, b: f64| (a - b).abs() <= f64::EPSILON * b.abs();
     for (key, want) in [
-        ("scaled_density_error_bound", want.scaled_density_error_bound),
-        ("elastic_fraction_error_bound", want.elastic_fraction_error_bound),
-        ("plastic_fraction_error_bound", want.plastic_fraction_error_bound),
+        (
+            "scaled_density_error_bound",
+            want.scaled_density_error_bound,
+        ),
+        (
+            "elastic_fraction_error_bound",
+            want.elastic_fraction_error_bound,
+        ),
+        (
+            "plastic_fraction_error_bound",
+            want.plastic_fraction_error_bound,
+        ),
     ] {
         let got = v[key].as_f64().unwrap();
         assert!(ulp(got, want), "{key}: {got:e} vs {want:e}");

@@ -72,7 +72,7 @@ fn bem_surface(
     scene: &Scene,
     b: &BemOutput,
     boundary: persson::bem::Boundary,
-) -> Result<surface::Surface> {
+) -> Result<surface::GridSurface> {
     let named = |e: Error| prefix("outputs.bem.", e);
     if let Some(SpectrumSpec::HeightMap(m)) = &scene.spectrum {
         if b.grid.is_some() || b.seed.is_some() {

@@ -176,7 +176,7 @@ impl HeightMapSpec {
     pub fn bem_surface(
         &self,
         boundary: persson::bem::Boundary,
-    ) -> Result<persson::bem::surface::Surface> {
+    ) -> Result<persson::bem::surface::GridSurface> {
         if let (Some(Sides::One(size)), None, true) =
             (self.size, self.pixel_size, legacy_bem_format(&self.file))
         {
@@ -189,7 +189,7 @@ impl HeightMapSpec {
     fn bem_surface_read(
         &self,
         boundary: persson::bem::Boundary,
-    ) -> Result<persson::bem::surface::Surface> {
+    ) -> Result<persson::bem::surface::GridSurface> {
         let t = self.read()?;
         let [ny, nx] = t.shape();
         let bad = |what: String| {
@@ -210,7 +210,7 @@ impl HeightMapSpec {
             return Err(bad(format!("sides {} × {} m", t.lx(), t.ly())));
         }
         persson::bem::check_memory(nx, boundary)?;
-        persson::bem::surface::Surface::new(nx, t.lx(), t.heights().to_vec())
+        persson::bem::surface::GridSurface::new(nx, t.lx(), t.heights().to_vec())
             .map_err(|e| Error::parse(&self.file, 0, 0, e.to_string()))
     }
 
@@ -218,7 +218,7 @@ impl HeightMapSpec {
     fn bem_surface_read(
         &self,
         _: persson::bem::Boundary,
-    ) -> Result<persson::bem::surface::Surface> {
+    ) -> Result<persson::bem::surface::GridSurface> {
         Err(Error::parse(
             &self.file,
             0,

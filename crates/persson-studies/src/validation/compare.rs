@@ -11,7 +11,7 @@ use super::report::{
 };
 use super::resolution::{default_pressures, resolution_grids, SweepConfig, SweepSettings};
 use super::sweep::{sweep_source, GridResult, Sweep, SweepProgress, SweepSource};
-use persson::bem::{Boundary, Surface};
+use persson::bem::{Boundary, GridSurface};
 use persson::corrected::{self, Theory};
 use persson::error::{check, Result};
 use persson::kappa::Kappa;
@@ -169,7 +169,7 @@ pub fn compare(
 /// below [`persson::bem::MIN_GRID`]; `pixels_per_wavelength` ≤ 2 on a periodic map.
 pub fn compare_surface(
     spectrum: &dyn Spectrum,
-    map: &Surface,
+    map: &GridSurface,
     boundary: Boundary,
     config: &ComparisonConfig,
     progress: &mut dyn FnMut(SweepProgress),
@@ -181,7 +181,7 @@ pub fn compare_surface(
 /// sweep's grids, size and seeds, and the q_s of both sides.
 fn sweep_setup(
     spectrum: &dyn Spectrum,
-    map: Option<(&Surface, Boundary)>,
+    map: Option<(&GridSurface, Boundary)>,
     config: &ComparisonConfig,
 ) -> Result<(SweepConfig, f64)> {
     let q_l = spectrum.q_min();
@@ -243,7 +243,7 @@ fn bem_grid(
 
 /// A periodic map as measured (unfiltered), solved on its own grid.
 fn measured_map(
-    m: &Surface,
+    m: &GridSurface,
     e_star: f64,
     pressures: &[f64],
     sweep_config: &SweepConfig,
@@ -394,7 +394,7 @@ fn kappa_fits(
 
 fn compare_on(
     spectrum: &dyn Spectrum,
-    map: Option<(&Surface, Boundary)>,
+    map: Option<(&GridSurface, Boundary)>,
     config: &ComparisonConfig,
     progress: &mut dyn FnMut(SweepProgress),
 ) -> Result<Comparison> {

@@ -22,7 +22,7 @@ use super::resolution::SweepConfig;
 use persson::bem::histogram::PressureCounts;
 use persson::bem::resample::{band_limited_copies, coarsened, nested_surfaces};
 use persson::bem::rough::{self, RoughOptions, RoughProgress};
-use persson::bem::{self, Boundary, Iteration, Solution, Surface};
+use persson::bem::{self, Boundary, GridSurface, Iteration, Solution};
 use persson::error::{check, Error, Result};
 use persson::spectrum::Spectrum;
 
@@ -122,11 +122,11 @@ pub enum SweepSource<'a> {
     /// A height map on the finest grid, one realisation (the first seed
     /// only), and its block-averaged copies on the coarser grids
     /// ([`coarsened`]), solved with the given boundary.
-    Map(&'a Surface, Boundary),
+    Map(&'a GridSurface, Boundary),
     /// A periodic height map low-passed at `q_s` (1/unit of L) and sampled on
     /// every grid ([`band_limited_copies`]): one surface on every grid, as
     /// for [`SweepSource::Synthesised`]; the first seed only.
-    BandLimitedMap(&'a Surface, f64),
+    BandLimitedMap(&'a GridSurface, f64),
 }
 
 /// [`sweep`] on the surfaces of `source`.
@@ -227,7 +227,7 @@ impl SweepSource<'_> {
     }
 
     /// The surface of `seed` on every grid of `config`.
-    fn surfaces(&self, config: &SweepConfig, seed: u64) -> Result<Vec<Surface>> {
+    fn surfaces(&self, config: &SweepConfig, seed: u64) -> Result<Vec<GridSurface>> {
         match *self {
             SweepSource::Synthesised(spectrum) => {
                 nested_surfaces(spectrum, &config.grids, config.size, seed)
