@@ -108,7 +108,7 @@ impl StressScene {
     /// P(σ, ζ) = P̃(σ/σH; G(ζ), σY/σH) / σH
     /// ```
     /// # Errors
-    /// ζ < 1; as [`Solver::new`].
+    /// ζ < 1; as [`super::Solver::new`].
     pub fn curves(
         &self,
         model: &Persson,

@@ -69,6 +69,7 @@ pub fn count(s: &str) -> Result<usize, String> {
 }
 
 /// As [`count`], for a seed (an integer from 0 to 2⁶⁴ − 1).
+#[cfg(feature = "bem")]
 pub fn seed(s: &str) -> Result<u64, String> {
     let t = s.trim();
     if let Ok(v) = t.parse::<u64>() {

@@ -4,7 +4,7 @@
 use std::io::Write;
 
 use anyhow::Context;
-use persson_studies::table::{narrow, Tabulate, TEXT_WIDTH};
+use persson_studies::table::{narrow, Tabulate};
 use persson_studies::warning::Warned;
 use persson_studies::Warning;
 use serde::Serialize;
@@ -92,9 +92,11 @@ pub fn print_from<R: Serialize + Tabulate>(
     print_tables(report, warnings, f, source, None)
 }
 
-/// As [`print_warned`], with text tables that fit [`TEXT_WIDTH`] characters
+/// As [`print_warned`], with text tables that fit
+/// [`persson_studies::table::TEXT_WIDTH`] characters
 /// unless `wide` ([`narrow`]: long titles wrapped, the omittable columns
 /// left out and named; CSV and JSON keep every column).
+#[cfg(feature = "bem")]
 pub fn print_narrowed<R: Serialize + Tabulate>(
     report: &R,
     warnings: &[Warning],
@@ -106,7 +108,7 @@ pub fn print_narrowed<R: Serialize + Tabulate>(
         warnings,
         f,
         Source::Flags,
-        (!wide).then_some(TEXT_WIDTH),
+        (!wide).then_some(persson_studies::table::TEXT_WIDTH),
     )
 }
 

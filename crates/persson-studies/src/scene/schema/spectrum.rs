@@ -113,7 +113,7 @@ impl HeightMapSpec {
 }
 
 impl SpectrumSpec {
-    /// The built-in example (see [`EXAMPLE`]).
+    /// The built-in example (see [`super::EXAMPLE`]).
     pub fn example() -> Self {
         SpectrumSpec::SelfAffine {
             hurst: 0.8,
