@@ -30,8 +30,6 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     Ok(())
 }
 
-/// `persson area --json`: A/A0 against the nominal pressures with G, its
-/// error bound, the effective G of a corrected theory and the linear laws.
 // The signatures spell the library's default tolerances as literals (so that
 // `inspect.signature` shows them, not `Ellipsis`); these keep them equal.
 const _: () = {
@@ -39,6 +37,8 @@ const _: () = {
     assert!(persson::separation::DEFAULT_TOLERANCE == 1e-10);
 };
 
+/// `persson area --json`: A/A0 against the nominal pressures with G, its
+/// error bound, the effective G of a corrected theory and the linear laws.
 #[pyfunction]
 #[pyo3(signature = (spectrum, modulus, pressure, theory="original", gamma=None, *, zeta=None, tolerance=1e-12))]
 #[allow(clippy::too_many_arguments)]
