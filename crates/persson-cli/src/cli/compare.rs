@@ -69,7 +69,10 @@ fn compare(a: &MainArgs) -> anyhow::Result<()> {
         anyhow::bail!("{flag} is not used with --surface: the map sets the grid");
     }
     let (spectrum, described) = match &map {
-        Some(m) => SpectrumSpec::HeightMap(m.clone()).build_described()?,
+        Some(m) => {
+            let built = SpectrumSpec::HeightMap(m.clone()).build_described()?;
+            (built.value, built.description)
+        }
         None => (a.spectrum.build()?, None),
     };
     let mut config = ComparisonConfig::new(a.material.build(a.spectrum.example)?.contact_modulus());

@@ -5,9 +5,9 @@
 use persson::error::{Error, Result};
 use persson::spectrum::{Spectrum, Tabulated};
 
-use super::schema::HeightMapSpec;
 #[cfg(any(feature = "bem", feature = "topography"))]
 use super::schema::Sides;
+use super::schema::{Described, HeightMapSpec};
 #[cfg(feature = "topography")]
 use super::schema::{DetrendName, WindowName};
 
@@ -94,15 +94,18 @@ impl HeightMapSpec {
     /// # Errors
     /// As [`HeightMapSpec::analyse`] and [`persson::topography::Psd::to_tabulated`].
     #[cfg(feature = "topography")]
-    pub fn spectrum_described(&self) -> Result<(Tabulated, String)> {
+    pub fn spectrum_described(&self) -> Result<Described<Tabulated>> {
         let a = self.analyse()?;
         let s = a.psd.to_tabulated().map_err(|e| in_file(&self.file, e))?;
-        Ok((s, describe(&self.file, &a)))
+        Ok(Described {
+            value: s,
+            description: Some(describe(&self.file, &a)),
+        })
     }
 
     /// Without the `topography` feature a measured surface cannot be read.
     #[cfg(not(feature = "topography"))]
-    pub fn spectrum_described(&self) -> Result<(Tabulated, String)> {
+    pub fn spectrum_described(&self) -> Result<Described<Tabulated>> {
         Err(Error::Inconsistent {
             name: "kind = height_map".into(),
             requirement:
@@ -116,7 +119,7 @@ impl HeightMapSpec {
     /// # Errors
     /// As [`HeightMapSpec::spectrum_described`].
     pub fn spectrum(&self) -> Result<Box<dyn Spectrum>> {
-        Ok(Box::new(self.spectrum_described()?.0))
+        Ok(Box::new(self.spectrum_described()?.value))
     }
 }
 

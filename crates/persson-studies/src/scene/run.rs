@@ -48,9 +48,10 @@ impl RoughContact {
         spectrum_section: &str,
         material_section: &str,
     ) -> Result<Self> {
-        let (s, measured) = spectrum
+        let built = spectrum
             .build_described()
             .map_err(|e| prefix(spectrum_section, e))?;
+        let (s, measured) = (built.value, built.description);
         let m: Material = material.build().map_err(|e| prefix(material_section, e))?;
         let description = (*spectrum == SpectrumSpec::example()
             && *material == MaterialSpec::example())

@@ -10,6 +10,18 @@ use super::{required, ConventionName, DetrendName, WindowName};
 use persson::error::Result;
 use persson::spectrum::{Amplitude, SelfAffine, Spectrum, Tabulated};
 
+/// A value built from a scene's entry, with what was assumed to build it in
+/// words (a measured surface's detrending, window, periodicity and band),
+/// for report titles.
+#[derive(Debug, Clone)]
+#[non_exhaustive]
+pub struct Described<T> {
+    /// The value.
+    pub value: T,
+    /// What was assumed (`None`: nothing worth saying).
+    pub description: Option<String>,
+}
+
 /// The roughness of a scene.
 #[derive(Debug, Clone, PartialEq, Deserialize, Serialize, JsonSchema)]
 #[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
@@ -173,13 +185,19 @@ impl SpectrumSpec {
     ///
     /// # Errors
     /// As [`SpectrumSpec::build`].
-    pub fn build_described(&self) -> Result<(Box<dyn Spectrum>, Option<String>)> {
+    pub fn build_described(&self) -> Result<Described<Box<dyn Spectrum>>> {
         match self {
             SpectrumSpec::HeightMap(m) => {
-                let (s, d) = m.spectrum_described()?;
-                Ok((Box::new(s), Some(d)))
+                let d = m.spectrum_described()?;
+                Ok(Described {
+                    value: Box::new(d.value),
+                    description: d.description,
+                })
             }
-            _ => Ok((self.build()?, None)),
+            _ => Ok(Described {
+                value: self.build()?,
+                description: None,
+            }),
         }
     }
 
