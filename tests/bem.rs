@@ -3,7 +3,7 @@
 #![cfg(feature = "bem")]
 
 use persson::bem::surface::{expected_rms, read_height_map, synthesize};
-use persson::bem::{hertz, Boundary, Control, Operator, Options, Solver, Surface};
+use persson::bem::{hertz, Boundary, Control, GridSurface, Operator, Options, Solver};
 use persson::io::npy::write as write_npy;
 use persson::spectrum::{Amplitude, SelfAffine, Spectrum};
 use persson::Error;
@@ -134,7 +134,7 @@ fn hertz_lecture_measure_is_reported_for_the_free_boundary_only() {
         .zip(&sol.pressure)
         .zip(&sol.displacement)
     {
-        let (pe, ue) = (hertz::pressure(*r, a, p0), johnson(*r));
+        let (pe, ue) = (persson::reference::pressure_profile(*r, a, p0), johnson(*r));
         num += (u - ue) * (p - pe);
         den += ue * pe;
     }
@@ -343,7 +343,7 @@ fn bad_input_is_a_clear_error() {
     }
     let mut h = surf.heights.clone();
     h[5] = f64::INFINITY;
-    assert!(Surface::new(16, 1.0, h.clone()).is_err());
+    assert!(GridSurface::new(16, 1.0, h.clone()).is_err());
     assert!(s.solve(&h, Control::MeanPressure(0.1), &tight()).is_err());
     // Memory: a 32768² free solve needs ~100 GiB, more than this machine has.
     let e = persson::bem::check_memory(32768, Boundary::Free).unwrap_err();

@@ -57,7 +57,8 @@ fn fractions_with_sigma_y_at_the_edge_match_mpmath() {
             _ => Start::from_name(name).unwrap(),
         };
         let s = Solver::new(&st, g, y, 1e-12).unwrap();
-        let (el, pl, how) = s.fractions().unwrap();
+        let f = s.fractions().unwrap();
+        let (el, pl, how) = (f.elastic_fraction, f.plastic_fraction, f.method);
         for (got, want, what) in [(el, a_el, "A_el"), (pl, a_pl, "A_pl")] {
             let err = (got.value - want).abs();
             let label = format!("{name} G={g:e} y={y:?} {what} ({how})");

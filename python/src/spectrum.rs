@@ -100,11 +100,11 @@ impl Spectrum {
     fn from_spec_quiet(spec: &SpectrumSpec) -> PyResult<Self> {
         match spec {
             SpectrumSpec::SelfAffine { .. } => {
-                let (s, description) = spec.build_described().map_err(err)?;
+                let built = spec.build_described().map_err(err)?;
                 Ok(Spectrum {
-                    shared: Shared(Arc::from(s)),
+                    shared: Shared(Arc::from(built.value)),
                     breaks: spec.breaks(),
-                    description,
+                    description: built.description,
                     recipe: Recipe::SelfAffine(
                         serde_json::to_string(spec).map_err(|e| value_error(e.to_string()))?,
                     ),
@@ -122,16 +122,19 @@ impl Spectrum {
                 Ok(Self::tabulated_spectrum(t, None))
             }
             SpectrumSpec::HeightMap(m) => {
-                let (t, d) = m.spectrum_described().map_err(err)?;
-                Ok(Self::tabulated_spectrum(t, Some(d)))
+                let d = m.spectrum_described().map_err(err)?;
+                Ok(Self::tabulated_spectrum(d.value, d.description))
             }
         }
     }
 
     /// The library's surface: this spectrum on a body of contact modulus E*.
-    pub fn surface(&self, contact_modulus: f64) -> PyResult<persson_studies::scene::run::Surface> {
+    pub fn contact(
+        &self,
+        contact_modulus: f64,
+    ) -> PyResult<persson_studies::scene::run::RoughContact> {
         persson::error::check::positive("contact_modulus", contact_modulus).map_err(err)?;
-        Ok(persson_studies::scene::run::Surface {
+        Ok(persson_studies::scene::run::RoughContact {
             spectrum: Box::new(self.shared.clone()),
             contact_modulus,
             breaks: self.breaks.clone(),

@@ -23,6 +23,7 @@
 //! - [`hertz`]: closed-form Hertz solution and the η validation; with a
 //!   yield stress, the plastic disc per grid ([`hertz::plastic_disc`]).
 //! - [`surface`]: Fourier synthesis from any [`crate::Spectrum`], height-map I/O.
+//! - [`resample`]: one surface on several grids (subsampled, low-passed, block-averaged).
 //! - [`rough`]: the rough-contact loop (one solve per nominal pressure) and its report.
 //! - [`histogram`]: pressure histograms P(σ) that integrate to A/A0.
 //! - [`reynolds`], [`stiffness`]: the exact flow through a solved gap (Reynolds' equation) and the exact contact stiffness (conductance by Barber's identity).
@@ -42,6 +43,7 @@ pub mod histogram;
 pub mod kernel;
 #[cfg(feature = "flow")]
 pub mod reynolds;
+pub mod resample;
 pub mod rough;
 pub mod saturated;
 pub mod solver;
@@ -51,7 +53,14 @@ pub mod surface;
 pub use histogram::{pressure_histogram, saturated_histogram, HistogramBin, SaturatedHistogram};
 pub use kernel::{Boundary, Operator};
 pub use solver::{Control, Iteration, Options, Solution, Solver};
-pub use surface::Surface;
+pub use surface::GridSurface;
+
+/// The name of [`GridSurface`] in persson 0.3 (kept for one release).
+#[deprecated(
+    since = "0.4.0",
+    note = "renamed GridSurface: a periodic height map on the BEM's N × N grid"
+)]
+pub type Surface = GridSurface;
 
 use crate::error::{Error, Result};
 

@@ -33,7 +33,7 @@ use serde::Serialize;
 
 use super::histogram::{pressure_histogram, saturated_histogram, HistogramBin};
 use super::{check_memory, surface, Boundary, Control, Iteration, Operator, Options, Solution};
-use super::{Solver, Surface};
+use super::{GridSurface, Solver};
 use crate::error::{check, Error, Result};
 use crate::spectrum::Spectrum;
 
@@ -139,7 +139,7 @@ impl Observer for () {}
 /// as [`check_memory`], [`Operator::new`] and [`Solver::solve`]
 /// ([`Error::NotConverged`]); whatever the observer returns.
 pub fn solve(
-    surface: &Surface,
+    surface: &GridSurface,
     contact_modulus: f64,
     pressures: &[f64],
     options: &RoughOptions,
@@ -204,7 +204,7 @@ pub fn solve(
 ///
 /// # Errors
 /// As [`check_memory`] and [`surface::height_map_from_bytes`].
-pub fn read_surface(path: &Path, size: f64, boundary: Boundary) -> Result<Surface> {
+pub fn read_surface(path: &Path, size: f64, boundary: Boundary) -> Result<GridSurface> {
     check::positive("size", size)?;
     let bytes = crate::io::read(path)?;
     // A float32 file of this length holds at most len/4 values.
@@ -245,11 +245,12 @@ impl SpectrumSummary {
     }
 }
 
-/// Where the rigid surface of a rough contact came from.
+/// Where the rigid surface of a rough contact came from: a file, or a
+/// spectrum and a seed. Called `SurfaceSource` in persson 0.3.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(untagged)]
 #[non_exhaustive]
-pub enum SurfaceSource {
+pub enum SurfaceOrigin {
     /// A height map read from a file.
     HeightMap {
         /// The file, as given.
@@ -264,13 +265,17 @@ pub enum SurfaceSource {
     },
 }
 
-impl SurfaceSource {
+/// The name of [`SurfaceOrigin`] in persson 0.3.
+#[deprecated(since = "0.4.0", note = "renamed SurfaceOrigin")]
+pub type SurfaceSource = SurfaceOrigin;
+
+impl SurfaceOrigin {
     /// A synthesised surface's source.
     ///
     /// # Errors
     /// As [`SpectrumSummary::of`].
     pub fn synthesised(spectrum: &dyn Spectrum, seed: u64) -> Result<Self> {
-        Ok(SurfaceSource::Synthesised {
+        Ok(SurfaceOrigin::Synthesised {
             seed,
             spectrum: SpectrumSummary::of(spectrum)?,
         })
@@ -279,14 +284,14 @@ impl SurfaceSource {
     /// The seed of a synthesised surface (`None` for a height map).
     pub fn seed(&self) -> Option<u64> {
         match self {
-            SurfaceSource::Synthesised { seed, .. } => Some(*seed),
-            SurfaceSource::HeightMap { .. } => None,
+            SurfaceOrigin::Synthesised { seed, .. } => Some(*seed),
+            SurfaceOrigin::HeightMap { .. } => None,
         }
     }
 
     /// A height map's source.
     pub fn height_map(file: &Path) -> Self {
-        SurfaceSource::HeightMap {
+        SurfaceOrigin::HeightMap {
             file: file.display().to_string(),
         }
     }
@@ -315,11 +320,12 @@ pub struct RoughReport {
     /// rms slope of the surface on the grid (its trigonometric interpolant).
     pub surface_rms_slope: f64,
     /// Where the surface came from.
-    pub surface: SurfaceSource,
+    pub surface: SurfaceOrigin,
     /// One point per nominal pressure, in the caller's order.
     pub points: Vec<RoughPoint>,
-    /// The pressure field of the last solve, kept only by
-    /// [`rough_contact_mapped`] (for `bem rough --plot`); not serialised.
+    /// The pressure field of one solve in partial contact (A/A0 nearest
+    /// [`MAPPED_CONTACT_FRACTION`]), kept only by [`rough_contact_mapped`]
+    /// (for `bem rough --plot`); not serialised.
     #[serde(skip)]
     pub pressure_map: Option<PressureMap>,
 }
@@ -336,10 +342,17 @@ pub struct PressureMap {
     pub pressure: Vec<f64>,
 }
 
-/// Keeps the last solution's pressure, forwarding everything else.
+/// The contact fraction of the solve whose field [`rough_contact_mapped`]
+/// keeps: the one nearest it, a partial contact whose islands a map shows
+/// (the last load of a curve is often near full contact, a map of noise).
+pub const MAPPED_CONTACT_FRACTION: f64 = 0.1;
+
+/// Keeps the pressure of the solution whose A/A0 is nearest
+/// [`MAPPED_CONTACT_FRACTION`] (the first of equals), forwarding everything else.
 struct Keep<'a> {
     inner: &'a mut dyn Observer,
-    last: Option<(usize, Vec<f64>)>,
+    /// (index, |A/A0 − target|, pressure field).
+    kept: Option<(usize, f64, Vec<f64>)>,
 }
 
 impl Observer for Keep<'_> {
@@ -348,26 +361,28 @@ impl Observer for Keep<'_> {
     }
     fn solution(&mut self, index: usize, solution: &Solution) -> Result<()> {
         self.inner.solution(index, solution)?;
-        match &mut self.last {
-            Some((k, p)) => {
-                *k = index;
+        let distance = (solution.contact_fraction - MAPPED_CONTACT_FRACTION).abs();
+        match &mut self.kept {
+            Some((_, d, _)) if *d <= distance => {}
+            Some((k, d, p)) => {
+                (*k, *d) = (index, distance);
                 p.clone_from(&solution.pressure);
             }
-            None => self.last = Some((index, solution.pressure.clone())),
+            None => self.kept = Some((index, distance, solution.pressure.clone())),
         }
         Ok(())
     }
 }
 
-/// [`rough_contact`], keeping the pressure field of the last solve in
-/// [`RoughReport::pressure_map`] (one N² copy per solve; [`rough_contact`]
-/// keeps none).
+/// [`rough_contact`], keeping in [`RoughReport::pressure_map`] the pressure
+/// field of the solve whose A/A0 is nearest [`MAPPED_CONTACT_FRACTION`]
+/// (at most one N² copy per solve; [`rough_contact`] keeps none).
 ///
 /// # Errors
 /// As [`rough_contact`].
 pub fn rough_contact_mapped(
-    surface: &Surface,
-    source: SurfaceSource,
+    surface: &GridSurface,
+    source: SurfaceOrigin,
     contact_modulus: f64,
     pressures: &[f64],
     options: &RoughOptions,
@@ -375,7 +390,7 @@ pub fn rough_contact_mapped(
 ) -> Result<RoughReport> {
     let mut keep = Keep {
         inner: observer,
-        last: None,
+        kept: None,
     };
     let mut report = rough_contact(
         surface,
@@ -385,7 +400,7 @@ pub fn rough_contact_mapped(
         options,
         &mut keep,
     )?;
-    report.pressure_map = keep.last.map(|(index, pressure)| PressureMap {
+    report.pressure_map = keep.kept.map(|(index, _, pressure)| PressureMap {
         index,
         nominal_pressure: pressures[index],
         pressure,
@@ -396,10 +411,10 @@ pub fn rough_contact_mapped(
 /// [`solve`] and its report.
 ///
 /// # Errors
-/// As [`solve`] and [`Surface::rms_slope`].
+/// As [`solve`] and [`GridSurface::rms_slope`].
 pub fn rough_contact(
-    surface: &Surface,
-    source: SurfaceSource,
+    surface: &GridSurface,
+    source: SurfaceOrigin,
     contact_modulus: f64,
     pressures: &[f64],
     options: &RoughOptions,

@@ -82,18 +82,11 @@ pub(super) fn solve(
     observer: &mut dyn FnMut(Iteration),
 ) -> Result<Solution> {
     let start = Instant::now();
-    check::positive("yield_stress", y)?;
-    if let Control::MeanPressure(pm) = control {
-        if pm.is_finite() && pm > 0.0 && y <= pm {
-            return Err(Error::invalid(
-                "yield_stress",
-                y,
-                format!(
-                    "above the mean pressure {pm:e}: with σY ≤ p̄ the load cannot be carried (no solution exists)"
-                ),
-            ));
-        }
-    }
+    let mean = match control {
+        Control::MeanPressure(pm) if pm.is_finite() && pm > 0.0 => vec![pm],
+        _ => vec![],
+    };
+    check::yield_stress("yield_stress", y, &mean)?;
     let mut sol = solver.solve_elastic(heights, control, opts, observer)?;
     if sol.pressure.iter().all(|&p| p <= y) {
         // The elastic solution satisfies the bound: it is the saturated one.

@@ -48,9 +48,11 @@ use super::kernel::signed;
 use crate::error::{check, Error, Result};
 use crate::spectrum::Spectrum;
 
-/// A periodic height map on an `N × N` grid of side `size`.
+/// A periodic height map on the BEM's `N × N` grid of side `size`: the rigid
+/// rough surface of a solve (called `Surface` in persson 0.3; a measured map
+/// of any shape is a `persson::topography::Topography`).
 #[derive(Debug, Clone, PartialEq)]
-pub struct Surface {
+pub struct GridSurface {
     /// Grid side N.
     pub n: usize,
     /// Physical side L.
@@ -59,7 +61,7 @@ pub struct Surface {
     pub heights: Vec<f64>,
 }
 
-impl Surface {
+impl GridSurface {
     /// A surface from heights, checked: square, `N ≥ 8`, finite.
     ///
     /// # Errors
@@ -80,7 +82,7 @@ impl Surface {
                 "finite",
             ));
         }
-        Ok(Surface { n, size, heights })
+        Ok(GridSurface { n, size, heights })
     }
 
     /// rms height about the mean, `sqrt(Σ(h − h̄)²/N²)`.
@@ -167,7 +169,7 @@ fn normal_pair(rng: &mut Pcg64Mcg) -> (f64, f64) {
 /// assert_eq!(a.heights, b.heights);
 /// # Ok(()) }
 /// ```
-pub fn synthesize(spectrum: &dyn Spectrum, n: usize, size: f64, seed: u64) -> Result<Surface> {
+pub fn synthesize(spectrum: &dyn Spectrum, n: usize, size: f64, seed: u64) -> Result<GridSurface> {
     check::positive("size", size)?;
     super::check_grid(n)?;
     let dq = std::f64::consts::TAU / size;
@@ -204,7 +206,7 @@ pub fn synthesize(spectrum: &dyn Spectrum, n: usize, size: f64, seed: u64) -> Re
     }
     let mut heights = vec![0.0; n * n];
     fft.inverse(&mut spec, &mut heights)?;
-    Surface::new(n, size, heights)
+    GridSurface::new(n, size, heights)
 }
 
 /// The expected rms height and rms slope of [`synthesize`]'s surfaces:
@@ -234,7 +236,7 @@ pub fn expected_rms(spectrum: &dyn Spectrum, n: usize, size: f64) -> (f64, f64) 
 /// # Errors
 /// Unreadable file, malformed header or text, wrong dtype or shape (not 2-D,
 /// not square, side below 8), non-finite heights.
-pub fn read_height_map(path: &Path, size: f64) -> Result<Surface> {
+pub fn read_height_map(path: &Path, size: f64) -> Result<GridSurface> {
     check::positive("size", size)?;
     let bytes = crate::io::read(path)?;
     height_map_from_bytes(path, &bytes, size)
@@ -246,7 +248,7 @@ pub fn read_height_map(path: &Path, size: f64) -> Result<Surface> {
 ///
 /// # Errors
 /// As [`read_height_map`], without the I/O errors.
-pub fn height_map_from_bytes(path: &Path, bytes: &[u8], size: f64) -> Result<Surface> {
+pub fn height_map_from_bytes(path: &Path, bytes: &[u8], size: f64) -> Result<GridSurface> {
     check::positive("size", size)?;
     let is_npy = path
         .extension()
@@ -265,7 +267,7 @@ pub fn height_map_from_bytes(path: &Path, bytes: &[u8], size: f64) -> Result<Sur
             format!("shape ({}, {}): need a square N×N grid", m.rows, m.cols),
         ));
     }
-    Surface::new(m.rows, size, m.values).map_err(|e| match e {
+    GridSurface::new(m.rows, size, m.values).map_err(|e| match e {
         Error::InvalidParameter {
             name,
             value,

@@ -15,12 +15,14 @@
 //! segment) for [`SelfAffine`] and [`Tabulated`], and come from adaptive
 //! quadrature with an error estimate for [`FnSpectrum`].
 
+mod band_limited;
 pub mod convention;
 mod function;
 mod power;
 mod self_affine;
 mod tabulated;
 
+pub use band_limited::BandLimited;
 pub use convention::Convention;
 pub use function::FnSpectrum;
 pub use self_affine::{Amplitude, SelfAffine};

@@ -117,19 +117,104 @@ fn elastic_and_plastic_parts_add_up_and_the_histogram_leaves_the_peak_out() {
     }
 }
 
+/// (σ0, σY, G, A_el/A0, A_pl/A0) of Persson's finite-σY theory for this
+/// spectrum at ζ = q_s/q_l, a flat start: the sums over the images of the
+/// walls σ = 0 and σ = σY in mpmath at 40 digits, checked against the sine
+/// series (`tests/reference/compare_yield.py`); G = h'_rms²/(8σ0²).
+#[allow(clippy::excessive_precision)]
+const YIELD_REFERENCE: [(f64, f64, f64, f64, f64); 6] = [
+    (
+        0.002,
+        0.04,
+        3.1249999999999998699e2,
+        8.9239921011842997576e-5,
+        4.9955380039498042185e-2,
+    ),
+    (
+        0.002,
+        0.05,
+        3.1249999999999998699e2,
+        1.1476752027326514105e-3,
+        3.94261626104106733e-2,
+    ),
+    (
+        0.002,
+        0.08,
+        3.1249999999999998699e2,
+        1.4533916401138286773e-2,
+        1.7755351779685799205e-2,
+    ),
+    (
+        0.005,
+        0.04,
+        4.9999999999999997918e1,
+        2.1830636406126308938e-4,
+        1.2489084681797843834e-1,
+    ),
+    (
+        0.005,
+        0.05,
+        4.9999999999999997918e1,
+        2.8296656168624491238e-3,
+        9.8585167692109421308e-2,
+    ),
+    (
+        0.005,
+        0.08,
+        4.9999999999999997918e1,
+        3.6138912644065811489e-2,
+        4.4485120268986944968e-2,
+    ),
+];
+
+/// The fractions' claim, 1e-13 absolute (issue 3). Compare asks the solver
+/// for 1e-9 (its STRESS_TOLERANCE), but the series and image sums converge
+/// far below that at these τ/y²: measured at most 7e-18 against mpmath.
+const THEORY_ABSOLUTE: f64 = 1e-13;
+
+/// G of the theory: the closed form to rounding (the spectrum's moments are
+/// exact, G a product of them).
+const G_RELATIVE: f64 = 1e-13;
+
+/// The theory's A_el/A0 and A_pl/A0 are Persson's finite-σY fractions
+/// (mpmath); the BEM's plastic fraction rises as σY falls, per grid and in
+/// the continuum limit, and its elastic fraction falls.
 #[test]
-fn plastic_fraction_rises_as_the_yield_stress_falls() {
-    let (hi, lo) = (run(Some(0.08)), run(Some(0.04)));
+fn fractions_are_the_theory_s_and_the_bem_plastic_part_rises_as_the_yield_stress_falls() {
+    let runs: Vec<(f64, Comparison)> = [0.04, 0.05, 0.08]
+        .into_iter()
+        .map(|y| (y, run(Some(y))))
+        .collect();
+    for &(s0, sy, g, el, pl) in &YIELD_REFERENCE {
+        let r = &runs.iter().find(|(y, _)| *y == sy).unwrap().1;
+        let k = PRESSURES.iter().position(|&p| p == s0).unwrap();
+        let d = &r.pressure_distribution[k];
+        assert!(
+            ((d.g - g) / g).abs() < G_RELATIVE,
+            "σ0 = {s0}: G = {} vs {g}",
+            d.g
+        );
+        let (got_el, got_pl) = (
+            d.theory_elastic_fraction.unwrap(),
+            d.theory_plastic_fraction.unwrap(),
+        );
+        assert!(
+            (got_el - el).abs() < THEORY_ABSOLUTE,
+            "σ0 = {s0}, σY = {sy}: A_el = {got_el:e} vs {el:e}"
+        );
+        assert!(
+            (got_pl - pl).abs() < THEORY_ABSOLUTE,
+            "σ0 = {s0}, σY = {sy}: A_pl = {got_pl:e} vs {pl:e}"
+        );
+    }
+    let (lo, hi) = (&runs[0].1, &runs[2].1);
     for k in 0..PRESSURES.len() {
-        let t = |r: &Comparison| r.pressure_distribution[k].theory_plastic_fraction.unwrap();
         let b = |r: &Comparison| r.bem.last().unwrap().plastic_fraction.as_ref().unwrap()[k];
         let x = |r: &Comparison| r.extrapolated[k].plastic_fraction.unwrap();
-        assert!(t(&lo) > t(&hi), "theory {} vs {}", t(&lo), t(&hi));
-        assert!(b(&lo) > b(&hi), "BEM {} vs {}", b(&lo), b(&hi));
-        assert!(x(&lo) > x(&hi), "BEM N → ∞ {} vs {}", x(&lo), x(&hi));
-        // and the elastic part falls
+        assert!(b(lo) > b(hi), "BEM {} vs {}", b(lo), b(hi));
+        assert!(x(lo) > x(hi), "BEM N → ∞ {} vs {}", x(lo), x(hi));
         let e = |r: &Comparison| r.bem.last().unwrap().elastic_fraction.as_ref().unwrap()[k];
-        assert!(e(&lo) < e(&hi));
+        assert!(e(lo) < e(hi));
     }
 }
 

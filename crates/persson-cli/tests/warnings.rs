@@ -1,6 +1,8 @@
 //! Warnings (issue 15): each slip a user makes gives one line on stderr,
 //! `persson: warning: …`, and an entry of the top-level `"warnings"` array of
-//! `--json` (always present), and never changes a number.
+//! `--json` (always present): an object with its `kind`, its typed fields and
+//! its `message`, which names the input, never a flag (stderr adds the flag
+//! in parentheses). A warning never changes a number.
 
 mod common;
 
@@ -22,25 +24,50 @@ fn run(args: &str) -> (Value, Vec<String>) {
     (v, lines)
 }
 
-/// The `"warnings"` array, which every `--json` output has.
+/// The messages of the `"warnings"` array, which every `--json` output has;
+/// each warning is an object with a `kind` from the closed set and a `message`
+/// that names no flag.
 fn warnings(v: &Value) -> Vec<String> {
+    const KINDS: [&str; 8] = [
+        "high_pressure",
+        "steep_slope",
+        "zeta_beyond_band",
+        "band_limited",
+        "psd_convention",
+        "rising_spectrum",
+        "clipped_band",
+        "map_not_periodic",
+    ];
     v["warnings"]
         .as_array()
         .unwrap_or_else(|| panic!("no \"warnings\" array in {v}"))
         .iter()
-        .map(|w| w.as_str().expect("a warning is a string").to_string())
+        .map(|w| {
+            let kind = w["kind"].as_str().expect("a warning has a kind");
+            assert!(KINDS.contains(&kind), "{w}");
+            let message = w["message"].as_str().expect("a warning has a message");
+            assert!(!message.contains("--"), "a flag in {message}");
+            message.to_string()
+        })
         .collect()
 }
 
-/// Stderr and JSON carry the same warnings, one line each.
+/// Stderr and JSON carry the same warnings, one line each (stderr with the
+/// flag that sets the input, if any, in parentheses after the message).
 fn same(v: &Value, lines: &[String]) -> Vec<String> {
     let w = warnings(v);
-    let printed: Vec<String> = lines
-        .iter()
-        .map(|l| l.trim_start_matches("persson: warning: ").to_string())
-        .collect();
-    assert_eq!(w, printed, "stderr and --json disagree");
-    for x in &w {
+    assert_eq!(
+        w.len(),
+        lines.len(),
+        "stderr and --json disagree: {lines:?}"
+    );
+    for (x, l) in w.iter().zip(lines) {
+        let printed = l.trim_start_matches("persson: warning: ");
+        let hint = printed.strip_prefix(x.as_str());
+        assert!(
+            hint.is_some_and(|h| h.is_empty() || (h.starts_with(" (--") && h.ends_with(')'))),
+            "stderr and --json disagree: {printed} against {x}"
+        );
         assert!(!x.contains('\n'), "{x}");
     }
     w
@@ -168,8 +195,14 @@ fn spectrum_file_names_its_convention() {
     assert!(
         w[0].contains("falling.csv")
             && w[0].contains("`persson` convention")
-            && w[0].contains("--psd-convention surface-topography"),
+            && w[0].contains("the `surface-topography` convention"),
         "{w:?}"
+    );
+    assert_eq!(v["warnings"][0]["kind"], "psd_convention");
+    assert_eq!(v["warnings"][0]["convention"], "persson");
+    assert!(
+        lines[0].ends_with("(--psd-convention surface-topography)"),
+        "{lines:?}"
     );
     let (st, _) = run(&format!(
         "area --psd {file} --psd-convention surface-topography --contact-modulus 1e9 --pressure 1e6"
@@ -198,10 +231,18 @@ fn spectrum_file_names_its_convention() {
     let w = same(&b, &lines);
     assert!(w[0].contains("`persson` convention"), "{w:?}");
     let (sc, lines) = run(&format!("run {}", scene.display()));
-    let w = same(&sc, &lines);
+    let w = warnings(&sc);
     assert!(
         w.len() == 1 && w[0].contains("`persson` convention"),
         "{w:?}"
+    );
+    // a scene's warning names the scene's key, not a flag
+    assert_eq!(
+        lines,
+        [format!(
+            "persson: warning: {} (spectrum.convention: \"surface-topography\")",
+            w[0]
+        )]
     );
     assert_eq!(sc["area"]["points"], v_area(&file)["points"]);
 }
@@ -222,8 +263,14 @@ fn rising_spectrum_file_suggests_a_surface() {
     let w = same(&v, &lines);
     assert!(
         w.iter()
-            .any(|x| x.contains("does not fall with q") && x.contains("--surface")),
+            .any(|x| x.contains("does not fall with q") && x.contains("height map")),
         "{w:?}"
+    );
+    assert!(
+        lines
+            .iter()
+            .any(|l| l.contains("does not fall with q") && l.ends_with("(--surface FILE)")),
+        "{lines:?}"
     );
 }
 

@@ -5,15 +5,23 @@
 //! to the modulus, a slope outside the small-slope theory, a magnification
 //! beyond the band), or an assumption the computation made that the user
 //! should know of (the normalisation of a spectrum file). Each is one line of
-//! text ([`std::fmt::Display`]) and serialises as that string; the `persson`
-//! binary prints each on stderr as `persson: warning: <text>` and lists them
-//! in the `"warnings"` array of its `--json` output.
+//! text ([`std::fmt::Display`]) that names the input (the spectrum's
+//! convention, the grid, the quantity), never a command-line flag: the same
+//! text reaches a Python user, and the `persson` binary adds its flag when it
+//! prints the line on stderr (`persson: warning: <text>`).
+//!
+//! In JSON each warning is an object with its kind (a label from a closed
+//! set, to filter on), its text and its typed fields:
+//! ```text
+//! {"kind": "steep_slope", "rms_slope": 1.2e5, "message": "rms slope h'_rms = 120000 is above 1: …"}
+//! ```
 
 use std::fmt;
 use std::path::PathBuf;
 
 use serde::{Serialize, Serializer};
 
+use crate::scene::ConventionName;
 use crate::table::number;
 
 /// σ0 above this fraction of E* is warned of ([`Warning::HighPressure`]).
@@ -23,7 +31,11 @@ pub const HIGH_PRESSURE_RATIO: f64 = 0.1;
 pub const STEEP_SLOPE: f64 = 1.0;
 
 /// One remark on the input of a calculation; it never changes a number.
-#[derive(Debug, Clone, PartialEq)]
+///
+/// Serialised as `{"kind": …, <its fields>, "message": <its text>}`, the kind
+/// the variant's name in snake_case (`high_pressure`, `psd_convention`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(remote = "Self", tag = "kind", rename_all = "snake_case")]
 #[non_exhaustive]
 pub enum Warning {
     /// The nominal pressure σ0 is above [`HIGH_PRESSURE_RATIO`] E*: strains of
@@ -65,8 +77,8 @@ pub enum Warning {
     PsdConvention {
         /// The file.
         file: PathBuf,
-        /// The convention, spelled as on the command line.
-        convention: String,
+        /// The convention.
+        convention: ConventionName,
     },
     /// A spectrum file whose C(q) does not fall with q: perhaps a height
     /// profile given as a spectrum.
@@ -185,32 +197,7 @@ impl fmt::Display for Warning {
                 nominal_pressure,
                 contact_modulus,
                 count,
-            } => {
-                let which = if *count > 1 {
-                    format!(
-                        "{count} nominal pressures, up to σ0 = {}, are",
-                        n(*nominal_pressure)
-                    )
-                } else {
-                    format!("the nominal pressure σ0 = {} is", n(*nominal_pressure))
-                };
-                if *nominal_pressure > *contact_modulus {
-                    write!(
-                        f,
-                        "{which} above E* = {} itself: are E (or E*) and σ0 in one unit? \
-                         (E typed in MPa or GPa, σ0 in Pa?)",
-                        n(*contact_modulus)
-                    )
-                } else {
-                    write!(
-                        f,
-                        "{which} above 0.1 E* = {} (E* = {}): strains of order one, outside \
-                         the small-strain theory (or E and σ0 in different units?)",
-                        n(HIGH_PRESSURE_RATIO * *contact_modulus),
-                        n(*contact_modulus)
-                    )
-                }
-            }
+            } => high_pressure(f, *nominal_pressure, *contact_modulus, *count),
             Warning::SteepSlope { rms_slope } => write!(
                 f,
                 "rms slope h'_rms = {} is above 1: outside the small-slope theory \
@@ -232,22 +219,24 @@ impl fmt::Display for Warning {
             } => write!(
                 f,
                 "the {grid}² surface is band-limited by its grid: its rms slope is {} against \
-                 the spectrum's {} (a finer --grid, or a smaller q_s, resolves it)",
+                 the spectrum's {} (a finer grid, or a smaller q_s, resolves it)",
                 n(*surface_rms_slope),
                 n(*rms_slope)
             ),
             Warning::PsdConvention { file, convention } => {
-                let hint = if convention == "persson" {
-                    "; a SurfaceTopography or contact.engineering PSD needs \
-                     --psd-convention surface-topography (scene: \"convention\")"
-                } else {
-                    ""
-                };
                 write!(
                     f,
-                    "spectrum file {} read in the `{convention}` convention{hint}",
+                    "spectrum file {} read in the `{convention}` convention",
                     file.display()
-                )
+                )?;
+                if *convention == ConventionName::Persson {
+                    write!(
+                        f,
+                        "; a SurfaceTopography or contact.engineering PSD needs the \
+                         `surface-topography` convention"
+                    )?;
+                }
+                Ok(())
             }
             Warning::RisingSpectrum {
                 file,
@@ -256,7 +245,8 @@ impl fmt::Display for Warning {
             } => write!(
                 f,
                 "C(q) of {} does not fall with q (C = {} at the first q, {} at the last): \
-                 is it a height map or profile? give a measured surface as --surface FILE",
+                 is it a height map or profile? a measured surface is read as a height map, \
+                 not as a spectrum",
                 file.display(),
                 n(*c_first),
                 n(*c_last)
@@ -330,9 +320,78 @@ impl fmt::Display for Warning {
     }
 }
 
+/// The text of [`Warning::HighPressure`]: a unit slip when σ0 exceeds E*
+/// itself, strains of order one above 0.1 E*.
+fn high_pressure(
+    f: &mut fmt::Formatter<'_>,
+    nominal_pressure: f64,
+    contact_modulus: f64,
+    count: usize,
+) -> fmt::Result {
+    let n = |v: f64| number(v, 6);
+    let which = if count > 1 {
+        format!(
+            "{count} nominal pressures, up to σ0 = {}, are",
+            n(nominal_pressure)
+        )
+    } else {
+        format!("the nominal pressure σ0 = {} is", n(nominal_pressure))
+    };
+    if nominal_pressure > contact_modulus {
+        write!(
+            f,
+            "{which} above E* = {} itself: are E (or E*) and σ0 in one unit? \
+             (E typed in MPa or GPa, σ0 in Pa?)",
+            n(contact_modulus)
+        )
+    } else {
+        write!(
+            f,
+            "{which} above 0.1 E* = {} (E* = {}): strains of order one, outside \
+             the small-strain theory (or E and σ0 in different units?)",
+            n(HIGH_PRESSURE_RATIO * contact_modulus),
+            n(contact_modulus)
+        )
+    }
+}
+
+impl Warning {
+    /// The kind of the warning, as in its JSON (`high_pressure`, `steep_slope`,
+    /// `zeta_beyond_band`, `band_limited`, `psd_convention`,
+    /// `rising_spectrum`, `clipped_band`, `map_not_periodic`, `resampled`,
+    /// `hurst_not_fitted`, `hurst_out_of_range`, `bins_left_out`).
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Warning::HighPressure { .. } => "high_pressure",
+            Warning::SteepSlope { .. } => "steep_slope",
+            Warning::ZetaBeyondBand { .. } => "zeta_beyond_band",
+            Warning::BandLimited { .. } => "band_limited",
+            Warning::PsdConvention { .. } => "psd_convention",
+            Warning::RisingSpectrum { .. } => "rising_spectrum",
+            Warning::ClippedBand { .. } => "clipped_band",
+            Warning::MapNotPeriodic => "map_not_periodic",
+            Warning::Resampled { .. } => "resampled",
+            Warning::HurstNotFitted { .. } => "hurst_not_fitted",
+            Warning::HurstOutOfRange { .. } => "hurst_out_of_range",
+            Warning::BinsLeftOut { .. } => "bins_left_out",
+        }
+    }
+}
+
 impl Serialize for Warning {
+    /// `{"kind": …, <the variant's fields>, "message": <the text>}`.
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
-        serializer.collect_str(self)
+        #[derive(Serialize)]
+        struct Tagged<'a> {
+            #[serde(flatten, with = "Warning")]
+            warning: &'a Warning,
+            message: String,
+        }
+        Tagged {
+            warning: self,
+            message: self.to_string(),
+        }
+        .serialize(serializer)
     }
 }
 
@@ -363,7 +422,7 @@ pub fn of_rough(r: &persson::bem::rough::RoughReport) -> Vec<Warning> {
         &mut w,
         Warning::high_pressure(&pressures, r.contact_modulus),
     );
-    if let persson::bem::rough::SurfaceSource::Synthesised { spectrum, .. } = &r.surface {
+    if let persson::bem::rough::SurfaceOrigin::Synthesised { spectrum, .. } = &r.surface {
         push(
             &mut w,
             Warning::band_limited(r.grid, r.surface_rms_slope, spectrum.rms_slope),
@@ -428,12 +487,46 @@ mod tests {
     use super::*;
 
     #[test]
-    fn one_line_and_serialised_as_its_text() {
+    fn one_line_and_serialised_with_its_kind() {
         let w = Warning::high_pressure(&[1e5, 1e6], 1.333e6).unwrap();
         let text = w.to_string();
         assert!(!text.contains('\n'), "{text}");
         assert!(text.contains("1e6") && text.contains("1.333e6"), "{text}");
-        assert_eq!(serde_json::to_value(&w).unwrap(), serde_json::json!(text));
+        assert_eq!(
+            serde_json::to_value(&w).unwrap(),
+            serde_json::json!({
+                "kind": "high_pressure",
+                "nominal_pressure": 1e6,
+                "contact_modulus": 1.333e6,
+                "count": 1,
+                "message": text,
+            })
+        );
+        assert_eq!(w.kind(), "high_pressure");
+        let psd = Warning::PsdConvention {
+            file: "psd.csv".into(),
+            convention: ConventionName::Persson,
+        };
+        let v = serde_json::to_value(&psd).unwrap();
+        assert_eq!(v["kind"], "psd_convention");
+        assert_eq!(v["convention"], "persson");
+        assert_eq!(v["file"], "psd.csv");
+        // the text names the input, never a command-line flag
+        for w in [
+            psd,
+            Warning::band_limited(32, 0.01, 0.5).unwrap(),
+            Warning::RisingSpectrum {
+                file: "c.csv".into(),
+                c_first: 1.0,
+                c_last: 2.0,
+            },
+        ] {
+            assert!(!w.to_string().contains("--"), "{w}");
+        }
+        assert_eq!(
+            serde_json::to_value(Warning::MapNotPeriodic).unwrap()["kind"],
+            "map_not_periodic"
+        );
         assert!(Warning::high_pressure(&[1e6], 1e7).is_none()); // exactly 0.1 E*
         assert!(Warning::steep_slope(1.0).is_none());
         assert!(Warning::zeta_beyond_band(&[1e4], 1e4).is_none());

@@ -64,7 +64,7 @@ fn kappa_fit_on_a_linear_law() {
     let a: Vec<f64> = p.iter().map(|&x| 2.0 * x / (e * s)).collect();
     let k = fit_kappa(&p, &a, e, s, 0.1).unwrap();
     assert!((k.kappa - 2.0).abs() < EXACT && k.standard_error.unwrap() < EXACT);
-    assert_eq!(k.nominal_pressure_range, (1e-3, 1e-2));
+    assert_eq!(k.nominal_pressure_range, [1e-3, 1e-2]);
     // one point: κ exact, no standard error to estimate
     let one = fit_kappa(&p[..1], &a[..1], e, s, 0.1).unwrap();
     assert!((one.kappa - 2.0).abs() < EXACT);

@@ -2,7 +2,7 @@
 
 use persson_studies::scene::{run, AreaOutput, TheoryName};
 
-use super::args::{measured_surface, pressures, MaterialArgs, MeasuredArgs, SpectrumArgs};
+use super::args::{measured_contact, pressures, MaterialArgs, MeasuredArgs, SpectrumArgs};
 use super::output::{print_warned, Format};
 
 /// Arguments of `persson area`.
@@ -15,10 +15,10 @@ pub struct Args {
     #[command(flatten)]
     material: MaterialArgs,
     /// Nominal (mean) pressure σ0, same unit as E*; repeatable or comma-separated.
-    #[arg(long, value_delimiter = ',', allow_negative_numbers = true, value_parser = super::args::number)]
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = super::number::number)]
     pressure: Vec<f64>,
     /// Magnification ζ (default q_s/q_l, full magnification).
-    #[arg(long, allow_negative_numbers = true, value_parser = super::args::number)]
+    #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
     zeta: Option<f64>,
     #[command(flatten)]
     theory: TheoryArgs,
@@ -36,15 +36,15 @@ pub struct TheoryArgs {
     #[arg(long, value_enum, default_value_t = TheoryName::Original)]
     pub theory: TheoryName,
     /// γ of the corrected theory (yang-persson and xu: [0.001, 1]; wang-muser: [0.02, 11/9]).
-    #[arg(long, allow_negative_numbers = true, value_parser = super::args::number)]
+    #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
     pub gamma: Option<f64>,
     /// Absolute tolerance on A/A0 of the corrected theories' solver.
     #[arg(
         long,
         alias = "theory-tolerance",
         default_value = "1e-12",
-        allow_negative_numbers = true,
-        value_parser = super::args::number,
+        allow_hyphen_values = true,
+        value_parser = super::number::number,
     )]
     pub tolerance: f64,
 }
@@ -52,7 +52,7 @@ pub struct TheoryArgs {
 /// Run `persson area`.
 pub fn run(a: Args) -> anyhow::Result<()> {
     a.plot.check()?;
-    let surface = measured_surface(&a.spectrum, &a.measured, &a.material)?;
+    let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
     let pressures = pressures(&a.pressure, a.spectrum.example)?;
     let out = AreaOutput {
         zeta: a.zeta,

@@ -5,9 +5,10 @@
 use std::path::PathBuf;
 
 use anyhow::bail;
-use persson_studies::scene::{ConventionName, MaterialSpec, SpectrumSpec, Surface, EXAMPLE};
+use persson_studies::scene::{ConventionName, MaterialSpec, RoughContact, SpectrumSpec, EXAMPLE};
 
 pub use super::measured_args::MeasuredArgs;
+use super::number::number;
 #[cfg(feature = "bem")]
 use persson::spectrum::Spectrum;
 use persson::Material;
@@ -24,29 +25,29 @@ pub mod example {
 pub struct SpectrumArgs {
     /// Use the built-in example where spectrum, modulus or pressures are not
     /// given: self-affine H = 0.8, q_l = 1e4, q_r = 1e5, q_s = 1e8 1/m, rms height
-    /// 1 µm; E* = 1 GPa; σ0 = 1e4 … 3e8 Pa.
+    /// 1 µm; E* = 1 GPa; σ0 = 1e4 … 1e8 Pa (up to 0.1 E*).
     #[arg(long)]
     pub example: bool,
     /// Hurst exponent H in (0, 1) of the self-affine spectrum.
-    #[arg(long, allow_negative_numbers = true, value_parser = number)]
+    #[arg(long, allow_hyphen_values = true, value_parser = number)]
     pub hurst: Option<f64>,
     /// Lower cut-off q_l, 1/m.
-    #[arg(long = "q-l", allow_negative_numbers = true, value_parser = number)]
+    #[arg(long = "q-l", allow_hyphen_values = true, value_parser = number)]
     pub q_l: Option<f64>,
     /// Roll-off wavevector q_r, 1/m (default: q_l, no roll-off).
-    #[arg(long = "q-r", allow_negative_numbers = true, value_parser = number)]
+    #[arg(long = "q-r", allow_hyphen_values = true, value_parser = number)]
     pub q_r: Option<f64>,
     /// Upper cut-off q_s, 1/m.
-    #[arg(long = "q-s", allow_negative_numbers = true, value_parser = number)]
+    #[arg(long = "q-s", allow_hyphen_values = true, value_parser = number)]
     pub q_s: Option<f64>,
     /// Amplitude as rms height over [q_l, q_s], m.
-    #[arg(long, group = "amplitude", allow_negative_numbers = true, value_parser = number)]
+    #[arg(long, group = "amplitude", allow_hyphen_values = true, value_parser = number)]
     pub rms_height: Option<f64>,
     /// Amplitude as rms slope over [q_l, q_s].
-    #[arg(long, group = "amplitude", allow_negative_numbers = true, value_parser = number)]
+    #[arg(long, group = "amplitude", allow_hyphen_values = true, value_parser = number)]
     pub rms_slope: Option<f64>,
     /// Amplitude as C(q_r), m^4.
-    #[arg(long = "c-r", group = "amplitude", allow_negative_numbers = true, value_parser = number)]
+    #[arg(long = "c-r", group = "amplitude", allow_hyphen_values = true, value_parser = number)]
     pub c_r: Option<f64>,
     /// Tabulated spectrum: CSV with columns q (1/m) and C (m^4, Persson's normalisation
     /// unless --psd-convention says otherwise).
@@ -56,7 +57,7 @@ pub struct SpectrumArgs {
     #[arg(long, value_enum, default_value_t = ConventionName::Persson, requires = "psd")]
     pub psd_convention: ConventionName,
     /// Side L (m) of the periodic surface, for --psd-convention grid.
-    #[arg(long, requires = "psd", allow_negative_numbers = true, value_parser = number)]
+    #[arg(long, requires = "psd", allow_hyphen_values = true, value_parser = number)]
     pub psd_size: Option<f64>,
 }
 
@@ -157,14 +158,14 @@ impl SpectrumArgs {
     }
 
     /// The warning of a `--psd` file (the convention it was read in), for the
-    /// commands that build the spectrum without a [`Surface`].
+    /// commands that build the spectrum without a [`RoughContact`].
     #[cfg_attr(not(feature = "bem"), allow(dead_code))]
     pub fn file_warnings(&self) -> Vec<persson_studies::Warning> {
         self.psd
             .iter()
             .map(|file| persson_studies::Warning::PsdConvention {
                 file: file.clone(),
-                convention: self.psd_convention.to_string(),
+                convention: self.psd_convention,
             })
             .collect()
     }
@@ -187,19 +188,19 @@ impl SpectrumArgs {
 #[derive(clap::Args, Debug, Clone, Default)]
 pub struct MaterialArgs {
     /// Contact modulus E*, 1/E* = Σ (1 − ν²)/E (same unit as the pressures).
-    #[arg(long, alias = "modulus", allow_negative_numbers = true, value_parser = number, conflicts_with_all = ["young", "poisson"])]
+    #[arg(long, alias = "modulus", allow_hyphen_values = true, value_parser = number, conflicts_with_all = ["young", "poisson"])]
     pub contact_modulus: Option<f64>,
     /// Young's modulus E of the elastic body (against a rigid one unless --young2).
-    #[arg(long, requires = "poisson", allow_negative_numbers = true, value_parser = number)]
+    #[arg(long, requires = "poisson", allow_hyphen_values = true, value_parser = number)]
     pub young: Option<f64>,
     /// Poisson ratio ν of the body.
-    #[arg(long, requires = "young", allow_negative_numbers = true, value_parser = number)]
+    #[arg(long, requires = "young", allow_hyphen_values = true, value_parser = number)]
     pub poisson: Option<f64>,
     /// Young's modulus of the second body.
-    #[arg(long, requires_all = ["young", "poisson2"], allow_negative_numbers = true, value_parser = number)]
+    #[arg(long, requires_all = ["young", "poisson2"], allow_hyphen_values = true, value_parser = number)]
     pub young2: Option<f64>,
     /// Poisson ratio of the second body.
-    #[arg(long, requires = "young2", allow_negative_numbers = true, value_parser = number)]
+    #[arg(long, requires = "young2", allow_hyphen_values = true, value_parser = number)]
     pub poisson2: Option<f64>,
 }
 
@@ -229,20 +230,20 @@ impl MaterialArgs {
     }
 }
 
-/// The spectrum and the material of the flags, as the library's [`Surface`].
-pub fn surface(s: &SpectrumArgs, m: &MaterialArgs) -> anyhow::Result<Surface> {
-    measured_surface(s, &MeasuredArgs::default(), m)
+/// The spectrum and the material of the flags, as the library's [`RoughContact`].
+pub fn contact(s: &SpectrumArgs, m: &MaterialArgs) -> anyhow::Result<RoughContact> {
+    measured_contact(s, &MeasuredArgs::default(), m)
 }
 
-/// As [`surface`], the spectrum from the measured surface if `--surface` is given.
-pub fn measured_surface(
+/// As [`contact`], the spectrum from the measured surface if `--surface` is given.
+pub fn measured_contact(
     s: &SpectrumArgs,
     h: &MeasuredArgs,
     m: &MaterialArgs,
-) -> anyhow::Result<Surface> {
+) -> anyhow::Result<RoughContact> {
     let spectrum = spectrum_spec(s, h)?;
     let material = m.spec(s.example)?;
-    let mut surface = Surface::new(&spectrum, &material).map_err(|e| s.psd_hint(e))?;
+    let mut surface = RoughContact::new(&spectrum, &material).map_err(|e| s.psd_hint(e))?;
     if s.is_example() && surface.description.is_none() {
         surface.description = Some(format!("{EXAMPLE} (the given flags replace parts of it)"));
     }
@@ -303,54 +304,4 @@ fn looks_like_height_map(path: &std::path::Path) -> bool {
                 .count()
                 > 2
         })
-}
-
-/// Units a number may have been typed with, and their factor to SI.
-const UNITS: [(&str, f64, &str); 14] = [
-    ("GPa", 1e9, "Pa"),
-    ("MPa", 1e6, "Pa"),
-    ("kPa", 1e3, "Pa"),
-    ("Pa", 1.0, "Pa"),
-    ("nm", 1e-9, "m"),
-    ("µm", 1e-6, "m"),
-    ("um", 1e-6, "m"),
-    ("mm", 1e-3, "m"),
-    ("cm", 1e-2, "m"),
-    ("m", 1.0, "m"),
-    ("kN", 1e3, "N"),
-    ("mN", 1e-3, "N"),
-    ("N", 1.0, "N"),
-    ("%", 1e-2, "(a fraction)"),
-];
-
-/// A number flag's value parser: a plain number (SI units: Pa, m, N, 1/m);
-/// a number with a unit is refused with the plain SI number it stands for.
-pub fn number(s: &str) -> Result<f64, String> {
-    let t = s.trim();
-    if let Ok(v) = t.parse::<f64>() {
-        return Ok(v);
-    }
-    for (unit, factor, si) in UNITS {
-        if let Some(n) = t.strip_suffix(unit).map(str::trim) {
-            if n.parse::<f64>().is_ok() {
-                // The number as typed, times the unit's power of ten.
-                let exp = factor.log10().round() as i32;
-                let (m, e0) = match n.split_once(['e', 'E']) {
-                    Some((m, e)) => (m, e.parse::<i32>().unwrap_or(0)),
-                    None => (n, 0),
-                };
-                let plain = match exp + e0 {
-                    0 => m.to_string(),
-                    e => format!("{m}e{e}"),
-                };
-                return Err(format!(
-                    "`{s}` is not a plain number: give SI numbers without units \
-                     ({plain} for {s}, in {si})"
-                ));
-            }
-        }
-    }
-    Err(format!(
-        "`{s}` is not a number: give a plain SI number (Pa, m, N, 1/m), e.g. 1e6, 2.5e-7"
-    ))
 }

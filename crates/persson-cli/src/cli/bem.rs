@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 
 use anyhow::Context;
 use persson::bem::hertz::{self, HertzCase};
-use persson::bem::rough::{self, Observer, RoughOptions, RoughProgress, SurfaceSource};
+use persson::bem::rough::{self, Observer, RoughOptions, RoughProgress, SurfaceOrigin};
 use persson::bem::surface::synthesize;
 use persson::bem::{check_memory, Options, Solution, MIN_GRID};
 use persson::error::check;
@@ -14,7 +14,7 @@ use persson_studies::table::Tabulate;
 
 pub use super::bem_args::{Args, SolverArgs};
 use super::bem_args::{Cmd, HertzArgs, RoughArgs};
-use super::output::{print, print_warned};
+use super::output::{print, print_narrowed};
 use super::progress::Progress;
 
 /// Run `persson bem`.
@@ -50,7 +50,7 @@ fn plastic_disc(h: &HertzArgs, y: f64) -> anyhow::Result<()> {
         bar.update(k, &|| format!("Hertz σY {}²", grids[k]), it)
     });
     bar.finish();
-    print(&r?, &h.format)
+    print_narrowed(&r?, &[], &h.format, h.wide)
 }
 
 fn hertz_case(h: &HertzArgs, grid: usize) -> HertzCase {
@@ -114,7 +114,7 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
         map.size = a.size.map(persson_studies::scene::Sides::One);
         (
             map.bem_surface(a.boundary)?,
-            SurfaceSource::height_map(path),
+            SurfaceOrigin::height_map(path),
         )
     } else {
         let n = a
@@ -127,7 +127,7 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
             a.size.unwrap_or(std::f64::consts::TAU / spectrum.q_min()),
         )?;
         let s = synthesize(spectrum.as_ref(), n, size, a.seed)?;
-        (s, SurfaceSource::synthesised(spectrum.as_ref(), a.seed)?)
+        (s, SurfaceOrigin::synthesised(spectrum.as_ref(), a.seed)?)
     };
     if let Some(path) = &a.surface_out {
         npy::write(path, surface.n, surface.n, &surface.heights)?;
@@ -170,7 +170,7 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
     }
     let mut warnings = a.spectrum.file_warnings();
     warnings.extend(persson_studies::warning::of_rough(&report));
-    print_warned(&report, &warnings, &a.format)
+    print_narrowed(&report, &warnings, &a.format, a.wide)
 }
 
 /// `dir/name.ext` → `dir/name_k.ext` when `k` is given.

@@ -27,10 +27,10 @@ pub enum Cmd {
 #[derive(clap::Args, Debug, Clone)]
 pub struct SolverArgs {
     /// Relative tolerance ε of the Polonsky–Keer solver (pressure-weighted gap over the rms height).
-    #[arg(long, default_value = "1e-10", allow_negative_numbers = true)]
+    #[arg(long, default_value = "1e-10", allow_hyphen_values = true, value_parser = super::number::number)]
     pub tolerance: f64,
     /// Maximum number of iterations per solve.
-    #[arg(long, default_value = "10000")]
+    #[arg(long, default_value = "10000", allow_hyphen_values = true, value_parser = super::number::count)]
     pub max_iterations: usize,
 }
 
@@ -51,34 +51,37 @@ impl SolverArgs {
 pub struct HertzArgs {
     /// Grid side N (nodes per side), at least 8; with --yield-stress a list
     /// (comma-separated or repeated) for the plastic disc's convergence.
-    #[arg(long, value_delimiter = ',', default_value = "256")]
+    #[arg(long, value_delimiter = ',', default_value = "256", allow_hyphen_values = true, value_parser = super::number::count)]
     pub grid: Vec<usize>,
     /// Boundary condition of the elastic half-space: free (an isolated contact, zero-padded to 2N) or periodic.
     #[arg(long, default_value = "free")]
     pub boundary: Boundary,
     /// Side L of the square domain.
-    #[arg(long, default_value = "1", allow_negative_numbers = true)]
+    #[arg(long, default_value = "1", allow_hyphen_values = true, value_parser = super::number::number)]
     pub size: f64,
     /// Ball radius R (unit of L).
-    #[arg(long, default_value = "1", allow_negative_numbers = true)]
+    #[arg(long, default_value = "1", allow_hyphen_values = true, value_parser = super::number::number)]
     pub radius: f64,
     /// Contact modulus E*.
     #[arg(
         long,
         alias = "modulus",
         default_value = "1",
-        allow_negative_numbers = true
-    )]
+        allow_hyphen_values = true, value_parser = super::number::number)]
     pub contact_modulus: f64,
     /// Hertz contact radius a that sets the load (default 0.1 L).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
     pub contact_radius: Option<f64>,
     /// Yield stress σY (unit of E*, below the Hertz peak pressure p₀ = 2E*a/(πR)
     /// for a plastic zone): report the plastic disc's radius per grid instead of η.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
     pub yield_stress: Option<f64>,
     #[command(flatten)]
     pub solver: SolverArgs,
+    /// Text tables with every column (default: each fits 100 characters, the
+    /// solver's columns of a wider table left out and named).
+    #[arg(long)]
+    pub wide: bool,
     #[command(flatten)]
     pub format: Format,
 }
@@ -89,13 +92,13 @@ pub struct RoughArgs {
     #[arg(long, requires = "size")]
     pub surface: Option<PathBuf>,
     /// Physical side L of the surface (default with a spectrum: 2π/q_l).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
     pub size: Option<f64>,
     /// Grid side N for a synthesised surface.
-    #[arg(long, conflicts_with = "surface")]
+    #[arg(long, conflicts_with = "surface", allow_hyphen_values = true, value_parser = super::number::count)]
     pub grid: Option<usize>,
     /// Seed of the synthesised surface (Pcg64Mcg, value-stable).
-    #[arg(long, default_value = "1", conflicts_with = "surface")]
+    #[arg(long, default_value = "1", conflicts_with = "surface", allow_hyphen_values = true, value_parser = super::number::seed)]
     pub seed: u64,
     #[command(flatten)]
     pub spectrum: SpectrumArgs,
@@ -105,9 +108,8 @@ pub struct RoughArgs {
     #[arg(
         long,
         value_delimiter = ',',
-        allow_negative_numbers = true,
-        required_unless_present = "example"
-    )]
+        allow_hyphen_values = true,
+        required_unless_present = "example", value_parser = super::number::number)]
     pub pressure: Vec<f64>,
     /// Boundary condition of the elastic half-space: periodic (the grid is one period) or free.
     #[arg(long, default_value = "periodic")]
@@ -124,20 +126,24 @@ pub struct RoughArgs {
     #[arg(long)]
     pub histogram: Option<PathBuf>,
     /// Number of histogram bins.
-    #[arg(long, default_value = "50")]
+    #[arg(long, default_value_t = persson_studies::validation::DEFAULT_BINS, allow_hyphen_values = true, value_parser = super::number::count)]
     pub bins: usize,
     /// Write the (synthesised or read) surface heights as .npy.
     #[arg(long)]
     pub surface_out: Option<PathBuf>,
     /// Yield stress σY (hardness, unit of the pressure): pressures are bounded by
     /// 0 ≤ p ≤ σY and each point reports the elastic and plastic fractions.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
     pub yield_stress: Option<f64>,
     #[command(flatten)]
     pub solver: SolverArgs,
-    /// Also draw the last pressure's map (plastic nodes in red with --yield-stress)
-    /// and its histogram P(σ) (the plastic δ-peak at σY as a labelled bar) into
-    /// this file (.svg or .png).
+    /// Text tables with every column (default: each fits 100 characters, the
+    /// solver's columns of a wider table left out and named).
+    #[arg(long)]
+    pub wide: bool,
+    /// Also draw the pressure map of the load in partial contact whose A/A0 is
+    /// nearest 0.1 (plastic nodes in red with --yield-stress) and its histogram
+    /// P(σ) (the plastic δ-peak at σY as a labelled bar) into this file (.svg or .png).
     #[arg(long, value_name = "FILE.svg|png")]
     pub plot: Option<PathBuf>,
     #[command(flatten)]

@@ -12,7 +12,7 @@ use persson_studies::validation::{
 
 pub use super::compare_args::Args;
 use super::compare_args::{BemArgs, KappaArgs, MainArgs, Study};
-use super::output::print_warned;
+use super::output::{print_narrowed, print_warned};
 use super::progress::Progress;
 use persson_studies::Warning;
 
@@ -69,7 +69,10 @@ fn compare(a: &MainArgs) -> anyhow::Result<()> {
         anyhow::bail!("{flag} is not used with --surface: the map sets the grid");
     }
     let (spectrum, described) = match &map {
-        Some(m) => SpectrumSpec::HeightMap(m.clone()).build_described()?,
+        Some(m) => {
+            let built = SpectrumSpec::HeightMap(m.clone()).build_described()?;
+            (built.value, built.description)
+        }
         None => (a.spectrum.build()?, None),
     };
     let mut config = ComparisonConfig::new(a.material.build(a.spectrum.example)?.contact_modulus());
@@ -84,7 +87,6 @@ fn compare(a: &MainArgs) -> anyhow::Result<()> {
         .transpose()?;
     config.histogram_pressure = a.histogram_pressure;
     config.bins = a.bins;
-    config.wide = a.wide;
     let mut warnings = a.spectrum.file_warnings();
     let report = match &map {
         Some(m) => {
@@ -121,7 +123,7 @@ fn compare(a: &MainArgs) -> anyhow::Result<()> {
         }
     };
     super::compare_plot::comparison(a, &report)?;
-    print_warned(&report, &warnings, &a.format)
+    print_narrowed(&report, &warnings, &a.format, a.wide)
 }
 
 fn kappa_study(a: &KappaArgs) -> anyhow::Result<()> {

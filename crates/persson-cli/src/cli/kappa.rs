@@ -2,7 +2,7 @@
 
 use persson_studies::scene::run;
 
-use super::args::{pressures, surface, MaterialArgs, SpectrumArgs};
+use super::args::{contact, pressures, MaterialArgs, SpectrumArgs};
 use super::output::{print_warned, Format};
 
 /// Arguments of `persson kappa`.
@@ -13,7 +13,7 @@ pub struct Args {
     #[command(flatten)]
     material: MaterialArgs,
     /// Nominal pressures: with a spectrum and material, print the linear contact fractions.
-    #[arg(long, value_delimiter = ',', allow_negative_numbers = true, value_parser = super::args::number)]
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = super::number::number)]
     pressure: Vec<f64>,
     #[command(flatten)]
     format: Format,
@@ -22,7 +22,7 @@ pub struct Args {
 /// Run `persson kappa`.
 pub fn run(a: Args) -> anyhow::Result<()> {
     let report = if a.spectrum.is_given() {
-        let surface = surface(&a.spectrum, &a.material)?;
+        let surface = contact(&a.spectrum, &a.material)?;
         let pressures = pressures(&a.pressure, a.spectrum.example)?;
         run::kappa(Some((&surface, &pressures)))?
     } else {

@@ -3,7 +3,7 @@
 
 use persson_studies::scene::{run, MagnificationOutput};
 
-use super::args::{measured_surface, MaterialArgs, MeasuredArgs, SpectrumArgs};
+use super::args::{measured_contact, MaterialArgs, MeasuredArgs, SpectrumArgs};
 use super::output::{print_warned, Format};
 
 /// Arguments of `persson magnification`.
@@ -16,13 +16,13 @@ pub struct Args {
     #[command(flatten)]
     material: MaterialArgs,
     /// Nominal (mean) pressure σ0, same unit as E* (with --example: 1e7).
-    #[arg(long, allow_negative_numbers = true, value_parser = super::args::number)]
+    #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
     pressure: Option<f64>,
     /// Magnifications ζ ≥ 1 (comma-separated; default: --points values from 1 to q_s/q_l).
-    #[arg(long, value_delimiter = ',', allow_negative_numbers = true, value_parser = super::args::number)]
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = super::number::number)]
     zeta: Vec<f64>,
     /// Number of log-spaced magnifications when --zeta is not given.
-    #[arg(long, default_value_t = 21)]
+    #[arg(long, default_value_t = 21, allow_hyphen_values = true, value_parser = super::number::count)]
     points: usize,
     #[command(flatten)]
     format: Format,
@@ -40,7 +40,7 @@ pub fn run(a: Args) -> anyhow::Result<()> {
         plot: a.plot_g.clone(),
     };
     plot_g.check()?;
-    let surface = measured_surface(&a.spectrum, &a.measured, &a.material)?;
+    let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
     let nominal_pressure = match (a.pressure, a.spectrum.example) {
         (Some(p), _) => p,
         (None, true) => super::args::example::PRESSURES[3],

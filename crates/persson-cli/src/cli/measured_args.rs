@@ -22,7 +22,7 @@ pub struct MeasuredArgs {
         requires = "surface",
         conflicts_with = "size",
         allow_hyphen_values = true,
-        value_parser = super::args::number,
+        value_parser = super::number::number,
     )]
     pub pixel_size: Option<f64>,
     /// Physical size LX[,LY] of the --surface map, m (files that store it need none; a
@@ -33,7 +33,7 @@ pub struct MeasuredArgs {
         requires = "surface",
         value_delimiter = ',',
         allow_hyphen_values = true,
-        value_parser = super::args::number,
+        value_parser = super::number::number,
     )]
     pub size: Vec<f64>,
     /// Least-squares detrending of the --surface (default: plane, none if --periodic).

@@ -16,6 +16,7 @@ mod compare_plot;
 mod kappa;
 mod magnification;
 mod measured_args;
+mod number;
 mod output;
 mod plot;
 #[cfg(feature = "bem")]

@@ -4,7 +4,7 @@
 use std::io::Write;
 
 use anyhow::Context;
-use persson_studies::table::Tabulate;
+use persson_studies::table::{narrow, Tabulate};
 use persson_studies::warning::Warned;
 use persson_studies::Warning;
 use serde::Serialize;
@@ -20,6 +20,52 @@ pub struct Format {
     pub csv: bool,
 }
 
+/// Where the input of a calculation was given: on the command line or in a
+/// scene file. A warning's text names the input; [`hint`] adds how it is
+/// spelled here.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Source {
+    /// Flags of a subcommand.
+    Flags,
+    /// A scene file (`persson run`).
+    Scene,
+}
+
+/// How the input a warning suggests changing is spelled on the command line
+/// or in a scene file, if the warning suggests a change.
+pub fn hint(w: &Warning, source: Source) -> Option<&'static str> {
+    use persson_studies::scene::ConventionName;
+    match (w, source) {
+        (Warning::BandLimited { .. }, Source::Flags) => Some("--grid"),
+        (Warning::BandLimited { .. }, Source::Scene) => Some("outputs.bem.grid"),
+        (
+            Warning::PsdConvention {
+                convention: ConventionName::Persson,
+                ..
+            },
+            Source::Flags,
+        ) => Some("--psd-convention surface-topography"),
+        (
+            Warning::PsdConvention {
+                convention: ConventionName::Persson,
+                ..
+            },
+            Source::Scene,
+        ) => Some("spectrum.convention: \"surface-topography\""),
+        (Warning::RisingSpectrum { .. }, Source::Flags) => Some("--surface FILE"),
+        (Warning::RisingSpectrum { .. }, Source::Scene) => Some("spectrum.kind: \"height_map\""),
+        _ => None,
+    }
+}
+
+/// Print one warning on stderr: `persson: warning: <text> (<hint>)`.
+pub fn print_warning(w: &Warning, source: Source) {
+    match hint(w, source) {
+        Some(h) => eprintln!("persson: warning: {w} ({h})"),
+        None => eprintln!("persson: warning: {w}"),
+    }
+}
+
 /// Print a typed report in the chosen format, without warnings (see [`print_warned`]).
 pub fn print<R: Serialize + Tabulate>(report: &R, f: &Format) -> anyhow::Result<()> {
     print_warned(report, &[], f)
@@ -33,15 +79,61 @@ pub fn print_warned<R: Serialize + Tabulate>(
     warnings: &[Warning],
     f: &Format,
 ) -> anyhow::Result<()> {
+    print_from(report, warnings, f, Source::Flags)
+}
+
+/// As [`print_warned`], the warnings' hints spelled for `source`.
+pub fn print_from<R: Serialize + Tabulate>(
+    report: &R,
+    warnings: &[Warning],
+    f: &Format,
+    source: Source,
+) -> anyhow::Result<()> {
+    print_tables(report, warnings, f, source, None)
+}
+
+/// As [`print_warned`], with text tables that fit
+/// [`persson_studies::table::TEXT_WIDTH`] characters
+/// unless `wide` ([`narrow`]: long titles wrapped, the omittable columns
+/// left out and named; CSV and JSON keep every column).
+#[cfg(feature = "bem")]
+pub fn print_narrowed<R: Serialize + Tabulate>(
+    report: &R,
+    warnings: &[Warning],
+    f: &Format,
+    wide: bool,
+) -> anyhow::Result<()> {
+    print_tables(
+        report,
+        warnings,
+        f,
+        Source::Flags,
+        (!wide).then_some(persson_studies::table::TEXT_WIDTH),
+    )
+}
+
+/// Print the warnings and the report; text tables narrowed to `width`.
+fn print_tables<R: Serialize + Tabulate>(
+    report: &R,
+    warnings: &[Warning],
+    f: &Format,
+    source: Source,
+    width: Option<usize>,
+) -> anyhow::Result<()> {
     for w in warnings {
-        eprintln!("persson: warning: {w}");
+        print_warning(w, source);
     }
     let mut out = std::io::stdout().lock();
     if f.json {
         serde_json::to_writer_pretty(&mut out, &Warned::new(report, warnings))?;
         writeln!(out)?;
     } else {
-        let tables = report.tables();
+        let mut tables = report.tables();
+        if let (Some(w), false) = (width, f.csv) {
+            for t in &mut tables {
+                narrow(t, w, "not shown (--wide shows them)");
+            }
+        }
         if f.csv {
             if let Some(main) = tables.first() {
                 write!(out, "{}", main.to_csv())?;

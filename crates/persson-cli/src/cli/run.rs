@@ -6,13 +6,14 @@ use anyhow::Context;
 use persson_studies::scene::Scene;
 use persson_studies::table::Tabulate;
 
-use super::output::{print_warned, Format};
+use super::output::{print_from, print_warning, Format, Source};
 use persson_studies::warning::Warned;
 
 /// Arguments of `persson run`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// The scene file (JSON, "schema": 1; see scenes/schema.json).
+    /// The scene file (JSON, "schema": 1; its JSON Schema is
+    /// crates/persson-studies/schema/scene.schema.json).
     scene: PathBuf,
     /// Write report.json, one CSV per table and the plots into this directory
     /// (created if missing).
@@ -77,7 +78,7 @@ pub fn run(a: Args) -> anyhow::Result<()> {
     }
     if a.csv {
         for w in &report.warnings {
-            eprintln!("persson: warning: {w}");
+            print_warning(w, Source::Scene);
         }
         return Ok(());
     }
@@ -86,13 +87,14 @@ pub fn run(a: Args) -> anyhow::Result<()> {
             println!("{text}\n");
         }
     }
-    print_warned(
+    print_from(
         &report,
         &report.warnings,
         &Format {
             json: a.json,
             csv: false,
         },
+        Source::Scene,
     )
 }
 

@@ -4,7 +4,7 @@
 
 use persson_studies::scene::{run, SeparationOutput, TheoriesOutput};
 
-use super::args::{measured_surface, pressures, MaterialArgs, MeasuredArgs, SpectrumArgs};
+use super::args::{measured_contact, pressures, MaterialArgs, MeasuredArgs, SpectrumArgs};
 use super::output::{print_warned, Format};
 
 /// Arguments of `persson separation`.
@@ -17,10 +17,10 @@ pub struct Args {
     #[command(flatten)]
     material: MaterialArgs,
     /// Nominal (mean) pressure σ0, same unit as E*; repeatable or comma-separated.
-    #[arg(long, value_delimiter = ',', allow_negative_numbers = true, value_parser = super::args::number)]
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = super::number::number)]
     pressure: Vec<f64>,
     /// Relative tolerance of the wavevector integrals.
-    #[arg(long, default_value = "1e-10", allow_negative_numbers = true, value_parser = super::args::number)]
+    #[arg(long, default_value = "1e-10", allow_hyphen_values = true, value_parser = super::number::number)]
     tolerance: f64,
     #[command(flatten)]
     format: Format,
@@ -32,7 +32,7 @@ pub struct Args {
     plot_area: Option<std::path::PathBuf>,
     /// Number of log-spaced pressures in the plots, spanning the given pressures
     /// (a single pressure σ0: σ0/100 to 100 σ0).
-    #[arg(long, default_value_t = 60)]
+    #[arg(long, default_value_t = 60, allow_hyphen_values = true, value_parser = super::number::count)]
     plot_points: usize,
 }
 
@@ -43,7 +43,7 @@ pub fn run(a: Args) -> anyhow::Result<()> {
         plot: a.plot_area.clone(),
     };
     plot_area.check()?;
-    let surface = measured_surface(&a.spectrum, &a.measured, &a.material)?;
+    let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
     let pressures = pressures(&a.pressure, a.spectrum.example)?;
     let grid = if a.plot.plot.is_some() || plot_area.plot.is_some() {
         plot_pressures(&pressures, a.plot_points)?

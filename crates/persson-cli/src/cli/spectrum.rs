@@ -17,14 +17,14 @@ pub struct Args {
     #[command(flatten)]
     measured: MeasuredArgs,
     /// Lower end of the q range for the moments (default q_l), 1/m.
-    #[arg(long, allow_negative_numbers = true, conflicts_with = "surface", value_parser = super::args::number)]
+    #[arg(long, allow_hyphen_values = true, conflicts_with = "surface", value_parser = super::number::number)]
     q_min: Option<f64>,
     /// Upper end of the q range for the moments (default q_s), 1/m; with
     /// --surface the upper end of the band (default the Nyquist wavevector π/Δ).
-    #[arg(long, allow_negative_numbers = true, value_parser = super::args::number)]
+    #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
     q_max: Option<f64>,
     /// Number of log-spaced q values in the C(q) table.
-    #[arg(long, default_value_t = 11, conflicts_with = "surface")]
+    #[arg(long, default_value_t = 11, conflicts_with = "surface", allow_hyphen_values = true, value_parser = super::number::count)]
     points: usize,
     /// Write the --surface spectrum as CSV (q, c; Persson), which --psd reads back as is.
     #[arg(long, value_name = "FILE.csv", requires = "surface")]

@@ -7,7 +7,7 @@ use persson::stress::{Start, TabulatedStart};
 use persson::Error;
 use persson_studies::scene::{run, BallSpec, CylinderSpec, StartName, StressOutput};
 
-use super::args::{measured_surface, MaterialArgs, MeasuredArgs, SpectrumArgs};
+use super::args::{measured_contact, MaterialArgs, MeasuredArgs, SpectrumArgs};
 use super::output::{print_warned, Format};
 
 /// The flags of the physical mode; `--g`, `--table`, `--yield-ratio` and
@@ -44,16 +44,16 @@ pub struct Args {
         long,
         alias = "table-tol",
         default_value = "1e-6",
-        allow_negative_numbers = true,
-        value_parser = super::args::number,
+        allow_hyphen_values = true,
+        value_parser = super::number::number,
     )]
     table_normalisation: f64,
     /// Dimensionless mode: G(ζ) (Persson, Bucher & Chiaia 2002, Eq. 2, with σ0 the
     /// nominal mean pressure).
     #[arg(
         long,
-        allow_negative_numbers = true,
-        value_parser = super::args::number,
+        allow_hyphen_values = true,
+        value_parser = super::number::number,
         conflicts_with_all = PHYSICAL
     )]
     g: Option<f64>,
@@ -61,44 +61,44 @@ pub struct Args {
     /// (absent: elastic).
     #[arg(
         long,
-        allow_negative_numbers = true,
-        value_parser = super::args::number,
+        allow_hyphen_values = true,
+        value_parser = super::number::number,
         conflicts_with_all = PHYSICAL
     )]
     yield_ratio: Option<f64>,
     /// Physical mode: a Hertz ball of radius R (m), with --load F (N).
-    #[arg(long, requires = "load", allow_negative_numbers = true, value_parser = super::args::number,
+    #[arg(long, requires = "load", allow_hyphen_values = true, value_parser = super::number::number,
           conflicts_with_all = ["cylinder_radius", "flat", "peak_pressure"])]
     ball_radius: Option<f64>,
     /// Load F on the ball, N (a cylinder takes --load-per-length, N/m).
-    #[arg(long, requires = "ball_radius", allow_negative_numbers = true, value_parser = super::args::number,
+    #[arg(long, requires = "ball_radius", allow_hyphen_values = true, value_parser = super::number::number,
           conflicts_with_all = ["cylinder_radius", "flat", "peak_pressure"])]
     load: Option<f64>,
     /// Physical mode: a Hertz cylinder of radius R (m), with --load-per-length F' (N/m).
-    #[arg(long, requires = "load_per_length", allow_negative_numbers = true, value_parser = super::args::number,
+    #[arg(long, requires = "load_per_length", allow_hyphen_values = true, value_parser = super::number::number,
           conflicts_with_all = ["flat", "peak_pressure"])]
     cylinder_radius: Option<f64>,
     /// Load per unit length F' on the cylinder, N/m (a ball takes --load, N).
-    #[arg(long, requires = "cylinder_radius", allow_negative_numbers = true, value_parser = super::args::number,
+    #[arg(long, requires = "cylinder_radius", allow_hyphen_values = true, value_parser = super::number::number,
           conflicts_with_all = ["ball_radius", "flat", "peak_pressure"])]
     load_per_length: Option<f64>,
     /// Physical mode: a flat punch (uniform start) at the nominal pressure --pressure σ0 (Pa).
     #[arg(long, requires = "pressure", conflicts_with = "peak_pressure")]
     flat: bool,
     /// Nominal pressure σ0 of the --flat punch, Pa.
-    #[arg(long, requires = "flat", allow_negative_numbers = true, value_parser = super::args::number)]
+    #[arg(long, requires = "flat", allow_hyphen_values = true, value_parser = super::number::number)]
     pressure: Option<f64>,
     /// Physical mode: the --start's peak pressure σH (Pa), instead of a ball, a
     /// cylinder or a flat punch (Persson, Bucher & Chiaia's rail–wheel: --start
     /// cylinder --peak-pressure 542e6).
-    #[arg(long, requires = "start", allow_negative_numbers = true, value_parser = super::args::number)]
+    #[arg(long, requires = "start", allow_hyphen_values = true, value_parser = super::number::number)]
     peak_pressure: Option<f64>,
     /// Physical mode: magnifications ζ ≥ 1, comma-separated (default q_s/q_l, full
     /// magnification).
-    #[arg(long, value_delimiter = ',', allow_negative_numbers = true, value_parser = super::args::number)]
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = super::number::number)]
     zeta: Vec<f64>,
     /// Physical mode: yield stress σY (Pa) above the peak pressure (absent: elastic).
-    #[arg(long, allow_negative_numbers = true, value_parser = super::args::number)]
+    #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
     yield_stress: Option<f64>,
     #[command(flatten)]
     spectrum: SpectrumArgs,
@@ -113,22 +113,22 @@ pub struct Args {
         long,
         alias = "sigma",
         value_delimiter = ',',
-        allow_negative_numbers = true,
-        value_parser = super::args::number,
+        allow_hyphen_values = true,
+        value_parser = super::number::number,
     )]
     sigma_ratio: Vec<f64>,
     /// Number of evenly spaced σ (at least 2): when --sigma-ratio is not given; in
     /// the physical mode from 0 to σY, or (elastic) to σH plus four standard
     /// deviations of the widest curve.
-    #[arg(long, default_value_t = 201)]
+    #[arg(long, default_value_t = 201, allow_hyphen_values = true, value_parser = super::number::count)]
     points: usize,
     /// Absolute tolerance of σH P and of the fractions.
     #[arg(
         long,
         alias = "tol",
         default_value = "1e-12",
-        allow_negative_numbers = true,
-        value_parser = super::args::number,
+        allow_hyphen_values = true,
+        value_parser = super::number::number,
     )]
     tolerance: f64,
     #[command(flatten)]
@@ -186,7 +186,7 @@ pub fn run(a: Args) -> anyhow::Result<()> {
 /// The physical mode: the scene's `stress` output with `zeta`, on the surface
 /// of the spectrum (or `--surface`) and material flags.
 fn physical(a: &Args) -> anyhow::Result<()> {
-    let surface = measured_surface(&a.spectrum, &a.measured, &a.material)?;
+    let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
     let (start, ball, cylinder, peak_pressure) =
         match (a.ball_radius, a.cylinder_radius, a.peak_pressure, a.start) {
             (Some(radius), ..) => (

@@ -149,7 +149,8 @@ fn font(size: f64, k: u32) -> FontDesc<'static> {
     ("sans-serif", size * k as f64).into_font()
 }
 
-/// Draws the figure on any backend at `k` times its size.
+/// Draws the figure on any backend at `k` times its size: the map, its
+/// colour bar and the histogram side by side.
 fn draw_map<DB: DrawingBackend>(
     root: DrawingArea<DB, Shift>,
     f: &MapFigure,
@@ -166,22 +167,35 @@ fn draw_map<DB: DrawingBackend>(
     let map_w = (side + px(70 + 20)).min(w / 2);
     let (map_area, rest) = root.split_horizontally(map_w);
     let (bar_area, right) = rest.split_horizontally(px(110));
-
-    // The map.
-    let (m, mean, plastic) = f.cells();
     let p_max = f
         .pressure
         .iter()
         .copied()
         .filter(|p| p.is_finite())
         .fold(0.0, f64::max);
+    // The top of the colour scale: σY, or the largest pressure.
     let top = f
         .yield_stress
         .unwrap_or(p_max)
         .max(p_max)
         .max(f64::MIN_POSITIVE);
+    draw_pressure_map(&map_area, f, k, top)?;
+    draw_colour_bar(&bar_area, f, k, top)?;
+    draw_histogram(&right, f, k, top)
+}
+
+/// The pressure map: one cell per node (or block), viridis up to `top`,
+/// no contact in grey, plastic nodes in red.
+fn draw_pressure_map<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    f: &MapFigure,
+    k: u32,
+    top: f64,
+) -> DrawResult<DB> {
+    let px = |v: u32| v * k;
+    let (m, mean, plastic) = f.cells();
     let l = f.side;
-    let mut chart = ChartBuilder::on(&map_area)
+    let mut chart = ChartBuilder::on(area)
         .margin(px(10))
         .x_label_area_size(px(45))
         .y_label_area_size(px(70))
@@ -211,9 +225,18 @@ fn draw_map<DB: DrawingBackend>(
         let (x0, y0) = (j as f64 * d, i as f64 * d);
         Rectangle::new([(x0, y0), (x0 + d, y0 + d)], colour.filled())
     }))?;
+    Ok(())
+}
 
-    // The colour bar.
-    let mut bar = ChartBuilder::on(&bar_area)
+/// The colour bar from 0 to `top`, with the plastic colour as a band at σY.
+fn draw_colour_bar<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    f: &MapFigure,
+    k: u32,
+    top: f64,
+) -> DrawResult<DB> {
+    let px = |v: u32| v * k;
+    let mut bar = ChartBuilder::on(area)
         .margin_top(px(10))
         .margin_bottom(px(55))
         .margin_right(px(5))
@@ -237,15 +260,23 @@ fn draw_map<DB: DrawingBackend>(
         )
     }))?;
     if let Some(y) = f.yield_stress {
-        // The plastic colour as a band at σY.
         let band = 0.03 * top;
         bar.draw_series(std::iter::once(Rectangle::new(
             [(0.0, (y - band).max(0.0)), (1.0, y)],
             PLASTIC.filled(),
         )))?;
     }
+    Ok(())
+}
 
-    // The histogram with the plastic peak.
+/// The histogram P(σ) with (σY) the plastic δ-peak as a full-height bar.
+fn draw_histogram<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    f: &MapFigure,
+    k: u32,
+    top: f64,
+) -> DrawResult<DB> {
+    let px = |v: u32| v * k;
     let x_max = f
         .bins
         .iter()
@@ -254,7 +285,7 @@ fn draw_map<DB: DrawingBackend>(
         .max(top);
     let d_max = f.bins.iter().map(|b| b.2).fold(0.0, f64::max);
     let y_max = if d_max > 0.0 { 1.15 * d_max } else { 1.0 };
-    let mut hist = ChartBuilder::on(&right)
+    let mut hist = ChartBuilder::on(area)
         .margin(px(10))
         .margin_left(px(30))
         .margin_right(px(20))

@@ -6,7 +6,7 @@ use persson::bem::fft::Complex64;
 
 use super::{AccuracyRow, Extent, Knob, MethodAccuracy};
 use persson::bem::fft::Fft2;
-use persson::bem::surface::{synthesize, Surface};
+use persson::bem::surface::{synthesize, GridSurface};
 use persson::bem::{hertz, Boundary, Control, Operator, Options, Solver};
 use persson::error::Result;
 use persson::spectrum::{Amplitude, SelfAffine};
@@ -145,7 +145,7 @@ fn rough_grid(extent: Extent) -> Result<MethodAccuracy> {
 
 /// The rough study's surface on the coarsest grid: L = 1, H = 0.8, rms
 /// slope 0.1 (continuum value), seed [`ROUGH_SEED`].
-fn rough_surface() -> Result<Surface> {
+fn rough_surface() -> Result<GridSurface> {
     let dq = std::f64::consts::TAU;
     let s = SelfAffine::new(dq, 2.0 * dq, 8.0 * dq, 0.8, Amplitude::RmsSlope(0.1))?;
     synthesize(&s, ROUGH_COARSE, 1.0, ROUGH_SEED)
@@ -159,7 +159,7 @@ fn rough_surface() -> Result<Surface> {
 /// ```text
 /// h_n(x) = (1/N₀²) Σ_{|k| < N₀/2} H_k e^{2πi k·x/L}
 /// ```
-fn refine(s: &Surface, n: usize) -> Result<Surface> {
+fn refine(s: &GridSurface, n: usize) -> Result<GridSurface> {
     let n0 = s.n;
     if n == n0 {
         return Ok(s.clone());
@@ -183,7 +183,7 @@ fn refine(s: &Surface, n: usize) -> Result<Surface> {
     }
     let mut heights = vec![0.0; n * n];
     f1.inverse(&mut spec1, &mut heights)?;
-    Surface::new(n, s.size, heights)
+    GridSurface::new(n, s.size, heights)
 }
 
 /// The solver's tolerance at a fixed grid (rough surface, 64², periodic):

@@ -18,7 +18,6 @@ use persson::error::Result;
 mod bem;
 mod core;
 mod stress;
-mod stress_reference;
 
 /// The accuracy knob of a method.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]

@@ -3,14 +3,16 @@
 //!
 //! Every error is measured against the mpmath values of
 //! `tests/reference/stress.json` (40 digits, `tests/reference/stress_reference.py`),
-//! compiled in as constants ([`super::stress_reference`]) so the report needs
-//! no files at run time. Densities are compared as in the accuracy policy of
+//! compiled in with `include_str!` and read with serde_json (the numbers
+//! `tests/stress.rs` reads from the same file), so the report needs no files
+//! at run time. Densities are compared as in the accuracy policy of
 //! [`persson::stress`]: absolute in 1/σH, relative where the density exceeds
 //! 1/σH; fractions absolutely.
 
-use super::stress_reference::CASES;
+use std::sync::LazyLock;
+
 use super::{case, num, time_it, AccuracyRow, Extent, Family, Knob, MethodAccuracy, StabilityCase};
-use persson::error::Result;
+use persson::error::{Error, Result};
 use persson::stress::{series_fractions, Method, Solver, Start, TabulatedStart};
 
 /// Where the references come from, for the methods' `reference`.
@@ -18,20 +20,24 @@ const REFERENCE_NAME: &str = "mpmath at 40 digits (tests/reference/stress_refere
 /// Wall-time budget per row, s (the median of repeated runs is reported).
 const TIME_BUDGET: f64 = 0.04;
 
+/// The reference file: three starts × G × σY/σH, densities on a σ grid and
+/// both fractions (`python3 tests/reference/stress_reference.py` writes it).
+const REFERENCE_JSON: &str = include_str!("../../../../tests/reference/stress.json");
+
 /// One reference case: a start, G and σY/σH, the density on a σ grid and
 /// both fractions.
-#[derive(Debug)]
+#[derive(Debug, serde::Deserialize)]
 pub(super) struct Reference {
     /// `flat`, `hertz` or `cylinder`.
-    pub(super) start: &'static str,
+    pub(super) start: String,
     /// G.
     pub(super) g: f64,
     /// σY/σH, `None` when elastic.
     pub(super) yield_ratio: Option<f64>,
     /// s = σ/σH.
-    pub(super) sigma: &'static [f64],
+    pub(super) sigma: Vec<f64>,
     /// P(s) in 1/σH.
-    pub(super) density: &'static [f64],
+    pub(super) density: Vec<f64>,
     /// A_el/A0.
     pub(super) contact_fraction: f64,
     /// A_pl/A0.
@@ -46,14 +52,23 @@ impl Reference {
     }
 }
 
+/// The cases of [`REFERENCE_JSON`], read once (or why they cannot be: a
+/// defect of the file, reported as the error of the report).
+static CASES: LazyLock<std::result::Result<Vec<Reference>, String>> =
+    LazyLock::new(|| serde_json::from_str(REFERENCE_JSON).map_err(|e| e.to_string()));
+
 /// The references with their starts.
 ///
 /// # Errors
-/// A start name the solver does not know (a defect of the generated table).
+/// The reference file does not parse, or names a start the solver does not
+/// know (a defect of the file).
 fn references() -> Result<Vec<(Start, &'static Reference)>> {
-    CASES
+    let cases = CASES
+        .as_ref()
+        .map_err(|e| Error::parse("tests/reference/stress.json", 0, 0, e.as_str()))?;
+    cases
         .iter()
-        .map(|c| Ok((Start::from_name(c.start)?, c)))
+        .map(|c| Ok((Start::from_name(&c.start)?, c)))
         .collect()
 }
 
@@ -175,7 +190,7 @@ fn density_row(cases: &[(&Start, &Reference)], tol: f64, how: Method) -> Result<
         let (mut err, mut est): (f64, f64) = (0.0, 0.0);
         for (st, c) in cases {
             let solver = Solver::with_method(st, c.g, c.yield_ratio, tol, how)?;
-            for (&s, &want) in c.sigma.iter().zip(c.density) {
+            for (&s, &want) in c.sigma.iter().zip(&c.density) {
                 let got = solver.density(s)?;
                 let scale = want.abs().max(1.0);
                 err = err.max((got.value - want).abs() / scale);
@@ -332,86 +347,15 @@ pub(super) fn stability() -> Result<Vec<StabilityCase>> {
 mod tests {
     use super::*;
 
-    /// A case of `tests/reference/stress.json` as serde_json reads it.
-    #[derive(serde::Deserialize)]
-    struct Json {
-        start: String,
-        g: f64,
-        yield_ratio: Option<f64>,
-        sigma: Vec<f64>,
-        density: Vec<f64>,
-        contact_fraction: f64,
-        plastic_fraction: f64,
-    }
-
-    fn json() -> Vec<Json> {
-        serde_json::from_str(include_str!("../../../../tests/reference/stress.json")).unwrap()
-    }
-
-    /// The constants are the numbers `tests/stress.rs` reads from the JSON
-    /// file (with serde_json), bit for bit.
+    /// The compiled-in file parses into its 129 cases, each with as many
+    /// densities as σ values and a start the solver knows.
     #[test]
-    fn constants_are_the_json_references() {
-        let json = json();
-        assert_eq!(json.len(), CASES.len());
-        let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
-        for (j, c) in json.iter().zip(&CASES) {
-            assert_eq!(j.start, c.start);
-            assert_eq!(
-                bits(&[j.g, j.contact_fraction, j.plastic_fraction]),
-                bits(&[c.g, c.contact_fraction, c.plastic_fraction])
-            );
-            assert_eq!(
-                j.yield_ratio.map(f64::to_bits),
-                c.yield_ratio.map(f64::to_bits)
-            );
-            assert_eq!(bits(&j.sigma), bits(c.sigma));
-            assert_eq!(bits(&j.density), bits(c.density));
+    fn reference_file_parses() {
+        let refs = references().unwrap();
+        assert_eq!(refs.len(), 129);
+        for (_, c) in &refs {
+            assert_eq!(c.sigma.len(), c.density.len(), "{c:?}");
         }
-    }
-
-    /// Writes `src/report/stress_reference.rs` from the JSON file:
-    /// `cargo test --lib report::stress -- --ignored write_constants`.
-    #[test]
-    #[ignore = "regenerates a source file"]
-    fn write_constants() {
-        let list = |v: &[f64]| {
-            let items: Vec<String> = v.iter().map(|x| format!("{x:?}")).collect();
-            format!("&[{}]", items.join(", "))
-        };
-        let mut out = String::from(
-            "//! The mpmath references of `tests/reference/stress.json` (40 digits,\n\
-             //! `tests/reference/stress_reference.py`) as constants, as serde_json\n\
-             //! reads them (the numbers `tests/stress.rs` uses): written by\n\
-             //! `cargo test --lib report::stress -- --ignored write_constants`, do not edit.\n\n\
-             // exact values that happen to be near π/8 and the like\n\
-             #![allow(clippy::approx_constant)]\n\n\
-             use super::stress::Reference;\n\n\
-             /// Three starts × G × σY/σH: densities on a σ grid and both fractions.\n\
-             #[rustfmt::skip]\n",
-        );
-        let cases = json();
-        out += &format!("pub(super) const CASES: [Reference; {}] = [\n", cases.len());
-        for c in &cases {
-            let y = c
-                .yield_ratio
-                .map_or("None".to_string(), |y| format!("Some({y:?})"));
-            out += &format!(
-                "    Reference {{ start: {:?}, g: {:?}, yield_ratio: {y}, sigma: {}, density: {}, \
-                 contact_fraction: {:?}, plastic_fraction: {:?} }},\n",
-                c.start,
-                c.g,
-                list(&c.sigma),
-                list(&c.density),
-                c.contact_fraction,
-                c.plastic_fraction
-            );
-        }
-        out += "];\n";
-        let path = concat!(
-            env!("CARGO_MANIFEST_DIR"),
-            "/src/report/stress_reference.rs"
-        );
-        std::fs::write(path, out).unwrap();
+        assert_eq!(refs[0].1.density[9], 282094.79177387815);
     }
 }

@@ -1,7 +1,7 @@
 //! The FFT-BEM outputs of a scene (feature `bem`): rough contact at the
 //! scene's pressures and the Hertz convergence table.
 
-use persson::bem::rough::{self, RoughOptions, RoughReport, SurfaceSource};
+use persson::bem::rough::{self, RoughOptions, RoughReport, SurfaceOrigin};
 use persson::bem::{check_memory, hertz, surface, Options};
 use persson::error::{check, Error, Result};
 
@@ -72,7 +72,7 @@ fn bem_surface(
     scene: &Scene,
     b: &BemOutput,
     boundary: persson::bem::Boundary,
-) -> Result<surface::Surface> {
+) -> Result<surface::GridSurface> {
     let named = |e: Error| prefix("outputs.bem.", e);
     if let Some(SpectrumSpec::HeightMap(m)) = &scene.spectrum {
         if b.grid.is_some() || b.seed.is_some() {
@@ -124,8 +124,8 @@ pub fn bem_rough(scene: &Scene, b: &BemOutput) -> Result<RoughReport> {
     let e_star = scene.material()?.contact_modulus();
     let surf = bem_surface(scene, b, boundary)?;
     let source = match &scene.spectrum {
-        Some(SpectrumSpec::HeightMap(m)) => SurfaceSource::height_map(&m.file),
-        _ => SurfaceSource::synthesised(scene.spectrum()?.as_ref(), b.seed.unwrap_or(1))?,
+        Some(SpectrumSpec::HeightMap(m)) => SurfaceOrigin::height_map(&m.file),
+        _ => SurfaceOrigin::synthesised(scene.spectrum()?.as_ref(), b.seed.unwrap_or(1))?,
     };
     let options = RoughOptions {
         boundary,

@@ -5,9 +5,9 @@
 use persson::error::{Error, Result};
 use persson::spectrum::{Spectrum, Tabulated};
 
-use super::schema::HeightMapSpec;
 #[cfg(any(feature = "bem", feature = "topography"))]
 use super::schema::Sides;
+use super::schema::{Described, HeightMapSpec};
 #[cfg(feature = "topography")]
 use super::schema::{DetrendName, LengthUnitName, WindowName};
 
@@ -111,32 +111,19 @@ impl HeightMapSpec {
     /// # Errors
     /// As [`HeightMapSpec::analyse`] and [`persson::topography::Psd::to_tabulated`].
     #[cfg(feature = "topography")]
-    pub fn spectrum_described(&self) -> Result<(Tabulated, String)> {
-        self.spectrum_warned().map(|(s, d, _)| (s, d))
-    }
-
-    /// As [`HeightMapSpec::spectrum_described`], with the warnings of the
-    /// analysis ([`crate::warning::of_measured`]).
-    ///
-    /// # Errors
-    /// As [`HeightMapSpec::spectrum_described`].
-    #[cfg(feature = "topography")]
-    pub fn spectrum_warned(&self) -> Result<(Tabulated, String, Vec<crate::warning::Warning>)> {
+    pub fn spectrum_described(&self) -> Result<Described<Tabulated>> {
         let a = self.analyse()?;
         let s = a.psd.to_tabulated().map_err(|e| in_file(&self.file, e))?;
-        let w = crate::warning::of_measured(&self.file, &a);
-        Ok((s, describe(&self.file, &a), w))
+        Ok(Described {
+            value: s,
+            description: Some(describe(&self.file, &a)),
+            warnings: crate::warning::of_measured(&self.file, &a),
+        })
     }
 
     /// Without the `topography` feature a measured surface cannot be read.
     #[cfg(not(feature = "topography"))]
-    pub fn spectrum_described(&self) -> Result<(Tabulated, String)> {
-        self.spectrum_warned().map(|(s, d, _)| (s, d))
-    }
-
-    /// Without the `topography` feature a measured surface cannot be read.
-    #[cfg(not(feature = "topography"))]
-    pub fn spectrum_warned(&self) -> Result<(Tabulated, String, Vec<crate::warning::Warning>)> {
+    pub fn spectrum_described(&self) -> Result<Described<Tabulated>> {
         Err(Error::Inconsistent {
             name: "kind = height_map".into(),
             requirement:
@@ -150,7 +137,7 @@ impl HeightMapSpec {
     /// # Errors
     /// As [`HeightMapSpec::spectrum_described`].
     pub fn spectrum(&self) -> Result<Box<dyn Spectrum>> {
-        Ok(Box::new(self.spectrum_described()?.0))
+        Ok(Box::new(self.spectrum_described()?.value))
     }
 }
 
@@ -210,7 +197,7 @@ impl HeightMapSpec {
     pub fn bem_surface(
         &self,
         boundary: persson::bem::Boundary,
-    ) -> Result<persson::bem::surface::Surface> {
+    ) -> Result<persson::bem::surface::GridSurface> {
         let plain = self.height_unit.is_none() && !self.transpose;
         if let (Some(Sides::One(size)), None, true) = (
             self.size,
@@ -226,7 +213,7 @@ impl HeightMapSpec {
     fn bem_surface_read(
         &self,
         boundary: persson::bem::Boundary,
-    ) -> Result<persson::bem::surface::Surface> {
+    ) -> Result<persson::bem::surface::GridSurface> {
         let t = self.read()?;
         let [ny, nx] = t.shape();
         let bad = |what: String| {
@@ -247,7 +234,7 @@ impl HeightMapSpec {
             return Err(bad(format!("sides {} × {} m", t.lx(), t.ly())));
         }
         persson::bem::check_memory(nx, boundary)?;
-        persson::bem::surface::Surface::new(nx, t.lx(), t.heights().to_vec())
+        persson::bem::surface::GridSurface::new(nx, t.lx(), t.heights().to_vec())
             .map_err(|e| Error::parse(&self.file, 0, 0, e.to_string()))
     }
 
@@ -255,7 +242,7 @@ impl HeightMapSpec {
     fn bem_surface_read(
         &self,
         _: persson::bem::Boundary,
-    ) -> Result<persson::bem::surface::Surface> {
+    ) -> Result<persson::bem::surface::GridSurface> {
         Err(Error::parse(
             &self.file,
             0,

@@ -3,7 +3,7 @@
 //! A scene names the material, the spectrum, the loads and the outputs it
 //! wants; [`Scene::run`] computes exactly those outputs and nothing else.
 //! Unknown fields are rejected with their name, line and column. The file
-//! format is [`schema`] (its JSON Schema is `scenes/schema.json`), the
+//! format is [`schema`] (its JSON Schema is `crates/persson-studies/schema/scene.schema.json`), the
 //! computation [`run`] and the typed results [`report`]: the subcommands
 //! `area`, `magnification`, `kappa`, `separation` and `stress` call the same
 //! functions and print the same reports.
@@ -41,7 +41,7 @@ pub mod schema;
 #[cfg(feature = "topography")]
 pub use measured::describe;
 pub use report::*;
-pub use run::Surface;
+pub use run::RoughContact;
 pub use schema::*;
 
 use run::prefix;
@@ -111,10 +111,10 @@ impl Scene {
     ///
     /// # Errors
     /// As [`Scene::spectrum`] and [`Scene::material`].
-    pub fn surface(&self) -> Result<Surface> {
+    pub fn contact(&self) -> Result<RoughContact> {
         let s = self.spectrum.as_ref().ok_or_else(|| required("spectrum"))?;
         let m = self.material.as_ref().ok_or_else(|| required("material"))?;
-        Surface::named(s, m, "spectrum.", "material.")
+        RoughContact::named(s, m, "spectrum.", "material.")
     }
 
     /// Compute every output the scene names, and only those.
@@ -168,7 +168,7 @@ impl Scene {
             || o.stress.as_ref().is_some_and(|st| !st.zeta.is_empty())
             || (o.kappa.is_some() && with_surface && !self.nominal_pressure.is_empty());
         let surface = if needs_surface {
-            Some(self.surface()?)
+            Some(self.contact()?)
         } else {
             None
         };
@@ -186,7 +186,7 @@ impl Scene {
             // Whatever output reads it (the BEM's synthesis too).
             report.warnings.push(crate::Warning::PsdConvention {
                 file: file.clone(),
-                convention: convention.to_string(),
+                convention: *convention,
             });
         }
         let Some(surface) = surface else {

@@ -14,8 +14,11 @@ use persson::theory::{log_zetas, Persson};
 use super::report::*;
 use super::schema::*;
 
-/// A rough surface on an elastic body: the spectrum, E*, and what it is.
-pub struct Surface {
+/// A rough contact, the input of the theories: the spectrum of the rigid
+/// rough surface, the contact modulus E* of the elastic body pressed on it,
+/// and what they are (`persson::bem::GridSurface` is the BEM's height map, a
+/// different thing). Called `Surface` in persson 0.3.
+pub struct RoughContact {
     /// The roughness spectrum.
     pub spectrum: Box<dyn Spectrum>,
     /// E*.
@@ -29,7 +32,7 @@ pub struct Surface {
     pub warnings: Vec<Warning>,
 }
 
-impl Surface {
+impl RoughContact {
     /// Build from the flags' (or a scene's) spectrum and material.
     ///
     /// # Errors
@@ -38,7 +41,7 @@ impl Surface {
         Self::named(spectrum, material, "", "")
     }
 
-    /// As [`Surface::new`], naming the fields with the prefixes of their sections.
+    /// As [`RoughContact::new`], naming the fields with the prefixes of their sections.
     pub(crate) fn named(
         spectrum: &SpectrumSpec,
         material: &MaterialSpec,
@@ -46,9 +49,9 @@ impl Surface {
         material_section: &str,
     ) -> Result<Self> {
         let built = spectrum
-            .build_warned()
+            .build_described()
             .map_err(|e| prefix(spectrum_section, e))?;
-        let (s, measured, measured_warnings) = (built.spectrum, built.description, built.warnings);
+        let (s, measured, measured_warnings) = (built.value, built.description, built.warnings);
         let m: Material = material.build().map_err(|e| prefix(material_section, e))?;
         let description = (*spectrum == SpectrumSpec::example()
             && *material == MaterialSpec::example())
@@ -58,7 +61,7 @@ impl Surface {
         for w in spectrum_warnings(spectrum, s.as_ref()) {
             warning::push(&mut warnings, Some(w));
         }
-        Ok(Surface {
+        Ok(RoughContact {
             spectrum: s,
             contact_modulus: m.contact_modulus(),
             breaks: spectrum.breaks(),
@@ -93,7 +96,7 @@ impl Surface {
 ///
 /// # Errors
 /// A pressure not finite and positive; ζ < 1; γ invalid; solver failure.
-pub fn area(surface: &Surface, pressures: &[f64], out: &AreaOutput) -> Result<AreaReport> {
+pub fn area(surface: &RoughContact, pressures: &[f64], out: &AreaOutput) -> Result<AreaReport> {
     if pressures.is_empty() {
         return Err(required(
             "nominal_pressure (a non-empty list, for outputs.area)",
@@ -136,7 +139,10 @@ pub fn area(surface: &Surface, pressures: &[f64], out: &AreaOutput) -> Result<Ar
 ///
 /// # Errors
 /// ζ < 1; a pressure not finite and positive.
-pub fn magnification(surface: &Surface, out: &MagnificationOutput) -> Result<MagnificationReport> {
+pub fn magnification(
+    surface: &RoughContact,
+    out: &MagnificationOutput,
+) -> Result<MagnificationReport> {
     let model = surface.model()?;
     let zeta = if out.zeta.is_empty() {
         check_points(out.points)?;
@@ -158,7 +164,7 @@ pub fn magnification(surface: &Surface, out: &MagnificationOutput) -> Result<Mag
 ///
 /// # Errors
 /// A pressure not finite and positive.
-pub fn kappa(surface: Option<(&Surface, &[f64])>) -> Result<KappaReport> {
+pub fn kappa(surface: Option<(&RoughContact, &[f64])>) -> Result<KappaReport> {
     let mut r = KappaReport {
         surface: surface.and_then(|(s, _)| s.description.clone()),
         kappa_bush: Kappa::Bush.value(),
@@ -197,7 +203,7 @@ pub fn kappa(surface: Option<(&Surface, &[f64])>) -> Result<KappaReport> {
 /// # Errors
 /// As [`corrected::load_curve`].
 pub fn theories(
-    surface: &Surface,
+    surface: &RoughContact,
     pressures: &[f64],
     out: &TheoriesOutput,
 ) -> Result<TheoriesReport> {
@@ -242,7 +248,7 @@ pub fn theories(
 /// A pressure not finite and positive; a tolerance out of range; an integral
 /// that does not converge.
 pub fn separation(
-    surface: &Surface,
+    surface: &RoughContact,
     pressures: &[f64],
     out: &SeparationOutput,
     plot_pressures: &[f64],
@@ -327,16 +333,15 @@ pub fn stress_dimensionless(
                 elastic_fraction: c.elastic_fraction,
                 plastic_fraction: c.plastic_fraction,
                 non_contact_fraction: Some(c.non_contact_fraction),
-                error_bound: c.error_bound,
-                scaled_density_error_bound: Some(c.scaled_density_error_bound),
-                elastic_fraction_error_bound: Some(c.elastic_fraction_error_bound),
-                plastic_fraction_error_bound: Some(c.plastic_fraction_error_bound),
+                scaled_density_error_bound: c.scaled_density_error_bound,
+                elastic_fraction_error_bound: c.elastic_fraction_error_bound,
+                plastic_fraction_error_bound: c.plastic_fraction_error_bound,
                 method: c.method,
             })
         })
         .collect::<Result<Vec<_>>>()?;
     Ok(StressReport {
-        start: start.name().into(),
+        start: start.kind(),
         mean_ratio: start.mean_ratio(),
         peak_pressure: None,
         nominal_pressure: None,
@@ -352,7 +357,7 @@ pub fn stress_dimensionless(
 ///
 /// # Errors
 /// Inconsistent start and contact; as [`StressScene::curves`].
-pub fn stress_physical(surface: &Surface, out: &StressOutput) -> Result<StressReport> {
+pub fn stress_physical(surface: &RoughContact, out: &StressOutput) -> Result<StressReport> {
     check_points(out.points)?;
     if out.zeta.is_empty() {
         return Err(required("zeta (a non-empty list of magnifications)"));
@@ -405,15 +410,14 @@ pub fn stress_physical(surface: &Surface, out: &StressOutput) -> Result<StressRe
             elastic_fraction: c.elastic_fraction,
             plastic_fraction: c.plastic_fraction,
             non_contact_fraction: None,
-            error_bound: c.error_bound,
-            scaled_density_error_bound: None,
-            elastic_fraction_error_bound: None,
-            plastic_fraction_error_bound: None,
+            scaled_density_error_bound: c.scaled_density_error_bound,
+            elastic_fraction_error_bound: c.elastic_fraction_error_bound,
+            plastic_fraction_error_bound: c.plastic_fraction_error_bound,
             method: c.method,
         })
         .collect();
     Ok(StressReport {
-        start: out.start.name().into(),
+        start: start.kind(),
         mean_ratio: start.mean_ratio(),
         peak_pressure: Some(problem.peak_pressure),
         nominal_pressure: Some(problem.nominal_pressure()),
@@ -511,7 +515,7 @@ pub fn spectrum_warnings(spec: &SpectrumSpec, s: &dyn Spectrum) -> Vec<Warning> 
     {
         w.push(Warning::PsdConvention {
             file: file.clone(),
-            convention: convention.to_string(),
+            convention: *convention,
         });
         let (c_first, c_last) = (s.c(s.q_min()), s.c(s.q_max()));
         if c_last >= c_first {

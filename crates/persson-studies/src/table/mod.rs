@@ -88,6 +88,10 @@ pub struct Column {
     pub heading: String,
     /// Significant digits of real numbers in text.
     pub digits: usize,
+    /// Whether a narrow text table may leave the column out, and in which
+    /// order: lower ranks first, the leftmost first among equal ranks
+    /// ([`narrow`]); `None`: always shown.
+    pub omit_rank: Option<u8>,
 }
 
 /// Default significant digits of a real column in text.
@@ -135,7 +139,17 @@ impl Table {
             key: key.into(),
             heading: heading.into(),
             digits: digits.clamp(1, 17),
+            omit_rank: None,
         });
+        self
+    }
+
+    /// Let a narrow text table leave out the last column added, in the order
+    /// of `rank` ([`Column::omit_rank`], [`narrow`]). CSV and JSON keep it.
+    pub fn omittable(mut self, rank: u8) -> Self {
+        if let Some(c) = self.columns.last_mut() {
+            c.omit_rank = Some(rank);
+        }
         self
     }
 
@@ -508,5 +522,8 @@ mod tests {
 
 #[cfg(feature = "bem")]
 mod bem;
+mod narrow;
 #[cfg(feature = "topography")]
 mod topography;
+
+pub use narrow::{narrow, TEXT_WIDTH};

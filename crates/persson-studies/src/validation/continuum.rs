@@ -122,21 +122,44 @@ fn fitted_alpha(n: &[f64], a: &[f64]) -> Option<f64> {
     (q > 1.0 && q.is_finite()).then(|| q.ln() / r.ln())
 }
 
+/// The mean of a sample and the standard error of that mean.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[non_exhaustive]
+pub struct SampleMean {
+    /// x̄ (NaN for an empty sample).
+    pub mean: f64,
+    /// Standard error of x̄ (`None` for fewer than two values).
+    pub standard_error: Option<f64>,
+}
+
 /// Mean and standard error of the mean (`None` for a single value).
 ///
 /// # Formula
 /// ```text
 /// x̄ = Σx/K,   se = sqrt(Σ(x − x̄)² / (K (K − 1)))
 /// ```
-pub fn mean_and_error(values: &[f64]) -> (f64, Option<f64>) {
+///
+/// # Examples
+/// ```
+/// use persson_studies::validation::mean_and_error;
+/// let m = mean_and_error(&[1.0, 2.0, 3.0]);
+/// assert_eq!(m.mean, 2.0);
+/// assert!((m.standard_error.unwrap() - (1.0f64 / 3.0).sqrt()).abs() < 1e-15);
+/// assert_eq!(mean_and_error(&[4.0]).standard_error, None);
+/// ```
+pub fn mean_and_error(values: &[f64]) -> SampleMean {
     let k = values.len();
-    if k == 0 {
-        return (f64::NAN, None);
+    let mean = if k == 0 {
+        f64::NAN
+    } else {
+        values.iter().sum::<f64>() / k as f64
+    };
+    let standard_error = (k > 1).then(|| {
+        let ss: f64 = values.iter().map(|v| (v - mean).powi(2)).sum();
+        (ss / (k * (k - 1)) as f64).sqrt()
+    });
+    SampleMean {
+        mean,
+        standard_error,
     }
-    let m = values.iter().sum::<f64>() / k as f64;
-    if k == 1 {
-        return (m, None);
-    }
-    let ss: f64 = values.iter().map(|v| (v - m).powi(2)).sum();
-    (m, Some((ss / (k * (k - 1)) as f64).sqrt()))
 }

@@ -20,7 +20,7 @@ pub struct KappaFit {
     /// Its standard error (`None` with a single point).
     pub standard_error: Option<f64>,
     /// Lowest and highest nominal pressure used.
-    pub nominal_pressure_range: (f64, f64),
+    pub nominal_pressure_range: [f64; 2],
     /// Number of points used.
     pub points: usize,
 }
@@ -69,7 +69,7 @@ pub fn fit_kappa(
     Ok(KappaFit {
         kappa,
         standard_error,
-        nominal_pressure_range: (lo, hi),
+        nominal_pressure_range: [lo, hi],
         points: n,
     })
 }
@@ -86,7 +86,7 @@ pub struct KappaEstimate {
     /// Standard error over seeds alone (`None` for one seed).
     pub seed_scatter: Option<f64>,
     /// Lowest and highest nominal pressure used (seed-averaged curve).
-    pub nominal_pressure_range: (f64, f64),
+    pub nominal_pressure_range: [f64; 2],
     /// Points used (seed-averaged curve).
     pub points: usize,
 }
@@ -132,7 +132,8 @@ fn estimate(
         .iter()
         .map(|c| fit_kappa(pressures, c, contact_modulus, rms_slope, max_fraction).map(|f| f.kappa))
         .collect::<Result<_>>()?;
-    let (kappa, seed_scatter) = super::continuum::mean_and_error(&per);
+    let m = super::continuum::mean_and_error(&per);
+    let (kappa, seed_scatter) = (m.mean, m.standard_error);
     let standard_error = match (avg.standard_error, seed_scatter) {
         (None, None) => None,
         (a, b) => Some(a.unwrap_or(0.0).hypot(b.unwrap_or(0.0))),
@@ -173,7 +174,7 @@ impl super::sweep::Sweep {
                 estimate(
                     p,
                     &g.contact_fraction,
-                    &m.0,
+                    &m.mean,
                     contact_modulus,
                     rms_slope,
                     max_fraction,

@@ -6,7 +6,8 @@ use serde::Serialize;
 
 use super::compare::KAPPA_MAX_FRACTION;
 use super::kappa::{GridKappa, KappaEstimate};
-use super::sweep::{default_pressures, sweep, ResolvedBand, SweepProgress, SweepSettings};
+use super::resolution::{default_pressures, ResolvedBand, SweepSettings};
+use super::sweep::{sweep, SweepProgress};
 use crate::table::{number, Cell, Table, Tabulate};
 use persson::error::{check, Error, Result};
 use persson::kappa::Kappa;
@@ -149,7 +150,7 @@ pub fn kappa_study(
             contact_fraction: sw
                 .mean_contact_fraction()
                 .into_iter()
-                .map(|m| m.0)
+                .map(|m| m.mean)
                 .collect(),
         });
     }

@@ -45,22 +45,30 @@ pub mod kappa;
 #[cfg(feature = "bem")]
 mod compare;
 #[cfg(feature = "bem")]
+mod distribution;
+#[cfg(feature = "bem")]
 mod hertz;
 #[cfg(feature = "bem")]
 mod kappa_study;
+#[cfg(feature = "bem")]
+pub mod limits;
 #[cfg(feature = "bem")]
 mod plastic;
 #[cfg(feature = "bem")]
 pub mod report;
 #[cfg(feature = "bem")]
+mod report_tables;
+#[cfg(feature = "bem")]
+pub mod resolution;
+#[cfg(feature = "bem")]
 pub mod sweep;
 
-pub use continuum::{extrapolate, mean_and_error, Extrapolation, DEFAULT_ALPHA};
+pub use continuum::{extrapolate, mean_and_error, Extrapolation, SampleMean, DEFAULT_ALPHA};
 pub use data::{density_distance, interpolate_log, score, Score, UserData, UserHistogram};
 pub use kappa::{fit_kappa, KappaEstimate, KappaFit};
 
 #[cfg(feature = "bem")]
-pub use compare::{compare, compare_surface, ComparisonConfig, KAPPA_MAX_FRACTION};
+pub use compare::{compare, compare_surface, ComparisonConfig, DEFAULT_BINS, KAPPA_MAX_FRACTION};
 #[cfg(feature = "bem")]
 pub use hertz::{hertz, HertzValidation};
 #[cfg(feature = "bem")]
@@ -68,11 +76,13 @@ pub use kappa::{GridKappa, SweepKappa};
 #[cfg(feature = "bem")]
 pub use kappa_study::{kappa_study, HurstKappa, KappaStudy, KappaStudyConfig};
 #[cfg(feature = "bem")]
+pub use limits::{continuum_limit, Continuum, ContinuumSplit, PlasticSplit, SeedMean};
+#[cfg(feature = "bem")]
 pub use report::Comparison;
 #[cfg(feature = "bem")]
-pub use sweep::{
-    band_limited_copies, band_limited_map, coarsened, continuum_limit, default_pressures,
-    nested_surfaces, resolution_grids, resolvable_q_max, resolve_q_s, sweep, sweep_source,
-    BandLimited, Continuum, ResolvedBand, Sweep, SweepConfig, SweepProgress, SweepSettings,
-    SweepSource, DEFAULT_LEVELS, DEFAULT_PIXELS_PER_WAVELENGTH,
+pub use resolution::{
+    default_pressures, resolution_grids, resolvable_q_max, resolve_q_s, ResolvedBand, SweepConfig,
+    SweepSettings, DEFAULT_LEVELS, DEFAULT_PIXELS_PER_WAVELENGTH,
 };
+#[cfg(feature = "bem")]
+pub use sweep::{sweep, sweep_source, GridResult, Sweep, SweepProgress, SweepSource};

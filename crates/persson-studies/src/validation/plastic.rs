@@ -1,34 +1,10 @@
 //! The elastic–perfectly-plastic side of [`super::compare`] (a yield stress
-//! σY on [`persson::bem::Options::yield_stress`]): its input check.
+//! σY on [`persson::bem::Options::yield_stress`]): its table. The input is
+//! checked by [`persson::error::check::yield_stress`], as the saturated BEM
+//! checks it.
 
 use super::report::Comparison;
 use crate::table::{number, Cell, Table};
-use persson::error::{check, Error, Result};
-
-/// σY finite and positive, and above every nominal pressure (no contact
-/// with 0 ≤ p ≤ σY carries a mean pressure σ0 ≥ σY).
-///
-/// # Errors
-/// [`Error::InvalidParameter`] naming `yield_stress`.
-pub(super) fn check_yield_stress(yield_stress: Option<f64>, pressures: &[f64]) -> Result<()> {
-    let Some(y) = yield_stress else {
-        return Ok(());
-    };
-    check::positive("yield_stress", y)?;
-    let top = pressures.iter().copied().fold(0.0, f64::max);
-    if y <= top {
-        return Err(Error::invalid(
-            "yield_stress",
-            y,
-            format!(
-                "> every nominal pressure (largest {}): with 0 ≤ p ≤ σY no contact carries \
-                 a mean pressure σ0 ≥ σY, so no solution exists",
-                number(top, 6)
-            ),
-        ));
-    }
-    Ok(())
-}
 
 impl Comparison {
     /// With a yield stress: A/A0, A_el/A0 and A_pl/A0 of Persson's finite-σY

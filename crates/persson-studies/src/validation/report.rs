@@ -5,8 +5,8 @@
 use serde::Serialize;
 
 use super::data::Score;
-use super::kappa::{KappaEstimate, KappaFit, SweepKappa};
-use crate::table::{number, Cell, Table, Tabulate};
+use super::kappa::{KappaFit, SweepKappa};
+use crate::table::number;
 use persson::bem::HistogramBin;
 use persson::corrected::Theory;
 
@@ -177,17 +177,87 @@ pub enum Fitted<T> {
     Fit(T),
     /// No fit, and why.
     NotFitted {
-        /// Why (e.g. no point in the low-load regime).
-        reason: String,
+        /// Why.
+        reason: NotFitted,
     },
 }
 
+/// Why a κ fit could not be made. Serialised as `{"kind": …, <its fields>,
+/// "message": <its text>}`.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(remote = "Self", tag = "kind", rename_all = "snake_case")]
+#[non_exhaustive]
+pub enum NotFitted {
+    /// No point with 0 < A/A0 < `max_fraction`: the pressures do not reach
+    /// the low-load regime (or every A/A0 is 0).
+    NoLowLoadPoint {
+        /// The low-load regime: A/A0 below this.
+        max_fraction: f64,
+    },
+    /// The fit's input was rejected (the library's error, as text).
+    Rejected {
+        /// What was wrong.
+        message: String,
+    },
+}
+
+impl NotFitted {
+    /// Why `e` (an error of [`super::fit_kappa`] or of a sweep's κ) left no fit.
+    pub(crate) fn from_error(e: &persson::Error, max_fraction: f64) -> Self {
+        match e {
+            // fit_kappa's refusal of a curve without a low-load point
+            persson::Error::Inconsistent { name, .. } if name == "pressures" => {
+                NotFitted::NoLowLoadPoint { max_fraction }
+            }
+            _ => NotFitted::Rejected {
+                message: e.to_string(),
+            },
+        }
+    }
+}
+
+impl std::fmt::Display for NotFitted {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            NotFitted::NoLowLoadPoint { max_fraction } => write!(
+                f,
+                "no point with 0 < A/A0 < {} to fit κ",
+                number(*max_fraction, 6)
+            ),
+            NotFitted::Rejected { message } => f.write_str(message),
+        }
+    }
+}
+
+impl Serialize for NotFitted {
+    /// `{"kind": …, <the variant's fields>, "message": <the text>}`
+    /// (`Rejected` has its message as its one field).
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        #[derive(Serialize)]
+        struct Tagged<'a> {
+            #[serde(flatten, with = "NotFitted")]
+            reason: &'a NotFitted,
+            #[serde(skip_serializing_if = "Option::is_none")]
+            message: Option<String>,
+        }
+        Tagged {
+            reason: self,
+            message: match self {
+                NotFitted::Rejected { .. } => None,
+                _ => Some(self.to_string()),
+            },
+        }
+        .serialize(serializer)
+    }
+}
+
 impl<T> Fitted<T> {
-    pub(crate) fn from_result(r: persson::Result<T>) -> Self {
+    /// The fit, or why there is none (`max_fraction`: the fit's low-load regime).
+    pub(crate) fn from_result(r: persson::Result<T>, max_fraction: f64) -> Self {
         match r {
             Ok(t) => Fitted::Fit(t),
             Err(e) => Fitted::NotFitted {
-                reason: e.to_string(),
+                reason: NotFitted::from_error(&e, max_fraction),
             },
         }
     }
@@ -285,12 +355,41 @@ pub struct MeanSeparation {
     pub theory: Vec<f64>,
 }
 
+/// What the user's data are scored against.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum ScoreReference {
+    /// A theory's A/A0 at the data's pressures.
+    Theory(AreaTheory),
+    /// The BEM's continuum limit A∞, interpolated (log–log) at the data's
+    /// pressures inside the compared range.
+    BemExtrapolated,
+}
+
+impl ScoreReference {
+    /// The name as on the command line: a theory's (`wang-muser`) or
+    /// `bem-extrapolated`.
+    pub fn name(self) -> &'static str {
+        match self {
+            ScoreReference::Theory(t) => t.name(),
+            ScoreReference::BemExtrapolated => "bem-extrapolated",
+        }
+    }
+}
+
+impl Serialize for ScoreReference {
+    /// The name, a label from a closed set.
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.serialize_str(self.name())
+    }
+}
+
 /// A score of the user's data against one reference.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[non_exhaustive]
 pub struct DataScore {
-    /// A theory's name, or `bem-extrapolated`.
-    pub reference: String,
+    /// A theory, or the extrapolated BEM.
+    pub reference: ScoreReference,
     /// The score.
     #[serde(flatten)]
     pub score: Score,
@@ -374,11 +473,6 @@ pub struct Comparison {
     /// (unfiltered, its own grid), beside the band-limited sweep.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub measured: Option<BemGrid>,
-    /// Text tables with every column; `false` (the default): each table
-    /// fits [`TEXT_WIDTH`] characters, the coarser grids' columns of a wide
-    /// table left out (named under its title). Not in the JSON.
-    #[serde(skip)]
-    pub wide: bool,
 }
 
 impl Comparison {
@@ -390,407 +484,5 @@ impl Comparison {
     /// The distribution shown in text and plotted.
     pub fn shown_distribution(&self) -> Option<&PressureDistribution> {
         self.pressure_distribution.get(self.histogram_index)
-    }
-
-    fn grid_list(&self) -> String {
-        let g: Vec<String> = self.grids.iter().map(|g| format!("{g}²")).collect();
-        g.join(", ")
-    }
-}
-
-/// A row of the κ table: κ in the column's one style; the standard error
-/// only for a measured κ (BEM, data). A theory's curve is exact, and its
-/// fit's standard error only measures the curve's bend (it stays in the JSON).
-fn kappa_row(
-    t: &mut Table,
-    source: &str,
-    grid: Option<usize>,
-    kappa: f64,
-    se: Option<f64>,
-    closed: Option<f64>,
-    points: usize,
-) {
-    t.push(vec![
-        source.into(),
-        grid.map_or(Cell::Empty, Cell::from),
-        Cell::Num(kappa),
-        // A theory's fit error only measures its curve's bend: not shown.
-        if closed.is_some() {
-            Cell::Empty
-        } else {
-            se.into()
-        },
-        closed.into(),
-        points.into(),
-    ]);
-}
-
-fn estimate_row(t: &mut Table, source: &str, grid: Option<usize>, e: &KappaEstimate) {
-    kappa_row(t, source, grid, e.kappa, e.standard_error, None, e.points);
-}
-
-impl Tabulate for Comparison {
-    fn tables(&self) -> Vec<Table> {
-        let s = &self.spectrum;
-        let np = self.nominal_pressure.len();
-        let mut theory = Table::new(
-            "area_theory",
-            format!(
-                "Contact area A/A0 of the theories, ζ = {}{}",
-                number(s.zeta, 6),
-                if self.yield_stress.is_some() {
-                    " (elastic; with σY: the table \"Elastic–plastic contact\")"
-                } else {
-                    ""
-                }
-            ),
-        )
-        .scalar("contact_modulus", "E*", self.contact_modulus)
-        .scalar("q_l", "q_l", s.q_l)
-        .scalar("q_s", "q_s", s.q_s);
-        if s.clipped {
-            theory = theory.scalar(
-                "q_s_requested",
-                "q_s given (not resolved by the coarsest grid)",
-                s.q_s_requested,
-            );
-        }
-        theory = theory
-            .scalar("rms_height", "h_rms", s.rms_height)
-            .scalar("rms_slope", "h'_rms", s.rms_slope)
-            .column("nominal_pressure", "σ0");
-        for c in &self.theories {
-            let key = format!("contact_fraction_{}", c.theory.name().replace('-', "_"));
-            theory = theory.column(&key, c.theory.label());
-        }
-        for k in 0..np {
-            let mut row = vec![Cell::Num(self.nominal_pressure[k])];
-            row.extend(
-                self.theories
-                    .iter()
-                    .map(|c| Cell::Num(c.contact_fraction[k])),
-            );
-            theory.push(row);
-        }
-
-        // With a yield stress the BEM is the saturated one (0 ≤ p ≤ σY): say
-        // so where its A/A0 and κ stand beside the elastic theories.
-        let saturated = self
-            .yield_stress
-            .map(|y| format!(", saturated (σY = {})", number(y, 6)))
-            .unwrap_or_default();
-        let mut bem = Table::new(
-            "area_bem",
-            format!(
-                "Contact area A/A0 of the FFT-BEM{saturated} and its continuum limit (Campañá & Müser 2007)"
-            ),
-        )
-        .scalar("grids", "grids", self.grid_list().as_str())
-        .scalar("size", "L", self.size)
-        .scalar("seeds", "seeds", self.seeds.len())
-        .scalar("tolerance", "tolerance ε", self.tolerance)
-        .column("nominal_pressure", "σ0");
-        for g in &self.bem {
-            bem = bem.column(
-                &format!("contact_fraction_{}", g.grid),
-                &format!("N = {}", g.grid),
-            );
-        }
-        if let Some(m) = &self.measured {
-            bem = bem.column(
-                "contact_fraction_as_measured",
-                &format!("{} as measured", m.grid),
-            );
-        }
-        bem = bem
-            .column("contact_fraction_extrapolated", "N → ∞")
-            .column_digits("standard_error", "standard error", 2)
-            .column_digits("alpha", "α", 3);
-        for (k, c) in self.extrapolated.iter().enumerate() {
-            let mut row = vec![Cell::Num(c.nominal_pressure)];
-            row.extend(self.bem.iter().map(|g| Cell::Num(g.contact_fraction[k])));
-            if let Some(m) = &self.measured {
-                row.push(Cell::Num(m.contact_fraction[k]));
-            }
-            row.extend([
-                Cell::Num(c.contact_fraction),
-                Cell::Num(c.standard_error),
-                Cell::Num(c.alpha),
-            ]);
-            bem.push(row);
-        }
-
-        let mut kappa = Table::new(
-            "kappa",
-            format!(
-                "κ of A/A0 = κ σ0/(E* h'_rms), fitted where A/A0 < {}{}",
-                number(self.kappa.max_fraction, 6),
-                if saturated.is_empty() {
-                    String::new()
-                } else {
-                    format!(" (BEM rows{saturated})")
-                }
-            ),
-        )
-        .column("source", "source")
-        .column("grid", "N")
-        .column_digits("kappa", "κ", 4)
-        .column_digits("standard_error", "standard error", 2)
-        .column_digits("low_load_kappa", "closed form", 4)
-        .column("points", "points");
-        for tk in &self.kappa.theories {
-            match tk.fit.fit() {
-                Some(f) => kappa_row(
-                    &mut kappa,
-                    tk.theory.label(),
-                    None,
-                    f.kappa,
-                    f.standard_error,
-                    Some(tk.low_load_kappa),
-                    f.points,
-                ),
-                None => kappa.push(vec![
-                    tk.theory.label().into(),
-                    Cell::Empty,
-                    Cell::Empty,
-                    Cell::Empty,
-                    tk.low_load_kappa.into(),
-                    Cell::Int(0),
-                ]),
-            }
-        }
-        match &self.kappa.bem {
-            Fitted::Fit(k) => {
-                for g in &k.per_grid {
-                    estimate_row(&mut kappa, "BEM", Some(g.grid), &g.estimate);
-                }
-                estimate_row(&mut kappa, "BEM, N → ∞", None, &k.extrapolated);
-            }
-            Fitted::NotFitted { reason } => {
-                kappa = kappa.scalar("bem_not_fitted", "BEM not fitted", reason.as_str());
-            }
-        }
-        if let Some(Fitted::Fit(f)) = &self.kappa.data {
-            // The fit's standard error of your curve measures only its bend
-            // (no noise model): in the JSON, not here.
-            kappa.push(vec![
-                "your data".into(),
-                Cell::Empty,
-                Cell::Num(f.kappa),
-                Cell::Empty,
-                Cell::Empty,
-                f.points.into(),
-            ]);
-        }
-        let mut tables = vec![theory, bem, kappa];
-        if let Some(y) = self.yield_table() {
-            tables.push(y);
-        }
-
-        let finest = self.grids.last().copied().unwrap_or(0);
-        let mut sep = Table::new(
-            "mean_separation",
-            format!(
-                "Mean separation ū: BEM mean gap ({finest}²) and Persson's theory{}",
-                if self.yield_stress.is_some() {
-                    " (elastic; the BEM's plastic interpenetration enters as a negative gap)"
-                } else {
-                    ""
-                }
-            ),
-        )
-        .column("nominal_pressure", "σ0")
-        .column("bem_mean_separation", "ū BEM")
-        .column("theory_mean_separation", "ū theory");
-        for k in 0..np {
-            sep.push(vec![
-                self.nominal_pressure[k].into(),
-                self.mean_separation.bem[k].into(),
-                self.mean_separation.theory[k].into(),
-            ]);
-        }
-        tables.push(sep);
-
-        if let Some(d) = self.shown_distribution() {
-            let mut t = Table::new(
-                "pressure_distribution",
-                format!(
-                    "Pressure distribution P(σ) at σ0 = {}: BEM {}² and Persson, flat start",
-                    number(d.nominal_pressure, 4),
-                    d.grid,
-                ),
-            )
-            .scalar("bem_contact_fraction", "A/A0 BEM", d.bem_contact_fraction)
-            .scalar(
-                "theory_contact_fraction",
-                "A/A0 theory",
-                d.theory_contact_fraction,
-            );
-            if let (Some(y), Some(bp), Some(tp)) = (
-                self.yield_stress,
-                d.bem_plastic_fraction,
-                d.theory_plastic_fraction,
-            ) {
-                t = t
-                    .scalar("yield_stress", "σY", y)
-                    .scalar(
-                        "bem_plastic_fraction",
-                        "δ-peak at σY: A_pl/A0 BEM (not in the bins)",
-                        bp,
-                    )
-                    .scalar(
-                        "theory_plastic_fraction",
-                        "δ-peak at σY: A_pl/A0 theory",
-                        tp,
-                    );
-            }
-            t = t
-                .column("sigma_low", "σ low")
-                .column("sigma_high", "σ high")
-                .column("bem_density", "P(σ) BEM")
-                .column("theory_density", "P(σ) theory");
-            for (b, th) in d.bem.iter().zip(&d.theory_density) {
-                t.push(vec![
-                    b.sigma_low.into(),
-                    b.sigma_high.into(),
-                    b.density.into(),
-                    (*th).into(),
-                ]);
-            }
-            tables.push(t);
-        }
-
-        if let Some(d) = &self.data {
-            let mut t = Table::new(
-                "data_scores",
-                "Your data: relative deviation of A/A0 from each reference",
-            )
-            .column("reference", "reference")
-            .column_digits("rms_relative_deviation", "rms", 3)
-            .column_digits("max_relative_deviation", "max", 3)
-            .column("points", "points");
-            for s in &d.scores {
-                t.push(vec![
-                    s.reference.as_str().into(),
-                    s.score.rms_relative_deviation.into(),
-                    s.score.max_relative_deviation.into(),
-                    s.score.points.into(),
-                ]);
-            }
-            if let Some(h) = &self.data_histogram {
-                t = t.scalar(
-                    "relative_l1_distance",
-                    &format!(
-                        "your histogram at σ0 = {}: relative L1 distance from Persson's P(σ)",
-                        number(h.nominal_pressure, 4)
-                    ),
-                    h.relative_l1_distance,
-                );
-            }
-            tables.push(t);
-        } else if let Some(h) = &self.data_histogram {
-            tables.push(
-                Table::new("data_histogram", "Your pressure histogram").scalar(
-                    "relative_l1_distance",
-                    &format!(
-                        "relative L1 distance from Persson's P(σ) at σ0 = {}",
-                        number(h.nominal_pressure, 4)
-                    ),
-                    h.relative_l1_distance,
-                ),
-            );
-        }
-
-        let mut solves = Table::new("bem_solves", "FFT-BEM solves (Polonsky & Keer 1999)");
-        let labelled = self.measured.is_some();
-        if labelled {
-            solves = solves.column("surface", "surface");
-        }
-        solves = solves
-            .column("grid", "N")
-            .column("iterations", "iterations")
-            .column_digits("residual", "largest residual ε", 2)
-            .column_digits("seconds", "time (s)", 3);
-        let rows = self.bem.iter().map(|g| ("band-limited map", g));
-        for (what, g) in rows.chain(self.measured.iter().map(|g| ("map as measured", g))) {
-            let mut row = if labelled { vec![what.into()] } else { vec![] };
-            row.extend([
-                g.grid.into(),
-                g.iterations.into(),
-                g.residual.into(),
-                g.seconds.into(),
-            ]);
-            solves.push(row);
-        }
-        tables.push(solves);
-        if !self.wide {
-            for t in &mut tables {
-                narrow(t, TEXT_WIDTH);
-            }
-        }
-        tables
-    }
-}
-
-/// Width in characters that the default text tables of a [`Comparison`] fit
-/// (`wide` prints every column).
-pub const TEXT_WIDTH: usize = 100;
-
-/// Widest line of a table's text.
-fn text_width(t: &Table) -> usize {
-    t.to_text()
-        .lines()
-        .map(|l| l.chars().count())
-        .max()
-        .unwrap_or(0)
-}
-
-/// Fit a table into `width` characters: a long title wrapped at spaces,
-/// then the columns of the coarser grids (`contact_fraction_<N>`, all but
-/// the finest) dropped, coarsest first, with a line saying so.
-fn narrow(t: &mut Table, width: usize) {
-    if t.title.chars().count() > width {
-        let mut lines = vec![String::new()];
-        for word in t.title.split(' ') {
-            let last = lines.last_mut().expect("one line");
-            if !last.is_empty() && last.chars().count() + 1 + word.chars().count() > width {
-                lines.push(format!("  {word}"));
-            } else {
-                if !last.is_empty() {
-                    last.push(' ');
-                }
-                last.push_str(word);
-            }
-        }
-        t.title = lines.join("\n");
-    }
-    let grid_columns = |t: &Table| -> Vec<usize> {
-        (0..t.columns.len())
-            .filter(|&j| {
-                t.columns[j]
-                    .key
-                    .strip_prefix("contact_fraction_")
-                    .is_some_and(|g| g.parse::<usize>().is_ok())
-            })
-            .collect()
-    };
-    let mut dropped = Vec::new();
-    while text_width(t) > width {
-        let cols = grid_columns(t);
-        if cols.len() < 2 {
-            break;
-        }
-        let j = cols[0];
-        dropped.push(t.columns.remove(j).heading);
-        for r in &mut t.rows {
-            r.remove(j);
-        }
-    }
-    if !dropped.is_empty() {
-        t.scalars.push((
-            "omitted".into(),
-            "not shown (--wide shows them)".into(),
-            Cell::Text(dropped.join(", ")),
-        ));
     }
 }
