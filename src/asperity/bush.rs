@@ -61,6 +61,7 @@
 
 use super::gaussian::{ln_scaled_tail_moment, Order, SQRT_TAU};
 use super::kernel::{kernels, Kernel, Kernels};
+use super::summit_table::{SummitTable, MIN_ALPHA};
 use super::{
     check_separation, point_validity, solve_separation, AsperityPoint, AsperityTheory,
     SpectralMoments, Validity,
@@ -76,6 +77,9 @@ const MAX_EVALS: usize = 20_000;
 
 /// Half-width of the u-interval in standard deviations of u | ξ.
 const WIDTH: f64 = 14.0;
+
+/// Newton iterations allowed for the separation at a given σ0.
+const NEWTON_ITERATIONS: usize = 60;
 
 /// Separation (in rms heights) at which [`Bush::low_load_kappa`] evaluates
 /// κ: the corrections are O(α/δ²), below 1e-13 there.
@@ -100,6 +104,8 @@ pub struct Bush {
     kernels: &'static Kernels,
     tolerance: f64,
     validity: Vec<Validity>,
+    /// g_γ(ξ) tables for the fast path, built on first use.
+    table: std::sync::OnceLock<Option<SummitTable>>,
     /// α, 3/(2√α), s_c, s_u.
     alpha: f64,
     slope: f64,
@@ -151,6 +157,7 @@ impl Bush {
             kernels: kernels(hertz)?,
             tolerance: DEFAULT_TOLERANCE,
             validity: moments.validity(),
+            table: std::sync::OnceLock::new(),
             alpha,
             slope: 1.5 / alpha.sqrt(),
             s_c: (1.5 * s_u2).sqrt(),
@@ -199,8 +206,41 @@ impl Bush {
         self.kappa_at(LOW_LOAD_SEPARATION * self.moments.rms_height())
     }
 
-    /// J_{k,γ}(δ)/φ(δ) for the count, area and load.
+    /// J/φ by the direct u-integrals at δ (for tests of the table path).
+    #[doc(hidden)]
+    pub fn scaled_integrals_direct(&self, delta: f64) -> Result<[f64; 3]> {
+        let s = self.scaled_direct(delta)?;
+        Ok([s.count, s.area, s.load])
+    }
+
+    /// J/φ as [`AsperityTheory::at_separation`] computes them at δ.
+    #[doc(hidden)]
+    pub fn scaled_integrals(&self, delta: f64) -> Result<[f64; 3]> {
+        let s = self.scaled(delta)?;
+        Ok([s.count, s.area, s.load])
+    }
+
+    /// The summit table, when the tolerance allows it (built once).
+    fn table(&self) -> Option<&SummitTable> {
+        if self.tolerance < DEFAULT_TOLERANCE || self.alpha < MIN_ALPHA {
+            return None;
+        }
+        self.table
+            .get_or_init(|| SummitTable::build(self.alpha.sqrt(), self.s_u, self.kernels).ok())
+            .as_ref()
+    }
+
+    /// J_{k,γ}(δ)/φ(δ) for the count, area and load: from the summit table
+    /// for δ ≤ 12 (module docs), else by the direct u-integrals.
     fn scaled(&self, delta: f64) -> Result<Scaled> {
+        if let Some([count, area, load, _]) = self.table().and_then(|t| t.scaled(delta)) {
+            return Ok(Scaled { count, area, load });
+        }
+        self.scaled_direct(delta)
+    }
+
+    /// J_{k,γ}(δ)/φ(δ) by the direct u-integrals (any δ).
+    fn scaled_direct(&self, delta: f64) -> Result<Scaled> {
         let k = self.kernels;
         Ok(Scaled {
             count: self.s_c * self.integral(delta, Order::Zero, &k.count, 4.0)?,
@@ -238,8 +278,34 @@ impl Bush {
     /// ln σ0(d) (finite where σ0 underflows).
     fn ln_pressure(&self, d: f64) -> Result<f64> {
         let delta = d / self.moments.rms_height();
-        let load = self.s_c.powf(2.5) * self.integral(delta, Order::ThreeHalves, &self.kernels.load, 3.5)?;
+        let load = match self.table().and_then(|t| t.scaled(delta)) {
+            Some(s) => s[2],
+            None => self.s_c.powf(2.5) * self.integral(delta, Order::ThreeHalves, &self.kernels.load, 3.5)?,
+        };
         Ok(self.load_scale().ln() + Self::ln_phi(delta) + load.ln())
+    }
+
+    /// δ with σ0(δ) = `target` by Newton's method on ln σ0 with the table's
+    /// derivative d ln J_{3/2}/dδ = −(3/2) J_½/J_{3/2}; `None` (use the
+    /// bracketing search) when the table is not in use or the iteration leaves it.
+    fn newton(&self, target: f64) -> Option<f64> {
+        let table = self.table()?;
+        let lt = target.ln() - self.load_scale().ln();
+        let mut delta = 0.0f64;
+        for _ in 0..NEWTON_ITERATIONS {
+            let s = table.scaled(delta)?;
+            if !(s[2] > 0.0 && s[3] > 0.0) {
+                return None;
+            }
+            let f = Self::ln_phi(delta) + s[2].ln() - lt;
+            let slope = -1.5 * s[3] / s[2];
+            let step = (-f / slope).clamp(-2.0, 2.0);
+            delta += step;
+            if step.abs() <= 1e-14 * (1.0 + delta.abs()) {
+                return (delta >= super::summit_table::XI_MIN).then_some(delta);
+            }
+        }
+        None
     }
 
     /// (2/(3π)) E* √m2 α^{3/4}.
@@ -266,8 +332,12 @@ impl AsperityTheory for Bush {
     }
 
     fn at_pressure(&self, nominal_pressure: f64) -> Result<AsperityPoint> {
+        check::positive("nominal_pressure", nominal_pressure)?;
         let h = self.moments.rms_height();
-        let d = solve_separation(&|d| self.ln_pressure(d), nominal_pressure, h, h)?;
+        let d = match self.newton(nominal_pressure) {
+            Some(delta) => delta * h,
+            None => solve_separation(&|d| self.ln_pressure(d), nominal_pressure, h, h)?,
+        };
         let mut p = self.at_separation(d)?;
         p.nominal_pressure = nominal_pressure;
         Ok(p)
