@@ -47,7 +47,7 @@
 //!   doi:10.1016/j.jmps.2008.03.011: GW, BGT and Persson side by side.
 
 pub mod bush;
-mod gaussian;
+pub(crate) mod gaussian;
 pub mod greenwood_williamson;
 mod hertz_ellipse;
 mod kernel;

@@ -25,6 +25,10 @@
 //! - [`surface`]: Fourier synthesis from any [`crate::Spectrum`], height-map I/O.
 //! - [`rough`]: the rough-contact loop (one solve per nominal pressure) and its report.
 //! - [`histogram`]: pressure histograms P(σ) that integrate to A/A0.
+//! - [`patches`]: connected contact patches (4/8 neighbours, periodic wrap), their areas,
+//!   perimeters and log-binned size distribution; exponential against Gaussian pressure tails.
+//! - [`subsurface`]: the stress tensor below the surface (periodic or free half-space),
+//!   von Mises and maximum shear, first yield.
 //!
 //! # Example
 //! ```
@@ -39,9 +43,11 @@ pub(crate) mod fft;
 pub mod hertz;
 pub mod histogram;
 pub mod kernel;
+pub mod patches;
 pub mod rough;
 pub mod saturated;
 pub mod solver;
+pub mod subsurface;
 pub mod surface;
 
 pub use histogram::{pressure_histogram, saturated_histogram, HistogramBin, SaturatedHistogram};
