@@ -32,11 +32,12 @@
 //! (u, v the offsets, ρ = √(u² + v² + z²)):
 //! ```text
 //! ψ_z : −atan(uv/(zρ))                ψ_zz: uv(ρ² + z²)/(ρ(u² + z²)(v² + z²))
-//! ψ_xx: u/(ρ(ρ + v))                  ψ_yy: v/(ρ(ρ + u))
-//! ψ_xy: 1/ρ                           ψ_xz: z/(ρ(ρ + v))      ψ_yz: z/(ρ(ρ + u))
-//! ψ₁_xx: atan(uv(ρ − z)/(u²ρ + z v²))  ψ₁_yy: atan(uv(ρ − z)/(v²ρ + z u²))   ψ₁_xy: ln(ρ + z)
+//! ψ_xx: u/(ρ(ρ + v))                  ψ_xy: 1/ρ                  ψ_xz: z/(ρ(ρ + v))
+//! ψ₁_xx: atan(uv(ρ − z)/(u²ρ + z v²))  ψ₁_xy: ln(ρ + z)
 //! ```
-//! (each checked by differentiation; ρ − z is evaluated as (u² + v²)/(ρ + z)).
+//! (each checked by differentiation; ρ − z is evaluated as (u² + v²)/(ρ + z),
+//! ρ + v as (u² + z²)/(ρ − v) for v < 0). The y-derivatives are the same
+//! functions with x and y exchanged: σ_yy(x, y) = σ_xx(y, x), σ_yz(x, y) = σ_xz(y, x).
 //! A large square gives σ_zz → −p and σ_xx = σ_yy → −(1 + 2ν)p/2 at its
 //! centre just below the surface, Johnson's values under a uniform load.
 //!
@@ -73,62 +74,93 @@ pub(crate) fn multipliers(qx: f64, qy: f64, z: f64, nu: f64, nyquist: bool) -> [
     ]
 }
 
-/// The corner functions G at one corner (u, v) and depth z, in the order
-/// ψ_z, ψ_zz, ψ_xx, ψ_yy, ψ_xy, ψ_xz, ψ_yz, ψ₁_xx, ψ₁_yy, ψ₁_xy.
-pub(crate) fn corner(u: f64, v: f64, z: f64) -> [f64; 10] {
+/// Component `c` of [`multipliers`] from precomputed q_x, q_y, q (negative
+/// at a Nyquist mode) and e^{−qz}.
+#[inline]
+pub(crate) fn multiplier(c: usize, qx: f64, qy: f64, q_signed: f64, e: f64, z: f64, nu: f64) -> (f64, f64) {
+    let q = q_signed.abs();
+    if q == 0.0 {
+        let lateral = -nu / (1.0 - nu);
+        return match c {
+            0 | 1 => (lateral, 0.0),
+            2 => (-1.0, 0.0),
+            _ => (0.0, 0.0),
+        };
+    }
+    let (nx, ny) = (qx / q, qy / q);
+    let qz = q * z;
+    let odd = if q_signed < 0.0 { 0.0 } else { 1.0 };
+    let (s_xi, s_eta) = (-(1.0 - qz) * e, -2.0 * nu * e);
+    match c {
+        0 => (nx * nx * s_xi + ny * ny * s_eta, 0.0),
+        1 => (ny * ny * s_xi + nx * nx * s_eta, 0.0),
+        2 => (-(1.0 + qz) * e, 0.0),
+        3 => (odd * nx * ny * (s_xi - s_eta), 0.0),
+        4 => (0.0, odd * nx * qz * e),
+        _ => (0.0, odd * ny * qz * e),
+    }
+}
+
+/// Corner functions used per corner (module docs): ψ_z, ψ_zz, ψ_xx, ψ_xy,
+/// ψ_xz, ψ₁_xx, ψ₁_xy. The y-derivatives follow by swapping x and y.
+pub(crate) const CORNER_FUNCTIONS: usize = 7;
+
+/// The corner functions G at one corner (u, v) and depth z, in the order of
+/// [`CORNER_FUNCTIONS`].
+pub(crate) fn corner(u: f64, v: f64, z: f64) -> [f64; CORNER_FUNCTIONS] {
     let (u2, v2, z2) = (u * u, v * v, z * z);
     let rho = (u2 + v2 + z2).sqrt();
     let uv = u * v;
-    // ρ − z, ρ + v and ρ + u without cancellation.
+    // ρ − z and ρ + v without cancellation.
     let rho_minus_z = (u2 + v2) / (rho + z);
     let rho_v = if v >= 0.0 { rho + v } else { (u2 + z2) / (rho - v) };
-    let rho_u = if u >= 0.0 { rho + u } else { (v2 + z2) / (rho - u) };
     let g_xx1 = if u == 0.0 || v == 0.0 { 0.0 } else { (uv * rho_minus_z / (u2 * rho + z * v2)).atan() };
-    let g_yy1 = if u == 0.0 || v == 0.0 { 0.0 } else { (uv * rho_minus_z / (v2 * rho + z * u2)).atan() };
     [
         -(uv / (z * rho)).atan(),
         uv * (rho * rho + z2) / (rho * (u2 + z2) * (v2 + z2)),
         u / (rho * rho_v),
-        v / (rho * rho_u),
         1.0 / rho,
         z / (rho * rho_v),
-        z / (rho * rho_u),
         g_xx1,
-        g_yy1,
         (rho + z).ln(),
     ]
 }
 
-/// The six stresses of a unit pressure on a cell from the corner sums `d`
-/// of [`corner`] (module docs).
-pub(crate) fn cell_stress(d: &[f64; 10], z: f64, nu: f64) -> [f64; COMPONENTS] {
+/// σ_xx, σ_zz, σ_xy, σ_xz of a unit pressure on a cell from the corner sums
+/// `d` of [`corner`] (module docs).
+pub(crate) fn cell_stress(d: &[f64; CORNER_FUNCTIONS], z: f64, nu: f64) -> [f64; 4] {
     let inv = 1.0 / std::f64::consts::TAU;
-    let (psi_z, psi_zz, psi_xx, psi_yy, psi_xy, psi_xz, psi_yz, p1_xx, p1_yy, p1_xy) =
-        (d[0], d[1], d[2], d[3], d[4], d[5], d[6], d[7], d[8], d[9]);
+    let [psi_z, psi_zz, psi_xx, psi_xy, psi_xz, p1_xx, p1_xy] = *d;
     let m = 1.0 - 2.0 * nu;
     [
         inv * (2.0 * nu * psi_z - z * psi_xx - m * p1_xx),
-        inv * (2.0 * nu * psi_z - z * psi_yy - m * p1_yy),
         inv * (psi_z - z * psi_zz),
         -inv * (m * p1_xy + z * psi_xy),
         -inv * z * psi_xz,
-        -inv * z * psi_yz,
     ]
 }
 
-/// Stress at (x, y, z) of a unit pressure on the cell of side `delta`
-/// centred at the origin, by the corner sums.
-pub(crate) fn unit_cell(x: f64, y: f64, z: f64, delta: f64, nu: f64) -> [f64; COMPONENTS] {
+/// σ_xx, σ_zz, σ_xy, σ_xz at (x, y, z) of a unit pressure on the cell of
+/// side `delta` centred at the origin, by the corner sums.
+fn cell4(x: f64, y: f64, z: f64, delta: f64, nu: f64) -> [f64; 4] {
     let h = 0.5 * delta;
     let g_bd = corner(x + h, y + h, z);
     let g_ad = corner(x - h, y + h, z);
     let g_bc = corner(x + h, y - h, z);
     let g_ac = corner(x - h, y - h, z);
-    let mut d = [0.0; 10];
-    for k in 0..10 {
+    let mut d = [0.0; CORNER_FUNCTIONS];
+    for k in 0..CORNER_FUNCTIONS {
         d[k] = g_bd[k] - g_ad[k] - g_bc[k] + g_ac[k];
     }
     cell_stress(&d, z, nu)
+}
+
+/// All six stresses at (x, y, z) of a unit pressure on the cell of side
+/// `delta` centred at the origin: σ_yy(x, y) = σ_xx(y, x), σ_yz(x, y) = σ_xz(y, x).
+pub(crate) fn unit_cell(x: f64, y: f64, z: f64, delta: f64, nu: f64) -> [f64; COMPONENTS] {
+    let a = cell4(x, y, z, delta, nu);
+    let b = cell4(y, x, z, delta, nu);
+    [a[0], b[0], a[1], a[2], a[3], b[3]]
 }
 
 /// Von Mises equivalent stress of (xx, yy, zz, xy, xz, yz).

@@ -345,25 +345,30 @@ impl Subsurface {
         }
     }
 
-    /// Periodic plane: six multiplied inverse transforms.
+    /// Periodic plane: six multiplied inverse transforms (e^{−qz} once per mode).
     fn periodic_plane(&mut self, z: f64) -> Result<[Vec<f64>; COMPONENTS]> {
         let n = self.n;
         let nc = n / 2 + 1;
         let dq = std::f64::consts::TAU / self.size;
         let norm = 1.0 / (n * n) as f64;
-        let mut mult = vec![[(0.0, 0.0); COMPONENTS]; nc * n];
-        for kj in 0..nc {
-            for ki in 0..n {
-                let nyquist = (n % 2 == 0) && (ki == n / 2 || kj == n / 2);
+        let nu = self.poisson;
+        // Per mode (column-major as the spectrum): q_x, q_y, q, e^{−qz}.
+        let modes: Vec<[f64; 4]> = (0..nc * n)
+            .map(|k| {
+                let (kj, ki) = (k / n, k % n);
                 let (qx, qy) = (dq * Self::signed(ki, n), dq * kj as f64);
-                mult[kj * n + ki] = green::multipliers(qx, qy, z, self.poisson, nyquist);
-            }
-        }
+                let q = qx.hypot(qy);
+                let nyquist = n % 2 == 0 && (ki == n / 2 || kj == n / 2);
+                // A negative q flags the Nyquist modes (odd multipliers vanish).
+                [qx, qy, if nyquist { -q } else { q }, (-q * z).exp()]
+            })
+            .collect();
         let mut out: [Vec<f64>; COMPONENTS] = Default::default();
         let mut spec = vec![Complex64::new(0.0, 0.0); self.spectrum.len()];
         for (c, field) in out.iter_mut().enumerate() {
-            for ((s, &p), m) in spec.iter_mut().zip(&self.spectrum).zip(&mult) {
-                *s = p * Complex64::new(m[c].0 * norm, m[c].1 * norm);
+            for ((s, &p), m) in spec.iter_mut().zip(&self.spectrum).zip(&modes) {
+                let (re, im) = green::multiplier(c, m[0], m[1], m[2], m[3], z, nu);
+                *s = p * Complex64::new(re * norm, im * norm);
             }
             *field = vec![0.0; n * n];
             self.fft.inverse(&mut spec, field)?;
@@ -396,30 +401,49 @@ impl Subsurface {
         acc.map(|v| v / (n * n) as f64)
     }
 
-    /// Free plane: kernels on the 2N grid, DC-FFT.
+    /// Free plane: kernels on the 2N grid, DC-FFT. The xx, zz, xy and xz
+    /// kernels are transformed; yy and yz are their transposes (K_yy(x, y) =
+    /// K_xx(y, x)), read from the same spectra.
     fn free_plane(&mut self, z: f64) -> Result<[Vec<f64>; COMPONENTS]> {
         let n = self.n;
         let nf = 2 * n;
-        let kernels = free_kernels(n, self.size / n as f64, z, self.poisson);
+        let quadrants = free_quadrants(n, self.size / n as f64, z, self.poisson);
         let kfft = self.kernel_fft.as_mut().ok_or_else(|| Error::Inconsistent {
             name: "subsurface".into(),
             requirement: "a free grid has a kernel transform".into(),
         })?;
         let mut kspec = vec![Complex64::new(0.0, 0.0); kfft.spectrum_len()];
+        let mut spec = vec![Complex64::new(0.0, 0.0); kfft.spectrum_len()];
         let mut work = vec![0.0; nf * nf];
         let mut rows = vec![0.0; n * nf];
         let mut out: [Vec<f64>; COMPONENTS] = Default::default();
         let norm = 1.0 / (nf * nf) as f64;
-        for (c, field) in out.iter_mut().enumerate() {
-            kernels.fill(c, &mut work);
+        let nc = n + 1;
+        // (kernel quadrant, parity, output, transposed output)
+        let plan: [(usize, (f64, f64), usize, Option<usize>); 4] =
+            [(0, (1.0, 1.0), 0, Some(1)), (1, (1.0, 1.0), 2, None), (2, (-1.0, -1.0), 3, None), (3, (-1.0, 1.0), 4, Some(5))];
+        for (q, parity, c, transposed) in plan {
+            fill_circulant(&quadrants[q], n, parity, &mut work);
             kfft.forward(&mut work, &mut kspec)?;
-            for (k, p) in kspec.iter_mut().zip(&self.spectrum) {
-                *k = *k * *p * norm;
-            }
-            self.fft.inverse(&mut kspec, &mut rows)?;
-            *field = vec![0.0; n * n];
-            for i in 0..n {
-                field[i * n..(i + 1) * n].copy_from_slice(&rows[i * nf..i * nf + n]);
+            for (target, swap) in std::iter::once((c, false)).chain(transposed.map(|t| (t, true))) {
+                for kj in 0..nc {
+                    for ki in 0..nf {
+                        let k = if swap {
+                            // K̂_yy(k_x, k_y) = K̂_xx(k_y, k_x); even in its second index.
+                            let ky = if ki <= n { ki } else { nf - ki };
+                            ky * nf + kj
+                        } else {
+                            kj * nf + ki
+                        };
+                        spec[kj * nf + ki] = kspec[k] * self.spectrum[kj * nf + ki] * norm;
+                    }
+                }
+                self.fft.inverse(&mut spec, &mut rows)?;
+                let mut field = vec![0.0; n * n];
+                for i in 0..n {
+                    field[i * n..(i + 1) * n].copy_from_slice(&rows[i * nf..i * nf + n]);
+                }
+                out[target] = field;
             }
         }
         Ok(out)
@@ -444,63 +468,52 @@ impl Subsurface {
     }
 }
 
-/// The six cell kernels of one depth on the offsets 0 … N−1 in x and y
-/// (one quadrant; [`FreeKernels::fill`] mirrors them by parity).
-struct FreeKernels {
-    n: usize,
-    /// `values[c][(a·n + b)]` for offsets (a, b) ≥ 0.
-    values: Vec<[f64; COMPONENTS]>,
-}
-
-/// Parity (x, y) of each component's kernel: +1 even, −1 odd.
-const PARITY: [(f64, f64); COMPONENTS] = [(1.0, 1.0), (1.0, 1.0), (1.0, 1.0), (-1.0, -1.0), (-1.0, 1.0), (1.0, -1.0)];
-
-/// The cell kernels at depth z: corner functions on the (N+1)² corners
-/// (m − ½)Δ, m = 0 … N, shared by neighbouring cells, then corner sums.
-fn free_kernels(n: usize, delta: f64, z: f64, nu: f64) -> FreeKernels {
+/// The xx, zz, xy and xz cell kernels of depth z on the offsets (a, b),
+/// 0 ≤ a, b < N (one quadrant), `[q][a·n + b]`: corner functions on the
+/// corners ((a − ½)Δ, (b − ½)Δ), two rows at a time, shared by neighbouring cells.
+fn free_quadrants(n: usize, delta: f64, z: f64, nu: f64) -> [Vec<f64>; 4] {
     let m = n + 1;
-    let mut corners = vec![[0.0; 10]; m * m];
-    for a in 0..m {
+    let row = |a: usize| -> Vec<[f64; green::CORNER_FUNCTIONS]> {
         let u = (a as f64 - 0.5) * delta;
-        for b in 0..m {
-            corners[a * m + b] = green::corner(u, (b as f64 - 0.5) * delta, z);
-        }
-    }
-    let mut values = vec![[0.0; COMPONENTS]; n * n];
+        (0..m).map(|b| green::corner(u, (b as f64 - 0.5) * delta, z)).collect()
+    };
+    let mut out: [Vec<f64>; 4] = [vec![0.0; n * n], vec![0.0; n * n], vec![0.0; n * n], vec![0.0; n * n]];
+    let mut prev = row(0);
     for a in 0..n {
+        let next = row(a + 1);
         for b in 0..n {
-            let (g_bd, g_ad, g_bc, g_ac) =
-                (&corners[(a + 1) * m + b + 1], &corners[a * m + b + 1], &corners[(a + 1) * m + b], &corners[a * m + b]);
-            let mut dsum = [0.0; 10];
-            for k in 0..10 {
-                dsum[k] = g_bd[k] - g_ad[k] - g_bc[k] + g_ac[k];
+            let mut d = [0.0; green::CORNER_FUNCTIONS];
+            for (k, v) in d.iter_mut().enumerate() {
+                *v = next[b + 1][k] - prev[b + 1][k] - next[b][k] + prev[b][k];
             }
-            values[a * n + b] = green::cell_stress(&dsum, z, nu);
+            let s = green::cell_stress(&d, z, nu);
+            let k = a * n + b;
+            for (q, v) in s.into_iter().enumerate() {
+                out[q][k] = v;
+            }
         }
+        prev = next;
     }
-    FreeKernels { n, values }
+    out
 }
 
-impl FreeKernels {
-    /// Component `c` on the 2N × 2N circulant grid: offset (k, l) at index
-    /// (k mod 2N, l mod 2N), |k|, |l| ≤ N − 1; the row and column N are zero.
-    fn fill(&self, c: usize, work: &mut [f64]) {
-        let n = self.n;
-        let nf = 2 * n;
-        work.fill(0.0);
-        let (px, py) = PARITY[c];
-        for a in 0..n {
+/// A quadrant kernel on the 2N × 2N circulant grid: offset (k, l) at index
+/// (k mod 2N, l mod 2N), |k|, |l| ≤ N − 1, mirrored with the parity
+/// (x, y) (+1 even, −1 odd); row and column N are zero.
+fn fill_circulant(quadrant: &[f64], n: usize, (px, py): (f64, f64), work: &mut [f64]) {
+    let nf = 2 * n;
+    work.fill(0.0);
+    for a in 0..n {
+        let src = &quadrant[a * n..(a + 1) * n];
+        for (sign, r) in [(1.0, a), (px, nf - a)] {
+            if a == 0 && r == nf {
+                continue;
+            }
+            let dst = &mut work[(r % nf) * nf..(r % nf + 1) * nf];
             for b in 0..n {
-                let v = self.values[a * n + b][c];
-                work[a * nf + b] = v;
-                if a > 0 {
-                    work[(nf - a) * nf + b] = px * v;
-                }
+                dst[b] = sign * src[b];
                 if b > 0 {
-                    work[a * nf + nf - b] = py * v;
-                }
-                if a > 0 && b > 0 {
-                    work[(nf - a) * nf + nf - b] = px * py * v;
+                    dst[nf - b] = sign * py * src[b];
                 }
             }
         }
