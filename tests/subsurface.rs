@@ -44,7 +44,7 @@ fn a_fourier_mode_gives_the_plane_strain_closed_form() {
                     -ny * q * z * e * sn,
                 ];
                 for (comp, w) in want.iter().enumerate() {
-                    let got = plane.sigma[comp][k];
+                    let got = plane.stress[comp][k];
                     assert!((got - w).abs() < MODE_TOL, "k = ({kx}, {ky}), z = {z}, comp {comp}: {got} vs {w}");
                 }
             }
@@ -52,8 +52,8 @@ fn a_fourier_mode_gives_the_plane_strain_closed_form() {
             let node = [5, 11];
             let line = s.line(node, &[z]).unwrap();
             for comp in 0..6 {
-                let got = plane.sigma[comp][node[0] * n + node[1]];
-                assert!((line[0].sigma[comp] - got).abs() < MODE_TOL, "line vs plane, comp {comp}");
+                let got = plane.stress[comp][node[0] * n + node[1]];
+                assert!((line[0].stress[comp] - got).abs() < MODE_TOL, "line vs plane, comp {comp}");
             }
         }
     }
@@ -101,13 +101,13 @@ fn a_loaded_cell_far_away_is_boussinesqs_point_load() {
             let tol = 0.6 * d * d / rho2 * scale;
             let line = s.line(node, &[z]).unwrap()[0];
             for comp in 0..6 {
-                let got = plane.sigma[comp][node[0] * n + node[1]];
+                let got = plane.stress[comp][node[0] * n + node[1]];
                 if di == 0 && dj == 0 && comp != 2 {
                     // On the axis the point-load formulas divide 0 by 0; only σ_zz is compared.
                     continue;
                 }
                 assert!((got - want[comp]).abs() < tol, "z = {zc}Δ, ({di}, {dj}), comp {comp}: {got:e} vs {:e}", want[comp]);
-                assert!((line.sigma[comp] - got).abs() < 1e-12 * scale, "line vs plane ({di}, {dj}), comp {comp}");
+                assert!((line.stress[comp] - got).abs() < 1e-12 * scale, "line vs plane ({di}, {dj}), comp {comp}");
             }
         }
     }
@@ -160,7 +160,7 @@ fn hertz_axis_stresses_converge_to_johnson() {
         let mut best = (0.0, 0.0);
         for (pt, &zeta) in line.iter().zip(&zetas) {
             let (sz, sr) = hertz_axis(zeta, nu);
-            err = err.max((pt.sigma[2] / p0 - sz).abs()).max((pt.sigma[0] / p0 - sr).abs()).max((pt.sigma[1] / p0 - sr).abs());
+            err = err.max((pt.stress[2] / p0 - sz).abs()).max((pt.stress[0] / p0 - sr).abs()).max((pt.stress[1] / p0 - sr).abs());
             if pt.max_shear_stress / p0 > best.1 {
                 best = (zeta, pt.max_shear_stress / p0);
             }
@@ -247,10 +247,10 @@ fn periodic_stress_matches_tamaas_on_a_rough_pressure() {
         let plane = s.plane(z).unwrap();
         let line = s.line([i, j], &[z]).unwrap()[0];
         for c in 0..6 {
-            let got = plane.sigma[c][i * n + j];
+            let got = plane.stress[c][i * n + j];
             worst = worst.max((got - want[c]).abs() / pmax);
             assert!((got - want[c]).abs() < TAMAAS_TOL * pmax, "z = {z}, ({i}, {j}), comp {c}: {got:e} vs Tamaas {:e}", want[c]);
-            assert!((line.sigma[c] - got).abs() < TAMAAS_TOL * pmax);
+            assert!((line.stress[c] - got).abs() < TAMAAS_TOL * pmax);
         }
     }
     println!("largest difference from Tamaas: {worst:.1e} of the peak pressure");

@@ -67,7 +67,7 @@ pub struct StressPlane {
     /// Depth z, m.
     pub depth: f64,
     /// σ_xx, σ_yy, σ_zz, σ_xy, σ_xz, σ_yz, each `N × N` row-major (unit of p).
-    pub sigma: [Vec<f64>; COMPONENTS],
+    pub stress: [Vec<f64>; COMPONENTS],
     /// Von Mises stress, `N × N`.
     pub von_mises_stress: Vec<f64>,
     /// Maximum shear stress (σ₁ − σ₃)/2, `N × N`.
@@ -139,7 +139,7 @@ pub struct LinePoint {
     /// Depth z, m.
     pub depth: f64,
     /// σ_xx, σ_yy, σ_zz, σ_xy, σ_xz, σ_yz (unit of p).
-    pub sigma: Tensor,
+    pub stress: Tensor,
     /// Von Mises stress.
     pub von_mises_stress: f64,
     /// Maximum shear stress.
@@ -249,7 +249,7 @@ impl Subsurface {
             max_shear_stress: self.extremum(&ms, z),
             yielded_fraction: None,
         };
-        Ok(StressPlane { depth: z, sigma, von_mises_stress: vm, max_shear_stress: ms, summary })
+        Ok(StressPlane { depth: z, stress: sigma, von_mises_stress: vm, max_shear_stress: ms, summary })
     }
 
     /// Summaries of the planes at `depths`, the overall maxima and, with a
@@ -318,7 +318,7 @@ impl Subsurface {
                 };
                 Ok(LinePoint {
                     depth: z,
-                    sigma,
+                    stress: sigma,
                     von_mises_stress: green::von_mises(&sigma),
                     max_shear_stress: green::max_shear(&sigma),
                 })
