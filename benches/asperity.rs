@@ -4,7 +4,9 @@
 //!
 //! `cargo bench --bench asperity`
 
-use persson::asperity::{AsperityTheory, Bush, EllipticHertz, GreenwoodWilliamson, SpectralMoments};
+use persson::asperity::{
+    AsperityTheory, Bush, EllipticHertz, GreenwoodWilliamson, SpectralMoments,
+};
 
 fn main() {
     divan::main();
@@ -19,12 +21,16 @@ fn moments() -> SpectralMoments {
 
 /// 100 separations from −1 to 4 rms heights.
 fn separations(m: &SpectralMoments) -> Vec<f64> {
-    (0..100).map(|i| m.rms_height() * (-1.0 + 5.0 * i as f64 / 99.0)).collect()
+    (0..100)
+        .map(|i| m.rms_height() * (-1.0 + 5.0 * i as f64 / 99.0))
+        .collect()
 }
 
 /// 100 nominal pressures from 1e-5 to 1e-2 E*.
 fn pressures() -> Vec<f64> {
-    (0..100).map(|i| 1e-5 * 10f64.powf(3.0 * i as f64 / 99.0)).collect()
+    (0..100)
+        .map(|i| 1e-5 * 10f64.powf(3.0 * i as f64 / 99.0))
+        .collect()
 }
 
 #[divan::bench]
@@ -83,7 +89,14 @@ mod bem {
     /// the cut leaving ~10 % above it.
     fn field(n: usize) -> (Vec<f64>, f64) {
         let ql = std::f64::consts::TAU;
-        let s = SelfAffine::new(ql, 4.0 * ql, ql * n as f64 / 4.0, 0.8, Amplitude::RmsSlope(0.1)).unwrap();
+        let s = SelfAffine::new(
+            ql,
+            4.0 * ql,
+            ql * n as f64 / 4.0,
+            0.8,
+            Amplitude::RmsSlope(0.1),
+        )
+        .unwrap();
         let h = synthesize(&s, n, 1.0, 7).unwrap().heights;
         let mut sorted = h.clone();
         sorted.sort_by(f64::total_cmp);
@@ -96,7 +109,11 @@ mod bem {
         let (h, cut) = field(n);
         let mask: Vec<bool> = h.iter().map(|&v| v > cut).collect();
         let o = PatchOptions::default();
-        bencher.bench_local(|| patch_statistics(divan::black_box(&mask), n, 1.0, &o).unwrap().patch_count);
+        bencher.bench_local(|| {
+            patch_statistics(divan::black_box(&mask), n, 1.0, &o)
+                .unwrap()
+                .patch_count
+        });
     }
 
     fn pressure(n: usize) -> Vec<f64> {
@@ -108,13 +125,25 @@ mod bem {
     fn subsurface_plane_periodic(bencher: divan::Bencher, n: usize) {
         let p = pressure(n);
         let mut s = Subsurface::new(&p, n, 1.0, Boundary::Periodic, 0.3).unwrap();
-        bencher.bench_local(|| s.plane(divan::black_box(0.01)).unwrap().summary.von_mises_stress.value);
+        bencher.bench_local(|| {
+            s.plane(divan::black_box(0.01))
+                .unwrap()
+                .summary
+                .von_mises_stress
+                .value
+        });
     }
 
     #[divan::bench(args = [1024], sample_count = 5)]
     fn subsurface_plane_free(bencher: divan::Bencher, n: usize) {
         let p = pressure(n);
         let mut s = Subsurface::new(&p, n, 1.0, Boundary::Free, 0.3).unwrap();
-        bencher.bench_local(|| s.plane(divan::black_box(0.01)).unwrap().summary.von_mises_stress.value);
+        bencher.bench_local(|| {
+            s.plane(divan::black_box(0.01))
+                .unwrap()
+                .summary
+                .von_mises_stress
+                .value
+        });
     }
 }

@@ -119,7 +119,11 @@ fn overlap_of_gaussian_heights_is_f0() {
         let back = m.at_separation(q.separation).unwrap().contact_fraction;
         assert!(rel(back, v) < CLAIM, "h = {h}: {}", q.separation / s);
         if h >= 0.0 {
-            assert!((q.separation - h * s).abs() < CLAIM * s, "h = {h}: {}", q.separation / s);
+            assert!(
+                (q.separation - h * s).abs() < CLAIM * s,
+                "h = {h}: {}",
+                q.separation / s
+            );
         }
         assert!(p.contact_number_density.is_none() && p.validity.is_empty());
     }
@@ -163,15 +167,22 @@ fn greenwood_williamson_against_closed_forms() {
         let p = gw.at_separation(d).unwrap();
         let n = s.summit_density * f(0.0, h);
         let a = pi * s.summit_density * s.summit_radius * s.summit_rms_height * f(1.0, h);
-        let load = 4.0 / 3.0 * s.summit_density * e * s.summit_radius.sqrt()
-            * s.summit_rms_height.powf(1.5) * f(1.5, h);
+        let load = 4.0 / 3.0
+            * s.summit_density
+            * e
+            * s.summit_radius.sqrt()
+            * s.summit_rms_height.powf(1.5)
+            * f(1.5, h);
         assert!(rel(p.contact_number_density.unwrap(), n) < CLAIM, "h = {h}");
         assert!(rel(p.contact_fraction, a) < CLAIM, "h = {h}");
         assert!(rel(p.nominal_pressure, load) < CLAIM, "h = {h}");
         if h < 12.0 {
             // Round trip through the pressure search.
             let q = gw.at_pressure(load).unwrap();
-            assert!((q.separation - d).abs() < CLAIM * s.summit_rms_height.max(d.abs()), "h = {h}");
+            assert!(
+                (q.separation - d).abs() < CLAIM * s.summit_rms_height.max(d.abs()),
+                "h = {h}"
+            );
             assert!(rel(q.contact_fraction, a) < 1e-11, "h = {h}");
         }
     }
@@ -180,9 +191,27 @@ fn greenwood_williamson_against_closed_forms() {
 /// (α, η m2/m4, ⟨ξ⟩, Var ξ, ⟨u⟩) of the summits by Kac–Rice quadrature
 /// (asperity_reference.py `summits`; m0 = m2 = 1, m4 = α; ξ = h/√m0, u = κ̄/√m4).
 const SUMMITS: [(f64, f64, f64, f64, f64); 3] = [
-    (1.6, 3.0629383078988447195e-2, 1.7841241161527711145, 4.3949640235373820999e-1, 1.5045055561273500985),
-    (5.0, 3.0629383078988447195e-2, 1.0092530088080640193, 8.206388487531962272e-1, 1.5045055561273500985),
-    (20.0, 3.0629383078988447195e-2, 5.0462650440403200965e-1, 9.551597121882990568e-1, 1.5045055561273500985),
+    (
+        1.6,
+        3.0629383078988447195e-2,
+        1.7841241161527711145,
+        4.3949640235373820999e-1,
+        1.5045055561273500985,
+    ),
+    (
+        5.0,
+        3.0629383078988447195e-2,
+        1.0092530088080640193,
+        8.206388487531962272e-1,
+        1.5045055561273500985,
+    ),
+    (
+        20.0,
+        3.0629383078988447195e-2,
+        5.0462650440403200965e-1,
+        9.551597121882990568e-1,
+        1.5045055561273500985,
+    ),
 ];
 
 #[test]
@@ -194,9 +223,18 @@ fn summit_statistics_against_kac_rice() {
         let s = SpectralMoments::new(m0, m2, m4).unwrap().summits();
         assert!(rel(s.bandwidth_parameter, alpha) < CLAIM);
         assert!(rel(s.summit_density, eta * m4 / m2) < CLAIM, "α = {alpha}");
-        assert!(rel(s.summit_mean_height, mean * m0.sqrt()) < CLAIM, "α = {alpha}");
-        assert!(rel(s.summit_rms_height, (var * m0).sqrt()) < CLAIM, "α = {alpha}");
-        assert!(rel(s.summit_curvature, u * m4.sqrt()) < CLAIM, "α = {alpha}");
+        assert!(
+            rel(s.summit_mean_height, mean * m0.sqrt()) < CLAIM,
+            "α = {alpha}"
+        );
+        assert!(
+            rel(s.summit_rms_height, (var * m0).sqrt()) < CLAIM,
+            "α = {alpha}"
+        );
+        assert!(
+            rel(s.summit_curvature, u * m4.sqrt()) < CLAIM,
+            "α = {alpha}"
+        );
         assert!(rel(s.summit_radius * s.summit_curvature, 1.0) < 1e-15);
     }
 }
@@ -227,7 +265,12 @@ fn moments_of_a_self_affine_spectrum_against_closed_forms() {
     assert!(rel(sum.summit_density, m4 / (6.0 * pi * 3f64.sqrt() * m2)) < CLAIM);
     assert!(rel(sum.summit_radius, 0.375 * (pi / m4).sqrt()) < CLAIM);
     assert!(rel(sum.summit_mean_height, 4.0 * (m0 / (pi * alpha)).sqrt()) < CLAIM);
-    assert!(rel(sum.summit_rms_height, (m0 * (1.0 - 0.896_805_756_2 / alpha)).sqrt()) < 1e-10);
+    assert!(
+        rel(
+            sum.summit_rms_height,
+            (m0 * (1.0 - 0.896_805_756_2 / alpha)).sqrt()
+        ) < 1e-10
+    );
     // α grows like (q_s/q_l)^{2H} for a broad band (Nayak's measure of breadth).
     assert!(alpha > 1e3);
 }
@@ -259,7 +302,8 @@ fn map_moments_are_exact_for_cosines() {
     assert!(rel(mm.moments.m4, m4) < CLAIM);
     // Smooth map: coarsening by 2 changes m4 little, no flag.
     let ratio = mm.curvature_resolution_ratio.unwrap();
-    let coarse = 0.5 * (0.5 * (a * a + b * b) * s(qx, 2.0 * dx).powi(4) + 0.5 * b * b * s(qy, 2.0 * dy).powi(4));
+    let coarse = 0.5
+        * (0.5 * (a * a + b * b) * s(qx, 2.0 * dx).powi(4) + 0.5 * b * b * s(qy, 2.0 * dy).powi(4));
     assert!(rel(ratio, coarse / m4) < CLAIM);
     assert!(mm.validity.is_empty());
 }
@@ -268,9 +312,14 @@ fn map_moments_are_exact_for_cosines() {
 fn a_map_rough_at_the_pixel_is_flagged_and_a_coarse_map_is_an_error() {
     // Alternating pixels (the Nyquist mode) plus a slope: m4 is all pixel scale.
     let n = 16;
-    let h: Vec<f64> = (0..n * n).map(|k| if (k % n + k / n) % 2 == 0 { 1.0 } else { -1.0 }).collect();
+    let h: Vec<f64> = (0..n * n)
+        .map(|k| if (k % n + k / n) % 2 == 0 { 1.0 } else { -1.0 })
+        .collect();
     let mm = SpectralMoments::from_heights(&h, n, n, 1.0, 1.0, true).unwrap();
-    assert!(matches!(mm.validity[0], Validity::CurvatureUnresolved { .. }));
+    assert!(matches!(
+        mm.validity[0],
+        Validity::CurvatureUnresolved { .. }
+    ));
     match SpectralMoments::from_heights(&[0.0, 1.0, 0.5, 0.2], 2, 2, 1.0, 1.0, false) {
         Err(Error::InvalidParameter { name, .. }) => assert_eq!(name, "m4"),
         other => panic!("{other:?}"),
@@ -297,7 +346,11 @@ impl Spectrum for Unbounded {
     }
     fn moment(&self, k: i32, a: f64, _b: f64) -> persson::Result<Estimate> {
         let e = f64::from(k) - 4.0;
-        let value = if e < 0.0 { -a.powf(e) / e } else { f64::INFINITY };
+        let value = if e < 0.0 {
+            -a.powf(e) / e
+        } else {
+            f64::INFINITY
+        };
         Ok(Estimate { value, error: 0.0 })
     }
 }
@@ -305,7 +358,9 @@ impl Spectrum for Unbounded {
 #[test]
 fn a_spectrum_without_finite_fourth_moment_is_an_error_naming_m4() {
     match SpectralMoments::from_spectrum(&Unbounded) {
-        Err(Error::InvalidParameter { name, requirement, .. }) => {
+        Err(Error::InvalidParameter {
+            name, requirement, ..
+        }) => {
             assert_eq!(name, "m4", "{requirement}");
             assert!(requirement.contains("q_s"), "{requirement}");
         }
@@ -321,7 +376,10 @@ fn bush_low_load_limit_is_kappa_bush() {
         let m = SpectralMoments::new(1e-12, 1e-3, alpha * 1e-6 / 1e-12).unwrap();
         for hertz in [EllipticHertz::Exact, EllipticHertz::GeometricMean] {
             let k = Bush::new(&m, 3e6, hertz).unwrap().low_load_kappa().unwrap();
-            assert!((k - KAPPA_BUSH).abs() < CLAIM, "α = {alpha}, {hertz:?}: κ = {k:.17}");
+            assert!(
+                (k - KAPPA_BUSH).abs() < CLAIM,
+                "α = {alpha}, {hertz:?}: κ = {k:.17}"
+            );
         }
     }
     assert!((persson::kappa::Kappa::Bush.value() - KAPPA_BUSH).abs() < 1e-15);
@@ -350,33 +408,94 @@ fn bush_counts_every_summit_at_high_load() {
     for hertz in [EllipticHertz::Exact, EllipticHertz::GeometricMean] {
         let b = Bush::new(&m, 1.0, hertz).unwrap();
         let p = b.at_separation(-12.0).unwrap();
-        assert!(rel(p.contact_number_density.unwrap(), eta) < CLAIM, "{hertz:?}");
+        assert!(
+            rel(p.contact_number_density.unwrap(), eta) < CLAIM,
+            "{hertz:?}"
+        );
     }
 }
 
 /// BGT at α = 5 (m0 = m2 = 1, m4 = 5, E* = 1): (exact Hertz, δ, n, A/A0, σ0),
 /// nested mpmath quadrature (asperity_reference.py `bgt`).
 const BGT: [(bool, f64, f64, f64, f64); 8] = [
-    (true, -1.0, 1.5120086692728059e-1, 3.5474340751461925e-1, 3.7803525072650433e-1),
-    (true, 0.0, 1.3288211241972407e-1, 1.7901791278411305e-1, 1.6108621428517303e-1),
-    (true, 1.0, 7.6927037363670158e-2, 5.6040730770166379e-2, 4.3102358985660982e-2),
-    (true, 2.5, 7.7624176751981895e-3, 2.4602090127350254e-3, 1.6078757863424825e-3),
-    (false, -1.0, 1.5120086692728059e-1, 3.616042216216128e-1, 3.6835688503419982e-1),
-    (false, 0.0, 1.3288211241972407e-1, 1.8231411834116144e-1, 1.5718581710879232e-1),
-    (false, 1.0, 7.6927037363670158e-2, 5.6979231437398719e-2, 4.2157147477080721e-2),
-    (false, 2.5, 7.7624176751981895e-3, 2.4923423431664393e-3, 1.5803728913494604e-3),
+    (
+        true,
+        -1.0,
+        1.5120086692728059e-1,
+        3.5474340751461925e-1,
+        3.7803525072650433e-1,
+    ),
+    (
+        true,
+        0.0,
+        1.3288211241972407e-1,
+        1.7901791278411305e-1,
+        1.6108621428517303e-1,
+    ),
+    (
+        true,
+        1.0,
+        7.6927037363670158e-2,
+        5.6040730770166379e-2,
+        4.3102358985660982e-2,
+    ),
+    (
+        true,
+        2.5,
+        7.7624176751981895e-3,
+        2.4602090127350254e-3,
+        1.6078757863424825e-3,
+    ),
+    (
+        false,
+        -1.0,
+        1.5120086692728059e-1,
+        3.616042216216128e-1,
+        3.6835688503419982e-1,
+    ),
+    (
+        false,
+        0.0,
+        1.3288211241972407e-1,
+        1.8231411834116144e-1,
+        1.5718581710879232e-1,
+    ),
+    (
+        false,
+        1.0,
+        7.6927037363670158e-2,
+        5.6979231437398719e-2,
+        4.2157147477080721e-2,
+    ),
+    (
+        false,
+        2.5,
+        7.7624176751981895e-3,
+        2.4923423431664393e-3,
+        1.5803728913494604e-3,
+    ),
 ];
 
 #[test]
 fn bush_against_nested_quadrature() {
     let m = SpectralMoments::new(1.0, 1.0, 5.0).unwrap();
     for &(exact, delta, n, a, load) in &BGT {
-        let hertz = if exact { EllipticHertz::Exact } else { EllipticHertz::GeometricMean };
+        let hertz = if exact {
+            EllipticHertz::Exact
+        } else {
+            EllipticHertz::GeometricMean
+        };
         let b = Bush::new(&m, 1.0, hertz).unwrap();
         let p = b.at_separation(delta).unwrap();
-        assert!(rel(p.contact_number_density.unwrap(), n) < BGT_TOL, "{exact} δ = {delta}");
+        assert!(
+            rel(p.contact_number_density.unwrap(), n) < BGT_TOL,
+            "{exact} δ = {delta}"
+        );
         assert!(rel(p.contact_fraction, a) < BGT_TOL, "{exact} δ = {delta}");
-        assert!(rel(p.nominal_pressure, load) < BGT_TOL, "{exact} δ = {delta}");
+        assert!(
+            rel(p.nominal_pressure, load) < BGT_TOL,
+            "{exact} δ = {delta}"
+        );
         let q = b.at_pressure(load).unwrap();
         assert!((q.separation - delta).abs() < 1e-9, "{exact} δ = {delta}");
     }
@@ -396,7 +515,10 @@ fn bush_summit_table_matches_the_direct_integrals() {
                 let fast = b.scaled_integrals(delta).unwrap();
                 let direct = b.scaled_integrals_direct(delta).unwrap();
                 for j in 0..3 {
-                    assert!(rel(fast[j], direct[j]) < TABLE_TOL, "α = {alpha}, {hertz:?}, δ = {delta}, {j}");
+                    assert!(
+                        rel(fast[j], direct[j]) < TABLE_TOL,
+                        "α = {alpha}, {hertz:?}, δ = {delta}, {j}"
+                    );
                 }
             }
         }
@@ -425,13 +547,28 @@ fn bad_input_names_the_field() {
         other => panic!("{other:?}"),
     };
     assert_eq!(name(SpectralMoments::new(0.0, 1.0, 1.0).unwrap_err()), "m0");
-    assert_eq!(name(SpectralMoments::new(1.0, 1.0, 1.0).unwrap_err()), "bandwidth_parameter");
+    assert_eq!(
+        name(SpectralMoments::new(1.0, 1.0, 1.0).unwrap_err()),
+        "bandwidth_parameter"
+    );
     let m = SpectralMoments::new(1.0, 1.0, 5.0).unwrap();
-    assert_eq!(name(GreenwoodWilliamson::from_moments(&m, -1.0).unwrap_err()), "contact_modulus");
+    assert_eq!(
+        name(GreenwoodWilliamson::from_moments(&m, -1.0).unwrap_err()),
+        "contact_modulus"
+    );
     let gw = GreenwoodWilliamson::from_moments(&m, 1.0).unwrap();
-    assert_eq!(name(gw.at_separation(f64::INFINITY).unwrap_err()), "separation");
+    assert_eq!(
+        name(gw.at_separation(f64::INFINITY).unwrap_err()),
+        "separation"
+    );
     assert_eq!(name(gw.at_pressure(0.0).unwrap_err()), "nominal_pressure");
     let ring = SpectralMoments::new(1.0, 1.0, 1.5).unwrap();
-    assert_eq!(name(Bush::new(&ring, 1.0, EllipticHertz::Exact).unwrap_err()), "bandwidth_parameter");
-    assert_eq!(name(Overlap::gaussian(1.0, 0.0).unwrap_err()), "yield_stress");
+    assert_eq!(
+        name(Bush::new(&ring, 1.0, EllipticHertz::Exact).unwrap_err()),
+        "bandwidth_parameter"
+    );
+    assert_eq!(
+        name(Overlap::gaussian(1.0, 0.0).unwrap_err()),
+        "yield_stress"
+    );
 }

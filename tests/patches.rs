@@ -43,11 +43,25 @@ fn known_discs_give_the_exact_count_and_areas() {
     let cell = (size / n as f64).powi(2);
     let mut mask = vec![false; n * n];
     // Discs far apart (gaps ≥ 2 cells), radii 0.5 … 12 cells.
-    let discs = [(20.3, 20.7, 12.0), (20.0, 70.0, 6.5), (70.5, 25.5, 3.2), (90.0, 90.0, 9.9), (60.0, 60.0, 0.5), (100.0, 30.0, 1.5)];
-    let mut cells: Vec<usize> = discs.iter().map(|&(ci, cj, r)| disc(&mut mask, n, ci, cj, r, false)).collect();
+    let discs = [
+        (20.3, 20.7, 12.0),
+        (20.0, 70.0, 6.5),
+        (70.5, 25.5, 3.2),
+        (90.0, 90.0, 9.9),
+        (60.0, 60.0, 0.5),
+        (100.0, 30.0, 1.5),
+    ];
+    let mut cells: Vec<usize> = discs
+        .iter()
+        .map(|&(ci, cj, r)| disc(&mut mask, n, ci, cj, r, false))
+        .collect();
     for connectivity in [Connectivity::Four, Connectivity::Eight] {
         for boundary in [Boundary::Periodic, Boundary::Free] {
-            let o = PatchOptions { connectivity, boundary, bins_per_decade: 4 };
+            let o = PatchOptions {
+                connectivity,
+                boundary,
+                bins_per_decade: 4,
+            };
             let s = patch_statistics(&mask, n, size, &o).unwrap();
             assert_eq!(s.patch_count, discs.len(), "{connectivity:?} {boundary:?}");
             let mut got: Vec<usize> = s.patches.iter().map(|p| p.cells).collect();
@@ -61,9 +75,16 @@ fn known_discs_give_the_exact_count_and_areas() {
             let total: usize = cells.iter().sum();
             assert_eq!(s.contact_fraction, total as f64 / (n * n) as f64);
             // The distribution integrates to one and counts every patch.
-            let integral: f64 = s.area_distribution.iter().map(|b| b.density * (b.area_high - b.area_low)).sum();
+            let integral: f64 = s
+                .area_distribution
+                .iter()
+                .map(|b| b.density * (b.area_high - b.area_low))
+                .sum();
             assert!((integral - 1.0).abs() < 1e-12);
-            assert_eq!(s.area_distribution.iter().map(|b| b.count).sum::<usize>(), discs.len());
+            assert_eq!(
+                s.area_distribution.iter().map(|b| b.count).sum::<usize>(),
+                discs.len()
+            );
         }
     }
 }
@@ -80,15 +101,27 @@ fn periodic_wrap_joins_a_patch_cut_by_the_boundary() {
     let s = patch_statistics(&mask, n, 1.0, &periodic).unwrap();
     assert_eq!(s.patch_count, 2);
     assert!(s.patches.iter().any(|p| p.cells == cells));
-    let free = PatchOptions { boundary: Boundary::Free, ..periodic };
-    assert_eq!(patch_statistics(&mask, n, 1.0, &free).unwrap().patch_count, 6);
+    let free = PatchOptions {
+        boundary: Boundary::Free,
+        ..periodic
+    };
+    assert_eq!(
+        patch_statistics(&mask, n, 1.0, &free).unwrap().patch_count,
+        6
+    );
     // 8-connectivity across the corner of the grid: cells (0, 0) and (n−1, n−1).
     let mut m = vec![false; n * n];
     m[0] = true;
     m[n * n - 1] = true;
-    let eight = PatchOptions { connectivity: Connectivity::Eight, ..periodic };
+    let eight = PatchOptions {
+        connectivity: Connectivity::Eight,
+        ..periodic
+    };
     assert_eq!(patch_statistics(&m, n, 1.0, &eight).unwrap().patch_count, 1);
-    assert_eq!(patch_statistics(&m, n, 1.0, &periodic).unwrap().patch_count, 2);
+    assert_eq!(
+        patch_statistics(&m, n, 1.0, &periodic).unwrap().patch_count,
+        2
+    );
 }
 
 #[test]
@@ -113,8 +146,14 @@ fn perimeters_count_exposed_cell_edges() {
     let mut row = vec![false; n * n];
     row[..n].fill(true);
     let p = patch_statistics(&row, n, 0.5, &PatchOptions::default()).unwrap();
-    assert_eq!((p.patch_count, p.patches[0].perimeter), (1, 2.0 * n as f64 * d));
-    let free = PatchOptions { boundary: Boundary::Free, ..PatchOptions::default() };
+    assert_eq!(
+        (p.patch_count, p.patches[0].perimeter),
+        (1, 2.0 * n as f64 * d)
+    );
+    let free = PatchOptions {
+        boundary: Boundary::Free,
+        ..PatchOptions::default()
+    };
     let f = patch_statistics(&row, n, 0.5, &free).unwrap();
     assert_eq!(f.patches[0].perimeter, (2.0 * n as f64 + 2.0) * d);
 }
@@ -130,17 +169,29 @@ fn tail_fits_recover_known_shapes() {
     let exp: Vec<f64> = quantiles(20_000, |u| 1.0 - 0.3 * (1.0 - u).ln());
     let t = pressure_tail(&exp, Some(1.0)).unwrap();
     assert_eq!(t.better, TailShape::Exponential);
-    assert!((t.exponential_scale - 0.3).abs() < 1e-3, "{}", t.exponential_scale);
+    assert!(
+        (t.exponential_scale - 0.3).abs() < 1e-3,
+        "{}",
+        t.exponential_scale
+    );
     // Half-normal of width s = 2 (p_t = 0): s² = ⟨p²⟩, named Gaussian.
     let half: Vec<f64> = quantiles(20_000, |u| 2.0 * std::f64::consts::SQRT_2 * inv_erf(u));
     let g = pressure_tail(&half, Some(1e-300)).unwrap();
     assert_eq!(g.better, TailShape::Gaussian);
-    assert!((g.gaussian_width - 2.0).abs() < 2e-3, "{}", g.gaussian_width);
+    assert!(
+        (g.gaussian_width - 2.0).abs() < 2e-3,
+        "{}",
+        g.gaussian_width
+    );
     // The Gaussian tail beyond p_t = 3 of the same half-normal: the truncated fit keeps s = 2.
     let tail: Vec<f64> = half.iter().copied().filter(|&p| p >= 3.0).collect();
     let g3 = pressure_tail(&tail, Some(3.0)).unwrap();
     assert_eq!(g3.better, TailShape::Gaussian);
-    assert!((g3.gaussian_width - 2.0).abs() < 0.02, "{}", g3.gaussian_width);
+    assert!(
+        (g3.gaussian_width - 2.0).abs() < 0.02,
+        "{}",
+        g3.gaussian_width
+    );
     match pressure_tail(&[1.0, 2.0, 3.0], None) {
         Err(Error::InvalidParameter { name, .. }) => assert_eq!(name, "tail_start"),
         other => panic!("{other:?}"),
@@ -149,7 +200,9 @@ fn tail_fits_recover_known_shapes() {
 
 /// erf⁻¹ by Newton on libm-free erf (series/continued fraction through the crate is private).
 fn inv_erf(y: f64) -> f64 {
-    let erf = |x: f64| persson::asperity::gw_integral(0.0, -x * std::f64::consts::SQRT_2).unwrap() * 2.0 - 1.0;
+    let erf = |x: f64| {
+        persson::asperity::gw_integral(0.0, -x * std::f64::consts::SQRT_2).unwrap() * 2.0 - 1.0
+    };
     let mut x = 0.0;
     for _ in 0..100 {
         let e = erf(x) - y;
@@ -165,7 +218,10 @@ fn inv_erf(y: f64) -> f64 {
 #[test]
 fn bad_input() {
     assert!(patch_statistics(&[true; 10], 3, 1.0, &PatchOptions::default()).is_err());
-    let o = PatchOptions { bins_per_decade: 0, ..PatchOptions::default() };
+    let o = PatchOptions {
+        bins_per_decade: 0,
+        ..PatchOptions::default()
+    };
     match patch_statistics(&[true; 9], 3, 1.0, &o) {
         Err(Error::InvalidParameter { name, .. }) => assert_eq!(name, "bins_per_decade"),
         other => panic!("{other:?}"),

@@ -33,7 +33,10 @@ fn a_fourier_mode_gives_the_plane_strain_closed_form() {
             let (sxi, seta) = (-(1.0 - q * z) * e, -2.0 * nu * e);
             let lateral = -nu / (1.0 - nu) * mean;
             for k in (0..n * n).step_by(37) {
-                let (x, y) = ((k / n) as f64 * size / n as f64, (k % n) as f64 * size / n as f64);
+                let (x, y) = (
+                    (k / n) as f64 * size / n as f64,
+                    (k % n) as f64 * size / n as f64,
+                );
                 let (c, sn) = ((qx * x + qy * y).cos(), (qx * x + qy * y).sin());
                 let want = [
                     lateral + (nx * nx * sxi + ny * ny * seta) * c,
@@ -45,7 +48,10 @@ fn a_fourier_mode_gives_the_plane_strain_closed_form() {
                 ];
                 for (comp, w) in want.iter().enumerate() {
                     let got = plane.stress[comp][k];
-                    assert!((got - w).abs() < MODE_TOL, "k = ({kx}, {ky}), z = {z}, comp {comp}: {got} vs {w}");
+                    assert!(
+                        (got - w).abs() < MODE_TOL,
+                        "k = ({kx}, {ky}), z = {z}, comp {comp}: {got} vs {w}"
+                    );
                 }
             }
             // The direct line sum gives the same.
@@ -53,7 +59,10 @@ fn a_fourier_mode_gives_the_plane_strain_closed_form() {
             let line = s.line(node, &[z]).unwrap();
             for comp in 0..6 {
                 let got = plane.stress[comp][node[0] * n + node[1]];
-                assert!((line[0].stress[comp] - got).abs() < MODE_TOL, "line vs plane, comp {comp}");
+                assert!(
+                    (line[0].stress[comp] - got).abs() < MODE_TOL,
+                    "line vs plane, comp {comp}"
+                );
             }
         }
     }
@@ -95,7 +104,13 @@ fn a_loaded_cell_far_away_is_boussinesqs_point_load() {
         let plane = s.plane(z).unwrap();
         for (di, dj) in [(0usize, 0usize), (7, 0), (3, 9), (12, 12), (0, 15)] {
             let node = [c + di, c + dj];
-            let want = boussinesq(d * d, di as f64 * d, dj as f64 * d + if dj == 0 && di == 0 { 1e-300 } else { 0.0 }, z, nu);
+            let want = boussinesq(
+                d * d,
+                di as f64 * d,
+                dj as f64 * d + if dj == 0 && di == 0 { 1e-300 } else { 0.0 },
+                z,
+                nu,
+            );
             let scale = want.iter().fold(0.0f64, |m, v| m.max(v.abs()));
             let rho2 = ((di * di + dj * dj) as f64 + zc * zc) * d * d;
             let tol = 0.6 * d * d / rho2 * scale;
@@ -106,14 +121,21 @@ fn a_loaded_cell_far_away_is_boussinesqs_point_load() {
                     // On the axis the point-load formulas divide 0 by 0; only σ_zz is compared.
                     continue;
                 }
-                assert!((got - want[comp]).abs() < tol, "z = {zc}Δ, ({di}, {dj}), comp {comp}: {got:e} vs {:e}", want[comp]);
-                assert!((line.stress[comp] - got).abs() < 1e-12 * scale, "line vs plane ({di}, {dj}), comp {comp}");
+                assert!(
+                    (got - want[comp]).abs() < tol,
+                    "z = {zc}Δ, ({di}, {dj}), comp {comp}: {got:e} vs {:e}",
+                    want[comp]
+                );
+                assert!(
+                    (line.stress[comp] - got).abs() < 1e-12 * scale,
+                    "line vs plane ({di}, {dj}), comp {comp}"
+                );
             }
         }
     }
 }
 
-/// Johnson (1985) §3.4 (Eqs. 3.45?) on the axis of a Hertz contact of radius a, peak p0:
+/// Johnson (1985) §3.4 on the axis of a Hertz contact of radius a, peak p0:
 /// σ_z/p0 = −1/(1 + ζ²), σ_r/p0 = −(1 + ν)(1 − ζ atan(1/ζ)) + 1/(2(1 + ζ²)), ζ = z/a.
 fn hertz_axis(zeta: f64, nu: f64) -> (f64, f64) {
     let sz = -1.0 / (1.0 + zeta * zeta);
@@ -146,7 +168,10 @@ fn hertz_axis_stresses_converge_to_johnson() {
     let nu = 0.3;
     let (zmax, tmax) = hertz_max_shear(nu);
     // Johnson's rounded figures: τ_max ≈ 0.31 p0 at z ≈ 0.48 a.
-    assert!((tmax - 0.31).abs() < 0.005 && (zmax - 0.48).abs() < 0.005, "{tmax} at {zmax}");
+    assert!(
+        (tmax - 0.31).abs() < 0.005 && (zmax - 0.48).abs() < 0.005,
+        "{tmax} at {zmax}"
+    );
     let mut last = f64::INFINITY;
     for n in [64usize, 128, 256] {
         let case = HertzCase::new(n, Boundary::Free);
@@ -160,7 +185,10 @@ fn hertz_axis_stresses_converge_to_johnson() {
         let mut best = (0.0, 0.0);
         for (pt, &zeta) in line.iter().zip(&zetas) {
             let (sz, sr) = hertz_axis(zeta, nu);
-            err = err.max((pt.stress[2] / p0 - sz).abs()).max((pt.stress[0] / p0 - sr).abs()).max((pt.stress[1] / p0 - sr).abs());
+            err = err
+                .max((pt.stress[2] / p0 - sz).abs())
+                .max((pt.stress[0] / p0 - sr).abs())
+                .max((pt.stress[1] / p0 - sr).abs());
             if pt.max_shear_stress / p0 > best.1 {
                 best = (zeta, pt.max_shear_stress / p0);
             }
@@ -186,11 +214,20 @@ fn bad_input_names_the_field() {
         assert_eq!(name(s.plane(bad).unwrap_err()), "depth");
         assert_eq!(name(s.line([0, 0], &[bad]).unwrap_err()), "depth");
     }
-    assert_eq!(name(Subsurface::new(&p, 8, 1.0, Boundary::Free, 0.6).unwrap_err()), "poisson");
-    assert_eq!(name(s.report(&[0.1], Some(-1.0)).unwrap_err()), "tensile_yield_stress");
+    assert_eq!(
+        name(Subsurface::new(&p, 8, 1.0, Boundary::Free, 0.6).unwrap_err()),
+        "poisson"
+    );
+    assert_eq!(
+        name(s.report(&[0.1], Some(-1.0)).unwrap_err()),
+        "tensile_yield_stress"
+    );
     let mut q = p.clone();
     q[9] = f64::NAN;
-    assert_eq!(name(Subsurface::new(&q, 8, 1.0, Boundary::Free, 0.3).unwrap_err()), "pressure[1, 1]");
+    assert_eq!(
+        name(Subsurface::new(&q, 8, 1.0, Boundary::Free, 0.3).unwrap_err()),
+        "pressure[1, 1]"
+    );
 }
 
 #[test]
@@ -217,18 +254,162 @@ fn hertz_first_yield_is_at_the_maximum_of_von_mises() {
 /// stresses differ by up to 7e-5 of the peak pressure, the normal ones not at
 /// all): (depth, row, column, [xx, yy, zz, xy, xz, yz]).
 const TAMAAS: [(f64, usize, usize, [f64; 6]); 12] = [
-    (0.015625, 33, 58, [-2.41279053737348224e-02, -2.67450157337098919e-02, -8.25460880809450737e-02, 2.52443336304369924e-03, 5.63513253216949093e-03, -4.17154922309450997e-03]),
-    (0.015625, 5, 40, [-1.84679391227404434e-04, 6.47018560449989685e-05, -2.06858125976402193e-04, -1.42154562680326969e-04, 1.75981511201339168e-05, -1.37854752225991835e-04]),
-    (0.015625, 33, 17, [6.36733107867619680e-04, -4.10581944337198097e-04, -9.10134793823074166e-04, 3.54360000119958909e-04, -2.11092124508493513e-04, 9.24598992283657910e-04]),
-    (0.03125, 33, 58, [-1.04026083627783254e-02, -1.16120587245056323e-02, -6.06939221301948384e-02, 4.12350863418078483e-03, 6.69848298892522336e-03, -4.87975623215087390e-03]),
-    (0.03125, 5, 40, [-2.75633847699826608e-03, -2.77854898361590101e-03, -1.20751487478316846e-03, 1.80542502866778932e-04, -9.45897901063023430e-06, -3.78662713661246677e-04]),
-    (0.03125, 33, 17, [-1.80069384371451245e-03, -1.49890468495312299e-03, -1.98286171663425870e-03, 5.12288474238854159e-05, 3.16815704560520245e-04, 1.46394175408842871e-03]),
-    (0.0625, 33, 58, [-5.10088473543997018e-03, -3.88608865494186311e-03, -3.56840800046661910e-02, 2.66377561330989002e-03, 5.00019328714362485e-03, -3.79453015960997059e-03]),
-    (0.0625, 5, 40, [-4.55463196037005080e-03, -5.11487830070047993e-03, -4.70952856035660068e-03, 4.47473609667337112e-04, 1.60032400845816231e-04, -3.04694576302183160e-04]),
-    (0.0625, 33, 17, [-4.33613193687470717e-03, -2.86539567707261474e-03, -3.81976797396068810e-03, 4.26461411391020345e-06, 1.17925915002353742e-03, 1.45674781423573633e-03]),
-    (0.125, 33, 58, [-3.91081124917879233e-03, -2.67201157199876407e-03, -1.89321586500032502e-02, 8.28095009282811870e-04, 1.97604387339361115e-03, -1.48653051828028676e-03]),
-    (0.125, 5, 40, [-4.60003305313526432e-03, -4.85291723811163804e-03, -9.07021260445705843e-03, 3.34272723247386609e-04, 2.81091897721591206e-04, 3.10180412543385969e-04]),
-    (0.125, 33, 17, [-4.90046140106366497e-03, -4.06047891992235462e-03, -7.02834692469436230e-03, 2.05594888845367362e-05, 9.03723647454885543e-04, 1.17803133569533802e-03]),
+    (
+        0.015625,
+        33,
+        58,
+        [
+            -2.41279053737348224e-02,
+            -2.67450157337098919e-02,
+            -8.25460880809450737e-02,
+            2.52443336304369924e-03,
+            5.63513253216949093e-03,
+            -4.17154922309450997e-03,
+        ],
+    ),
+    (
+        0.015625,
+        5,
+        40,
+        [
+            -1.84679391227404434e-04,
+            6.47018560449989685e-05,
+            -2.06858125976402193e-04,
+            -1.42154562680326969e-04,
+            1.75981511201339168e-05,
+            -1.37854752225991835e-04,
+        ],
+    ),
+    (
+        0.015625,
+        33,
+        17,
+        [
+            6.36733107867619680e-04,
+            -4.10581944337198097e-04,
+            -9.10134793823074166e-04,
+            3.54360000119958909e-04,
+            -2.11092124508493513e-04,
+            9.24598992283657910e-04,
+        ],
+    ),
+    (
+        0.03125,
+        33,
+        58,
+        [
+            -1.04026083627783254e-02,
+            -1.16120587245056323e-02,
+            -6.06939221301948384e-02,
+            4.12350863418078483e-03,
+            6.69848298892522336e-03,
+            -4.87975623215087390e-03,
+        ],
+    ),
+    (
+        0.03125,
+        5,
+        40,
+        [
+            -2.75633847699826608e-03,
+            -2.77854898361590101e-03,
+            -1.20751487478316846e-03,
+            1.80542502866778932e-04,
+            -9.45897901063023430e-06,
+            -3.78662713661246677e-04,
+        ],
+    ),
+    (
+        0.03125,
+        33,
+        17,
+        [
+            -1.80069384371451245e-03,
+            -1.49890468495312299e-03,
+            -1.98286171663425870e-03,
+            5.12288474238854159e-05,
+            3.16815704560520245e-04,
+            1.46394175408842871e-03,
+        ],
+    ),
+    (
+        0.0625,
+        33,
+        58,
+        [
+            -5.10088473543997018e-03,
+            -3.88608865494186311e-03,
+            -3.56840800046661910e-02,
+            2.66377561330989002e-03,
+            5.00019328714362485e-03,
+            -3.79453015960997059e-03,
+        ],
+    ),
+    (
+        0.0625,
+        5,
+        40,
+        [
+            -4.55463196037005080e-03,
+            -5.11487830070047993e-03,
+            -4.70952856035660068e-03,
+            4.47473609667337112e-04,
+            1.60032400845816231e-04,
+            -3.04694576302183160e-04,
+        ],
+    ),
+    (
+        0.0625,
+        33,
+        17,
+        [
+            -4.33613193687470717e-03,
+            -2.86539567707261474e-03,
+            -3.81976797396068810e-03,
+            4.26461411391020345e-06,
+            1.17925915002353742e-03,
+            1.45674781423573633e-03,
+        ],
+    ),
+    (
+        0.125,
+        33,
+        58,
+        [
+            -3.91081124917879233e-03,
+            -2.67201157199876407e-03,
+            -1.89321586500032502e-02,
+            8.28095009282811870e-04,
+            1.97604387339361115e-03,
+            -1.48653051828028676e-03,
+        ],
+    ),
+    (
+        0.125,
+        5,
+        40,
+        [
+            -4.60003305313526432e-03,
+            -4.85291723811163804e-03,
+            -9.07021260445705843e-03,
+            3.34272723247386609e-04,
+            2.81091897721591206e-04,
+            3.10180412543385969e-04,
+        ],
+    ),
+    (
+        0.125,
+        33,
+        17,
+        [
+            -4.90046140106366497e-03,
+            -4.06047891992235462e-03,
+            -7.02834692469436230e-03,
+            2.05594888845367362e-05,
+            9.03723647454885543e-04,
+            1.17803133569533802e-03,
+        ],
+    ),
 ];
 
 /// Both codes evaluate the same Fourier solution: rounding of two FFTs.
@@ -236,7 +417,8 @@ const TAMAAS_TOL: f64 = 1e-12;
 
 #[test]
 fn periodic_stress_matches_tamaas_on_a_rough_pressure() {
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/reference/data/asperity_tamaas_pressure.npy");
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/reference/data/asperity_tamaas_pressure.npy");
     let surf = persson::bem::surface::read_height_map(&path, 1.0).unwrap();
     let p = surf.heights;
     let n = surf.n;
@@ -249,7 +431,11 @@ fn periodic_stress_matches_tamaas_on_a_rough_pressure() {
         for c in 0..6 {
             let got = plane.stress[c][i * n + j];
             worst = worst.max((got - want[c]).abs() / pmax);
-            assert!((got - want[c]).abs() < TAMAAS_TOL * pmax, "z = {z}, ({i}, {j}), comp {c}: {got:e} vs Tamaas {:e}", want[c]);
+            assert!(
+                (got - want[c]).abs() < TAMAAS_TOL * pmax,
+                "z = {z}, ({i}, {j}), comp {c}: {got:e} vs Tamaas {:e}",
+                want[c]
+            );
             assert!((line.stress[c] - got).abs() < TAMAAS_TOL * pmax);
         }
     }

@@ -139,7 +139,11 @@ impl Bush {
     /// // BGT's low-load law A/A0 = √(2π) σ0/(E* h'_rms).
     /// assert!((bgt.low_load_kappa().unwrap() - (2.0 * std::f64::consts::PI).sqrt()).abs() < 1e-12);
     /// ```
-    pub fn new(moments: &SpectralMoments, contact_modulus: f64, hertz: EllipticHertz) -> Result<Self> {
+    pub fn new(
+        moments: &SpectralMoments,
+        contact_modulus: f64,
+        hertz: EllipticHertz,
+    ) -> Result<Self> {
         check::positive("contact_modulus", contact_modulus)?;
         let alpha = moments.bandwidth_parameter();
         let s_u2 = 2.0 / 3.0 - 1.0 / alpha;
@@ -266,7 +270,15 @@ impl Bush {
         let c = mu.max(0.0);
         let lo = (c - WIDTH * s_u).max(0.0);
         let hi = c + WIDTH * s_u + 12.0 * (2.0f64 / 3.0).sqrt();
-        let q = integrate("BGT u-integral", f, lo, hi, 1e-300, self.tolerance, MAX_EVALS)?;
+        let q = integrate(
+            "BGT u-integral",
+            f,
+            lo,
+            hi,
+            1e-300,
+            self.tolerance,
+            MAX_EVALS,
+        )?;
         Ok(q.value)
     }
 
@@ -280,7 +292,10 @@ impl Bush {
         let delta = d / self.moments.rms_height();
         let load = match self.table().and_then(|t| t.scaled(delta)) {
             Some(s) => s[2],
-            None => self.s_c.powf(2.5) * self.integral(delta, Order::ThreeHalves, &self.kernels.load, 3.5)?,
+            None => {
+                self.s_c.powf(2.5)
+                    * self.integral(delta, Order::ThreeHalves, &self.kernels.load, 3.5)?
+            }
         };
         Ok(self.load_scale().ln() + Self::ln_phi(delta) + load.ln())
     }
@@ -310,7 +325,10 @@ impl Bush {
 
     /// (2/(3π)) E* √m2 α^{3/4}.
     fn load_scale(&self) -> f64 {
-        2.0 / (3.0 * std::f64::consts::PI) * self.e_star * self.moments.m2.sqrt() * self.alpha.powf(0.75)
+        2.0 / (3.0 * std::f64::consts::PI)
+            * self.e_star
+            * self.moments.m2.sqrt()
+            * self.alpha.powf(0.75)
     }
 }
 
@@ -326,7 +344,9 @@ impl AsperityTheory for Bush {
             separation: d,
             contact_fraction: area,
             nominal_pressure: self.load_scale() * phi * s.load,
-            contact_number_density: Some(m.m4 / (2.0 * std::f64::consts::PI * m.m2) * phi * s.count),
+            contact_number_density: Some(
+                m.m4 / (2.0 * std::f64::consts::PI * m.m2) * phi * s.count,
+            ),
             validity: point_validity(&self.validity, area),
         })
     }

@@ -122,7 +122,11 @@ pub(crate) fn tail_moment(order: Order, h: f64) -> f64 {
         return 0.0;
     }
     if h == f64::NEG_INFINITY {
-        return if order == Order::Zero { 1.0 } else { f64::INFINITY };
+        return if order == Order::Zero {
+            1.0
+        } else {
+            f64::INFINITY
+        };
     }
     if h >= 0.0 {
         scaled_tail_moment(order, h) * phi(h)
@@ -256,7 +260,11 @@ fn bearing_cut_upper(f: f64) -> f64 {
     }
     // Start: F_0 ≈ φ(h)/h ⇒ h ≈ √(−2 ln(f √(2π)))·(…); clamp for f near ½.
     let l = -2.0 * (f * SQRT_TAU).ln();
-    let mut h = if l > 1.0 { (l - l.ln()).max(0.5).sqrt() } else { 0.5 };
+    let mut h = if l > 1.0 {
+        (l - l.ln()).max(0.5).sqrt()
+    } else {
+        0.5
+    };
     let lnf = f.ln();
     for _ in 0..50 {
         // ln F_0(h) = ln R_0(h) + ln φ(h); d/dh ln F_0 = −1/R_0.

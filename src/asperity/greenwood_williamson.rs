@@ -61,7 +61,11 @@ impl SummitParameters {
         check::positive("summit_radius", self.summit_radius)?;
         check::positive("summit_rms_height", self.summit_rms_height)?;
         if !self.summit_mean_height.is_finite() {
-            return Err(crate::Error::invalid("summit_mean_height", self.summit_mean_height, "finite"));
+            return Err(crate::Error::invalid(
+                "summit_mean_height",
+                self.summit_mean_height,
+                "finite",
+            ));
         }
         Ok(self)
     }
@@ -133,14 +137,17 @@ impl GreenwoodWilliamson {
     /// (4/3) η E* β^{1/2} σ_s^{3/2}.
     fn load_scale(&self) -> f64 {
         let s = &self.summits;
-        4.0 / 3.0 * s.summit_density * self.e_star * s.summit_radius.sqrt() * s.summit_rms_height.powf(1.5)
+        4.0 / 3.0
+            * s.summit_density
+            * self.e_star
+            * s.summit_radius.sqrt()
+            * s.summit_rms_height.powf(1.5)
     }
 
     /// ln σ0(d), finite where σ0 underflows.
     fn ln_pressure(&self, d: f64) -> f64 {
         let t = self.standardised(d);
-        self.load_scale().ln()
-            + ln_scaled_tail_moment(Order::ThreeHalves, t)
+        self.load_scale().ln() + ln_scaled_tail_moment(Order::ThreeHalves, t)
             - 0.5 * t * t
             - SQRT_TAU.ln()
     }
@@ -152,7 +159,11 @@ impl AsperityTheory for GreenwoodWilliamson {
         let s = &self.summits;
         let t = self.standardised(d);
         let pi = std::f64::consts::PI;
-        let area = pi * s.summit_density * s.summit_radius * s.summit_rms_height * tail_moment(Order::One, t);
+        let area = pi
+            * s.summit_density
+            * s.summit_radius
+            * s.summit_rms_height
+            * tail_moment(Order::One, t);
         Ok(AsperityPoint {
             separation: d,
             contact_fraction: area,

@@ -4,7 +4,9 @@
 //! # Formula
 //! Gap (κ1 x² + κ2 y²)/2 with κ1 ≥ κ2 > 0, ρ = κ2/κ1, interference w. The
 //! contact ellipse has semi-axes a ≥ b, k' = b/a, m = 1 − k'² (Johnson 1985,
-//! §4.2, Eqs. 4.26–4.30 with K(m), E(m) the complete elliptic integrals):
+//! §4.2 (equation numbers not checked here) with K(m), E(m) the complete
+//! elliptic integrals; every factor verified below against mpmath and in the
+//! sphere limit F_A = F_P = 1):
 //! ```text
 //! κ1/κ2 = [E − k'²K] / [k'² (K − E)] = R_D(0, 1, k'²) / R_D(0, k'², 1)          (fixes k')
 //! area  = π w / √(κ1κ2) · F_A,   F_A = 2k' R_D(0, k'², 1) √(κ1/κ2) / (3K)
@@ -76,7 +78,8 @@ pub(crate) fn carlson_rd(x0: f64, y0: f64, z0: f64) -> f64 {
     let e3 = (3.0 * dx * dy - 8.0 * dz * dz) * dz;
     let e4 = 3.0 * (dx * dy - dz * dz) * dz * dz;
     let e5 = dx * dy * dz * dz * dz;
-    let series = 1.0 - 3.0 * e2 / 14.0 + e3 / 6.0 + 9.0 * e2 * e2 / 88.0 - 3.0 * e4 / 22.0
+    let series = 1.0 - 3.0 * e2 / 14.0 + e3 / 6.0 + 9.0 * e2 * e2 / 88.0
+        - 3.0 * e4 / 22.0
         - 9.0 * e2 * e3 / 52.0
         + 3.0 * e5 / 26.0;
     scale * a.powf(-1.5) * series + 3.0 * sum
@@ -98,7 +101,10 @@ const MAX_ITERATIONS: usize = 200;
 /// [`Error::NotConverged`] if the search for k' fails (not expected).
 pub(crate) fn factors(v: f64, one_minus_v: f64) -> Result<Factors> {
     if v <= 0.0 {
-        return Ok(Factors { area: 1.0, load: 1.0 });
+        return Ok(Factors {
+            area: 1.0,
+            load: 1.0,
+        });
     }
     let c = v.sqrt();
     // 1/ρ = κ1/κ2 = (1 + c)/(1 − c), 1 − c = (1 − v)/(1 + c).
@@ -156,7 +162,8 @@ pub(crate) fn factors(v: f64, one_minus_v: f64) -> Result<Factors> {
     let rd = carlson_rd(0.0, k2, 1.0);
     let sqrt_ratio = (carlson_rd(0.0, 1.0, k2) / rd).sqrt();
     let area = 2.0 * kp * rd * sqrt_ratio / (3.0 * big_k);
-    let load = std::f64::consts::PI / (2.0 * big_k) * (2.0 * rd * sqrt_ratio / (3.0 * big_k)).sqrt();
+    let load =
+        std::f64::consts::PI / (2.0 * big_k) * (2.0 * rd * sqrt_ratio / (3.0 * big_k)).sqrt();
     if !(area.is_finite() && load.is_finite()) {
         return Err(not_converged(v));
     }

@@ -231,7 +231,11 @@ struct Integrand {
 
 impl Integrand {
     fn value(&self, lambda: f64) -> f64 {
-        0.5 * self.nodes.iter().map(|&(v, wg)| wg * (-lambda * v).exp()).sum::<f64>()
+        0.5 * self
+            .nodes
+            .iter()
+            .map(|&(v, wg)| wg * (-lambda * v).exp())
+            .sum::<f64>()
     }
 
     fn kernel(&self, f_small: Option<Chebyshev>) -> Kernel {
@@ -239,7 +243,11 @@ impl Integrand {
             .windows(2)
             .map(|w| Chebyshev::fit(w[0], w[1], CHEBYSHEV_TERMS, |l| self.value(l)))
             .collect();
-        Kernel { gamma: self.gamma, pieces, f_small }
+        Kernel {
+            gamma: self.gamma,
+            pieces,
+            f_small,
+        }
     }
 }
 
@@ -255,7 +263,10 @@ pub(crate) fn build(hertz: EllipticHertz, step: f64) -> Result<Kernels> {
         }
         let f = match hertz {
             EllipticHertz::Exact => factors(v, w)?,
-            EllipticHertz::GeometricMean => super::hertz_ellipse::Factors { area: 1.0, load: 1.0 },
+            EllipticHertz::GeometricMean => super::hertz_ellipse::Factors {
+                area: 1.0,
+                load: 1.0,
+            },
         };
         count.push((v, weight * w));
         area.push((v, weight * w.sqrt() * f.area));
@@ -271,9 +282,21 @@ pub(crate) fn build(hertz: EllipticHertz, step: f64) -> Result<Kernels> {
         Ok(Some(Chebyshev::from_values(0.0, F_SERIES_END, &vals)))
     };
     Ok(Kernels {
-        count: Integrand { gamma: 1.0, nodes: count }.kernel(None),
-        area: Integrand { gamma: 0.5, nodes: area }.kernel(small(|f| f.area)?),
-        load: Integrand { gamma: 0.75, nodes: load }.kernel(small(|f| f.load)?),
+        count: Integrand {
+            gamma: 1.0,
+            nodes: count,
+        }
+        .kernel(None),
+        area: Integrand {
+            gamma: 0.5,
+            nodes: area,
+        }
+        .kernel(small(|f| f.area)?),
+        load: Integrand {
+            gamma: 0.75,
+            nodes: load,
+        }
+        .kernel(small(|f| f.load)?),
     })
 }
 
@@ -314,7 +337,9 @@ mod tests {
             let k = kernels(hertz).unwrap();
             // Direct sums at step/2 for the three kernels.
             let nodes = de_nodes(DE_STEP / 2.0);
-            for lambda in [0.0, 0.3, 1.0, 2.7, 9.9, 30.0, 100.0, 255.0, 256.5, 400.0, 1e3] {
+            for lambda in [
+                0.0, 0.3, 1.0, 2.7, 9.9, 30.0, 100.0, 255.0, 256.5, 400.0, 1e3,
+            ] {
                 for (kern, gamma, which) in [
                     (&k.count, 1.0, 0usize),
                     (&k.area, 0.5, 1),
@@ -350,7 +375,10 @@ mod tests {
         for lambda in [0.5, 3.0, 20.0, 100.0, 500.0] {
             let exact = 0.5 * (1.0 / lambda - (-(-lambda as f64).exp_m1()) / (lambda * lambda));
             let got = k.count.eval(lambda);
-            assert!(((got - exact) / exact).abs() < KERNEL_TOL, "λ = {lambda}: {got} vs {exact}");
+            assert!(
+                ((got - exact) / exact).abs() < KERNEL_TOL,
+                "λ = {lambda}: {got} vs {exact}"
+            );
         }
         assert!((k.count.eval(0.0) - 0.25).abs() < KERNEL_TOL);
     }

@@ -256,7 +256,10 @@ fn not_bracketed(target: f64) -> Error {
 pub(crate) fn point_validity(model: &[Validity], contact_fraction: f64) -> Vec<Validity> {
     let mut v = model.to_vec();
     if contact_fraction > COALESCENCE_FRACTION {
-        v.push(Validity::Coalescence { contact_fraction, threshold: COALESCENCE_FRACTION });
+        v.push(Validity::Coalescence {
+            contact_fraction,
+            threshold: COALESCENCE_FRACTION,
+        });
     }
     v
 }

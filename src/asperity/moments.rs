@@ -208,11 +208,20 @@ impl SpectralMoments {
             ));
         }
         if let Some(k) = heights.iter().position(|h| !h.is_finite()) {
-            return Err(Error::invalid(format!("height[{}, {}]", k / nx, k % nx), heights[k], "finite"));
+            return Err(Error::invalid(
+                format!("height[{}, {}]", k / nx, k % nx),
+                heights[k],
+                "finite",
+            ));
         }
         let mean = heights.iter().sum::<f64>() / heights.len() as f64;
         let m0 = heights.iter().map(|h| (h - mean).powi(2)).sum::<f64>() / heights.len() as f64;
-        let map = Grid { h: heights, nx, ny, periodic };
+        let map = Grid {
+            h: heights,
+            nx,
+            ny,
+            periodic,
+        };
         let m2 = 0.5 * (map.first(1, 0) / (dx * dx) + map.first(0, 1) / (dy * dy));
         let m4 = 0.5 * (map.second(1, 0) / dx.powi(4) + map.second(0, 1) / dy.powi(4));
         if !(m4 > 0.0) {
@@ -223,7 +232,9 @@ impl SpectralMoments {
             ));
         }
         let ratio = (nx >= 5 && ny >= 5).then(|| {
-            let coarse = 0.5 * (map.second(2, 0) / (4.0 * dx * dx).powi(2) + map.second(0, 2) / (4.0 * dy * dy).powi(2));
+            let coarse = 0.5
+                * (map.second(2, 0) / (4.0 * dx * dx).powi(2)
+                    + map.second(0, 2) / (4.0 * dy * dy).powi(2));
             coarse / m4
         });
         // Finite-difference moments of a map need not obey α ≥ 3/2 (a map
@@ -242,7 +253,11 @@ impl SpectralMoments {
             }],
             _ => Vec::new(),
         };
-        Ok(MapMoments { moments, curvature_resolution_ratio: ratio, validity })
+        Ok(MapMoments {
+            moments,
+            curvature_resolution_ratio: ratio,
+            validity,
+        })
     }
 
     /// Nayak's bandwidth parameter α = m0 m4/m2².
@@ -299,7 +314,10 @@ impl SpectralMoments {
     pub fn validity(&self) -> Vec<Validity> {
         let alpha = self.bandwidth_parameter();
         if alpha < SMALL_BANDWIDTH {
-            vec![Validity::SmallBandwidth { bandwidth_parameter: alpha, threshold: SMALL_BANDWIDTH }]
+            vec![Validity::SmallBandwidth {
+                bandwidth_parameter: alpha,
+                threshold: SMALL_BANDWIDTH,
+            }]
         } else {
             Vec::new()
         }
@@ -373,7 +391,10 @@ impl Grid<'_> {
 
     fn back(&self, i: usize, j: usize, si: usize, sj: usize) -> Option<(usize, usize)> {
         if self.periodic {
-            Some(((i + self.nx - si % self.nx) % self.nx, (j + self.ny - sj % self.ny) % self.ny))
+            Some((
+                (i + self.nx - si % self.nx) % self.nx,
+                (j + self.ny - sj % self.ny) % self.ny,
+            ))
         } else {
             (i >= si && j >= sj).then(|| (i - si, j - sj))
         }

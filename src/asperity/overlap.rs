@@ -60,7 +60,10 @@ impl Overlap {
     pub fn gaussian(rms_height: f64, yield_stress: f64) -> Result<Self> {
         check::positive("rms_height", rms_height)?;
         check::positive("yield_stress", yield_stress)?;
-        Ok(Overlap { heights: Heights::Gaussian(rms_height), yield_stress })
+        Ok(Overlap {
+            heights: Heights::Gaussian(rms_height),
+            yield_stress,
+        })
     }
 
     /// A measured map's own heights (any layout; m) and the hardness.
@@ -82,7 +85,10 @@ impl Overlap {
         let mean = heights.iter().sum::<f64>() / heights.len() as f64;
         let mut h: Vec<f64> = heights.iter().map(|v| v - mean).collect();
         h.sort_by(f64::total_cmp);
-        Ok(Overlap { heights: Heights::Map(h), yield_stress })
+        Ok(Overlap {
+            heights: Heights::Map(h),
+            yield_stress,
+        })
     }
 
     /// The hardness σY of the load law.
@@ -137,7 +143,10 @@ impl AsperityTheory for Overlap {
             return Err(Error::invalid(
                 "nominal_pressure",
                 nominal_pressure,
-                format!("<= yield_stress = {} (full contact at σ0 = σY)", self.yield_stress),
+                format!(
+                    "<= yield_stress = {} (full contact at σ0 = σY)",
+                    self.yield_stress
+                ),
             ));
         }
         let f = nominal_pressure / self.yield_stress;

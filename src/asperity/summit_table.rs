@@ -68,10 +68,11 @@ impl SummitTable {
                 .collect::<Result<Vec<f64>>>()?;
             ln_g.push(Chebyshev::from_values(XI_MIN, XI_MAX, &vals));
         }
-        let [a, b, c]: [Chebyshev; 3] = ln_g.try_into().map_err(|_| crate::Error::Inconsistent {
-            name: "summit table".into(),
-            requirement: "three weights".into(),
-        })?;
+        let [a, b, c]: [Chebyshev; 3] =
+            ln_g.try_into().map_err(|_| crate::Error::Inconsistent {
+                name: "summit table".into(),
+                requirement: "three weights".into(),
+            })?;
         Ok(SummitTable {
             ln_g: [a, b, c],
             rule: gauss_legendre(NODES),
@@ -99,7 +100,11 @@ impl SummitTable {
         let (w0, w1) = (t_min.sqrt(), t_max.sqrt());
         let (half, mid) = (0.5 * (w1 - w0), 0.5 * (w1 + w0));
         let mut out = [0.0; 4];
-        let rule = if delta >= 0.0 { &self.rule_positive } else { &self.rule };
+        let rule = if delta >= 0.0 {
+            &self.rule_positive
+        } else {
+            &self.rule
+        };
         for (x, wt) in rule.0.iter().zip(&rule.1) {
             let w = mid + half * x;
             let t = w * w;
@@ -131,7 +136,21 @@ pub(crate) fn ln_weight(mu: f64, s: f64, p: f64, kernel: &Kernel) -> Result<f64>
         p * u.ln() + (3.0 * kernel.eval(1.5 * u * u)).ln() - 0.5 * x * x
     };
     let peak = ln_at(u_star);
-    let f = |u: f64| if u > 0.0 { (ln_at(u) - peak).exp() } else { 0.0 };
-    let q = integrate("BGT summit weight", f, lo, hi, 1e-300, WEIGHT_TOLERANCE, 20_000)?;
+    let f = |u: f64| {
+        if u > 0.0 {
+            (ln_at(u) - peak).exp()
+        } else {
+            0.0
+        }
+    };
+    let q = integrate(
+        "BGT summit weight",
+        f,
+        lo,
+        hi,
+        1e-300,
+        WEIGHT_TOLERANCE,
+        20_000,
+    )?;
     Ok(peak + q.value.ln() - (s * super::gaussian::SQRT_TAU).ln())
 }

@@ -71,7 +71,11 @@ pub struct PatchOptions {
 
 impl Default for PatchOptions {
     fn default() -> Self {
-        PatchOptions { connectivity: Connectivity::Four, boundary: Boundary::Periodic, bins_per_decade: 5 }
+        PatchOptions {
+            connectivity: Connectivity::Four,
+            boundary: Boundary::Periodic,
+            bins_per_decade: 5,
+        }
     }
 }
 
@@ -146,7 +150,12 @@ pub struct PatchStatistics {
 /// o.connectivity = persson::bem::patches::Connectivity::Eight;
 /// assert_eq!(patch_statistics(&m, 4, 1.0, &o).unwrap().patch_count, 1);
 /// ```
-pub fn patch_statistics(contact: &[bool], n: usize, size: f64, options: &PatchOptions) -> Result<PatchStatistics> {
+pub fn patch_statistics(
+    contact: &[bool],
+    n: usize,
+    size: f64,
+    options: &PatchOptions,
+) -> Result<PatchStatistics> {
     check::positive("size", size)?;
     if n == 0 {
         return Err(Error::invalid("grid", 0.0, ">= 1"));
@@ -185,7 +194,11 @@ pub fn patch_statistics(contact: &[bool], n: usize, size: f64, options: &PatchOp
     let patches: Vec<Patch> = cells
         .iter()
         .zip(&edges)
-        .map(|(&c, &e)| Patch { cells: c, area: c as f64 * delta * delta, perimeter: e as f64 * delta })
+        .map(|(&c, &e)| Patch {
+            cells: c,
+            area: c as f64 * delta * delta,
+            perimeter: e as f64 * delta,
+        })
         .collect();
     let total_cells: usize = cells.iter().sum();
     let largest = cells.iter().copied().max().unwrap_or(0);
@@ -197,7 +210,11 @@ pub fn patch_statistics(contact: &[bool], n: usize, size: f64, options: &PatchOp
         contact_fraction: total_cells as f64 / (n * n) as f64,
         patch_count: count,
         largest_patch_area: largest as f64 * delta * delta,
-        mean_patch_area: if count > 0 { total_cells as f64 * delta * delta / count as f64 } else { 0.0 },
+        mean_patch_area: if count > 0 {
+            total_cells as f64 * delta * delta / count as f64
+        } else {
+            0.0
+        },
         total_perimeter: edges.iter().sum::<usize>() as f64 * delta,
         area_distribution: area_bins(&cells, delta * delta, options.bins_per_decade),
         patches,
@@ -208,7 +225,12 @@ pub fn patch_statistics(contact: &[bool], n: usize, size: f64, options: &PatchOp
 ///
 /// # Errors
 /// As [`patch_statistics`].
-pub fn pressure_patches(pressure: &[f64], n: usize, size: f64, options: &PatchOptions) -> Result<PatchStatistics> {
+pub fn pressure_patches(
+    pressure: &[f64],
+    n: usize,
+    size: f64,
+    options: &PatchOptions,
+) -> Result<PatchStatistics> {
     let mask: Vec<bool> = pressure.iter().map(|&p| p > 0.0).collect();
     patch_statistics(&mask, n, size, options)
 }
@@ -220,7 +242,9 @@ struct Forest {
 
 impl Forest {
     fn new(len: usize) -> Self {
-        Forest { parent: (0..len as u32).collect() }
+        Forest {
+            parent: (0..len as u32).collect(),
+        }
     }
 
     fn find(&mut self, mut x: u32) -> u32 {
@@ -328,13 +352,19 @@ fn exposed_edges(contact: &[bool], n: usize, i: usize, j: usize, periodic: bool)
         if inside {
             contact[a as usize * n + b as usize]
         } else if periodic {
-            let (a, b) = (a.rem_euclid(n as isize) as usize, b.rem_euclid(n as isize) as usize);
+            let (a, b) = (
+                a.rem_euclid(n as isize) as usize,
+                b.rem_euclid(n as isize) as usize,
+            );
             contact[a * n + b]
         } else {
             false
         }
     };
-    [(-1, 0), (1, 0), (0, -1), (0, 1)].iter().filter(|&&(di, dj)| !neighbour(di, dj)).count()
+    [(-1, 0), (1, 0), (0, -1), (0, 1)]
+        .iter()
+        .filter(|&&(di, dj)| !neighbour(di, dj))
+        .count()
 }
 
 /// Log bins of the patch areas (cells → m² with `cell_area`).
@@ -361,7 +391,12 @@ fn area_bins(cells: &[usize], cell_area: f64, per_decade: usize) -> Vec<AreaBin>
     (0..bins)
         .map(|k| {
             let (lo, hi) = (edge(k) * cell_area, edge(k + 1) * cell_area);
-            AreaBin { area_low: lo, area_high: hi, count: count[k], density: count[k] as f64 / (total * (hi - lo)) }
+            AreaBin {
+                area_low: lo,
+                area_high: hi,
+                count: count[k],
+                density: count[k] as f64 / (total * (hi - lo)),
+            }
         })
         .collect()
 }
@@ -418,7 +453,10 @@ pub fn pressure_tail(pressure: &[f64], tail_start: Option<f64>) -> Result<Pressu
         return Err(Error::invalid(
             "tail_start",
             start,
-            format!("below at least {MIN_TAIL_SAMPLES} distinct contact pressures (it leaves {})", tail.len()),
+            format!(
+                "below at least {MIN_TAIL_SAMPLES} distinct contact pressures (it leaves {})",
+                tail.len()
+            ),
         ));
     }
     let exp_ll = -excess.ln() - 1.0;
@@ -435,7 +473,11 @@ pub fn pressure_tail(pressure: &[f64], tail_start: Option<f64>) -> Result<Pressu
         exponential_log_likelihood: exp_ll,
         gaussian_width: s,
         gaussian_log_likelihood: gauss_ll,
-        better: if gauss_ll > exp_ll { TailShape::Gaussian } else { TailShape::Exponential },
+        better: if gauss_ll > exp_ll {
+            TailShape::Gaussian
+        } else {
+            TailShape::Exponential
+        },
     })
 }
 

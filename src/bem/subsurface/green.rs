@@ -10,8 +10,9 @@
 //! σ_xx = n_x² σ_ξξ + n_y² σ_ηη,   σ_yy = n_y² σ_ξξ + n_x² σ_ηη,   σ_xy = n_x n_y (σ_ξξ − σ_ηη)
 //! σ_xz = n_x σ_ξz,   σ_yz = n_y σ_ξz
 //! ```
-//! (ξ along q, η across; Johnson 1985 §2.? for the sinusoidal plane problem;
-//! both equilibrium equations hold mode by mode). The mean pressure p̄ (q = 0)
+//! (ξ along q, η across; the sinusoidal pressure on a half-plane of Johnson
+//! 1985, ch. 2, rederived here; both equilibrium equations hold mode by mode,
+//! and Tamaas 2.9 gives the same field, tests/subsurface.rs). The mean pressure p̄ (q = 0)
 //! gives σ_zz = −p̄ and, for a periodic body that cannot expand sideways
 //! (zero mean in-plane strain), σ_xx = σ_yy = −ν p̄/(1 − ν). At the Nyquist
 //! wavevector the odd multipliers (n_x, n_y, n_x n_y) are set to zero: the
@@ -19,7 +20,8 @@
 //!
 //! # Free: a uniformly loaded cell
 //! Boussinesq's potentials ψ₁ = ∫∫ p ln(ρ + z), ψ = ∫∫ p/ρ (Johnson 1985,
-//! §3.2, Eqs. 3.18–3.20):
+//! §3.2; every component checked with mpmath against the point-load
+//! formulas and against the Fourier-mode solution above):
 //! ```text
 //! σ_xx = [2ν ψ_z − z ψ_xx − (1 − 2ν) ψ₁_xx] / 2π     σ_yy likewise (x ↔ y)
 //! σ_zz = [ψ_z − z ψ_zz] / 2π
@@ -42,7 +44,7 @@
 //! centre just below the surface, Johnson's values under a uniform load.
 //!
 //! # References
-//! K. L. Johnson, *Contact Mechanics* (CUP 1985), §2.? (periodic pressure on a
+//! K. L. Johnson, *Contact Mechanics* (CUP 1985), ch. 2 (periodic pressure on a
 //! half-plane) and §3.2 (Boussinesq potentials); A. E. H. Love, Phil. Trans.
 //! R. Soc. A 228, 377 (1929) (the uniformly loaded rectangle).
 
@@ -51,11 +53,24 @@ pub(crate) const COMPONENTS: usize = 6;
 
 /// Fourier multipliers of the six components at depth z for the wavevector
 /// (q_x, q_y) (1/m), as (real part, imaginary part) per component.
-pub(crate) fn multipliers(qx: f64, qy: f64, z: f64, nu: f64, nyquist: bool) -> [(f64, f64); COMPONENTS] {
+pub(crate) fn multipliers(
+    qx: f64,
+    qy: f64,
+    z: f64,
+    nu: f64,
+    nyquist: bool,
+) -> [(f64, f64); COMPONENTS] {
     let q = qx.hypot(qy);
     if q == 0.0 {
         let lateral = -nu / (1.0 - nu);
-        return [(lateral, 0.0), (lateral, 0.0), (-1.0, 0.0), (0.0, 0.0), (0.0, 0.0), (0.0, 0.0)];
+        return [
+            (lateral, 0.0),
+            (lateral, 0.0),
+            (-1.0, 0.0),
+            (0.0, 0.0),
+            (0.0, 0.0),
+            (0.0, 0.0),
+        ];
     }
     let (nx, ny) = (qx / q, qy / q);
     let qz = q * z;
@@ -77,7 +92,15 @@ pub(crate) fn multipliers(qx: f64, qy: f64, z: f64, nu: f64, nyquist: bool) -> [
 /// Component `c` of [`multipliers`] from precomputed q_x, q_y, q (negative
 /// at a Nyquist mode) and e^{−qz}.
 #[inline]
-pub(crate) fn multiplier(c: usize, qx: f64, qy: f64, q_signed: f64, e: f64, z: f64, nu: f64) -> (f64, f64) {
+pub(crate) fn multiplier(
+    c: usize,
+    qx: f64,
+    qy: f64,
+    q_signed: f64,
+    e: f64,
+    z: f64,
+    nu: f64,
+) -> (f64, f64) {
     let q = q_signed.abs();
     if q == 0.0 {
         let lateral = -nu / (1.0 - nu);
@@ -113,8 +136,16 @@ pub(crate) fn corner(u: f64, v: f64, z: f64) -> [f64; CORNER_FUNCTIONS] {
     let uv = u * v;
     // ρ − z and ρ + v without cancellation.
     let rho_minus_z = (u2 + v2) / (rho + z);
-    let rho_v = if v >= 0.0 { rho + v } else { (u2 + z2) / (rho - v) };
-    let g_xx1 = if u == 0.0 || v == 0.0 { 0.0 } else { (uv * rho_minus_z / (u2 * rho + z * v2)).atan() };
+    let rho_v = if v >= 0.0 {
+        rho + v
+    } else {
+        (u2 + z2) / (rho - v)
+    };
+    let g_xx1 = if u == 0.0 || v == 0.0 {
+        0.0
+    } else {
+        (uv * rho_minus_z / (u2 * rho + z * v2)).atan()
+    };
     [
         -(uv / (z * rho)).atan(),
         uv * (rho * rho + z2) / (rho * (u2 + z2) * (v2 + z2)),
@@ -167,7 +198,8 @@ pub(crate) fn unit_cell(x: f64, y: f64, z: f64, delta: f64, nu: f64) -> [f64; CO
 #[inline]
 pub(crate) fn von_mises(s: &[f64; COMPONENTS]) -> f64 {
     let [xx, yy, zz, xy, xz, yz] = *s;
-    (0.5 * ((xx - yy).powi(2) + (yy - zz).powi(2) + (zz - xx).powi(2)) + 3.0 * (xy * xy + xz * xz + yz * yz))
+    (0.5 * ((xx - yy).powi(2) + (yy - zz).powi(2) + (zz - xx).powi(2))
+        + 3.0 * (xy * xy + xz * xz + yz * yz))
         .sqrt()
 }
 

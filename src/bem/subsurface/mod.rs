@@ -181,7 +181,13 @@ impl Subsurface {
     /// [`Error::InvalidParameter`] naming `grid` (n < 2), `size`, `poisson`
     /// (not in (−1, 0.5]) or a non-finite `pressure[i, j]`;
     /// [`Error::Inconsistent`] if `pressure.len() != n²`.
-    pub fn new(pressure: &[f64], n: usize, size: f64, boundary: Boundary, poisson: f64) -> Result<Self> {
+    pub fn new(
+        pressure: &[f64],
+        n: usize,
+        size: f64,
+        boundary: Boundary,
+        poisson: f64,
+    ) -> Result<Self> {
         check::positive("size", size)?;
         if n < 2 {
             return Err(Error::invalid("grid", n as f64, ">= 2"));
@@ -196,7 +202,11 @@ impl Subsurface {
             });
         }
         if let Some(k) = pressure.iter().position(|p| !p.is_finite()) {
-            return Err(Error::invalid(format!("pressure[{}, {}]", k / n, k % n), pressure[k], "finite"));
+            return Err(Error::invalid(
+                format!("pressure[{}, {}]", k / n, k % n),
+                pressure[k],
+                "finite",
+            ));
         }
         let nf = match boundary {
             Boundary::Periodic => n,
@@ -213,7 +223,16 @@ impl Subsurface {
             Boundary::Periodic => None,
             Boundary::Free => Some(Fft2::new(nf, nf)?),
         };
-        Ok(Subsurface { n, size, boundary, poisson, pressure: pressure.to_vec(), spectrum, fft, kernel_fft })
+        Ok(Subsurface {
+            n,
+            size,
+            boundary,
+            poisson,
+            pressure: pressure.to_vec(),
+            spectrum,
+            fft,
+            kernel_fft,
+        })
     }
 
     /// Check a depth: finite, > 0 and ≤ the side L.
@@ -221,7 +240,11 @@ impl Subsurface {
         if depth.is_finite() && depth > 0.0 && depth <= self.size {
             Ok(depth)
         } else {
-            Err(Error::invalid("depth", depth, format!("in (0, size = {}] m", self.size)))
+            Err(Error::invalid(
+                "depth",
+                depth,
+                format!("in (0, size = {}] m", self.size),
+            ))
         }
     }
 
@@ -239,7 +262,14 @@ impl Subsurface {
         let mut vm = vec![0.0; n2];
         let mut ms = vec![0.0; n2];
         for k in 0..n2 {
-            let t = [sigma[0][k], sigma[1][k], sigma[2][k], sigma[3][k], sigma[4][k], sigma[5][k]];
+            let t = [
+                sigma[0][k],
+                sigma[1][k],
+                sigma[2][k],
+                sigma[3][k],
+                sigma[4][k],
+                sigma[5][k],
+            ];
             vm[k] = green::von_mises(&t);
             ms[k] = green::max_shear(&t);
         }
@@ -249,7 +279,13 @@ impl Subsurface {
             max_shear_stress: self.extremum(&ms, z),
             yielded_fraction: None,
         };
-        Ok(StressPlane { depth: z, stress: sigma, von_mises_stress: vm, max_shear_stress: ms, summary })
+        Ok(StressPlane {
+            depth: z,
+            stress: sigma,
+            von_mises_stress: vm,
+            max_shear_stress: ms,
+            summary,
+        })
     }
 
     /// Summaries of the planes at `depths`, the overall maxima and, with a
@@ -258,7 +294,11 @@ impl Subsurface {
     /// # Errors
     /// `depths` empty; a depth out of (0, L]; `tensile_yield_stress` not
     /// finite and > 0.
-    pub fn report(&mut self, depths: &[f64], tensile_yield_stress: Option<f64>) -> Result<SubsurfaceReport> {
+    pub fn report(
+        &mut self,
+        depths: &[f64],
+        tensile_yield_stress: Option<f64>,
+    ) -> Result<SubsurfaceReport> {
         if depths.is_empty() {
             return Err(Error::invalid("depth", f64::NAN, "at least one depth"));
         }
@@ -279,7 +319,10 @@ impl Subsurface {
             planes.push(s);
         }
         let best = |f: fn(&PlaneSummary) -> Extremum| {
-            planes.iter().map(f).fold(f(&planes[0]), |a, b| if b.value > a.value { b } else { a })
+            planes
+                .iter()
+                .map(f)
+                .fold(f(&planes[0]), |a, b| if b.value > a.value { b } else { a })
         };
         let max_vm = best(|s| s.von_mises_stress);
         let first_yield = tensile_yield_stress.map(|y| FirstYield {
@@ -306,7 +349,11 @@ impl Subsurface {
     pub fn line(&self, node: [usize; 2], depths: &[f64]) -> Result<Vec<LinePoint>> {
         let n = self.n;
         if node[0] >= n || node[1] >= n {
-            return Err(Error::invalid("node", node[0].max(node[1]) as f64, format!("< grid = {n}")));
+            return Err(Error::invalid(
+                "node",
+                node[0].max(node[1]) as f64,
+                format!("< grid = {n}"),
+            ));
         }
         depths
             .iter()
@@ -330,10 +377,21 @@ impl Subsurface {
         let (k, v) = field
             .iter()
             .enumerate()
-            .fold((0, f64::NEG_INFINITY), |(bk, bv), (k, &v)| if v > bv { (k, v) } else { (bk, bv) });
+            .fold((0, f64::NEG_INFINITY), |(bk, bv), (k, &v)| {
+                if v > bv {
+                    (k, v)
+                } else {
+                    (bk, bv)
+                }
+            });
         let d = self.size / self.n as f64;
         let (i, j) = (k / self.n, k % self.n);
-        Extremum { value: v, depth: z, position: [i as f64 * d, j as f64 * d], node: [i, j] }
+        Extremum {
+            value: v,
+            depth: z,
+            position: [i as f64 * d, j as f64 * d],
+            node: [i, j],
+        }
     }
 
     /// Signed wavevector index of FFT index k on an m-point axis.
@@ -386,7 +444,11 @@ impl Subsurface {
         let mut acc = [0.0; COMPONENTS];
         for kj in 0..nc {
             // Columns 1 … n/2−1 of the half spectrum stand for ±k_j.
-            let weight = if kj == 0 || (n % 2 == 0 && kj == n / 2) { 1.0 } else { 2.0 };
+            let weight = if kj == 0 || (n % 2 == 0 && kj == n / 2) {
+                1.0
+            } else {
+                2.0
+            };
             for ki in 0..n {
                 let nyquist = (n % 2 == 0) && (ki == n / 2 || kj == n / 2);
                 let (qx, qy) = (dq * Self::signed(ki, n), dq * kj as f64);
@@ -408,10 +470,13 @@ impl Subsurface {
         let n = self.n;
         let nf = 2 * n;
         let quadrants = free_quadrants(n, self.size / n as f64, z, self.poisson);
-        let kfft = self.kernel_fft.as_mut().ok_or_else(|| Error::Inconsistent {
-            name: "subsurface".into(),
-            requirement: "a free grid has a kernel transform".into(),
-        })?;
+        let kfft = self
+            .kernel_fft
+            .as_mut()
+            .ok_or_else(|| Error::Inconsistent {
+                name: "subsurface".into(),
+                requirement: "a free grid has a kernel transform".into(),
+            })?;
         let mut kspec = vec![Complex64::new(0.0, 0.0); kfft.spectrum_len()];
         let mut spec = vec![Complex64::new(0.0, 0.0); kfft.spectrum_len()];
         let mut work = vec![0.0; nf * nf];
@@ -420,8 +485,12 @@ impl Subsurface {
         let norm = 1.0 / (nf * nf) as f64;
         let nc = n + 1;
         // (kernel quadrant, parity, output, transposed output)
-        let plan: [(usize, (f64, f64), usize, Option<usize>); 4] =
-            [(0, (1.0, 1.0), 0, Some(1)), (1, (1.0, 1.0), 2, None), (2, (-1.0, -1.0), 3, None), (3, (-1.0, 1.0), 4, Some(5))];
+        let plan: [(usize, (f64, f64), usize, Option<usize>); 4] = [
+            (0, (1.0, 1.0), 0, Some(1)),
+            (1, (1.0, 1.0), 2, None),
+            (2, (-1.0, -1.0), 3, None),
+            (3, (-1.0, 1.0), 4, Some(5)),
+        ];
         for (q, parity, c, transposed) in plan {
             fill_circulant(&quadrants[q], n, parity, &mut work);
             kfft.forward(&mut work, &mut kspec)?;
@@ -458,7 +527,10 @@ impl Subsurface {
             if p == 0.0 {
                 continue;
             }
-            let (x, y) = ((node[0] as f64 - (k / n) as f64) * d, (node[1] as f64 - (k % n) as f64) * d);
+            let (x, y) = (
+                (node[0] as f64 - (k / n) as f64) * d,
+                (node[1] as f64 - (k % n) as f64) * d,
+            );
             let s = green::unit_cell(x, y, z, d, self.poisson);
             for c in 0..COMPONENTS {
                 acc[c] += p * s[c];
@@ -475,9 +547,16 @@ fn free_quadrants(n: usize, delta: f64, z: f64, nu: f64) -> [Vec<f64>; 4] {
     let m = n + 1;
     let row = |a: usize| -> Vec<[f64; green::CORNER_FUNCTIONS]> {
         let u = (a as f64 - 0.5) * delta;
-        (0..m).map(|b| green::corner(u, (b as f64 - 0.5) * delta, z)).collect()
+        (0..m)
+            .map(|b| green::corner(u, (b as f64 - 0.5) * delta, z))
+            .collect()
     };
-    let mut out: [Vec<f64>; 4] = [vec![0.0; n * n], vec![0.0; n * n], vec![0.0; n * n], vec![0.0; n * n]];
+    let mut out: [Vec<f64>; 4] = [
+        vec![0.0; n * n],
+        vec![0.0; n * n],
+        vec![0.0; n * n],
+        vec![0.0; n * n],
+    ];
     let mut prev = row(0);
     for a in 0..n {
         let next = row(a + 1);
