@@ -147,7 +147,7 @@ impl Bush {
         check::positive("contact_modulus", contact_modulus)?;
         let alpha = moments.bandwidth_parameter();
         let s_u2 = 2.0 / 3.0 - 1.0 / alpha;
-        if !(s_u2 > 1e-9) {
+        if s_u2.is_nan() || s_u2 <= 1e-9 {
             return Err(Error::invalid(
                 "bandwidth_parameter",
                 alpha,

@@ -108,9 +108,9 @@ impl SpectralMoments {
     /// Moments given directly.
     ///
     /// # Errors
-    /// [`Error::InvalidParameter`] naming `m0`, `m2` or `m4` unless finite and
-    /// > 0; naming `bandwidth_parameter` when α = m0 m4/m2² < 3/2, which no
-    /// isotropic surface has.
+    /// [`Error::InvalidParameter`] naming `m0`, `m2` or `m4` unless finite
+    /// and positive; naming `bandwidth_parameter` when α = m0 m4/m2² < 3/2,
+    /// which no isotropic surface has.
     ///
     /// # Examples
     /// ```
@@ -127,7 +127,7 @@ impl SpectralMoments {
         }
         let m = SpectralMoments { m0, m2, m4 };
         let alpha = m.bandwidth_parameter();
-        if !(alpha >= MIN_BANDWIDTH_PARAMETER * (1.0 - BANDWIDTH_ROUNDING)) {
+        if alpha.is_nan() || alpha < MIN_BANDWIDTH_PARAMETER * (1.0 - BANDWIDTH_ROUNDING) {
             return Err(Error::invalid(
                 "bandwidth_parameter",
                 alpha,
@@ -224,7 +224,7 @@ impl SpectralMoments {
         };
         let m2 = 0.5 * (map.first(1, 0) / (dx * dx) + map.first(0, 1) / (dy * dy));
         let m4 = 0.5 * (map.second(1, 0) / dx.powi(4) + map.second(0, 1) / dy.powi(4));
-        if !(m4 > 0.0) {
+        if m4.is_nan() || m4 <= 0.0 {
             return Err(Error::invalid(
                 "m4",
                 m4,

@@ -449,7 +449,7 @@ pub fn pressure_tail(pressure: &[f64], tail_start: Option<f64>) -> Result<Pressu
     let tail: Vec<f64> = contact.into_iter().filter(|&p| p >= start).collect();
     let n = tail.len() as f64;
     let excess = tail.iter().map(|p| p - start).sum::<f64>() / n;
-    if tail.len() < MIN_TAIL_SAMPLES || !(excess > 0.0) {
+    if tail.len() < MIN_TAIL_SAMPLES || excess.is_nan() || excess <= 0.0 {
         return Err(Error::invalid(
             "tail_start",
             start,

@@ -416,7 +416,7 @@ impl Subsurface {
                 let (kj, ki) = (k / n, k % n);
                 let (qx, qy) = (dq * Self::signed(ki, n), dq * kj as f64);
                 let q = qx.hypot(qy);
-                let nyquist = n % 2 == 0 && (ki == n / 2 || kj == n / 2);
+                let nyquist = n.is_multiple_of(2) && (ki == n / 2 || kj == n / 2);
                 // A negative q flags the Nyquist modes (odd multipliers vanish).
                 [qx, qy, if nyquist { -q } else { q }, (-q * z).exp()]
             })
@@ -444,13 +444,13 @@ impl Subsurface {
         let mut acc = [0.0; COMPONENTS];
         for kj in 0..nc {
             // Columns 1 … n/2−1 of the half spectrum stand for ±k_j.
-            let weight = if kj == 0 || (n % 2 == 0 && kj == n / 2) {
+            let weight = if kj == 0 || (n.is_multiple_of(2) && kj == n / 2) {
                 1.0
             } else {
                 2.0
             };
             for ki in 0..n {
-                let nyquist = (n % 2 == 0) && (ki == n / 2 || kj == n / 2);
+                let nyquist = n.is_multiple_of(2) && (ki == n / 2 || kj == n / 2);
                 let (qx, qy) = (dq * Self::signed(ki, n), dq * kj as f64);
                 let m = green::multipliers(qx, qy, z, self.poisson, nyquist);
                 let phase = Complex64::from_polar(1.0, qx * x + qy * y);
@@ -485,7 +485,7 @@ impl Subsurface {
         let norm = 1.0 / (nf * nf) as f64;
         let nc = n + 1;
         // (kernel quadrant, parity, output, transposed output)
-        let plan: [(usize, (f64, f64), usize, Option<usize>); 4] = [
+        let plan: [KernelPlan; 4] = [
             (0, (1.0, 1.0), 0, Some(1)),
             (1, (1.0, 1.0), 2, None),
             (2, (-1.0, -1.0), 3, None),
@@ -539,6 +539,10 @@ impl Subsurface {
         acc
     }
 }
+
+/// One transformed kernel: its quadrant, parity (x, y), the output it
+/// gives and the output its transpose gives.
+type KernelPlan = (usize, (f64, f64), usize, Option<usize>);
 
 /// The xx, zz, xy and xz cell kernels of depth z on the offsets (a, b),
 /// 0 ≤ a, b < N (one quadrant), `[q][a·n + b]`: corner functions on the
