@@ -6,7 +6,7 @@
 //! Every summit (local maximum) has a height h and principal curvatures
 //! κ1 ≥ κ2 > 0 drawn from their exact joint density (Kac–Rice); near the flat
 //! it is replaced by the paraboloid with those curvatures, in Hertz contact
-//! ([`super::hertz_ellipse`]), independently of its neighbours.
+//! (module `hertz_ellipse`: Hertz's elliptic solution), independently of its neighbours.
 //!
 //! # Formula
 //! Standardised variables ξ = h/√m0, u = (κ1 + κ2)/(2√m4), r = (κ1 − κ2)/(2√m4):
@@ -17,7 +17,7 @@
 //! (the summit density m4/(6π√3 m2) of Nayak 1971 is its integral). With
 //! δ = d/√m0, a summit of height ξ > δ carries the area π w F_A/√(κ1κ2) and the
 //! load (4/3)E* w^{3/2} F_P (κ1κ2)^{−1/4}, w = √m0 (ξ − δ). Integrating r with
-//! v = (r/u)² gives the curvature kernels K_γ of [`super::kernel`], and ξ in
+//! v = (r/u)² gives the curvature kernels K_γ (private module `kernel`), and ξ in
 //! closed form given u (ξ | u ~ N(3u/(2√α), s_c²), s_c² = 1 − 3/(2α)):
 //! ```text
 //! J_{k,γ}(δ) = ∫_0^∞ N(u; 0, 2/3) · 3 u^{2+2γ} K_γ(3u²/2) · s_c^k F_k((δ − 3u/(2√α))/s_c) du
@@ -35,11 +35,18 @@
 //!
 //! # Method
 //! Factoring φ(δ) out exactly, N(u;0,2/3)·s_c^k F_k(z) = φ(δ) s_c^{k+1} N(u; δ/√α, 2/3 − 1/α) R_k(z)
-//! with R_k = F_k/φ ([`super::gaussian`]), so that nothing underflows at low
-//! load; each J is then one adaptive Gauss–Kronrod integral over u around
-//! δ/√α, to the relative tolerance of the model ([`Bush::with_tolerance`]).
-//! The separation at a given σ0 is found by bracketing and the Illinois
-//! method on ln σ0(d).
+//! with R_k = F_k/φ (the scaled Gaussian integrals), so that nothing
+//! underflows at low load; each J is then one adaptive Gauss–Kronrod
+//! integral over u around δ/√α, to the relative tolerance of the model
+//! ([`Bush::with_tolerance`]). This direct path serves every δ. For
+//! δ ≤ 12 and α ≥ 4 a faster path is used: the height-resolved weights
+//! g_γ(ξ) = E[3u^{2+2γ}K_γ(3u²/2) | ξ] are tabulated once per surface
+//! (Chebyshev series of ln g on ξ ∈ [−10, 16]) and
+//! J(δ) = ∫ (ξ − δ)^k φ(ξ) g_γ(ξ) dξ runs over w = √(ξ − δ) with
+//! Gauss–Legendre (tested against the direct path to 1e-12).
+//! The separation at a given σ0: Newton's method on ln σ0(δ) with
+//! d ln J_{3/2}/dδ = −(3/2) J_½/J_{3/2} on the fast path, else bracketing
+//! and the Illinois method.
 //!
 //! # Choices
 //! The Bush, Gibson & Thomas paper was not available to check against; the
@@ -171,6 +178,11 @@ impl Bush {
 
     /// The same model with the relative tolerance `tolerance` of its
     /// u-integrals (the accuracy knob; default [`DEFAULT_TOLERANCE`]).
+    ///
+    /// At the default, points with δ ≤ 12 and α ≥ 4 come from the summit
+    /// table (tested to 1e-12 against the direct integrals, ~16 µs a point);
+    /// a tighter tolerance bypasses the table and integrates every point
+    /// directly (~0.9 ms a point).
     ///
     /// # Errors
     /// `tolerance` outside [1e-15, 0.1].

@@ -221,3 +221,66 @@ pub(crate) fn max_shear(s: &[f64; COMPONENTS]) -> f64 {
     let phi = r.acos() / 3.0;
     (3.0 * p).sqrt() * (phi + std::f64::consts::FRAC_PI_3).sin()
 }
+
+/// One transformed kernel: its quadrant, parity (x, y), the output it
+/// gives and the output its transpose gives.
+pub(crate) type KernelPlan = (usize, (f64, f64), usize, Option<usize>);
+
+/// The xx, zz, xy and xz cell kernels of depth z on the offsets (a, b),
+/// 0 ≤ a, b < N (one quadrant), `[q][a·n + b]`: corner functions on the
+/// corners ((a − ½)Δ, (b − ½)Δ), two rows at a time, shared by neighbouring cells.
+pub(crate) fn free_quadrants(n: usize, delta: f64, z: f64, nu: f64) -> [Vec<f64>; 4] {
+    let m = n + 1;
+    let row = |a: usize| -> Vec<[f64; CORNER_FUNCTIONS]> {
+        let u = (a as f64 - 0.5) * delta;
+        (0..m)
+            .map(|b| corner(u, (b as f64 - 0.5) * delta, z))
+            .collect()
+    };
+    let mut out: [Vec<f64>; 4] = [
+        vec![0.0; n * n],
+        vec![0.0; n * n],
+        vec![0.0; n * n],
+        vec![0.0; n * n],
+    ];
+    let mut prev = row(0);
+    for a in 0..n {
+        let next = row(a + 1);
+        for b in 0..n {
+            let mut d = [0.0; CORNER_FUNCTIONS];
+            for (k, v) in d.iter_mut().enumerate() {
+                *v = next[b + 1][k] - prev[b + 1][k] - next[b][k] + prev[b][k];
+            }
+            let s = cell_stress(&d, z, nu);
+            let k = a * n + b;
+            for (q, v) in s.into_iter().enumerate() {
+                out[q][k] = v;
+            }
+        }
+        prev = next;
+    }
+    out
+}
+
+/// A quadrant kernel on the 2N × 2N circulant grid: offset (k, l) at index
+/// (k mod 2N, l mod 2N), |k|, |l| ≤ N − 1, mirrored with the parity
+/// (x, y) (+1 even, −1 odd); row and column N are zero.
+pub(crate) fn fill_circulant(quadrant: &[f64], n: usize, (px, py): (f64, f64), work: &mut [f64]) {
+    let nf = 2 * n;
+    work.fill(0.0);
+    for a in 0..n {
+        let src = &quadrant[a * n..(a + 1) * n];
+        for (sign, r) in [(1.0, a), (px, nf - a)] {
+            if a == 0 && r == nf {
+                continue;
+            }
+            let dst = &mut work[(r % nf) * nf..(r % nf + 1) * nf];
+            for b in 0..n {
+                dst[b] = sign * src[b];
+                if b > 0 {
+                    dst[nf - b] = sign * py * src[b];
+                }
+            }
+        }
+    }
+}

@@ -20,8 +20,22 @@
 //! σ_vM = √(½[(σxx − σyy)² + (σyy − σzz)² + (σzz − σxx)²] + 3(σxy² + σxz² + σyz²))
 //! τ_max = (σ₁ − σ₃)/2
 //! ```
-//! with M and K of [`green`]. Stress is linear in p, so under a load scaled
-//! by λ the material first yields (von Mises) at λ = Y / max σ_vM.
+//! One mode p̂ e^{iq·x}, q = q(n_x, n_y), is plane strain in the plane of q
+//! (E = e^{−qz}; ξ along q, η across):
+//! ```text
+//! σ_ξξ = −(1 − qz) E p̂,  σ_ηη = −2ν E p̂,  σ_zz = −(1 + qz) E p̂,  σ_ξz = i qz E p̂
+//! q = 0:  σ_zz = −p̄,  σ_xx = σ_yy = −ν p̄/(1 − ν)      (no mean in-plane strain; Tamaas' choice too)
+//! ```
+//! (odd multipliers zero at the Nyquist wavevector). K is the exact stress
+//! of a uniform pressure on a cell from Boussinesq's potentials
+//! ψ₁ = ∫∫ p ln(ρ + z), ψ = ∫∫ p/ρ (Johnson 1985, §3.2):
+//! ```text
+//! σ_xx = [2ν ψ_z − z ψ_xx − (1 − 2ν) ψ₁_xx]/2π,   σ_zz = [ψ_z − z ψ_zz]/2π
+//! σ_xy = −[(1 − 2ν) ψ₁_xy + z ψ_xy]/2π,   σ_xz = −z ψ_xz/2π       (yy, yz: x ↔ y)
+//! ```
+//! each derivative a corner sum of closed forms over the cell. Stress is
+//! linear in p, so under a load scaled by λ the material first yields (von
+//! Mises) at λ = Y / max σ_vM.
 //!
 //! # Method
 //! Periodic: one forward real FFT of p, then per plane six multiplied
@@ -30,7 +44,7 @@
 //! transformed on the 2N × 2N grid, multiplied by the transform of the
 //! zero-padded p and transformed back (Liu, Wang & Liu's DC-FFT; no
 //! periodic images). Along a vertical line the same sums run directly.
-//! Every FFT is [`super::fft::Fft2`].
+//! Every FFT is the BEM's planned `Fft2` (module `bem::fft`).
 //!
 //! # Accuracy
 //! Exact for the discrete load (cell-constant p, free) or the band-limited
@@ -469,7 +483,7 @@ impl Subsurface {
     fn free_plane(&mut self, z: f64) -> Result<[Vec<f64>; COMPONENTS]> {
         let n = self.n;
         let nf = 2 * n;
-        let quadrants = free_quadrants(n, self.size / n as f64, z, self.poisson);
+        let quadrants = green::free_quadrants(n, self.size / n as f64, z, self.poisson);
         let kfft = self
             .kernel_fft
             .as_mut()
@@ -485,14 +499,14 @@ impl Subsurface {
         let norm = 1.0 / (nf * nf) as f64;
         let nc = n + 1;
         // (kernel quadrant, parity, output, transposed output)
-        let plan: [KernelPlan; 4] = [
+        let plan: [green::KernelPlan; 4] = [
             (0, (1.0, 1.0), 0, Some(1)),
             (1, (1.0, 1.0), 2, None),
             (2, (-1.0, -1.0), 3, None),
             (3, (-1.0, 1.0), 4, Some(5)),
         ];
         for (q, parity, c, transposed) in plan {
-            fill_circulant(&quadrants[q], n, parity, &mut work);
+            green::fill_circulant(&quadrants[q], n, parity, &mut work);
             kfft.forward(&mut work, &mut kspec)?;
             for (target, swap) in std::iter::once((c, false)).chain(transposed.map(|t| (t, true))) {
                 for kj in 0..nc {
@@ -537,68 +551,5 @@ impl Subsurface {
             }
         }
         acc
-    }
-}
-
-/// One transformed kernel: its quadrant, parity (x, y), the output it
-/// gives and the output its transpose gives.
-type KernelPlan = (usize, (f64, f64), usize, Option<usize>);
-
-/// The xx, zz, xy and xz cell kernels of depth z on the offsets (a, b),
-/// 0 ≤ a, b < N (one quadrant), `[q][a·n + b]`: corner functions on the
-/// corners ((a − ½)Δ, (b − ½)Δ), two rows at a time, shared by neighbouring cells.
-fn free_quadrants(n: usize, delta: f64, z: f64, nu: f64) -> [Vec<f64>; 4] {
-    let m = n + 1;
-    let row = |a: usize| -> Vec<[f64; green::CORNER_FUNCTIONS]> {
-        let u = (a as f64 - 0.5) * delta;
-        (0..m)
-            .map(|b| green::corner(u, (b as f64 - 0.5) * delta, z))
-            .collect()
-    };
-    let mut out: [Vec<f64>; 4] = [
-        vec![0.0; n * n],
-        vec![0.0; n * n],
-        vec![0.0; n * n],
-        vec![0.0; n * n],
-    ];
-    let mut prev = row(0);
-    for a in 0..n {
-        let next = row(a + 1);
-        for b in 0..n {
-            let mut d = [0.0; green::CORNER_FUNCTIONS];
-            for (k, v) in d.iter_mut().enumerate() {
-                *v = next[b + 1][k] - prev[b + 1][k] - next[b][k] + prev[b][k];
-            }
-            let s = green::cell_stress(&d, z, nu);
-            let k = a * n + b;
-            for (q, v) in s.into_iter().enumerate() {
-                out[q][k] = v;
-            }
-        }
-        prev = next;
-    }
-    out
-}
-
-/// A quadrant kernel on the 2N × 2N circulant grid: offset (k, l) at index
-/// (k mod 2N, l mod 2N), |k|, |l| ≤ N − 1, mirrored with the parity
-/// (x, y) (+1 even, −1 odd); row and column N are zero.
-fn fill_circulant(quadrant: &[f64], n: usize, (px, py): (f64, f64), work: &mut [f64]) {
-    let nf = 2 * n;
-    work.fill(0.0);
-    for a in 0..n {
-        let src = &quadrant[a * n..(a + 1) * n];
-        for (sign, r) in [(1.0, a), (px, nf - a)] {
-            if a == 0 && r == nf {
-                continue;
-            }
-            let dst = &mut work[(r % nf) * nf..(r % nf + 1) * nf];
-            for b in 0..n {
-                dst[b] = sign * src[b];
-                if b > 0 {
-                    dst[nf - b] = sign * py * src[b];
-                }
-            }
-        }
     }
 }
