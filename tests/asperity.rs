@@ -526,6 +526,26 @@ fn bush_summit_table_matches_the_direct_integrals() {
 }
 
 #[test]
+fn bush_pressure_curve_agrees_with_single_points() {
+    let m = SpectralMoments::new(1.0, 1.0, 30.0).unwrap();
+    let b = Bush::new(&m, 2.0, EllipticHertz::Exact).unwrap();
+    let p: Vec<f64> = (0..25)
+        .map(|i| 1e-6 * 10f64.powf(0.25 * f64::from(i)))
+        .collect();
+    let curve = b.pressure_curve(&p).unwrap();
+    for (c, &sigma) in curve.iter().zip(&p) {
+        let single = b.at_pressure(sigma).unwrap();
+        assert!(
+            (c.separation - single.separation).abs() < 1e-12,
+            "σ0 = {sigma}"
+        );
+        // The separation reproduces the pressure asked for.
+        let back = b.at_separation(c.separation).unwrap().nominal_pressure;
+        assert!(rel(back, sigma) < 1e-12, "σ0 = {sigma}: {back}");
+    }
+}
+
+#[test]
 fn validity_flags() {
     let small = SpectralMoments::new(1.0, 1.0, 3.0).unwrap();
     let gw = GreenwoodWilliamson::from_moments(&small, 1.0).unwrap();

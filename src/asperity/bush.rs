@@ -312,13 +312,26 @@ impl Bush {
         Ok(self.load_scale().ln() + Self::ln_phi(delta) + load.ln())
     }
 
+    /// The point at σ0 = `nominal_pressure`, Newton starting at δ = `start`.
+    fn at_pressure_from(&self, nominal_pressure: f64, start: f64) -> Result<AsperityPoint> {
+        check::positive("nominal_pressure", nominal_pressure)?;
+        let h = self.moments.rms_height();
+        let d = match self.newton(nominal_pressure, start) {
+            Some(delta) => delta * h,
+            None => solve_separation(&|d| self.ln_pressure(d), nominal_pressure, h, h)?,
+        };
+        let mut p = self.at_separation(d)?;
+        p.nominal_pressure = nominal_pressure;
+        Ok(p)
+    }
+
     /// δ with σ0(δ) = `target` by Newton's method on ln σ0 with the table's
     /// derivative d ln J_{3/2}/dδ = −(3/2) J_½/J_{3/2}; `None` (use the
     /// bracketing search) when the table is not in use or the iteration leaves it.
-    fn newton(&self, target: f64) -> Option<f64> {
+    fn newton(&self, target: f64, start: f64) -> Option<f64> {
         let table = self.table()?;
         let lt = target.ln() - self.load_scale().ln();
-        let mut delta = 0.0f64;
+        let mut delta = start;
         for _ in 0..NEWTON_ITERATIONS {
             let s = table.scaled(delta)?;
             if !(s[2] > 0.0 && s[3] > 0.0) {
@@ -364,14 +377,20 @@ impl AsperityTheory for Bush {
     }
 
     fn at_pressure(&self, nominal_pressure: f64) -> Result<AsperityPoint> {
-        check::positive("nominal_pressure", nominal_pressure)?;
-        let h = self.moments.rms_height();
-        let d = match self.newton(nominal_pressure) {
-            Some(delta) => delta * h,
-            None => solve_separation(&|d| self.ln_pressure(d), nominal_pressure, h, h)?,
-        };
-        let mut p = self.at_separation(d)?;
-        p.nominal_pressure = nominal_pressure;
-        Ok(p)
+        self.at_pressure_from(nominal_pressure, 0.0)
+    }
+
+    /// As [`AsperityTheory::at_pressure`], each Newton search starting from
+    /// the previous point's separation.
+    fn pressure_curve(&self, pressures: &[f64]) -> Result<Vec<AsperityPoint>> {
+        let mut start = 0.0;
+        pressures
+            .iter()
+            .map(|&p| {
+                let point = self.at_pressure_from(p, start)?;
+                start = (point.separation / self.moments.rms_height()).clamp(-8.0, 12.0);
+                Ok(point)
+            })
+            .collect()
     }
 }

@@ -114,6 +114,22 @@ impl Chebyshev {
         Chebyshev { a, b, c }
     }
 
+    /// Three series on the same interval and of the same length at one x, in
+    /// one Clenshaw loop (the summit table evaluates its three weights together).
+    pub(crate) fn eval3(series: &[Chebyshev; 3], x: f64) -> [f64; 3] {
+        let s0 = &series[0];
+        let t = (2.0 * x - s0.a - s0.b) / (s0.b - s0.a);
+        let (mut b1, mut b2) = ([0.0; 3], [0.0; 3]);
+        for k in (1..s0.c.len()).rev() {
+            for j in 0..3 {
+                let b0 = 2.0 * t * b1[j] - b2[j] + series[j].c[k];
+                b2[j] = b1[j];
+                b1[j] = b0;
+            }
+        }
+        [0, 1, 2].map(|j| t * b1[j] - b2[j] + series[j].c[0])
+    }
+
     /// Clenshaw summation at x ∈ [a, b].
     pub(crate) fn eval(&self, x: f64) -> f64 {
         let t = (2.0 * x - self.a - self.b) / (self.b - self.a);

@@ -110,9 +110,9 @@ impl SummitTable {
             let t = w * w;
             let e = (-(delta + 0.5 * t) * t).exp() * 2.0 * w * wt * half;
             let xi = delta + t;
-            let g_load = self.ln_g[2].eval(xi).exp();
-            out[0] += e * self.ln_g[0].eval(xi).exp();
-            out[1] += e * t * self.ln_g[1].eval(xi).exp();
+            let [g_count, g_area, g_load] = Chebyshev::eval3(&self.ln_g, xi).map(f64::exp);
+            out[0] += e * g_count;
+            out[1] += e * t * g_area;
             out[2] += e * t * w * g_load;
             out[3] += e * w * g_load;
         }
