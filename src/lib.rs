@@ -115,6 +115,7 @@
 //! | [`material`] | elastic bodies and the contact modulus E* |
 //! | [`theory`] | Persson's theory: G(ζ), A/A0 and 1 − A/A0 with error bounds, load and magnification curves |
 //! | [`kappa`] | κ of the low-load law A/A0 = κ σ0/(E* h'_rms): Bush and Persson |
+//! | [`asperity`] | the asperity theories from the same moments m0, m2, m4 (or a map): overlap (bearing area), Greenwood–Williamson, Bush–Gibson–Thomas at finite load, with validity flags |
 //! | [`corrected`] | the corrected theories (Yang–Persson, Wang–Müser, Xu et al.) with their parameter γ |
 //! | [`stress`] | the stress distribution P(σ, ζ) for flat, Hertz, cylinder and tabulated starts, elastic or with a yield stress |
 //! | [`adhesion`] | adhesion: the Persson–Tosatti energy balance Δγ_eff(ζ), the adhesive stress diffusion with the moving detachment boundary (A/A0 down to tensile σ0, pull-off stress) and the Pastewka–Robbins criterion |
@@ -148,6 +149,7 @@
 #![warn(missing_docs)]
 
 pub mod adhesion;
+pub mod asperity;
 #[cfg(feature = "bem")]
 pub mod bem;
 pub mod conductance;

@@ -27,6 +27,10 @@
 //! - [`rough`]: the rough-contact loop (one solve per nominal pressure) and its report.
 //! - [`histogram`]: pressure histograms P(σ) that integrate to A/A0.
 //! - [`reynolds`], [`stiffness`]: the exact flow through a solved gap (Reynolds' equation) and the exact contact stiffness (conductance by Barber's identity).
+//! - [`patches`]: connected contact patches (4/8 neighbours, periodic wrap), their areas,
+//!   perimeters and log-binned size distribution; exponential against Gaussian pressure tails.
+//! - [`subsurface`]: the stress tensor below the surface (periodic or free half-space),
+//!   von Mises and maximum shear, first yield.
 //!
 //! # Example
 //! ```
@@ -43,11 +47,13 @@ pub mod histogram;
 pub mod kernel;
 #[cfg(feature = "flow")]
 pub mod reynolds;
+pub mod patches;
 pub mod resample;
 pub mod rough;
 pub mod saturated;
 pub mod solver;
 pub mod stiffness;
+pub mod subsurface;
 pub mod surface;
 
 pub use histogram::{pressure_histogram, saturated_histogram, HistogramBin, SaturatedHistogram};
