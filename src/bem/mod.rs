@@ -45,10 +45,10 @@ pub mod fft;
 pub mod hertz;
 pub mod histogram;
 pub mod kernel;
-#[cfg(feature = "flow")]
-pub mod reynolds;
 pub mod patches;
 pub mod resample;
+#[cfg(feature = "flow")]
+pub mod reynolds;
 pub mod rough;
 pub mod saturated;
 pub mod solver;

@@ -558,7 +558,10 @@ fn instrument_files_through_the_command_line() {
     assert_eq!(w.len(), 1, "{v}");
     assert_eq!(w[0]["kind"], "hurst_not_fitted", "{w:?}");
     assert!(
-        w[0]["message"].as_str().unwrap().contains("no Hurst exponent"),
+        w[0]["message"]
+            .as_str()
+            .unwrap()
+            .contains("no Hurst exponent"),
         "{w:?}"
     );
     assert!(v["rms_height"].as_f64().unwrap() > 3.76);
