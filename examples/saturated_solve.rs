@@ -16,8 +16,9 @@ fn main() {
 
 #[cfg(feature = "bem")]
 fn main() -> persson::Result<()> {
-    use persson::bem::surface::{read_height_map, write_npy};
+    use persson::bem::surface::read_height_map;
     use persson::bem::{Boundary, Control, Method, Operator, Options, Solver};
+    use persson::io::npy;
     use std::path::Path;
 
     let a: Vec<String> = std::env::args().collect();
@@ -41,7 +42,7 @@ fn main() -> persson::Result<()> {
     let mut solver =
         Solver::with_method(Operator::new(Boundary::Periodic, surf.n, 1.0, 1.0)?, method);
     let sol = solver.solve(&surf.heights, Control::MeanPressure(num(&a[2])), &opts)?;
-    write_npy(Path::new(&a[5]), surf.n, surf.n, &sol.pressure)?;
+    npy::write(Path::new(&a[5]), surf.n, surf.n, &sol.pressure)?;
     println!(
         "{{\"contact_fraction\": {:e}, \"elastic_fraction\": {:e}, \"plastic_fraction\": {:e}, \
          \"plastic_displacement_mean\": {:e}, \"plastic_displacement_max\": {:e}, \

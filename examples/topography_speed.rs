@@ -87,7 +87,7 @@ fn main() -> persson::Result<()> {
     let start = Instant::now();
     let r = persson::topography::analyse(&t, &Default::default())?;
     println!(
-        "analyse (spectrum + real-space statistics + Hurst fit) in {:.3} s: H = {:.3} ± {:.3}",
+        "analyse (spectrum + real-space statistics + Hurst fit) in {:.3} s: H = {:?} ± {:?}",
         start.elapsed().as_secs_f64(),
         r.hurst,
         r.hurst_error

@@ -110,12 +110,22 @@ impl Error {
     }
 }
 
-/// Validation helpers (for the `persson` binary too, hence public but hidden):
-/// each returns the value when it is in range, else an
-/// [`Error::InvalidParameter`] naming the parameter and the allowed range.
-#[doc(hidden)]
+/// Checks of the ranges every parameter of the crate is held to, public so
+/// that the layers above (the studies, the command line, the Python package)
+/// refuse a value with the same words as the numerics: each returns the
+/// value when it is in range, else an [`Error::InvalidParameter`] naming the
+/// parameter, its value and the allowed range.
+///
+/// # Examples
+/// ```
+/// use persson::error::{check, Error};
+/// assert_eq!(check::positive("size", 2.0).unwrap(), 2.0);
+/// let e = check::positive("size", -1.0).unwrap_err();
+/// assert_eq!(e.to_string(), "invalid size = -1: must be finite and > 0");
+/// assert!(matches!(e, Error::InvalidParameter { .. }));
+/// ```
 pub mod check {
-    use super::{Error, Result};
+    use super::{num, Error, Result};
 
     /// `v` finite and `> 0`.
     pub fn positive(name: &str, v: f64) -> Result<f64> {
@@ -155,6 +165,39 @@ pub mod check {
         } else {
             Err(Error::invalid(name, v, format!("finite and >= {lo}")))
         }
+    }
+
+    /// A yield stress σY: finite, `> 0` and above every nominal (mean)
+    /// pressure of `pressures` (with 0 ≤ p ≤ σY no contact carries a mean
+    /// pressure σ0 ≥ σY: no solution exists). The one check of the saturated
+    /// BEM and of the studies built on it.
+    ///
+    /// # Examples
+    /// ```
+    /// use persson::error::check;
+    /// assert!(check::yield_stress("yield_stress", 0.05, &[0.01, 0.02]).is_ok());
+    /// let e = check::yield_stress("yield_stress", 0.02, &[0.01, 0.02]).unwrap_err();
+    /// assert!(e.to_string().contains("no solution exists"));
+    /// ```
+    pub fn yield_stress(name: &str, v: f64, pressures: &[f64]) -> Result<f64> {
+        positive(name, v)?;
+        let top = pressures
+            .iter()
+            .copied()
+            .filter(|p| p.is_finite())
+            .fold(0.0, f64::max);
+        if v <= top {
+            return Err(Error::invalid(
+                name,
+                v,
+                format!(
+                    "> every nominal pressure (largest {}): with 0 ≤ p ≤ σY no contact carries \
+                     a mean pressure σ0 ≥ σY, so no solution exists",
+                    num(top)
+                ),
+            ));
+        }
+        Ok(v)
     }
 
     /// A tolerance: finite and in `[1e-15, 0.1]`.

@@ -115,17 +115,17 @@
 //! | [`material`] | elastic bodies and the contact modulus E* |
 //! | [`theory`] | Persson's theory: G(ζ), A/A0 and 1 − A/A0 with error bounds, load and magnification curves |
 //! | [`kappa`] | κ of the low-load law A/A0 = κ σ0/(E* h'_rms): Bush and Persson |
+//! | [`asperity`] | the asperity theories from the same moments m0, m2, m4 (or a map): overlap (bearing area), Greenwood–Williamson, Bush–Gibson–Thomas at finite load, with validity flags |
 //! | [`corrected`] | the corrected theories (Yang–Persson, Wang–Müser, Xu et al.) with their parameter γ |
 //! | [`stress`] | the stress distribution P(σ, ζ) for flat, Hertz, cylinder and tabulated starts, elastic or with a yield stress |
+//! | [`adhesion`] | adhesion: the Persson–Tosatti energy balance Δγ_eff(ζ), the adhesive stress diffusion with the moving detachment boundary (A/A0 down to tensile σ0, pull-off stress) and the Pastewka–Robbins criterion |
 //! | [`separation`] | the mean interfacial separation ū, the contact stiffness and the stored elastic energy |
+//! | [`friction`] | rubber friction: Persson's viscoelastic μ(v, T) from a master curve, a Prony series or a standard linear solid, with time–temperature superposition, A(v)/A0 and the flash temperature |
+//! | [`conductance`] | thermal and electrical contact conductance from the stiffness (Barber's identity) and the conductance through the gap |
+//! | [`leakage`] | the leak rate of a static seal: critical junction and effective medium |
+//! | [`gap`] | the distribution of interfacial separations P(u) and the magnification-resolved separation u1(ζ) |
 //! | `bem` | (feature `bem`) the FFT boundary-element solver: elastic kernels, surface synthesis, the Polonsky–Keer solver, Hertz validation |
-//! | [`validation`] | validation of numerical codes: continuum extrapolation, κ fits, scoring a user's data against the theories, and (feature `bem`) the theories against the BEM at several resolutions of one surface |
-//! | [`scene`] | scene files: one calculation described in a versioned JSON document, and running it |
-//! | [`report`] | error against run time of every method, and the stability sweep over extreme inputs |
-//! | [`table`] | the one table type every report renders to, as aligned text or CSV |
-//! | `plot` | (feature `plot`) figures as SVG or PNG from the typed reports |
 //! | [`error`] | the crate's [`Error`] and [`Result`]; [`Estimate`] is a value with its error bound, which many functions return |
-//! | [`warning`] | [`Warning`]: a remark on the input (a pressure near E*, a slope above 1, ζ beyond the band, a spectrum file's convention) that never changes a number, carried by the reports |
 //!
 //! ## References
 //!
@@ -148,36 +148,31 @@
 
 #![warn(missing_docs)]
 
+pub mod adhesion;
+pub mod asperity;
 #[cfg(feature = "bem")]
 pub mod bem;
+pub mod conductance;
 pub mod corrected;
 pub mod error;
-// File output for the `persson` binary (a separate crate): not part of the
-// library's API.
-#[doc(hidden)]
+pub mod friction;
+pub mod gap;
 pub mod io;
 pub mod kappa;
+pub mod leakage;
 pub mod material;
-#[cfg(feature = "plot")]
-pub mod plot;
 mod quad;
 pub mod reference;
-pub mod report;
-pub mod scene;
 pub mod separation;
 mod special;
 pub mod spectrum;
 pub mod stress;
-pub mod table;
 pub mod theory;
 #[cfg(feature = "topography")]
 pub mod topography;
-pub mod validation;
-pub mod warning;
 
 pub use error::{Error, Result};
 pub use material::Material;
 /// A value with a bound on its absolute error, returned by every integral.
 pub use quad::Estimate;
 pub use spectrum::Spectrum;
-pub use warning::Warning;

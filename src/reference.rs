@@ -220,20 +220,65 @@ fn contact_area(a: f64) -> f64 {
     PI * a * a
 }
 
-/// F = 4E* a³/(3R), the load that gives a ball of radius `radius` the
-/// contact radius `a` (Johnson 4.22 solved for F).
-pub(crate) fn ball_load(a: f64, radius: f64, contact_modulus: f64) -> f64 {
+/// The load that gives a ball of radius `radius` the contact radius `a`
+/// (unit of `contact_modulus` times the square of the unit of `a`; N for SI).
+///
+/// # Formula
+/// ```text
+/// F = 4E* a³/(3R)        (Johnson 4.22 solved for F)
+/// ```
+///
+/// # References
+/// K. L. Johnson, *Contact Mechanics* (CUP 1985), Eq. 4.22.
+///
+/// # Examples
+/// ```
+/// // a = 0.1 R, E* = 1: F = 4e-3/3
+/// assert!((persson::reference::ball_load(0.1, 1.0, 1.0) - 4e-3 / 3.0).abs() < 1e-18);
+/// ```
+pub fn ball_load(a: f64, radius: f64, contact_modulus: f64) -> f64 {
     4.0 * contact_modulus * a.powi(3) / (3.0 * radius)
 }
 
-/// p₀ = 2E* a/(π R), the peak pressure of a ball of radius `radius` with
-/// contact radius `a` (Johnson 4.24 with 4.22).
-pub(crate) fn ball_peak_pressure(a: f64, radius: f64, contact_modulus: f64) -> f64 {
+/// The peak pressure of a ball of radius `radius` with contact radius `a`
+/// (unit of `contact_modulus`).
+///
+/// # Formula
+/// ```text
+/// p₀ = 2E* a/(π R) = 3F/(2π a²)     (Johnson 4.24 with 4.22)
+/// ```
+///
+/// # References
+/// K. L. Johnson, *Contact Mechanics* (CUP 1985), Eqs. 4.22, 4.24.
+///
+/// # Examples
+/// ```
+/// use std::f64::consts::PI;
+/// let p0 = persson::reference::ball_peak_pressure(0.1, 1.0, 1.0);
+/// assert!((p0 - 0.2 / PI).abs() < 1e-17);
+/// ```
+pub fn ball_peak_pressure(a: f64, radius: f64, contact_modulus: f64) -> f64 {
     2.0 * contact_modulus * a / (PI * radius)
 }
 
-/// a = (3FR/(4E*))^{1/3}, the contact radius of a ball (Johnson 4.22).
-pub(crate) fn ball_contact_radius(load: f64, radius: f64, contact_modulus: f64) -> f64 {
+/// The contact radius of a ball of radius `radius` pressed with `load`
+/// (unit of `radius`).
+///
+/// # Formula
+/// ```text
+/// a = (3 F R/(4E*))^{1/3}      (Johnson 4.22)
+/// ```
+///
+/// # References
+/// K. L. Johnson, *Contact Mechanics* (CUP 1985), Eq. 4.22.
+///
+/// # Examples
+/// ```
+/// use persson::reference::{ball_contact_radius, ball_load};
+/// let f = ball_load(0.1, 1.0, 1.0);
+/// assert!((ball_contact_radius(f, 1.0, 1.0) - 0.1).abs() < 1e-16);
+/// ```
+pub fn ball_contact_radius(load: f64, radius: f64, contact_modulus: f64) -> f64 {
     (3.0 * load * radius / (4.0 * contact_modulus)).cbrt()
 }
 

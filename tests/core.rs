@@ -288,18 +288,57 @@ fn large_g_limit_is_persson_kappa() {
     );
 }
 
+/// (σ0, erf(√2 σ0), erfc(√2 σ0)) for E* = h'_rms = 1: A/A0 and 1 − A/A0 at
+/// full magnification, mpmath at 50 digits (`tests/reference/full_magnification.py`).
+#[allow(clippy::excessive_precision)]
+const FULL_MAGNIFICATION: [(f64, f64, f64); 14] = [
+    (1e-12, 1.5957691216057306797e-12, 9.9999999999840423088e-1),
+    (1e-11, 1.5957691216057306152e-11, 9.9999999998404230878e-1),
+    (1e-10, 1.5957691216057307699e-10, 9.9999999984042308784e-1),
+    (1e-09, 1.5957691216057308101e-9, 9.9999999840423087839e-1),
+    (1e-08, 1.5957691216057306388e-8, 9.9999998404230878394e-1),
+    (1e-07, 1.5957691216057200011e-7, 9.9999984042308783943e-1),
+    (1e-06, 1.5957691216046667935e-6, 9.9999840423087839533e-1),
+    (1e-05, 1.5957691214993462342e-5, 9.9998404230878500654e-1),
+    (0.0001, 1.5957691109672700414e-4, 9.99840423088903273e-1),
+    (0.001, 1.5957680577602879818e-3, 9.9840423194223971202e-1),
+    (0.01, 1.5956627433803962385e-2, 9.8404337256619603762e-1),
+    (0.1, 1.5851941887820605477e-1, 8.4148058112179394523e-1),
+    (1.0, 9.544997361036415856e-1, 4.5500263896358414401e-2),
+    (10.0, 1.0, 5.5072482372124673902e-89),
+];
+
+/// A/A0 over thirteen decades of σ0 at full magnification, against its closed
+/// form: G = (E* h'_rms)²/(8σ0²) and A/A0 = erf(√2 σ0/(E* h'_rms)), 1 − A/A0
+/// = erfc(√2 σ0/(E* h'_rms)) (mpmath), for a spectrum of rms slope 1 whose
+/// band spans ten decades (H = 0.99, q_l = 1e3, q_s = 1e13).
 #[test]
-fn pressures_over_twelve_decades_are_finite_and_monotone() {
+fn pressures_over_twelve_decades_match_the_closed_form() {
+    // erfc(x) at x = √2 σ0 carries 2x² times the relative error of x, which
+    // is half that of G (a few ulps): 2·200·1e-15 at σ0 = 10.
+    let erfc_tol = |x: f64| CLAIM.max(2.0 * x * x * 1e-15);
     let s = SelfAffine::new(1e3, 1e4, 1e13, 0.99, Amplitude::RmsSlope(1.0)).unwrap();
     let p = Persson::new(&s, 1.0).unwrap();
-    let pressures: Vec<f64> = (0..=13).map(|i| 10f64.powi(i - 12)).collect();
+    let pressures: Vec<f64> = FULL_MAGNIFICATION.iter().map(|r| r.0).collect();
     let pts = p.load_curve(&pressures, p.zeta_max()).unwrap();
-    for w in pts.windows(2) {
-        assert!(w[1].contact_fraction > w[0].contact_fraction);
+    for (pt, &(sigma, a, nc)) in pts.iter().zip(&FULL_MAGNIFICATION) {
+        assert!(
+            rel(pt.g, 1.0 / (8.0 * sigma * sigma)) < CLAIM,
+            "σ0 = {sigma}: G = {}",
+            pt.g
+        );
+        assert!(
+            rel(pt.contact_fraction, a) < CLAIM,
+            "σ0 = {sigma}: A/A0 = {:e} vs {a:e}",
+            pt.contact_fraction
+        );
+        let x = std::f64::consts::SQRT_2 * sigma;
+        assert!(
+            rel(pt.non_contact_fraction, nc) < erfc_tol(x),
+            "σ0 = {sigma}: 1 − A/A0 = {:e} vs {nc:e}",
+            pt.non_contact_fraction
+        );
     }
-    assert!(pts
-        .iter()
-        .all(|x| x.contact_fraction.is_finite() && x.g.is_finite() && x.contact_fraction <= 1.0));
 }
 
 fn write_tmp(name: &str, text: &str) -> std::path::PathBuf {

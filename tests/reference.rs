@@ -197,7 +197,7 @@ fn bem_hertz_case_is_the_reference() {
     );
     let f = 4e-3 / 3.0;
     assert_eq!(
-        persson::bem::hertz::contact_radius(f, 1.0, 1.0),
+        persson::reference::ball_contact_radius(f, 1.0, 1.0),
         (3.0 * f / 4.0f64).cbrt()
     );
 }

@@ -115,7 +115,7 @@ fn npy_float_orders_and_byte_orders() {
     }
     // The crate's writer reads back.
     let p = dir().join("written.npy");
-    read::write_npy(&p, ny, nx, &h).unwrap();
+    persson::io::npy::write(&p, ny, nx, &h).unwrap();
     assert_eq!(read::read(&p, &pixel(1.0)).unwrap().heights(), &h[..]);
 }
 
@@ -259,7 +259,7 @@ fn xyz_regular_grid_any_order() {
     for (a, b) in t.heights().iter().zip(&h) {
         assert!((a - b).abs() <= 1e-15 * b.abs().max(1.0));
     }
-    // A missing point is undefined; giving a size is refused (the file has one).
+    // A missing point is undefined; a size given is checked against the file's.
     let missing = lines[1..].join("\n");
     read_error(
         "missing.xyz",
@@ -271,8 +271,14 @@ fn xyz_regular_grid_any_order() {
         "sized.xyz",
         lines.join("\n").as_bytes(),
         &pixel(1.0),
-        "stores its physical size",
+        "disagrees",
     );
+    let agreeing = read::read(
+        &write("agreeing.xyz", lines.join("\n").as_bytes()),
+        &pixel(d),
+    )
+    .unwrap();
+    assert_eq!(agreeing.heights(), t.heights());
     read_error(
         "irregular.xyz",
         b"0 0 1\n1 0 2\n2.5 0 3\n0 1 4\n1 1 5\n2.5 1 6\n",
@@ -404,18 +410,48 @@ fn line_scan_two_columns() {
     assert_eq!(t.shape(), [1, n]);
     assert!((t.lx() - n as f64 * d).abs() < 1e-6 * t.lx());
     assert_eq!(t.pixel_size().len(), 1);
-    let bad = "0 1\n1 2\n3 3\n4 4\n";
-    read_error(
-        "gappy.txt",
-        bad.as_bytes(),
+    // Not equally spaced beyond the written precision: linearly interpolated
+    // onto n equally spaced points (SurfaceTopography's to_uniform), noted.
+    let gappy = read::read(
+        &write("gappy.txt", b"0 1\n1 2\n3 3\n4 5\n"),
         &ReadOptions::default(),
-        "not equally spaced",
+    )
+    .unwrap();
+    let third = 4.0 / 3.0;
+    let expect = [
+        1.0,
+        2.0 + 0.5 * (third - 1.0),
+        2.0 + 0.5 * (2.0 * third - 1.0),
+        5.0,
+    ];
+    for (a, b) in gappy.heights().iter().zip(expect) {
+        assert!((a - b).abs() <= 4.0 * f64::EPSILON * b, "{a} vs {b}");
+    }
+    assert_eq!((gappy.lx(), gappy.pixel_size()), (4.0 * third, vec![third]));
+    assert!(matches!(
+        gappy.notes(),
+        [persson::topography::Note::Resampled { points: 4, max_deviation }]
+            if (max_deviation - 0.25).abs() < 1e-15
+    ));
+    // Written to one decimal: 0.2 and 0.3 are 0.15 and 0.3125 rounded, on the grid.
+    let rounded = read::read(
+        &write("rounded.txt", b"0.0 1\n0.2 2\n0.3 3\n0.5 5\n0.6 1\n"),
+        &ReadOptions::default(),
+    )
+    .unwrap();
+    assert!(rounded.notes().is_empty());
+    assert_eq!(rounded.heights(), &[1.0, 2.0, 3.0, 5.0, 1.0]);
+    read_error(
+        "back.txt",
+        b"0 1\n2 2\n1 3\n",
+        &ReadOptions::default(),
+        "does not increase",
     );
     let forced = ReadOptions {
         format: Some(Format::LineScan),
         ..Default::default()
     };
-    read_error("three.txt", b"0 1 2\n1 2 3\n", &forced, "two columns");
+    read_error("three.txt", b"0.5 1 2\n1.5 2 3\n", &forced, "two columns");
 }
 
 // ---------------------------------------------------------------- conditioning
@@ -1156,38 +1192,4 @@ fn surface_topography_profile_spectrum() {
             ST_SPECTRUM,
         );
     }
-}
-
-#[test]
-fn analysis_prints_as_a_table_and_json() {
-    use persson::table::Tabulate;
-    let t = Topography::map(16, 12, 1.6e-5, 1.2e-5, sample(16, 12), false).unwrap();
-    let r = analyse(&t, &AnalysisOptions::default()).unwrap();
-    let tables = r.tables();
-    assert_eq!(tables.len(), 1);
-    assert_eq!(tables[0].name, "psd");
-    assert_eq!(tables[0].rows.len(), r.psd.q.len());
-    let text = tables[0].to_text();
-    assert!(
-        text.contains("12 × 16") && text.contains("plane") && text.contains("hann"),
-        "{text}"
-    );
-    let json = serde_json::to_value(&r).unwrap();
-    for key in [
-        "shape",
-        "pixel_size",
-        "rms_height",
-        "rms_slope",
-        "rms_curvature",
-        "hurst",
-        "hurst_error",
-        "q_min",
-        "q_max",
-        "psd",
-    ] {
-        assert!(json.get(key).is_some(), "JSON key {key}");
-    }
-    assert_eq!(json["psd"]["q"].as_array().unwrap().len(), r.psd.q.len());
-    assert_eq!(json["detrend"], "plane");
-    assert_eq!(json["layout"], "map");
 }

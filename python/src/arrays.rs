@@ -1,6 +1,7 @@
-//! numpy arrays in and out: float64 only (a `ValueError` naming the argument
-//! for any other dtype), Python floats and lists converted, results handed
-//! to numpy without a copy.
+//! numpy arrays in and out: float64 arrays as they are, arrays and scalars of
+//! any other real dtype (int, unsigned, float16/32) converted to float64 (a
+//! `ValueError` naming the argument for complex, bool or object data), Python
+//! numbers and lists converted, results handed to numpy without a copy.
 
 use numpy::ndarray::{ArrayD, IxDyn};
 use numpy::{IntoPyArray, PyReadonlyArrayDyn, PyUntypedArray, PyUntypedArrayMethods};
@@ -10,20 +11,25 @@ use pyo3::types::PyDict;
 use crate::value_error;
 
 /// `obj` as a read-only float64 array (any shape): an ndarray of dtype
-/// float64 as it is (no copy), a Python float or a list of them converted.
+/// float64 as it is (no copy); an array of another real dtype (int, unsigned,
+/// float16/32: exact in float64 up to 2⁵³), a numpy scalar, a Python number
+/// or a list of them converted.
 ///
 /// # Errors
-/// `ValueError` naming `arg`: an array of another dtype, or something numpy
-/// cannot read as float64.
+/// `ValueError` naming `arg`: an array of complex, bool or object dtype, or
+/// something numpy cannot read as float64.
 pub fn floats<'py>(arg: &str, obj: &Bound<'py, PyAny>) -> PyResult<PyReadonlyArrayDyn<'py, f64>> {
     if let Ok(a) = obj.extract::<PyReadonlyArrayDyn<'py, f64>>() {
         return Ok(a);
     }
     if let Ok(u) = obj.extract::<Bound<'py, PyUntypedArray>>() {
-        return Err(value_error(format!(
-            "{arg}: an array of dtype {}, expected float64 (convert it with .astype(numpy.float64))",
-            u.dtype()
-        )));
+        let kind = u.dtype().getattr("kind")?.extract::<String>()?;
+        if !matches!(kind.as_str(), "i" | "u" | "f") {
+            return Err(value_error(format!(
+                "{arg}: an array of dtype {}, expected real numbers (float64, or an integer or float dtype)",
+                u.dtype()
+            )));
+        }
     }
     let py = obj.py();
     let kwargs = PyDict::new(py);

@@ -5,18 +5,18 @@
 use std::path::{Path, PathBuf};
 
 use persson::bem::hertz::{self, HertzCase};
-use persson::bem::rough::{self, RoughOptions, SurfaceSource};
-use persson::bem::surface::{synthesize as synth, Surface};
+use persson::bem::rough::{self, RoughOptions, SurfaceOrigin};
+use persson::bem::surface::{synthesize as synth, GridSurface};
 use persson::bem::{check_memory, Boundary, Control, Operator, Options, Solver};
 use persson::error::check;
-use persson::scene::BoundaryName;
-use persson::validation::{self, ComparisonConfig, SweepSettings, UserData, UserHistogram};
+use persson_studies::scene::BoundaryName;
+use persson_studies::validation::{self, ComparisonConfig, SweepSettings, UserData, UserHistogram};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::arrays::{float_list, floats, map, square};
 use crate::spectrum::Spectrum;
-use crate::{err, name, to_dict, to_dict_warned, value_error};
+use crate::{err, name, to_dict, to_dict_warned, value_error, Seed};
 
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(synthesize, m)?)?;
@@ -43,7 +43,7 @@ fn options(tolerance: f64, max_iterations: usize, yield_stress: Option<f64>) -> 
 
 /// A square height map (N × N, float64, C-contiguous) of side `size` as the
 /// solver's surface (one copy: the solver's own buffer).
-fn surface(heights: &Bound<'_, PyAny>, size: f64) -> PyResult<Surface> {
+fn surface(heights: &Bound<'_, PyAny>, size: f64) -> PyResult<GridSurface> {
     let a = floats("heights", heights)?;
     let ([rows, cols], values) = map("heights", &a)?;
     if rows != cols {
@@ -51,21 +51,34 @@ fn surface(heights: &Bound<'_, PyAny>, size: f64) -> PyResult<Surface> {
             "heights: a {rows} × {cols} array; the BEM solves on square N × N maps (crop or resample it)"
         )));
     }
-    Surface::new(rows, size, values.to_vec()).map_err(err)
+    GridSurface::new(rows, size, values.to_vec()).map_err(err)
 }
+
+// The Python signatures spell the library's defaults as literals (so that
+// `inspect.signature` shows them, not `Ellipsis`); these keep them equal.
+const _: () = {
+    assert!(validation::DEFAULT_LEVELS == 3);
+    assert!(validation::DEFAULT_BINS == 50);
+    assert!(validation::DEFAULT_ALPHA == 0.7);
+    assert!(validation::DEFAULT_PIXELS_PER_WAVELENGTH == 4.0);
+};
 
 /// A Gaussian random surface of the spectrum on an N × N periodic grid of
 /// side `size` (default 2π/q_l), heights in m (N × N numpy array),
 /// reproducible from `seed` (Pcg64Mcg; the CLI's `bem rough --seed`).
 #[pyfunction]
-#[pyo3(signature = (spectrum, grid, *, size=None, seed=1))]
+#[pyo3(
+    signature = (spectrum, grid, *, size=None, seed=Seed(1)),
+    text_signature = "(spectrum, grid, *, size=None, seed=1)"
+)]
 fn synthesize<'py>(
     py: Python<'py>,
     spectrum: &Spectrum,
     grid: usize,
     size: Option<f64>,
-    seed: u64,
+    seed: Seed,
 ) -> PyResult<Bound<'py, PyAny>> {
+    let Seed(seed) = seed;
     let size = size.unwrap_or(std::f64::consts::TAU / spectrum.shared.0.q_min());
     check::positive("size", size).map_err(err)?;
     let s = &spectrum.shared;
@@ -143,7 +156,10 @@ fn bem_solve<'py>(
 /// (side `size`, default 2π/q_l); with `bins`, each solve's pressure
 /// histogram.
 #[pyfunction]
-#[pyo3(signature = (modulus, pressure, *, heights=None, size=None, spectrum=None, grid=None, seed=1, boundary="periodic", yield_stress=None, bins=None, tolerance=1e-10, max_iterations=10_000))]
+#[pyo3(
+    signature = (modulus, pressure, *, heights=None, size=None, spectrum=None, grid=None, seed=Seed(1), boundary="periodic", yield_stress=None, bins=None, tolerance=1e-10, max_iterations=10_000),
+    text_signature = "(modulus, pressure, *, heights=None, size=None, spectrum=None, grid=None, seed=1, boundary='periodic', yield_stress=None, bins=None, tolerance=1e-10, max_iterations=10000)"
+)]
 #[allow(clippy::too_many_arguments)]
 fn bem_rough<'py>(
     py: Python<'py>,
@@ -153,13 +169,14 @@ fn bem_rough<'py>(
     size: Option<f64>,
     spectrum: Option<&Spectrum>,
     grid: Option<usize>,
-    seed: u64,
+    seed: Seed,
     boundary: &str,
     yield_stress: Option<f64>,
     bins: Option<usize>,
     tolerance: f64,
     max_iterations: usize,
 ) -> PyResult<Bound<'py, PyAny>> {
+    let Seed(seed) = seed;
     let pressures = float_list("pressure", pressure)?;
     let b = self::boundary(boundary)?;
     let opts = RoughOptions {
@@ -171,7 +188,7 @@ fn bem_rough<'py>(
         (Some(h), None, None) => {
             let size = size.ok_or_else(|| value_error("size: required with heights"))?;
             let s = surface(h, size)?;
-            let source = SurfaceSource::height_map(Path::new("(array)"));
+            let source = SurfaceOrigin::height_map(Path::new("(array)"));
             py.detach(|| rough::rough_contact(&s, source, modulus, &pressures, &opts, &mut ()))
         }
         (None, Some(sp), Some(n)) => {
@@ -183,7 +200,7 @@ fn bem_rough<'py>(
                     size.unwrap_or(std::f64::consts::TAU / shared.0.q_min()),
                 )?;
                 let s = synth(shared, n, size, seed)?;
-                let source = SurfaceSource::synthesised(shared, seed)?;
+                let source = SurfaceOrigin::synthesised(shared, seed)?;
                 rough::rough_contact(&s, source, modulus, &pressures, &opts, &mut ())
             })
         }
@@ -194,7 +211,7 @@ fn bem_rough<'py>(
         }
     }
     .map_err(err)?;
-    to_dict_warned(py, &r, &persson::warning::of_rough(&r))
+    to_dict_warned(py, &r, &persson_studies::warning::of_rough(&r))
 }
 
 /// `persson bem hertz --json`: the BEM against the Hertz closed form (a
@@ -265,7 +282,10 @@ fn bem_hertz<'py>(
 /// saturated BEM against Persson's finite-σY P(σ), A_el and A_pl, as
 /// `compare --yield-stress`.
 #[pyfunction]
-#[pyo3(signature = (spectrum, modulus, pressure=None, *, heights=None, size=None, periodic=false, grid=256, levels=validation::DEFAULT_LEVELS, seeds=1, seed=1, alpha=Some(validation::DEFAULT_ALPHA), pixels_per_wavelength=validation::DEFAULT_PIXELS_PER_WAVELENGTH, tolerance=1e-10, max_iterations=10_000, bins=40, histogram_pressure=None, data=None, data_histogram=None, yield_stress=None))]
+#[pyo3(
+    signature = (spectrum, modulus, pressure=None, *, heights=None, size=None, periodic=false, grid=256, levels=3, seeds=1, seed=Seed(1), alpha=Some(0.7), pixels_per_wavelength=4.0, tolerance=1e-10, max_iterations=10_000, bins=50, histogram_pressure=None, data=None, data_histogram=None, yield_stress=None),
+    text_signature = "(spectrum, modulus, pressure=None, *, heights=None, size=None, periodic=False, grid=256, levels=3, seeds=1, seed=1, alpha=0.7, pixels_per_wavelength=4.0, tolerance=1e-10, max_iterations=10000, bins=50, histogram_pressure=None, data=None, data_histogram=None, yield_stress=None)"
+)]
 #[allow(clippy::too_many_arguments)]
 fn compare<'py>(
     py: Python<'py>,
@@ -278,7 +298,7 @@ fn compare<'py>(
     grid: usize,
     levels: usize,
     seeds: usize,
-    seed: u64,
+    seed: Seed,
     alpha: Option<f64>,
     pixels_per_wavelength: f64,
     tolerance: f64,
@@ -289,6 +309,7 @@ fn compare<'py>(
     data_histogram: Option<PathBuf>,
     yield_stress: Option<f64>,
 ) -> PyResult<Bound<'py, PyAny>> {
+    let Seed(seed) = seed;
     if seeds < 1 {
         return Err(value_error("seeds: must be at least 1"));
     }

@@ -48,14 +48,38 @@ pub(crate) fn to_dict<'py, T: Serialize>(
 pub(crate) fn to_dict_warned<'py, T: Serialize>(
     py: Python<'py>,
     report: &T,
-    warnings: &[persson::Warning],
+    warnings: &[persson_studies::Warning],
 ) -> PyResult<Bound<'py, PyAny>> {
     let category = py.get_type::<pyo3::exceptions::PyUserWarning>();
     for w in warnings {
         let text = std::ffi::CString::new(w.to_string()).map_err(|e| value_error(e.to_string()))?;
         PyErr::warn(py, category.as_any(), &text, 2)?;
     }
-    to_dict(py, &persson::warning::Warned::new(report, warnings))
+    to_dict(py, &persson_studies::warning::Warned::new(report, warnings))
+}
+
+/// A seed from Python: an integer from 0 to 2⁶⁴ − 1 (a numpy integer too);
+/// anything else a `ValueError` naming `seed` (not pyo3's `OverflowError`
+/// for a negative one).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Seed(pub u64);
+
+impl<'a, 'py> FromPyObject<'a, 'py> for Seed {
+    type Error = PyErr;
+
+    fn extract(obj: pyo3::Borrowed<'a, 'py, PyAny>) -> PyResult<Self> {
+        if let Ok(v) = obj.extract::<u64>() {
+            return Ok(Seed(v));
+        }
+        let shown = obj
+            .str()
+            .map(|s| s.to_string())
+            .unwrap_or_else(|_| "?".into());
+        Err(value_error(format!(
+            "invalid seed = {shown}: must be an integer from 0 to {} (2^64 − 1)",
+            u64::MAX
+        )))
+    }
 }
 
 /// A value of a closed set (theory, boundary, start, convention, detrend,

@@ -4,12 +4,12 @@
 use std::path::{Path, PathBuf};
 
 use numpy::IntoPyArray;
-use persson::scene::{
+use persson::separation::Separation;
+use persson::stress::{Start, TabulatedStart};
+use persson_studies::scene::{
     run, AreaOutput, BallSpec, CylinderSpec, MagnificationOutput, Scene, SeparationOutput,
     StartName, StressOutput, TheoriesOutput, TheoryName, TheorySpec,
 };
-use persson::separation::Separation;
-use persson::stress::{Start, TabulatedStart};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -30,10 +30,17 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     Ok(())
 }
 
+// The signatures spell the library's default tolerances as literals (so that
+// `inspect.signature` shows them, not `Ellipsis`); these keep them equal.
+const _: () = {
+    assert!(persson::corrected::DEFAULT_TOLERANCE == 1e-12);
+    assert!(persson::separation::DEFAULT_TOLERANCE == 1e-10);
+};
+
 /// `persson area --json`: A/A0 against the nominal pressures with G, its
 /// error bound, the effective G of a corrected theory and the linear laws.
 #[pyfunction]
-#[pyo3(signature = (spectrum, modulus, pressure, theory="original", gamma=None, *, zeta=None, tolerance=persson::corrected::DEFAULT_TOLERANCE))]
+#[pyo3(signature = (spectrum, modulus, pressure, theory="original", gamma=None, *, zeta=None, tolerance=1e-12))]
 #[allow(clippy::too_many_arguments)]
 fn area<'py>(
     py: Python<'py>,
@@ -46,7 +53,7 @@ fn area<'py>(
     tolerance: f64,
 ) -> PyResult<Bound<'py, PyAny>> {
     let pressures = float_list("pressure", pressure)?;
-    let surface = spectrum.surface(modulus)?;
+    let surface = spectrum.contact(modulus)?;
     let out = AreaOutput {
         zeta,
         theory: name("theory", theory)?,
@@ -72,7 +79,7 @@ fn magnification<'py>(
     zeta: Option<&Bound<'py, PyAny>>,
     points: usize,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let surface = spectrum.surface(modulus)?;
+    let surface = spectrum.contact(modulus)?;
     let out = MagnificationOutput {
         nominal_pressure: pressure,
         zeta: zeta
@@ -105,7 +112,7 @@ fn kappa_report<'py>(
                 .map(|p| float_list("pressure", p))
                 .transpose()?
                 .unwrap_or_default();
-            let surface = s.surface(m)?;
+            let surface = s.contact(m)?;
             run::kappa(Some((&surface, &pressures[..])))
         }
         (None, None) => run::kappa(None),
@@ -139,7 +146,7 @@ fn theories<'py>(
             })
         })
         .collect::<PyResult<Vec<_>>>()?;
-    let surface = spectrum.surface(modulus)?;
+    let surface = spectrum.contact(modulus)?;
     let out = TheoriesOutput {
         theories: list,
         zeta,
@@ -156,7 +163,7 @@ fn theories<'py>(
 /// contact stiffness K = −dσ0/dū and the stored elastic energy per area
 /// against load, with error bounds (Persson, Phys. Rev. Lett. 99, 125502 (2007)).
 #[pyfunction]
-#[pyo3(signature = (spectrum, modulus, pressure, *, tolerance=persson::separation::DEFAULT_TOLERANCE))]
+#[pyo3(signature = (spectrum, modulus, pressure, *, tolerance=1e-10))]
 fn separation<'py>(
     py: Python<'py>,
     spectrum: &Spectrum,
@@ -165,7 +172,7 @@ fn separation<'py>(
     tolerance: f64,
 ) -> PyResult<Bound<'py, PyAny>> {
     let pressures = float_list("pressure", pressure)?;
-    let surface = spectrum.surface(modulus)?;
+    let surface = spectrum.contact(modulus)?;
     let out = SeparationOutput {
         tolerance: Some(tolerance),
     };
@@ -179,7 +186,7 @@ fn separation<'py>(
 /// elastic energy U_el (J/m²) at the nominal pressures, as a dict of numpy
 /// arrays with their error bounds (the `points` of `separation`).
 #[pyfunction]
-#[pyo3(signature = (spectrum, modulus, pressure, *, tolerance=persson::separation::DEFAULT_TOLERANCE))]
+#[pyo3(signature = (spectrum, modulus, pressure, *, tolerance=1e-10))]
 fn mean_separation<'py>(
     py: Python<'py>,
     spectrum: &Spectrum,
@@ -288,7 +295,7 @@ fn stress_physical<'py>(
     points: usize,
     tolerance: f64,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let surface = spectrum.surface(modulus)?;
+    let surface = spectrum.contact(modulus)?;
     let out = StressOutput {
         start: name("start", start)?,
         g: vec![],

@@ -5,12 +5,12 @@ use std::path::PathBuf;
 use std::sync::Arc;
 
 use numpy::ndarray::Zip;
-use persson::scene::{
-    ConventionName, DetrendName, HeightMapSpec, Sides, SpectrumSpec, WindowName, EXAMPLE,
-};
 use persson::spectrum::{Spectrum as _, Tabulated};
 use persson::topography::{self as topo, AnalysisOptions, Topography};
 use persson::{Estimate, Result};
+use persson_studies::scene::{
+    ConventionName, DetrendName, HeightMapSpec, Sides, SpectrumSpec, WindowName, EXAMPLE,
+};
 use pyo3::prelude::*;
 
 use crate::arrays::{floats, map, output};
@@ -60,7 +60,7 @@ pub struct Spectrum {
     pub recipe: Recipe,
     /// Remarks on the spectrum (a file's convention, a slope above 1), as
     /// the CLI's for the same spectrum; passed on to every report.
-    pub warnings: Vec<persson::Warning>,
+    pub warnings: Vec<persson_studies::Warning>,
 }
 
 /// What rebuilds a spectrum exactly: a self-affine spec (as scene JSON) or
@@ -77,7 +77,7 @@ impl Spectrum {
         let warnings = t
             .rms_slope(t.q_min(), t.q_max())
             .ok()
-            .and_then(|m| persson::Warning::steep_slope(m.value))
+            .and_then(|m| persson_studies::Warning::steep_slope(m.value))
             .into_iter()
             .collect();
         Spectrum {
@@ -93,18 +93,18 @@ impl Spectrum {
 impl Spectrum {
     fn from_spec(spec: &SpectrumSpec) -> PyResult<Self> {
         let mut s = Self::from_spec_quiet(spec)?;
-        s.warnings = persson::scene::run::spectrum_warnings(spec, &s.shared);
+        s.warnings = persson_studies::scene::run::spectrum_warnings(spec, &s.shared);
         Ok(s)
     }
 
     fn from_spec_quiet(spec: &SpectrumSpec) -> PyResult<Self> {
         match spec {
             SpectrumSpec::SelfAffine { .. } => {
-                let (s, description) = spec.build_described().map_err(err)?;
+                let built = spec.build_described().map_err(err)?;
                 Ok(Spectrum {
-                    shared: Shared(Arc::from(s)),
+                    shared: Shared(Arc::from(built.value)),
                     breaks: spec.breaks(),
-                    description,
+                    description: built.description,
                     recipe: Recipe::SelfAffine(
                         serde_json::to_string(spec).map_err(|e| value_error(e.to_string()))?,
                     ),
@@ -122,16 +122,19 @@ impl Spectrum {
                 Ok(Self::tabulated_spectrum(t, None))
             }
             SpectrumSpec::HeightMap(m) => {
-                let (t, d) = m.spectrum_described().map_err(err)?;
-                Ok(Self::tabulated_spectrum(t, Some(d)))
+                let d = m.spectrum_described().map_err(err)?;
+                Ok(Self::tabulated_spectrum(d.value, d.description))
             }
         }
     }
 
     /// The library's surface: this spectrum on a body of contact modulus E*.
-    pub fn surface(&self, contact_modulus: f64) -> PyResult<persson::scene::run::Surface> {
+    pub fn contact(
+        &self,
+        contact_modulus: f64,
+    ) -> PyResult<persson_studies::scene::run::RoughContact> {
         persson::error::check::positive("contact_modulus", contact_modulus).map_err(err)?;
-        Ok(persson::scene::run::Surface {
+        Ok(persson_studies::scene::run::RoughContact {
             spectrum: Box::new(self.shared.clone()),
             contact_modulus,
             breaks: self.breaks.clone(),
@@ -199,7 +202,10 @@ fn measured(a: topo::Analysis, what: &str) -> PyResult<Spectrum> {
     let s = a.psd.to_tabulated().map_err(err)?;
     Ok(Spectrum::tabulated_spectrum(
         s,
-        Some(persson::scene::describe(std::path::Path::new(what), &a)),
+        Some(persson_studies::scene::describe(
+            std::path::Path::new(what),
+            &a,
+        )),
     ))
 }
 
@@ -503,7 +509,7 @@ impl Spectrum {
         q_max: Option<f64>,
         points: usize,
     ) -> PyResult<Bound<'py, PyAny>> {
-        let r = persson::scene::run::spectrum(
+        let r = persson_studies::scene::run::spectrum(
             &self.shared,
             self.description.clone(),
             q_min,

@@ -4,8 +4,8 @@ use std::collections::HashMap;
 
 use persson::corrected::{self, Theory};
 use persson::kappa::Kappa;
-use persson::scene::{MaterialSpec, TheoryName, TheorySpec};
 use persson::theory::{contact_fraction, Persson};
+use persson_studies::scene::{MaterialSpec, TheoryName, TheorySpec};
 use pyo3::prelude::*;
 
 use crate::arrays::{broadcast, floats, output};
@@ -206,7 +206,7 @@ fn g<'py>(
 /// A/A0 of the corrected theories' solvers. With `error_bound=True`: the pair
 /// (A/A0, bound on its absolute error). The same numbers as `persson area`.
 #[pyfunction]
-#[pyo3(signature = (spectrum, modulus, pressure, theory="original", gamma=None, *, zeta=None, tolerance=corrected::DEFAULT_TOLERANCE, error_bound=false))]
+#[pyo3(signature = (spectrum, modulus, pressure, theory="original", gamma=None, *, zeta=None, tolerance=1e-12, error_bound=false))]
 #[allow(clippy::too_many_arguments)]
 fn contact_area<'py>(
     py: Python<'py>,

@@ -15,13 +15,45 @@ def message(excinfo):
     return str(excinfo.value)
 
 
-@pytest.mark.parametrize("bad", [np.array([1, 2]), np.array([1e6], dtype=np.float32),
-                                 np.array(["a"])])
+@pytest.mark.parametrize("bad", [np.array(["a"]), np.array([True]), np.array([1e6 + 1j])])
 def test_wrong_dtype_names_the_argument(bad):
-    with pytest.raises(ValueError, match=r"^pressure: an array of dtype \S+, expected float64"):
+    with pytest.raises(ValueError, match=r"^pressure: an array of dtype \S+, expected real numbers"):
         persson.contact_area(S, 1e9, bad)
     with pytest.raises(ValueError, match=r"^heights: an array of dtype"):
         persson.bem_solve(bad.reshape(1, -1), 1.0, 1.0, pressure=0.1)
+
+
+@pytest.mark.parametrize("dtype", [np.int64, np.int32, np.uint16, np.float32, np.float16])
+def test_other_real_dtypes_are_the_float64_values(dtype):
+    # 1e3 and 2e4 are exact in every one of these dtypes: the same numbers
+    p = np.array([1e3, 2e4]).astype(dtype)
+    want = persson.contact_area(S, 1e9, np.array([1e3, 2e4]))
+    assert persson.contact_area(S, 1e9, p).tolist() == want.tolist()
+    assert persson.contact_area(S, 1e9, dtype(1e3)) == want[0]  # a numpy scalar
+    assert persson.contact_area(S, 1e9, np.array(1e3).astype(dtype)) == want[0]  # 0-d
+
+
+def test_negative_seed_is_a_value_error_naming_seed():
+    sp = persson.Spectrum.self_affine(0.8, 2 * np.pi, 32 * np.pi, rms_slope=0.1)
+    for bad in [-1, 2**64, 1.5]:
+        with pytest.raises(ValueError, match=r"^invalid seed = \S+: must be an integer from 0"):
+            persson.synthesize(sp, 16, seed=bad)
+    with pytest.raises(ValueError, match=r"^invalid seed = -1"):
+        persson.bem_rough(1.0, [0.01], spectrum=sp, grid=16, seed=-1)
+    # numpy integers are seeds too
+    assert (persson.synthesize(sp, 16, seed=np.int64(3)) == persson.synthesize(sp, 16, seed=3)).all()
+
+
+def test_signatures_show_the_defaults():
+    import inspect
+    for f in [persson.area, persson.contact_area, persson.separation, persson.compare,
+              persson.synthesize, persson.bem_rough]:
+        sig = inspect.signature(f)
+        for p in sig.parameters.values():
+            assert p.default is not Ellipsis, f"{f.__name__}: {p.name}=Ellipsis"
+    assert inspect.signature(persson.area).parameters["tolerance"].default == 1e-12
+    assert inspect.signature(persson.compare).parameters["alpha"].default == 0.7
+    assert inspect.signature(persson.synthesize).parameters["seed"].default == 1
 
 
 def test_not_a_number():

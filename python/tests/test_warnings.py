@@ -1,6 +1,7 @@
 """Warnings (issue 15) from Python: the dict carries the CLI's top-level
-`warnings` list, the same texts, and each is raised as a `UserWarning`;
-the numbers are those of the CLI's --json either way."""
+`warnings` list (each a dict with its `kind`, its fields and its `message`,
+which names the input, never a command-line flag), and each message is raised
+as a `UserWarning`; the numbers are those of the CLI's --json either way."""
 
 import numpy as np
 import pytest
@@ -15,11 +16,13 @@ def test_pressure_near_the_modulus_warns_as_the_cli():
     # E* = 1e7 Pa and σ0 = 3e6 Pa: σ0 = 0.3 E*, as with E typed in MPa.
     cli = run_cli("area", "--hurst", 0.8, "--q-l", 1e4, "--q-s", 1e8, "--rms-height", 1e-6,
                   "--contact-modulus", 1e7, "--pressure", 3e6)
-    assert len(cli["warnings"]) == 1 and "0.1 E*" in cli["warnings"][0]
+    assert len(cli["warnings"]) == 1 and "0.1 E*" in cli["warnings"][0]["message"]
+    assert cli["warnings"][0]["kind"] == "high_pressure"
+    assert cli["warnings"][0]["nominal_pressure"] == 3e6
     s = persson.Spectrum.self_affine(0.8, 1e4, 1e8, rms_height=1e-6)
     with pytest.warns(UserWarning) as caught:
         r = persson.area(s, 1e7, [3e6])
-    assert [str(w.message) for w in caught] == cli["warnings"]
+    assert [str(w.message) for w in caught] == [w["message"] for w in cli["warnings"]]
     assert r["warnings"] == cli["warnings"]
     same(r, cli)
 
@@ -31,8 +34,10 @@ def test_steep_slope_and_file_convention_warn_as_the_cli(tmp_path):
     np.savetxt(path, np.column_stack([q, 1e-11 * (q / 1e3) ** -3.6]), delimiter=",")
     cli = run_cli("area", "--psd", path, "--psd-convention", "surface-topography",
                   "--contact-modulus", 1e9, "--pressure", 1e6)
-    assert any("surface-topography" in w for w in cli["warnings"])
-    assert any("rms slope" in w for w in cli["warnings"])
+    assert any(w["kind"] == "psd_convention" and w["convention"] == "surface-topography"
+               for w in cli["warnings"])
+    assert any("rms slope" in w["message"] for w in cli["warnings"])
+    assert not any("--" in w["message"] for w in cli["warnings"])
     s = persson.Spectrum.from_csv(path, "surface-topography")
     with pytest.warns(UserWarning):
         r = persson.area(s, 1e9, [1e6])
@@ -48,7 +53,8 @@ def test_no_warning_gives_an_empty_list():
 
 def test_band_limited_bem_surface_warns_as_the_cli():
     cli = run_cli("bem", "rough", "--example", "--grid", 32)
-    assert any("32" in w and "rms slope" in w for w in cli["warnings"])
+    assert any(w["kind"] == "band_limited" and w["grid"] == 32 and "rms slope" in w["message"]
+               for w in cli["warnings"])
     s = persson.Spectrum.example()
     p = [x["nominal_pressure"] for x in cli["points"]]
     with pytest.warns(UserWarning):

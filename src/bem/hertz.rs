@@ -29,27 +29,30 @@ use super::kernel::{Boundary, Operator};
 use super::solver::{Control, Iteration, Options, Solver};
 use crate::error::{check, Error, Result};
 use crate::reference;
-use crate::table::{Table, Tabulate};
 
 /// Hertz contact radius `a = (3FR/(4E*))^{1/3}` (unit of R); see
 /// [`crate::reference::Ball`].
+#[deprecated(since = "0.4.0", note = "use persson::reference::ball_contact_radius")]
 pub fn contact_radius(force: f64, radius: f64, e_star: f64) -> f64 {
     reference::ball_contact_radius(force, radius, e_star)
 }
 
 /// Total force `F = 4E* a³/(3R)` that gives the contact radius `a`; see
 /// [`crate::reference::Ball::from_contact_radius`].
+#[deprecated(since = "0.4.0", note = "use persson::reference::ball_load")]
 pub fn force_for_radius(a: f64, radius: f64, e_star: f64) -> f64 {
     reference::ball_load(a, radius, e_star)
 }
 
 /// Peak pressure `p₀ = 2E* a/(πR)`; see [`crate::reference::Ball`].
+#[deprecated(since = "0.4.0", note = "use persson::reference::ball_peak_pressure")]
 pub fn peak_pressure(a: f64, radius: f64, e_star: f64) -> f64 {
     reference::ball_peak_pressure(a, radius, e_star)
 }
 
 /// Pressure `p₀ √(1 − r²/a²)` inside the contact, 0 outside
 /// ([`crate::reference::pressure_profile`]).
+#[deprecated(since = "0.4.0", note = "use persson::reference::pressure_profile")]
 pub fn pressure(r: f64, a: f64, p0: f64) -> f64 {
     reference::pressure_profile(r, a, p0)
 }
@@ -57,6 +60,7 @@ pub fn pressure(r: f64, a: f64, p0: f64) -> f64 {
 /// Normal surface displacement of the Hertz contact at distance `r` from the
 /// centre (unit of `a`), zero at infinity: Johnson's eqs. 3.41a and 3.42a,
 /// cancellation-free ([`crate::reference::ball_displacement`]).
+#[deprecated(since = "0.4.0", note = "use persson::reference::ball_displacement")]
 pub fn displacement(r: f64, a: f64, p0: f64, e_star: f64) -> f64 {
     reference::ball_displacement(r, a, p0, e_star)
 }
@@ -109,12 +113,13 @@ impl HertzCase {
 
     /// Nominal mean pressure `F/L²`.
     pub fn mean_pressure(&self) -> f64 {
-        force_for_radius(self.contact_radius, self.radius, self.e_star) / (self.size * self.size)
+        reference::ball_load(self.contact_radius, self.radius, self.e_star)
+            / (self.size * self.size)
     }
 
     /// Peak Hertz pressure p₀.
     pub fn peak_pressure(&self) -> f64 {
-        peak_pressure(self.contact_radius, self.radius, self.e_star)
+        reference::ball_peak_pressure(self.contact_radius, self.radius, self.e_star)
     }
 
     /// Node distances from the centre `(L/2, L/2)`, row-major.
@@ -145,7 +150,7 @@ impl HertzCase {
                     for b in 0..m {
                         let x = x0 + ((a as f64 + 0.5) / m as f64 - 0.5) * dx;
                         let y = y0 + ((b as f64 + 0.5) / m as f64 - 0.5) * dx;
-                        s += pressure(x.hypot(y), self.contact_radius, p0);
+                        s += reference::pressure_profile(x.hypot(y), self.contact_radius, p0);
                     }
                 }
                 s / (m * m) as f64
@@ -166,7 +171,7 @@ impl HertzCase {
         let p0 = self.peak_pressure();
         self.radii()
             .iter()
-            .map(|&r| pressure(r, self.contact_radius, p0))
+            .map(|&r| reference::pressure_profile(r, self.contact_radius, p0))
             .collect()
     }
 
@@ -175,7 +180,7 @@ impl HertzCase {
         let p0 = self.peak_pressure();
         self.radii()
             .iter()
-            .map(|&r| displacement(r, self.contact_radius, p0, self.e_star))
+            .map(|&r| reference::ball_displacement(r, self.contact_radius, p0, self.e_star))
             .collect()
     }
 
@@ -479,57 +484,6 @@ pub fn plastic_disc(
     })
 }
 
-impl Tabulate for PlasticDiscReport {
-    fn tables(&self) -> Vec<Table> {
-        let mut t = Table::new(
-            "bem_hertz_plastic",
-            format!(
-                "Hertz ball with a yield stress (FFT-BEM, {} boundary): plastic disc p = σY of radius c",
-                self.boundary.name(),
-            ),
-        )
-        .scalar("radius", "R", self.radius)
-        .scalar("contact_modulus", "E*", self.contact_modulus)
-        .scalar("yield_stress", "σY", self.yield_stress)
-        .scalar("yield_ratio", "σY/p₀_H", self.yield_ratio)
-        .scalar("hertz_peak_pressure", "p₀_H", self.hertz_peak_pressure)
-        .scalar("nominal_pressure", "σ0 = F/L²", self.nominal_pressure)
-        .scalar("hertz_contact_radius", "a_H", self.hertz_contact_radius)
-        .scalar("tolerance", "tolerance ε", self.tolerance)
-        .column("grid", "N")
-        .column_digits("plastic_radius_ratio", "c/a_H", 5)
-        .column_digits("plastic_radius_change", "Δc (previous N)", 2)
-        .column("contact_radius", "a")
-        .column("approach", "δ")
-        .column("contact_fraction", "A/A0")
-        .column("elastic_fraction", "A_el/A0")
-        .column("plastic_fraction", "A_pl/A0")
-        .column("plastic_displacement_mean", "u_pl mean")
-        .column("plastic_displacement_max", "u_pl max")
-        .column("iterations", "iterations")
-        .column_digits("residual", "residual", 2)
-        .column_digits("seconds", "time (s)", 3);
-        for r in &self.rows {
-            t.push(vec![
-                r.grid.into(),
-                r.plastic_radius_ratio.into(),
-                r.plastic_radius_change.into(),
-                r.contact_radius.into(),
-                r.approach.into(),
-                r.contact_fraction.into(),
-                r.elastic_fraction.into(),
-                r.plastic_fraction.into(),
-                r.plastic_displacement_mean.into(),
-                r.plastic_displacement_max.into(),
-                r.iterations.into(),
-                r.residual.into(),
-                r.seconds.into(),
-            ]);
-        }
-        vec![t]
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -537,11 +491,11 @@ mod tests {
     #[test]
     fn closed_forms_are_consistent() {
         // a = 0.1 R: F = 4e-3/3, p₀ = 0.2/π, and p₀ = 3F/(2πa²).
-        let f = force_for_radius(0.1, 1.0, 1.0);
-        assert!((contact_radius(f, 1.0, 1.0) - 0.1).abs() < 1e-16);
-        let p0 = peak_pressure(0.1, 1.0, 1.0);
+        let f = reference::ball_load(0.1, 1.0, 1.0);
+        assert!((reference::ball_contact_radius(f, 1.0, 1.0) - 0.1).abs() < 1e-16);
+        let p0 = reference::ball_peak_pressure(0.1, 1.0, 1.0);
         assert!((p0 - 3.0 * f / (2.0 * std::f64::consts::PI * 0.01)).abs() < 1e-16);
-        assert_eq!(pressure(0.2, 0.1, p0), 0.0);
+        assert_eq!(reference::pressure_profile(0.2, 0.1, p0), 0.0);
     }
 
     /// Rounding of the closed forms (a few ulps of u ~ 1e-2).
@@ -551,7 +505,7 @@ mod tests {
     fn displacement_matches_high_precision_values() {
         // mpmath (40 digits) of Johnson's 3.41a/3.42a as written, a = 0.1,
         // p₀ = 2a/π (R = E* = 1): δ = a²/R = 0.01 at the centre, δ/2 at r = a.
-        let p0 = peak_pressure(0.1, 1.0, 1.0);
+        let p0 = reference::ball_peak_pressure(0.1, 1.0, 1.0);
         let cases = [
             (0.0, 0.01),
             (0.05, 0.00875),
@@ -564,7 +518,7 @@ mod tests {
             (1000.0, 4.244_131_820_028_007e-7),
         ];
         for (r, want) in cases {
-            let got = displacement(r, 0.1, p0, 1.0);
+            let got = reference::ball_displacement(r, 0.1, p0, 1.0);
             assert!(
                 (got / want - 1.0).abs() < DISPLACEMENT_REL_TOL,
                 "r = {r}: {got:e} vs {want:e}"

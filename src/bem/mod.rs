@@ -30,8 +30,14 @@
 //! - [`hertz`]: closed-form Hertz solution and the η validation; with a
 //!   yield stress, the plastic disc per grid ([`hertz::plastic_disc`]).
 //! - [`surface`]: Fourier synthesis from any [`crate::Spectrum`], height-map I/O.
+//! - [`resample`]: one surface on several grids (subsampled, low-passed, block-averaged).
 //! - [`rough`]: the rough-contact loop (one solve per nominal pressure) and its report.
 //! - [`histogram`]: pressure histograms P(σ) that integrate to A/A0.
+//! - [`reynolds`], [`stiffness`]: the exact flow through a solved gap (Reynolds' equation) and the exact contact stiffness (conductance by Barber's identity).
+//! - [`patches`]: connected contact patches (4/8 neighbours, periodic wrap), their areas,
+//!   perimeters and log-binned size distribution; exponential against Gaussian pressure tails.
+//! - [`subsurface`]: the stress tensor below the surface (periodic or free half-space),
+//!   von Mises and maximum shear, first yield.
 //!
 //! # Example
 //! ```
@@ -43,18 +49,24 @@
 //! ```
 
 mod elastic;
-pub(crate) mod fft;
+pub mod fft;
 pub mod hertz;
 pub mod histogram;
 pub mod kernel;
+pub mod patches;
 pub mod polonsky_keer;
 pub mod preconditioned;
 pub mod problem;
+pub mod resample;
+#[cfg(feature = "flow")]
+pub mod reynolds;
 pub mod rough;
 pub mod saturated;
 pub mod solution;
 pub mod solver;
 mod steps;
+pub mod stiffness;
+pub mod subsurface;
 pub mod surface;
 pub mod workspace;
 
@@ -63,8 +75,15 @@ pub use kernel::{Boundary, Operator};
 pub use problem::{Control, Method, Options, Problem};
 pub use solution::{Fallback, Iteration, Solution};
 pub use solver::{LoadPath, Solver};
-pub use surface::Surface;
+pub use surface::GridSurface;
 pub use workspace::{Displacement, Fields, Finish, Start, Workspace};
+
+/// The name of [`GridSurface`] in persson 0.3 (kept for one release).
+#[deprecated(
+    since = "0.4.0",
+    note = "renamed GridSurface: a periodic height map on the BEM's N × N grid"
+)]
+pub type Surface = GridSurface;
 
 use crate::error::{Error, Result};
 

@@ -3,7 +3,7 @@
 //! along the list).
 //!
 //! [`solve`] is the one loop used by `persson bem rough`, by scenes and by the
-//! resolution sweep of [`crate::validation`]; [`rough_contact`] wraps it into
+//! resolution sweep of the studies crate (`persson-studies`); [`rough_contact`] wraps it into
 //! the typed report that `persson bem rough` prints.
 //!
 //! # Example
@@ -33,10 +33,9 @@ use serde::Serialize;
 
 use super::histogram::{pressure_histogram, saturated_histogram, HistogramBin};
 use super::{check_memory, surface, Boundary, Control, Iteration, Operator, Options, Solution};
-use super::{Fallback, Solver, Surface};
+use super::{Fallback, GridSurface, Solver};
 use crate::error::{check, Error, Result};
 use crate::spectrum::Spectrum;
-use crate::table::{number, Cell, Table, Tabulate};
 
 /// How the rough solves run.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -146,7 +145,7 @@ impl Observer for () {}
 /// as [`check_memory`], [`Operator::new`] and [`Solver::solve`]
 /// ([`Error::NotConverged`]); whatever the observer returns.
 pub fn solve(
-    surface: &Surface,
+    surface: &GridSurface,
     contact_modulus: f64,
     pressures: &[f64],
     options: &RoughOptions,
@@ -214,7 +213,7 @@ pub fn solve(
 ///
 /// # Errors
 /// As [`check_memory`] and [`surface::height_map_from_bytes`].
-pub fn read_surface(path: &Path, size: f64, boundary: Boundary) -> Result<Surface> {
+pub fn read_surface(path: &Path, size: f64, boundary: Boundary) -> Result<GridSurface> {
     check::positive("size", size)?;
     let bytes = crate::io::read(path)?;
     // A float32 file of this length holds at most len/4 values.
@@ -255,11 +254,12 @@ impl SpectrumSummary {
     }
 }
 
-/// Where the rigid surface of a rough contact came from.
+/// Where the rigid surface of a rough contact came from: a file, or a
+/// spectrum and a seed. Called `SurfaceSource` in persson 0.3.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(untagged)]
 #[non_exhaustive]
-pub enum SurfaceSource {
+pub enum SurfaceOrigin {
     /// A height map read from a file.
     HeightMap {
         /// The file, as given.
@@ -274,13 +274,17 @@ pub enum SurfaceSource {
     },
 }
 
-impl SurfaceSource {
+/// The name of [`SurfaceOrigin`] in persson 0.3.
+#[deprecated(since = "0.4.0", note = "renamed SurfaceOrigin")]
+pub type SurfaceSource = SurfaceOrigin;
+
+impl SurfaceOrigin {
     /// A synthesised surface's source.
     ///
     /// # Errors
     /// As [`SpectrumSummary::of`].
     pub fn synthesised(spectrum: &dyn Spectrum, seed: u64) -> Result<Self> {
-        Ok(SurfaceSource::Synthesised {
+        Ok(SurfaceOrigin::Synthesised {
             seed,
             spectrum: SpectrumSummary::of(spectrum)?,
         })
@@ -289,14 +293,14 @@ impl SurfaceSource {
     /// The seed of a synthesised surface (`None` for a height map).
     pub fn seed(&self) -> Option<u64> {
         match self {
-            SurfaceSource::Synthesised { seed, .. } => Some(*seed),
-            SurfaceSource::HeightMap { .. } => None,
+            SurfaceOrigin::Synthesised { seed, .. } => Some(*seed),
+            SurfaceOrigin::HeightMap { .. } => None,
         }
     }
 
     /// A height map's source.
     pub fn height_map(file: &Path) -> Self {
-        SurfaceSource::HeightMap {
+        SurfaceOrigin::HeightMap {
             file: file.display().to_string(),
         }
     }
@@ -325,11 +329,12 @@ pub struct RoughReport {
     /// rms slope of the surface on the grid (its trigonometric interpolant).
     pub surface_rms_slope: f64,
     /// Where the surface came from.
-    pub surface: SurfaceSource,
+    pub surface: SurfaceOrigin,
     /// One point per nominal pressure, in the caller's order.
     pub points: Vec<RoughPoint>,
-    /// The pressure field of the last solve, kept only by
-    /// [`rough_contact_mapped`] (for `bem rough --plot`); not serialised.
+    /// The pressure field of one solve in partial contact (A/A0 nearest
+    /// [`MAPPED_CONTACT_FRACTION`]), kept only by [`rough_contact_mapped`]
+    /// (for `bem rough --plot`); not serialised.
     #[serde(skip)]
     pub pressure_map: Option<PressureMap>,
 }
@@ -346,10 +351,17 @@ pub struct PressureMap {
     pub pressure: Vec<f64>,
 }
 
-/// Keeps the last solution's pressure, forwarding everything else.
+/// The contact fraction of the solve whose field [`rough_contact_mapped`]
+/// keeps: the one nearest it, a partial contact whose islands a map shows
+/// (the last load of a curve is often near full contact, a map of noise).
+pub const MAPPED_CONTACT_FRACTION: f64 = 0.1;
+
+/// Keeps the pressure of the solution whose A/A0 is nearest
+/// [`MAPPED_CONTACT_FRACTION`] (the first of equals), forwarding everything else.
 struct Keep<'a> {
     inner: &'a mut dyn Observer,
-    last: Option<(usize, Vec<f64>)>,
+    /// (index, |A/A0 − target|, pressure field).
+    kept: Option<(usize, f64, Vec<f64>)>,
 }
 
 impl Observer for Keep<'_> {
@@ -358,26 +370,28 @@ impl Observer for Keep<'_> {
     }
     fn solution(&mut self, index: usize, solution: &Solution) -> Result<()> {
         self.inner.solution(index, solution)?;
-        match &mut self.last {
-            Some((k, p)) => {
-                *k = index;
+        let distance = (solution.contact_fraction - MAPPED_CONTACT_FRACTION).abs();
+        match &mut self.kept {
+            Some((_, d, _)) if *d <= distance => {}
+            Some((k, d, p)) => {
+                (*k, *d) = (index, distance);
                 p.clone_from(&solution.pressure);
             }
-            None => self.last = Some((index, solution.pressure.clone())),
+            None => self.kept = Some((index, distance, solution.pressure.clone())),
         }
         Ok(())
     }
 }
 
-/// [`rough_contact`], keeping the pressure field of the last solve in
-/// [`RoughReport::pressure_map`] (one N² copy per solve; [`rough_contact`]
-/// keeps none).
+/// [`rough_contact`], keeping in [`RoughReport::pressure_map`] the pressure
+/// field of the solve whose A/A0 is nearest [`MAPPED_CONTACT_FRACTION`]
+/// (at most one N² copy per solve; [`rough_contact`] keeps none).
 ///
 /// # Errors
 /// As [`rough_contact`].
 pub fn rough_contact_mapped(
-    surface: &Surface,
-    source: SurfaceSource,
+    surface: &GridSurface,
+    source: SurfaceOrigin,
     contact_modulus: f64,
     pressures: &[f64],
     options: &RoughOptions,
@@ -385,7 +399,7 @@ pub fn rough_contact_mapped(
 ) -> Result<RoughReport> {
     let mut keep = Keep {
         inner: observer,
-        last: None,
+        kept: None,
     };
     let mut report = rough_contact(
         surface,
@@ -395,7 +409,7 @@ pub fn rough_contact_mapped(
         options,
         &mut keep,
     )?;
-    report.pressure_map = keep.last.map(|(index, pressure)| PressureMap {
+    report.pressure_map = keep.kept.map(|(index, _, pressure)| PressureMap {
         index,
         nominal_pressure: pressures[index],
         pressure,
@@ -406,10 +420,10 @@ pub fn rough_contact_mapped(
 /// [`solve`] and its report.
 ///
 /// # Errors
-/// As [`solve`] and [`Surface::rms_slope`].
+/// As [`solve`] and [`GridSurface::rms_slope`].
 pub fn rough_contact(
-    surface: &Surface,
-    source: SurfaceSource,
+    surface: &GridSurface,
+    source: SurfaceOrigin,
     contact_modulus: f64,
     pressures: &[f64],
     options: &RoughOptions,
@@ -429,122 +443,4 @@ pub fn rough_contact(
         points,
         pressure_map: None,
     })
-}
-
-impl Tabulate for RoughReport {
-    fn tables(&self) -> Vec<Table> {
-        let n = self.grid;
-        let mut t = Table::new(
-            "bem_rough",
-            format!(
-                "Rough contact (FFT-BEM, Polonsky & Keer 1999), {n}×{n} grid, {} boundary",
-                self.boundary.name()
-            ),
-        )
-        .scalar("grid", "N", n)
-        .scalar("size", "L", self.size)
-        .scalar("contact_modulus", "E*", self.contact_modulus)
-        .scalar("tolerance", "tolerance ε", self.tolerance)
-        .scalar(
-            "surface_rms_height",
-            "h_rms on the grid",
-            self.surface_rms_height,
-        )
-        .scalar(
-            "surface_rms_slope",
-            "h'_rms on the grid",
-            self.surface_rms_slope,
-        );
-        if let Some(y) = self.yield_stress {
-            t = t.scalar("yield_stress", "σY", y);
-        }
-        match &self.surface {
-            SurfaceSource::HeightMap { file } => t = t.scalar("file", "surface", file.as_str()),
-            SurfaceSource::Synthesised { seed, spectrum } => {
-                t = t.scalar("seed", "seed", Cell::Int(*seed as i64)).scalar(
-                    "q_s",
-                    "q_l … q_s",
-                    format!("{} … {}", number(spectrum.q_l, 6), number(spectrum.q_s, 6)),
-                );
-            }
-        }
-        let mut t = t
-            .column("nominal_pressure", "σ0")
-            .column("contact_fraction", "A/A0")
-            .column("mean_separation", "ū")
-            .column("approach", "δ")
-            .column("iterations", "iterations")
-            .column_digits("residual", "residual", 2)
-            .column_digits("seconds", "time (s)", 3);
-        let saturated = self.yield_stress.is_some();
-        if saturated {
-            t = t
-                .column("elastic_fraction", "A_el/A0")
-                .column("plastic_fraction", "A_pl/A0")
-                .column("plastic_displacement_mean", "u_pl mean")
-                .column("plastic_displacement_max", "u_pl max");
-        }
-        for p in &self.points {
-            let mut row: Vec<Cell> = vec![
-                p.nominal_pressure.into(),
-                p.contact_fraction.into(),
-                p.mean_separation.into(),
-                p.approach.into(),
-                p.iterations.into(),
-                p.residual.into(),
-                p.seconds.into(),
-            ];
-            if saturated {
-                for v in [
-                    p.elastic_fraction,
-                    p.plastic_fraction,
-                    p.plastic_displacement_mean,
-                    p.plastic_displacement_max,
-                ] {
-                    row.push(v.unwrap_or(0.0).into());
-                }
-            }
-            t.push(row);
-        }
-        let mut tables = vec![t];
-        if self.points.iter().any(|p| p.histogram.is_some()) {
-            // With a yield stress, the δ-peak at σY is a row of its own
-            // (σ low = σ high = σY, no density) with its weight in the
-            // column `plastic_fraction`, empty on the bins' rows.
-            let mut h = Table::new("bem_histogram", "Pressure histograms P(σ) of the FFT-BEM")
-                .column("nominal_pressure", "σ0")
-                .column("sigma_low", "σ low")
-                .column("sigma_high", "σ high")
-                .column("density", "P(σ)");
-            if saturated {
-                h = h.column("plastic_fraction", "A_pl/A0 (δ-peak at σY)");
-            }
-            for p in &self.points {
-                let Some(bins) = &p.histogram else { continue };
-                for b in bins {
-                    let mut row: Vec<Cell> = vec![
-                        p.nominal_pressure.into(),
-                        b.sigma_low.into(),
-                        b.sigma_high.into(),
-                        b.density.into(),
-                    ];
-                    if saturated {
-                        row.push(Cell::Empty);
-                    }
-                    h.push(row);
-                }
-                if let Some(y) = self.yield_stress {
-                    h.push(vec![
-                        p.nominal_pressure.into(),
-                        y.into(),
-                        y.into(),
-                        Cell::Empty,
-                        p.plastic_fraction.into(),
-                    ]);
-                }
-            }
-            tables.push(h);
-        }
-        tables
-    }
 }

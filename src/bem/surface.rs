@@ -1,5 +1,6 @@
 //! Rigid rough surfaces on periodic grids: Fourier synthesis from a spectrum,
-//! and height maps read from `.npy` or text files.
+//! and height maps read from `.npy` or text files (through [`crate::io`],
+//! the readers the measured surfaces use too).
 //!
 //! Heights are those of the rigid rough surface, pointing towards the
 //! elastic body (its peaks touch first), in the unit of the side `L`.
@@ -47,9 +48,11 @@ use super::kernel::signed;
 use crate::error::{check, Error, Result};
 use crate::spectrum::Spectrum;
 
-/// A periodic height map on an `N × N` grid of side `size`.
+/// A periodic height map on the BEM's `N × N` grid of side `size`: the rigid
+/// rough surface of a solve (called `Surface` in persson 0.3; a measured map
+/// of any shape is a `persson::topography::Topography`).
 #[derive(Debug, Clone, PartialEq)]
-pub struct Surface {
+pub struct GridSurface {
     /// Grid side N.
     pub n: usize,
     /// Physical side L.
@@ -58,7 +61,7 @@ pub struct Surface {
     pub heights: Vec<f64>,
 }
 
-impl Surface {
+impl GridSurface {
     /// A surface from heights, checked: square, `N ≥ 8`, finite.
     ///
     /// # Errors
@@ -79,7 +82,7 @@ impl Surface {
                 "finite",
             ));
         }
-        Ok(Surface { n, size, heights })
+        Ok(GridSurface { n, size, heights })
     }
 
     /// rms height about the mean, `sqrt(Σ(h − h̄)²/N²)`.
@@ -166,7 +169,7 @@ fn normal_pair(rng: &mut Pcg64Mcg) -> (f64, f64) {
 /// assert_eq!(a.heights, b.heights);
 /// # Ok(()) }
 /// ```
-pub fn synthesize(spectrum: &dyn Spectrum, n: usize, size: f64, seed: u64) -> Result<Surface> {
+pub fn synthesize(spectrum: &dyn Spectrum, n: usize, size: f64, seed: u64) -> Result<GridSurface> {
     check::positive("size", size)?;
     super::check_grid(n)?;
     let dq = std::f64::consts::TAU / size;
@@ -203,7 +206,7 @@ pub fn synthesize(spectrum: &dyn Spectrum, n: usize, size: f64, seed: u64) -> Re
     }
     let mut heights = vec![0.0; n * n];
     fft.inverse(&mut spec, &mut heights)?;
-    Surface::new(n, size, heights)
+    GridSurface::new(n, size, heights)
 }
 
 /// The expected rms height and rms slope of [`synthesize`]'s surfaces:
@@ -225,19 +228,17 @@ pub fn expected_rms(spectrum: &dyn Spectrum, n: usize, size: f64) -> (f64, f64) 
     (h2.sqrt(), s2.sqrt())
 }
 
-/// Read a height map: `.npy` (float64/float32, little-endian, C or Fortran
-/// order, 2-D square) by extension, else a whitespace-separated text matrix
-/// (`#` starts a comment). `size` is the physical side L.
+/// Read a height map: `.npy` (float64/float32, either byte order, C or
+/// Fortran order, 2-D square; [`crate::io::npy`]) by extension or magic
+/// string, else a text matrix ([`crate::io::text`]). `size` is the physical
+/// side L.
 ///
 /// # Errors
 /// Unreadable file, malformed header or text, wrong dtype or shape (not 2-D,
 /// not square, side below 8), non-finite heights.
-pub fn read_height_map(path: &Path, size: f64) -> Result<Surface> {
+pub fn read_height_map(path: &Path, size: f64) -> Result<GridSurface> {
     check::positive("size", size)?;
-    let bytes = std::fs::read(path).map_err(|source| Error::Io {
-        path: path.to_path_buf(),
-        source,
-    })?;
+    let bytes = crate::io::read(path)?;
     height_map_from_bytes(path, &bytes, size)
 }
 
@@ -247,18 +248,26 @@ pub fn read_height_map(path: &Path, size: f64) -> Result<Surface> {
 ///
 /// # Errors
 /// As [`read_height_map`], without the I/O errors.
-pub fn height_map_from_bytes(path: &Path, bytes: &[u8], size: f64) -> Result<Surface> {
+pub fn height_map_from_bytes(path: &Path, bytes: &[u8], size: f64) -> Result<GridSurface> {
     check::positive("size", size)?;
     let is_npy = path
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("npy"))
-        || bytes.starts_with(NPY_MAGIC);
-    let (n, heights) = if is_npy {
-        parse_npy(path, bytes)?
+        || bytes.starts_with(crate::io::npy::MAGIC);
+    let m = if is_npy {
+        crate::io::npy::parse(path, bytes)?
     } else {
-        parse_text(path, bytes)?
+        crate::io::text::matrix(path, bytes)?
     };
-    Surface::new(n, size, heights).map_err(|e| match e {
+    if m.rows != m.cols {
+        return Err(Error::parse(
+            path,
+            0,
+            0,
+            format!("shape ({}, {}): need a square N×N grid", m.rows, m.cols),
+        ));
+    }
+    GridSurface::new(m.rows, size, m.values).map_err(|e| match e {
         Error::InvalidParameter {
             name,
             value,
@@ -270,199 +279,5 @@ pub fn height_map_from_bytes(path: &Path, bytes: &[u8], size: f64) -> Result<Sur
             format!("{name} = {value:e}: must be {requirement}"),
         ),
         other => other,
-    })
-}
-
-const NPY_MAGIC: &[u8] = b"\x93NUMPY";
-
-/// Parse a 2-D square float `.npy` into `(n, row-major heights)`.
-fn parse_npy(path: &Path, b: &[u8]) -> Result<(usize, Vec<f64>)> {
-    let bad = |m: String| Error::parse(path, 0, 0, m);
-    if !b.starts_with(NPY_MAGIC) || b.len() < 10 {
-        return Err(bad(
-            "not a .npy file (magic string \\x93NUMPY missing)".into()
-        ));
-    }
-    let (hlen, start) = match b[6] {
-        1 => (u16::from_le_bytes([b[8], b[9]]) as usize, 10),
-        2 | 3 if b.len() >= 12 => (u32::from_le_bytes([b[8], b[9], b[10], b[11]]) as usize, 12),
-        v => {
-            return Err(bad(format!(
-                ".npy format version {v} not supported (1, 2 or 3)"
-            )))
-        }
-    };
-    let header = b
-        .get(start..start + hlen)
-        .ok_or_else(|| bad("truncated .npy header".into()))?;
-    let header = std::str::from_utf8(header).map_err(|_| bad(".npy header is not text".into()))?;
-    let descr = dict_value(header, "descr").ok_or_else(|| bad("header has no 'descr'".into()))?;
-    let descr = descr.trim_matches(|c| c == '\'' || c == '"');
-    let item = match descr {
-        "<f8" | "=f8" => 8,
-        "<f4" | "=f4" => 4,
-        d => {
-            return Err(bad(format!(
-                "dtype {d:?} not supported: need little-endian float64 ('<f8') or float32 ('<f4')"
-            )))
-        }
-    };
-    let fortran = match dict_value(header, "fortran_order") {
-        Some("True") => true,
-        Some("False") => false,
-        _ => return Err(bad("header has no valid 'fortran_order'".into())),
-    };
-    let shape = dict_value(header, "shape").ok_or_else(|| bad("header has no 'shape'".into()))?;
-    let dims: Vec<usize> = shape
-        .trim_matches(|c| c == '(' || c == ')')
-        .split(',')
-        .map(str::trim)
-        .filter(|s| !s.is_empty())
-        .map(|s| s.parse::<usize>())
-        .collect::<std::result::Result<_, _>>()
-        .map_err(|_| bad(format!("unreadable shape {shape}")))?;
-    let (rows, cols) = match dims[..] {
-        [r, c] => (r, c),
-        _ => return Err(bad(format!("shape {shape}: need a 2-D array"))),
-    };
-    if rows != cols {
-        return Err(bad(format!(
-            "shape ({rows}, {cols}): need a square N×N grid"
-        )));
-    }
-    let data = &b[start + hlen..];
-    let count = rows
-        .checked_mul(cols)
-        .and_then(|c| c.checked_mul(item).map(|_| c))
-        .ok_or_else(|| bad(format!("shape ({rows}, {cols}) is too large")))?;
-    if data.len() != count * item {
-        return Err(bad(format!(
-            "data holds {} bytes, shape ({rows}, {cols}) of {item}-byte floats needs {}",
-            data.len(),
-            count * item
-        )));
-    }
-    let flat: Vec<f64> = if item == 8 {
-        data.chunks_exact(8)
-            .map(|c| f64::from_le_bytes([c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]]))
-            .collect()
-    } else {
-        data.chunks_exact(4)
-            .map(|c| f32::from_le_bytes([c[0], c[1], c[2], c[3]]) as f64)
-            .collect()
-    };
-    let heights = if fortran {
-        let mut t = vec![0.0; count];
-        for i in 0..rows {
-            for j in 0..cols {
-                t[i * cols + j] = flat[j * rows + i];
-            }
-        }
-        t
-    } else {
-        flat
-    };
-    Ok((rows, heights))
-}
-
-/// The raw text of `'key': value` in a Python dict literal (value up to the
-/// next top-level comma).
-fn dict_value<'a>(header: &'a str, key: &str) -> Option<&'a str> {
-    let k = header
-        .find(&format!("'{key}'"))
-        .or_else(|| header.find(&format!("\"{key}\"")))?;
-    let rest = &header[k + key.len() + 2..];
-    let rest = rest.trim_start().strip_prefix(':')?.trim_start();
-    let mut depth = 0i32;
-    for (i, c) in rest.char_indices() {
-        match c {
-            '(' => depth += 1,
-            ')' => depth -= 1,
-            ',' | '}' if depth == 0 => return Some(rest[..i].trim()),
-            _ => {}
-        }
-    }
-    None
-}
-
-/// Parse a whitespace-separated square text matrix.
-fn parse_text(path: &Path, b: &[u8]) -> Result<(usize, Vec<f64>)> {
-    let text = std::str::from_utf8(b).map_err(|_| Error::parse(path, 0, 0, "not UTF-8 text"))?;
-    let mut rows = 0usize;
-    let mut cols = None;
-    let mut out = Vec::new();
-    for (ln, line) in text.lines().enumerate() {
-        let line = line.split('#').next().unwrap_or("");
-        let mut count = 0usize;
-        for (col, tok) in line
-            .split(|c: char| c.is_whitespace() || c == ',')
-            .filter(|t| !t.is_empty())
-            .enumerate()
-        {
-            let v: f64 = tok.parse().map_err(|_| {
-                Error::parse(path, ln + 1, col + 1, format!("{tok:?} is not a number"))
-            })?;
-            out.push(v);
-            count += 1;
-        }
-        if count == 0 {
-            continue;
-        }
-        match cols {
-            None => cols = Some(count),
-            Some(c) if c != count => {
-                return Err(Error::parse(
-                    path,
-                    ln + 1,
-                    0,
-                    format!("row has {count} values, the first row has {c}"),
-                ))
-            }
-            _ => {}
-        }
-        rows += 1;
-    }
-    let cols = cols.unwrap_or(0);
-    if rows != cols || rows == 0 {
-        return Err(Error::parse(
-            path,
-            0,
-            0,
-            format!("matrix is {rows}×{cols}: need a square N×N grid"),
-        ));
-    }
-    Ok((rows, out))
-}
-
-/// Write a 2-D `rows × cols` row-major float64 array as `.npy` (version 1.0,
-/// C order).
-///
-/// # Errors
-/// Wrong length, I/O errors.
-pub fn write_npy(path: &Path, rows: usize, cols: usize, data: &[f64]) -> Result<()> {
-    if data.len() != rows * cols {
-        return Err(Error::Inconsistent {
-            name: "npy data".into(),
-            requirement: format!("{rows}×{cols} values, got {}", data.len()),
-        });
-    }
-    let mut header =
-        format!("{{'descr': '<f8', 'fortran_order': False, 'shape': ({rows}, {cols}), }}");
-    // Pad so that the data starts on a 64-byte boundary, ending with '\n'.
-    while (10 + header.len() + 1) % 64 != 0 {
-        header.push(' ');
-    }
-    header.push('\n');
-    let mut out = Vec::with_capacity(10 + header.len() + 8 * data.len());
-    out.extend_from_slice(NPY_MAGIC);
-    out.extend_from_slice(&[1, 0]);
-    out.extend_from_slice(&(header.len() as u16).to_le_bytes());
-    out.extend_from_slice(header.as_bytes());
-    for v in data {
-        out.extend_from_slice(&v.to_le_bytes());
-    }
-    std::fs::write(path, out).map_err(|source| Error::Io {
-        path: path.to_path_buf(),
-        source,
     })
 }

@@ -15,17 +15,19 @@
 //! segment) for [`SelfAffine`] and [`Tabulated`], and come from adaptive
 //! quadrature with an error estimate for [`FnSpectrum`].
 
+mod band_limited;
 pub mod convention;
 mod function;
 mod power;
 mod self_affine;
 mod tabulated;
 
+pub use band_limited::BandLimited;
 pub use convention::Convention;
 pub use function::FnSpectrum;
 pub use self_affine::{Amplitude, SelfAffine};
-pub(crate) use tabulated::parse_columns;
 pub use tabulated::Tabulated;
+pub use tabulated::{parse_columns, Rows};
 
 use crate::error::{Error, Result};
 use crate::quad::Estimate;

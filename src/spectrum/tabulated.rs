@@ -97,6 +97,8 @@ impl Tabulated {
     /// Cells may be separated by commas, semicolons, tabs or spaces; blank
     /// lines and lines starting with `#` are skipped; the first line may be a
     /// header (skipped when it starts with a letter and a cell is not a number).
+    /// The text is UTF-8, UTF-16 with a byte-order mark, or Latin-1
+    /// ([`crate::io::text::decode`]).
     ///
     /// # Errors
     /// [`Error::Io`] if the file cannot be read; [`Error::Parse`] with the line
@@ -112,9 +114,8 @@ impl Tabulated {
     /// # Errors
     /// As [`Tabulated::from_csv`], without the I/O errors.
     pub fn from_csv_bytes(path: &Path, bytes: &[u8], convention: Convention) -> Result<Self> {
-        let text = std::str::from_utf8(bytes)
-            .map_err(|e| Error::parse(path, 0, 0, format!("not UTF-8 text ({e})")))?;
-        let (points, lines) = parse_columns(path, text, ["q", "C"])?;
+        let text = crate::io::text::decode(path, bytes)?;
+        let (points, lines) = parse_columns(path, &text, ["q", "C"])?;
         let points = convention
             .to_persson(&points)
             .map_err(|e| at_line(e, path, &lines))?;
@@ -224,11 +225,11 @@ fn at_line(e: Error, path: &Path, lines: &[usize]) -> Error {
 }
 
 /// Parsed rows `(x, y)` and the 1-based file line of each.
-pub(crate) type Rows = (Vec<(f64, f64)>, Vec<usize>);
+pub type Rows = (Vec<(f64, f64)>, Vec<usize>);
 
 /// Parse rows of two numbers named `names` (used in messages); returns the
 /// points and their 1-based lines.
-pub(crate) fn parse_columns(path: &Path, text: &str, names: [&str; 2]) -> Result<Rows> {
+pub fn parse_columns(path: &Path, text: &str, names: [&str; 2]) -> Result<Rows> {
     let mut points = Vec::new();
     let mut lines = Vec::new();
     let mut first = true;

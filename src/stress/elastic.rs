@@ -12,6 +12,7 @@
 //! s ≥ 0 (Persson, Bucher & Chiaia (2002), Eq. 7 with σY → ∞; `../shared/theory.md` §2).
 
 use super::gauss;
+use super::method::ImageQuadrature;
 use super::start::{Start, TabulatedStart};
 use crate::error::Result;
 use crate::quad::{integrate, Estimate};
@@ -70,8 +71,8 @@ pub(crate) struct Images<'a> {
     /// Target for each quadrature.
     tol_q: f64,
     kernel: Kernel<'a>,
-    /// Short description of the evaluation.
-    pub(crate) method: String,
+    /// How each image is evaluated.
+    pub(crate) method: ImageQuadrature,
 }
 
 impl<'a> Images<'a> {
@@ -85,9 +86,9 @@ impl<'a> Images<'a> {
         let tol_q = 0.1 * tol;
         let inv_w2 = 1.0 / (w * w);
         let (kernel, method) = match start {
-            Start::Flat => (Kernel::Flat, "closed-form images".to_string()),
+            Start::Flat => (Kernel::Flat, ImageQuadrature::ClosedForm),
             Start::Hertz if w <= HERTZ_CLOSED_MAX_W => {
-                (Kernel::HertzClosed, "closed-form images".to_string())
+                (Kernel::HertzClosed, ImageQuadrature::ClosedForm)
             }
             Start::Hertz => {
                 let ln_norm = norm.ln();
@@ -102,7 +103,7 @@ impl<'a> Images<'a> {
                         c,
                         bound,
                     },
-                    format!("quadrature images (Gauss-Legendre, {} nodes)", r.x.len()),
+                    ImageQuadrature::GaussLegendre { nodes: r.x.len() },
                 )
             }
             Start::Cylinder if l * w > MAX_WINDOW => {
@@ -117,10 +118,7 @@ impl<'a> Images<'a> {
                 let c = u.iter().zip(&r.w).map(|(s, wt)| wt * h * s).collect();
                 (
                     Kernel::Global { u, c, bound },
-                    format!(
-                        "quadrature images (Gauss-Legendre in s = sin θ, {} nodes)",
-                        r.x.len()
-                    ),
+                    ImageQuadrature::GaussLegendreSine { nodes: r.x.len() },
                 )
             }
             Start::Cylinder => {
@@ -164,15 +162,12 @@ impl<'a> Images<'a> {
                         edge,
                         edge_bound,
                     },
-                    format!(
-                        "quadrature images (windowed Gauss-Legendre/Gauss-Jacobi, |s - u| <= {l:.2} w)"
-                    ),
+                    ImageQuadrature::WindowedGauss {
+                        window_half_width: l,
+                    },
                 )
             }
-            Start::Tabulated(t) => (
-                Kernel::Tabulated(t),
-                "quadrature images (adaptive Gauss-Kronrod per segment)".to_string(),
-            ),
+            Start::Tabulated(t) => (Kernel::Tabulated(t), ImageQuadrature::AdaptiveGaussKronrod),
         };
         Images {
             w,

@@ -54,14 +54,17 @@
 mod elastic;
 mod gauss;
 mod images;
+mod method;
+mod physical;
 mod series;
 mod start;
 
-pub use start::{HertzContact, Start, TabulatedStart};
+pub use method::{DensityMethod, FractionMethod, FractionMethods, ImageQuadrature, StressMethod};
+pub use physical::{PhysicalCurve, StressScene};
+pub use start::{HertzContact, Start, StartKind, TabulatedStart};
 
 use crate::error::{check, Error, Result};
 use crate::quad::Estimate;
-use crate::theory::Persson;
 use elastic::Images;
 use series::Series;
 
@@ -90,7 +93,7 @@ pub struct StressCurve {
     /// 1 − A_el − A_pl, the fraction that lost contact.
     pub non_contact_fraction: f64,
     /// Bound on the absolute error of every density value (1/σH) and of both
-    /// fractions.
+    /// fractions: the largest of the three bounds below.
     pub error_bound: f64,
     /// Bound on the absolute error of the density values (1/σH).
     pub scaled_density_error_bound: f64,
@@ -105,7 +108,21 @@ pub struct StressCurve {
     /// y = σY/σH, `None` when elastic.
     pub yield_ratio: Option<f64>,
     /// How the density and the fractions were computed.
-    pub method: String,
+    pub method: StressMethod,
+}
+
+/// A_el/A0 and A_pl/A0 of a [`Solver`], each with a bound on its absolute
+/// error, and how they were computed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub struct Fractions {
+    /// A_el/A0, the elastically loaded fraction (the contact fraction when
+    /// elastic).
+    pub elastic_fraction: Estimate,
+    /// A_pl/A0, the plastically yielded fraction (0 when elastic).
+    pub plastic_fraction: Estimate,
+    /// How each was computed.
+    pub method: FractionMethods,
 }
 
 /// Which representation of the finite-yield density to use.
@@ -259,37 +276,49 @@ impl<'a> Solver<'a> {
         }
     }
 
-    /// A_el and A_pl with error bounds, and a description of the method.
+    /// A_el and A_pl with error bounds, and how each was computed.
     ///
     /// # Errors
     /// Quadrature failure.
-    pub fn fractions(&self) -> Result<(Estimate, Estimate, String)> {
+    pub fn fractions(&self) -> Result<Fractions> {
         let zero = Estimate {
             value: 0.0,
             error: 0.0,
         };
         if self.g == 0.0 {
-            return Ok((
-                Estimate {
+            return Ok(Fractions {
+                elastic_fraction: Estimate {
                     value: 1.0,
                     error: 0.0,
                 },
-                zero,
-                "start condition".into(),
-            ));
+                plastic_fraction: zero,
+                method: FractionMethods {
+                    elastic_fraction: FractionMethod::StartCondition,
+                    plastic_fraction: None,
+                },
+            });
         }
         let w = 2.0 * self.tau.sqrt();
         if !self.y.is_finite() {
             let (el, _, _) = images::fractions(self.start, w, self.y)?;
             let c = 1.0 / w;
             let how = match self.start {
-                Start::Flat => "erf closed form",
-                Start::Hertz if c >= std::f64::consts::FRAC_1_SQRT_2 => "erf closed form",
-                Start::Hertz => "power series",
-                Start::Cylinder if c <= 1.0 => "power series",
-                _ => "adaptive quadrature",
+                Start::Flat => FractionMethod::ErfClosedForm,
+                Start::Hertz if c >= std::f64::consts::FRAC_1_SQRT_2 => {
+                    FractionMethod::ErfClosedForm
+                }
+                Start::Hertz => FractionMethod::PowerSeries,
+                Start::Cylinder if c <= 1.0 => FractionMethod::PowerSeries,
+                _ => FractionMethod::AdaptiveQuadrature,
             };
-            return Ok((el, zero, format!("contact fraction: {how}")));
+            return Ok(Fractions {
+                elastic_fraction: el,
+                plastic_fraction: zero,
+                method: FractionMethods {
+                    elastic_fraction: how,
+                    plastic_fraction: None,
+                },
+            });
         }
         let r = self.tau / (self.y * self.y);
         let a = series::decay_rate(self.start, self.g, self.y);
@@ -304,37 +333,35 @@ impl<'a> Solver<'a> {
             None
         };
         let (el, how_el) = match (&ser, &img) {
-            (Some(s), _) => (s.0, format!("sine series ({} terms)", s.2)),
-            (None, Some(i)) => (
-                i.0,
-                format!("image sum ({})", count(i.2, "image", "images")),
-            ),
+            (Some(s), _) => (s.0, FractionMethod::SineSeries { terms: s.2 }),
+            (None, Some(i)) => (i.0, FractionMethod::ImageSum { images: i.2 }),
             _ => unreachable!("SERIES_CONTACT_RATIO < SERIES_PLASTIC_RATIO"),
         };
         let (pl, how_pl) = match (&ser, &img) {
-            (_, Some(i)) => (
-                i.1,
-                format!("image sum ({})", count(i.2, "image", "images")),
-            ),
-            (Some(s), None) => (s.1, format!("sine series ({} terms)", s.2)),
+            (_, Some(i)) => (i.1, FractionMethod::ImageSum { images: i.2 }),
+            (Some(s), None) => (s.1, FractionMethod::SineSeries { terms: s.2 }),
             _ => unreachable!("SERIES_CONTACT_RATIO < SERIES_PLASTIC_RATIO"),
         };
-        Ok((
-            el,
-            pl,
-            format!("contact fraction: {how_el}; plastic fraction: {how_pl}"),
-        ))
+        Ok(Fractions {
+            elastic_fraction: el,
+            plastic_fraction: pl,
+            method: FractionMethods {
+                elastic_fraction: how_el,
+                plastic_fraction: Some(how_pl),
+            },
+        })
     }
 
-    /// Description of the density evaluation.
-    pub fn method(&self) -> String {
+    /// How the density is evaluated.
+    pub fn method(&self) -> DensityMethod {
         match &self.density {
-            Density::Start => "start condition (G = 0)".into(),
-            Density::Series(s) => format!("sine series ({} terms)", s.len()),
-            Density::Images(i) if self.y.is_finite() => {
-                format!("image sum (two walls), {}", i.method)
-            }
-            Density::Images(i) => i.method.clone(),
+            Density::Start => DensityMethod::StartCondition,
+            Density::Series(s) => DensityMethod::SineSeries { terms: s.len() },
+            Density::Images(i) => DensityMethod::ImageSum {
+                walls: if self.y.is_finite() { 2 } else { 1 },
+                quadrature: i.method,
+                images: None,
+            },
         }
     }
 
@@ -358,8 +385,16 @@ impl<'a> Solver<'a> {
             density.push(e.value);
             derr = derr.max(e.error);
         }
-        let (el, pl, how) = self.fractions()?;
+        let Fractions {
+            elastic_fraction: el,
+            plastic_fraction: pl,
+            method: how,
+        } = self.fractions()?;
         let error_bound = derr.max(el.error).max(pl.error);
+        let mut density_method = self.method();
+        if let DensityMethod::ImageSum { images, .. } = &mut density_method {
+            *images = (images_used > 0).then_some(images_used);
+        }
         Ok(StressCurve {
             sigma_ratio: sigma.to_vec(),
             scaled_density: density,
@@ -374,14 +409,9 @@ impl<'a> Solver<'a> {
             g: self.g,
             tau: self.tau,
             yield_ratio: self.y.is_finite().then_some(self.y),
-            method: if images_used > 0 {
-                format!(
-                    "density: {} (at most {}); {how}",
-                    self.method(),
-                    count(images_used, "image", "images"),
-                )
-            } else {
-                format!("density: {}; {how}", self.method())
+            method: StressMethod {
+                density: density_method,
+                fractions: how,
             },
         })
     }
@@ -393,11 +423,6 @@ impl<'a> Solver<'a> {
         let n = n.max(2);
         (0..n).map(|i| top * i as f64 / (n - 1) as f64).collect()
     }
-}
-
-/// "1 image", "3 images".
-fn count(n: usize, one: &str, many: &str) -> String {
-    format!("{n} {}", if n == 1 { one } else { many })
 }
 
 /// P(σ, ζ) for given G in dimensionless form: convenience over [`Solver`].
@@ -461,125 +486,4 @@ pub fn series_fractions(
     let a = series::decay_rate(start, g, yield_ratio);
     let (el, pl, _) = series::fractions_with_terms(start, yield_ratio, a, 1e-15, terms)?;
     Ok((el, pl))
-}
-
-/// A physical stress problem: start condition, its pressures and an optional
-/// yield stress, all in Pa.
-#[derive(Debug, Clone, PartialEq)]
-pub struct StressScene {
-    /// Start condition.
-    pub start: Start,
-    /// σH, peak pressure of the start (Pa).
-    pub peak_pressure: f64,
-    /// σY (Pa); `None` for elastic.
-    pub yield_stress: Option<f64>,
-}
-
-/// P(σ, ζ) in physical units at one magnification.
-#[derive(Debug, Clone, PartialEq, serde::Serialize)]
-#[non_exhaustive]
-pub struct PhysicalCurve {
-    /// Magnification ζ.
-    pub zeta: f64,
-    /// G(ζ) and its absolute error.
-    pub g: Estimate,
-    /// σ (Pa).
-    pub sigma: Vec<f64>,
-    /// P(σ, ζ) (1/Pa).
-    pub density: Vec<f64>,
-    /// A/A0 = A_el/A0 + A_pl/A0, the total contact fraction.
-    pub contact_fraction: f64,
-    /// A_el/A0, the elastically loaded fraction.
-    pub elastic_fraction: f64,
-    /// A_pl/A0, the plastically yielded fraction.
-    pub plastic_fraction: f64,
-    /// Bound on the absolute error of the fractions and of σH·P (dimensionless),
-    /// not counting the error of G.
-    pub error_bound: f64,
-    /// Method description.
-    pub method: String,
-}
-
-impl StressScene {
-    /// A flat punch at nominal pressure σ0 (Pa).
-    ///
-    /// # Errors
-    /// σ0 or σY not finite and positive; σY ≤ σ0.
-    pub fn flat(nominal_pressure: f64, yield_stress: Option<f64>) -> Result<Self> {
-        Self::new(Start::Flat, nominal_pressure, yield_stress)
-    }
-
-    /// The start of a Hertz contact ([`HertzContact::ball`] / [`HertzContact::cylinder`]).
-    ///
-    /// # Errors
-    /// σY not finite or ≤ σH.
-    pub fn hertz(contact: &HertzContact, yield_stress: Option<f64>) -> Result<Self> {
-        Self::new(contact.start.clone(), contact.peak_pressure, yield_stress)
-    }
-
-    /// A start with peak pressure σH (Pa).
-    ///
-    /// # Errors
-    /// σH not finite and positive; σY not finite or ≤ σH.
-    pub fn new(start: Start, peak_pressure: f64, yield_stress: Option<f64>) -> Result<Self> {
-        check::positive("peak_pressure", peak_pressure)?;
-        if let Some(s) = yield_stress {
-            if !(s.is_finite() && s > peak_pressure) {
-                return Err(Error::invalid(
-                    "yield_stress",
-                    s,
-                    format!("finite and > the peak pressure {peak_pressure:e}"),
-                ));
-            }
-        }
-        Ok(StressScene {
-            start,
-            peak_pressure,
-            yield_stress,
-        })
-    }
-
-    /// σ0 = (σ0/σH) σH, the nominal mean pressure (Pa).
-    pub fn nominal_pressure(&self) -> f64 {
-        self.start.mean_ratio() * self.peak_pressure
-    }
-
-    /// P(σ, ζ) at each magnification of `zetas`, at pressures `sigma` (Pa),
-    /// with G(ζ) from `model` at the nominal pressure σ0.
-    ///
-    /// # Formula
-    /// ```text
-    /// P(σ, ζ) = P̃(σ/σH; G(ζ), σY/σH) / σH
-    /// ```
-    /// # Errors
-    /// ζ < 1; as [`Solver::new`].
-    pub fn curves(
-        &self,
-        model: &Persson,
-        zetas: &[f64],
-        sigma: &[f64],
-        tol: f64,
-    ) -> Result<Vec<PhysicalCurve>> {
-        let sh = self.peak_pressure;
-        let s: Vec<f64> = sigma.iter().map(|v| v / sh).collect();
-        let y = self.yield_stress.map(|v| v / sh);
-        zetas
-            .iter()
-            .map(|&z| {
-                let g = model.g(z, self.nominal_pressure())?;
-                let c = distribution(&self.start, g.value, y, &s, tol)?;
-                Ok(PhysicalCurve {
-                    zeta: z,
-                    g,
-                    sigma: sigma.to_vec(),
-                    density: c.scaled_density.iter().map(|p| p / sh).collect(),
-                    contact_fraction: c.contact_fraction,
-                    elastic_fraction: c.elastic_fraction,
-                    plastic_fraction: c.plastic_fraction,
-                    error_bound: c.error_bound,
-                    method: c.method,
-                })
-            })
-            .collect()
-    }
 }

@@ -135,26 +135,34 @@ pub(crate) struct Series {
 }
 
 /// Terms N such that `scale`·Σ_{n>N} e^{−n²a} ≤ tol (a > 0).
+///
+/// The bisection runs on [1, 2⁵⁰] in `u64`, so that it is the same on 32-bit
+/// targets; a count beyond `usize::MAX` saturates there (every caller refuses
+/// more than 10⁶ terms).
 pub(crate) fn terms_for(a: f64, scale: f64, tol: f64) -> usize {
-    // the tail bound decreases with N: bisect on [1, 2^50]
-    let (mut lo, mut hi) = (0usize, 1usize << 50);
-    if tail_sum(1, a) * scale <= tol {
+    let below = |n: u64| tail_bound((n + 1) as f64, a) * scale <= tol;
+    let (mut lo, mut hi) = (0u64, 1u64 << 50);
+    if below(1) {
         return 1;
     }
     while hi - lo > 1 {
         let mid = lo + (hi - lo) / 2;
-        if tail_sum(mid, a) * scale <= tol {
+        if below(mid) {
             hi = mid;
         } else {
             lo = mid;
         }
     }
-    hi
+    usize::try_from(hi).unwrap_or(usize::MAX)
 }
 
 /// Σ_{n>N} e^{−n²a} ≤ e^{−(N+1)²a}/(1 − e^{−(2N+3)a}).
 pub(crate) fn tail_sum(n: usize, a: f64) -> f64 {
-    let m = (n + 1) as f64;
+    tail_bound((n + 1) as f64, a)
+}
+
+/// e^{−m²a}/(1 − e^{−(2m+1)a}) with m = N + 1: the bound of [`tail_sum`].
+fn tail_bound(m: f64, a: f64) -> f64 {
     (-m * m * a).exp() / -(-(2.0 * m + 1.0) * a).exp_m1()
 }
 

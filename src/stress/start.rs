@@ -40,13 +40,18 @@ impl Start {
         }
     }
 
-    /// Short name.
+    /// Short name: that of its [`StartKind`].
     pub fn name(&self) -> &'static str {
+        self.kind().name()
+    }
+
+    /// Which start this is, without its data.
+    pub fn kind(&self) -> StartKind {
         match self {
-            Start::Flat => "flat",
-            Start::Hertz => "hertz",
-            Start::Cylinder => "cylinder",
-            Start::Tabulated(_) => "tabulated",
+            Start::Flat => StartKind::Flat,
+            Start::Hertz => StartKind::Hertz,
+            Start::Cylinder => StartKind::Cylinder,
+            Start::Tabulated(_) => StartKind::Tabulated,
         }
     }
 
@@ -85,6 +90,40 @@ impl Start {
             }
             Start::Tabulated(t) => t.eval(s),
         }
+    }
+}
+
+/// The kind of a [`Start`], a label from a closed set: serialised and
+/// displayed as `flat`, `hertz`, `cylinder` or `tabulated`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+#[non_exhaustive]
+pub enum StartKind {
+    /// [`Start::Flat`].
+    Flat,
+    /// [`Start::Hertz`].
+    Hertz,
+    /// [`Start::Cylinder`].
+    Cylinder,
+    /// [`Start::Tabulated`].
+    Tabulated,
+}
+
+impl StartKind {
+    /// The label: `flat`, `hertz`, `cylinder` or `tabulated`.
+    pub fn name(self) -> &'static str {
+        match self {
+            StartKind::Flat => "flat",
+            StartKind::Hertz => "hertz",
+            StartKind::Cylinder => "cylinder",
+            StartKind::Tabulated => "tabulated",
+        }
+    }
+}
+
+impl std::fmt::Display for StartKind {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
     }
 }
 

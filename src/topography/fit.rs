@@ -12,11 +12,16 @@
 //! standard error is that of the fit's scatter, so it also covers a spectrum
 //! that is not a clean power law.
 //!
+//! Line scans are fitted on their 1D spectrum, `C_1D ≈ A₁ q^s`,
+//! `H = −(s + 1)/2`, `se(H) = se(s)/2`; the prefactor of the 2D line is
+//! `A = A₁ Γ(H+1)/(√π Γ(H+½))` ([`crate::spectrum::Convention::Profile1D`]),
+//! so that the fit is drawn on the 2D spectrum with the same H.
+//!
 //! # References
 //! Persson, Bucher & Chiaia, Phys. Rev. B 65, 184106 (2002): self-affine
 //! `C ∝ q^{−2(H+1)}`.
 
-use super::Psd;
+use super::{ProfileSpectrum, Psd};
 use crate::error::{Error, Result};
 
 /// A power-law fit `C ≈ A q^{−2(H+1)}` over a band.
@@ -38,14 +43,59 @@ pub struct HurstFit {
 /// # Errors
 /// [`Error::Inconsistent`] when fewer than 3 bins with C > 0 lie in the band.
 pub fn fit_hurst(psd: &Psd, q_lo: f64, q_hi: f64) -> Result<HurstFit> {
-    let pts: Vec<(f64, f64, f64)> = psd
-        .q
+    let l = line(&psd.q, &psd.c, &psd.count, q_lo, q_hi)?;
+    Ok(HurstFit {
+        hurst: -l.slope / 2.0 - 1.0,
+        hurst_error: l.slope_error / 2.0,
+        prefactor: l.prefactor,
+        bins: l.bins,
+    })
+}
+
+/// Fit H over the bins of a line scan's 1D spectrum with
+/// `q_lo ≤ q̄ ≤ q_hi`, `C_1D ∝ q^{−(2H+1)}` (module docs); the prefactor is
+/// that of the 2D spectrum.
+///
+/// # Errors
+/// As [`fit_hurst`].
+pub fn fit_hurst_profile(p: &ProfileSpectrum, q_lo: f64, q_hi: f64) -> Result<HurstFit> {
+    let l = line(&p.q, &p.c_1d, &p.count, q_lo, q_hi)?;
+    let h = -(l.slope + 1.0) / 2.0;
+    let factor = libm::tgamma(h + 1.0) / (std::f64::consts::PI.sqrt() * libm::tgamma(h + 0.5));
+    Ok(HurstFit {
+        hurst: h,
+        hurst_error: l.slope_error / 2.0,
+        prefactor: l.prefactor * factor,
+        bins: l.bins,
+    })
+}
+
+/// Bins with C > 0 and q in the band (ends included up to rounding).
+pub(crate) fn in_band(q: &[f64], c: &[f64], q_lo: f64, q_hi: f64) -> usize {
+    q.iter()
+        .zip(c)
+        .filter(|(q, c)| inside(**q, **c, q_lo, q_hi))
+        .count()
+}
+
+fn inside(q: f64, c: f64, q_lo: f64, q_hi: f64) -> bool {
+    q >= q_lo * (1.0 - 1e-12) && q <= q_hi * (1.0 + 1e-12) && c > 0.0
+}
+
+/// A weighted least-squares line through (ln q, ln C).
+struct Line {
+    slope: f64,
+    slope_error: f64,
+    prefactor: f64,
+    bins: usize,
+}
+
+fn line(q: &[f64], c: &[f64], count: &[usize], q_lo: f64, q_hi: f64) -> Result<Line> {
+    let pts: Vec<(f64, f64, f64)> = q
         .iter()
-        .zip(&psd.c)
-        .zip(&psd.count)
-        .filter(|((q, c), _)| {
-            **q >= q_lo * (1.0 - 1e-12) && **q <= q_hi * (1.0 + 1e-12) && **c > 0.0
-        })
+        .zip(c)
+        .zip(count)
+        .filter(|((q, c), _)| inside(**q, **c, q_lo, q_hi))
         .map(|((q, c), n)| (q.ln(), c.ln(), *n as f64))
         .collect();
     let m = pts.len();
@@ -67,10 +117,9 @@ pub fn fit_hurst(psd: &Psd, q_lo: f64, q_hi: f64) -> Result<HurstFit> {
     let s = sxy / sxx;
     let a = ym - s * xm;
     let rss: f64 = pts.iter().map(|p| p.2 * (p.1 - a - s * p.0).powi(2)).sum();
-    let se = (rss / (m - 2) as f64 / sxx).sqrt();
-    Ok(HurstFit {
-        hurst: -s / 2.0 - 1.0,
-        hurst_error: se / 2.0,
+    Ok(Line {
+        slope: s,
+        slope_error: (rss / (m - 2) as f64 / sxx).sqrt(),
         prefactor: a.exp(),
         bins: m,
     })

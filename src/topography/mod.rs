@@ -36,18 +36,24 @@
 //! 013001 (2017), doi:10.1088/2051-672X/aa51f8 (spectra of measured surfaces,
 //! windows, reliable band).
 
+mod analysis;
 mod condition;
 mod fill;
 mod fit;
+mod note;
 mod psd;
 pub mod read;
 mod stats;
 mod window;
 
+pub use analysis::{analyse, Analysis, AnalysisOptions, Conditioning};
 pub use condition::Detrend;
-pub use fit::{fit_hurst, HurstFit};
-pub use psd::{isotropic_spectrum, profile_spectrum, Bins, ProfileSpectrum, Psd};
-pub use read::{read, ReadOptions, SizeSpec};
+pub use fit::{fit_hurst, fit_hurst_profile, HurstFit};
+pub use note::Note;
+pub use psd::{
+    isotropic_spectrum, profile_spectrum, Bins, IsotropicConversion, ProfileSpectrum, Psd,
+};
+pub use read::{read, LengthUnit, ReadOptions, SizeSpec};
 pub use stats::{real_space_stats, RealSpaceStats};
 pub use window::Window;
 
@@ -76,6 +82,7 @@ pub struct Topography {
     periodic: bool,
     layout: Layout,
     heights: Vec<f64>,
+    notes: Vec<Note>,
 }
 
 impl Topography {
@@ -113,6 +120,7 @@ impl Topography {
             periodic,
             layout: Layout::Map,
             heights,
+            notes: Vec::new(),
         };
         t.validate()?;
         Ok(t)
@@ -138,6 +146,7 @@ impl Topography {
             periodic,
             layout: Layout::LineScans,
             heights,
+            notes: Vec::new(),
         };
         t.validate()?;
         Ok(t)
@@ -256,6 +265,41 @@ impl Topography {
         self
     }
 
+    /// What the reader did to the data that the user should know of
+    /// (empty for a surface built in memory).
+    pub fn notes(&self) -> &[Note] {
+        &self.notes
+    }
+
+    /// The same surface with these notes.
+    pub(crate) fn with_notes(mut self, notes: Vec<Note>) -> Self {
+        self.notes = notes;
+        self
+    }
+
+    /// A map with its axes swapped: `nx' = ny`, `Lx' = Ly`, and height
+    /// `(ix, iy)` of the result is height `(iy, ix)` of `self` (line scans
+    /// are returned as they are).
+    pub fn transposed(&self) -> Self {
+        if self.layout != Layout::Map {
+            return self.clone();
+        }
+        let m = crate::io::Matrix {
+            rows: self.ny,
+            cols: self.nx,
+            values: self.heights.clone(),
+        }
+        .transposed();
+        Topography {
+            nx: self.ny,
+            ny: self.nx,
+            lx: self.ly,
+            ly: self.lx,
+            heights: m.values,
+            ..self.clone()
+        }
+    }
+
     /// The reliable band `[q_min, q_max]` of the spectrum, 1/m:
     /// `q_min = 2π/min(Lx, Ly)` (the longest wavelength present in every
     /// direction) and `q_max = π/max(Δx, Δy)` (the Nyquist wavevector of the
@@ -266,225 +310,5 @@ impl Topography {
             Layout::Map => (TAU / self.lx.min(self.ly), PI / self.dx().max(self.dy())),
             Layout::LineScans => (TAU / self.lx, PI / self.dx()),
         }
-    }
-}
-
-/// Conditioning of the heights before the spectrum: detrending and window.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
-pub struct Conditioning {
-    /// The least-squares trend removed.
-    pub detrend: Detrend,
-    /// The window applied (power normalised).
-    pub window: Window,
-}
-
-impl Conditioning {
-    /// The defaults: periodic surfaces are taken as they are (no detrending,
-    /// no window); measured, non-periodic ones get the least-squares plane
-    /// removed and a Hann window.
-    pub fn for_topography(t: &Topography) -> Self {
-        if t.periodic() {
-            Conditioning {
-                detrend: Detrend::None,
-                window: Window::None,
-            }
-        } else {
-            Conditioning {
-                detrend: Detrend::Plane,
-                window: Window::Hann,
-            }
-        }
-    }
-}
-
-/// Options of [`analyse`]; `None` fields take the defaults.
-#[derive(Debug, Clone, Default, PartialEq)]
-pub struct AnalysisOptions {
-    /// Detrending; default from [`Conditioning::for_topography`].
-    pub detrend: Option<Detrend>,
-    /// Window; default from [`Conditioning::for_topography`].
-    pub window: Option<Window>,
-    /// Upper end of the band, 1/m; default the Nyquist wavevector.
-    pub q_max: Option<f64>,
-    /// Bins of the radial average; default [`Bins::default`].
-    pub bins: Option<Bins>,
-}
-
-/// Everything [`analyse`] finds about a topography; serialises with the keys
-/// of the names table (`shape`, `pixel_size`, `rms_height`, …, `psd`).
-#[derive(Debug, Clone, serde::Serialize)]
-#[non_exhaustive]
-pub struct Analysis {
-    /// `[ny, nx]`.
-    pub shape: [usize; 2],
-    /// `[Δx, Δy]` or `[Δx]`, m.
-    pub pixel_size: Vec<f64>,
-    /// Whether the surface was taken as periodic.
-    pub periodic: bool,
-    /// Map or line scans.
-    pub layout: Layout,
-    /// The conditioning applied.
-    pub detrend: Detrend,
-    /// The window applied.
-    pub window: Window,
-    /// rms height of the detrended heights (real space), m.
-    pub rms_height: f64,
-    /// rms slope (real space, forward differences; 2D-equivalent √2·h'_x for
-    /// line scans), dimensionless.
-    pub rms_slope: f64,
-    /// rms Laplacian (real space, 5-point; 2D-equivalent √(8/3)·h''_x for line
-    /// scans), 1/m.
-    pub rms_curvature: f64,
-    /// The same three from the spectrum: exact sums over the Fourier modes
-    /// inside the bins, `sqrt(Σ_q |q|^{k} C(q) Δq_x Δq_y)` (k = 0, 2, 4), the
-    /// discrete form of `sqrt(2π ∫ q^{k+1} C dq)` ([`Psd`]).
-    pub rms_height_from_spectrum: f64,
-    /// See `rms_height_from_spectrum`.
-    pub rms_slope_from_spectrum: f64,
-    /// See `rms_height_from_spectrum`.
-    pub rms_curvature_from_spectrum: f64,
-    /// Hurst exponent fitted over the band.
-    pub hurst: f64,
-    /// Its standard error.
-    pub hurst_error: f64,
-    /// Lower end of the reliable band, 1/m.
-    pub q_min: f64,
-    /// Upper end of the reliable band, 1/m.
-    pub q_max: f64,
-    /// The binned isotropic spectrum (Persson's normalisation).
-    pub psd: Psd,
-    /// The Hurst fit (its prefactor draws the fit line; `hurst` and
-    /// `hurst_error` above are its H and standard error).
-    #[serde(skip)]
-    pub fit: HurstFit,
-}
-
-/// Condition the topography, compute its isotropic spectrum (for line scans:
-/// the averaged 1D spectrum converted with [`crate::spectrum::Convention::Profile1D`]),
-/// its real-space and spectral statistics and a Hurst fit over the band.
-///
-/// # Errors
-/// An empty band (`q_max` below `q_min`), fewer than 3 bins for the fit, a
-/// 1D spectrum that is not decaying (line scans; see the conversion).
-///
-/// # Examples
-/// ```
-/// use persson::topography::{analyse, AnalysisOptions, Topography};
-/// # fn main() -> persson::Result<()> {
-/// // A periodic 32 × 32 map of one cosine with a 4-pixel wavelength, h = a cos(2π x/λ).
-/// let (n, size, a) = (32, 1e-5, 1e-8);
-/// let h = (0..n * n).map(|k| a * (std::f64::consts::TAU * (k % n) as f64 / 4.0).cos()).collect();
-/// let t = Topography::map(n, n, size, size, h, true)?;
-/// let r = analyse(&t, &AnalysisOptions::default())?;
-/// // ⟨h²⟩ = a²/2 in real space and from the spectrum (Parseval).
-/// assert!((r.rms_height - a / 2f64.sqrt()).abs() < 1e-12 * a);
-/// assert!((r.rms_height_from_spectrum - r.rms_height).abs() < 1e-12 * a);
-/// # Ok(()) }
-/// ```
-pub fn analyse(t: &Topography, options: &AnalysisOptions) -> Result<Analysis> {
-    let defaults = Conditioning::for_topography(t);
-    let conditioning = Conditioning {
-        detrend: options.detrend.unwrap_or(defaults.detrend),
-        window: options.window.unwrap_or(defaults.window),
-    };
-    let bins = options.bins.clone().unwrap_or_default();
-    let psd = match t.layout() {
-        Layout::Map => isotropic_spectrum(t, conditioning, &bins, options.q_max)?,
-        Layout::LineScans => {
-            profile_spectrum(t, conditioning, &bins, options.q_max)?.to_isotropic()?
-        }
-    };
-    let real = real_space_stats(t, conditioning.detrend)?;
-    let fit = fit_hurst(&psd, psd.q_min, psd.q_max)?;
-    Ok(Analysis {
-        shape: t.shape(),
-        pixel_size: t.pixel_size(),
-        periodic: t.periodic(),
-        layout: t.layout(),
-        detrend: conditioning.detrend,
-        window: conditioning.window,
-        rms_height: real.rms_height,
-        rms_slope: real.rms_slope,
-        rms_curvature: real.rms_curvature,
-        rms_height_from_spectrum: psd.rms_height,
-        rms_slope_from_spectrum: psd.rms_slope,
-        rms_curvature_from_spectrum: psd.rms_curvature,
-        hurst: fit.hurst,
-        hurst_error: fit.hurst_error,
-        q_min: psd.q_min,
-        q_max: psd.q_max,
-        psd,
-        fit,
-    })
-}
-
-impl crate::table::Tabulate for Analysis {
-    /// One table `psd`: the statistics as scalars under the title, then the
-    /// binned spectrum (q, C, modes per bin).
-    fn tables(&self) -> Vec<crate::table::Table> {
-        use crate::table::{Cell, Table};
-        let shape = format!("{} × {}", self.shape[0], self.shape[1]);
-        let pixel = self
-            .pixel_size
-            .iter()
-            .map(|d| crate::table::number(*d, 6))
-            .collect::<Vec<_>>()
-            .join(" × ");
-        let what = match self.layout {
-            Layout::Map => "height map",
-            Layout::LineScans => "line scans",
-        };
-        let mut t = Table::new(
-            "psd",
-            format!("Isotropic power spectrum C(q) of the {what} (Persson's normalisation)"),
-        )
-        .scalar("shape", "points (rows × columns)", shape)
-        .scalar("pixel_size", "pixel size (m)", pixel)
-        .scalar(
-            "periodic",
-            "periodic",
-            if self.periodic { "yes" } else { "no" },
-        )
-        .scalar("detrend", "detrending", self.detrend.name())
-        .scalar("window", "window", self.window.name())
-        .scalar("rms_height", "h_rms (m)", self.rms_height)
-        .scalar("rms_slope", "h'_rms (forward differences)", self.rms_slope)
-        .scalar(
-            "rms_curvature",
-            "h''_rms (1/m, 5-point Laplacian)",
-            self.rms_curvature,
-        )
-        .scalar(
-            "rms_height_from_spectrum",
-            "h_rms from C(q) (m)",
-            self.rms_height_from_spectrum,
-        )
-        .scalar(
-            "rms_slope_from_spectrum",
-            "h'_rms from C(q)",
-            self.rms_slope_from_spectrum,
-        )
-        .scalar(
-            "rms_curvature_from_spectrum",
-            "h''_rms from C(q) (1/m)",
-            self.rms_curvature_from_spectrum,
-        )
-        .scalar(
-            "hurst",
-            "H (fit over the band)",
-            Cell::Measured {
-                value: self.hurst,
-                error: self.hurst_error,
-            },
-        )
-        .scalar("q_min", "q_min = 2π/L (1/m)", self.q_min)
-        .scalar("q_max", "q_max (1/m)", self.q_max)
-        .column("q", "q (1/m)")
-        .column("c", "C (m⁴)")
-        .column("count", "modes");
-        for ((q, c), n) in self.psd.q.iter().zip(&self.psd.c).zip(&self.psd.count) {
-            t.push(vec![Cell::Num(*q), Cell::Num(*c), Cell::from(*n)]);
-        }
-        vec![t]
     }
 }

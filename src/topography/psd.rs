@@ -157,7 +157,7 @@ impl Psd {
     /// [`Convention::Persson`] reads back to the same points. Comment lines
     /// (`#`) state the convention and the band.
     pub fn to_csv(&self) -> String {
-        use crate::table::csv_number as num;
+        use crate::io::csv_number as num;
         let mut s = String::new();
         s.push_str(
             "# isotropic power spectrum, Persson's normalisation: q (1/m, angular), c (m^4)\n",
@@ -399,31 +399,78 @@ pub struct ProfileSpectrum {
     pub rms_curvature_profile: f64,
 }
 
+/// A line scan's spectrum as the isotropic 2D one, with the bins left out
+/// ([`ProfileSpectrum::to_isotropic`]).
+#[derive(Debug, Clone)]
+#[non_exhaustive]
+pub struct IsotropicConversion {
+    /// The 2D spectrum of the bins that convert; its rms values are those of
+    /// the whole 1D spectrum.
+    pub psd: Psd,
+    /// The q of the bins left out, 1/m.
+    pub left_out: Vec<f64>,
+}
+
 impl ProfileSpectrum {
     /// The isotropic 2D spectrum of a surface whose profiles these are,
     /// through [`Convention::Profile1D`]; the statistics become the 2D ones of
     /// an isotropic surface, `⟨|∇h|²⟩ = 2⟨h_x²⟩` and `⟨(∇²h)²⟩ = (8/3)⟨h_xx²⟩`.
     ///
+    /// A bin whose local log-log slope (from its neighbours, as the
+    /// convention takes it) is not below −1 has no 2D counterpart (a noise
+    /// floor, a few modes at low q): it is left out, and the slopes of the
+    /// remaining bins are taken again from their remaining neighbours until
+    /// every bin left converts. The rms values keep every bin (they come
+    /// from the 1D spectrum).
+    ///
     /// # Errors
-    /// The conversion's: a bin where the 1D spectrum does not decay faster
-    /// than 1/q (no isotropic counterpart).
-    pub fn to_isotropic(&self) -> Result<Psd> {
-        let pts: Vec<(f64, f64)> = self
-            .q
-            .iter()
-            .copied()
-            .zip(self.c_1d.iter().copied())
+    /// None for a spectrum of this crate; the conversion's errors otherwise.
+    pub fn to_isotropic(&self) -> Result<IsotropicConversion> {
+        let mut keep: Vec<usize> = (0..self.q.len()).collect();
+        loop {
+            let m = keep.len();
+            let fails: Vec<usize> = (0..m)
+                .filter(|&k| {
+                    let (a, b) = (keep[k.saturating_sub(1)], keep[(k + 1).min(m - 1)]);
+                    let s = (self.c_1d[b] / self.c_1d[a]).ln() / (self.q[b] / self.q[a]).ln();
+                    !(s < -1.0 && s.is_finite())
+                })
+                .collect();
+            if fails.is_empty() || m < 2 {
+                break;
+            }
+            let mut k = 0;
+            keep.retain(|_| {
+                let drop = fails.contains(&k);
+                k += 1;
+                !drop
+            });
+        }
+        if keep.len() < 2 {
+            keep.clear();
+        }
+        let pts: Vec<(f64, f64)> = keep.iter().map(|&i| (self.q[i], self.c_1d[i])).collect();
+        let c2 = if pts.is_empty() {
+            Vec::new()
+        } else {
+            Convention::Profile1D.to_persson(&pts)?
+        };
+        let left_out = (0..self.q.len())
+            .filter(|i| !keep.contains(i))
+            .map(|i| self.q[i])
             .collect();
-        let c2 = Convention::Profile1D.to_persson(&pts)?;
-        Ok(Psd {
-            q: self.q.clone(),
-            c: c2.into_iter().map(|p| p.1).collect(),
-            count: self.count.clone(),
-            q_min: self.q_min,
-            q_max: self.q_max,
-            rms_height: self.rms_height,
-            rms_slope: self.rms_slope_profile * 2f64.sqrt(),
-            rms_curvature: self.rms_curvature_profile * (8.0f64 / 3.0).sqrt(),
+        Ok(IsotropicConversion {
+            psd: Psd {
+                q: c2.iter().map(|p| p.0).collect(),
+                c: c2.iter().map(|p| p.1).collect(),
+                count: keep.iter().map(|&i| self.count[i]).collect(),
+                q_min: self.q_min,
+                q_max: self.q_max,
+                rms_height: self.rms_height,
+                rms_slope: self.rms_slope_profile * 2f64.sqrt(),
+                rms_curvature: self.rms_curvature_profile * (8.0f64 / 3.0).sqrt(),
+            },
+            left_out,
         })
     }
 }

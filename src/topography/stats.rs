@@ -37,6 +37,11 @@ pub struct RealSpaceStats {
     pub rms_slope: f64,
     /// rms Laplacian (5-point), 1/m.
     pub rms_curvature: f64,
+    /// Line scans: rms slope along the profiles, `rms(D⁺_x h)` (`None` for maps).
+    pub rms_slope_profile: Option<f64>,
+    /// Line scans: rms second derivative along the profiles, `rms(D²_x h)`,
+    /// 1/m (`None` for maps).
+    pub rms_curvature_profile: Option<f64>,
 }
 
 /// rms height, slope and curvature of the topography after `detrend`
@@ -69,7 +74,7 @@ pub fn real_space_stats(t: &Topography, detrend: Detrend) -> Result<RealSpaceSta
     let at = |i: usize, j: usize| h[j * nx + i];
     let dx = t.dx();
     let p = t.periodic();
-    let (rms_slope, rms_curvature) = match t.layout() {
+    let (rms_slope, rms_curvature, profile) = match t.layout() {
         Layout::LineScans => {
             let (mut s1, mut n1, mut s2, mut n2) = (0.0, 0usize, 0.0, 0usize);
             for j in 0..ny {
@@ -85,13 +90,18 @@ pub fn real_space_stats(t: &Topography, detrend: Detrend) -> Result<RealSpaceSta
                     }
                 }
             }
-            (
-                (2.0 * s1 / n1 as f64).sqrt(),
+            let (slope, curvature) = (
+                (s1 / n1 as f64).sqrt(),
                 if n2 > 0 {
-                    (8.0 / 3.0 * s2 / n2 as f64).sqrt()
+                    (s2 / n2 as f64).sqrt()
                 } else {
                     f64::NAN
                 },
+            );
+            (
+                2f64.sqrt() * slope,
+                (8.0f64 / 3.0).sqrt() * curvature,
+                Some((slope, curvature)),
             )
         }
         Layout::Map => {
@@ -123,6 +133,7 @@ pub fn real_space_stats(t: &Topography, detrend: Detrend) -> Result<RealSpaceSta
                 } else {
                     f64::NAN
                 },
+                None,
             )
         }
     };
@@ -130,5 +141,7 @@ pub fn real_space_stats(t: &Topography, detrend: Detrend) -> Result<RealSpaceSta
         rms_height,
         rms_slope,
         rms_curvature,
+        rms_slope_profile: profile.map(|p| p.0),
+        rms_curvature_profile: profile.map(|p| p.1),
     })
 }

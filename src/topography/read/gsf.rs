@@ -1,10 +1,12 @@
 //! Gwyddion Simple Field (`.gsf`).
 //!
 //! A text header, first line `Gwyddion Simple Field 1.0`, then `Key = Value`
-//! lines (`XRes`, `YRes` required; `XReal`, `YReal` the physical sizes in m,
-//! optional), then 1–4 NUL bytes so that the header length is a multiple of
-//! 4, then `XRes·YRes` little-endian float32 heights, x fastest. NaN marks an
-//! undefined point.
+//! lines (`XRes`, `YRes` required; `XReal`, `YReal` the physical sizes,
+//! optional; `XYUnits`, `ZUnits` the units of sizes and values, optional),
+//! then 1–4 NUL bytes so that the header length is a multiple of 4, then
+//! `XRes·YRes` little-endian float32 heights, x fastest. NaN marks an
+//! undefined point. Units are base SI units (`m`); a `ZUnits` that is not a
+//! length (`deg` of a phase channel, `V`, `A` — the ampere) is an error.
 //!
 //! # References
 //! Gwyddion user guide, "Gwyddion Simple Field" file format
@@ -12,7 +14,8 @@
 
 use std::path::Path;
 
-use super::Raw;
+use super::units::Unit;
+use super::{Raw, Stored};
 use crate::error::{Error, Result};
 use crate::topography::Layout;
 
@@ -42,34 +45,15 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
             format!("malformed padding: the header must be followed by NUL bytes up to byte {data_start} (a multiple of 4)"),
         ));
     }
-    let (mut xres, mut yres, mut xreal, mut yreal) = (None, None, None, None);
-    for (ln, line) in header.lines().enumerate().skip(1) {
-        let line = line.trim();
-        if line.is_empty() {
-            continue;
-        }
-        let Some((k, v)) = line.split_once('=') else {
-            return Err(bad(ln + 1, format!("{line:?} is not 'Key = Value'")));
-        };
-        let (k, v) = (k.trim(), v.trim());
-        let num = |v: &str| -> Result<f64> {
-            v.parse::<f64>()
-                .map_err(|_| bad(ln + 1, format!("{k} = {v:?} is not a number")))
-        };
-        let int = |v: &str| -> Result<usize> {
-            v.parse::<usize>()
-                .ok()
-                .filter(|&n| n > 0)
-                .ok_or_else(|| bad(ln + 1, format!("{k} = {v:?} is not a positive integer")))
-        };
-        match k {
-            "XRes" => xres = Some(int(v)?),
-            "YRes" => yres = Some(int(v)?),
-            "XReal" => xreal = Some(num(v)?),
-            "YReal" => yreal = Some(num(v)?),
-            _ => {}
-        }
-    }
+    let Fields {
+        xres,
+        yres,
+        xreal,
+        yreal,
+        xy_unit,
+        z_unit,
+        resolution,
+    } = fields(path, header)?;
     let xres = xres.ok_or_else(|| bad(0, "the header has no XRes".into()))?;
     let yres = yres.ok_or_else(|| bad(0, "the header has no YRes".into()))?;
     let count = xres
@@ -93,7 +77,12 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
         .map(|c| f64::from(f32::from_le_bytes([c[0], c[1], c[2], c[3]])))
         .collect();
     let size = match (xreal, yreal) {
-        (Some(x), Some(y)) => Some((x, y)),
+        (Some(x), Some(y)) => Some(Stored {
+            lx: x,
+            ly: y,
+            unit: xy_unit,
+            resolution,
+        }),
         (None, None) => None,
         _ => {
             return Err(bad(
@@ -103,12 +92,80 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
         }
     };
     Ok(Raw {
-        nx: xres,
-        ny: yres,
-        heights,
         size,
-        layout: Layout::Map,
+        height_unit: z_unit,
+        ..Raw::map(xres, yres, heights)
     })
+}
+
+/// The fields of the header.
+struct Fields {
+    xres: Option<usize>,
+    yres: Option<usize>,
+    xreal: Option<f64>,
+    yreal: Option<f64>,
+    xy_unit: Unit,
+    z_unit: Unit,
+    /// Relative precision of `XReal`, `YReal` as written.
+    resolution: f64,
+}
+
+/// Read the `Key = Value` lines after the first.
+fn fields(path: &Path, header: &str) -> Result<Fields> {
+    let bad = |line: usize, m: String| Error::parse(path, line, 0, m);
+    let mut f = Fields {
+        xres: None,
+        yres: None,
+        xreal: None,
+        yreal: None,
+        xy_unit: Unit::Unstated,
+        z_unit: Unit::Unstated,
+        resolution: 0.0,
+    };
+    for (ln, line) in header.lines().enumerate().skip(1) {
+        let line = line.trim();
+        if line.is_empty() {
+            continue;
+        }
+        let Some((k, v)) = line.split_once('=') else {
+            return Err(bad(ln + 1, format!("{line:?} is not 'Key = Value'")));
+        };
+        let (k, v) = (k.trim(), v.trim());
+        let num = |v: &str| -> Result<f64> {
+            v.parse::<f64>()
+                .map_err(|_| bad(ln + 1, format!("{k} = {v:?} is not a number")))
+        };
+        let int = |v: &str| -> Result<usize> {
+            v.parse::<usize>()
+                .ok()
+                .filter(|&n| n > 0)
+                .ok_or_else(|| bad(ln + 1, format!("{k} = {v:?} is not a positive integer")))
+        };
+        match k {
+            "XRes" => f.xres = Some(int(v)?),
+            "YRes" => f.yres = Some(int(v)?),
+            "XReal" | "YReal" => {
+                let x = num(v)?;
+                let r = crate::io::text::resolution(v) / x.abs();
+                if r.is_finite() {
+                    f.resolution = f.resolution.max(r);
+                }
+                if k == "XReal" {
+                    f.xreal = Some(x);
+                } else {
+                    f.yreal = Some(x);
+                }
+            }
+            "XYUnits" => {
+                f.xy_unit = Unit::declared("XYUnits: the sizes", v).map_err(|m| bad(ln + 1, m))?
+            }
+            "ZUnits" => {
+                f.z_unit = Unit::declared("ZUnits: the values", v).map_err(|m| bad(ln + 1, m))?
+            }
+            _ => {}
+        }
+    }
+    Ok(f)
 }
 
 /// Write a map as a `.gsf` file (float32 heights, x fastest, sizes in

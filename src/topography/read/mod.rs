@@ -1,35 +1,73 @@
 //! Reading topographies from files.
 //!
-//! | format | extension | physical size | undefined points |
-//! |---|---|---|---|
-//! | numpy array, `f4`/`f8`, either byte order, C or Fortran order, rank 2 | `.npy` | from the caller | NaN |
-//! | text matrix (whitespace, comma or semicolon separated, `#` comments) | any other | from the caller | `nan` |
-//! | XYZ triples on a regular grid, any order | `.xyz` | from the coordinates | `nan`, or a grid point without a triple |
-//! | Gwyddion Simple Field | `.gsf` | `XReal`, `YReal` (else the caller) | NaN |
-//! | ISO 25178-72 XML 3D surface profile | `.x3p` | `CX`/`CY` increments | NaN |
-//! | line scan: two columns x, h, x equally spaced | text with 2 columns | from x | `nan` |
+//! | format | how it is chosen | physical size | height unit | undefined points |
+//! |---|---|---|---|---|
+//! | numpy array, `f4`/`f8`, either byte order, C or Fortran order, rank 2 | `.npy`, or its magic | from the caller | from the caller (default m) | NaN |
+//! | text matrix | text that is not one of the two below | header (Gwyddion export, `h=`/`w=`/`pixel size=`) else the caller | header (`Value units`, `data unit` with `height conversion factor`) else the caller | `nan` |
+//! | XYZ triples on a regular grid, any order | `.xyz`, or three columns whose first two take few distinct values | from the coordinates | column headings (`x [µm]`) else the caller | `nan`, or a grid point without a triple |
+//! | line scan: x, h (or index, x, h; or x, h, valid) | two columns, or three as shown | from x | column headings else the caller | `nan`, valid = 0 |
+//! | Gwyddion Simple Field | `.gsf`, or its first line | `XReal`, `YReal` | `ZUnits` (default: the caller's) | NaN |
+//! | ISO 25178-72 XML 3D surface profile | `.x3p`, or a zip archive | `CX`/`CY` increments | m | NaN, `ValidPointsLink` mask |
 //!
-//! The format is chosen by the extension, else by content (`.npy` magic,
-//! `Gwyddion Simple Field` first line, zip signature, two text columns for a
-//! line scan), or given in [`ReadOptions::format`]. Every error is an
-//! [`Error::Parse`] naming the file (and line where it helps) and what is
-//! wrong; undefined points are an error with their count unless
+//! # Axis order
+//! A row of a `.npy` array or text matrix runs along x: the array of
+//! shape `(ny, nx)` has `nx` points along x (numpy's image convention), and
+//! `size: [Lx, Ly]` (`--size LX,LY`) gives `Lx` along a row.
+//! SurfaceTopography's `heights()` is indexed the other way round, `[ix, iy]`:
+//! save its transpose, or read with [`ReadOptions::transpose`].
+//!
+//! # Text
+//! Text is UTF-8, UTF-16 with a byte-order mark or Latin-1, and may start
+//! with any number of header lines ([`crate::io::text`]). The kind of a
+//! text file (matrix, XYZ, line scan) is read from its content whatever the
+//! extension (`.txt`, `.csv`, `.dat`, `.asc`), except `.xyz`.
+//!
+//! # Line scans
+//! The x positions are tested against the equally spaced grid through the
+//! first and last, `x_i = x_0 + iΔ`, `Δ = (x_{n−1} − x_0)/(n − 1)`:
+//! ```text
+//! |x_i − x_0 − iΔ| ≤ 0.01 Δ + u_i          (u_i: one unit in the last digit written of x_i)
+//! ```
+//! so that positions rounded on export (6 decimals, 8 significant digits,
+//! 0.1 µm) are read as the equally spaced scan the instrument took. A scan
+//! beyond that is linearly interpolated onto n equally spaced points from
+//! x_0 to x_{n−1} (SurfaceTopography's `to_uniform(nb_points=n)`), with a
+//! [`Note::Resampled`]; positions that do not increase are an error. The
+//! length is `L = nΔ`.
+//!
+//! # Units
+//! Heights and coordinates end up in metres. Where a file states a unit
+//! it is used (and a caller's unit must agree); a stated unit that is not a
+//! length (a GSF phase channel in `deg`) is an error naming it. Where a file
+//! states none, [`ReadOptions::height_unit`] and
+//! [`ReadOptions::lateral_unit`] give it (default m); a file that states
+//! one of them but not the other needs the other from the caller.
+//!
+//! # Unsupported formats
+//! Binary instrument formats (`.sur`, `.plu`, `.datx`, `.opd`, MetroPro
+//! `.dat`, …) are an error that says so and how to convert them.
+//!
+//! Every error is an [`Error::Parse`] naming the file (and line where it
+//! helps); undefined points are an error with their count unless
 //! [`ReadOptions::fill_undefined`] asks for harmonic interpolation.
 
+mod detect;
 mod gsf;
+mod header;
 mod line;
-mod npy;
 mod text;
+mod units;
 mod x3p;
 mod xyz;
 
 use std::path::Path;
 
-use super::{fill, Layout, Topography};
+use super::{fill, Layout, Note, Topography};
 use crate::error::{Error, Result};
 
 pub use gsf::write_gsf;
-pub use npy::write_npy;
+pub use units::LengthUnit;
+use units::Unit;
 
 /// The physical size, when the caller gives it.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -45,7 +83,7 @@ pub enum SizeSpec {
 pub enum Format {
     /// numpy `.npy`.
     Npy,
-    /// Text matrix.
+    /// Text: a matrix, XYZ triples or a line scan, by content.
     Text,
     /// XYZ triples.
     Xyz,
@@ -53,16 +91,16 @@ pub enum Format {
     Gsf,
     /// ISO 25178-72 `.x3p`.
     X3p,
-    /// Two-column line scan (x, h).
+    /// Line scan (x, h).
     LineScan,
 }
 
 /// How to read a topography.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct ReadOptions {
-    /// The physical size, for formats that do not store it. Giving it for a
-    /// file that stores one is an error (the file's size is not overridden
-    /// silently).
+    /// The physical size, for formats that do not store it. For a file that
+    /// stores one it is checked against the file's (to the precision the
+    /// file writes) and an error if they disagree.
     pub size: Option<SizeSpec>,
     /// Whether the surface is periodic.
     pub periodic: bool,
@@ -70,33 +108,76 @@ pub struct ReadOptions {
     pub fill_undefined: bool,
     /// Force a format instead of detecting it.
     pub format: Option<Format>,
+    /// The unit of the heights in a file that states none (default m);
+    /// checked against the file's where it states one.
+    pub height_unit: Option<LengthUnit>,
+    /// The unit of the x (and y) coordinates of a line scan or XYZ file
+    /// that states none (default m); checked against the file's.
+    pub lateral_unit: Option<LengthUnit>,
+    /// Swap the axes of a map after reading: row i of the file becomes
+    /// column i (for arrays saved in SurfaceTopography's `[ix, iy]` order).
+    /// The size, given or stored, is that of the map as read, before the
+    /// swap.
+    pub transpose: bool,
 }
 
-/// What a format parser returns: heights (NaN where undefined) and the size
-/// if the file stores it.
+/// The physical size a file stores, in its lateral unit.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Stored {
+    /// Size along x.
+    pub lx: f64,
+    /// Size along y (0 for line scans).
+    pub ly: f64,
+    /// The unit of `lx`, `ly`.
+    pub unit: Unit,
+    /// Relative precision to which the file writes the size (a caller's
+    /// size within it agrees).
+    pub resolution: f64,
+}
+
+/// What a format parser returns: heights (NaN where undefined) in the
+/// file's unit, and the size if the file stores it.
 pub(crate) struct Raw {
     pub nx: usize,
     pub ny: usize,
     pub heights: Vec<f64>,
-    pub size: Option<(f64, f64)>,
+    pub size: Option<Stored>,
+    pub height_unit: Unit,
     pub layout: Layout,
+    pub notes: Vec<Note>,
+}
+
+impl Raw {
+    /// A map of `nx × ny` heights, no size, units unstated.
+    pub(crate) fn map(nx: usize, ny: usize, heights: Vec<f64>) -> Self {
+        Raw {
+            nx,
+            ny,
+            heights,
+            size: None,
+            height_unit: Unit::Unstated,
+            layout: Layout::Map,
+            notes: Vec::new(),
+        }
+    }
 }
 
 /// Read a topography file (module docs).
 ///
 /// # Errors
 /// [`Error::Io`] if the file cannot be read; [`Error::Parse`] naming the file
-/// for a malformed or truncated file, a wrong dtype or rank, a grid that is
-/// not regular, one row or column, constant heights, undefined points
-/// (without `fill_undefined`), a missing, zero or negative size, or a size
-/// given for a file that stores its own.
+/// for an unsupported format, a malformed or truncated file, a wrong dtype
+/// or rank, a grid that is not regular, one row or column, constant
+/// heights, undefined points (without `fill_undefined`), a missing, zero or
+/// negative size, a given size that disagrees with the file's, a unit that
+/// is not a length, or a given unit that disagrees with the file's.
 pub fn read(path: &Path, options: &ReadOptions) -> Result<Topography> {
     let bytes = crate::io::read(path)?;
     from_bytes(path, &bytes, options)
 }
 
 /// [`read()`] from bytes in memory; `path` names the source in errors and its
-/// extension selects the format.
+/// extension selects the format where it is unambiguous.
 ///
 /// # Errors
 /// As [`read()`], without the I/O errors.
@@ -114,47 +195,32 @@ pub fn read(path: &Path, options: &ReadOptions) -> Result<Topography> {
 /// // A constant map is refused, naming the file.
 /// let e = from_bytes(Path::new("flat.txt"), b"1 1 1\n1 1 1\n", &o).unwrap_err();
 /// assert!(e.to_string().starts_with("flat.txt") && e.to_string().contains("not all equal"));
+/// // A binary format persson does not read says so.
+/// let e = from_bytes(Path::new("scan.sur"), b"DIGITAL SURF\0\0", &o).unwrap_err();
+/// assert!(e.to_string().contains("unsupported format (.sur)"));
 /// # Ok(()) }
 /// ```
 pub fn from_bytes(path: &Path, bytes: &[u8], options: &ReadOptions) -> Result<Topography> {
-    let format = options.format.unwrap_or_else(|| detect(path, bytes));
+    let format = match options.format {
+        Some(f) => f,
+        None => detect::format(path, bytes)?,
+    };
     let raw = match format {
-        Format::Npy => npy::parse(path, bytes)?,
+        Format::Npy => {
+            let m = crate::io::npy::parse(path, bytes)?;
+            Raw::map(m.cols, m.rows, m.values)
+        }
         Format::Text => text::parse(path, bytes)?,
-        Format::Xyz => xyz::parse(path, bytes)?,
+        Format::Xyz => xyz::parse(path, &crate::io::text::rows(path, bytes)?)?,
         Format::Gsf => gsf::parse(path, bytes)?,
         Format::X3p => x3p::parse(path, bytes)?,
-        Format::LineScan => line::parse(path, bytes)?,
+        Format::LineScan => line::parse(path, &crate::io::text::rows(path, bytes)?)?,
     };
     finish(path, raw, options)
 }
 
-fn detect(path: &Path, bytes: &[u8]) -> Format {
-    let ext = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase);
-    match ext.as_deref() {
-        Some("npy") => return Format::Npy,
-        Some("gsf") => return Format::Gsf,
-        Some("x3p") => return Format::X3p,
-        Some("xyz") => return Format::Xyz,
-        _ => {}
-    }
-    if bytes.starts_with(npy::MAGIC) {
-        Format::Npy
-    } else if bytes.starts_with(gsf::MAGIC) {
-        Format::Gsf
-    } else if bytes.starts_with(b"PK\x03\x04") {
-        Format::X3p
-    } else if text::columns(bytes) == Some(2) {
-        Format::LineScan
-    } else {
-        Format::Text
-    }
-}
-
-/// Sizes, undefined points, validation; every error names the file.
+/// Units, sizes, undefined points, transpose, validation; every error
+/// names the file.
 fn finish(path: &Path, mut raw: Raw, options: &ReadOptions) -> Result<Topography> {
     let bad = |m: String| Error::parse(path, 0, 0, m);
     let (nx, ny) = (raw.nx, raw.ny);
@@ -168,61 +234,156 @@ fn finish(path: &Path, mut raw: Raw, options: &ReadOptions) -> Result<Topography
             "the line scan has {nx} point(s): need at least 2"
         )));
     }
-    let given = |name: &str, v: f64| -> Result<f64> {
+    let (z, xy) = unit_factors(&raw, options).map_err(bad)?;
+    if z != 1.0 {
+        raw.heights.iter_mut().for_each(|h| *h *= z);
+    }
+    let (lx, ly) = sizes(&raw, xy, options).map_err(bad)?;
+    fill_undefined(&mut raw, options).map_err(bad)?;
+    let mut t = match raw.layout {
+        Layout::Map => Topography::map(nx, ny, lx, ly, raw.heights, options.periodic),
+        Layout::LineScans => Topography::line_scans(nx, ny, lx, raw.heights, options.periodic),
+    }
+    .map_err(|e| bad(e.to_string()))?;
+    if options.transpose {
+        if t.layout() != Layout::Map {
+            return Err(bad("a line scan cannot be transposed (only maps)".into()));
+        }
+        t = t.transposed();
+    }
+    Ok(t.with_notes(raw.notes))
+}
+
+/// The factors to metres of the heights and of the stored size.
+fn unit_factors(raw: &Raw, options: &ReadOptions) -> std::result::Result<(f64, f64), String> {
+    let lateral = raw.size.as_ref().map_or(&Unit::Unstated, |s| &s.unit);
+    let one = |what: &str,
+               flag: &str,
+               file: &Unit,
+               given: Option<LengthUnit>,
+               other: &Unit|
+     -> std::result::Result<f64, String> {
+        match (file, given) {
+            (Unit::Stated(text, u), Some(g)) if *u != g => Err(format!(
+                "the file gives {what} in {text}, the {flag} given is {g}: leave it out \
+                 (the file's unit is used)"
+            )),
+            (Unit::Stated(_, u), _) => Ok(u.metres()),
+            (Unit::Unstated, Some(g)) => Ok(g.metres()),
+            (Unit::Unstated, None) => match other {
+                Unit::Stated(text, _) => Err(format!(
+                    "the file gives the unit of the {} ({text}) but not of the {what}: \
+                     give the {flag}",
+                    if what == "heights" {
+                        "coordinates"
+                    } else {
+                        "heights"
+                    }
+                )),
+                Unit::Unstated => Ok(1.0),
+            },
+        }
+    };
+    let z = one(
+        "heights",
+        "height unit (--height-unit, scenes: height_unit)",
+        &raw.height_unit,
+        options.height_unit,
+        lateral,
+    )?;
+    let xy = match &raw.size {
+        Some(s) => one(
+            "coordinates",
+            "lateral unit (--lateral-unit, scenes: lateral_unit)",
+            &s.unit,
+            options.lateral_unit,
+            &raw.height_unit,
+        )?,
+        None => 1.0,
+    };
+    Ok((z, xy))
+}
+
+/// `(Lx, Ly)` in metres from the file or the caller, checked against each
+/// other when both give one.
+fn sizes(raw: &Raw, xy: f64, options: &ReadOptions) -> std::result::Result<(f64, f64), String> {
+    let (nx, ny) = (raw.nx as f64, raw.ny as f64);
+    let map = raw.layout == Layout::Map;
+    let given = |name: &str, v: f64| -> std::result::Result<f64, String> {
         if v.is_finite() && v > 0.0 {
             Ok(v)
         } else {
-            Err(bad(format!("{name} = {v}: must be finite and > 0")))
+            Err(format!("{name} = {v}: must be finite and > 0"))
         }
     };
-    let (lx, ly) = match (raw.size, options.size) {
-        (Some(_), Some(_)) => {
-            return Err(bad(
-                "the file stores its physical size: do not give a pixel size or size as well"
-                    .into(),
-            ))
-        }
-        (Some((lx, ly)), None) => (
-            given("size along x (from the file)", lx)?,
-            if raw.layout == Layout::Map {
-                given("size along y (from the file)", ly)?
-            } else {
-                0.0
-            },
-        ),
-        (None, Some(SizeSpec::PixelSize(d))) => {
+    let caller = match options.size {
+        Some(SizeSpec::PixelSize(d)) => {
             let d = given("pixel_size", d)?;
-            (nx as f64 * d, ny as f64 * d)
+            Some((nx * d, ny * d, false))
         }
-        (None, Some(SizeSpec::Size(lx, ly))) => {
+        Some(SizeSpec::Size(lx, ly)) => {
             let lx = given("size", lx)?;
-            let ly = match ly {
-                Some(ly) => given("size along y", ly)?,
-                None => lx * ny as f64 / nx as f64,
+            Some(match ly {
+                Some(ly) => (lx, given("size along y", ly)?, false),
+                None => (lx, lx * ny / nx, true),
+            })
+        }
+        None => None,
+    };
+    let Some(s) = &raw.size else {
+        return caller.map(|(lx, ly, _)| (lx, ly)).ok_or_else(|| {
+            "the format stores no physical size: give the pixel size or the size".into()
+        });
+    };
+    let lx = given("size along x (from the file)", s.lx * xy)?;
+    let ly = if map {
+        given("size along y (from the file)", s.ly * xy)?
+    } else {
+        0.0
+    };
+    if let Some((cx, cy, implied_y)) = caller {
+        let tol = s.resolution.max(1e-9);
+        let off = |a: f64, b: f64| (a / b - 1.0).abs() > tol;
+        if off(cx, lx) || (map && !implied_y && off(cy, ly)) {
+            let n = crate::error::num;
+            let (file, given) = if map {
+                (
+                    format!("{} × {} m", n(lx), n(ly)),
+                    format!("{} × {} m", n(cx), n(cy)),
+                )
+            } else {
+                (format!("{} m", n(lx)), format!("{} m", n(cx)))
             };
-            (lx, ly)
+            return Err(format!(
+                "the file gives the size {file}; the size given ({given}) disagrees: \
+                 leave it out (the file's size is used)"
+            ));
         }
-        (None, None) => {
-            return Err(bad(
-                "the format stores no physical size: give the pixel size or the size".into(),
-            ))
-        }
-    };
-    let undefined = raw.heights.iter().filter(|h| !h.is_finite()).count();
-    if undefined > 0 {
-        if !options.fill_undefined {
-            return Err(bad(format!(
-                "{undefined} of {} points are undefined (NaN, infinite or the format's missing-data marker); \
-                 fill them by harmonic interpolation with --fill-undefined (scenes: fill_undefined)",
-                raw.heights.len()
-            )));
-        }
-        fill::harmonic_fill(&mut raw.heights, nx, ny, raw.layout, options.periodic)
-            .map_err(|e| bad(e.to_string()))?;
     }
-    let t = match raw.layout {
-        Layout::Map => Topography::map(nx, ny, lx, ly, raw.heights, options.periodic),
-        Layout::LineScans => Topography::line_scans(nx, ny, lx, raw.heights, options.periodic),
-    };
-    t.map_err(|e| bad(e.to_string()))
+    Ok((lx, ly))
+}
+
+/// Undefined points: an error with their count, or filled on request.
+fn fill_undefined(raw: &mut Raw, options: &ReadOptions) -> std::result::Result<(), String> {
+    let undefined = raw.heights.iter().filter(|h| !h.is_finite()).count();
+    if undefined == 0 {
+        return Ok(());
+    }
+    if !options.fill_undefined {
+        return Err(format!(
+            "{undefined} of {} points are undefined (NaN, infinite, the format's missing-data \
+             marker or validity mask); fill them by harmonic interpolation with \
+             --fill-undefined (scenes: fill_undefined)",
+            raw.heights.len()
+        ));
+    }
+    fill::harmonic_fill(
+        &mut raw.heights,
+        raw.nx,
+        raw.ny,
+        raw.layout,
+        options.periodic,
+    )
+    .map(drop)
+    .map_err(|e| e.to_string())
 }

@@ -1,83 +1,149 @@
-//! Plain text: a matrix of heights (one row of the map per line), and the
-//! row reader shared with the XYZ and line-scan formats.
+//! Text files by content: a height matrix (one row of the map per line),
+//! XYZ triples, or a line scan ([`crate::io::text`] reads the numbers).
 //!
-//! Cells are separated by whitespace, commas or semicolons; blank lines and
-//! text after `#` are ignored; `nan` marks an undefined point. The first line
-//! may be a header (skipped when it starts with a letter and does not parse
-//! as numbers).
+//! The kind is read from the numbers: two columns are a line scan (x, h);
+//! three columns are a line scan when the first counts at least three rows
+//! and the second increases (index, x, h) or the last heading says `valid`
+//! (x, h, valid), XYZ triples when the
+//! first two columns take few distinct values, n ≤ n_x·n_y ≤ 2n for n rows
+//! with every (x, y) once; anything else is a matrix, and so is any file
+//! whose header gives a map's size or shape. A matrix's header gives its
+//! size and units ([`super::header`]).
 
 use std::path::Path;
 
-use super::Raw;
+use super::header::{self, Header};
+use super::units::{LengthUnit, Unit};
+use super::{line, xyz, Raw, Stored};
 use crate::error::{Error, Result};
-use crate::topography::Layout;
+use crate::io::text::Rows;
 
-/// Rows of numbers with their 1-based line numbers.
-pub(crate) type Rows = Vec<(usize, Vec<f64>)>;
-
-/// The numeric rows of a text file.
-pub(crate) fn rows(path: &Path, b: &[u8]) -> Result<Rows> {
-    let text = std::str::from_utf8(b)
-        .map_err(|e| Error::parse(path, 0, 0, format!("not UTF-8 text ({e})")))?;
-    let mut out = Vec::new();
-    let mut first = true;
-    for (ln, raw) in text.lines().enumerate() {
-        let line = raw.split('#').next().unwrap_or("").trim();
-        if line.is_empty() {
-            continue;
-        }
-        let cells: Vec<&str> = line
-            .split(|c: char| c.is_whitespace() || c == ',' || c == ';')
-            .filter(|t| !t.is_empty())
-            .collect();
-        if first
-            && line.starts_with(|c: char| c.is_alphabetic())
-            && cells.iter().any(|c| c.parse::<f64>().is_err())
-        {
-            first = false;
-            continue;
-        }
-        first = false;
-        let mut v = Vec::with_capacity(cells.len());
-        for (col, tok) in cells.iter().enumerate() {
-            v.push(tok.parse::<f64>().map_err(|_| {
-                Error::parse(path, ln + 1, col + 1, format!("{tok:?} is not a number"))
-            })?);
-        }
-        out.push((ln + 1, v));
-    }
-    if out.is_empty() {
-        return Err(Error::parse(path, 0, 0, "no numbers in the file"));
-    }
-    Ok(out)
+/// What a text file holds.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Kind {
+    Matrix,
+    Xyz,
+    LineScan,
 }
 
-/// The number of cells of the first data line, if the file is text.
-pub(crate) fn columns(b: &[u8]) -> Option<usize> {
-    rows(Path::new(""), b).ok()?.first().map(|r| r.1.len())
-}
-
-/// A text matrix: every row the same number of columns.
 pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
-    let rows = rows(path, b)?;
-    let nx = rows[0].1.len();
-    let mut heights = Vec::with_capacity(nx * rows.len());
-    for (ln, r) in &rows {
-        if r.len() != nx {
-            return Err(Error::parse(
-                path,
-                *ln,
-                0,
-                format!("row has {} values, the first row has {nx}", r.len()),
-            ));
-        }
-        heights.extend_from_slice(r);
+    let rows = crate::io::text::rows(path, b)?;
+    let h = header::parse(rows.header.iter().chain(&rows.comments));
+    let map_header = h.width.is_some()
+        || h.height.is_some()
+        || h.pixel_size.is_some()
+        || h.rows.is_some()
+        || h.cols.is_some()
+        || h.value_unit.is_some();
+    if map_header {
+        return matrix(path, rows, &h);
     }
-    Ok(Raw {
-        nx,
-        ny: rows.len(),
-        heights,
-        size: None,
-        layout: Layout::Map,
-    })
+    match kind(&rows) {
+        Kind::LineScan => line::parse(path, &rows),
+        Kind::Xyz => xyz::parse(path, &rows),
+        Kind::Matrix => matrix(path, rows, &h),
+    }
+}
+
+fn kind(r: &Rows) -> Kind {
+    match r.columns() {
+        2 => Kind::LineScan,
+        3 if line::index_column(r) || line::valid_column(r) => Kind::LineScan,
+        3 if looks_like_xyz(r) => Kind::Xyz,
+        _ => Kind::Matrix,
+    }
+}
+
+/// Whether the first two columns of three make a grid (module docs).
+fn looks_like_xyz(r: &Rows) -> bool {
+    let n = r.rows.len();
+    if n < 4 || r.rows.iter().any(|row| row.values.len() != 3) {
+        return false;
+    }
+    let distinct = |k: usize| {
+        let mut v: Vec<f64> = r.rows.iter().map(|row| row.values[k]).collect();
+        v.sort_by(f64::total_cmp);
+        v.dedup();
+        v.len()
+    };
+    let (nx, ny) = (distinct(0), distinct(1));
+    let cells = nx.saturating_mul(ny);
+    if nx < 2 || ny < 2 || cells < n || cells > 2 * n {
+        return false;
+    }
+    let mut pairs: Vec<(u64, u64)> = r
+        .rows
+        .iter()
+        .map(|row| (row.values[0].to_bits(), row.values[1].to_bits()))
+        .collect();
+    pairs.sort_unstable();
+    pairs.windows(2).all(|w| w[0] != w[1])
+}
+
+/// A height matrix with the size and units of its header.
+fn matrix(path: &Path, rows: Rows, h: &Header) -> Result<Raw> {
+    let bad = |m: String| Error::parse(path, 0, 0, m);
+    let m = rows.into_matrix(path)?;
+    let (ny, nx) = (m.rows, m.cols);
+    if h.rows.is_some_and(|r| r != ny) || h.cols.is_some_and(|c| c != nx) {
+        return Err(bad(format!(
+            "the header gives h = {} rows and w = {} columns, the file holds {ny} rows of {nx}",
+            h.rows.map_or("?".into(), |r| r.to_string()),
+            h.cols.map_or("?".into(), |c| c.to_string()),
+        )));
+    }
+    let mut raw = Raw::map(nx, ny, m.values);
+    raw.size = size(h, nx, ny).map_err(bad)?;
+    match (&h.value_unit, h.to_metres) {
+        (_, Some(f)) => {
+            raw.heights.iter_mut().for_each(|v| *v *= f);
+            raw.height_unit = Unit::Stated("m".into(), LengthUnit::Metre);
+        }
+        (Some(u), None) => {
+            raw.height_unit = Unit::declared("the heights", u).map_err(bad)?;
+        }
+        (None, None) => {}
+    }
+    Ok(raw)
+}
+
+/// The size a header gives, converted to metres where it states units.
+fn size(h: &Header, nx: usize, ny: usize) -> std::result::Result<Option<Stored>, String> {
+    let metres = |w: &header::Written| match &w.unit {
+        Unit::Stated(_, u) => (w.value * u.metres(), true),
+        Unit::Unstated => (w.value, false),
+    };
+    let stored = |lx: f64, ly: f64, stated: bool, resolution: f64| Stored {
+        lx,
+        ly,
+        unit: if stated {
+            Unit::Stated("m".into(), LengthUnit::Metre)
+        } else {
+            Unit::Unstated
+        },
+        resolution,
+    };
+    match (&h.width, &h.height, &h.pixel_size) {
+        (Some(w), Some(v), _) => {
+            let ((lx, sx), (ly, sy)) = (metres(w), metres(v));
+            if sx != sy {
+                return Err("the header gives a unit for one side and not the other".into());
+            }
+            let r = w.relative_resolution.max(v.relative_resolution);
+            Ok(Some(stored(lx, ly, sx, r)))
+        }
+        (Some(_), None, _) | (None, Some(_), _) => {
+            Err("the header gives only one of the width and the height".into())
+        }
+        (None, None, Some(p)) => {
+            let (d, s) = metres(p);
+            Ok(Some(stored(
+                nx as f64 * d,
+                ny as f64 * d,
+                s,
+                p.relative_resolution,
+            )))
+        }
+        (None, None, None) => Ok(None),
+    }
 }

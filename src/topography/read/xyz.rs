@@ -1,37 +1,56 @@
 //! XYZ triples on a regular grid, in any order. The grid is the set of
-//! distinct x and y values, which must be equally spaced; a grid point
-//! without a triple (or with z = nan) is undefined. Sizes `Lx = nx·Δx`,
-//! `Ly = ny·Δy`.
+//! distinct x and y values, which must be equally spaced to the precision
+//! written (`|x_k − x_0 − kΔ| ≤ 0.01 Δ + u`, u one unit in the last digit
+//! written); a grid point without a triple (or with z = nan) is undefined.
+//! Sizes `Lx = nx·Δx`, `Ly = ny·Δy`; units from the column headings
+//! (`x [µm]`), if any.
 
 use std::path::Path;
 
 use super::line::SPACING_TOLERANCE;
-use super::{text, Raw};
+use super::units::Unit;
+use super::{Raw, Stored};
 use crate::error::{Error, Result};
+use crate::io::text::{cells, Rows};
 use crate::topography::Layout;
 
-/// Distinct values of `v`, their spacing and the index of each value.
-fn axis(path: &Path, name: &str, v: &[f64], lines: &[usize]) -> Result<(usize, f64, Vec<usize>)> {
-    let mut s = v.to_vec();
-    s.sort_by(f64::total_cmp);
-    let (lo, hi) = (s[0], s[s.len() - 1]);
+/// One axis of the grid: its points, spacing, the index of each value, and
+/// the relative precision of its written coordinates.
+struct Axis {
+    n: usize,
+    spacing: f64,
+    index: Vec<usize>,
+    resolution: f64,
+}
+
+/// Distinct values of `v` (written to `ulp`), their spacing and the index
+/// of each value.
+fn axis(path: &Path, name: &str, v: &[f64], ulp: &[f64], lines: &[usize]) -> Result<Axis> {
+    let mut order: Vec<usize> = (0..v.len()).collect();
+    order.sort_by(|&a, &b| v[a].total_cmp(&v[b]));
+    let (lo, hi) = (v[order[0]], v[order[v.len() - 1]]);
     let range = hi - lo;
-    let mut distinct: Vec<f64> = Vec::new();
-    for &x in &s {
-        if distinct
-            .last()
-            .is_none_or(|&d| x - d > 1e-9 * range.max(f64::MIN_POSITIVE))
-        {
-            distinct.push(x);
+    // Distinct values with the coarsest written precision of each.
+    let mut distinct: Vec<(f64, f64)> = Vec::new();
+    for &k in &order {
+        let u = if ulp[k].is_finite() { ulp[k] } else { 0.0 };
+        match distinct.last_mut() {
+            Some((d, du)) if v[k] - *d <= 1e-9 * range.max(f64::MIN_POSITIVE) => *du = du.max(u),
+            _ => distinct.push((v[k], u)),
         }
     }
     let n = distinct.len();
     if n < 2 {
-        return Ok((1, 0.0, vec![0; v.len()]));
+        return Ok(Axis {
+            n: 1,
+            spacing: 0.0,
+            index: vec![0; v.len()],
+            resolution: 0.0,
+        });
     }
     let d = range / (n - 1) as f64;
-    for (k, &x) in distinct.iter().enumerate() {
-        if (x - (lo + k as f64 * d)).abs() > SPACING_TOLERANCE * 10.0 * d {
+    for (k, &(x, u)) in distinct.iter().enumerate() {
+        if (x - (lo + k as f64 * d)).abs() > SPACING_TOLERANCE * d + u {
             return Err(Error::parse(
                 path,
                 0,
@@ -42,12 +61,13 @@ fn axis(path: &Path, name: &str, v: &[f64], lines: &[usize]) -> Result<(usize, f
             ));
         }
     }
+    let worst = distinct.iter().map(|p| p.1).fold(0.0, f64::max);
     let index = v
         .iter()
         .zip(lines)
         .map(|(&x, &ln)| {
             let k = ((x - lo) / d).round();
-            if (x - (lo + k * d)).abs() > 0.01 * d {
+            if (x - (lo + k * d)).abs() > 0.5 * d {
                 Err(Error::parse(
                     path,
                     ln,
@@ -59,34 +79,80 @@ fn axis(path: &Path, name: &str, v: &[f64], lines: &[usize]) -> Result<(usize, f
             }
         })
         .collect::<Result<Vec<_>>>()?;
-    Ok((n, d, index))
+    Ok(Axis {
+        n,
+        spacing: d,
+        index,
+        resolution: worst / range,
+    })
 }
 
-pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
-    let rows = text::rows(path, b)?;
-    let (mut x, mut y, mut z, mut lines) = (vec![], vec![], vec![], vec![]);
-    for (ln, r) in &rows {
-        if r.len() != 3 {
+/// The units of x, y and z from the last header line's three headings.
+fn units(path: &Path, r: &Rows) -> Result<[Unit; 3]> {
+    let none = || [Unit::Unstated, Unit::Unstated, Unit::Unstated];
+    let Some(last) = r.header.last() else {
+        return Ok(none());
+    };
+    let parts: Vec<&str> = if last.text.contains([',', ';', '\t']) {
+        last.text.split([',', ';', '\t']).map(str::trim).collect()
+    } else {
+        cells(&last.text).collect()
+    };
+    let parts: Vec<&str> = parts.into_iter().filter(|p| !p.is_empty()).collect();
+    if parts.len() != 3 {
+        return Ok(none());
+    }
+    let bad = |m: String| Error::parse(path, last.line, 0, m);
+    let x = Unit::in_heading("the x coordinates", parts[0]).map_err(bad)?;
+    let y = Unit::in_heading("the y coordinates", parts[1]).map_err(bad)?;
+    let z = Unit::in_heading("the heights", parts[2]).map_err(bad)?;
+    if x != y {
+        return Err(bad(format!(
+            "the headings give x and y in different units ({:?}, {:?})",
+            parts[0], parts[1]
+        )));
+    }
+    Ok([x, y, z])
+}
+
+pub(crate) fn parse(path: &Path, rows: &Rows) -> Result<Raw> {
+    let [xy_unit, _, z_unit] = units(path, rows)?;
+    let n = rows.rows.len();
+    let (mut x, mut y, mut z) = (
+        Vec::with_capacity(n),
+        Vec::with_capacity(n),
+        Vec::with_capacity(n),
+    );
+    let (mut ux, mut uy, mut lines) = (
+        Vec::with_capacity(n),
+        Vec::with_capacity(n),
+        Vec::with_capacity(n),
+    );
+    for r in &rows.rows {
+        if r.values.len() != 3 {
             return Err(Error::parse(
                 path,
-                *ln,
+                r.line,
                 0,
                 format!(
                     "an XYZ file has three columns (x, y, z), this row has {}",
-                    r.len()
+                    r.values.len()
                 ),
             ));
         }
-        if !(r[0].is_finite() && r[1].is_finite()) {
-            return Err(Error::parse(path, *ln, 0, "x and y must be finite"));
+        if !(r.values[0].is_finite() && r.values[1].is_finite()) {
+            return Err(Error::parse(path, r.line, 0, "x and y must be finite"));
         }
-        x.push(r[0]);
-        y.push(r[1]);
-        z.push(r[2]);
-        lines.push(*ln);
+        x.push(r.values[0]);
+        y.push(r.values[1]);
+        z.push(r.values[2]);
+        ux.push(r.resolution[0]);
+        uy.push(r.resolution[1]);
+        lines.push(r.line);
     }
-    let (nx, dx, ix) = axis(path, "x", &x, &lines)?;
-    let (ny, dy, iy) = axis(path, "y", &y, &lines)?;
+    let ax = axis(path, "x", &x, &ux, &lines)?;
+    let ay = axis(path, "y", &y, &uy, &lines)?;
+    let (nx, ny) = (ax.n, ay.n);
     if nx < 2 || ny < 2 {
         return Err(Error::parse(
             path,
@@ -98,7 +164,7 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
     let mut heights = vec![f64::NAN; nx * ny];
     let mut seen = vec![false; nx * ny];
     for k in 0..z.len() {
-        let p = iy[k] * nx + ix[k];
+        let p = ay.index[k] * nx + ax.index[k];
         if seen[p] {
             return Err(Error::parse(
                 path,
@@ -114,7 +180,14 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
         nx,
         ny,
         heights,
-        size: Some((nx as f64 * dx, ny as f64 * dy)),
+        size: Some(Stored {
+            lx: nx as f64 * ax.spacing,
+            ly: ny as f64 * ay.spacing,
+            unit: xy_unit,
+            resolution: ax.resolution.max(ay.resolution),
+        }),
+        height_unit: z_unit,
         layout: Layout::Map,
+        notes: Vec::new(),
     })
 }

@@ -1,0 +1,69 @@
+//! `persson area`: A/A0 against nominal pressure (the scene output `area`).
+
+use persson_studies::scene::{run, AreaOutput, TheoryName};
+
+use super::args::{measured_contact, pressures, MaterialArgs, MeasuredArgs, SpectrumArgs};
+use super::output::{print_warned, Format};
+
+/// Arguments of `persson area`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    #[command(flatten)]
+    spectrum: SpectrumArgs,
+    #[command(flatten)]
+    measured: MeasuredArgs,
+    #[command(flatten)]
+    material: MaterialArgs,
+    /// Nominal (mean) pressure σ0, same unit as E*; repeatable or comma-separated.
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = super::number::number)]
+    pressure: Vec<f64>,
+    /// Magnification ζ (default q_s/q_l, full magnification).
+    #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
+    zeta: Option<f64>,
+    #[command(flatten)]
+    theory: TheoryArgs,
+    #[command(flatten)]
+    format: Format,
+    #[command(flatten)]
+    plot: super::plot::PlotArg,
+}
+
+/// Choice of contact-area theory (`--theory`, `--gamma`, `--tolerance`).
+#[derive(clap::Args, Debug, Clone)]
+pub struct TheoryArgs {
+    /// Contact-area theory: original (Persson 2001), yang-persson (Yang & Persson
+    /// 2008, γ = 0.45), wang-muser (Wang & Müser 2017, γ = 5/9), xu (Xu et al. 2024, γ = 0.42).
+    #[arg(long, value_enum, default_value_t = TheoryName::Original)]
+    pub theory: TheoryName,
+    /// γ of the corrected theory (yang-persson and xu: [0.001, 1]; wang-muser: [0.02, 11/9]).
+    #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
+    pub gamma: Option<f64>,
+    /// Absolute tolerance on A/A0 of the corrected theories' solver.
+    #[arg(
+        long,
+        alias = "theory-tolerance",
+        default_value = "1e-12",
+        allow_hyphen_values = true,
+        value_parser = super::number::number,
+    )]
+    pub tolerance: f64,
+}
+
+/// Run `persson area`.
+pub fn run(a: Args) -> anyhow::Result<()> {
+    a.plot.check()?;
+    let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
+    let pressures = pressures(&a.pressure, a.spectrum.example)?;
+    let out = AreaOutput {
+        zeta: a.zeta,
+        theory: a.theory.theory,
+        gamma: a.theory.gamma,
+        tolerance: Some(a.theory.tolerance),
+        plot: None,
+    };
+    let report = run::area(&surface, &pressures, &out)?;
+    #[cfg(feature = "plot")]
+    a.plot
+        .draw(|| persson_studies::scene::plot::area(&report))?;
+    print_warned(&report, &report.warnings, &a.format)
+}

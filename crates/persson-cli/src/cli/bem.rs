@@ -1,0 +1,190 @@
+//! `persson bem`: the FFT boundary-element cross-check (Hertz validation and
+//! rough-surface solves).
+
+use std::path::{Path, PathBuf};
+
+use anyhow::Context;
+use persson::bem::hertz::{self, HertzCase};
+use persson::bem::rough::{self, Observer, RoughOptions, RoughProgress, SurfaceOrigin};
+use persson::bem::surface::synthesize;
+use persson::bem::{check_memory, Options, Solution, MIN_GRID};
+use persson::error::check;
+use persson::io::npy;
+use persson_studies::table::Tabulate;
+
+pub use super::bem_args::{Args, SolverArgs};
+use super::bem_args::{Cmd, HertzArgs, RoughArgs};
+use super::output::{print, print_narrowed};
+use super::progress::Progress;
+
+/// Run `persson bem`.
+pub fn run(a: Args) -> anyhow::Result<()> {
+    match a.cmd {
+        Cmd::Hertz(h) => {
+            let grid = match (h.grid.as_slice(), h.yield_stress) {
+                (_, Some(y)) => return plastic_disc(&h, y),
+                ([n], None) => *n,
+                (_, None) => anyhow::bail!(
+                    "--grid {}: one grid side without --yield-stress (a list only with --yield-stress)",
+                    h.grid.iter().map(usize::to_string).collect::<Vec<_>>().join(",")
+                ),
+            };
+            let case = hertz_case(&h, grid);
+            let mut bar = Progress::spinner(&format!("Hertz {grid}²"));
+            let r = persson_studies::validation::hertz(&case, &h.solver.options()?, &mut |it| {
+                bar.update(0, &|| "Hertz".into(), it)
+            });
+            bar.finish();
+            print(&r?, &h.format)
+        }
+        Cmd::Rough(r) => rough_contact(&r),
+    }
+}
+
+/// `persson bem hertz --yield-stress Y`: the plastic disc on each grid.
+fn plastic_disc(h: &HertzArgs, y: f64) -> anyhow::Result<()> {
+    let case = hertz_case(h, h.grid.first().copied().unwrap_or(MIN_GRID));
+    let mut bar = Progress::solves(h.grid.len(), None);
+    let grids = &h.grid;
+    let r = hertz::plastic_disc(&case, grids, y, &h.solver.options()?, &mut |k, it| {
+        bar.update(k, &|| format!("Hertz σY {}²", grids[k]), it)
+    });
+    bar.finish();
+    print_narrowed(&r?, &[], &h.format, h.wide)
+}
+
+fn hertz_case(h: &HertzArgs, grid: usize) -> HertzCase {
+    HertzCase {
+        grid,
+        boundary: h.boundary,
+        size: h.size,
+        radius: h.radius,
+        e_star: h.contact_modulus,
+        contact_radius: h.contact_radius.unwrap_or(0.1 * h.size),
+    }
+}
+
+/// The CLI's view of the solves: progress, and the pressure fields to write.
+struct Solves<'a> {
+    bar: Progress,
+    fields: Option<&'a Path>,
+    several: bool,
+    n: usize,
+}
+
+impl Observer for Solves<'_> {
+    fn iteration(&mut self, p: RoughProgress) {
+        let what = || format!("σ0 = {:e}", p.nominal_pressure);
+        self.bar.update(p.index, &what, p.iteration);
+    }
+    fn solution(&mut self, k: usize, s: &Solution) -> persson::Result<()> {
+        match self.fields {
+            Some(path) => npy::write(
+                &indexed(path, self.several.then_some(k)),
+                self.n,
+                self.n,
+                &s.pressure,
+            ),
+            None => Ok(()),
+        }
+    }
+}
+
+fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
+    if a.spectrum.example {
+        // Say what the example is (stdout stays the report alone).
+        eprintln!("persson: {}", persson_studies::scene::EXAMPLE);
+    }
+    let pressures = super::args::pressures(&a.pressure, a.spectrum.example)?;
+    let plot = super::plot::PlotArg {
+        plot: a.plot.clone(),
+    };
+    plot.check()?;
+    let options = RoughOptions {
+        boundary: a.boundary,
+        solver: Options {
+            yield_stress: a.yield_stress,
+            ..a.solver.options()?
+        },
+        bins: a.histogram.as_ref().map(|_| a.bins),
+    };
+    let e_star = a.material.build(a.spectrum.example)?.contact_modulus();
+    let (surface, source) = if let Some(path) = &a.surface {
+        let mut map = persson_studies::scene::HeightMapSpec::new(path.clone());
+        map.size = a.size.map(persson_studies::scene::Sides::One);
+        (
+            map.bem_surface(a.boundary)?,
+            SurfaceOrigin::height_map(path),
+        )
+    } else {
+        let n = a
+            .grid
+            .context("no surface: give --surface FILE --size L, or spectrum flags with --grid N")?;
+        check_memory(n, a.boundary)?;
+        let spectrum = a.spectrum.build()?;
+        let size = check::positive(
+            "size",
+            a.size.unwrap_or(std::f64::consts::TAU / spectrum.q_min()),
+        )?;
+        let s = synthesize(spectrum.as_ref(), n, size, a.seed)?;
+        (s, SurfaceOrigin::synthesised(spectrum.as_ref(), a.seed)?)
+    };
+    if let Some(path) = &a.surface_out {
+        npy::write(path, surface.n, surface.n, &surface.heights)?;
+    }
+    let several = pressures.len() > 1;
+    let mut solves = Solves {
+        bar: Progress::solves(pressures.len(), None),
+        fields: a.pressure_field.as_deref(),
+        several,
+        n: surface.n,
+    };
+    let report = if a.plot.is_some() {
+        rough::rough_contact_mapped(&surface, source, e_star, &pressures, &options, &mut solves)
+    } else {
+        rough::rough_contact(&surface, source, e_star, &pressures, &options, &mut solves)
+    };
+    solves.bar.finish();
+    let report = report?;
+    if let Some(path) = &a.plot {
+        #[cfg(feature = "plot")]
+        persson_studies::plot::map::render_map(
+            &persson_studies::plot::map::rough_map(&report)?,
+            path,
+        )?;
+        #[cfg(not(feature = "plot"))]
+        anyhow::bail!(
+            "--plot {}: this persson was built without the `plot` feature",
+            path.display()
+        );
+    }
+    if let Some(path) = &a.histogram {
+        // The report's own histogram table: every pressure in one CSV.
+        if let Some(t) = report
+            .tables()
+            .into_iter()
+            .find(|t| t.name == "bem_histogram")
+        {
+            persson::io::write_atomic(path, t.to_csv().as_bytes())?;
+        }
+    }
+    let mut warnings = a.spectrum.file_warnings();
+    warnings.extend(persson_studies::warning::of_rough(&report));
+    print_narrowed(&report, &warnings, &a.format, a.wide)
+}
+
+/// `dir/name.ext` → `dir/name_k.ext` when `k` is given.
+fn indexed(path: &Path, k: Option<usize>) -> PathBuf {
+    let Some(k) = k else {
+        return path.to_path_buf();
+    };
+    let stem = path
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let name = match path.extension() {
+        Some(e) => format!("{stem}_{k}.{}", e.to_string_lossy()),
+        None => format!("{stem}_{k}"),
+    };
+    path.with_file_name(name)
+}

@@ -1,0 +1,151 @@
+//! The flags of `persson bem` (and the solver flags `persson compare` shares).
+
+use std::path::PathBuf;
+
+use persson::bem::{Boundary, Options};
+use persson::error::check;
+
+use super::args::{MaterialArgs, SpectrumArgs};
+use super::output::Format;
+
+/// Arguments of `persson bem`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    #[command(subcommand)]
+    pub cmd: Cmd,
+}
+
+#[derive(clap::Subcommand, Debug)]
+pub enum Cmd {
+    /// Hertz validation: energy-norm error η, fitted contact radius and peak pressure.
+    Hertz(HertzArgs),
+    /// Rough contact: contact fraction and mean separation at each nominal pressure.
+    Rough(Box<RoughArgs>),
+}
+
+/// Solver knobs shared by both subcommands (and `persson compare`).
+#[derive(clap::Args, Debug, Clone)]
+pub struct SolverArgs {
+    /// Relative tolerance ε of the Polonsky–Keer solver (pressure-weighted gap over the rms height).
+    #[arg(long, default_value = "1e-10", allow_hyphen_values = true, value_parser = super::number::number)]
+    pub tolerance: f64,
+    /// Maximum number of iterations per solve.
+    #[arg(long, default_value = "10000", allow_hyphen_values = true, value_parser = super::number::count)]
+    pub max_iterations: usize,
+}
+
+impl SolverArgs {
+    /// The solver options, warm-started along a list of pressures.
+    pub fn options(&self) -> anyhow::Result<Options> {
+        check::tolerance("tolerance", self.tolerance)?;
+        Ok(Options {
+            tolerance: self.tolerance,
+            max_iterations: self.max_iterations,
+            warm_start: true,
+            yield_stress: None,
+        })
+    }
+}
+
+#[derive(clap::Args, Debug)]
+pub struct HertzArgs {
+    /// Grid side N (nodes per side), at least 8; with --yield-stress a list
+    /// (comma-separated or repeated) for the plastic disc's convergence.
+    #[arg(long, value_delimiter = ',', default_value = "256", allow_hyphen_values = true, value_parser = super::number::count)]
+    pub grid: Vec<usize>,
+    /// Boundary condition of the elastic half-space: free (an isolated contact, zero-padded to 2N) or periodic.
+    #[arg(long, default_value = "free")]
+    pub boundary: Boundary,
+    /// Side L of the square domain.
+    #[arg(long, default_value = "1", allow_hyphen_values = true, value_parser = super::number::number)]
+    pub size: f64,
+    /// Ball radius R (unit of L).
+    #[arg(long, default_value = "1", allow_hyphen_values = true, value_parser = super::number::number)]
+    pub radius: f64,
+    /// Contact modulus E*.
+    #[arg(
+        long,
+        alias = "modulus",
+        default_value = "1",
+        allow_hyphen_values = true, value_parser = super::number::number)]
+    pub contact_modulus: f64,
+    /// Hertz contact radius a that sets the load (default 0.1 L).
+    #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
+    pub contact_radius: Option<f64>,
+    /// Yield stress σY (unit of E*, below the Hertz peak pressure p₀ = 2E*a/(πR)
+    /// for a plastic zone): report the plastic disc's radius per grid instead of η.
+    #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
+    pub yield_stress: Option<f64>,
+    #[command(flatten)]
+    pub solver: SolverArgs,
+    /// Text tables with every column (default: each fits 100 characters, the
+    /// solver's columns of a wider table left out and named).
+    #[arg(long)]
+    pub wide: bool,
+    #[command(flatten)]
+    pub format: Format,
+}
+
+#[derive(clap::Args, Debug)]
+pub struct RoughArgs {
+    /// Height map of the rigid surface: .npy (float64/float32, 2-D square) or a text matrix.
+    #[arg(long, requires = "size")]
+    pub surface: Option<PathBuf>,
+    /// Physical side L of the surface (default with a spectrum: 2π/q_l).
+    #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
+    pub size: Option<f64>,
+    /// Grid side N for a synthesised surface.
+    #[arg(long, conflicts_with = "surface", allow_hyphen_values = true, value_parser = super::number::count)]
+    pub grid: Option<usize>,
+    /// Seed of the synthesised surface (Pcg64Mcg, value-stable).
+    #[arg(long, default_value = "1", conflicts_with = "surface", allow_hyphen_values = true, value_parser = super::number::seed)]
+    pub seed: u64,
+    #[command(flatten)]
+    pub spectrum: SpectrumArgs,
+    #[command(flatten)]
+    pub material: MaterialArgs,
+    /// Nominal (mean) pressure, same unit as the modulus; repeatable or comma-separated.
+    #[arg(
+        long,
+        value_delimiter = ',',
+        allow_hyphen_values = true,
+        required_unless_present = "example", value_parser = super::number::number)]
+    pub pressure: Vec<f64>,
+    /// Boundary condition of the elastic half-space: periodic (the grid is one period) or free.
+    #[arg(long, default_value = "periodic")]
+    pub boundary: Boundary,
+    /// Write each pressure field as .npy (N×N float64); `_k` is added before
+    /// the extension when several pressures are given.
+    #[arg(long)]
+    pub pressure_field: Option<PathBuf>,
+    /// Write the histograms P(σ) of every solve into one CSV (nominal_pressure,
+    /// sigma_low, sigma_high, density; each pressure's bins integrate to its
+    /// A/A0). With --yield-stress the bins stop at σY and integrate to A_el/A0;
+    /// the δ-peak at σY is one more row per pressure (sigma_low = sigma_high = σY,
+    /// empty density) with its weight A_pl/A0 in the column plastic_fraction.
+    #[arg(long)]
+    pub histogram: Option<PathBuf>,
+    /// Number of histogram bins.
+    #[arg(long, default_value_t = persson_studies::validation::DEFAULT_BINS, allow_hyphen_values = true, value_parser = super::number::count)]
+    pub bins: usize,
+    /// Write the (synthesised or read) surface heights as .npy.
+    #[arg(long)]
+    pub surface_out: Option<PathBuf>,
+    /// Yield stress σY (hardness, unit of the pressure): pressures are bounded by
+    /// 0 ≤ p ≤ σY and each point reports the elastic and plastic fractions.
+    #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
+    pub yield_stress: Option<f64>,
+    #[command(flatten)]
+    pub solver: SolverArgs,
+    /// Text tables with every column (default: each fits 100 characters, the
+    /// solver's columns of a wider table left out and named).
+    #[arg(long)]
+    pub wide: bool,
+    /// Also draw the pressure map of the load in partial contact whose A/A0 is
+    /// nearest 0.1 (plastic nodes in red with --yield-stress) and its histogram
+    /// P(σ) (the plastic δ-peak at σY as a labelled bar) into this file (.svg or .png).
+    #[arg(long, value_name = "FILE.svg|png")]
+    pub plot: Option<PathBuf>,
+    #[command(flatten)]
+    pub format: Format,
+}

@@ -1,0 +1,152 @@
+//! `persson compare`: every theory against the FFT-BEM at several resolutions
+//! of one physical surface, its continuum limit, κ, pressure distributions,
+//! mean separation, and the user's own results; `persson compare kappa`: κ(H)
+//! averaged over seeds. The computation is [`persson_studies::validation`], the flags
+//! are in `compare_args.rs`, the figures in `compare_plot.rs`.
+
+use persson::bem::Boundary;
+use persson_studies::scene::SpectrumSpec;
+use persson_studies::validation::{
+    self, ComparisonConfig, KappaStudyConfig, SweepProgress, UserData, UserHistogram,
+};
+
+pub use super::compare_args::Args;
+use super::compare_args::{BemArgs, KappaArgs, MainArgs, Study};
+use super::output::{print_narrowed, print_warned};
+use super::progress::Progress;
+use persson_studies::Warning;
+
+/// Run `persson compare`.
+pub fn run(a: Args) -> anyhow::Result<()> {
+    match a.study {
+        Some(Study::Kappa(k)) => kappa_study(&k),
+        None => compare(&a.main),
+    }
+}
+
+/// The warning when q_s is clipped to what the coarsest grid resolves.
+fn warn_clipped(
+    band: &validation::ResolvedBand,
+    q_l: f64,
+    coarsest: usize,
+    bem: &BemArgs,
+) -> Option<Warning> {
+    match (band.clipped, band.q_s_requested) {
+        (true, Some(q)) => Some(Warning::ClippedBand {
+            q_s_requested: q,
+            q_s: band.q_s,
+            q_l,
+            grid: coarsest,
+            pixels_per_wavelength: bem.pixels_per_wavelength,
+        }),
+        _ => None,
+    }
+}
+
+/// The sweep's progress on stderr (one line per solve in logs of runs from 512²).
+fn with_progress<T>(run: impl FnOnce(&mut dyn FnMut(SweepProgress)) -> T) -> T {
+    let mut bar: Option<Progress> = None;
+    let out = run(&mut |p| {
+        let log = (p.grid >= 512).then_some("persson compare");
+        let what = || format!("{}² seed {} σ0 = {:e}", p.grid, p.seed, p.nominal_pressure);
+        bar.get_or_insert_with(|| Progress::solves(p.total, log))
+            .update(p.done, &what, p.iteration)
+    });
+    if let Some(b) = bar {
+        b.finish();
+    }
+    out
+}
+
+fn compare(a: &MainArgs) -> anyhow::Result<()> {
+    if a.spectrum.example {
+        // Say what the example is (stdout stays the report alone).
+        eprintln!("persson: {}", persson_studies::scene::EXAMPLE);
+    }
+    super::compare_plot::check(a)?;
+    let map = a.measured.spec(a.spectrum.q_s)?;
+    if let (Some(_), Some(flag)) = (&map, a.bem.unused_with_surface()) {
+        anyhow::bail!("{flag} is not used with --surface: the map sets the grid");
+    }
+    let (spectrum, described) = match &map {
+        Some(m) => {
+            let built = SpectrumSpec::HeightMap(m.clone()).build_described()?;
+            (built.value, built.description)
+        }
+        None => (a.spectrum.build()?, None),
+    };
+    let mut config = ComparisonConfig::new(a.material.build(a.spectrum.example)?.contact_modulus());
+    config.nominal_pressure = a.pressure.clone();
+    config.sweep = a.bem.settings()?;
+    config.sweep.options.yield_stress = a.yield_stress;
+    config.data = a.data.as_deref().map(UserData::from_csv).transpose()?;
+    config.data_histogram = a
+        .data_histogram
+        .as_deref()
+        .map(UserHistogram::from_csv)
+        .transpose()?;
+    config.histogram_pressure = a.histogram_pressure;
+    config.bins = a.bins;
+    let mut warnings = a.spectrum.file_warnings();
+    let report = match &map {
+        Some(m) => {
+            let boundary = if m.periodic {
+                Boundary::Periodic
+            } else {
+                Boundary::Free
+            };
+            let surface = m.bem_surface(boundary)?;
+            if let Some(d) = described {
+                eprintln!("note: {d}; BEM on the map, {} boundary", boundary.name());
+            }
+            if m.periodic {
+                let q_l = spectrum.q_min();
+                let band = config.sweep.map_band(q_l, spectrum.q_max(), surface.n)?;
+                let coarsest = validation::resolution_grids(surface.n, config.sweep.levels)?[0];
+                warnings.extend(warn_clipped(&band, q_l, coarsest, &a.bem));
+            } else {
+                warnings.push(Warning::MapNotPeriodic);
+            }
+            with_progress(|p| {
+                validation::compare_surface(spectrum.as_ref(), &surface, boundary, &config, p)
+            })?
+        }
+        None => {
+            let q_l = spectrum.q_min();
+            warnings.extend(warn_clipped(
+                &config.sweep.band(q_l, Some(spectrum.q_max()))?,
+                q_l,
+                config.sweep.grids()?[0],
+                &a.bem,
+            ));
+            with_progress(|p| validation::compare(spectrum.as_ref(), &config, p))?
+        }
+    };
+    super::compare_plot::comparison(a, &report)?;
+    print_narrowed(&report, &warnings, &a.format, a.wide)
+}
+
+fn kappa_study(a: &KappaArgs) -> anyhow::Result<()> {
+    a.plot.check()?;
+    let config = KappaStudyConfig {
+        hurst: a.hurst.clone(),
+        q_l: a.q_l,
+        q_r: a.q_r,
+        q_s: a.q_s,
+        rms_slope: a.rms_slope,
+        contact_modulus: a.contact_modulus,
+        nominal_pressure: a.pressure.clone(),
+        sweep: a.bem.settings()?,
+    };
+    let warnings: Vec<Warning> = warn_clipped(
+        &config.sweep.band(a.q_l, a.q_s)?,
+        a.q_l,
+        config.sweep.grids()?[0],
+        &a.bem,
+    )
+    .into_iter()
+    .collect();
+    let report = with_progress(|p| validation::kappa_study(&config, p))?;
+    super::compare_plot::kappa(a, &report)?;
+    print_warned(&report, &warnings, &a.format)
+}

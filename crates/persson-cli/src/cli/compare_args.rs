@@ -1,0 +1,174 @@
+//! The flags of `persson compare` and `persson compare kappa`.
+
+use std::path::PathBuf;
+
+use persson_studies::validation::{
+    SweepSettings, DEFAULT_ALPHA, DEFAULT_LEVELS, DEFAULT_PIXELS_PER_WAVELENGTH,
+};
+
+use super::args::{MaterialArgs, MeasuredArgs, SpectrumArgs};
+use super::bem::SolverArgs;
+use super::output::Format;
+
+/// Arguments of `persson compare`.
+#[derive(clap::Args, Debug)]
+#[command(args_conflicts_with_subcommands = true, subcommand_negates_reqs = true)]
+pub struct Args {
+    #[command(subcommand)]
+    pub study: Option<Study>,
+    #[command(flatten)]
+    pub main: Box<MainArgs>,
+}
+
+#[derive(clap::Subcommand, Debug)]
+pub enum Study {
+    /// κ(H) from the low-load BEM regime, averaged over seeds, next to √(8/π) and √(2π).
+    Kappa(Box<KappaArgs>),
+}
+
+/// BEM knobs shared by `compare` and `compare kappa`.
+#[derive(clap::Args, Debug, Clone)]
+pub struct BemArgs {
+    /// Finest grid side N; the BEM runs on N/4, N/2 and N (see --levels) [default: 256].
+    #[arg(long, value_name = "N", allow_hyphen_values = true, value_parser = super::number::count)]
+    pub grid: Option<usize>,
+    /// Number of grids, each half the next (≥ 2).
+    #[arg(long, default_value_t = DEFAULT_LEVELS, allow_hyphen_values = true, value_parser = super::number::count)]
+    pub levels: usize,
+    /// Number of realisations (seeds first-seed … first-seed + K − 1); A is averaged [default: 1].
+    #[arg(long, value_name = "K", allow_hyphen_values = true, value_parser = super::number::count)]
+    pub seeds: Option<usize>,
+    /// First seed (Pcg64Mcg, value-stable) [default: 1].
+    #[arg(long, value_name = "SEED", allow_hyphen_values = true, value_parser = super::number::seed)]
+    pub seed: Option<u64>,
+    /// Exponent α of A(N) = A∞ + c N^−α (Campañá & Müser 2007: 0.7).
+    #[arg(long, default_value_t = DEFAULT_ALPHA, allow_hyphen_values = true, conflicts_with = "fit_alpha", value_parser = super::number::number)]
+    pub alpha: f64,
+    /// Fit α from three grids (Richardson) instead of fixing it.
+    #[arg(long)]
+    pub fit_alpha: bool,
+    /// Pixels of the coarsest grid per shortest wavelength 2π/q_s: q_s is clipped to
+    /// N_coarsest q_l / this (with a warning).
+    #[arg(long, default_value_t = DEFAULT_PIXELS_PER_WAVELENGTH, allow_hyphen_values = true, value_parser = super::number::number)]
+    pub pixels_per_wavelength: f64,
+    #[command(flatten)]
+    pub solver: SolverArgs,
+}
+
+impl BemArgs {
+    /// The flags a measured map makes meaningless, if given.
+    pub fn unused_with_surface(&self) -> Option<&'static str> {
+        [
+            (self.grid.is_some(), "--grid"),
+            (self.seed.is_some(), "--seed"),
+            (self.seeds.is_some(), "--seeds"),
+        ]
+        .into_iter()
+        .find_map(|(given, flag)| given.then_some(flag))
+    }
+
+    pub fn settings(&self) -> anyhow::Result<SweepSettings> {
+        let (count, first) = (self.seeds.unwrap_or(1), self.seed.unwrap_or(1));
+        anyhow::ensure!(count >= 1, "--seeds must be at least 1");
+        Ok(SweepSettings {
+            grid: self.grid.unwrap_or(256),
+            levels: self.levels,
+            seeds: (0..count as u64).map(|k| first + k).collect(),
+            alpha: (!self.fit_alpha).then_some(self.alpha),
+            pixels_per_wavelength: self.pixels_per_wavelength,
+            options: self.solver.options()?,
+        })
+    }
+}
+
+#[derive(clap::Args, Debug)]
+pub struct MainArgs {
+    #[command(flatten)]
+    pub spectrum: SpectrumArgs,
+    /// With --surface the BEM solves on the map (square N × N) and coarser copies
+    /// (--levels grids): a --periodic map low-passed at the q_s its coarsest copy
+    /// resolves (--pixels-per-wavelength) and resampled, plus the map as measured;
+    /// a non-periodic one (free boundary) as measured and block-averaged. The map
+    /// sets the grid: --grid, --seed and --seeds are errors.
+    #[command(flatten)]
+    pub measured: MeasuredArgs,
+    #[command(flatten)]
+    pub material: MaterialArgs,
+    /// Nominal (mean) pressure, same unit as the modulus; repeatable or comma-separated
+    /// (default: the --data pressures, else 8 pressures with A/A0 ≈ 0.01 … 0.3).
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = super::number::number)]
+    pub pressure: Vec<f64>,
+    #[command(flatten)]
+    pub bem: BemArgs,
+    /// Yield stress σY (hardness), same unit as --pressure: the saturated BEM (0 ≤ p ≤ σY)
+    /// against Persson's finite-σY P(σ), with A_el/A0 and A_pl/A0 (must exceed every σ0).
+    #[arg(long, value_name = "Y", allow_hyphen_values = true, value_parser = super::number::number)]
+    pub yield_stress: Option<f64>,
+    /// Your own results: CSV with columns nominal_pressure, contact_fraction (header and # comments allowed).
+    #[arg(long, value_name = "FILE.csv")]
+    pub data: Option<PathBuf>,
+    /// Your own pressure histogram at --histogram-pressure: CSV with columns sigma, density
+    /// (normalised so that ∫ density dσ = A/A0).
+    #[arg(long, value_name = "FILE.csv")]
+    pub data_histogram: Option<PathBuf>,
+    /// Nominal pressure of the shown pressure distribution (nearest computed one; default:
+    /// the one whose finest-grid A/A0 is nearest 0.1).
+    #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
+    pub histogram_pressure: Option<f64>,
+    /// Number of bins of the BEM pressure histograms.
+    #[arg(long, default_value_t = persson_studies::validation::DEFAULT_BINS, allow_hyphen_values = true, value_parser = super::number::count)]
+    pub bins: usize,
+    /// Text tables with every column (default: each fits 100 characters, the coarser
+    /// grids' columns of a wider table left out and named).
+    #[arg(long)]
+    pub wide: bool,
+    #[command(flatten)]
+    pub format: Format,
+    #[command(flatten)]
+    pub plot: super::plot::PlotArg,
+    /// Draw the pressure distribution (BEM histogram, Persson's P(σ), your histogram) on linear axes.
+    #[arg(long, value_name = "FILE.svg|png")]
+    pub plot_histogram: Option<PathBuf>,
+    /// The same with a logarithmic P(σ) axis, to compare the tails.
+    #[arg(long, value_name = "FILE.svg|png")]
+    pub plot_histogram_log: Option<PathBuf>,
+}
+
+#[derive(clap::Args, Debug)]
+pub struct KappaArgs {
+    /// Hurst exponents, comma-separated.
+    #[arg(
+        long,
+        value_delimiter = ',',
+        required = true,
+        allow_hyphen_values = true, value_parser = super::number::number)]
+    pub hurst: Vec<f64>,
+    /// Lower cut-off q_l (sets L = 2π/q_l).
+    #[arg(long = "q-l", default_value = "1", allow_hyphen_values = true, value_parser = super::number::number)]
+    pub q_l: f64,
+    /// Roll-off q_r (default q_l).
+    #[arg(long = "q-r", allow_hyphen_values = true, value_parser = super::number::number)]
+    pub q_r: Option<f64>,
+    /// Upper cut-off q_s (default and maximum: what the coarsest grid resolves).
+    #[arg(long = "q-s", allow_hyphen_values = true, value_parser = super::number::number)]
+    pub q_s: Option<f64>,
+    /// rms slope over [q_l, q_s] of every surface.
+    #[arg(long, default_value = "0.1", allow_hyphen_values = true, value_parser = super::number::number)]
+    pub rms_slope: f64,
+    /// Contact modulus E*.
+    #[arg(
+        long,
+        alias = "modulus",
+        default_value = "1",
+        allow_hyphen_values = true, value_parser = super::number::number)]
+    pub contact_modulus: f64,
+    /// Nominal pressures (default: 8 with linear-law A/A0 ≈ 0.005 … 0.09).
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = super::number::number)]
+    pub pressure: Vec<f64>,
+    #[command(flatten)]
+    pub bem: BemArgs,
+    #[command(flatten)]
+    pub format: Format,
+    #[command(flatten)]
+    pub plot: super::plot::PlotArg,
+}

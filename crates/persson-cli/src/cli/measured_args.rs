@@ -1,0 +1,93 @@
+//! The flags of a measured surface (`--surface FILE` and its conditioning),
+//! flattened into every subcommand that takes a spectrum but `bem rough`
+//! (which has its own `--surface` and `--size`). They build the scene file's
+//! `height_map` spectrum, [`HeightMapSpec`].
+
+use std::path::PathBuf;
+
+use anyhow::bail;
+use persson_studies::scene::{DetrendName, HeightMapSpec, LengthUnitName, Sides, WindowName};
+
+/// A measured surface as the spectrum (`--surface FILE` and its conditioning),
+/// flattened next to [`SpectrumArgs`]; the scene's `height_map` spectrum.
+#[derive(clap::Args, Debug, Clone, Default)]
+pub struct MeasuredArgs {
+    /// Measured surface whose isotropic spectrum is used (q_l and q_s from the map):
+    /// .npy, text matrix, .xyz, Gwyddion .gsf, ISO 25178-72 .x3p, or two-column line scans.
+    #[arg(long, conflicts_with_all = ["hurst", "q_l", "q_r", "amplitude", "psd", "example"])]
+    pub surface: Option<PathBuf>,
+    /// Pixel size Δ of the --surface map (square pixels), m.
+    #[arg(
+        long,
+        requires = "surface",
+        conflicts_with = "size",
+        allow_hyphen_values = true,
+        value_parser = super::number::number,
+    )]
+    pub pixel_size: Option<f64>,
+    /// Physical size LX[,LY] of the --surface map, m (files that store it need none; a
+    /// given one is checked against the file's). A row of a .npy or text matrix runs
+    /// along x: LX is along a row, the array of shape (ny, nx) has nx points along x.
+    #[arg(
+        long,
+        requires = "surface",
+        value_delimiter = ',',
+        allow_hyphen_values = true,
+        value_parser = super::number::number,
+    )]
+    pub size: Vec<f64>,
+    /// Least-squares detrending of the --surface (default: plane, none if --periodic).
+    #[arg(long, value_enum, requires = "surface")]
+    pub detrend: Option<DetrendName>,
+    /// Window before the spectrum (default: hann, none if --periodic).
+    #[arg(long, value_enum, requires = "surface")]
+    pub window: Option<WindowName>,
+    /// The --surface map is periodic (no detrending or window by default).
+    #[arg(long, requires = "surface")]
+    pub periodic: bool,
+    /// Fill undefined points (NaN, missing data) by harmonic interpolation.
+    #[arg(long, requires = "surface")]
+    pub fill_undefined: bool,
+    /// Unit of the --surface heights when the file states none (default m).
+    #[arg(long, value_enum, requires = "surface")]
+    pub height_unit: Option<LengthUnitName>,
+    /// Unit of the x (and y) columns of a --surface line scan or XYZ file that states none (default m).
+    #[arg(long, value_enum, requires = "surface")]
+    pub lateral_unit: Option<LengthUnitName>,
+    /// Swap the axes of the --surface map after reading (a row of the file becomes a
+    /// column; for arrays saved from SurfaceTopography's heights(), indexed [ix, iy]).
+    #[arg(long, requires = "surface")]
+    pub transpose: bool,
+}
+
+impl MeasuredArgs {
+    /// The scene's `height_map` entry for these flags (`q_max`: the band's
+    /// upper end, `--q-s` or `spectrum --q-max`), if `--surface` is given.
+    pub fn spec(&self, q_max: Option<f64>) -> anyhow::Result<Option<HeightMapSpec>> {
+        let Some(file) = self.surface.clone() else {
+            return Ok(None);
+        };
+        let size = match self.size[..] {
+            [] => None,
+            [lx] => Some(Sides::One(lx)),
+            [lx, ly] => Some(Sides::Two([lx, ly])),
+            _ => bail!(
+                "--size takes LX or LX,LY (m), got {} values",
+                self.size.len()
+            ),
+        };
+        Ok(Some(HeightMapSpec {
+            size,
+            pixel_size: self.pixel_size,
+            periodic: self.periodic,
+            detrend: self.detrend,
+            window: self.window,
+            fill_undefined: self.fill_undefined,
+            q_max,
+            height_unit: self.height_unit,
+            lateral_unit: self.lateral_unit,
+            transpose: self.transpose,
+            ..HeightMapSpec::new(file)
+        }))
+    }
+}

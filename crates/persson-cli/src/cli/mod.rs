@@ -1,0 +1,86 @@
+//! Command-line interface: argument parsing and dispatch. Every subcommand
+//! lives in its own file and only calls the library.
+
+mod area;
+mod args;
+#[cfg(feature = "bem")]
+mod bem;
+#[cfg(feature = "bem")]
+mod bem_args;
+#[cfg(feature = "bem")]
+mod compare;
+#[cfg(feature = "bem")]
+mod compare_args;
+#[cfg(feature = "bem")]
+mod compare_plot;
+mod kappa;
+mod magnification;
+mod measured_args;
+mod number;
+mod output;
+mod plot;
+#[cfg(feature = "bem")]
+mod progress;
+mod report;
+mod run;
+mod separation;
+mod spectrum;
+mod stress;
+
+use clap::{Parser, Subcommand};
+
+/// Contact mechanics of randomly rough surfaces (Persson's theory).
+///
+/// Exit codes: 0 success, 2 bad input or a computation that could not reach
+/// its tolerance (one line on stderr), 2 also for usage errors (clap).
+#[derive(Parser, Debug)]
+#[command(name = "persson", version, about, long_about = None)]
+pub struct Cli {
+    #[command(subcommand)]
+    cmd: Cmd,
+}
+
+#[derive(Subcommand, Debug)]
+enum Cmd {
+    /// Spectrum summary: rms height, slope and curvature, and C(q).
+    Spectrum(spectrum::Args),
+    /// G(ζ) and A/A0 against magnification at one nominal pressure.
+    #[command(alias = "g")]
+    Magnification(magnification::Args),
+    /// Real contact area A/A0 against nominal pressure (load curve).
+    Area(area::Args),
+    /// κ of the linear low-load law for Bush and Persson.
+    Kappa(kappa::Args),
+    /// Compute what a scene file (JSON) asks for, and nothing else.
+    Run(run::Args),
+    /// Reports: error against run time, and stability at the extremes.
+    Report(report::Args),
+    /// Stress distribution P(σ) at one G (dimensionless; Persson, Bucher & Chiaia 2002, Figs. 2–4).
+    Stress(stress::Args),
+    /// Mean interfacial separation ū, stiffness K = −dσ0/dū and elastic energy against load.
+    Separation(separation::Args),
+    /// FFT boundary-element cross-check: Hertz validation and rough contact.
+    #[cfg(feature = "bem")]
+    Bem(bem::Args),
+    /// Theories against the BEM at several resolutions, its continuum limit, κ and your data.
+    #[cfg(feature = "bem")]
+    Compare(compare::Args),
+}
+
+/// Run one parsed command line.
+pub fn run(cli: Cli) -> anyhow::Result<()> {
+    match cli.cmd {
+        Cmd::Spectrum(a) => spectrum::run(a),
+        Cmd::Magnification(a) => magnification::run(a),
+        Cmd::Area(a) => area::run(a),
+        Cmd::Kappa(a) => kappa::run(a),
+        Cmd::Run(a) => run::run(a),
+        Cmd::Report(a) => report::run(a),
+        Cmd::Stress(a) => stress::run(a),
+        Cmd::Separation(a) => separation::run(a),
+        #[cfg(feature = "bem")]
+        Cmd::Bem(a) => bem::run(a),
+        #[cfg(feature = "bem")]
+        Cmd::Compare(a) => compare::run(a),
+    }
+}

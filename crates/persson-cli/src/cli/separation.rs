@@ -1,0 +1,92 @@
+//! `persson separation`: mean interfacial separation ū, contact stiffness
+//! K = −dσ0/dū and elastic energy against nominal pressure (the scene output
+//! `separation`; Persson, Phys. Rev. Lett. 99, 125502 (2007)).
+
+use persson_studies::scene::{run, SeparationOutput, TheoriesOutput};
+
+use super::args::{measured_contact, pressures, MaterialArgs, MeasuredArgs, SpectrumArgs};
+use super::output::{print_warned, Format};
+
+/// Arguments of `persson separation`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    #[command(flatten)]
+    spectrum: SpectrumArgs,
+    #[command(flatten)]
+    measured: MeasuredArgs,
+    #[command(flatten)]
+    material: MaterialArgs,
+    /// Nominal (mean) pressure σ0, same unit as E*; repeatable or comma-separated.
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = super::number::number)]
+    pressure: Vec<f64>,
+    /// Relative tolerance of the wavevector integrals.
+    #[arg(long, default_value = "1e-10", allow_hyphen_values = true, value_parser = super::number::number)]
+    tolerance: f64,
+    #[command(flatten)]
+    format: Format,
+    /// Also draw ū against load (with the small-load law) into this file (.svg or .png).
+    #[command(flatten)]
+    plot: super::plot::PlotArg,
+    /// Also draw A/A0 against load for all four theories (default γ) into this file.
+    #[arg(long, value_name = "FILE.svg|png")]
+    plot_area: Option<std::path::PathBuf>,
+    /// Number of log-spaced pressures in the plots, spanning the given pressures
+    /// (a single pressure σ0: σ0/100 to 100 σ0).
+    #[arg(long, default_value_t = 60, allow_hyphen_values = true, value_parser = super::number::count)]
+    plot_points: usize,
+}
+
+/// Run `persson separation`.
+pub fn run(a: Args) -> anyhow::Result<()> {
+    a.plot.check()?;
+    let plot_area = super::plot::PlotArg {
+        plot: a.plot_area.clone(),
+    };
+    plot_area.check()?;
+    let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
+    let pressures = pressures(&a.pressure, a.spectrum.example)?;
+    let grid = if a.plot.plot.is_some() || plot_area.plot.is_some() {
+        plot_pressures(&pressures, a.plot_points)?
+    } else {
+        vec![]
+    };
+    let out = SeparationOutput {
+        tolerance: Some(a.tolerance),
+    };
+    let curve = if a.plot.plot.is_some() {
+        &grid[..]
+    } else {
+        &[]
+    };
+    let report = run::separation(&surface, &pressures, &out, curve)?;
+    #[cfg(feature = "plot")]
+    {
+        use persson_studies::scene::plot;
+        a.plot.draw(|| plot::separation(&report))?;
+        if plot_area.plot.is_some() {
+            let theories = run::theories(&surface, &grid, &TheoriesOutput::default())?;
+            plot_area.draw(|| plot::theories(&theories))?;
+        }
+    }
+    #[cfg(not(feature = "plot"))]
+    let _ = TheoriesOutput::default();
+    print_warned(&report, &report.warnings, &a.format)
+}
+
+/// `n` log-spaced pressures spanning the given ones (σ0/100 to 100 σ0 for one).
+fn plot_pressures(given: &[f64], n: usize) -> anyhow::Result<Vec<f64>> {
+    let lo = given.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = given.iter().copied().fold(0.0, f64::max);
+    let (lo, hi) = if hi > lo {
+        (lo, hi)
+    } else {
+        (lo / 100.0, hi * 100.0)
+    };
+    if n < 2 {
+        anyhow::bail!("--plot-points {n}: need at least 2");
+    }
+    let (a, b) = (lo.ln(), hi.ln());
+    Ok((0..n)
+        .map(|i| (a + (b - a) * i as f64 / (n - 1) as f64).exp())
+        .collect())
+}

@@ -1,0 +1,90 @@
+//! `persson spectrum`: moments of the spectrum, a power-law fit and C(q); with
+//! `--surface`, the measured surface's spectrum and statistics
+//! ([`persson::topography::analyse`]).
+
+use std::path::PathBuf;
+
+use persson_studies::scene::run;
+
+use super::args::{MeasuredArgs, SpectrumArgs};
+use super::output::{print_warned, Format};
+
+/// Arguments of `persson spectrum`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    #[command(flatten)]
+    spectrum: SpectrumArgs,
+    #[command(flatten)]
+    measured: MeasuredArgs,
+    /// Lower end of the q range for the moments (default q_l), 1/m.
+    #[arg(long, allow_hyphen_values = true, conflicts_with = "surface", value_parser = super::number::number)]
+    q_min: Option<f64>,
+    /// Upper end of the q range for the moments (default q_s), 1/m; with
+    /// --surface the upper end of the band (default the Nyquist wavevector π/Δ).
+    #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
+    q_max: Option<f64>,
+    /// Number of log-spaced q values in the C(q) table.
+    #[arg(long, default_value_t = 11, conflicts_with = "surface", allow_hyphen_values = true, value_parser = super::number::count)]
+    points: usize,
+    /// Write the --surface spectrum as CSV (q, c; Persson), which --psd reads back as is.
+    #[arg(long, value_name = "FILE.csv", requires = "surface")]
+    psd_out: Option<PathBuf>,
+    #[command(flatten)]
+    format: Format,
+    #[command(flatten)]
+    plot: super::plot::PlotArg,
+}
+
+/// Run `persson spectrum`.
+pub fn run(a: Args) -> anyhow::Result<()> {
+    a.plot.check()?;
+    if let Some(map) = a.measured.spec(a.q_max)? {
+        return measured(&a, &map);
+    }
+    let spec = a.spectrum.spec()?;
+    let s = spec.build().map_err(|e| a.spectrum.psd_hint(e))?;
+    let description = a.spectrum.is_example().then(|| {
+        let example = persson_studies::scene::EXAMPLE;
+        if spec == persson_studies::scene::SpectrumSpec::example() {
+            example.to_string()
+        } else {
+            format!("{example} (the given flags replace parts of it)")
+        }
+    });
+    let mut report = run::spectrum(s.as_ref(), description, a.q_min, a.q_max, a.points)?;
+    for w in run::spectrum_warnings(&spec, s.as_ref()) {
+        if !report.warnings.contains(&w) {
+            report.warnings.push(w);
+        }
+    }
+    #[cfg(feature = "plot")]
+    a.plot
+        .draw(|| persson_studies::scene::plot::spectrum(&report))?;
+    print_warned(&report, &report.warnings, &a.format)
+}
+
+/// `--surface`: the analysis of the map, its CSV and plot.
+#[cfg(feature = "topography")]
+fn measured(a: &Args, map: &persson_studies::scene::HeightMapSpec) -> anyhow::Result<()> {
+    if let Some(path) = &a.psd_out {
+        persson::io::check_writable(path)?;
+    }
+    let report = map.analyse()?;
+    if let Some(path) = &a.psd_out {
+        report.psd.write_csv(path)?;
+    }
+    #[cfg(feature = "plot")]
+    a.plot
+        .draw(|| persson_studies::scene::plot::measured_spectrum(&report))?;
+    let warnings = persson_studies::warning::of_measured(&map.file, &report);
+    print_warned(&report, &warnings, &a.format)
+}
+
+/// Without the feature `topography`, `--surface` is an error.
+#[cfg(not(feature = "topography"))]
+fn measured(_: &Args, map: &persson_studies::scene::HeightMapSpec) -> anyhow::Result<()> {
+    anyhow::bail!(
+        "--surface {}: this persson was built without the `topography` feature",
+        map.file.display()
+    )
+}

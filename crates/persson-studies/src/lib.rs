@@ -1,0 +1,40 @@
+//! # persson-studies
+//!
+//! The studies built on the [`persson`] numerics: what the `persson` command
+//! line and the Python package run and show. The numerics crate computes
+//! numbers with their error bounds; this crate turns a request into those
+//! computations and their results into reports.
+//!
+//! | module | what it holds |
+//! |---|---|
+//! | [`scene`] | scene files: one calculation described in a versioned JSON document, and running it |
+//! | [`validation`] | validation of numerical codes: continuum extrapolation, κ fits, scoring a user's data against the theories, and (feature `bem`) the theories against the BEM at several resolutions of one surface |
+//! | [`report`] | error against run time of every method, and the stability sweep over extreme inputs |
+//! | [`table`] | the one table type every report renders to, as aligned text or CSV, and the tables of the numerics' results |
+//! | [`warning`] | [`Warning`]: a remark on the input (a pressure near E*, a slope above 1, ζ beyond the band, a spectrum file's convention) that never changes a number, carried by the reports |
+//! | `plot` | (feature `plot`) figures as SVG or PNG from the typed reports |
+//!
+//! Conventions, units and names are those of the numerics crate (see its
+//! documentation): SI units, C(q) in Persson's normalisation, σ0 the nominal
+//! mean pressure, one name per quantity.
+//!
+//! Errors are the numerics' [`Error`] (re-exported here): a scene or a figure
+//! fails for the same reasons, with the same typed fields, as the computation
+//! behind it.
+
+#![warn(missing_docs)]
+
+// The README's and the guide's Rust examples, as doctests.
+#[cfg(all(doctest, feature = "bem", feature = "topography"))]
+mod guide;
+
+#[cfg(feature = "plot")]
+pub mod plot;
+pub mod report;
+pub mod scene;
+pub mod table;
+pub mod validation;
+pub mod warning;
+
+pub use persson::{Error, Result};
+pub use warning::Warning;

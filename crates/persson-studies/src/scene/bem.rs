@@ -1,0 +1,149 @@
+//! The FFT-BEM outputs of a scene (feature `bem`): rough contact at the
+//! scene's pressures and the Hertz convergence table.
+
+use persson::bem::rough::{self, RoughOptions, RoughReport, SurfaceOrigin};
+use persson::bem::{check_memory, hertz, surface, Options};
+use persson::error::{check, Error, Result};
+
+use super::report::{BemHertzReport, BemHertzRow};
+use super::run::prefix;
+use super::schema::{required, BemHertzOutput, BemOutput, BoundaryName, Scene, SpectrumSpec};
+
+/// `outputs.bem_hertz`: η per grid.
+///
+/// # Errors
+/// A grid too large for memory; a tolerance out of range; a solve that fails.
+pub fn bem_hertz(h: &BemHertzOutput) -> Result<BemHertzReport> {
+    let named = |e: Error| prefix("outputs.bem_hertz.", e);
+    let boundary_name = h.boundary.unwrap_or(BoundaryName::Free);
+    let boundary = boundary_name.into();
+    let tol = check::tolerance("tolerance", h.tolerance.unwrap_or(1e-12)).map_err(named)?;
+    let grids = if h.grids.is_empty() {
+        vec![64, 128, 256]
+    } else {
+        h.grids.clone()
+    };
+    let opts = Options {
+        tolerance: tol,
+        ..Options::default()
+    };
+    let rows = grids
+        .iter()
+        .map(|&n| {
+            check_memory(n, boundary).map_err(named)?;
+            let r = hertz::validate(&hertz::HertzCase::new(n, boundary), &opts).map_err(named)?;
+            let reference = hertz::lecture_eta(n).filter(|_| boundary_name == BoundaryName::Free);
+            Ok(BemHertzRow {
+                grid: n,
+                energy_error: r.energy_error,
+                energy_error_published: reference,
+                contact_radius_error: r.contact_radius_error,
+                peak_pressure_error: r.peak_pressure_error,
+                contact_fraction: r.contact_fraction,
+                iterations: r.iterations,
+                seconds: r.seconds,
+            })
+        })
+        .collect::<Result<Vec<_>>>()?;
+    let plastic = match h.yield_stress {
+        Some(y) => Some(
+            hertz::plastic_disc(
+                &hertz::HertzCase::new(grids[0], boundary),
+                &grids,
+                y,
+                &opts,
+                &mut |_, _| {},
+            )
+            .map_err(named)?,
+        ),
+        None => None,
+    };
+    Ok(BemHertzReport {
+        boundary: boundary_name,
+        tolerance: tol,
+        rows,
+        plastic,
+    })
+}
+
+/// The rigid surface of `outputs.bem`: the height map, or synthesised from
+/// the spectrum.
+fn bem_surface(
+    scene: &Scene,
+    b: &BemOutput,
+    boundary: persson::bem::Boundary,
+) -> Result<surface::GridSurface> {
+    let named = |e: Error| prefix("outputs.bem.", e);
+    if let Some(SpectrumSpec::HeightMap(m)) = &scene.spectrum {
+        if b.grid.is_some() || b.seed.is_some() {
+            return Err(Error::Inconsistent {
+                name: "outputs.bem.grid / outputs.bem.seed".into(),
+                requirement: "not used with a height map (its file sets the grid)".into(),
+            });
+        }
+        return m.bem_surface(boundary).map_err(|e| match e {
+            Error::InvalidParameter {
+                name,
+                value,
+                requirement,
+            } if name == "size" => Error::InvalidParameter {
+                name: "spectrum.size".into(),
+                value,
+                requirement,
+            },
+            e => e,
+        });
+    }
+    let n = b
+        .grid
+        .ok_or_else(|| required("outputs.bem.grid (for a synthesised surface)"))?;
+    check_memory(n, boundary).map_err(named)?;
+    let spectrum = scene.spectrum()?;
+    let size = std::f64::consts::TAU / spectrum.q_min();
+    surface::synthesize(spectrum.as_ref(), n, size, b.seed.unwrap_or(1)).map_err(named)
+}
+
+/// `outputs.bem`: one solve per pressure, warm-started along the list
+/// ([`rough::rough_contact`], the loop `persson bem rough` runs).
+///
+/// # Errors
+/// Missing or invalid inputs; a solve that fails.
+pub fn bem_rough(scene: &Scene, b: &BemOutput) -> Result<RoughReport> {
+    let named = |e: Error| prefix("outputs.bem.", e);
+    let boundary = b.boundary.unwrap_or(BoundaryName::Periodic).into();
+    let tol = check::tolerance("tolerance", b.tolerance.unwrap_or(1e-10)).map_err(named)?;
+    let bins = b.bins.unwrap_or(50);
+    if bins == 0 {
+        return Err(named(Error::invalid("bins", 0.0, ">= 1")));
+    }
+    if scene.nominal_pressure.is_empty() {
+        return Err(required(
+            "nominal_pressure (a non-empty list, for outputs.bem)",
+        ));
+    }
+    let e_star = scene.material()?.contact_modulus();
+    let surf = bem_surface(scene, b, boundary)?;
+    let source = match &scene.spectrum {
+        Some(SpectrumSpec::HeightMap(m)) => SurfaceOrigin::height_map(&m.file),
+        _ => SurfaceOrigin::synthesised(scene.spectrum()?.as_ref(), b.seed.unwrap_or(1))?,
+    };
+    let options = RoughOptions {
+        boundary,
+        solver: Options {
+            tolerance: tol,
+            warm_start: true,
+            yield_stress: b.yield_stress,
+            ..Options::default()
+        },
+        bins: b.histogram.as_ref().map(|_| bins),
+    };
+    rough::rough_contact(
+        &surf,
+        source,
+        e_star,
+        &scene.nominal_pressure,
+        &options,
+        &mut (),
+    )
+    .map_err(named)
+}

@@ -1,0 +1,253 @@
+//! A measured surface as a scene's (and the flags') spectrum: read, condition
+//! and analyse the map ([`persson::topography`]), then use its binned spectrum
+//! as a [`Tabulated`] one, whose band is the map's.
+
+use persson::error::{Error, Result};
+use persson::spectrum::{Spectrum, Tabulated};
+
+#[cfg(any(feature = "bem", feature = "topography"))]
+use super::schema::Sides;
+use super::schema::{Described, HeightMapSpec};
+#[cfg(feature = "topography")]
+use super::schema::{DetrendName, LengthUnitName, WindowName};
+
+#[cfg(feature = "topography")]
+use persson::topography::{self as topo, Analysis, AnalysisOptions, Detrend, Topography, Window};
+
+#[cfg(feature = "topography")]
+impl From<DetrendName> for Detrend {
+    fn from(d: DetrendName) -> Self {
+        match d {
+            DetrendName::None => Detrend::None,
+            DetrendName::Mean => Detrend::Mean,
+            DetrendName::Plane => Detrend::Plane,
+            DetrendName::Curvature => Detrend::Curvature,
+        }
+    }
+}
+
+#[cfg(feature = "topography")]
+impl From<LengthUnitName> for topo::LengthUnit {
+    fn from(u: LengthUnitName) -> Self {
+        match u {
+            LengthUnitName::M => topo::LengthUnit::Metre,
+            LengthUnitName::Mm => topo::LengthUnit::Millimetre,
+            LengthUnitName::Um => topo::LengthUnit::Micrometre,
+            LengthUnitName::Nm => topo::LengthUnit::Nanometre,
+            LengthUnitName::Pm => topo::LengthUnit::Picometre,
+            LengthUnitName::Angstrom => topo::LengthUnit::Angstrom,
+        }
+    }
+}
+
+#[cfg(feature = "topography")]
+impl From<WindowName> for Window {
+    fn from(w: WindowName) -> Self {
+        match w {
+            WindowName::None => Window::None,
+            WindowName::Hann => Window::Hann,
+            WindowName::Blackman => Window::Blackman,
+        }
+    }
+}
+
+impl HeightMapSpec {
+    /// The size as the reader takes it.
+    ///
+    /// # Errors
+    /// Both `size` and `pixel_size` given.
+    #[cfg(feature = "topography")]
+    fn size_spec(&self) -> Result<Option<topo::SizeSpec>> {
+        Ok(match (self.size, self.pixel_size) {
+            (Some(_), Some(_)) => {
+                return Err(Error::Inconsistent {
+                    name: "size / pixel_size".into(),
+                    requirement: "give one of them, not both".into(),
+                })
+            }
+            (Some(Sides::One(lx)), None) => Some(topo::SizeSpec::Size(lx, None)),
+            (Some(Sides::Two([lx, ly])), None) => Some(topo::SizeSpec::Size(lx, Some(ly))),
+            (None, Some(d)) => Some(topo::SizeSpec::PixelSize(d)),
+            (None, None) => None,
+        })
+    }
+
+    /// Read the file (the formats of [`persson::topography::read()`]).
+    ///
+    /// # Errors
+    /// As [`persson::topography::read()`].
+    #[cfg(feature = "topography")]
+    pub fn read(&self) -> Result<Topography> {
+        let options = topo::ReadOptions {
+            size: self.size_spec()?,
+            periodic: self.periodic,
+            fill_undefined: self.fill_undefined,
+            format: None,
+            height_unit: self.height_unit.map(Into::into),
+            lateral_unit: self.lateral_unit.map(Into::into),
+            transpose: self.transpose,
+        };
+        topo::read(&self.file, &options)
+    }
+
+    /// Read and analyse the map: spectrum, statistics, Hurst fit.
+    ///
+    /// # Errors
+    /// As [`HeightMapSpec::read`] and [`persson::topography::analyse`].
+    #[cfg(feature = "topography")]
+    pub fn analyse(&self) -> Result<Analysis> {
+        let t = self.read()?;
+        let options = AnalysisOptions {
+            detrend: self.detrend.map(Into::into),
+            window: self.window.map(Into::into),
+            q_max: self.q_max,
+            bins: None,
+        };
+        topo::analyse(&t, &options).map_err(|e| in_file(&self.file, e))
+    }
+
+    /// The map's spectrum, tabulated, with what was assumed in words.
+    ///
+    /// # Errors
+    /// As [`HeightMapSpec::analyse`] and [`persson::topography::Psd::to_tabulated`].
+    #[cfg(feature = "topography")]
+    pub fn spectrum_described(&self) -> Result<Described<Tabulated>> {
+        let a = self.analyse()?;
+        let s = a.psd.to_tabulated().map_err(|e| in_file(&self.file, e))?;
+        Ok(Described {
+            value: s,
+            description: Some(describe(&self.file, &a)),
+            warnings: crate::warning::of_measured(&self.file, &a),
+        })
+    }
+
+    /// Without the `topography` feature a measured surface cannot be read.
+    #[cfg(not(feature = "topography"))]
+    pub fn spectrum_described(&self) -> Result<Described<Tabulated>> {
+        Err(Error::Inconsistent {
+            name: "kind = height_map".into(),
+            requirement:
+                "a spectrum from a height map needs persson built with the feature `topography`"
+                    .into(),
+        })
+    }
+
+    /// The map's spectrum as a boxed [`Spectrum`].
+    ///
+    /// # Errors
+    /// As [`HeightMapSpec::spectrum_described`].
+    pub fn spectrum(&self) -> Result<Box<dyn Spectrum>> {
+        Ok(Box::new(self.spectrum_described()?.value))
+    }
+}
+
+/// What the spectrum of a measured surface assumed, for report titles.
+#[cfg(feature = "topography")]
+pub fn describe(file: &std::path::Path, a: &Analysis) -> String {
+    use crate::table::number;
+    let pixel: Vec<String> = a.pixel_size.iter().map(|d| number(*d, 6)).collect();
+    format!(
+        "measured surface {} ({} × {} points, pixel {} m, {}; detrend {}, window {}; band q = {} … {} 1/m)",
+        file.display(),
+        a.shape[0],
+        a.shape[1],
+        pixel.join(" × "),
+        if a.periodic { "periodic" } else { "not periodic" },
+        a.detrend.name(),
+        a.window.name(),
+        number(a.q_min, 6),
+        number(a.q_max, 6),
+    )
+}
+
+/// An error of the analysis, prefixed with the file unless it names it.
+#[cfg(feature = "topography")]
+fn in_file(file: &std::path::Path, e: Error) -> Error {
+    let name = file.display().to_string();
+    if e.to_string().contains(&name) {
+        e
+    } else {
+        Error::parse(file, 0, 0, e.to_string())
+    }
+}
+
+/// Whether the BEM's own reader (a square `.npy` or text matrix of side L)
+/// reads this file, as it always has: the numbers of those maps stay the same.
+#[cfg(feature = "bem")]
+fn legacy_bem_format(file: &std::path::Path) -> bool {
+    let ext = file
+        .extension()
+        .map(|e| e.to_string_lossy().to_ascii_lowercase());
+    !matches!(ext.as_deref(), Some("gsf" | "x3p" | "xyz"))
+}
+
+#[cfg(feature = "bem")]
+impl HeightMapSpec {
+    /// The map as the BEM's rigid surface, heights as in the file (no
+    /// detrending: the BEM's mean gap is measured from the highest point).
+    /// A `.npy` or text matrix with `size: L` is read by
+    /// [`persson::bem::rough::read_surface`], as always; every other file (and
+    /// `pixel_size`) through [`persson::topography::read()`]. The BEM solves on
+    /// square N × N grids only: a non-square map is an error (cropping it
+    /// would change its spectrum, padding it would add a flat strip).
+    ///
+    /// # Errors
+    /// As the readers; a non-square map, line scans, `Lx ≠ Ly`; a grid
+    /// whose solve would not fit in memory.
+    pub fn bem_surface(
+        &self,
+        boundary: persson::bem::Boundary,
+    ) -> Result<persson::bem::surface::GridSurface> {
+        let plain = self.height_unit.is_none() && !self.transpose;
+        if let (Some(Sides::One(size)), None, true) = (
+            self.size,
+            self.pixel_size,
+            plain && legacy_bem_format(&self.file),
+        ) {
+            return persson::bem::rough::read_surface(&self.file, size, boundary);
+        }
+        self.bem_surface_read(boundary)
+    }
+
+    #[cfg(feature = "topography")]
+    fn bem_surface_read(
+        &self,
+        boundary: persson::bem::Boundary,
+    ) -> Result<persson::bem::surface::GridSurface> {
+        let t = self.read()?;
+        let [ny, nx] = t.shape();
+        let bad = |what: String| {
+            Error::parse(
+                &self.file,
+                0,
+                0,
+                format!("{what}: the BEM solves on square N × N maps of equal sides (crop or resample it yourself)"),
+            )
+        };
+        if t.layout() != topo::Layout::Map {
+            return Err(bad("line scans, not a height map".into()));
+        }
+        if nx != ny {
+            return Err(bad(format!("{ny} × {nx} points")));
+        }
+        if (t.lx() - t.ly()).abs() > 1e-12 * t.lx() {
+            return Err(bad(format!("sides {} × {} m", t.lx(), t.ly())));
+        }
+        persson::bem::check_memory(nx, boundary)?;
+        persson::bem::surface::GridSurface::new(nx, t.lx(), t.heights().to_vec())
+            .map_err(|e| Error::parse(&self.file, 0, 0, e.to_string()))
+    }
+
+    #[cfg(not(feature = "topography"))]
+    fn bem_surface_read(
+        &self,
+        _: persson::bem::Boundary,
+    ) -> Result<persson::bem::surface::GridSurface> {
+        Err(Error::parse(
+            &self.file,
+            0,
+            0,
+            "without the feature `topography` the BEM reads only .npy and text matrices with size L",
+        ))
+    }
+}

@@ -1,0 +1,359 @@
+//! Scenes: one calculation described in a versioned JSON document.
+//!
+//! A scene names the material, the spectrum, the loads and the outputs it
+//! wants; [`Scene::run`] computes exactly those outputs and nothing else.
+//! Unknown fields are rejected with their name, line and column. The file
+//! format is [`schema`] (its JSON Schema is `crates/persson-studies/schema/scene.schema.json`), the
+//! computation [`run`] and the typed results [`report`]: the subcommands
+//! `area`, `magnification`, `kappa`, `separation` and `stress` call the same
+//! functions and print the same reports.
+//!
+//! ```json
+//! { "schema": 1,
+//!   "material": { "contact_modulus": 1e9 },
+//!   "spectrum": { "kind": "self_affine", "hurst": 0.8, "q_l": 1e4, "q_r": 1e5, "q_s": 1e8, "rms_height": 1e-6 },
+//!   "nominal_pressure": [1e5, 1e6, 1e7],
+//!   "outputs": { "area": {}, "kappa": {} } }
+//! ```
+//!
+//! With the feature `bem`, two more outputs: `bem` (FFT-BEM rough contact at
+//! the scene's pressures, on a surface synthesised from the spectrum or read
+//! from a `{"kind": "height_map", "file": …, "size": L}` spectrum entry) and
+//! `bem_hertz` (the Hertz convergence table, η per grid). A build without
+//! `bem` rejects a scene naming them.
+
+use std::path::{Path, PathBuf};
+
+use persson::error::{Error, Result};
+use persson::material::Material;
+use persson::spectrum::Spectrum;
+use persson::stress::Start;
+
+#[cfg(feature = "bem")]
+mod bem;
+mod measured;
+#[cfg(feature = "plot")]
+pub mod plot;
+pub mod report;
+pub mod run;
+pub mod schema;
+
+#[cfg(feature = "topography")]
+pub use measured::describe;
+pub use report::*;
+pub use run::RoughContact;
+pub use schema::*;
+
+use run::prefix;
+
+impl Scene {
+    /// Parse a scene from JSON text; `path` is used in errors and to resolve
+    /// relative input files.
+    ///
+    /// # Errors
+    /// [`Error::Parse`] with the line and column of a syntax error, a typo
+    /// (unknown field, naming it and the expected ones), a wrong type or a
+    /// missing field; a schema other than 1.
+    pub fn parse(path: &Path, text: &str) -> Result<Self> {
+        let mut s: Scene = serde_json::from_str(text)
+            .map_err(|e| Error::parse(path, e.line(), e.column(), json_message(&e)))?;
+        if s.schema != SCHEMA {
+            return Err(Error::parse(
+                path,
+                0,
+                0,
+                format!("schema = {}: this version reads schema {SCHEMA}", s.schema),
+            ));
+        }
+        let base = path.parent().unwrap_or(Path::new("."));
+        if let Some(
+            SpectrumSpec::Tabulated { file, .. }
+            | SpectrumSpec::HeightMap(HeightMapSpec { file, .. }),
+        ) = &mut s.spectrum
+        {
+            if file.is_relative() {
+                *file = base.join(&*file);
+            }
+        }
+        Ok(s)
+    }
+
+    /// Read and parse a scene file.
+    ///
+    /// # Errors
+    /// [`Error::Io`], or as [`Scene::parse`].
+    pub fn read(path: &Path) -> Result<Self> {
+        let bytes = persson::io::read(path)?;
+        let text = String::from_utf8(bytes)
+            .map_err(|e| Error::parse(path, 0, 0, format!("not UTF-8 text ({e})")))?;
+        Self::parse(path, &text)
+    }
+
+    /// Build the material.
+    ///
+    /// # Errors
+    /// Missing or invalid material fields, named `material.<field>`.
+    pub fn material(&self) -> Result<Material> {
+        let m = self.material.as_ref().ok_or_else(|| required("material"))?;
+        m.build().map_err(|e| prefix("material.", e))
+    }
+
+    /// Build the spectrum.
+    ///
+    /// # Errors
+    /// Missing or invalid spectrum fields, named `spectrum.<field>`; file errors.
+    pub fn spectrum(&self) -> Result<Box<dyn Spectrum>> {
+        let s = self.spectrum.as_ref().ok_or_else(|| required("spectrum"))?;
+        s.build().map_err(|e| prefix("spectrum.", e))
+    }
+
+    /// The spectrum and the material together.
+    ///
+    /// # Errors
+    /// As [`Scene::spectrum`] and [`Scene::material`].
+    pub fn contact(&self) -> Result<RoughContact> {
+        let s = self.spectrum.as_ref().ok_or_else(|| required("spectrum"))?;
+        let m = self.material.as_ref().ok_or_else(|| required("material"))?;
+        RoughContact::named(s, m, "spectrum.", "material.")
+    }
+
+    /// Compute every output the scene names, and only those.
+    ///
+    /// # Errors
+    /// The first invalid input or failed computation.
+    pub fn run(&self) -> Result<SceneReport> {
+        let o = &self.outputs;
+        let mut report = SceneReport {
+            name: self.name.clone(),
+            description: self.description.clone(),
+            ..Default::default()
+        };
+        if let Some(st) = o.stress.as_ref().filter(|st| st.zeta.is_empty()) {
+            report.stress = Some(
+                run::stress_dimensionless(
+                    &Start::from(st.start),
+                    &st.g,
+                    st.yield_ratio,
+                    st.tolerance,
+                    &[],
+                    st.points,
+                )
+                .map_err(|e| prefix("outputs.stress.", e))?,
+            );
+        }
+        if let Some(sp) = &o.spectrum {
+            let s = self.spectrum()?;
+            let example = self.spectrum == Some(SpectrumSpec::example());
+            let mut r = run::spectrum(
+                s.as_ref(),
+                example.then(|| EXAMPLE.to_string()),
+                sp.q_min,
+                sp.q_max,
+                sp.points,
+            )
+            .map_err(|e| prefix("outputs.spectrum.", e))?;
+            if let Some(spec) = &self.spectrum {
+                for w in run::spectrum_warnings(spec, s.as_ref()) {
+                    crate::warning::push(&mut r.warnings, Some(w));
+                }
+            }
+            report.spectrum = Some(r);
+        }
+        self.run_bem(&mut report)?;
+        let with_surface = self.spectrum.is_some() && self.material.is_some();
+        let needs_surface = o.area.is_some()
+            || o.magnification.is_some()
+            || o.theories.is_some()
+            || o.separation.is_some()
+            || o.stress.as_ref().is_some_and(|st| !st.zeta.is_empty())
+            || (o.kappa.is_some() && with_surface && !self.nominal_pressure.is_empty());
+        let surface = if needs_surface {
+            Some(self.contact()?)
+        } else {
+            None
+        };
+        if o.kappa.is_some() {
+            let with = surface
+                .as_ref()
+                .filter(|_| !self.nominal_pressure.is_empty())
+                .map(|s| (s, self.nominal_pressure.as_slice()));
+            report.kappa = Some(run::kappa(with)?);
+        }
+        if let Some(SpectrumSpec::Tabulated {
+            file, convention, ..
+        }) = &self.spectrum
+        {
+            // Whatever output reads it (the BEM's synthesis too).
+            report.warnings.push(crate::Warning::PsdConvention {
+                file: file.clone(),
+                convention: *convention,
+            });
+        }
+        let Some(surface) = surface else {
+            report.collect_warnings();
+            return Ok(report);
+        };
+        if let Some(a) = &o.area {
+            report.area = Some(run::area(&surface, &self.nominal_pressure, a)?);
+        }
+        if let Some(m) = &o.magnification {
+            report.magnification = Some(run::magnification(&surface, m)?);
+        }
+        if let Some(t) = &o.theories {
+            report.theories = Some(run::theories(&surface, &self.nominal_pressure, t)?);
+        }
+        if let Some(sep) = &o.separation {
+            report.separation = Some(run::separation(&surface, &self.nominal_pressure, sep, &[])?);
+        }
+        if let Some(st) = o.stress.as_ref().filter(|st| !st.zeta.is_empty()) {
+            report.stress =
+                Some(run::stress_physical(&surface, st).map_err(|e| prefix("outputs.stress.", e))?);
+        }
+        report.collect_warnings();
+        Ok(report)
+    }
+
+    /// The BEM outputs (feature `bem`); without the feature, a scene naming
+    /// one is an error.
+    #[cfg(not(feature = "bem"))]
+    fn run_bem(&self, _report: &mut SceneReport) -> Result<()> {
+        let o = &self.outputs;
+        for (name, asked) in [
+            ("outputs.bem", o.bem.is_some()),
+            ("outputs.bem_hertz", o.bem_hertz.is_some()),
+        ] {
+            if asked {
+                return Err(Error::Inconsistent {
+                    name: name.into(),
+                    requirement: "needs a persson built with the `bem` feature".into(),
+                });
+            }
+        }
+        Ok(())
+    }
+
+    /// The BEM outputs (feature `bem`).
+    #[cfg(feature = "bem")]
+    fn run_bem(&self, report: &mut SceneReport) -> Result<()> {
+        if let Some(h) = &self.outputs.bem_hertz {
+            report.bem_hertz = Some(bem::bem_hertz(h)?);
+        }
+        if let Some(b) = &self.outputs.bem {
+            report.bem = Some(bem::bem_rough(self, b)?);
+        }
+        Ok(())
+    }
+
+    /// Every file the scene asks to write (plots and the histogram), relative to `dir`.
+    pub fn output_paths(&self, dir: &Path) -> Vec<PathBuf> {
+        let o = &self.outputs;
+        [
+            o.spectrum.as_ref().and_then(|s| s.plot.clone()),
+            o.area.as_ref().and_then(|a| a.plot.clone()),
+            o.magnification.as_ref().and_then(|m| m.plot.clone()),
+            o.magnification.as_ref().and_then(|m| m.plot_g.clone()),
+            o.theories.as_ref().and_then(|t| t.plot.clone()),
+            o.stress.as_ref().and_then(|s| s.plot.clone()),
+            o.bem.as_ref().and_then(|b| b.plot.clone()),
+            o.bem.as_ref().and_then(|b| b.histogram.clone()),
+        ]
+        .into_iter()
+        .flatten()
+        .map(|p| dir.join(p))
+        .collect()
+    }
+
+    /// The plots the scene asks for, relative to `dir`.
+    pub fn plot_paths(&self, dir: &Path) -> Vec<PathBuf> {
+        let hist = self.outputs.bem.as_ref().and_then(|b| b.histogram.clone());
+        self.output_paths(dir)
+            .into_iter()
+            .filter(|p| hist.as_ref().is_none_or(|h| *p != dir.join(h)))
+            .collect()
+    }
+
+    /// The input files the scene reads.
+    pub fn input_paths(&self) -> Vec<PathBuf> {
+        match &self.spectrum {
+            Some(
+                SpectrumSpec::Tabulated { file, .. }
+                | SpectrumSpec::HeightMap(HeightMapSpec { file, .. }),
+            ) => {
+                vec![file.clone()]
+            }
+            _ => vec![],
+        }
+    }
+}
+
+/// Write the scene's data files (the BEM pressure histograms) into `dir`.
+///
+/// # Errors
+/// A file that cannot be written (written atomically).
+pub fn write_data(scene: &Scene, report: &SceneReport, dir: &Path) -> Result<Vec<PathBuf>> {
+    let mut written = Vec::new();
+    #[cfg(feature = "bem")]
+    if let (Some(out), Some(r)) = (&scene.outputs.bem, &report.bem) {
+        use crate::table::Tabulate;
+        if let Some(file) = &out.histogram {
+            if let Some(t) = r.tables().into_iter().find(|t| t.name == "bem_histogram") {
+                let p = dir.join(file);
+                persson::io::write_atomic(&p, t.to_csv().as_bytes())?;
+                written.push(p);
+            }
+        }
+    }
+    #[cfg(not(feature = "bem"))]
+    let _ = (scene, report, dir, &mut written);
+    Ok(written)
+}
+
+/// Draw every plot the scene names, into `dir` (feature `plot`).
+///
+/// # Errors
+/// A plot that cannot be drawn or written (nothing is left half-written).
+#[cfg(feature = "plot")]
+pub fn render_plots(scene: &Scene, report: &SceneReport, dir: &Path) -> Result<Vec<PathBuf>> {
+    use crate::plot::Figure;
+    let o = &scene.outputs;
+    let mut written = Vec::new();
+    let mut draw = |path: &Option<PathBuf>, fig: &dyn Fn() -> Result<Figure>| -> Result<()> {
+        if let Some(p) = path {
+            let p = dir.join(p);
+            crate::plot::render(&fig()?, &p)?;
+            written.push(p);
+        }
+        Ok(())
+    };
+    if let (Some(out), Some(r)) = (&o.spectrum, &report.spectrum) {
+        draw(&out.plot, &|| plot::spectrum(r))?;
+    }
+    if let (Some(out), Some(r)) = (&o.area, &report.area) {
+        draw(&out.plot, &|| plot::area(r))?;
+    }
+    if let (Some(out), Some(r)) = (&o.magnification, &report.magnification) {
+        draw(&out.plot, &|| plot::magnification_area(r))?;
+        draw(&out.plot_g, &|| plot::magnification_g(r))?;
+    }
+    if let (Some(out), Some(r)) = (&o.theories, &report.theories) {
+        draw(&out.plot, &|| plot::theories(r))?;
+    }
+    if let (Some(out), Some(r)) = (&o.stress, &report.stress) {
+        draw(&out.plot, &|| plot::stress(r))?;
+    }
+    #[cfg(feature = "bem")]
+    if let (Some(out), Some(r)) = (&o.bem, &report.bem) {
+        draw(&out.plot, &|| plot::bem(r))?;
+    }
+    Ok(written)
+}
+
+/// serde_json's message without its trailing " at line L column C" (the
+/// position is in the error's own fields).
+pub(crate) fn json_message(e: &serde_json::Error) -> String {
+    let s = e.to_string();
+    match s.rfind(" at line ") {
+        Some(i) => s[..i].to_string(),
+        None => s,
+    }
+}

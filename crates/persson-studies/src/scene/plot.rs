@@ -1,0 +1,277 @@
+//! Figures drawn from the typed reports alone (feature `plot`).
+
+use crate::plot::{self, Axis, Figure, LinearLaw, PowerLaw, Series, Style};
+use crate::table::number;
+use persson::error::Result;
+
+use super::report::*;
+use super::schema::TheoryName;
+
+/// A/A0 against load with the Bush and Persson lines; a corrected theory
+/// is drawn next to the original one.
+///
+/// # Errors
+/// An empty report.
+pub fn area(r: &AreaReport) -> Result<Figure> {
+    let p: Vec<f64> = r.points.iter().map(|x| x.nominal_pressure).collect();
+    let chosen: Vec<f64> = r.points.iter().map(|x| x.contact_fraction).collect();
+    let label = format!("Persson (original theory), ζ = {}", number(r.zeta, 4));
+    let other = format!(
+        "{} theory{}",
+        r.theory,
+        r.gamma
+            .map_or(String::new(), |g| format!(", γ = {}", number(g, 3)))
+    );
+    let mut curves = vec![(label.as_str(), r.original_contact_fraction.as_slice())];
+    if r.theory != TheoryName::Original {
+        curves.push((other.as_str(), chosen.as_slice()));
+    }
+    let law = LinearLaw {
+        contact_modulus: r.contact_modulus,
+        rms_slope: r.points.first().map_or(r.rms_slope, |x| x.rms_slope),
+    };
+    plot::area_vs_load(&p, &curves, "unit of E*", Some(law))
+}
+
+/// A/A0 against ζ.
+///
+/// # Errors
+/// An inconsistent report.
+pub fn magnification_area(r: &MagnificationReport) -> Result<Figure> {
+    let z: Vec<f64> = r.points.iter().map(|x| x.zeta).collect();
+    let a: Vec<f64> = r.points.iter().map(|x| x.contact_fraction).collect();
+    let label = format!("σ0 = {}", number(r.nominal_pressure, 6));
+    plot::area_vs_zeta(&z, &[(label.as_str(), &a)])
+}
+
+/// G(ζ).
+///
+/// # Errors
+/// An inconsistent report.
+pub fn magnification_g(r: &MagnificationReport) -> Result<Figure> {
+    let z: Vec<f64> = r.points.iter().map(|x| x.zeta).collect();
+    let g: Vec<f64> = r.points.iter().map(|x| x.g).collect();
+    let label = format!("σ0 = {}", number(r.nominal_pressure, 6));
+    plot::g_vs_zeta(&z, &[(label.as_str(), &g)])
+}
+
+/// A/A0 against load for every theory, with the linear laws.
+///
+/// # Errors
+/// An inconsistent report.
+pub fn theories(r: &TheoriesReport) -> Result<Figure> {
+    let p: Vec<f64> = r
+        .curves
+        .first()
+        .map(|c| c.points.iter().map(|x| x.nominal_pressure).collect())
+        .unwrap_or_default();
+    let labels: Vec<String> = r
+        .curves
+        .iter()
+        .map(|c| match c.gamma {
+            None => format!("{} (κ = {})", c.theory, number(c.kappa, 3)),
+            Some(g) => format!(
+                "{}, γ = {} (κ = {})",
+                c.theory,
+                number(g, 3),
+                number(c.kappa, 3)
+            ),
+        })
+        .collect();
+    let a: Vec<Vec<f64>> = r
+        .curves
+        .iter()
+        .map(|c| c.points.iter().map(|x| x.contact_fraction).collect())
+        .collect();
+    let refs: Vec<(&str, &[f64])> = labels
+        .iter()
+        .zip(&a)
+        .map(|(l, v)| (l.as_str(), v.as_slice()))
+        .collect();
+    let law = LinearLaw {
+        contact_modulus: r.contact_modulus,
+        rms_slope: r.rms_slope,
+    };
+    plot::area_vs_load(&p, &refs, "unit of E*", Some(law))
+}
+
+/// ū against load (the report's figure curve, else its points), log axes,
+/// with the low-load law u0 ln(p_ref/σ0).
+///
+/// # Errors
+/// None in practice (the figure is built from the report's numbers).
+pub fn separation(r: &SeparationReport) -> Result<Figure> {
+    let curve = if r.plot_points.is_empty() {
+        &r.points
+    } else {
+        &r.plot_points
+    };
+    let u: Vec<(f64, f64)> = curve
+        .iter()
+        .map(|p| (p.nominal_pressure, p.mean_separation))
+        .collect();
+    let (u0, p_ref) = (r.low_load_length, r.reference_pressure);
+    let asymptote: Vec<(f64, f64)> = curve
+        .iter()
+        .map(|p| (p.nominal_pressure, u0 * (p_ref / p.nominal_pressure).ln()))
+        .filter(|&(_, v)| v > 0.0)
+        .collect();
+    Ok(Figure::new(
+        format!(
+            "Mean interfacial separation (Persson 2007), E* = {}",
+            number(r.contact_modulus, 4)
+        ),
+        Axis::log("nominal pressure σ0 (unit of E*)"),
+        Axis::log("mean separation ū (m)"),
+    )
+    .with_series(Series::line("ū(σ0)", u))
+    .with_series(Series::dashed(
+        format!(
+            "u0 ln(σ_ref/σ0), u0 = {} m, σ_ref = {}",
+            number(u0, 3),
+            number(p_ref, 3)
+        ),
+        asymptote,
+    )))
+}
+
+/// The family of stress distributions.
+///
+/// # Errors
+/// None in practice.
+pub fn stress(r: &StressReport) -> Result<Figure> {
+    // With a yield stress the legend gives A = A_el + A_pl.
+    let plastic = r.yield_stress.is_some() || r.yield_ratio.is_some();
+    let plastic_note = |el: f64, pl: f64| {
+        if plastic || pl > 0.0 {
+            format!(" (A_el {}, A_pl {})", number(el, 3), number(pl, 3))
+        } else {
+            String::new()
+        }
+    };
+    let (x, y) = if r.physical() {
+        ("normal stress σ (Pa, or the unit of E*)", "P(σ, ζ) (1/Pa)")
+    } else {
+        ("normal stress σ/σH", "σH P(σ, ζ)")
+    };
+    let yield_note = match (r.yield_stress, r.yield_ratio) {
+        (Some(y), _) => format!(", σY = {}", number(y, 4)),
+        (None, Some(y)) => format!(", σY/σH = {}", number(y, 4)),
+        _ => String::new(),
+    };
+    let mut fig = Figure::new(
+        format!("Stress distribution P(σ, ζ), {} start{yield_note}", r.start),
+        Axis::linear(x),
+        Axis::linear(y),
+    );
+    let styles = [Style::Line, Style::Dashed, Style::Dotted];
+    for (i, c) in r.curves.iter().enumerate() {
+        let (label, s, p) = match c.zeta {
+            Some(z) => (
+                format!(
+                    "ζ = {}, G = {}, A/A0 = {}{}",
+                    number(z, 6),
+                    number(c.g, 3),
+                    number(c.contact_fraction, 3),
+                    plastic_note(c.elastic_fraction, c.plastic_fraction)
+                ),
+                &c.sigma,
+                &c.density,
+            ),
+            None => (
+                format!(
+                    "G = {}, A/A0 = {}{}",
+                    number(c.g, 6),
+                    number(c.contact_fraction, 3),
+                    plastic_note(c.elastic_fraction, c.plastic_fraction)
+                ),
+                &c.sigma_ratio,
+                &c.scaled_density,
+            ),
+        };
+        // A flat start at G = 0 is a δ at σ0: nothing finite to draw.
+        let pts = s
+            .iter()
+            .copied()
+            .zip(p.iter().copied())
+            .filter(|p| p.1.is_finite())
+            .collect();
+        fig.push(Series::new(label, pts, styles[i % styles.len()]));
+    }
+    // σY marked by a grey vertical line over the height of the curves (the
+    // plastic part A_pl/A0 is the δ at σ = σY, not drawn).
+    let at = match (r.yield_stress, r.yield_ratio) {
+        (Some(y), _) => Some((y, format!("σY = {}", number(y, 4)))),
+        (None, Some(y)) => Some((y, format!("σY/σH = {}", number(y, 4)))),
+        _ => None,
+    };
+    if let Some((y, label)) = at {
+        let top = r
+            .curves
+            .iter()
+            .flat_map(|c| c.density.iter().chain(&c.scaled_density))
+            .copied()
+            .filter(|p| p.is_finite())
+            .fold(0.0f64, f64::max);
+        if top > 0.0 {
+            fig.push(
+                Series::new(label, vec![(y, 0.0), (y, top)], Style::Dashed)
+                    .with_color(crate::plot::Rgb(128, 128, 128)),
+            );
+        }
+    }
+    Ok(fig)
+}
+
+/// FFT-BEM A/A0 against load with the Bush and Persson lines.
+///
+/// # Errors
+/// An inconsistent report.
+#[cfg(feature = "bem")]
+pub fn bem(r: &persson::bem::rough::RoughReport) -> Result<Figure> {
+    let p: Vec<f64> = r.points.iter().map(|x| x.nominal_pressure).collect();
+    let a: Vec<f64> = r.points.iter().map(|x| x.contact_fraction).collect();
+    let label = format!("FFT-BEM, {0}×{0} {1}", r.grid, r.boundary.name());
+    let law = LinearLaw {
+        contact_modulus: r.contact_modulus,
+        rms_slope: r.surface_rms_slope,
+    };
+    plot::area_vs_load(&p, &[(label.as_str(), &a)], "unit of E*", Some(law))
+}
+
+/// C(q) with the fitted power law over its band.
+///
+/// # Errors
+/// An inconsistent report.
+pub fn spectrum(r: &SpectrumReport) -> Result<Figure> {
+    let (q, c): (Vec<f64>, Vec<f64>) = r.curve.iter().map(|p| (p.q, p.c)).unzip();
+    let law = PowerLaw {
+        prefactor: r.power_law_fit.prefactor,
+        exponent: r.power_law_fit.exponent,
+        q_range: Some((r.power_law_fit.q_min, r.power_law_fit.q_max)),
+    };
+    plot::spectrum(&q, &c, Some(law))
+}
+
+/// C(q) of a measured surface with its Hurst fit over the band.
+///
+/// # Errors
+/// An inconsistent report.
+#[cfg(feature = "topography")]
+pub fn measured_spectrum(a: &persson::topography::Analysis) -> Result<Figure> {
+    let law = a.fit.map(|f| PowerLaw {
+        prefactor: f.prefactor,
+        exponent: -2.0 * (f.hurst + 1.0),
+        q_range: Some((a.q_min, a.q_max)),
+    });
+    let mut fig = plot::spectrum(&a.psd.q, &a.psd.c, law)?;
+    fig.title = match a.fit {
+        Some(f) => format!(
+            "Power spectrum C(q) of the measured surface, H = {} ± {}",
+            number(f.hurst, 3),
+            number(f.hurst_error, 2)
+        ),
+        None => "Power spectrum C(q) of the measured surface (no Hurst fit)".into(),
+    };
+    Ok(fig)
+}

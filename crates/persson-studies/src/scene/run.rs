@@ -1,0 +1,567 @@
+//! Computing the outputs: one function per output, shared by `persson run`
+//! and the subcommand of the same name.
+
+use crate::warning::{self, Warning};
+use persson::corrected;
+use persson::error::{check, Error, Result};
+use persson::kappa::Kappa;
+use persson::material::Material;
+use persson::separation::Separation;
+use persson::spectrum::Spectrum;
+use persson::stress::{HertzContact, Solver, Start, StressScene};
+use persson::theory::{log_zetas, Persson};
+
+use super::report::*;
+use super::schema::*;
+
+/// A rough contact, the input of the theories: the spectrum of the rigid
+/// rough surface, the contact modulus E* of the elastic body pressed on it,
+/// and what they are (`persson::bem::GridSurface` is the BEM's height map, a
+/// different thing). Called `Surface` in persson 0.3.
+pub struct RoughContact {
+    /// The roughness spectrum.
+    pub spectrum: Box<dyn Spectrum>,
+    /// E*.
+    pub contact_modulus: f64,
+    /// Kinks of C(q) inside the band (the roll-off), for the separation integrals.
+    pub breaks: Vec<f64>,
+    /// What the surface is (the built-in example says so), shown in titles.
+    pub description: Option<String>,
+    /// Remarks on the spectrum (its file's convention, a steep slope), passed
+    /// on to every report of this surface.
+    pub warnings: Vec<Warning>,
+}
+
+impl RoughContact {
+    /// Build from the flags' (or a scene's) spectrum and material.
+    ///
+    /// # Errors
+    /// As [`SpectrumSpec::build`] and [`MaterialSpec::build`].
+    pub fn new(spectrum: &SpectrumSpec, material: &MaterialSpec) -> Result<Self> {
+        Self::named(spectrum, material, "", "")
+    }
+
+    /// As [`RoughContact::new`], naming the fields with the prefixes of their sections.
+    pub(crate) fn named(
+        spectrum: &SpectrumSpec,
+        material: &MaterialSpec,
+        spectrum_section: &str,
+        material_section: &str,
+    ) -> Result<Self> {
+        let built = spectrum
+            .build_described()
+            .map_err(|e| prefix(spectrum_section, e))?;
+        let (s, measured, measured_warnings) = (built.value, built.description, built.warnings);
+        let m: Material = material.build().map_err(|e| prefix(material_section, e))?;
+        let description = (*spectrum == SpectrumSpec::example()
+            && *material == MaterialSpec::example())
+        .then(|| EXAMPLE.to_string())
+        .or(measured);
+        let mut warnings = measured_warnings;
+        for w in spectrum_warnings(spectrum, s.as_ref()) {
+            warning::push(&mut warnings, Some(w));
+        }
+        Ok(RoughContact {
+            spectrum: s,
+            contact_modulus: m.contact_modulus(),
+            breaks: spectrum.breaks(),
+            description,
+            warnings,
+        })
+    }
+
+    /// The surface's warnings with those of the nominal pressures and the
+    /// magnifications of one output.
+    fn warnings(&self, pressures: &[f64], zetas: &[f64]) -> Vec<Warning> {
+        let mut w = self.warnings.clone();
+        warning::push(
+            &mut w,
+            Warning::high_pressure(pressures, self.contact_modulus),
+        );
+        let zeta_max = self.spectrum.q_max() / self.spectrum.q_min();
+        warning::push(&mut w, Warning::zeta_beyond_band(zetas, zeta_max));
+        w
+    }
+
+    fn model(&self) -> Result<Persson<'_>> {
+        Persson::new(self.spectrum.as_ref(), self.contact_modulus)
+    }
+
+    fn band(&self) -> (f64, f64) {
+        (self.spectrum.q_min(), self.spectrum.q_max())
+    }
+}
+
+/// A/A0 against the nominal pressures (`area`).
+///
+/// # Errors
+/// A pressure not finite and positive; ζ < 1; γ invalid; solver failure.
+pub fn area(surface: &RoughContact, pressures: &[f64], out: &AreaOutput) -> Result<AreaReport> {
+    if pressures.is_empty() {
+        return Err(required(
+            "nominal_pressure (a non-empty list, for outputs.area)",
+        ));
+    }
+    let model = surface.model()?;
+    let zeta = out.zeta.unwrap_or_else(|| model.zeta_max());
+    let theory = TheorySpec {
+        theory: out.theory,
+        gamma: out.gamma,
+    }
+    .build()?;
+    let tolerance = out.tolerance.unwrap_or(corrected::DEFAULT_TOLERANCE);
+    let points = model.load_curve(pressures, zeta)?;
+    let chosen = corrected::load_curve(&model, theory, zeta, pressures, tolerance)?;
+    let original = out.theory == TheoryName::Original;
+    let (q_l, q_s) = surface.band();
+    Ok(AreaReport {
+        warnings: surface.warnings(pressures, &[zeta]),
+        surface: surface.description.clone(),
+        contact_modulus: surface.contact_modulus,
+        rms_height: surface.spectrum.rms_height(q_l, q_s)?.value,
+        rms_slope: surface.spectrum.rms_slope(q_l, q_s)?.value,
+        kappa_bush: Kappa::Bush.value(),
+        kappa_persson: Kappa::Persson.value(),
+        theory: out.theory,
+        gamma: theory.gamma(),
+        kappa: theory.low_load_kappa(),
+        zeta,
+        original_contact_fraction: points.iter().map(|p| p.contact_fraction).collect(),
+        points: points
+            .iter()
+            .zip(&chosen)
+            .map(|(p, c)| LoadPoint::new(p, c, original))
+            .collect(),
+    })
+}
+
+/// G(ζ) and A/A0 against magnification (`magnification`).
+///
+/// # Errors
+/// ζ < 1; a pressure not finite and positive.
+pub fn magnification(
+    surface: &RoughContact,
+    out: &MagnificationOutput,
+) -> Result<MagnificationReport> {
+    let model = surface.model()?;
+    let zeta = if out.zeta.is_empty() {
+        check_points(out.points)?;
+        log_zetas(model.zeta_max(), out.points)
+    } else {
+        out.zeta.clone()
+    };
+    Ok(MagnificationReport {
+        warnings: surface.warnings(&[out.nominal_pressure], &zeta),
+        surface: surface.description.clone(),
+        nominal_pressure: out.nominal_pressure,
+        contact_modulus: surface.contact_modulus,
+        zeta_max: model.zeta_max(),
+        points: model.magnification_curve(&zeta, out.nominal_pressure)?,
+    })
+}
+
+/// κ of both laws and, with a surface and pressures, the linear fractions (`kappa`).
+///
+/// # Errors
+/// A pressure not finite and positive.
+pub fn kappa(surface: Option<(&RoughContact, &[f64])>) -> Result<KappaReport> {
+    let mut r = KappaReport {
+        surface: surface.and_then(|(s, _)| s.description.clone()),
+        kappa_bush: Kappa::Bush.value(),
+        kappa_persson: Kappa::Persson.value(),
+        rms_slope: None,
+        points: vec![],
+        warnings: vec![],
+    };
+    if let Some((s, pressures)) = surface {
+        r.warnings = s.warnings(pressures, &[]);
+        let (q_l, q_s) = s.band();
+        let slope = s.spectrum.rms_slope(q_l, q_s)?.value;
+        r.rms_slope = Some(slope);
+        for &p in pressures {
+            check::positive("pressure", p)?;
+            r.points.push(LinearPoint {
+                nominal_pressure: p,
+                contact_fraction_bush_linear: Kappa::Bush.linear_fraction(
+                    p,
+                    s.contact_modulus,
+                    slope,
+                ),
+                contact_fraction_persson_linear: Kappa::Persson.linear_fraction(
+                    p,
+                    s.contact_modulus,
+                    slope,
+                ),
+            });
+        }
+    }
+    Ok(r)
+}
+
+/// A/A0 against load for several theories (`theories`).
+///
+/// # Errors
+/// As [`corrected::load_curve`].
+pub fn theories(
+    surface: &RoughContact,
+    pressures: &[f64],
+    out: &TheoriesOutput,
+) -> Result<TheoriesReport> {
+    if pressures.is_empty() {
+        return Err(required(
+            "nominal_pressure (a non-empty list, for outputs.theories)",
+        ));
+    }
+    let model = surface.model()?;
+    let zeta = out.zeta.unwrap_or_else(|| model.zeta_max());
+    let tolerance = out.tolerance.unwrap_or(corrected::DEFAULT_TOLERANCE);
+    let list = if out.theories.is_empty() {
+        TheorySpec::all()
+    } else {
+        out.theories.clone()
+    };
+    let curves = list
+        .iter()
+        .map(|spec| {
+            let th = spec.build()?;
+            Ok(TheoryCurve {
+                theory: spec.theory,
+                gamma: th.gamma(),
+                kappa: th.low_load_kappa(),
+                points: corrected::load_curve(&model, th, zeta, pressures, tolerance)?,
+            })
+        })
+        .collect::<Result<Vec<_>>>()?;
+    Ok(TheoriesReport {
+        warnings: surface.warnings(pressures, &[zeta]),
+        contact_modulus: surface.contact_modulus,
+        zeta,
+        rms_slope: model.slope_variance(zeta)?.value.sqrt(),
+        curves,
+    })
+}
+
+/// Mean separation, stiffness and energy against load (`separation`);
+/// `plot_pressures` adds a curve for a figure.
+///
+/// # Errors
+/// A pressure not finite and positive; a tolerance out of range; an integral
+/// that does not converge.
+pub fn separation(
+    surface: &RoughContact,
+    pressures: &[f64],
+    out: &SeparationOutput,
+    plot_pressures: &[f64],
+) -> Result<SeparationReport> {
+    if pressures.is_empty() {
+        return Err(required(
+            "nominal_pressure (a non-empty list, for outputs.separation)",
+        ));
+    }
+    let tolerance = out
+        .tolerance
+        .unwrap_or(persson::separation::DEFAULT_TOLERANCE);
+    let model = Separation::new(surface.spectrum.as_ref(), surface.contact_modulus)?
+        .with_tolerance(tolerance)?
+        .with_breaks(&surface.breaks);
+    let points = model.load_curve(pressures)?;
+    let law = model.low_load_law()?;
+    let full = model.full_contact_energy()?;
+    let (q_l, q_s) = surface.band();
+    Ok(SeparationReport {
+        warnings: surface.warnings(pressures, &[]),
+        surface: surface.description.clone(),
+        contact_modulus: surface.contact_modulus,
+        rms_height: surface.spectrum.rms_height(q_l, q_s)?.value,
+        rms_slope: surface.spectrum.rms_slope(q_l, q_s)?.value,
+        tolerance,
+        low_load_length: law.length.value,
+        low_load_length_error_bound: law.length.error,
+        reference_pressure: law.reference_pressure.value,
+        reference_pressure_error_bound: law.reference_pressure.error,
+        full_contact_energy: full.value,
+        full_contact_energy_error_bound: full.error,
+        points,
+        plot_points: if plot_pressures.is_empty() {
+            vec![]
+        } else {
+            model.load_curve(plot_pressures)?
+        },
+    })
+}
+
+/// Dimensionless stress distributions at each G (`stress`): σ/σH at
+/// `sigma_ratio`, or `points` values over the distribution when empty.
+///
+/// # Errors
+/// As [`Solver::new`] and [`Solver::curve`].
+pub fn stress_dimensionless(
+    start: &Start,
+    g: &[f64],
+    yield_ratio: Option<f64>,
+    tolerance: f64,
+    sigma_ratio: &[f64],
+    points: usize,
+) -> Result<StressReport> {
+    if g.is_empty() {
+        return Err(required(
+            "outputs.stress.g (dimensionless) or outputs.stress.zeta (pressure unit)",
+        ));
+    }
+    if sigma_ratio.is_empty() {
+        check_points(points)?;
+    }
+    let curves = g
+        .iter()
+        .map(|&g| {
+            let solver = Solver::new(start, g, yield_ratio, tolerance)?;
+            let sigma = if sigma_ratio.is_empty() {
+                solver.grid(points)
+            } else {
+                sigma_ratio.to_vec()
+            };
+            let c = solver.curve(&sigma)?;
+            Ok(StressCurveReport {
+                g,
+                zeta: None,
+                tau: Some(c.tau),
+                sigma_ratio: c.sigma_ratio,
+                scaled_density: c.scaled_density,
+                sigma: vec![],
+                density: vec![],
+                contact_fraction: c.contact_fraction,
+                elastic_fraction: c.elastic_fraction,
+                plastic_fraction: c.plastic_fraction,
+                non_contact_fraction: Some(c.non_contact_fraction),
+                scaled_density_error_bound: c.scaled_density_error_bound,
+                elastic_fraction_error_bound: c.elastic_fraction_error_bound,
+                plastic_fraction_error_bound: c.plastic_fraction_error_bound,
+                method: c.method,
+            })
+        })
+        .collect::<Result<Vec<_>>>()?;
+    Ok(StressReport {
+        start: start.kind(),
+        mean_ratio: start.mean_ratio(),
+        peak_pressure: None,
+        nominal_pressure: None,
+        contact_radius: None,
+        yield_ratio,
+        yield_stress: None,
+        curves,
+        warnings: vec![],
+    })
+}
+
+/// Stress distributions in the pressure unit at the magnifications of `out`.
+///
+/// # Errors
+/// Inconsistent start and contact; as [`StressScene::curves`].
+pub fn stress_physical(surface: &RoughContact, out: &StressOutput) -> Result<StressReport> {
+    check_points(out.points)?;
+    if out.zeta.is_empty() {
+        return Err(required("zeta (a non-empty list of magnifications)"));
+    }
+    let model = surface.model()?;
+    let e_star = surface.contact_modulus;
+    let start = Start::from(out.start);
+    let contact = match (&out.ball, &out.cylinder, out.peak_pressure) {
+        (Some(b), None, None) if out.start == StartName::Hertz => {
+            Some(HertzContact::ball(b.radius, b.load, e_star)?)
+        }
+        (None, Some(c), None) if out.start == StartName::Cylinder => {
+            Some(HertzContact::cylinder(c.radius, c.load_per_length, e_star)?)
+        }
+        (None, None, Some(_)) => None,
+        _ => {
+            return Err(required(
+                "exactly one of peak_pressure, ball (start hertz), cylinder (start cylinder)",
+            ))
+        }
+    };
+    let problem = match (&contact, out.peak_pressure) {
+        (Some(c), _) => StressScene::hertz(c, out.yield_stress),
+        (None, Some(p)) => StressScene::new(start.clone(), p, out.yield_stress),
+        (None, None) => Err(required("peak_pressure, ball or cylinder")),
+    }?;
+    // σ from 0 to σY, or (elastic) to σH plus four standard deviations
+    // √(2G) σ0 of the widest curve.
+    let mut g_max = 0.0f64;
+    for &z in &out.zeta {
+        g_max = g_max.max(model.g(z, problem.nominal_pressure())?.value);
+    }
+    let top = out
+        .yield_stress
+        .unwrap_or(problem.peak_pressure + 4.0 * (2.0 * g_max).sqrt() * problem.nominal_pressure());
+    let n = out.points;
+    let sigma: Vec<f64> = (0..n).map(|i| top * i as f64 / (n - 1) as f64).collect();
+    let curves = problem
+        .curves(&model, &out.zeta, &sigma, out.tolerance)?
+        .into_iter()
+        .map(|c| StressCurveReport {
+            g: c.g.value,
+            zeta: Some(c.zeta),
+            tau: None,
+            sigma_ratio: vec![],
+            scaled_density: vec![],
+            sigma: c.sigma,
+            density: c.density,
+            contact_fraction: c.contact_fraction,
+            elastic_fraction: c.elastic_fraction,
+            plastic_fraction: c.plastic_fraction,
+            non_contact_fraction: None,
+            scaled_density_error_bound: c.scaled_density_error_bound,
+            elastic_fraction_error_bound: c.elastic_fraction_error_bound,
+            plastic_fraction_error_bound: c.plastic_fraction_error_bound,
+            method: c.method,
+        })
+        .collect();
+    Ok(StressReport {
+        start: start.kind(),
+        mean_ratio: start.mean_ratio(),
+        peak_pressure: Some(problem.peak_pressure),
+        nominal_pressure: Some(problem.nominal_pressure()),
+        contact_radius: contact.map(|c| c.contact_radius),
+        yield_ratio: None,
+        yield_stress: out.yield_stress,
+        curves,
+        warnings: surface.warnings(&[problem.nominal_pressure()], &out.zeta),
+    })
+}
+
+/// Moments over [q_min, q_max] (default the whole band), a power-law fit
+/// over the upper half of the band, and C(q) at `points` log-spaced q.
+///
+/// # Errors
+/// A band that is empty or not positive.
+pub fn spectrum(
+    s: &dyn Spectrum,
+    description: Option<String>,
+    q_min: Option<f64>,
+    q_max: Option<f64>,
+    points: usize,
+) -> Result<SpectrumReport> {
+    check_points(points)?;
+    let lo = check::positive("q_min", q_min.unwrap_or(s.q_min()))?;
+    let hi = check::positive("q_max", q_max.unwrap_or(s.q_max()))?;
+    if hi <= lo {
+        return Err(Error::invalid(
+            "q_max",
+            hi,
+            format!("> q_min = {}", crate::table::number(lo, 6)),
+        ));
+    }
+    let (h, m, k) = (
+        s.rms_height(lo, hi)?,
+        s.rms_slope(lo, hi)?,
+        s.rms_curvature(lo, hi)?,
+    );
+    let (q_l, q_s) = (s.q_min(), s.q_max());
+    let mid = (q_l * q_s).sqrt();
+    let curve: Vec<SpectrumPoint> = (0..=200)
+        .map(|i| (q_l * (q_s / q_l).powf(f64::from(i) / 200.0)).min(q_s))
+        .map(|q| SpectrumPoint { q, c: s.c(q) })
+        .collect();
+    let upper: Vec<(f64, f64)> = curve
+        .iter()
+        .filter(|p| p.q >= mid)
+        .map(|p| (p.q, p.c))
+        .collect();
+    let fit = persson::spectrum::fit_power_law(&upper)?;
+    let n = points;
+    let table = (0..n)
+        .map(|i| {
+            let q = if i + 1 == n {
+                q_s
+            } else {
+                q_l * (q_s / q_l).powf(i as f64 / (n - 1) as f64)
+            };
+            SpectrumPoint { q, c: s.c(q) }
+        })
+        .collect();
+    Ok(SpectrumReport {
+        surface: description,
+        q_l,
+        q_s,
+        q_min: lo,
+        q_max: hi,
+        rms_height: h.value,
+        rms_height_error_bound: h.error,
+        rms_slope: m.value,
+        rms_slope_error_bound: m.error,
+        rms_curvature: k.value,
+        rms_curvature_error_bound: k.error,
+        power_law_fit: PowerLawFit {
+            prefactor: fit.0,
+            exponent: fit.1,
+            hurst: -fit.1 / 2.0 - 1.0,
+            q_min: mid,
+            q_max: q_s,
+        },
+        table,
+        curve,
+        warnings: Warning::steep_slope(m.value).into_iter().collect(),
+    })
+}
+
+/// The warnings a spectrum gives whatever is computed from it: the
+/// normalisation a spectrum file was read in (and a C(q) that rises, as a
+/// height profile would), and an rms slope over the band above 1.
+pub fn spectrum_warnings(spec: &SpectrumSpec, s: &dyn Spectrum) -> Vec<Warning> {
+    let mut w = Vec::new();
+    if let SpectrumSpec::Tabulated {
+        file, convention, ..
+    } = spec
+    {
+        w.push(Warning::PsdConvention {
+            file: file.clone(),
+            convention: *convention,
+        });
+        let (c_first, c_last) = (s.c(s.q_min()), s.c(s.q_max()));
+        if c_last >= c_first {
+            w.push(Warning::RisingSpectrum {
+                file: file.clone(),
+                c_first,
+                c_last,
+            });
+        }
+    }
+    if let Ok(m) = s.rms_slope(s.q_min(), s.q_max()) {
+        warning::push(&mut w, Warning::steep_slope(m.value));
+    }
+    w
+}
+
+/// A number of points of a curve or table: at least 2 (its two ends).
+fn check_points(points: usize) -> Result<usize> {
+    if points < 2 {
+        return Err(Error::invalid(
+            "points",
+            points as f64,
+            "an integer >= 2 (the curve's two ends)",
+        ));
+    }
+    Ok(points)
+}
+
+/// Prefix the parameter name of an error with its section.
+pub(crate) fn prefix(section: &str, e: Error) -> Error {
+    match e {
+        Error::InvalidParameter {
+            name,
+            value,
+            requirement,
+        } => Error::InvalidParameter {
+            name: format!("{section}{name}"),
+            value,
+            requirement,
+        },
+        Error::Inconsistent { name, requirement } if !name.starts_with(section) => {
+            Error::Inconsistent {
+                name: format!("{section}{name}"),
+                requirement,
+            }
+        }
+        other => other,
+    }
+}

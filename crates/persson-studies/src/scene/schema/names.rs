@@ -1,0 +1,185 @@
+//! The closed sets of a scene, spelled as on the command line: the
+//! convention of a spectrum file, the BEM's boundary, the stress start, the
+//! area theory, and the detrending and window of a measured surface.
+
+use schemars::JsonSchema;
+use serde::{Deserialize, Serialize};
+
+use super::required;
+use persson::corrected::Theory;
+use persson::error::{Error, Result};
+use persson::spectrum::Convention;
+use persson::stress::Start;
+
+names! {
+    /// Normalisation of a tabulated spectrum.
+    #[derive(Default)]
+    ConventionName {
+        /// Persson's: q in 1/m, C in m⁴.
+        #[default]
+        Persson = "persson",
+        /// SurfaceTopography / contact.engineering: C_Persson = C / (2π)².
+        SurfaceTopography = "surface-topography",
+        /// 1D profile spectrum of an isotropic surface (m³).
+        Profile1d = "profile1d",
+        /// Dimensionless FFT grid: k in units of 2π/L, C_Persson = (L/2π)² φ(k); needs the side L.
+        Grid = "grid",
+    }
+}
+
+impl ConventionName {
+    /// The library's convention; `size` is the side L of `grid`.
+    ///
+    /// # Errors
+    /// `grid` without a size; a size with another convention.
+    pub fn with(self, size: Option<f64>) -> Result<Convention> {
+        Ok(match (self, size) {
+            (ConventionName::Grid, Some(size)) => Convention::Grid { size },
+            (ConventionName::Grid, None) => return Err(required("size (for the convention grid)")),
+            (_, Some(_)) => {
+                return Err(Error::Inconsistent {
+                    name: "size".into(),
+                    requirement: "only with the convention grid".into(),
+                })
+            }
+            (ConventionName::Persson, None) => Convention::Persson,
+            (ConventionName::SurfaceTopography, None) => Convention::SurfaceTopography,
+            (ConventionName::Profile1d, None) => Convention::Profile1D,
+        })
+    }
+}
+
+names! {
+    /// A unit of length, for the numbers of a file that states none.
+    LengthUnitName {
+        /// Metres.
+        M = "m",
+        /// Millimetres.
+        Mm = "mm",
+        /// Micrometres.
+        Um = "um",
+        /// Nanometres.
+        Nm = "nm",
+        /// Picometres.
+        Pm = "pm",
+        /// Ångström (1e-10 m).
+        Angstrom = "angstrom",
+    }
+}
+
+names! {
+    /// Boundary condition of the FFT-BEM.
+    BoundaryName {
+        /// Periodic surface (the rough-contact default).
+        Periodic = "periodic",
+        /// Free (non-periodic) surface, zero-padded (the Hertz default).
+        Free = "free",
+    }
+}
+
+#[cfg(feature = "bem")]
+impl From<BoundaryName> for persson::bem::Boundary {
+    fn from(b: BoundaryName) -> Self {
+        match b {
+            BoundaryName::Periodic => persson::bem::Boundary::Periodic,
+            BoundaryName::Free => persson::bem::Boundary::Free,
+        }
+    }
+}
+
+names! {
+    /// Start condition P(σ, ζ = 1) of the stress distribution (Persson,
+    /// Bucher & Chiaia 2002, Figs. 2–4).
+    StartName {
+        /// Flat punch, P0 = δ(σ − σ0) (σH = σ0).
+        Flat = "flat",
+        /// Hertz ball, P0 = 2σ/σH², σ0 = 2σH/3.
+        Hertz = "hertz",
+        /// Cylinder, P0 = (σ/σH²)(1 − (σ/σH)²)^(−1/2), σ0 = πσH/4.
+        Cylinder = "cylinder",
+    }
+}
+
+impl From<StartName> for Start {
+    fn from(s: StartName) -> Self {
+        match s {
+            StartName::Flat => Start::Flat,
+            StartName::Hertz => Start::Hertz,
+            StartName::Cylinder => Start::Cylinder,
+        }
+    }
+}
+
+names! {
+    /// Contact-area theory.
+    #[derive(Default)]
+    TheoryName {
+        /// Persson, J. Chem. Phys. 115, 3840 (2001).
+        #[default]
+        Original = "original",
+        /// Yang & Persson, J. Phys.: Condens. Matter 20, 215214 (2008), γ = 0.45.
+        YangPersson = "yang-persson",
+        /// Wang & Müser, Tribol. Lett. 65, 103 (2017), γ = 5/9.
+        WangMuser = "wang-muser",
+        /// Xu et al., Tribol. Lett. (2024), doi:10.1007/s11249-024-01838-4, γ = 0.42.
+        Xu = "xu",
+    }
+}
+
+/// A theory and (corrected theories) its γ.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct TheorySpec {
+    /// The theory.
+    pub theory: TheoryName,
+    /// γ of a corrected theory (default: the paper's value; none for `original`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub gamma: Option<f64>,
+}
+
+impl TheorySpec {
+    /// The validated theory.
+    ///
+    /// # Errors
+    /// γ given for `original`, or out of the theory's range.
+    pub fn build(&self) -> Result<Theory> {
+        Theory::from_name(self.theory.name(), self.gamma)
+    }
+
+    /// Each theory with its default γ.
+    pub fn all() -> Vec<TheorySpec> {
+        TheoryName::ALL
+            .iter()
+            .map(|&theory| TheorySpec {
+                theory,
+                gamma: None,
+            })
+            .collect()
+    }
+}
+
+names! {
+    /// Least-squares detrending of a measured surface.
+    DetrendName {
+        /// Heights as they are.
+        None = "none",
+        /// The mean height.
+        Mean = "mean",
+        /// The least-squares plane.
+        Plane = "plane",
+        /// The least-squares quadratic.
+        Curvature = "curvature",
+    }
+}
+
+names! {
+    /// Window applied before the spectrum of a measured surface.
+    WindowName {
+        /// No window.
+        None = "none",
+        /// Radial Hann window.
+        Hann = "hann",
+        /// Radial Blackman window.
+        Blackman = "blackman",
+    }
+}

@@ -1,0 +1,263 @@
+//! What a scene asks for: one struct per output, absent outputs not computed.
+
+use std::path::PathBuf;
+
+use schemars::JsonSchema;
+use serde::{Deserialize, Serialize};
+
+use super::{BoundaryName, StartName, TheoryName, TheorySpec};
+
+/// The outputs a scene asks for; absent ones are not computed.
+#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Outputs {
+    /// Moments of the spectrum, a power-law fit and C(q).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub spectrum: Option<SpectrumOutput>,
+    /// A/A0 against the scene's nominal pressures (load curve).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub area: Option<AreaOutput>,
+    /// G(ζ) and A/A0 against magnification at one pressure.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub magnification: Option<MagnificationOutput>,
+    /// κ of the linear low-load law; with spectrum, material and pressures
+    /// also the linear contact fractions.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub kappa: Option<KappaOutput>,
+    /// A/A0 against load for several contact-area theories.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub theories: Option<TheoriesOutput>,
+    /// Mean interfacial separation, stiffness and elastic energy against load.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub separation: Option<SeparationOutput>,
+    /// Stress distributions P(σ, ζ).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stress: Option<StressOutput>,
+    /// FFT-BEM rough contact at the scene's nominal pressures (feature `bem`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bem: Option<BemOutput>,
+    /// FFT-BEM Hertz convergence, η per grid (feature `bem`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bem_hertz: Option<BemHertzOutput>,
+}
+
+/// Spectrum summary: rms height, slope and curvature over [q_min, q_max],
+/// a power-law fit and C(q).
+#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SpectrumOutput {
+    /// Lower end of the band of the moments (default q_l), 1/m.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub q_min: Option<f64>,
+    /// Upper end of the band of the moments (default q_s), 1/m.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub q_max: Option<f64>,
+    /// Number of log-spaced q in the C(q) table (default 11).
+    #[serde(default = "default_spectrum_points")]
+    pub points: usize,
+    /// Draw C(q) with the fitted power law (.svg or .png).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub plot: Option<PathBuf>,
+}
+
+fn default_spectrum_points() -> usize {
+    11
+}
+
+/// Load curve: A/A0 against the scene's nominal pressures.
+#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct AreaOutput {
+    /// Magnification ζ (default q_s/q_l, full magnification).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub zeta: Option<f64>,
+    /// Contact-area theory (default `original`).
+    #[serde(default)]
+    pub theory: TheoryName,
+    /// γ of a corrected theory (default: the paper's value).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub gamma: Option<f64>,
+    /// Absolute tolerance on A/A0 of the corrected theories' solver (default 1e-12).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tolerance: Option<f64>,
+    /// Draw A/A0 against load with the Bush and Persson lines (.svg or .png).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub plot: Option<PathBuf>,
+}
+
+/// Magnification curve: G(ζ) and A/A0 against ζ at one pressure.
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct MagnificationOutput {
+    /// Nominal pressure σ0.
+    pub nominal_pressure: f64,
+    /// Explicit magnifications ζ ≥ 1 (default: `points` log-spaced from 1 to q_s/q_l).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub zeta: Vec<f64>,
+    /// Number of log-spaced magnifications (default 41).
+    #[serde(default = "default_points")]
+    pub points: usize,
+    /// Draw A/A0 against ζ (.svg or .png).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub plot: Option<PathBuf>,
+    /// Draw G(ζ) (.svg or .png).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub plot_g: Option<PathBuf>,
+}
+
+fn default_points() -> usize {
+    41
+}
+
+/// κ output (no options).
+#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct KappaOutput {}
+
+/// Corrected-theory load curves at the scene's nominal pressures.
+#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct TheoriesOutput {
+    /// The theories, e.g. `{"theory": "yang-persson", "gamma": 0.42}` (default: all four with their default γ).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub theories: Vec<TheorySpec>,
+    /// Magnification ζ (default full).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub zeta: Option<f64>,
+    /// Absolute tolerance on A/A0 (default 1e-12).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tolerance: Option<f64>,
+    /// Draw A/A0 against load for all of them (.svg or .png).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub plot: Option<PathBuf>,
+}
+
+/// Mean-separation load curve at the scene's nominal pressures (Persson, Phys. Rev. Lett. 99, 125502 (2007)).
+#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SeparationOutput {
+    /// Relative tolerance of the wavevector integrals (default 1e-10).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tolerance: Option<f64>,
+}
+
+/// Stress distributions: dimensionless at given G (`g`), or in the pressure
+/// unit at given magnifications (`zeta`, with the scene's spectrum and material).
+#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct StressOutput {
+    /// Start condition P(σ, ζ = 1).
+    pub start: StartName,
+    /// Dimensionless mode: the values of G (σ in units of σH).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub g: Vec<f64>,
+    /// Dimensionless mode: σY/σH (absent: elastic).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub yield_ratio: Option<f64>,
+    /// Physical mode: the magnifications ζ.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub zeta: Vec<f64>,
+    /// Physical mode: σH (flat: the nominal pressure). Or give `ball` / `cylinder`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub peak_pressure: Option<f64>,
+    /// Physical mode: a Hertz ball (start `hertz`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ball: Option<BallSpec>,
+    /// Physical mode: a Hertz cylinder (start `cylinder`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub cylinder: Option<CylinderSpec>,
+    /// Physical mode: σY (absent: elastic).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub yield_stress: Option<f64>,
+    /// Number of σ values per curve (default 201).
+    #[serde(default = "default_stress_points")]
+    pub points: usize,
+    /// Absolute tolerance of σH·P and the fractions (default 1e-12).
+    #[serde(default = "default_stress_tolerance")]
+    pub tolerance: f64,
+    /// Draw the family of curves (.svg or .png).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub plot: Option<PathBuf>,
+}
+
+fn default_stress_points() -> usize {
+    201
+}
+
+fn default_stress_tolerance() -> f64 {
+    1e-12
+}
+
+/// A Hertz ball: radius (m) and load (N).
+#[derive(Debug, Clone, Copy, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct BallSpec {
+    /// Radius R, m.
+    pub radius: f64,
+    /// Load F, N.
+    pub load: f64,
+}
+
+/// A Hertz cylinder: radius (m) and load per unit length (N/m).
+#[derive(Debug, Clone, Copy, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct CylinderSpec {
+    /// Radius R, m.
+    pub radius: f64,
+    /// Load per unit length F, N/m.
+    pub load_per_length: f64,
+}
+
+/// FFT-BEM rough contact: the surface is synthesised from the scene's
+/// spectrum (side 2π/q_l, `grid` nodes, `seed`) or read from its height map.
+#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct BemOutput {
+    /// Grid side N of the synthesised surface (a height map sets its own).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub grid: Option<usize>,
+    /// Seed of the synthesised surface (Pcg64Mcg, value-stable; default 1).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub seed: Option<u64>,
+    /// Boundary condition (default `periodic`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub boundary: Option<BoundaryName>,
+    /// Solver tolerance ε (default 1e-10).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tolerance: Option<f64>,
+    /// Write the pressure histograms P(σ) as one CSV (nominal_pressure,
+    /// sigma_low, sigma_high, density; each pressure's bins integrate to its A/A0).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub histogram: Option<PathBuf>,
+    /// Number of histogram bins (default 50).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bins: Option<usize>,
+    /// Draw A/A0 against load with the Bush linear law (.svg or .png).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub plot: Option<PathBuf>,
+    /// Yield stress σY (unit of E*): pressures bounded by 0 ≤ p ≤ σY; each
+    /// point reports the elastic and plastic fractions, the histogram keeps
+    /// the plastic peak at σY as its own row.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub yield_stress: Option<f64>,
+}
+
+/// FFT-BEM Hertz convergence: sphere R = L, a = 0.1 L, E* = 1 (Molinari,
+/// EPFL lecture "From single asperity to multi asperity contact", Table 1).
+#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct BemHertzOutput {
+    /// Grid sides (default 64, 128, 256).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub grids: Vec<usize>,
+    /// Boundary condition (default `free`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub boundary: Option<BoundaryName>,
+    /// Solver tolerance ε (default 1e-12).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tolerance: Option<f64>,
+    /// Yield stress σY (unit of E*; the peak pressure is p₀ = 0.2/π ≈ 0.0637):
+    /// adds the plastic disc's radius and fractions per grid.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub yield_stress: Option<f64>,
+}

@@ -1,0 +1,233 @@
+//! The roughness of a scene: a self-affine spectrum, a tabulated one, or a
+//! measured height map.
+
+use std::path::PathBuf;
+
+use schemars::JsonSchema;
+use serde::{Deserialize, Serialize};
+
+use super::{required, ConventionName, DetrendName, LengthUnitName, WindowName};
+use persson::error::Result;
+use persson::spectrum::{Amplitude, SelfAffine, Spectrum, Tabulated};
+
+/// A value built from a scene's entry, with what was assumed to build it in
+/// words (a measured surface's detrending, window, periodicity and band),
+/// for report titles.
+#[derive(Debug, Clone)]
+#[non_exhaustive]
+pub struct Described<T> {
+    /// The value.
+    pub value: T,
+    /// What was assumed (`None`: nothing worth saying).
+    pub description: Option<String>,
+    /// The warnings of a measured surface's analysis (a resampled line scan,
+    /// no Hurst fit, bins left out); empty for the others.
+    pub warnings: Vec<crate::warning::Warning>,
+}
+
+/// The roughness of a scene.
+#[derive(Debug, Clone, PartialEq, Deserialize, Serialize, JsonSchema)]
+#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
+pub enum SpectrumSpec {
+    /// Self-affine with roll-off: C = C(q_r) for q_l ≤ q < q_r, C(q_r)(q/q_r)^(−2(H+1))
+    /// up to q_s; exactly one amplitude (`rms_height`, `rms_slope` or `c_r`).
+    SelfAffine {
+        /// Hurst exponent H in (0, 1).
+        hurst: f64,
+        /// Lower cut-off q_l, 1/m.
+        q_l: f64,
+        /// Roll-off q_r, 1/m (default q_l: no roll-off).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        q_r: Option<f64>,
+        /// Upper cut-off q_s, 1/m.
+        q_s: f64,
+        /// rms height over [q_l, q_s], m.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        rms_height: Option<f64>,
+        /// rms slope over [q_l, q_s].
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        rms_slope: Option<f64>,
+        /// C(q_r), m⁴.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        c_r: Option<f64>,
+    },
+    /// A tabulated spectrum: a CSV file of q and C (relative paths are
+    /// relative to the scene file).
+    Tabulated {
+        /// The file.
+        file: PathBuf,
+        /// Its normalisation (default `persson`).
+        #[serde(default)]
+        convention: ConventionName,
+        /// Side L (m) of the periodic surface, for the convention `grid`.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        size: Option<f64>,
+    },
+    /// A measured height map (or line scans): its isotropic spectrum serves
+    /// every output, and `outputs.bem` solves on the map itself (relative
+    /// paths are relative to the scene file).
+    HeightMap(HeightMapSpec),
+}
+
+/// A measured surface, read with [`persson::topography::read()`] and
+/// conditioned as [`persson::topography::analyse`] does (feature `topography`);
+/// the same fields as the flags `--surface`, `--size`, `--pixel-size`,
+/// `--periodic`, `--detrend`, `--window`, `--fill-undefined`, `--q-max`.
+#[derive(Debug, Clone, PartialEq, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct HeightMapSpec {
+    /// The file: `.npy`, text matrix, `.xyz`, `.gsf`, `.x3p` or a two-column line scan.
+    pub file: PathBuf,
+    /// Physical size: `Lx` (square pixels) or `[Lx, Ly]`, m, `Lx` along a row of a
+    /// `.npy` or text matrix (checked against the size of files that store one).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub size: Option<Sides>,
+    /// Pixel size Δ (square pixels), m, instead of `size`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pixel_size: Option<f64>,
+    /// Whether the surface repeats itself (default: not, a measurement).
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub periodic: bool,
+    /// Detrending (default: plane for non-periodic maps, none for periodic ones).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub detrend: Option<DetrendName>,
+    /// Window (default: hann for non-periodic maps, none for periodic ones).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub window: Option<WindowName>,
+    /// Fill undefined points by harmonic interpolation instead of failing.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub fill_undefined: bool,
+    /// Upper end of the band, 1/m (default: the Nyquist wavevector π/Δ).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub q_max: Option<f64>,
+    /// Unit of the heights of a file that states none (default m; a file's
+    /// own unit must agree).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub height_unit: Option<LengthUnitName>,
+    /// Unit of the x (and y) coordinates of a line scan or XYZ file that
+    /// states none (default m).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub lateral_unit: Option<LengthUnitName>,
+    /// Swap the axes of the map after reading (a row of the file becomes a
+    /// column: for arrays saved in SurfaceTopography's `[ix, iy]` order).
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub transpose: bool,
+}
+
+/// A physical size: one side `Lx` (square pixels) or both `[Lx, Ly]`, m.
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize, Serialize, JsonSchema)]
+#[serde(untagged)]
+pub enum Sides {
+    /// `Lx`; `Ly = Lx·ny/nx`.
+    One(f64),
+    /// `[Lx, Ly]`.
+    Two([f64; 2]),
+}
+
+impl HeightMapSpec {
+    /// A spec with every option at its default.
+    pub fn new(file: PathBuf) -> Self {
+        HeightMapSpec {
+            file,
+            size: None,
+            pixel_size: None,
+            periodic: false,
+            detrend: None,
+            window: None,
+            fill_undefined: false,
+            q_max: None,
+            height_unit: None,
+            lateral_unit: None,
+            transpose: false,
+        }
+    }
+}
+
+impl SpectrumSpec {
+    /// The built-in example (see [`super::EXAMPLE`]).
+    pub fn example() -> Self {
+        SpectrumSpec::SelfAffine {
+            hurst: 0.8,
+            q_l: 1e4,
+            q_r: Some(1e5),
+            q_s: 1e8,
+            rms_height: Some(1e-6),
+            rms_slope: None,
+            c_r: None,
+        }
+    }
+
+    /// Build the spectrum (a height map's: its binned isotropic spectrum,
+    /// feature `topography`).
+    ///
+    /// # Errors
+    /// Missing or invalid fields (named as in the scene file); file errors.
+    pub fn build(&self) -> Result<Box<dyn Spectrum>> {
+        match self {
+            SpectrumSpec::SelfAffine {
+                hurst,
+                q_l,
+                q_r,
+                q_s,
+                rms_height,
+                rms_slope,
+                c_r,
+            } => {
+                let amp = match (rms_height, rms_slope, c_r) {
+                    (Some(x), None, None) => Amplitude::RmsHeight(*x),
+                    (None, Some(x), None) => Amplitude::RmsSlope(*x),
+                    (None, None, Some(x)) => Amplitude::CR(*x),
+                    _ => return Err(required("exactly one of rms_height, rms_slope, c_r")),
+                };
+                Ok(Box::new(SelfAffine::new(
+                    *q_l,
+                    q_r.unwrap_or(*q_l),
+                    *q_s,
+                    *hurst,
+                    amp,
+                )?))
+            }
+            SpectrumSpec::Tabulated {
+                file,
+                convention,
+                size,
+            } => Ok(Box::new(Tabulated::from_csv(
+                file,
+                convention.with(*size)?,
+            )?)),
+            SpectrumSpec::HeightMap(m) => m.spectrum(),
+        }
+    }
+
+    /// As [`SpectrumSpec::build`], with what a measured surface assumed
+    /// (detrend, window, periodicity, band) in words for the report titles.
+    ///
+    /// # Errors
+    /// As [`SpectrumSpec::build`].
+    pub fn build_described(&self) -> Result<Described<Box<dyn Spectrum>>> {
+        match self {
+            SpectrumSpec::HeightMap(m) => {
+                let d = m.spectrum_described()?;
+                Ok(Described {
+                    value: Box::new(d.value),
+                    description: d.description,
+                    warnings: d.warnings,
+                })
+            }
+            _ => Ok(Described {
+                value: self.build()?,
+                description: None,
+                warnings: Vec::new(),
+            }),
+        }
+    }
+
+    /// Where C(q) has a kink inside the band (the roll-off), for the
+    /// wavevector integrals of the mean separation.
+    pub fn breaks(&self) -> Vec<f64> {
+        match self {
+            SpectrumSpec::SelfAffine { q_r: Some(q_r), .. } => vec![*q_r],
+            _ => vec![],
+        }
+    }
+}

@@ -1,0 +1,534 @@
+//! Warnings: remarks on the input that never change a number.
+//!
+//! A report that can warn carries a list of [`Warning`]s next to its numbers:
+//! an input that is valid but probably not what was meant (a pressure close
+//! to the modulus, a slope outside the small-slope theory, a magnification
+//! beyond the band), or an assumption the computation made that the user
+//! should know of (the normalisation of a spectrum file). Each is one line of
+//! text ([`std::fmt::Display`]) that names the input (the spectrum's
+//! convention, the grid, the quantity), never a command-line flag: the same
+//! text reaches a Python user, and the `persson` binary adds its flag when it
+//! prints the line on stderr (`persson: warning: <text>`).
+//!
+//! In JSON each warning is an object with its kind (a label from a closed
+//! set, to filter on), its text and its typed fields:
+//! ```text
+//! {"kind": "steep_slope", "rms_slope": 1.2e5, "message": "rms slope h'_rms = 120000 is above 1: …"}
+//! ```
+
+use std::fmt;
+use std::path::PathBuf;
+
+use serde::{Serialize, Serializer};
+
+use crate::scene::ConventionName;
+use crate::table::number;
+
+/// σ0 above this fraction of E* is warned of ([`Warning::HighPressure`]).
+pub const HIGH_PRESSURE_RATIO: f64 = 0.1;
+
+/// An rms slope above this is warned of ([`Warning::SteepSlope`]).
+pub const STEEP_SLOPE: f64 = 1.0;
+
+/// One remark on the input of a calculation; it never changes a number.
+///
+/// Serialised as `{"kind": …, <its fields>, "message": <its text>}`, the kind
+/// the variant's name in snake_case (`high_pressure`, `psd_convention`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(remote = "Self", tag = "kind", rename_all = "snake_case")]
+#[non_exhaustive]
+pub enum Warning {
+    /// The nominal pressure σ0 is above [`HIGH_PRESSURE_RATIO`] E*: strains of
+    /// order one, or (above E*) most likely a modulus and a pressure in
+    /// different units (E in MPa, σ0 in Pa).
+    HighPressure {
+        /// The largest σ0 given.
+        nominal_pressure: f64,
+        /// E*.
+        contact_modulus: f64,
+        /// How many of the pressures are above the threshold.
+        count: usize,
+    },
+    /// The rms slope over the band is above [`STEEP_SLOPE`]: outside the
+    /// small-slope theory (often a height in µm given as m).
+    SteepSlope {
+        /// The rms slope h'_rms over [q_l, q_s].
+        rms_slope: f64,
+    },
+    /// A magnification beyond q_s/q_l: C(q) = 0 above q_s, so the result is
+    /// that of full magnification.
+    ZetaBeyondBand {
+        /// The largest ζ given.
+        zeta: f64,
+        /// q_s/q_l.
+        zeta_max: f64,
+    },
+    /// A BEM surface band-limited by its grid: its rms slope is well below
+    /// the spectrum's.
+    BandLimited {
+        /// Grid side N.
+        grid: usize,
+        /// rms slope of the surface on the grid.
+        surface_rms_slope: f64,
+        /// rms slope of the spectrum over [q_l, q_s].
+        rms_slope: f64,
+    },
+    /// A spectrum file was read in this normalisation.
+    PsdConvention {
+        /// The file.
+        file: PathBuf,
+        /// The convention.
+        convention: ConventionName,
+    },
+    /// A spectrum file whose C(q) does not fall with q: perhaps a height
+    /// profile given as a spectrum.
+    RisingSpectrum {
+        /// The file.
+        file: PathBuf,
+        /// C at the first q of the file.
+        c_first: f64,
+        /// C at the last q.
+        c_last: f64,
+    },
+    /// q_s is not resolved by the coarsest grid of a comparison and was
+    /// clipped.
+    ClippedBand {
+        /// The q_s asked for.
+        q_s_requested: f64,
+        /// The q_s used.
+        q_s: f64,
+        /// q_l.
+        q_l: f64,
+        /// Side of the coarsest grid.
+        grid: usize,
+        /// Pixels per shortest wavelength of the sweep.
+        pixels_per_wavelength: f64,
+    },
+    /// A non-periodic measured map in a resolution study: its coarser copies
+    /// are block averages, so N → ∞ is a resolution trend.
+    MapNotPeriodic,
+    /// A measured line scan whose x positions are not equally spaced was
+    /// linearly interpolated onto equally spaced points.
+    Resampled {
+        /// The file.
+        file: PathBuf,
+        /// Points of the scan.
+        points: usize,
+        /// The largest deviation of an x from the equally spaced grid, in pixels.
+        max_deviation: f64,
+    },
+    /// No Hurst exponent for a measured surface: too few spectrum bins.
+    HurstNotFitted {
+        /// The file.
+        file: PathBuf,
+        /// Bins with C > 0 in the band.
+        bins: usize,
+    },
+    /// No Hurst exponent for a measured surface: the fit is outside (0, 1).
+    HurstOutOfRange {
+        /// The file.
+        file: PathBuf,
+        /// The fitted H.
+        hurst: f64,
+        /// Its standard error.
+        hurst_error: f64,
+    },
+    /// Bins of a measured line scan's 1D spectrum without an isotropic 2D
+    /// counterpart, left out of C(q).
+    BinsLeftOut {
+        /// The file.
+        file: PathBuf,
+        /// Bins left out.
+        count: usize,
+        /// Bins of the 1D spectrum.
+        of: usize,
+        /// Smallest and largest q left out, 1/m.
+        q_range: (f64, f64),
+    },
+}
+
+impl Warning {
+    /// [`Warning::HighPressure`] when some σ0 is above [`HIGH_PRESSURE_RATIO`] E*.
+    pub fn high_pressure(pressures: &[f64], contact_modulus: f64) -> Option<Self> {
+        let above: Vec<f64> = pressures
+            .iter()
+            .copied()
+            .filter(|p| *p > HIGH_PRESSURE_RATIO * contact_modulus)
+            .collect();
+        let max = above.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        (!above.is_empty()).then_some(Warning::HighPressure {
+            nominal_pressure: max,
+            contact_modulus,
+            count: above.len(),
+        })
+    }
+
+    /// [`Warning::SteepSlope`] when `rms_slope` is above [`STEEP_SLOPE`].
+    pub fn steep_slope(rms_slope: f64) -> Option<Self> {
+        (rms_slope > STEEP_SLOPE).then_some(Warning::SteepSlope { rms_slope })
+    }
+
+    /// [`Warning::ZetaBeyondBand`] when some ζ is beyond `zeta_max` (by more
+    /// than rounding).
+    pub fn zeta_beyond_band(zetas: &[f64], zeta_max: f64) -> Option<Self> {
+        let max = zetas.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        (max > zeta_max * (1.0 + 1e-12)).then_some(Warning::ZetaBeyondBand {
+            zeta: max,
+            zeta_max,
+        })
+    }
+
+    /// [`Warning::BandLimited`] when the surface's rms slope on its grid is
+    /// below 90 % of the spectrum's.
+    pub fn band_limited(grid: usize, surface_rms_slope: f64, rms_slope: f64) -> Option<Self> {
+        (surface_rms_slope < 0.9 * rms_slope).then_some(Warning::BandLimited {
+            grid,
+            surface_rms_slope,
+            rms_slope,
+        })
+    }
+}
+
+impl fmt::Display for Warning {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let n = |v: f64| number(v, 6);
+        match self {
+            Warning::HighPressure {
+                nominal_pressure,
+                contact_modulus,
+                count,
+            } => high_pressure(f, *nominal_pressure, *contact_modulus, *count),
+            Warning::SteepSlope { rms_slope } => write!(
+                f,
+                "rms slope h'_rms = {} is above 1: outside the small-slope theory \
+                 (lengths are in m and wavevectors in 1/m: a height in µm given as m?)",
+                n(*rms_slope)
+            ),
+            Warning::ZetaBeyondBand { zeta, zeta_max } => write!(
+                f,
+                "ζ = {} is beyond q_s/q_l = {}: C(q) = 0 above q_s, so the result is that of \
+                 full magnification ζ = {}",
+                n(*zeta),
+                n(*zeta_max),
+                n(*zeta_max)
+            ),
+            Warning::BandLimited {
+                grid,
+                surface_rms_slope,
+                rms_slope,
+            } => write!(
+                f,
+                "the {grid}² surface is band-limited by its grid: its rms slope is {} against \
+                 the spectrum's {} (a finer grid, or a smaller q_s, resolves it)",
+                n(*surface_rms_slope),
+                n(*rms_slope)
+            ),
+            Warning::PsdConvention { file, convention } => {
+                write!(
+                    f,
+                    "spectrum file {} read in the `{convention}` convention",
+                    file.display()
+                )?;
+                if *convention == ConventionName::Persson {
+                    write!(
+                        f,
+                        "; a SurfaceTopography or contact.engineering PSD needs the \
+                         `surface-topography` convention"
+                    )?;
+                }
+                Ok(())
+            }
+            Warning::RisingSpectrum {
+                file,
+                c_first,
+                c_last,
+            } => write!(
+                f,
+                "C(q) of {} does not fall with q (C = {} at the first q, {} at the last): \
+                 is it a height map or profile? a measured surface is read as a height map, \
+                 not as a spectrum",
+                file.display(),
+                n(*c_first),
+                n(*c_last)
+            ),
+            Warning::ClippedBand {
+                q_s_requested,
+                q_s,
+                q_l,
+                grid,
+                pixels_per_wavelength,
+            } => write!(
+                f,
+                "q_s = {} is not resolved by the coarsest grid ({grid}², {} pixels per \
+                 wavelength); the theories and the BEM use q_s = {} (= {}·q_l)",
+                n(*q_s_requested),
+                n(*pixels_per_wavelength),
+                n(*q_s),
+                n(*q_s / *q_l)
+            ),
+            Warning::Resampled {
+                file,
+                points,
+                max_deviation,
+            } => write!(
+                f,
+                "{}: the x positions are not equally spaced (up to {} pixel(s) off the equally \
+                 spaced grid): the heights were linearly interpolated onto {points} equally \
+                 spaced points",
+                file.display(),
+                n(*max_deviation)
+            ),
+            Warning::HurstNotFitted { file, bins } => write!(
+                f,
+                "{}: no Hurst exponent (hurst null): {bins} spectrum bin(s) in the band, a fit \
+                 needs 3",
+                file.display()
+            ),
+            Warning::HurstOutOfRange {
+                file,
+                hurst,
+                hurst_error,
+            } => write!(
+                f,
+                "{}: no Hurst exponent (hurst null): the fit gives H = {} ± {}, outside (0, 1) \
+                 where the spectrum is self-affine",
+                file.display(),
+                n(*hurst),
+                n(*hurst_error)
+            ),
+            Warning::BinsLeftOut {
+                file,
+                count,
+                of,
+                q_range,
+            } => write!(
+                f,
+                "{}: {count} of {of} bins of the line scans' 1D spectrum (q = {} … {} 1/m) do \
+                 not fall faster than 1/q and have no isotropic 2D counterpart: left out of \
+                 C(q) (the rms values keep them)",
+                file.display(),
+                n(q_range.0),
+                n(q_range.1)
+            ),
+            Warning::MapNotPeriodic => write!(
+                f,
+                "the map is not periodic: its coarser copies are block averages, each a \
+                 smoother surface, so N → ∞ is a resolution trend, not a continuum limit; \
+                 trust the finest grid (the map as measured)"
+            ),
+        }
+    }
+}
+
+/// The text of [`Warning::HighPressure`]: a unit slip when σ0 exceeds E*
+/// itself, strains of order one above 0.1 E*.
+fn high_pressure(
+    f: &mut fmt::Formatter<'_>,
+    nominal_pressure: f64,
+    contact_modulus: f64,
+    count: usize,
+) -> fmt::Result {
+    let n = |v: f64| number(v, 6);
+    let which = if count > 1 {
+        format!(
+            "{count} nominal pressures, up to σ0 = {}, are",
+            n(nominal_pressure)
+        )
+    } else {
+        format!("the nominal pressure σ0 = {} is", n(nominal_pressure))
+    };
+    if nominal_pressure > contact_modulus {
+        write!(
+            f,
+            "{which} above E* = {} itself: are E (or E*) and σ0 in one unit? \
+             (E typed in MPa or GPa, σ0 in Pa?)",
+            n(contact_modulus)
+        )
+    } else {
+        write!(
+            f,
+            "{which} above 0.1 E* = {} (E* = {}): strains of order one, outside \
+             the small-strain theory (or E and σ0 in different units?)",
+            n(HIGH_PRESSURE_RATIO * contact_modulus),
+            n(contact_modulus)
+        )
+    }
+}
+
+impl Warning {
+    /// The kind of the warning, as in its JSON (`high_pressure`, `steep_slope`,
+    /// `zeta_beyond_band`, `band_limited`, `psd_convention`,
+    /// `rising_spectrum`, `clipped_band`, `map_not_periodic`, `resampled`,
+    /// `hurst_not_fitted`, `hurst_out_of_range`, `bins_left_out`).
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Warning::HighPressure { .. } => "high_pressure",
+            Warning::SteepSlope { .. } => "steep_slope",
+            Warning::ZetaBeyondBand { .. } => "zeta_beyond_band",
+            Warning::BandLimited { .. } => "band_limited",
+            Warning::PsdConvention { .. } => "psd_convention",
+            Warning::RisingSpectrum { .. } => "rising_spectrum",
+            Warning::ClippedBand { .. } => "clipped_band",
+            Warning::MapNotPeriodic => "map_not_periodic",
+            Warning::Resampled { .. } => "resampled",
+            Warning::HurstNotFitted { .. } => "hurst_not_fitted",
+            Warning::HurstOutOfRange { .. } => "hurst_out_of_range",
+            Warning::BinsLeftOut { .. } => "bins_left_out",
+        }
+    }
+}
+
+impl Serialize for Warning {
+    /// `{"kind": …, <the variant's fields>, "message": <the text>}`.
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        #[derive(Serialize)]
+        struct Tagged<'a> {
+            #[serde(flatten, with = "Warning")]
+            warning: &'a Warning,
+            message: String,
+        }
+        Tagged {
+            warning: self,
+            message: self.to_string(),
+        }
+        .serialize(serializer)
+    }
+}
+
+/// A report with the warnings of its calculation, serialised as the report
+/// with a top-level `"warnings"` array (empty when there are none): the shape
+/// of the `persson` binary's `--json` output and of the Python package's dicts.
+#[derive(Serialize)]
+pub struct Warned<'a, R: Serialize> {
+    #[serde(flatten)]
+    report: &'a R,
+    warnings: &'a [Warning],
+}
+
+impl<'a, R: Serialize> Warned<'a, R> {
+    /// The report and its warnings.
+    pub fn new(report: &'a R, warnings: &'a [Warning]) -> Self {
+        Warned { report, warnings }
+    }
+}
+
+/// The warnings of an FFT-BEM rough contact: a synthesised surface
+/// band-limited by its grid, pressures above 0.1 E*, a surface steeper than 1.
+#[cfg(feature = "bem")]
+pub fn of_rough(r: &persson::bem::rough::RoughReport) -> Vec<Warning> {
+    let mut w = Vec::new();
+    let pressures: Vec<f64> = r.points.iter().map(|p| p.nominal_pressure).collect();
+    push(
+        &mut w,
+        Warning::high_pressure(&pressures, r.contact_modulus),
+    );
+    if let persson::bem::rough::SurfaceOrigin::Synthesised { spectrum, .. } = &r.surface {
+        push(
+            &mut w,
+            Warning::band_limited(r.grid, r.surface_rms_slope, spectrum.rms_slope),
+        );
+        push(&mut w, Warning::steep_slope(spectrum.rms_slope));
+    } else {
+        push(&mut w, Warning::steep_slope(r.surface_rms_slope));
+    }
+    w
+}
+
+/// The warnings of a measured surface's analysis: what the reader did (a
+/// line scan resampled) and what the analysis could not do (no Hurst fit,
+/// bins left out of the 2D spectrum).
+#[cfg(feature = "topography")]
+pub fn of_measured(file: &std::path::Path, a: &persson::topography::Analysis) -> Vec<Warning> {
+    use persson::topography::Note;
+    let file = file.to_path_buf();
+    a.notes
+        .iter()
+        .map(|note| match note {
+            Note::Resampled {
+                points,
+                max_deviation,
+            } => Warning::Resampled {
+                file: file.clone(),
+                points: *points,
+                max_deviation: *max_deviation,
+            },
+            Note::HurstNotFitted { bins } => Warning::HurstNotFitted {
+                file: file.clone(),
+                bins: *bins,
+            },
+            Note::HurstOutOfRange { hurst, hurst_error } => Warning::HurstOutOfRange {
+                file: file.clone(),
+                hurst: *hurst,
+                hurst_error: *hurst_error,
+            },
+            Note::BinsLeftOut { q, of } => Warning::BinsLeftOut {
+                file: file.clone(),
+                count: q.len(),
+                of: *of,
+                q_range: q
+                    .iter()
+                    .fold((f64::INFINITY, 0.0), |(lo, hi), &v| (lo.min(v), hi.max(v))),
+            },
+        })
+        .collect()
+}
+
+/// Append `w` to `list` unless it is already there.
+pub(crate) fn push(list: &mut Vec<Warning>, w: Option<Warning>) {
+    if let Some(w) = w {
+        if !list.contains(&w) {
+            list.push(w);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn one_line_and_serialised_with_its_kind() {
+        let w = Warning::high_pressure(&[1e5, 1e6], 1.333e6).unwrap();
+        let text = w.to_string();
+        assert!(!text.contains('\n'), "{text}");
+        assert!(text.contains("1e6") && text.contains("1.333e6"), "{text}");
+        assert_eq!(
+            serde_json::to_value(&w).unwrap(),
+            serde_json::json!({
+                "kind": "high_pressure",
+                "nominal_pressure": 1e6,
+                "contact_modulus": 1.333e6,
+                "count": 1,
+                "message": text,
+            })
+        );
+        assert_eq!(w.kind(), "high_pressure");
+        let psd = Warning::PsdConvention {
+            file: "psd.csv".into(),
+            convention: ConventionName::Persson,
+        };
+        let v = serde_json::to_value(&psd).unwrap();
+        assert_eq!(v["kind"], "psd_convention");
+        assert_eq!(v["convention"], "persson");
+        assert_eq!(v["file"], "psd.csv");
+        // the text names the input, never a command-line flag
+        for w in [
+            psd,
+            Warning::band_limited(32, 0.01, 0.5).unwrap(),
+            Warning::RisingSpectrum {
+                file: "c.csv".into(),
+                c_first: 1.0,
+                c_last: 2.0,
+            },
+        ] {
+            assert!(!w.to_string().contains("--"), "{w}");
+        }
+        assert_eq!(
+            serde_json::to_value(Warning::MapNotPeriodic).unwrap()["kind"],
+            "map_not_periodic"
+        );
+        assert!(Warning::high_pressure(&[1e6], 1e7).is_none()); // exactly 0.1 E*
+        assert!(Warning::steep_slope(1.0).is_none());
+        assert!(Warning::zeta_beyond_band(&[1e4], 1e4).is_none());
+    }
+}

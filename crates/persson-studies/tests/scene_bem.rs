@@ -1,0 +1,248 @@
+//! Scene outputs of the FFT-BEM: `bem` (rough contact from the scene's
+//! spectrum or a height map) and `bem_hertz` (the lecture's convergence
+//! table); the spectrum kind `height_map`.
+
+use std::path::Path;
+
+use persson_studies::scene::Scene;
+
+fn parse(text: &str) -> persson::Result<Scene> {
+    Scene::parse(Path::new("test.json"), text)
+}
+
+/// A spectrum resolved on 32² (q_s = 8 q_l, Nyquist 16 q_l), E* = 1.
+const ROUGH: &str = r#"{
+  "schema": 1,
+  "material": { "contact_modulus": 1.0 },
+  "spectrum": { "kind": "self_affine", "hurst": 0.8, "q_l": 6.283185307179586, "q_r": 12.566370614359172, "q_s": 50.26548245743669, "rms_slope": 0.1 },
+  "nominal_pressure": [0.001, 0.003, 0.01],
+  "outputs": OUTPUTS
+}"#;
+
+fn rough(outputs: &str) -> String {
+    ROUGH.replace("OUTPUTS", outputs)
+}
+
+#[cfg(not(feature = "bem"))]
+#[test]
+fn bem_outputs_need_the_feature() {
+    for out in [r#"{"bem": {"grid": 32}}"#, r#"{"bem_hertz": {}}"#] {
+        let e = parse(&rough(out)).unwrap().run().unwrap_err().to_string();
+        assert!(e.contains("`bem` feature"), "{e}");
+    }
+}
+
+#[cfg(feature = "bem")]
+mod bem {
+    use super::*;
+    use persson::bem::surface::synthesize;
+    use persson::bem::{hertz, Boundary, Control, Operator, Options, Solver};
+    use persson::io::npy;
+    use persson::spectrum::{Amplitude, SelfAffine};
+
+    /// Two runs of the same deterministic solve agree bit for bit; this
+    /// allows for the summation order of a different code path only.
+    const SAME_SOLVE_TOL: f64 = 1e-12;
+
+    fn tmp(name: &str) -> std::path::PathBuf {
+        let d = std::env::temp_dir().join(format!("persson-scene-bem-{}", std::process::id()));
+        std::fs::create_dir_all(&d).unwrap();
+        d.join(name)
+    }
+
+    #[test]
+    fn bem_hertz_reproduces_validate_and_the_lecture() {
+        let r = parse(r#"{"schema": 1, "outputs": {"bem_hertz": {"grids": [32, 64]}}}"#)
+            .unwrap()
+            .run()
+            .unwrap();
+        assert!(r.area.is_none() && r.bem.is_none(), "only bem_hertz");
+        let h = r.bem_hertz.unwrap();
+        assert_eq!(h.boundary.name(), "free");
+        let rows = h.rows;
+        assert_eq!(rows.len(), 2);
+        let opts = Options {
+            tolerance: 1e-12,
+            ..Options::default()
+        };
+        for row in &rows {
+            let direct =
+                hertz::validate(&hertz::HertzCase::new(row.grid, Boundary::Free), &opts).unwrap();
+            assert!((row.energy_error - direct.energy_error).abs() <= SAME_SOLVE_TOL);
+        }
+        // Molinari's lecture, Table 1, 64²: η = 1.40e-2 (ours must not be worse).
+        assert_eq!(rows[1].energy_error_published, Some(1.40e-2));
+        assert!(rows[1].energy_error < 1.40e-2, "{}", rows[1].energy_error);
+        assert_eq!(rows[0].energy_error_published, None);
+        let p = parse(
+            r#"{"schema": 1, "outputs": {"bem_hertz": {"grids": [32], "boundary": "periodic"}}}"#,
+        )
+        .unwrap()
+        .run()
+        .unwrap()
+        .bem_hertz
+        .unwrap();
+        assert_eq!(p.boundary.name(), "periodic");
+        assert_eq!(
+            p.rows[0].energy_error_published, None,
+            "the lecture lists the free boundary only"
+        );
+    }
+
+    #[test]
+    fn bem_rough_equals_a_direct_solve() {
+        let s = parse(&rough(r#"{"bem": {"grid": 32, "seed": 9}}"#)).unwrap();
+        let r = s.run().unwrap();
+        assert!(r.area.is_none() && r.bem_hertz.is_none(), "only bem");
+        let b = r.bem.unwrap();
+        assert_eq!(
+            (b.grid, b.surface.seed(), b.boundary.name()),
+            (32, Some(9), "periodic")
+        );
+        assert!((b.size - 1.0).abs() < 1e-15, "L = 2π/q_l = 1");
+        let q = std::f64::consts::TAU;
+        let spec = SelfAffine::new(q, 2.0 * q, 8.0 * q, 0.8, Amplitude::RmsSlope(0.1)).unwrap();
+        let surf = synthesize(&spec, 32, 1.0, 9).unwrap();
+        let mut solver = Solver::new(Operator::new(Boundary::Periodic, 32, 1.0, 1.0).unwrap());
+        let mut last = 0.0;
+        for pt in &b.points {
+            let sol = solver
+                .solve(
+                    &surf.heights,
+                    Control::MeanPressure(pt.nominal_pressure),
+                    &Options::default(),
+                )
+                .unwrap();
+            // Warm starts may change the last digits of the pressure but
+            // the contact set is the same.
+            assert_eq!(pt.contact_fraction, sol.contact_fraction);
+            assert!(pt.residual <= 1e-10 && pt.iterations > 0);
+            assert!(pt.contact_fraction > last && pt.contact_fraction < 1.0);
+            last = pt.contact_fraction;
+            assert!(pt.histogram.is_none());
+        }
+        assert!((b.surface_rms_slope - surf.rms_slope().unwrap()).abs() <= SAME_SOLVE_TOL);
+    }
+
+    #[test]
+    fn histograms_integrate_to_the_contact_fraction_and_are_written() {
+        let dir = tmp("hist");
+        std::fs::create_dir_all(&dir).unwrap();
+        let s = parse(&rough(
+            r#"{"bem": {"grid": 32, "histogram": "h.csv", "bins": 20, "boundary": "free"}}"#,
+        ))
+        .unwrap();
+        assert!(s.output_paths(&dir).contains(&dir.join("h.csv")));
+        let r = s.run().unwrap();
+        let b = r.bem.as_ref().unwrap();
+        assert_eq!(b.boundary.name(), "free");
+        for pt in &b.points {
+            let h = pt.histogram.as_ref().unwrap();
+            assert_eq!(h.len(), 20);
+            // Σ P Δσ = A/A0 exactly up to rounding of 20 terms.
+            let total: f64 = h
+                .iter()
+                .map(|b| b.density * (b.sigma_high - b.sigma_low))
+                .sum();
+            assert!((total - pt.contact_fraction).abs() < 1e-14, "{total}");
+        }
+        let written = persson_studies::scene::write_data(&s, &r, &dir).unwrap();
+        assert_eq!(written, vec![dir.join("h.csv")]);
+        let text = std::fs::read_to_string(dir.join("h.csv")).unwrap();
+        assert_eq!(text.lines().count(), 1 + 3 * 20);
+        assert!(text.starts_with("nominal_pressure,sigma_low,sigma_high,density\n"));
+    }
+
+    #[test]
+    fn height_map_scene_reads_relative_files() {
+        let q = std::f64::consts::TAU;
+        let spec = SelfAffine::new(q, 2.0 * q, 8.0 * q, 0.8, Amplitude::RmsSlope(0.1)).unwrap();
+        let surf = synthesize(&spec, 32, 1.0, 9).unwrap();
+        let map = tmp("map.npy");
+        npy::write(&map, 32, 32, &surf.heights).unwrap();
+        let scene_path = tmp("scene.json");
+        let text = r#"{
+          "schema": 1,
+          "material": { "contact_modulus": 1.0 },
+          "spectrum": { "kind": "height_map", "file": "map.npy", "size": 1.0 },
+          "nominal_pressure": [0.001, 0.003, 0.01],
+          "outputs": { "bem": {} } }"#;
+        std::fs::write(&scene_path, text).unwrap();
+        let from_map = Scene::read(&scene_path)
+            .unwrap()
+            .run()
+            .unwrap()
+            .bem
+            .unwrap();
+        assert_eq!(from_map.surface.seed(), None);
+        let synthesised = parse(&rough(r#"{"bem": {"grid": 32, "seed": 9}}"#))
+            .unwrap()
+            .run()
+            .unwrap()
+            .bem
+            .unwrap();
+        for (a, b) in from_map.points.iter().zip(&synthesised.points) {
+            assert_eq!(a.contact_fraction, b.contact_fraction);
+        }
+        // A height map's spectrum serves the other outputs too (issue 13):
+        // its title says how the map was conditioned.
+        let area = text.replace(r#""bem": {}"#, r#""area": {}"#);
+        std::fs::write(&scene_path, &area).unwrap();
+        let r = Scene::read(&scene_path)
+            .unwrap()
+            .run()
+            .unwrap()
+            .area
+            .unwrap();
+        let title = r.surface.unwrap();
+        assert!(title.contains("detrend plane, window hann"), "{title}");
+        // grid/seed make no sense with a height map.
+        let bad = text.replace(r#""bem": {}"#, r#""bem": {"grid": 64}"#);
+        std::fs::write(&scene_path, &bad).unwrap();
+        let e = Scene::read(&scene_path)
+            .unwrap()
+            .run()
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("outputs.bem.grid"), "{e}");
+    }
+
+    #[test]
+    fn bad_bem_outputs_are_named() {
+        let cases = [
+            (r#"{"bem": {}}"#, "outputs.bem.grid"),
+            (
+                r#"{"bem": {"grid": 32, "tolerance": 0}}"#,
+                "outputs.bem.tolerance",
+            ),
+            (r#"{"bem": {"grid": 4}}"#, "outputs.bem.grid"),
+            (r#"{"bem": {"grid": 32, "bins": 0}}"#, "outputs.bem.bins"),
+            (r#"{"bem_hertz": {"grids": [4]}}"#, "outputs.bem_hertz.grid"),
+        ];
+        for (out, needle) in cases {
+            let e = parse(&rough(out)).unwrap().run().unwrap_err().to_string();
+            assert!(e.contains(needle), "{out}: {e}");
+        }
+        let e = parse(&rough(r#"{"bem": {"grid": 32}}"#).replace("[0.001, 0.003, 0.01]", "[]"))
+            .unwrap()
+            .run()
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("nominal_pressure"), "{e}");
+        let e = parse(&rough(r#"{"bem": {"grid": 32, "sead": 1}}"#))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("unknown field `sead`"), "{e}");
+        // A boundary is one of the CLI's names, checked where the file is read.
+        for out in [
+            r#"{"bem": {"grid": 32, "boundary": "open"}}"#,
+            r#"{"bem_hertz": {"boundary": "open"}}"#,
+        ] {
+            let e = parse(&rough(out)).unwrap_err().to_string();
+            assert!(
+                e.contains("unknown variant `open`, expected `periodic` or `free`"),
+                "{out}: {e}"
+            );
+        }
+    }
+}

@@ -1,0 +1,85 @@
+//! The format of a file: by an unambiguous extension, else by content; and
+//! the binary formats persson does not read, named as such.
+
+use std::path::Path;
+
+use super::{gsf, Format};
+use crate::error::{Error, Result};
+
+/// Extensions of binary instrument formats persson does not read.
+const UNSUPPORTED: &[&str] = &[
+    "sur", "plu", "plux", "datx", "opd", "opdx", "di", "spm", "ibw", "mi", "nid", "frt", "al3d",
+    "bcrf", "bcr", "mnt", "lext", "vk3", "vk4", "vk6", "vk7", "zon", "zmg", "os3d", "oir", "poir",
+    "jpk", "gwy", "tmd", "top", "nms", "stp", "nc", "h5", "hdf5", "mat", "tif", "tiff", "sdf",
+    "ezd", "mdt", "xlsx", "xls", "zip", "gz", "hgt", "dzi", "qep", "nmm", "ps", "wsxm",
+];
+
+/// Leading bytes of binary formats persson does not read, with their names.
+const MAGICS: &[(&[u8], &str)] = &[
+    (b"\x88\x1b\x03\x6f", "Zygo MetroPro .dat"),
+    (b"\x88\x1b\x03\x70", "Zygo MetroPro .dat"),
+    (b"\x88\x1b\x03\x71", "Zygo MetroPro .dat"),
+    (b"DIGITAL SURF", "Digital Surf .sur"),
+    (b"DSCOMPRESSED", "Digital Surf .sur"),
+    (b"GWYP", "Gwyddion .gwy"),
+    (b"GWYQ", "Gwyddion .gwy"),
+    (b"\x89HDF\r\n\x1a\n", "HDF5"),
+    (b"CDF\x01", "NetCDF"),
+    (b"CDF\x02", "NetCDF"),
+    (b"II*\x00", "TIFF"),
+    (b"MM\x00*", "TIFF"),
+    (b"MATLAB", "MATLAB .mat"),
+    (b"\x1f\x8b", "gzip-compressed"),
+    (b"VCA DATA", "Bruker .opdx"),
+];
+
+/// What persson reads, for the error on a format it does not.
+pub(crate) const READS: &str = "persson reads .npy, text (a matrix, XYZ triples or a line scan, \
+     in .txt, .csv, .dat, .asc or .xyz), Gwyddion .gsf and ISO 25178-72 .x3p; export to GSF or \
+     x3p with Gwyddion or SurfaceTopography";
+
+fn unsupported(path: &Path, what: &str) -> Error {
+    Error::parse(path, 0, 0, format!("unsupported format ({what}): {READS}"))
+}
+
+/// The format of `bytes` read from `path` (module docs).
+///
+/// # Errors
+/// [`Error::Parse`] "unsupported format (…)" for an extension or content
+/// of a binary format persson does not read, or binary data that is none
+/// of the formats it reads.
+pub(crate) fn format(path: &Path, bytes: &[u8]) -> Result<Format> {
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    match ext.as_deref() {
+        Some("npy") => return Ok(Format::Npy),
+        Some("gsf") => return Ok(Format::Gsf),
+        Some("x3p") => return Ok(Format::X3p),
+        Some("xyz") => return Ok(Format::Xyz),
+        Some(e) if UNSUPPORTED.contains(&e) => return Err(unsupported(path, &format!(".{e}"))),
+        _ => {}
+    }
+    if bytes.starts_with(crate::io::npy::MAGIC) {
+        return Ok(Format::Npy);
+    }
+    if bytes.starts_with(gsf::MAGIC) {
+        return Ok(Format::Gsf);
+    }
+    if bytes.starts_with(b"PK\x03\x04") {
+        return Ok(Format::X3p);
+    }
+    if let Some((_, name)) = MAGICS.iter().find(|(m, _)| bytes.starts_with(m)) {
+        return Err(unsupported(path, name));
+    }
+    let text_bom = bytes.starts_with(b"\xFF\xFE") || bytes.starts_with(b"\xFE\xFF");
+    if !text_bom && bytes.contains(&0) {
+        let what = match ext.as_deref() {
+            Some(e) => format!(".{e}, binary data"),
+            None => "binary data".into(),
+        };
+        return Err(unsupported(path, &what));
+    }
+    Ok(Format::Text)
+}
