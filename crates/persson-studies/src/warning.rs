@@ -30,6 +30,10 @@ pub const HIGH_PRESSURE_RATIO: f64 = 0.1;
 /// An rms slope above this is warned of ([`Warning::SteepSlope`]).
 pub const STEEP_SLOPE: f64 = 1.0;
 
+/// The bands of two rough bodies' spectra further apart than this factor
+/// (at either end) are warned of ([`Warning::SumBands`]).
+pub const SUM_BAND_RATIO: f64 = 10.0;
+
 /// One remark on the input of a calculation; it never changes a number.
 ///
 /// Serialised as `{"kind": …, <its fields>, "message": <its text>}`, the kind
@@ -145,6 +149,25 @@ pub enum Warning {
         /// Smallest and largest q left out, 1/m.
         q_range: (f64, f64),
     },
+    /// The spectra of two (or more) rough bodies cover bands more than
+    /// [`SUM_BAND_RATIO`] apart: outside their common band the sum is one
+    /// body's roughness alone.
+    SumBands {
+        /// Each body's band (q_min, q_max), 1/m.
+        bands: Vec<(f64, f64)>,
+        /// The largest ratio of the lower or of the upper ends.
+        ratio: f64,
+    },
+    /// Measurements of one surface whose reliable bands do not overlap: the
+    /// combined spectrum is interpolated across the gap.
+    MeasurementGap {
+        /// The measurement below the gap (its file).
+        below: PathBuf,
+        /// The measurement above it.
+        above: PathBuf,
+        /// The gap (q_max of the one below, q_min of the one above), 1/m.
+        q_range: (f64, f64),
+    },
 }
 
 impl Warning {
@@ -175,6 +198,16 @@ impl Warning {
         (max > zeta_max * (1.0 + 1e-12)).then_some(Warning::ZetaBeyondBand {
             zeta: max,
             zeta_max,
+        })
+    }
+
+    /// [`Warning::SumBands`] when the parts' bands are more than
+    /// [`SUM_BAND_RATIO`] apart.
+    pub fn sum_bands(sum: &persson::spectrum::Sum) -> Option<Self> {
+        let ratio = sum.band_mismatch();
+        (ratio > SUM_BAND_RATIO).then(|| Warning::SumBands {
+            bands: sum.bands(),
+            ratio,
         })
     }
 
@@ -310,6 +343,32 @@ impl fmt::Display for Warning {
                 n(q_range.0),
                 n(q_range.1)
             ),
+            Warning::SumBands { bands, ratio } => {
+                let b: Vec<String> = bands
+                    .iter()
+                    .map(|(a, b)| format!("{} … {}", n(*a), n(*b)))
+                    .collect();
+                write!(
+                    f,
+                    "the rough bodies' spectra cover bands q = {} 1/m, a factor {} apart: \
+                     outside their common band the summed roughness is one body's alone",
+                    b.join(" and "),
+                    n(*ratio)
+                )
+            }
+            Warning::MeasurementGap {
+                below,
+                above,
+                q_range,
+            } => write!(
+                f,
+                "the reliable bands of {} and {} do not overlap: no measurement covers \
+                 q = {} … {} 1/m, where the combined spectrum is interpolated (power law)",
+                below.display(),
+                above.display(),
+                n(q_range.0),
+                n(q_range.1)
+            ),
             Warning::MapNotPeriodic => write!(
                 f,
                 "the map is not periodic: its coarser copies are block averages, each a \
@@ -359,7 +418,8 @@ impl Warning {
     /// The kind of the warning, as in its JSON (`high_pressure`, `steep_slope`,
     /// `zeta_beyond_band`, `band_limited`, `psd_convention`,
     /// `rising_spectrum`, `clipped_band`, `map_not_periodic`, `resampled`,
-    /// `hurst_not_fitted`, `hurst_out_of_range`, `bins_left_out`).
+    /// `hurst_not_fitted`, `hurst_out_of_range`, `bins_left_out`, `sum_bands`,
+    /// `measurement_gap`).
     pub fn kind(&self) -> &'static str {
         match self {
             Warning::HighPressure { .. } => "high_pressure",
@@ -374,6 +434,8 @@ impl Warning {
             Warning::HurstNotFitted { .. } => "hurst_not_fitted",
             Warning::HurstOutOfRange { .. } => "hurst_out_of_range",
             Warning::BinsLeftOut { .. } => "bins_left_out",
+            Warning::SumBands { .. } => "sum_bands",
+            Warning::MeasurementGap { .. } => "measurement_gap",
         }
     }
 }

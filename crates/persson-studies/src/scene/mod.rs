@@ -32,6 +32,7 @@ use persson::stress::Start;
 #[cfg(feature = "bem")]
 mod bem;
 mod measured;
+pub mod multiscale;
 #[cfg(feature = "plot")]
 pub mod plot;
 pub mod report;
@@ -66,13 +67,11 @@ impl Scene {
             ));
         }
         let base = path.parent().unwrap_or(Path::new("."));
-        if let Some(
-            SpectrumSpec::Tabulated { file, .. }
-            | SpectrumSpec::HeightMap(HeightMapSpec { file, .. }),
-        ) = &mut s.spectrum
-        {
-            if file.is_relative() {
-                *file = base.join(&*file);
+        if let Some(spectrum) = &mut s.spectrum {
+            for file in spectrum.files_mut() {
+                if file.is_relative() {
+                    *file = base.join(&*file);
+                }
             }
         }
         Ok(s)
@@ -274,15 +273,11 @@ impl Scene {
 
     /// The input files the scene reads.
     pub fn input_paths(&self) -> Vec<PathBuf> {
-        match &self.spectrum {
-            Some(
-                SpectrumSpec::Tabulated { file, .. }
-                | SpectrumSpec::HeightMap(HeightMapSpec { file, .. }),
-            ) => {
-                vec![file.clone()]
-            }
-            _ => vec![],
-        }
+        let mut spectrum = self.spectrum.clone();
+        spectrum
+            .as_mut()
+            .map(|s| s.files_mut().into_iter().map(|f| f.clone()).collect())
+            .unwrap_or_default()
     }
 }
 
