@@ -34,14 +34,25 @@ const CUT_OFF: [f64; 3] = [1.0 / 3.0, 1.0 / 3.0, 0.5];
 
 fn model() -> SelfAffine {
     let q_l = std::f64::consts::TAU / L;
-    SelfAffine::new(q_l, q_l, std::f64::consts::PI * N as f64 / L, 0.8, Amplitude::RmsHeight(1e-6)).unwrap()
+    SelfAffine::new(
+        q_l,
+        q_l,
+        std::f64::consts::PI * N as f64 / L,
+        0.8,
+        Amplitude::RmsHeight(1e-6),
+    )
+    .unwrap()
 }
 
 /// Gaussian noise of rms `sigma` (Box–Muller on a 64-bit LCG), seed-stable.
 fn noise(n: usize, sigma: f64, seed: u64) -> Vec<f64> {
-    let mut x = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+    let mut x = seed
+        .wrapping_mul(6364136223846793005)
+        .wrapping_add(1442695040888963407);
     let mut u = || {
-        x = x.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        x = x
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
         ((x >> 11) as f64 + 0.5) / (1u64 << 53) as f64
     };
     (0..n)
@@ -51,7 +62,15 @@ fn noise(n: usize, sigma: f64, seed: u64) -> Vec<f64> {
 
 /// A measurement: `n × n` points every `step` pixels from (x0, y0), with
 /// noise of rms `sigma`, not periodic.
-fn cut(h: &[f64], x0: usize, y0: usize, n: usize, step: usize, sigma: f64, seed: u64) -> Topography {
+fn cut(
+    h: &[f64],
+    x0: usize,
+    y0: usize,
+    n: usize,
+    step: usize,
+    sigma: f64,
+    seed: u64,
+) -> Topography {
     let e = noise(n * n, sigma, seed);
     let v: Vec<f64> = (0..n * n)
         .map(|k| h[(y0 + (k / n) * step) * N + x0 + (k % n) * step] + e[k])
@@ -94,9 +113,18 @@ fn measurements(maps: &[Topography]) -> Vec<Measurement<'_>> {
 }
 
 /// The full surface's spectrum on the combined spectrum's bins, by bin index.
-fn reference_on(m: &persson::topography::MultiScale, full: &Topography) -> Vec<Option<(f64, usize)>> {
-    let edges = Bins::Log { per_decade: 10 }.edges(m.q_min, m.q_max).unwrap();
-    let own: Vec<f64> = edges.iter().copied().take_while(|e| *e <= m.q_max).collect();
+fn reference_on(
+    m: &persson::topography::MultiScale,
+    full: &Topography,
+) -> Vec<Option<(f64, usize)>> {
+    let edges = Bins::Log { per_decade: 10 }
+        .edges(m.q_min, m.q_max)
+        .unwrap();
+    let own: Vec<f64> = edges
+        .iter()
+        .copied()
+        .take_while(|e| *e <= m.q_max)
+        .collect();
     let options = AnalysisOptions {
         q_max: Some(m.q_max),
         bins: Some(Bins::Edges(own)),
@@ -107,7 +135,9 @@ fn reference_on(m: &persson::topography::MultiScale, full: &Topography) -> Vec<O
     m.q.iter()
         .map(|&q| {
             let b = index(q);
-            r.q.iter().position(|&x| index(x) == b).map(|j| (r.c[j], r.count[j]))
+            r.q.iter()
+                .position(|&x| index(x) == b)
+                .map(|j| (r.c[j], r.count[j]))
         })
         .collect()
 }
@@ -144,7 +174,11 @@ fn area_from_the_combined_spectrum_is_that_of_the_full_one() {
     let Set { full, maps } = set();
     let m = multi_scale(&measurements(&maps), 10).unwrap();
     let combined = m.to_tabulated().unwrap();
-    let full = analyse(&full, &AnalysisOptions::default()).unwrap().psd.to_tabulated().unwrap();
+    let full = analyse(&full, &AnalysisOptions::default())
+        .unwrap()
+        .psd
+        .to_tabulated()
+        .unwrap();
     let e = 1e9;
     for sigma in [1e5, 1e6, 1e7] {
         let q_s = combined.q_max().min(full.q_max());
@@ -154,7 +188,10 @@ fn area_from_the_combined_spectrum_is_that_of_the_full_one() {
         };
         let (ac, af) = (a(&combined), a(&full));
         println!("σ0 = {sigma:e}: A/A0 combined {ac:.5}, full {af:.5}");
-        assert!((ac / af - 1.0).abs() < AREA_GOAL, "σ0 = {sigma}: {ac} vs {af}");
+        assert!(
+            (ac / af - 1.0).abs() < AREA_GOAL,
+            "σ0 = {sigma}: {ac} vs {af}"
+        );
     }
 }
 
@@ -193,7 +230,9 @@ fn tip_radius_cutoff_of_a_sinusoid() {
     const TOL: f64 = 1e-4; // linear interpolation between integer steps of ~100 pixels
     let (n, dx, a) = (2048, 1e-8, 5e-8);
     let k = std::f64::consts::TAU / (512.0 * dx);
-    let h: Vec<f64> = (0..n * 4).map(|i| a * (k * (i % n) as f64 * dx).cos()).collect();
+    let h: Vec<f64> = (0..n * 4)
+        .map(|i| a * (k * (i % n) as f64 * dx).cos())
+        .collect();
     let t = Topography::map(n, 4, n as f64 * dx, 4.0 * dx, h, true).unwrap();
     // f/R at half the sinusoid's curvature a k².
     let r = 0.5 / (0.5 * a * k * k);

@@ -134,8 +134,10 @@ impl Spectrum {
                 Ok(s)
             }
             SpectrumSpec::Sum { parts } => {
-                let parts: Vec<Spectrum> =
-                    parts.iter().map(Self::from_spec_quiet).collect::<PyResult<_>>()?;
+                let parts: Vec<Spectrum> = parts
+                    .iter()
+                    .map(Self::from_spec_quiet)
+                    .collect::<PyResult<_>>()?;
                 Self::sum_of(&parts)
             }
         }
@@ -159,7 +161,10 @@ impl Spectrum {
         Ok(Spectrum {
             shared: Shared(Arc::new(sum)),
             breaks,
-            description: Some(format!("two rough bodies, C = C1 + C2 ({} spectra)", parts.len())),
+            description: Some(format!(
+                "two rough bodies, C = C1 + C2 ({} spectra)",
+                parts.len()
+            )),
             recipe: Recipe::Sum(parts.iter().map(|p| p.recipe.clone()).collect()),
             warnings,
         })

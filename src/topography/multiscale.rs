@@ -148,7 +148,12 @@ pub fn multi_scale(measurements: &[Measurement<'_>], per_decade: usize) -> Resul
     let q_hi = bands.iter().map(|b| b.1).fold(0.0, f64::max);
     let edges = Bins::Log { per_decade }.edges(q_lo, q_hi)?;
     let nb = edges.len() - 1;
-    let (mut w, mut wq, mut wc, mut who) = (vec![0usize; nb], vec![0.0; nb], vec![0.0; nb], vec![0usize; nb]);
+    let (mut w, mut wq, mut wc, mut who) = (
+        vec![0usize; nb],
+        vec![0.0; nb],
+        vec![0.0; nb],
+        vec![0usize; nb],
+    );
     // The measurements are analysed in parallel (one thread each): they are
     // independent and the FFTs of large maps dominate the time.
     let analyses: Vec<Result<Analysis>> = std::thread::scope(|scope| {
@@ -177,7 +182,10 @@ pub fn multi_scale(measurements: &[Measurement<'_>], per_decade: usize) -> Resul
     for (a, &(lo, hi, tip)) in analyses.into_iter().zip(&bands) {
         let a = a?;
         for ((&q, &c), &n) in a.psd.q.iter().zip(&a.psd.c).zip(&a.psd.count) {
-            let b = edges.partition_point(|e| *e < q).saturating_sub(1).min(nb - 1);
+            let b = edges
+                .partition_point(|e| *e < q)
+                .saturating_sub(1)
+                .min(nb - 1);
             w[b] += n;
             wq[b] += n as f64 * q;
             wc[b] += n as f64 * c;
@@ -316,7 +324,11 @@ fn gaps(bands: &[(f64, f64, Option<f64>)]) -> Vec<Gap> {
 /// Appl. Surf. Sci. Adv. 7, 100190 (2022), doi:10.1016/j.apsadv.2021.100190
 /// (the criterion and f = 1/2); SurfaceTopography 1.27,
 /// `scanning_probe_reliability_cutoff`.
-pub fn tip_radius_cutoff(t: &Topography, tip_radius: f64, safety_factor: f64) -> Result<Option<f64>> {
+pub fn tip_radius_cutoff(
+    t: &Topography,
+    tip_radius: f64,
+    safety_factor: f64,
+) -> Result<Option<f64>> {
     check::positive("tip_radius", tip_radius)?;
     check::positive("safety_factor", safety_factor)?;
     let target = safety_factor / tip_radius;
@@ -355,7 +367,11 @@ fn min_curvature(t: &Topography, s: usize) -> f64 {
     let d2 = (s as f64 * t.dx()).powi(2);
     let mut min = f64::INFINITY;
     for row in t.heights().chunks_exact(nx) {
-        let range = if t.periodic() { 0..nx } else { s.min(nx)..nx.saturating_sub(s) };
+        let range = if t.periodic() {
+            0..nx
+        } else {
+            s.min(nx)..nx.saturating_sub(s)
+        };
         for i in range {
             let (l, r) = ((i + nx - s % nx) % nx, (i + s) % nx);
             min = min.min(row[l] - 2.0 * row[i] + row[r]);

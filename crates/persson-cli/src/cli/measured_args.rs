@@ -96,7 +96,14 @@ impl MeasuredArgs {
             ("--size", self.size.len()),
         ] {
             if given > 1 && given != n || (flag == "--size" && given == 1) {
-                bail!("{flag}: {given} values for {n} --surface files: give one per surface{}", if flag == "--size" { " (LX each)" } else { " or one for all" });
+                bail!(
+                    "{flag}: {given} values for {n} --surface files: give one per surface{}",
+                    if flag == "--size" {
+                        " (LX each)"
+                    } else {
+                        " or one for all"
+                    }
+                );
             }
         }
         let measurements = (0..n)

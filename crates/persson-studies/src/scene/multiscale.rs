@@ -6,9 +6,9 @@
 
 use std::path::PathBuf;
 
-use persson::error::Result;
 #[cfg(feature = "topography")]
 use persson::error::Error;
+use persson::error::Result;
 use persson::spectrum::Tabulated;
 use serde::Serialize;
 

@@ -287,7 +287,8 @@ impl SpectrumSpec {
     pub fn files_mut(&mut self) -> Vec<&mut PathBuf> {
         match self {
             SpectrumSpec::SelfAffine { .. } => vec![],
-            SpectrumSpec::Tabulated { file, .. } | SpectrumSpec::HeightMap(HeightMapSpec { file, .. }) => {
+            SpectrumSpec::Tabulated { file, .. }
+            | SpectrumSpec::HeightMap(HeightMapSpec { file, .. }) => {
                 vec![file]
             }
             SpectrumSpec::Sum { parts } => parts.iter_mut().flat_map(|p| p.files_mut()).collect(),
