@@ -38,7 +38,19 @@ pub struct MeasurementBand {
     /// rms height of the detrended heights, m.
     pub rms_height: f64,
     /// Its binned spectrum over its band.
-    pub psd: persson::topography::Psd,
+    pub psd: BandSpectrum,
+}
+
+/// A measurement's binned spectrum on the common bins.
+#[derive(Debug, Clone, Serialize)]
+#[non_exhaustive]
+pub struct BandSpectrum {
+    /// Mean q of each bin, 1/m.
+    pub q: Vec<f64>,
+    /// Mean C of each bin, m⁴ (Persson).
+    pub c: Vec<f64>,
+    /// Modes in each bin.
+    pub count: Vec<usize>,
 }
 
 /// The combined spectrum of several measurements and each one's band.
@@ -144,7 +156,11 @@ pub fn multi_scale(specs: &[HeightMapSpec]) -> Result<MultiScaleReport> {
                 q_max: c.q_max,
                 tip_cutoff_length: c.tip_cutoff_length,
                 rms_height: c.analysis.rms_height,
-                psd: c.analysis.psd.clone(),
+                psd: BandSpectrum {
+                    q: c.analysis.psd.q.clone(),
+                    c: c.analysis.psd.c.clone(),
+                    count: c.analysis.psd.count.clone(),
+                },
             })
             .collect(),
         q: m.q,
