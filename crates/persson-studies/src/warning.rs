@@ -145,6 +145,15 @@ pub enum Warning {
         /// Smallest and largest q left out, 1/m.
         q_range: (f64, f64),
     },
+    /// The BEM's preconditioned solver stalled (ε not falling) at these
+    /// nominal pressures and the plain Polonsky–Keer loop finished the solves:
+    /// the same answer to the same tolerance, in more time.
+    PreconditionerFallback {
+        /// σ0 of the solves that fell back.
+        nominal_pressure: Vec<f64>,
+        /// Iterations of the preconditioned loop before it was abandoned (per solve).
+        iterations: Vec<usize>,
+    },
 }
 
 impl Warning {
@@ -310,6 +319,24 @@ impl fmt::Display for Warning {
                 n(q_range.0),
                 n(q_range.1)
             ),
+            Warning::PreconditionerFallback {
+                nominal_pressure,
+                iterations,
+            } => {
+                let list: Vec<String> = nominal_pressure.iter().map(|&p| n(p)).collect();
+                write!(
+                    f,
+                    "the preconditioned BEM solver stalled at σ0 = {} (after {} iteration(s)) \
+                     and the plain Polonsky–Keer loop finished: same answer and tolerance, \
+                     more time",
+                    list.join(", "),
+                    iterations
+                        .iter()
+                        .map(|k| k.to_string())
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                )
+            }
             Warning::MapNotPeriodic => write!(
                 f,
                 "the map is not periodic: its coarser copies are block averages, each a \
@@ -359,7 +386,8 @@ impl Warning {
     /// The kind of the warning, as in its JSON (`high_pressure`, `steep_slope`,
     /// `zeta_beyond_band`, `band_limited`, `psd_convention`,
     /// `rising_spectrum`, `clipped_band`, `map_not_periodic`, `resampled`,
-    /// `hurst_not_fitted`, `hurst_out_of_range`, `bins_left_out`).
+    /// `hurst_not_fitted`, `hurst_out_of_range`, `bins_left_out`,
+    /// `preconditioner_fallback`).
     pub fn kind(&self) -> &'static str {
         match self {
             Warning::HighPressure { .. } => "high_pressure",
@@ -374,6 +402,7 @@ impl Warning {
             Warning::HurstNotFitted { .. } => "hurst_not_fitted",
             Warning::HurstOutOfRange { .. } => "hurst_out_of_range",
             Warning::BinsLeftOut { .. } => "bins_left_out",
+            Warning::PreconditionerFallback { .. } => "preconditioner_fallback",
         }
     }
 }
@@ -412,11 +441,27 @@ impl<'a, R: Serialize> Warned<'a, R> {
     }
 }
 
+/// [`Warning::PreconditionerFallback`] when some solve of `points` fell back
+/// to the plain solver ([`persson::bem::rough::RoughPoint::fallback`]).
+#[cfg(feature = "bem")]
+pub fn preconditioner_fallback(points: &[persson::bem::rough::RoughPoint]) -> Option<Warning> {
+    let (nominal_pressure, iterations): (Vec<f64>, Vec<usize>) = points
+        .iter()
+        .filter_map(|p| p.fallback.map(|f| (p.nominal_pressure, f.iterations)))
+        .unzip();
+    (!nominal_pressure.is_empty()).then_some(Warning::PreconditionerFallback {
+        nominal_pressure,
+        iterations,
+    })
+}
+
 /// The warnings of an FFT-BEM rough contact: a synthesised surface
-/// band-limited by its grid, pressures above 0.1 E*, a surface steeper than 1.
+/// band-limited by its grid, pressures above 0.1 E*, a surface steeper than 1,
+/// solves finished by the plain solver.
 #[cfg(feature = "bem")]
 pub fn of_rough(r: &persson::bem::rough::RoughReport) -> Vec<Warning> {
     let mut w = Vec::new();
+    push(&mut w, preconditioner_fallback(&r.points));
     let pressures: Vec<f64> = r.points.iter().map(|p| p.nominal_pressure).collect();
     push(
         &mut w,
