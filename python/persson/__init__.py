@@ -43,6 +43,8 @@ from ._persson import (
 import functools as _functools
 import warnings as _warnings
 
+from ._ensemble import ensemble
+
 
 def _renamed(f, **old_names):
     """`f` with old keyword names (persson ≤ 0.3, ``old=new``) accepted as
@@ -98,6 +100,7 @@ __all__ = [
     "compare",
     "contact_area",
     "contact_modulus",
+    "ensemble",
     "g",
     "kappa",
     "kappa_report",

@@ -298,3 +298,21 @@ def compare(
     yield_stress: Optional[float] = None,
 ) -> Report:
     """`persson compare --json` (with `yield_stress`: `compare --yield-stress`)."""
+def ensemble(
+    spectrum: Spectrum,
+    contact_modulus: float,
+    pressure: ArrayLike,
+    *,
+    grid: int = 64,
+    levels: int = 2,
+    seeds: int = 4,
+    seed: int = 1,
+    pixels_per_wavelength: float = 4.0,
+    tolerance: float = 1e-10,
+    max_iterations: int = 10000,
+    client: Any = None,
+    threads: int = 1,
+    timeout: str = "10s",
+) -> Report:
+    """`persson compare ensemble --json`: the BEM on seeds × grids, here or on Dask
+    (`client`: a dask.distributed Client or a scheduler address)."""

@@ -9,6 +9,7 @@
 
 mod arrays;
 mod bem;
+mod ensemble;
 mod reports;
 mod serde_probe;
 mod spectrum;
@@ -109,5 +110,6 @@ fn _persson(m: &Bound<'_, PyModule>) -> PyResult<()> {
     theory::register(m)?;
     reports::register(m)?;
     bem::register(m)?;
+    ensemble::register(m)?;
     Ok(())
 }
