@@ -6,7 +6,9 @@
 //! format is [`schema`] (its JSON Schema is `crates/persson-studies/schema/scene.schema.json`), the
 //! computation [`run`] and the typed results [`report`]: the subcommands
 //! `area`, `magnification`, `kappa`, `separation` and `stress` call the same
-//! functions and print the same reports.
+//! functions and print the same reports. The output `friction` (rubber
+//! friction, with the scene's `rubber` instead of `material`) is computed by
+//! [`friction()`], which `persson friction` calls too.
 //!
 //! ```json
 //! { "schema": 1,
