@@ -9,6 +9,7 @@
 
 mod arrays;
 mod bem;
+mod friction;
 mod reports;
 mod spectrum;
 mod theory;
@@ -105,5 +106,6 @@ fn _persson(m: &Bound<'_, PyModule>) -> PyResult<()> {
     theory::register(m)?;
     reports::register(m)?;
     bem::register(m)?;
+    friction::register(m)?;
     Ok(())
 }

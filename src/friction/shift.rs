@@ -359,7 +359,7 @@ impl TemperatureShift {
                         temperature,
                         format!(
                             "> T_ref − C2 = {} K (the WLF singularity)",
-                            self.reference_temperature - c2
+                            ((self.reference_temperature - c2) * 1e6).round() / 1e6
                         ),
                     ));
                 }

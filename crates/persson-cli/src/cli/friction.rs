@@ -171,7 +171,7 @@ pub fn run(a: Args) -> anyhow::Result<()> {
     let velocity_range = match a.velocity_range.as_slice() {
         [] => None,
         &[lo, hi, n] => {
-            if !(n.fract() == 0.0 && n >= 1.0 && n <= 1e6) {
+            if !(n.fract() == 0.0 && (1.0..=1e6).contains(&n)) {
                 bail!("--velocity-range: N = {n} must be a whole number in 1..=1000000");
             }
             Some(VelocityRange {
