@@ -154,6 +154,40 @@ pub enum Warning {
         /// Iterations of the preconditioned loop before it was abandoned (per solve).
         iterations: Vec<usize>,
     },
+    /// Rubber friction sampled a master curve outside its frequency range,
+    /// where it is held at its end values.
+    MasterCurveRange {
+        /// Lowest and highest tabulated ω, rad/s.
+        frequency_range: (f64, f64),
+        /// Most decades of a_T q v below the table over the points.
+        decades_below: f64,
+        /// Most decades of a_T q v above the table over the points.
+        decades_above: f64,
+        /// The largest share of μ from outside the table over the points.
+        friction_fraction: f64,
+        /// Points (T, σ0, v) that sampled outside the table.
+        count: usize,
+        /// Points in all.
+        of: usize,
+    },
+    /// Rubber friction whose integrals did not reach the tolerance at some
+    /// points (their error bounds say how far off).
+    FrictionNotConverged {
+        /// Points that did not converge.
+        count: usize,
+        /// Points in all.
+        of: usize,
+        /// The largest relative error bound of μ among them.
+        relative_error_bound: f64,
+    },
+    /// The flash temperature heated the rubber beyond a shift table's last
+    /// row: a_T was extended linearly in ln a_T.
+    ShiftTableExtended {
+        /// The table's highest temperature, K.
+        temperature_max: f64,
+        /// The highest temperature reached, K.
+        temperature: f64,
+    },
 }
 
 impl Warning {
@@ -337,6 +371,9 @@ impl fmt::Display for Warning {
                         .join(", ")
                 )
             }
+            Warning::MasterCurveRange { .. }
+            | Warning::FrictionNotConverged { .. }
+            | Warning::ShiftTableExtended { .. } => friction(f, self),
             Warning::MapNotPeriodic => write!(
                 f,
                 "the map is not periodic: its coarser copies are block averages, each a \
@@ -344,6 +381,53 @@ impl fmt::Display for Warning {
                  trust the finest grid (the map as measured)"
             ),
         }
+    }
+}
+
+/// The text of the rubber-friction warnings.
+fn friction(f: &mut fmt::Formatter<'_>, w: &Warning) -> fmt::Result {
+    let n = |v: f64| number(v, 3);
+    match w {
+        Warning::MasterCurveRange {
+            frequency_range,
+            decades_below,
+            decades_above,
+            friction_fraction,
+            count,
+            of,
+        } => write!(
+            f,
+            "the master curve (ω = {} … {} rad/s) was sampled outside its range at {count} of \
+             {of} points, up to {} decade(s) below and {} above (a_T q v; held at its end \
+             values there): up to {} % of μ comes from there (extend the master curve, or \
+             narrow the velocities, temperatures or q1)",
+            n(frequency_range.0),
+            n(frequency_range.1),
+            n(*decades_below),
+            n(*decades_above),
+            n(100.0 * friction_fraction)
+        ),
+        Warning::FrictionNotConverged {
+            count,
+            of,
+            relative_error_bound,
+        } => write!(
+            f,
+            "the friction integrals did not reach the tolerance at {count} of {of} points \
+             (relative error bound of μ up to {}; see friction_coefficient_error_bound)",
+            n(*relative_error_bound)
+        ),
+        Warning::ShiftTableExtended {
+            temperature_max,
+            temperature,
+        } => write!(
+            f,
+            "the flash temperature heated the rubber to {} K, beyond the shift table's last \
+             row at {} K: a_T was extended linearly in ln a_T there",
+            n(*temperature),
+            n(*temperature_max)
+        ),
+        _ => Ok(()),
     }
 }
 
@@ -387,7 +471,7 @@ impl Warning {
     /// `zeta_beyond_band`, `band_limited`, `psd_convention`,
     /// `rising_spectrum`, `clipped_band`, `map_not_periodic`, `resampled`,
     /// `hurst_not_fitted`, `hurst_out_of_range`, `bins_left_out`,
-    /// `preconditioner_fallback`).
+    /// `preconditioner_fallback`, `master_curve_range`, `friction_not_converged`, `shift_table_extended`).
     pub fn kind(&self) -> &'static str {
         match self {
             Warning::HighPressure { .. } => "high_pressure",
@@ -403,6 +487,9 @@ impl Warning {
             Warning::HurstOutOfRange { .. } => "hurst_out_of_range",
             Warning::BinsLeftOut { .. } => "bins_left_out",
             Warning::PreconditionerFallback { .. } => "preconditioner_fallback",
+            Warning::MasterCurveRange { .. } => "master_curve_range",
+            Warning::FrictionNotConverged { .. } => "friction_not_converged",
+            Warning::ShiftTableExtended { .. } => "shift_table_extended",
         }
     }
 }
