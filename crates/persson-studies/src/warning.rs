@@ -167,6 +167,7 @@ pub enum Warning {
         above: PathBuf,
         /// The gap (q_max of the one below, q_min of the one above), 1/m.
         q_range: (f64, f64),
+    },
     /// The BEM's preconditioned solver stalled (ε not falling) at these
     /// nominal pressures and the plain Polonsky–Keer loop finished the solves:
     /// the same answer to the same tolerance, in more time.
