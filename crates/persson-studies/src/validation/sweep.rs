@@ -234,6 +234,7 @@ pub fn sweep_one(
         boundary: Boundary::Periodic,
         solver: config.options,
         bins: None,
+        ..RoughOptions::default()
     };
     let mut observer = SweepObserver {
         progress: &mut |_| {},
