@@ -1,5 +1,5 @@
 //! Binary instrument formats (Gwyddion `.gwy`, Digital Surf `.sur`, Zygo
-//! MetroPro `.dat`) on
+//! MetroPro `.dat`, NetCDF `.nc`) on
 //! real files (`tests/data/`, origins and licences in `tests/data/README.md`):
 //! the grid, sizes, undefined points and heights as read, against
 //! SurfaceTopography (or gwyfile where SurfaceTopography reads nothing)
@@ -130,6 +130,8 @@ fn truncated_files_are_errors_naming_the_format() {
         ("sur-2.sur", "Digital Surf .sur"),
         ("sur-3.sur", "Digital Surf .sur"),
         ("metropro-1.dat", "Zygo MetroPro .dat"),
+        ("nc-1.nc", "NetCDF .nc"),
+        ("st-mask.nc", "NetCDF .nc"),
     ] {
         let b = std::fs::read(data(name)).unwrap();
         let o = ReadOptions {
@@ -349,4 +351,31 @@ fn metropro_sign_undefined_points_size_and_damage() {
         "not a finite, non-zero",
     );
     error_of("e.dat", &with(68, &0u16.to_be_bytes()), &o, "no phase data");
+}
+
+#[test]
+fn netcdf_versions_conventions_and_damage() {
+    let b = std::fs::read(data("nc-1.nc")).unwrap();
+    let o = ReadOptions::default();
+    let with = |offset: usize, v: &[u8]| {
+        let mut c = b.clone();
+        c[offset..offset + v.len()].copy_from_slice(v);
+        c
+    };
+    error_of("v.nc", &with(3, &[3]), &o, "version 3");
+    error_of("c.nc", b"CDX\x01\0\0\0\0", &o, "does not start with CDF");
+    let heights = b.windows(7).position(|w| w == b"heights").unwrap();
+    error_of(
+        "h.nc",
+        &with(heights, b"heightz"),
+        &o,
+        "no variable 'heights'",
+    );
+    // The unit of y (the first variable) is not a length.
+    let unit = b.windows(6).position(|w| w == b"unit\0\0").unwrap();
+    let nm = unit + 12; // "unit", its type (char) and count (2), then "nm"
+    error_of("u.nc", &with(nm, b"Hz"), &o, "not a unit of length");
+    // The heights in nm as the x unit says; x:length 5 (nm) over 5 points.
+    let t = read::from_bytes(Path::new("n.nc"), &b, &o).unwrap();
+    assert_eq!((t.nx(), t.ny(), t.lx(), t.ly()), (5, 10, 5e-9, 1e-8));
 }

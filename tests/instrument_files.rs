@@ -37,7 +37,9 @@ fn data(name: &str) -> PathBuf {
 fn options_for(name: &str) -> ReadOptions {
     ReadOptions {
         fill_undefined: name.contains("xyz-2")
-            || [".x3p", ".gwy", ".sur"].iter().any(|e| name.ends_with(e)),
+            || [".x3p", ".gwy", ".sur", ".nc"]
+                .iter()
+                .any(|e| name.ends_with(e)),
         ..Default::default()
     }
 }

@@ -198,6 +198,20 @@ def write_gwyfile_mask(path):
     c.tofile(path("gwyfile-mask.gwy"))
 
 
+def write_st_mask_nc(path):
+    """st-mask.nc: matrix-4.txt with 378 undefined points, SurfaceTopography's to_netcdf."""
+    if os.path.exists(path("st-mask.nc")):
+        return
+    t = read_topography(path("matrix-4.txt"))
+    h = np.array(t.heights(), dtype=float)  # [ix, iy]
+    undefined = np.zeros(h.shape, dtype=bool)
+    undefined[20:32, 100:112] = True
+    undefined.flat[::97] = True
+    u = Topography(np.ma.masked_array(h * 1e6, mask=undefined),
+                   tuple(x * 1e6 for x in t.physical_sizes), unit="µm")
+    u.to_netcdf(path("st-mask.nc"))
+
+
 def uniform_metres(t):
     """A uniform line scan in metres from what SurfaceTopography read."""
     f = UNITS[t.unit]
@@ -233,10 +247,14 @@ def main():
     maps = []
     binary_maps = []
     points = []
-    for name in ["gwyfile-mask.gwy", "sur-2.sur", "sur-3.sur", "metropro-1.dat"]:
+    write_st_mask_nc(path)
+    for name in ["gwyfile-mask.gwy", "sur-2.sur", "sur-3.sur", "metropro-1.dat", "nc-1.nc",
+                 "st-mask.nc"]:
         t, entry = st_points(path, name)
         points.append(entry)
-        if name != "sur-3.sur":  # sur-3: 89 % undefined, points only
+        # sur-3: 89 % undefined; nc-1: a plane (its detrended rms is rounding
+        # noise, 2e-24 m): grid, sizes and heights only
+        if name not in ("sur-3.sur", "nc-1.nc"):
             binary_maps.append(map_entry(name, metres(t)))
     points.append(gwyfile_points(path, "gwyfile-test.gwy", 1e-9, 1e-6))
     for name in ["gwyddion-export-english.txt", "gwyddion-export-german.txt",

@@ -3,23 +3,21 @@
 
 use std::path::Path;
 
-use super::{gsf, gwy, metropro, sur, Format};
+use super::{gsf, gwy, metropro, netcdf, sur, Format};
 use crate::error::{Error, Result};
 
 /// Extensions of binary instrument formats persson does not read.
 const UNSUPPORTED: &[&str] = &[
     "plu", "plux", "datx", "opd", "opdx", "di", "spm", "ibw", "mi", "nid", "frt", "al3d", "bcrf",
     "bcr", "mnt", "lext", "vk3", "vk4", "vk6", "vk7", "zon", "zmg", "os3d", "oir", "poir", "jpk",
-    "tmd", "top", "nms", "stp", "nc", "h5", "hdf5", "mat", "tif", "tiff", "sdf", "ezd", "mdt",
-    "xlsx", "xls", "zip", "gz", "hgt", "dzi", "qep", "nmm", "ps", "wsxm",
+    "tmd", "top", "nms", "stp", "h5", "hdf5", "mat", "tif", "tiff", "sdf", "ezd", "mdt", "xlsx",
+    "xls", "zip", "gz", "hgt", "dzi", "qep", "nmm", "ps", "wsxm",
 ];
 
 /// Leading bytes of binary formats persson does not read, with their names.
 const MAGICS: &[(&[u8], &str)] = &[
     (b"GWYO", "Gwyddion 1 .gwy"),
     (b"\x89HDF\r\n\x1a\n", "HDF5"),
-    (b"CDF\x01", "NetCDF"),
-    (b"CDF\x02", "NetCDF"),
     (b"II*\x00", "TIFF"),
     (b"MM\x00*", "TIFF"),
     (b"MATLAB", "MATLAB .mat"),
@@ -30,7 +28,7 @@ const MAGICS: &[(&[u8], &str)] = &[
 /// What persson reads, for the error on a format it does not.
 pub(crate) const READS: &str = "persson reads .npy, text (a matrix, XYZ triples or a line \
      scan, in .txt, .csv, .dat, .asc or .xyz), Gwyddion .gsf and .gwy, Digital Surf .sur, \
-     Zygo MetroPro .dat and ISO 25178-72 .x3p; export to GSF or x3p with Gwyddion or \
+     Zygo MetroPro .dat, NetCDF .nc and ISO 25178-72 .x3p; export to GSF or x3p with Gwyddion or \
      SurfaceTopography";
 
 fn unsupported(path: &Path, what: &str) -> Error {
@@ -55,6 +53,7 @@ pub(crate) fn format(path: &Path, bytes: &[u8]) -> Result<Format> {
         Some("xyz") => return Ok(Format::Xyz),
         Some("gwy") => return Ok(Format::Gwy),
         Some("sur") => return Ok(Format::Sur),
+        Some("nc") => return Ok(Format::NetCdf),
         Some(e) if UNSUPPORTED.contains(&e) => return Err(unsupported(path, &format!(".{e}"))),
         _ => {}
     }
@@ -66,6 +65,9 @@ pub(crate) fn format(path: &Path, bytes: &[u8]) -> Result<Format> {
     }
     if metropro::MAGICS.iter().any(|m| bytes.starts_with(m)) {
         return Ok(Format::MetroPro);
+    }
+    if bytes.starts_with(netcdf::MAGIC) {
+        return Ok(Format::NetCdf);
     }
     if bytes.starts_with(gwy::MAGIC) {
         return Ok(Format::Gwy);

@@ -11,6 +11,7 @@
 //! | Gwyddion native (first height channel) | `.gwy`, or `GWYP` | `xreal`, `yreal` | `si_unit_z` (empty: the caller's, required) | `/N/mask` > 0.5 |
 //! | Digital Surf | `.sur`, or `DIGITAL SURF` | `nx·Δx`, `ny·Δy` | the unit of the scaled z | z_min − 2 with "special points" |
 //! | Zygo MetroPro phase map | its magic (any extension, `.dat`) | `width·Δ`, `height·Δ` (Δ = 0: the caller's) | m | raw ≥ 2147483640 |
+//! | NetCDF classic, `heights(x, y)` or `heights(x)` | `.nc`, or `CDF` | `length` of `x`, `y` (absent: the caller's) | `unit` of `heights` (absent: of `x`) | `mask` ≠ 0, `_FillValue` |
 //!
 //! # Axis order
 //! A row of a `.npy` array or text matrix runs along x: the array of
@@ -48,7 +49,7 @@
 //!
 //! # Unsupported formats
 //! Binary instrument formats not in the table (`.plu`, `.datx`, `.opd`,
-//! `.vk4`, …) are an error that names the format and says how to
+//! `.vk4`, HDF5, …) are an error that names the format and says how to
 //! convert them.
 //!
 //! Every error is an [`Error::Parse`] naming the file (and line where it
@@ -62,6 +63,7 @@ mod gwy;
 mod header;
 mod line;
 mod metropro;
+mod netcdf;
 mod sur;
 mod text;
 mod units;
@@ -107,6 +109,8 @@ pub enum Format {
     Sur,
     /// Zygo MetroPro `.dat`.
     MetroPro,
+    /// NetCDF classic `.nc` (SurfaceTopography's conventions).
+    NetCdf,
 }
 
 /// How to read a topography.
@@ -281,6 +285,7 @@ fn parse(path: &Path, bytes: &[u8], options: &ReadOptions) -> Result<Raw> {
         Format::Gwy => gwy::parse(path, bytes)?,
         Format::Sur => sur::parse(path, bytes)?,
         Format::MetroPro => metropro::parse(path, bytes)?,
+        Format::NetCdf => netcdf::parse(path, bytes)?,
     };
     Ok(raw)
 }
