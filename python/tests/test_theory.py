@@ -315,3 +315,30 @@ def test_tabulated_start_matches_cli(tmp_path):
     with pytest.raises(ValueError, match="^start, table: give exactly one"):
         persson.stress("flat", 0.4, table=(sigma, density))
 
+
+def test_moments_g_and_area_against_closed_forms():
+    """Independent of the CLI: the moments of the piecewise power law in
+    closed form, G = (E*/σ0)² h'²_rms / 8 at full magnification, and Persson's
+    A/A0 = erf(1/(2√G)) (Persson, J. Chem. Phys. 115, 3840 (2001))."""
+    import math
+    h, q_l, q_r, q_s = 0.7, 1e3, 1e4, 1e7
+    s = spectrum("c_r", 1e-30)
+    c_r = 1e-30
+
+    def moment(k):
+        # 2π ∫ q^(k+1) C dq: flat C_r on [q_l, q_r], C_r (q/q_r)^(−2(1+H)) above.
+        flat = c_r * (q_r ** (k + 2) - q_l ** (k + 2)) / (k + 2)
+        e = k + 2 - 2 * (1 + h)
+        tail = c_r * q_r ** (2 + 2 * h) * (q_s ** e - q_r ** e) / e
+        return 2 * math.pi * (flat + tail)
+
+    # The crate's quadrature claims ~1e-12 relative on these moments.
+    rel = 1e-10
+    assert s.rms_height() == pytest.approx(math.sqrt(moment(0)), rel=rel)
+    assert s.rms_slope() == pytest.approx(math.sqrt(moment(2)), rel=rel)
+    assert s.rms_curvature() == pytest.approx(math.sqrt(moment(4)), rel=rel)
+    for p in PRESSURES:
+        g = (E_STAR / p) ** 2 * moment(2) / 8
+        assert persson.g(s, E_STAR, p) == pytest.approx(g, rel=rel)
+        assert persson.contact_area(s, E_STAR, p) == pytest.approx(
+            math.erf(1 / (2 * math.sqrt(g))), rel=rel)
