@@ -303,6 +303,7 @@ fn sur_inversion_special_points_and_damage() {
         "the header gives 7 points",
     );
     error_of("u.sur", &with(212, b"deg\0"), &o, "not a unit of length");
+    error_of("s.sur", &with(128, &0f32.to_le_bytes()), &o, "z scale 0");
     // 563 × 484 int32 points do not fit in 1024 bytes.
     error_of("t.sur", &b[..1024], &o, "truncated");
 }

@@ -24,6 +24,11 @@
 //! scans (dimension `n`) are errors naming them. A file's `periodic`
 //! attribute is not read: periodicity is the caller's (`--periodic`).
 //!
+//! The header is parsed here (a short grammar, every offset bounds-checked,
+//! the values read in place) rather than with the `netcdf3` crate, whose
+//! reader takes an owned `'static` stream (a copy of the file) and brings a
+//! parser-combinator dependency for the same grammar.
+//!
 //! # References
 //! Unidata, "NetCDF Classic and 64-bit Offset File Formats" and "CDF-5"
 //! (the grammar of the header); the NetCDF Users Guide, "Attribute
@@ -205,8 +210,11 @@ impl<'b> Header<'b> {
     }
 }
 
+/// Dimensions: (name, length); length 0 is the unlimited (record) one.
+type Dims = Vec<(String, usize)>;
+
 /// Dimensions (name, length) and variables of the header.
-fn header(path: &Path, b: &[u8]) -> Result<(Vec<(String, usize)>, Vec<Variable>)> {
+fn header(path: &Path, b: &[u8]) -> Result<(Dims, Vec<Variable>)> {
     let mut h = Header {
         b,
         pos: 0,

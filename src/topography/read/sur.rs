@@ -96,6 +96,9 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
     let zmin = f.i32(100, "z_min")?;
     let undefined = (f.u16(86, "special points")? == 1).then(|| i64::from(zmin) - 2);
     let scale = f64::from(f.f32(128, "z scale")?);
+    if !scale.is_finite() || scale == 0.0 {
+        return Err(f.bad(format!("z scale {scale}: must be finite and not 0")));
+    }
     let inversion = f.u16(290, "inversion")?;
     let sign = if (1..=3).contains(&inversion) {
         -1.0
