@@ -74,6 +74,22 @@ class Spectrum:
     ) -> Spectrum:
         """The spectrum of a measured surface file (the CLI's --surface)."""
     @staticmethod
+    def sum(spectra: Sequence[Spectrum]) -> Spectrum:
+        """Two (or more) rough bodies: C = C1 + C2 (the CLI's --psd2/--surface2)."""
+    @staticmethod
+    def combine(
+        paths: Sequence[PathLike],
+        *,
+        sizes: Optional[Sequence[Optional[float]]] = None,
+        pixel_sizes: Optional[Sequence[Optional[float]]] = None,
+        tip_radii: Optional[Sequence[Optional[float]]] = None,
+        periodic: bool = False,
+        detrend: Optional[Detrend] = None,
+        window: Optional[Window] = None,
+        q_max: Optional[float] = None,
+    ) -> Spectrum:
+        """One spectrum from several measurements (the CLI's repeated --surface): mode-weighted mean."""
+    @staticmethod
     def from_height_map(
         heights: FloatArray,
         pixel_size: Union[float, Tuple[float, float]],
@@ -198,6 +214,36 @@ def theories(
     """The scene output `theories`: A/A0 of every theory against load."""
 def separation(spectrum: Spectrum, contact_modulus: float, pressure: ArrayLike, *, tolerance: float = 1e-10) -> Report:
     """`persson separation --json`."""
+def friction(
+    spectrum: Spectrum,
+    velocity: ArrayLike,
+    pressure: ArrayLike,
+    temperature: Optional[ArrayLike] = None,
+    *,
+    master_curve: Optional[str | os.PathLike[str]] = None,
+    frequency_unit: Optional[Literal["rad/s", "Hz"]] = None,
+    prony: Optional[str | os.PathLike[str]] = None,
+    standard_linear_solid: Optional[Sequence[float]] = None,
+    wlf: Optional[Sequence[float]] = None,
+    shift_table: Optional[str | os.PathLike[str]] = None,
+    reference_temperature: Optional[float] = None,
+    vertical_shift: Optional[Literal["none", "entropic", "table"]] = None,
+    poisson: float = 0.5,
+    q1: Optional[float] = None,
+    q1_rms_slope: Optional[float] = None,
+    gamma: float = 0.5,
+    tolerance: float = 1e-8,
+    points_per_decade: int = 4,
+    flash_temperature: bool = False,
+    thermal_conductivity: Optional[float] = None,
+    density: Optional[float] = None,
+    heat_capacity: Optional[float] = None,
+) -> Report:
+    """`persson friction --json` (Persson's rubber friction) plus arrays of shape
+    (temperatures, pressures, velocities): `friction_coefficient`, `contact_fraction`,
+    their `_error_bound`s and, with `flash_temperature=True`, `flash_friction_coefficient`,
+    `flash_contact_fraction`, `flash_temperature`; 1-D `temperature`, `nominal_pressure`,
+    `velocity`."""
 def mean_separation(
     spectrum: Spectrum, contact_modulus: float, pressure: ArrayLike, *, tolerance: float = 1e-10
 ) -> dict[str, FloatArray]:

@@ -185,6 +185,7 @@ fn bem_rough<'py>(
         boundary: b,
         solver: options(tolerance, max_iterations, yield_stress)?,
         bins,
+        ..RoughOptions::default()
     };
     let r = match (heights, spectrum, grid) {
         (Some(h), None, None) => {

@@ -10,6 +10,7 @@
 mod arrays;
 mod bem;
 mod ensemble;
+mod friction;
 mod reports;
 mod serde_probe;
 mod spectrum;
@@ -111,5 +112,6 @@ fn _persson(m: &Bound<'_, PyModule>) -> PyResult<()> {
     reports::register(m)?;
     bem::register(m)?;
     ensemble::register(m)?;
+    friction::register(m)?;
     Ok(())
 }

@@ -29,6 +29,7 @@ const CONTAINERS: &[&str] = &[
     "stress",
     "bem",
     "bem_hertz",
+    "friction",
     // Keys whose value is a label from a closed set, spelled as on the command
     // line (CONTRACT: theory, boundary, start, convention).
     "theory",
@@ -137,6 +138,7 @@ fn commands(out_dir: &Path) -> Vec<Vec<Vec<String>>> {
         "stress --start hertz --g 0.6 --points 11",
         "stress --example --ball-radius 0.01 --load 10 --zeta 10 --yield-stress 1e8 --points 5",
         "separation --example",
+        "friction --example --standard-linear-solid 3e8,3e6,1e-4 --pressure 2e5 --velocity 1e-2,1 --flash-temperature --thermal-conductivity 0.25 --density 1200 --heat-capacity 1500",
         "bem hertz --grid 32",
         "bem hertz --grid 16,32 --yield-stress 0.05",
         "bem rough --example --grid 32",
@@ -144,6 +146,9 @@ fn commands(out_dir: &Path) -> Vec<Vec<Vec<String>>> {
         "compare --example --grid 32 --levels 2 --yield-stress 6e6",
         "compare ensemble --example --grid 32 --levels 2 --seeds 2 --pressure 1e6 --threads 1",
         "spectrum --surface tests/reference/data/map_a.npy --pixel-size 1e-6",
+        "spectrum --surface tests/reference/data/map_a.npy --surface tests/reference/data/map_b.npy --pixel-size 4e-6,1e-6",
+        "spectrum --surface tests/reference/data/map_a.npy --surface tests/reference/data/map_b.npy --pixel-size 1e-6,1e-3",
+        "area --example --psd2 tests/reference/data/psd_second_body.csv",
         "compare --surface tests/reference/data/map_b.npy --pixel-size 2e-6 --periodic --contact-modulus 1e9",
         "report stability",
     ]

@@ -30,6 +30,10 @@ pub const HIGH_PRESSURE_RATIO: f64 = 0.1;
 /// An rms slope above this is warned of ([`Warning::SteepSlope`]).
 pub const STEEP_SLOPE: f64 = 1.0;
 
+/// The bands of two rough bodies' spectra further apart than this factor
+/// (at either end) are warned of ([`Warning::SumBands`]).
+pub const SUM_BAND_RATIO: f64 = 10.0;
+
 /// One remark on the input of a calculation; it never changes a number.
 ///
 /// Serialised as `{"kind": …, <its fields>, "message": <its text>}`, the kind
@@ -145,6 +149,68 @@ pub enum Warning {
         /// Smallest and largest q left out, 1/m.
         q_range: (f64, f64),
     },
+    /// The spectra of two (or more) rough bodies cover bands more than
+    /// [`SUM_BAND_RATIO`] apart: outside their common band the sum is one
+    /// body's roughness alone.
+    SumBands {
+        /// Each body's band (q_min, q_max), 1/m.
+        bands: Vec<(f64, f64)>,
+        /// The largest ratio of the lower or of the upper ends.
+        ratio: f64,
+    },
+    /// Measurements of one surface whose reliable bands do not overlap: the
+    /// combined spectrum is interpolated across the gap.
+    MeasurementGap {
+        /// The measurement below the gap (its file).
+        below: PathBuf,
+        /// The measurement above it.
+        above: PathBuf,
+        /// The gap (q_max of the one below, q_min of the one above), 1/m.
+        q_range: (f64, f64),
+    },
+    /// The BEM's preconditioned solver stalled (ε not falling) at these
+    /// nominal pressures and the plain Polonsky–Keer loop finished the solves:
+    /// the same answer to the same tolerance, in more time.
+    PreconditionerFallback {
+        /// σ0 of the solves that fell back.
+        nominal_pressure: Vec<f64>,
+        /// Iterations of the preconditioned loop before it was abandoned (per solve).
+        iterations: Vec<usize>,
+    },
+    /// Rubber friction sampled a master curve outside its frequency range,
+    /// where it is held at its end values.
+    MasterCurveRange {
+        /// Lowest and highest tabulated ω, rad/s.
+        frequency_range: (f64, f64),
+        /// Most decades of a_T q v below the table over the points.
+        decades_below: f64,
+        /// Most decades of a_T q v above the table over the points.
+        decades_above: f64,
+        /// The largest share of μ from outside the table over the points.
+        friction_fraction: f64,
+        /// Points (T, σ0, v) that sampled outside the table.
+        count: usize,
+        /// Points in all.
+        of: usize,
+    },
+    /// Rubber friction whose integrals did not reach the tolerance at some
+    /// points (their error bounds say how far off).
+    FrictionNotConverged {
+        /// Points that did not converge.
+        count: usize,
+        /// Points in all.
+        of: usize,
+        /// The largest relative error bound of μ among them.
+        relative_error_bound: f64,
+    },
+    /// The flash temperature heated the rubber beyond a shift table's last
+    /// row: a_T was extended linearly in ln a_T.
+    ShiftTableExtended {
+        /// The table's highest temperature, K.
+        temperature_max: f64,
+        /// The highest temperature reached, K.
+        temperature: f64,
+    },
 }
 
 impl Warning {
@@ -175,6 +241,16 @@ impl Warning {
         (max > zeta_max * (1.0 + 1e-12)).then_some(Warning::ZetaBeyondBand {
             zeta: max,
             zeta_max,
+        })
+    }
+
+    /// [`Warning::SumBands`] when the parts' bands are more than
+    /// [`SUM_BAND_RATIO`] apart.
+    pub fn sum_bands(sum: &persson::spectrum::Sum) -> Option<Self> {
+        let ratio = sum.band_mismatch();
+        (ratio > SUM_BAND_RATIO).then(|| Warning::SumBands {
+            bands: sum.bands(),
+            ratio,
         })
     }
 
@@ -310,6 +386,53 @@ impl fmt::Display for Warning {
                 n(q_range.0),
                 n(q_range.1)
             ),
+            Warning::SumBands { bands, ratio } => {
+                let b: Vec<String> = bands
+                    .iter()
+                    .map(|(a, b)| format!("{} … {}", n(*a), n(*b)))
+                    .collect();
+                write!(
+                    f,
+                    "the rough bodies' spectra cover bands q = {} 1/m, a factor {} apart: \
+                     outside their common band the summed roughness is one body's alone",
+                    b.join(" and "),
+                    n(*ratio)
+                )
+            }
+            Warning::MeasurementGap {
+                below,
+                above,
+                q_range,
+            } => write!(
+                f,
+                "the reliable bands of {} and {} do not overlap: no measurement covers \
+                 q = {} … {} 1/m, where the combined spectrum is interpolated (power law)",
+                below.display(),
+                above.display(),
+                n(q_range.0),
+                n(q_range.1)
+            ),
+            Warning::PreconditionerFallback {
+                nominal_pressure,
+                iterations,
+            } => {
+                let list: Vec<String> = nominal_pressure.iter().map(|&p| n(p)).collect();
+                write!(
+                    f,
+                    "the preconditioned BEM solver stalled at σ0 = {} (after {} iteration(s)) \
+                     and the plain Polonsky–Keer loop finished: same answer and tolerance, \
+                     more time",
+                    list.join(", "),
+                    iterations
+                        .iter()
+                        .map(|k| k.to_string())
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                )
+            }
+            Warning::MasterCurveRange { .. }
+            | Warning::FrictionNotConverged { .. }
+            | Warning::ShiftTableExtended { .. } => friction(f, self),
             Warning::MapNotPeriodic => write!(
                 f,
                 "the map is not periodic: its coarser copies are block averages, each a \
@@ -317,6 +440,53 @@ impl fmt::Display for Warning {
                  trust the finest grid (the map as measured)"
             ),
         }
+    }
+}
+
+/// The text of the rubber-friction warnings.
+fn friction(f: &mut fmt::Formatter<'_>, w: &Warning) -> fmt::Result {
+    let n = |v: f64| number(v, 3);
+    match w {
+        Warning::MasterCurveRange {
+            frequency_range,
+            decades_below,
+            decades_above,
+            friction_fraction,
+            count,
+            of,
+        } => write!(
+            f,
+            "the master curve (ω = {} … {} rad/s) was sampled outside its range at {count} of \
+             {of} points, up to {} decade(s) below and {} above (a_T q v; held at its end \
+             values there): up to {} % of μ comes from there (extend the master curve, or \
+             narrow the velocities, temperatures or q1)",
+            n(frequency_range.0),
+            n(frequency_range.1),
+            n(*decades_below),
+            n(*decades_above),
+            n(100.0 * friction_fraction)
+        ),
+        Warning::FrictionNotConverged {
+            count,
+            of,
+            relative_error_bound,
+        } => write!(
+            f,
+            "the friction integrals did not reach the tolerance at {count} of {of} points \
+             (relative error bound of μ up to {}; see friction_coefficient_error_bound)",
+            n(*relative_error_bound)
+        ),
+        Warning::ShiftTableExtended {
+            temperature_max,
+            temperature,
+        } => write!(
+            f,
+            "the flash temperature heated the rubber to {} K, beyond the shift table's last \
+             row at {} K: a_T was extended linearly in ln a_T there",
+            n(*temperature),
+            n(*temperature_max)
+        ),
+        _ => Ok(()),
     }
 }
 
@@ -359,7 +529,9 @@ impl Warning {
     /// The kind of the warning, as in its JSON (`high_pressure`, `steep_slope`,
     /// `zeta_beyond_band`, `band_limited`, `psd_convention`,
     /// `rising_spectrum`, `clipped_band`, `map_not_periodic`, `resampled`,
-    /// `hurst_not_fitted`, `hurst_out_of_range`, `bins_left_out`).
+    /// `hurst_not_fitted`, `hurst_out_of_range`, `bins_left_out`,
+    /// `preconditioner_fallback`, `master_curve_range`, `friction_not_converged`, `shift_table_extended`,
+    /// `sum_bands`, `measurement_gap`).
     pub fn kind(&self) -> &'static str {
         match self {
             Warning::HighPressure { .. } => "high_pressure",
@@ -374,6 +546,12 @@ impl Warning {
             Warning::HurstNotFitted { .. } => "hurst_not_fitted",
             Warning::HurstOutOfRange { .. } => "hurst_out_of_range",
             Warning::BinsLeftOut { .. } => "bins_left_out",
+            Warning::SumBands { .. } => "sum_bands",
+            Warning::MeasurementGap { .. } => "measurement_gap",
+            Warning::PreconditionerFallback { .. } => "preconditioner_fallback",
+            Warning::MasterCurveRange { .. } => "master_curve_range",
+            Warning::FrictionNotConverged { .. } => "friction_not_converged",
+            Warning::ShiftTableExtended { .. } => "shift_table_extended",
         }
     }
 }
@@ -412,11 +590,27 @@ impl<'a, R: Serialize> Warned<'a, R> {
     }
 }
 
+/// [`Warning::PreconditionerFallback`] when some solve of `points` fell back
+/// to the plain solver ([`persson::bem::rough::RoughPoint::fallback`]).
+#[cfg(feature = "bem")]
+pub fn preconditioner_fallback(points: &[persson::bem::rough::RoughPoint]) -> Option<Warning> {
+    let (nominal_pressure, iterations): (Vec<f64>, Vec<usize>) = points
+        .iter()
+        .filter_map(|p| p.fallback.map(|f| (p.nominal_pressure, f.iterations)))
+        .unzip();
+    (!nominal_pressure.is_empty()).then_some(Warning::PreconditionerFallback {
+        nominal_pressure,
+        iterations,
+    })
+}
+
 /// The warnings of an FFT-BEM rough contact: a synthesised surface
-/// band-limited by its grid, pressures above 0.1 E*, a surface steeper than 1.
+/// band-limited by its grid, pressures above 0.1 E*, a surface steeper than 1,
+/// solves finished by the plain solver.
 #[cfg(feature = "bem")]
 pub fn of_rough(r: &persson::bem::rough::RoughReport) -> Vec<Warning> {
     let mut w = Vec::new();
+    push(&mut w, preconditioner_fallback(&r.points));
     let pressures: Vec<f64> = r.points.iter().map(|p| p.nominal_pressure).collect();
     push(
         &mut w,

@@ -158,6 +158,7 @@ pub fn sweep_source(
         boundary,
         solver: config.options,
         bins: None,
+        ..RoughOptions::default()
     };
     let mut done = 0;
     for (si, &seed) in seeds.iter().enumerate() {
@@ -233,6 +234,7 @@ pub fn sweep_one(
         boundary: Boundary::Periodic,
         solver: config.options,
         bins: None,
+        ..RoughOptions::default()
     };
     let mut observer = SweepObserver {
         progress: &mut |_| {},

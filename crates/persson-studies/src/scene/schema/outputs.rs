@@ -39,6 +39,9 @@ pub struct Outputs {
     /// FFT-BEM Hertz convergence, η per grid (feature `bem`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub bem_hertz: Option<BemHertzOutput>,
+    /// Rubber friction μ and A/A0 against sliding velocity (needs `rubber`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub friction: Option<super::FrictionOutput>,
 }
 
 /// Spectrum summary: rms height, slope and curvature over [q_min, q_max],
