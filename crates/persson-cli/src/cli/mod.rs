@@ -13,7 +13,9 @@ mod compare;
 mod compare_args;
 #[cfg(feature = "bem")]
 mod compare_plot;
+mod conductance;
 mod kappa;
+mod leakage;
 mod magnification;
 mod measured_args;
 mod number;
@@ -65,6 +67,10 @@ enum Cmd {
     /// Theories against the BEM at several resolutions, its continuum limit, κ and your data.
     #[cfg(feature = "bem")]
     Compare(compare::Args),
+    /// Thermal and electrical contact conductance against load (Barber's identity; gap over P(u)).
+    Conductance(conductance::Args),
+    /// Leak rate of a static seal against load (critical junction, effective medium).
+    Leakage(leakage::Args),
 }
 
 /// Run one parsed command line.
@@ -82,5 +88,7 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
         Cmd::Bem(a) => bem::run(a),
         #[cfg(feature = "bem")]
         Cmd::Compare(a) => compare::run(a),
+        Cmd::Conductance(a) => conductance::run(a),
+        Cmd::Leakage(a) => leakage::run(a),
     }
 }

@@ -11,12 +11,14 @@ mod bem;
 mod separation;
 mod spectrum;
 mod stress;
+mod transport;
 
 pub use area::*;
 pub use bem::*;
 pub use separation::*;
 pub use spectrum::*;
 pub use stress::*;
+pub use transport::*;
 
 /// What a scene computed: one entry per output asked for.
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
@@ -56,6 +58,12 @@ pub struct SceneReport {
     /// FFT-BEM Hertz convergence.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub bem_hertz: Option<BemHertzReport>,
+    /// Contact conductance against load.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub conductance: Option<ConductanceReport>,
+    /// Leak rate against load.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub leakage: Option<LeakageReport>,
     /// Remarks on the input (never a change of a number); the CLI prints them
     /// on stderr and in the top-level `warnings` of `--json`.
     #[serde(skip)]
@@ -73,6 +81,8 @@ impl SceneReport {
             self.theories.as_ref().map(|r| &r.warnings),
             self.separation.as_ref().map(|r| &r.warnings),
             self.stress.as_ref().map(|r| &r.warnings),
+            self.conductance.as_ref().map(|r| &r.warnings),
+            self.leakage.as_ref().map(|r| &r.warnings),
         ];
         let mut all = std::mem::take(&mut self.warnings);
         for w in lists.into_iter().flatten().flatten() {
@@ -95,7 +105,7 @@ impl Tabulate for SceneReport {
         let bem = self.bem.as_ref().map(|r| r as &dyn Tabulate);
         #[cfg(not(feature = "bem"))]
         let bem = None;
-        let parts: [Option<&dyn Tabulate>; 9] = [
+        let parts: [Option<&dyn Tabulate>; 11] = [
             self.spectrum.as_ref().map(|r| r as &dyn Tabulate),
             self.kappa.as_ref().map(|r| r as &dyn Tabulate),
             self.area.as_ref().map(|r| r as &dyn Tabulate),
@@ -105,6 +115,8 @@ impl Tabulate for SceneReport {
             self.stress.as_ref().map(|r| r as &dyn Tabulate),
             bem,
             self.bem_hertz.as_ref().map(|r| r as &dyn Tabulate),
+            self.conductance.as_ref().map(|r| r as &dyn Tabulate),
+            self.leakage.as_ref().map(|r| r as &dyn Tabulate),
         ];
         for p in parts.into_iter().flatten() {
             out.extend(p.tables());

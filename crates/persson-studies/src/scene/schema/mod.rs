@@ -47,10 +47,12 @@ macro_rules! names {
 mod names;
 mod outputs;
 mod spectrum;
+mod transport;
 
 pub use names::*;
 pub use outputs::*;
 pub use spectrum::*;
+pub use transport::*;
 
 /// The scene format version this crate reads.
 pub const SCHEMA: u32 = 1;

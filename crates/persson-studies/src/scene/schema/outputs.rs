@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
-use super::{BoundaryName, StartName, TheoryName, TheorySpec};
+use super::{BoundaryName, ConductanceOutput, LeakageOutput, StartName, TheoryName, TheorySpec};
 
 /// The outputs a scene asks for; absent ones are not computed.
 #[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
@@ -39,6 +39,14 @@ pub struct Outputs {
     /// FFT-BEM Hertz convergence, η per grid (feature `bem`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub bem_hertz: Option<BemHertzOutput>,
+    /// Thermal and electrical contact conductance against load, theory and
+    /// (with `bem`) the FFT-BEM.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub conductance: Option<ConductanceOutput>,
+    /// Leak rate of a static seal against load: critical junction, effective
+    /// medium and (with `bem`) Reynolds flow on the FFT-BEM's gap.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub leakage: Option<LeakageOutput>,
 }
 
 /// Spectrum summary: rms height, slope and curvature over [q_min, q_max],
