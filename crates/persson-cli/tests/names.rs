@@ -29,6 +29,8 @@ const CONTAINERS: &[&str] = &[
     "stress",
     "bem",
     "bem_hertz",
+    "conductance",
+    "leakage",
     // Keys whose value is a label from a closed set, spelled as on the command
     // line (CONTRACT: theory, boundary, start, convention).
     "theory",
@@ -136,6 +138,10 @@ fn commands(out_dir: &Path) -> Vec<Vec<Vec<String>>> {
         "stress --start hertz --g 0.6 --points 11",
         "stress --example --ball-radius 0.01 --load 10 --zeta 10 --yield-stress 1e8 --points 5",
         "separation --example",
+        "conductance --example --conductivity 50,20 --resistivity 1e-7 --gas-conductivity 0.026 --mean-free-path 7e-8",
+        "leakage --example --viscosity 1e-3 --pressure-drop 1e5",
+        "leakage --example --viscosity 1e-5 --inlet-pressure 2e5 --outlet-pressure 1e5",
+        "bem rough --example --grid 32 --conductivity 50 --resistivity 1e-7 --gas-conductivity 0.026 --mean-free-path 7e-8 --leakage --viscosity 1e-3 --pressure-drop 1e5",
         "bem hertz --grid 32",
         "bem hertz --grid 16,32 --yield-stress 0.05",
         "bem rough --example --grid 32",

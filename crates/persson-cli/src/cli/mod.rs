@@ -8,6 +8,8 @@ mod bem;
 #[cfg(feature = "bem")]
 mod bem_args;
 #[cfg(feature = "bem")]
+mod bem_transport;
+#[cfg(feature = "bem")]
 mod compare;
 #[cfg(feature = "bem")]
 mod compare_args;

@@ -9,7 +9,9 @@ use persson::leakage::{
     CriticalJunction, Drive, EffectiveMedium, LeakStatus, Seal, DEFAULT_PERCOLATION_THRESHOLD,
 };
 
-use super::report::{BemTransportReport, ConductanceReport, Fluid, LeakagePoint, LeakageReport};
+use super::report::{
+    BemTransportPoint, BemTransportReport, ConductanceReport, Fluid, LeakagePoint, LeakageReport,
+};
 use super::run::{prefix, RoughContact};
 use super::schema::{required, ConductanceOutput, LeakageOutput, TransportBem};
 use crate::warning::{self, Warning};
@@ -388,14 +390,13 @@ pub fn bem_warnings(
             Warning::band_limited(b.grid, b.surface_rms_slope, m.value),
         );
     }
-    warning::push(&mut w, sealed_bem(b));
+    warning::push(&mut w, sealed_bem(&b.points));
     w
 }
 
 /// [`Warning::Sealed`] of the BEM: the loads whose gap does not percolate.
-pub fn sealed_bem(b: &BemTransportReport) -> Option<Warning> {
-    let sealed: Vec<(f64, f64)> = b
-        .points
+pub fn sealed_bem(points: &[BemTransportPoint]) -> Option<Warning> {
+    let sealed: Vec<(f64, f64)> = points
         .iter()
         .filter(|p| p.percolates == Some(false))
         .map(|p| (p.nominal_pressure, p.contact_fraction))

@@ -426,3 +426,96 @@ impl LeakageReport {
         t
     }
 }
+
+/// An FFT-BEM rough contact with its conductance and leak rate per load
+/// (`persson bem rough --conductivity/--resistivity/--leakage`): the rough
+/// report's keys, and `transport` with one point per load.
+#[cfg(feature = "bem")]
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[non_exhaustive]
+pub struct RoughTransportReport {
+    /// The contact.
+    #[serde(flatten)]
+    pub rough: persson::bem::rough::RoughReport,
+    /// The transport values of each solve, in the order of `points`.
+    pub transport: Vec<BemTransportPoint>,
+}
+
+#[cfg(feature = "bem")]
+impl RoughTransportReport {
+    /// The report of a contact and its transport values.
+    pub fn new(rough: persson::bem::rough::RoughReport, transport: Vec<BemTransportPoint>) -> Self {
+        RoughTransportReport { rough, transport }
+    }
+}
+
+#[cfg(feature = "bem")]
+impl Tabulate for RoughTransportReport {
+    fn tables(&self) -> Vec<Table> {
+        let mut out = self.rough.tables();
+        out.push(transport_table(&self.transport));
+        out
+    }
+}
+
+/// The BEM's transport values per load, the columns present in the first point.
+pub fn transport_table(points: &[BemTransportPoint]) -> Table {
+    let first = points.first();
+    let has = |f: &dyn Fn(&BemTransportPoint) -> bool| first.is_some_and(f);
+    let th = has(&|p| p.thermal_conductance.is_some());
+    let el = has(&|p| p.electrical_conductance.is_some());
+    let gap = has(&|p| p.gap_conductance.is_some());
+    let flow = has(&|p| p.leak_rate.is_some());
+    let mut t = Table::new(
+        "bem_transport",
+        "FFT-BEM conductance (Barber's identity on the stiffness of a linear solve on the contact set) and Reynolds flow on the gap",
+    )
+    .column_digits(
+        "nominal_pressure",
+        "σ0",
+        input_digits(points.iter().map(|p| p.nominal_pressure)),
+    )
+    .column("stiffness", "K/A0");
+    if th {
+        t = t.column("thermal_conductance", "h_c W/(m² K)");
+    }
+    if el {
+        t = t.column("electrical_conductance", "h_e S/m²");
+    }
+    if gap {
+        t = t.column("gap_conductance", "h_gap W/(m² K)");
+    }
+    if flow {
+        t = t
+            .column("percolates", "percolates")
+            .column("effective_flow_conductivity", "σ_eff m³/(Pa s)")
+            .omittable(1)
+            .column("leak_rate", "Q m³/s");
+    }
+    for p in points {
+        let mut row = vec![p.nominal_pressure.into(), p.stiffness.into()];
+        for (on, v) in [
+            (th, p.thermal_conductance),
+            (el, p.electrical_conductance),
+            (gap, p.gap_conductance),
+        ] {
+            if on {
+                row.push(v.into());
+            }
+        }
+        if flow {
+            row.push(
+                match p.percolates {
+                    Some(true) => "yes",
+                    Some(false) => "no",
+                    None => "–",
+                }
+                .into(),
+            );
+            row.push(p.effective_flow_conductivity.into());
+            row.push(p.leak_rate.into());
+        }
+        t.push(row);
+    }
+    t
+}
