@@ -12,6 +12,7 @@ mod bem;
 mod reports;
 mod spectrum;
 mod theory;
+mod transport;
 
 use pyo3::exceptions::{PyOSError, PyValueError};
 use pyo3::prelude::*;
@@ -105,5 +106,6 @@ fn _persson(m: &Bound<'_, PyModule>) -> PyResult<()> {
     theory::register(m)?;
     reports::register(m)?;
     bem::register(m)?;
+    transport::register(m)?;
     Ok(())
 }

@@ -197,12 +197,23 @@ pub struct BemTransportPoint {
     pub flows: Vec<BemFlow>,
 }
 
+/// Direction of the mean flow on the BEM's grid (persson's
+/// `bem::reynolds::FlowDirection`, which needs the feature `flow`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Direction {
+    /// Along the second index j of `f[i·N + j]`.
+    X,
+    /// Along the first index i.
+    Y,
+}
+
 /// Reynolds flow on the BEM's gap in one direction.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 #[non_exhaustive]
 pub struct BemFlow {
     /// `x` or `y`.
-    pub direction: persson::bem::reynolds::FlowDirection,
+    pub direction: Direction,
     /// Whether the non-contact region connects inlet and outlet.
     pub percolates: bool,
     /// σ_eff, m³/(Pa s).
