@@ -98,7 +98,10 @@ impl Spectrum {
         measured: Option<Measured>,
     ) -> Self {
         let points = t.points().collect();
-        let mut warnings = measured.as_ref().map(Measured::warnings).unwrap_or_default();
+        let mut warnings = measured
+            .as_ref()
+            .map(Measured::warnings)
+            .unwrap_or_default();
         let steep = t
             .rms_slope(t.q_min(), t.q_max())
             .ok()
@@ -124,7 +127,11 @@ impl Spectrum {
         let mut s = Self::from_spec_quiet(spec)?;
         // As the CLI's surface (RoughContact): a measured map's warnings
         // first, then the spectrum's own.
-        s.warnings = s.measured.as_ref().map(Measured::warnings).unwrap_or_default();
+        s.warnings = s
+            .measured
+            .as_ref()
+            .map(Measured::warnings)
+            .unwrap_or_default();
         for w in persson_studies::scene::run::spectrum_warnings(spec, &s.shared) {
             if !s.warnings.contains(&w) {
                 s.warnings.push(w);
@@ -585,10 +592,12 @@ impl Spectrum {
             Recipe::SelfAffine(json) => ("self_affine", json.clone().into_pyobject(py)?.into_any()),
             Recipe::Points(p) => ("points", p.clone().into_pyobject(py)?.into_any()),
         };
-        let measured = s
-            .measured
-            .as_ref()
-            .map(|m| (m.file.clone(), m.notes.iter().map(note_state).collect::<Vec<_>>()));
+        let measured = s.measured.as_ref().map(|m| {
+            (
+                m.file.clone(),
+                m.notes.iter().map(note_state).collect::<Vec<_>>(),
+            )
+        });
         (restore, (state.0, state.1, s.description.clone(), measured))
             .into_pyobject(py)
             .map(|t| t.into_any())
@@ -613,7 +622,10 @@ impl Spectrum {
                 let points: Vec<(f64, f64)> = payload.extract()?;
                 let measured = measured
                     .map(|(file, notes)| -> PyResult<Measured> {
-                        let notes = notes.into_iter().map(note_of_state).collect::<PyResult<_>>()?;
+                        let notes = notes
+                            .into_iter()
+                            .map(note_of_state)
+                            .collect::<PyResult<_>>()?;
                         Ok(Measured { file, notes })
                     })
                     .transpose()?;

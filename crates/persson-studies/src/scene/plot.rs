@@ -297,20 +297,22 @@ pub fn conductance(r: &ConductanceReport) -> Result<Figure> {
         Axis::log("conductance h: W/(m² K) (thermal, gap), S/m² (electrical)"),
     );
     let th = &r.points;
-    let curves: [(
-        &str,
-        Box<dyn Fn(&persson::conductance::ConductancePoint) -> Option<f64>>,
-    ); 3] = [
-        ("thermal h_c", Box::new(|p| p.thermal_conductance)),
-        ("electrical h_e", Box::new(|p| p.electrical_conductance)),
-        ("gap h_gap", Box::new(|p| p.gap_conductance)),
+    type Theory = fn(&persson::conductance::ConductancePoint) -> Option<f64>;
+    type Bem = fn(&BemTransportPoint) -> Option<f64>;
+    let curves: [(&str, Theory, Bem); 3] = [
+        (
+            "thermal h_c",
+            |p| p.thermal_conductance,
+            |p| p.thermal_conductance,
+        ),
+        (
+            "electrical h_e",
+            |p| p.electrical_conductance,
+            |p| p.electrical_conductance,
+        ),
+        ("gap h_gap", |p| p.gap_conductance, |p| p.gap_conductance),
     ];
-    let bem: [Box<dyn Fn(&BemTransportPoint) -> Option<f64>>; 3] = [
-        Box::new(|p| p.thermal_conductance),
-        Box::new(|p| p.electrical_conductance),
-        Box::new(|p| p.gap_conductance),
-    ];
-    for ((label, f), g) in curves.iter().zip(&bem) {
+    for (label, f, g) in curves {
         let pts = positive(th.iter().map(|p| (p.nominal_pressure, f(p))));
         if pts.is_empty() {
             continue;
