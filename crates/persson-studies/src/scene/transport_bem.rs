@@ -180,6 +180,8 @@ pub fn transport(
         tolerance,
         request.clone(),
     )?;
+    // Needless before main's RoughOptions gains its `method` field, needed after.
+    #[allow(clippy::needless_update)]
     let options = RoughOptions {
         boundary: Boundary::Periodic,
         solver: Options {
@@ -188,6 +190,8 @@ pub fn transport(
             ..Options::default()
         },
         bins: None,
+        // main's RoughOptions gains fields (a solver `method`): their defaults.
+        ..RoughOptions::default()
     };
     solve(surface, contact_modulus, pressures, &options, &mut obs)?;
     Ok(BemTransportReport {
