@@ -362,3 +362,31 @@ def ensemble(
 ) -> Report:
     """`persson compare ensemble --json`: the BEM on seeds × grids, here or on Dask
     (`client`: a dask.distributed Client or a scheduler address)."""
+def conductance(
+    spectrum: Spectrum,
+    contact_modulus: float,
+    pressure: ArrayLike,
+    *,
+    conductivity: Optional[ArrayLike] = None,
+    resistivity: Optional[ArrayLike] = None,
+    gas_conductivity: Optional[float] = None,
+    mean_free_path: Optional[float] = None,
+    gap_table: Optional[Tuple[ArrayLike, ArrayLike]] = None,
+    tolerance: float = 1e-9,
+) -> dict[str, FloatArray]:
+    """Contact conductance against load: K/A0, h_c, h_e, h_gap and error bounds (`persson conductance`)."""
+def leakage(
+    spectrum: Spectrum,
+    contact_modulus: float,
+    pressure: ArrayLike,
+    *,
+    viscosity: float,
+    pressure_drop: Optional[float] = None,
+    inlet_pressure: Optional[float] = None,
+    outlet_pressure: Optional[float] = None,
+    seal_width: float = 1e-3,
+    seal_length: float = 1e-3,
+    percolation_threshold: float = 0.42,
+    tolerance: float = 1e-9,
+) -> dict[str, npt.NDArray[Any]]:
+    """Leak rate of a seal against load: critical junction and effective medium (`persson leakage`)."""

@@ -16,6 +16,7 @@ mod serde_probe;
 mod spectrum;
 mod theory;
 mod to_python;
+mod transport;
 
 use pyo3::exceptions::{PyOSError, PyValueError};
 use pyo3::prelude::*;
@@ -113,5 +114,6 @@ fn _persson(m: &Bound<'_, PyModule>) -> PyResult<()> {
     bem::register(m)?;
     ensemble::register(m)?;
     friction::register(m)?;
+    transport::register(m)?;
     Ok(())
 }

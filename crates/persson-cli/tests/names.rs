@@ -30,6 +30,8 @@ const CONTAINERS: &[&str] = &[
     "bem",
     "bem_hertz",
     "friction",
+    "conductance",
+    "leakage",
     // Keys whose value is a label from a closed set, spelled as on the command
     // line (CONTRACT: theory, boundary, start, convention).
     "theory",
@@ -139,6 +141,10 @@ fn commands(out_dir: &Path) -> Vec<Vec<Vec<String>>> {
         "stress --example --ball-radius 0.01 --load 10 --zeta 10 --yield-stress 1e8 --points 5",
         "separation --example",
         "friction --example --standard-linear-solid 3e8,3e6,1e-4 --pressure 2e5 --velocity 1e-2,1 --flash-temperature --thermal-conductivity 0.25 --density 1200 --heat-capacity 1500",
+        "conductance --example --conductivity 50,20 --resistivity 1e-7 --gas-conductivity 0.026 --mean-free-path 7e-8",
+        "leakage --example --viscosity 1e-3 --pressure-drop 1e5",
+        "leakage --example --viscosity 1e-5 --inlet-pressure 2e5 --outlet-pressure 1e5",
+        "bem rough --example --grid 32 --conductivity 50 --resistivity 1e-7 --gas-conductivity 0.026 --mean-free-path 7e-8 --leakage --viscosity 1e-3 --pressure-drop 1e5",
         "bem hertz --grid 32",
         "bem hertz --grid 16,32 --yield-stress 0.05",
         "bem rough --example --grid 32",

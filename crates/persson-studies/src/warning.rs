@@ -211,6 +211,23 @@ pub enum Warning {
         /// The highest temperature reached, K.
         temperature: f64,
     },
+    /// The contact already percolates at these loads: no channel crosses
+    /// the seal, the leak rate of `method` is 0 there (a result, not an error).
+    Sealed {
+        /// `critical-junction`, `effective-medium` or `bem`.
+        method: String,
+        /// The lowest sealed σ0.
+        nominal_pressure: f64,
+        /// How many of the loads are sealed.
+        count: usize,
+        /// A/A0 at the lowest sealed load (full magnification, or the BEM's).
+        contact_fraction: f64,
+        /// The A/A0 above which the method calls the contact percolating
+        /// (a_c, ½ for the effective medium; absent for the BEM, which
+        /// finds no open path).
+        #[serde(skip_serializing_if = "Option::is_none")]
+        percolation_threshold: Option<f64>,
+    },
 }
 
 impl Warning {
@@ -433,6 +450,31 @@ impl fmt::Display for Warning {
             Warning::MasterCurveRange { .. }
             | Warning::FrictionNotConverged { .. }
             | Warning::ShiftTableExtended { .. } => friction(f, self),
+            Warning::Sealed {
+                method,
+                nominal_pressure,
+                count,
+                contact_fraction,
+                percolation_threshold,
+            } => {
+                let why = match percolation_threshold {
+                    Some(a) => format!(
+                        "A/A0 = {} is at or above the percolation threshold {}",
+                        n(*contact_fraction),
+                        n(*a)
+                    ),
+                    None => format!(
+                        "A/A0 = {}, no open path joins inlet and outlet",
+                        n(*contact_fraction)
+                    ),
+                };
+                write!(
+                    f,
+                    "the contact already percolates at {count} load(s) from σ0 = {} ({why}): \
+                     the {method} leak rate is 0 there",
+                    n(*nominal_pressure)
+                )
+            }
             Warning::MapNotPeriodic => write!(
                 f,
                 "the map is not periodic: its coarser copies are block averages, each a \
@@ -531,7 +573,7 @@ impl Warning {
     /// `rising_spectrum`, `clipped_band`, `map_not_periodic`, `resampled`,
     /// `hurst_not_fitted`, `hurst_out_of_range`, `bins_left_out`,
     /// `preconditioner_fallback`, `master_curve_range`, `friction_not_converged`, `shift_table_extended`,
-    /// `sum_bands`, `measurement_gap`).
+    /// `sum_bands`, `measurement_gap`, `sealed`).
     pub fn kind(&self) -> &'static str {
         match self {
             Warning::HighPressure { .. } => "high_pressure",
@@ -552,6 +594,7 @@ impl Warning {
             Warning::MasterCurveRange { .. } => "master_curve_range",
             Warning::FrictionNotConverged { .. } => "friction_not_converged",
             Warning::ShiftTableExtended { .. } => "shift_table_extended",
+            Warning::Sealed { .. } => "sealed",
         }
     }
 }

@@ -64,10 +64,11 @@ fn hertz_case(h: &HertzArgs, grid: usize) -> HertzCase {
     }
 }
 
-/// The CLI's view of the solves: progress, and the pressure fields to write.
+/// The CLI's view of the solves: progress, and the pressure and gap fields to write.
 struct Solves<'a> {
     bar: Progress,
     fields: Option<&'a Path>,
+    gaps: Option<&'a Path>,
     several: bool,
     n: usize,
 }
@@ -78,15 +79,22 @@ impl Observer for Solves<'_> {
         self.bar.update(p.index, &what, p.iteration);
     }
     fn solution(&mut self, k: usize, s: &Solution) -> persson::Result<()> {
-        match self.fields {
-            Some(path) => npy::write(
-                &indexed(path, self.several.then_some(k)),
-                self.n,
-                self.n,
-                &s.pressure,
-            ),
-            None => Ok(()),
+        if let Some(path) = self.fields {
+            let p = indexed(path, self.several.then_some(k));
+            npy::write(&p, self.n, self.n, &s.pressure)?;
         }
+        if let Some(path) = self.gaps {
+            // The gap the flow is solved on: 0 in contact (p > 0), max(g, 0) elsewhere.
+            let gap: Vec<f64> = s
+                .gap
+                .iter()
+                .zip(&s.pressure)
+                .map(|(&g, &p)| if p > 0.0 { 0.0 } else { g.max(0.0) })
+                .collect();
+            let p = indexed(path, self.several.then_some(k));
+            npy::write(&p, self.n, self.n, &gap)?;
+        }
+        Ok(())
     }
 }
 
@@ -100,6 +108,11 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
         plot: a.plot.clone(),
     };
     plot.check()?;
+    // Before any computation: the transport flags, and the gap files' paths.
+    let request = super::bem_transport::request(a)?;
+    if let Some(path) = &a.transport.gap_field {
+        super::bem_transport::check_output(path, a.surface.as_deref(), pressures.len())?;
+    }
     let options = RoughOptions {
         boundary: a.boundary,
         solver: Options {
@@ -137,14 +150,37 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
     let mut solves = Solves {
         bar: Progress::solves(pressures.len(), None),
         fields: a.pressure_field.as_deref(),
+        gaps: a.transport.gap_field.as_deref(),
         several,
         n: surface.n,
     };
+    let mut observer = super::bem_transport::Observed::new(
+        &mut solves,
+        request,
+        (surface.n, surface.size, e_star),
+        &pressures,
+        a.solver.tolerance,
+    )?;
     let report = if a.plot.is_some() {
-        rough::rough_contact_mapped(&surface, source, e_star, &pressures, &options, &mut solves)
+        rough::rough_contact_mapped(
+            &surface,
+            source,
+            e_star,
+            &pressures,
+            &options,
+            observer.observer(),
+        )
     } else {
-        rough::rough_contact(&surface, source, e_star, &pressures, &options, &mut solves)
+        rough::rough_contact(
+            &surface,
+            source,
+            e_star,
+            &pressures,
+            &options,
+            observer.observer(),
+        )
     };
+    let transport = observer.finish();
     solves.bar.finish();
     let report = report?;
     if let Some(path) = &a.plot {
@@ -171,11 +207,18 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
     }
     let mut warnings = a.spectrum.file_warnings();
     warnings.extend(persson_studies::warning::of_rough(&report));
-    print_narrowed(&report, &warnings, &a.format, a.wide)
+    match transport {
+        Some(points) => {
+            let report = persson_studies::scene::RoughTransportReport::new(report, points);
+            warnings.extend(super::bem_transport::sealed(&report));
+            print_narrowed(&report, &warnings, &a.format, a.wide)
+        }
+        None => print_narrowed(&report, &warnings, &a.format, a.wide),
+    }
 }
 
 /// `dir/name.ext` → `dir/name_k.ext` when `k` is given.
-fn indexed(path: &Path, k: Option<usize>) -> PathBuf {
+pub fn indexed(path: &Path, k: Option<usize>) -> PathBuf {
     let Some(k) = k else {
         return path.to_path_buf();
     };

@@ -147,5 +147,36 @@ pub struct RoughArgs {
     #[arg(long, value_name = "FILE.svg|png")]
     pub plot: Option<PathBuf>,
     #[command(flatten)]
+    pub transport: TransportArgs,
+    #[command(flatten)]
     pub format: Format,
+}
+
+/// The BEM's conductance and leak rate per load (`bem rough`, feature `flow`).
+#[derive(clap::Args, Debug, Clone)]
+pub struct TransportArgs {
+    /// Thermal conductivities κ1[,κ2] of the two bodies, W/(m K): the thermal
+    /// conductance of each solve (Barber's identity on its exact stiffness).
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = super::number::number)]
+    pub conductivity: Vec<f64>,
+    /// Electrical resistivities ρ1[,ρ2] of the two bodies, Ω m: the electrical conductance.
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = super::number::number)]
+    pub resistivity: Vec<f64>,
+    /// Gap conductance by gas conduction κ_gas/(g + 2ℓ) over the gap: κ_gas, W/(m K).
+    #[arg(long, requires = "mean_free_path", allow_hyphen_values = true, value_parser = super::number::number)]
+    pub gas_conductivity: Option<f64>,
+    /// Temperature-jump length ℓ of the gas law, m.
+    #[arg(long, requires = "gas_conductivity", allow_hyphen_values = true, value_parser = super::number::number)]
+    pub mean_free_path: Option<f64>,
+    /// Reynolds flow on each solve's gap along x and y, and the seal's leak
+    /// rate (needs --viscosity and --pressure-drop, or a gas's pressures).
+    #[arg(long)]
+    pub leakage: bool,
+    #[command(flatten)]
+    pub seal: super::leakage::SealArgs,
+    /// Write the gap field each leak rate was computed on as .npy (N×N
+    /// float64, 0 in contact); `_k` is added before the extension when several
+    /// pressures are given.
+    #[arg(long, value_name = "FILE.npy")]
+    pub gap_field: Option<PathBuf>,
 }

@@ -8,13 +8,17 @@ mod bem;
 #[cfg(feature = "bem")]
 mod bem_args;
 #[cfg(feature = "bem")]
+mod bem_transport;
+#[cfg(feature = "bem")]
 mod compare;
 #[cfg(feature = "bem")]
 mod compare_args;
 #[cfg(feature = "bem")]
 mod compare_plot;
 mod friction;
+mod conductance;
 mod kappa;
+mod leakage;
 mod magnification;
 mod measured_args;
 mod number;
@@ -68,6 +72,10 @@ enum Cmd {
     Compare(compare::Args),
     /// Rubber friction μ(v, T, σ0) and A/A0 from a viscoelastic master curve (Persson 2001, 2006).
     Friction(friction::Args),
+    /// Thermal and electrical contact conductance against load (Barber's identity; gap over P(u)).
+    Conductance(conductance::Args),
+    /// Leak rate of a static seal against load (critical junction, effective medium).
+    Leakage(leakage::Args),
 }
 
 /// Run one parsed command line.
@@ -86,5 +94,7 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
         #[cfg(feature = "bem")]
         Cmd::Compare(a) => compare::run(a),
         Cmd::Friction(a) => friction::run(a),
+        Cmd::Conductance(a) => conductance::run(a),
+        Cmd::Leakage(a) => leakage::run(a),
     }
 }

@@ -41,6 +41,9 @@ pub mod plot;
 pub mod report;
 pub mod run;
 pub mod schema;
+pub mod transport;
+#[cfg(feature = "flow")]
+pub mod transport_bem;
 
 pub use friction::{friction, friction_on};
 #[cfg(feature = "topography")]
@@ -185,6 +188,8 @@ impl Scene {
             || o.magnification.is_some()
             || o.theories.is_some()
             || o.separation.is_some()
+            || o.conductance.is_some()
+            || o.leakage.is_some()
             || o.stress.as_ref().is_some_and(|st| !st.zeta.is_empty())
             || (o.kappa.is_some() && with_surface && !self.nominal_pressure.is_empty());
         let surface = if needs_surface {
@@ -224,6 +229,18 @@ impl Scene {
         }
         if let Some(sep) = &o.separation {
             report.separation = Some(run::separation(&surface, &self.nominal_pressure, sep, &[])?);
+        }
+        if let Some(c) = &o.conductance {
+            report.conductance = Some(
+                transport::conductance(&surface, &self.nominal_pressure, c)
+                    .map_err(|e| prefix("outputs.conductance.", e))?,
+            );
+        }
+        if let Some(l) = &o.leakage {
+            report.leakage = Some(
+                transport::leakage(&surface, &self.nominal_pressure, l)
+                    .map_err(|e| prefix("outputs.leakage.", e))?,
+            );
         }
         if let Some(st) = o.stress.as_ref().filter(|st| !st.zeta.is_empty()) {
             report.stress =
@@ -277,6 +294,8 @@ impl Scene {
             o.bem.as_ref().and_then(|b| b.plot.clone()),
             o.bem.as_ref().and_then(|b| b.histogram.clone()),
             o.friction.as_ref().and_then(|f| f.plot.clone()),
+            o.conductance.as_ref().and_then(|c| c.plot.clone()),
+            o.leakage.as_ref().and_then(|l| l.plot.clone()),
         ]
         .into_iter()
         .flatten()
@@ -370,6 +389,12 @@ pub fn render_plots(scene: &Scene, report: &SceneReport, dir: &Path) -> Result<V
         let p = dir.join(path);
         crate::plot::render_stacked(&plot::friction(r)?, &p)?;
         written.push(p);
+    }
+    if let (Some(out), Some(r)) = (&o.conductance, &report.conductance) {
+        draw(&out.plot, &|| plot::conductance(r))?;
+    }
+    if let (Some(out), Some(r)) = (&o.leakage, &report.leakage) {
+        draw(&out.plot, &|| plot::leakage(r))?;
     }
     Ok(written)
 }

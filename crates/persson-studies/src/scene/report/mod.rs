@@ -12,6 +12,7 @@ mod friction;
 mod separation;
 mod spectrum;
 mod stress;
+mod transport;
 
 pub use area::*;
 pub use bem::*;
@@ -19,6 +20,7 @@ pub use friction::*;
 pub use separation::*;
 pub use spectrum::*;
 pub use stress::*;
+pub use transport::*;
 
 /// What a scene computed: one entry per output asked for.
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
@@ -61,6 +63,12 @@ pub struct SceneReport {
     /// Rubber friction.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub friction: Option<FrictionReport>,
+    /// Contact conductance against load.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub conductance: Option<ConductanceReport>,
+    /// Leak rate against load.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub leakage: Option<LeakageReport>,
     /// Remarks on the input (never a change of a number); the CLI prints them
     /// on stderr and in the top-level `warnings` of `--json`.
     #[serde(skip)]
@@ -79,6 +87,8 @@ impl SceneReport {
             self.separation.as_ref().map(|r| &r.warnings),
             self.stress.as_ref().map(|r| &r.warnings),
             self.friction.as_ref().map(|r| &r.warnings),
+            self.conductance.as_ref().map(|r| &r.warnings),
+            self.leakage.as_ref().map(|r| &r.warnings),
         ];
         let mut all = std::mem::take(&mut self.warnings);
         for w in lists.into_iter().flatten().flatten() {
@@ -101,7 +111,7 @@ impl Tabulate for SceneReport {
         let bem = self.bem.as_ref().map(|r| r as &dyn Tabulate);
         #[cfg(not(feature = "bem"))]
         let bem = None;
-        let parts: [Option<&dyn Tabulate>; 10] = [
+        let parts: [Option<&dyn Tabulate>; 12] = [
             self.spectrum.as_ref().map(|r| r as &dyn Tabulate),
             self.kappa.as_ref().map(|r| r as &dyn Tabulate),
             self.area.as_ref().map(|r| r as &dyn Tabulate),
@@ -112,6 +122,8 @@ impl Tabulate for SceneReport {
             bem,
             self.bem_hertz.as_ref().map(|r| r as &dyn Tabulate),
             self.friction.as_ref().map(|r| r as &dyn Tabulate),
+            self.conductance.as_ref().map(|r| r as &dyn Tabulate),
+            self.leakage.as_ref().map(|r| r as &dyn Tabulate),
         ];
         for p in parts.into_iter().flatten() {
             out.extend(p.tables());

@@ -49,11 +49,13 @@ mod friction;
 mod names;
 mod outputs;
 mod spectrum;
+mod transport;
 
 pub use friction::*;
 pub use names::*;
 pub use outputs::*;
 pub use spectrum::*;
+pub use transport::*;
 
 /// The scene format version this crate reads.
 pub const SCHEMA: u32 = 1;

@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
-use super::{BoundaryName, StartName, TheoryName, TheorySpec};
+use super::{BoundaryName, ConductanceOutput, LeakageOutput, StartName, TheoryName, TheorySpec};
 
 /// The outputs a scene asks for; absent ones are not computed.
 #[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
@@ -42,6 +42,14 @@ pub struct Outputs {
     /// Rubber friction μ and A/A0 against sliding velocity (needs `rubber`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub friction: Option<super::FrictionOutput>,
+    /// Thermal and electrical contact conductance against load, theory and
+    /// (with `bem`) the FFT-BEM.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub conductance: Option<ConductanceOutput>,
+    /// Leak rate of a static seal against load: critical junction, effective
+    /// medium and (with `bem`) Reynolds flow on the FFT-BEM's gap.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub leakage: Option<LeakageOutput>,
 }
 
 /// Spectrum summary: rms height, slope and curvature over [q_min, q_max],

@@ -1,0 +1,138 @@
+//! `persson bem rough --conductivity/--resistivity/--gas-conductivity/--leakage`:
+//! the conductance and leak rate of each solve (feature `flow`), computed by
+//! the studies' observer beside the CLI's own (progress, fields to write).
+
+use std::path::Path;
+
+use anyhow::bail;
+use persson::bem::rough::Observer;
+use persson::bem::Boundary;
+use persson_studies::scene::transport::{self, TransportRequest};
+use persson_studies::scene::{BemTransportPoint, RoughTransportReport};
+use persson_studies::Warning;
+
+use super::bem_args::RoughArgs;
+
+/// The transport values the flags ask for (`None`: none).
+pub fn request(a: &RoughArgs) -> anyhow::Result<Option<TransportRequest>> {
+    let t = &a.transport;
+    let seal_flags = t.seal.viscosity.is_some()
+        || t.seal.pressure_drop.is_some()
+        || t.seal.inlet_pressure.is_some();
+    if seal_flags && !t.leakage {
+        bail!(
+            "--viscosity / --pressure-drop / --inlet-pressure: add --leakage to compute the flow"
+        );
+    }
+    let seal = if t.leakage {
+        let out = t
+            .seal
+            .output(persson::leakage::DEFAULT_PERCOLATION_THRESHOLD, 1e-9)?;
+        Some(transport::seal(&out)?)
+    } else {
+        None
+    };
+    let request = TransportRequest::new(
+        transport::conductivity(&t.conductivity)?,
+        transport::resistivity(&t.resistivity)?,
+        transport::gap_law(t.gas_conductivity, t.mean_free_path, &[])?,
+        seal,
+    );
+    if request == TransportRequest::default() {
+        if t.gap_field.is_some() {
+            bail!(
+                "--gap-field: add --leakage (the gap the flow is solved on) or a conductance flag"
+            );
+        }
+        return Ok(None);
+    }
+    if a.boundary != Boundary::Periodic {
+        bail!("--leakage / --conductivity / --resistivity / --gas-conductivity: need --boundary periodic (the stiffness and the flow of the periodic cell)");
+    }
+    if a.yield_stress.is_some() {
+        bail!("--leakage / --conductivity / --resistivity / --gas-conductivity: not with --yield-stress (Barber's identity and the stiffness solve are elastic)");
+    }
+    if cfg!(not(feature = "flow")) {
+        bail!("--leakage / --conductivity / --resistivity / --gas-conductivity: this persson was built without the `flow` feature");
+    }
+    Ok(Some(request))
+}
+
+/// The `--gap-field` file(s) may not overwrite the `--surface` input, and
+/// their directory must accept them.
+pub fn check_output(path: &Path, input: Option<&Path>, count: usize) -> anyhow::Result<()> {
+    let several = count > 1;
+    for k in 0..count.max(1) {
+        let p = super::bem::indexed(path, several.then_some(k));
+        if let Some(i) = input {
+            if let (Ok(x), Ok(y)) = (p.canonicalize(), i.canonicalize()) {
+                if x == y {
+                    bail!(
+                        "--gap-field {}: would overwrite the input file --surface",
+                        p.display()
+                    );
+                }
+            }
+        }
+        persson::io::check_writable(&p)?;
+    }
+    Ok(())
+}
+
+/// The CLI's observer, wrapped in the studies' transport observer when asked.
+pub enum Observed<'a> {
+    /// Only the CLI's.
+    Plain(&'a mut dyn Observer),
+    /// With the conductance and flow of each solve.
+    #[cfg(feature = "flow")]
+    Transport(Box<persson_studies::scene::transport_bem::TransportObserver<'a>>),
+}
+
+impl<'a> Observed<'a> {
+    /// Wrap `inner` when `request` is given; `grid` is (N, L, E*).
+    pub fn new(
+        inner: &'a mut dyn Observer,
+        request: Option<TransportRequest>,
+        grid: (usize, f64, f64),
+        pressures: &[f64],
+        tolerance: f64,
+    ) -> anyhow::Result<Self> {
+        match request {
+            None => Ok(Observed::Plain(inner)),
+            #[cfg(feature = "flow")]
+            Some(r) => Ok(Observed::Transport(Box::new(
+                persson_studies::scene::transport_bem::TransportObserver::new(
+                    inner, grid.0, grid.1, grid.2, pressures, tolerance, r,
+                )?,
+            ))),
+            #[cfg(not(feature = "flow"))]
+            Some(_) => {
+                let _ = (grid, pressures, tolerance);
+                bail!("this persson was built without the `flow` feature")
+            }
+        }
+    }
+
+    /// The observer to pass to the solves.
+    pub fn observer(&mut self) -> &mut dyn Observer {
+        match self {
+            Observed::Plain(o) => *o,
+            #[cfg(feature = "flow")]
+            Observed::Transport(t) => t.as_mut(),
+        }
+    }
+
+    /// The transport points, when asked for.
+    pub fn finish(self) -> Option<Vec<BemTransportPoint>> {
+        match self {
+            Observed::Plain(_) => None,
+            #[cfg(feature = "flow")]
+            Observed::Transport(t) => Some(t.into_points()),
+        }
+    }
+}
+
+/// The warning of the loads whose gap does not percolate.
+pub fn sealed(r: &RoughTransportReport) -> Option<Warning> {
+    transport::sealed_bem(&r.transport)
+}

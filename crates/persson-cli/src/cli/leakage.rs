@@ -1,0 +1,102 @@
+//! `persson leakage`: the leak rate of a static seal against load, from the
+//! critical-junction and the effective-medium theories; the scene output
+//! `leakage`.
+
+use persson_studies::scene::{transport, LeakageOutput};
+
+use super::args::{measured_contact, pressures, MaterialArgs, MeasuredArgs, SpectrumArgs};
+use super::number::number;
+use super::output::{print_warned, Format};
+
+/// Arguments of `persson leakage`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    #[command(flatten)]
+    spectrum: SpectrumArgs,
+    #[command(flatten)]
+    measured: MeasuredArgs,
+    #[command(flatten)]
+    material: MaterialArgs,
+    /// Nominal (mean) pressure σ0 on the seal, Pa; repeatable or comma-separated.
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = number)]
+    pressure: Vec<f64>,
+    #[command(flatten)]
+    seal: SealArgs,
+    /// Percolation threshold a_c of the critical junction, in (0, 1).
+    #[arg(long, default_value = "0.42", allow_hyphen_values = true, value_parser = number)]
+    percolation_threshold: f64,
+    /// Relative tolerance of the wavevector integrals.
+    #[arg(long, default_value = "1e-9", allow_hyphen_values = true, value_parser = number)]
+    tolerance: f64,
+    #[command(flatten)]
+    format: Format,
+    /// Also draw Q(σ0) on log axes into this file (.svg or .png).
+    #[command(flatten)]
+    plot: super::plot::PlotArg,
+}
+
+/// The seal and its fluid (shared with `bem rough --leakage`).
+#[derive(clap::Args, Debug, Clone)]
+pub struct SealArgs {
+    /// Dynamic viscosity η of the fluid, Pa s.
+    #[arg(long, allow_hyphen_values = true, value_parser = number)]
+    pub viscosity: Option<f64>,
+    /// Pressure drop ΔP across the seal, Pa (a liquid).
+    #[arg(long, allow_hyphen_values = true, value_parser = number, conflicts_with_all = ["inlet_pressure", "outlet_pressure"])]
+    pub pressure_drop: Option<f64>,
+    /// Inlet pressure P_a of a gas (isothermal, ideal), Pa absolute.
+    #[arg(long, requires = "outlet_pressure", allow_hyphen_values = true, value_parser = number)]
+    pub inlet_pressure: Option<f64>,
+    /// Outlet pressure P_b of a gas, Pa absolute (below P_a); Q is the flow at P_b.
+    #[arg(long, requires = "inlet_pressure", allow_hyphen_values = true, value_parser = number)]
+    pub outlet_pressure: Option<f64>,
+    /// Seal width L_x along the flow, m.
+    #[arg(long, default_value = "1e-3", allow_hyphen_values = true, value_parser = number)]
+    pub seal_width: f64,
+    /// Seal length L_y across the flow (e.g. an O-ring's circumference), m.
+    #[arg(long, default_value = "1e-3", allow_hyphen_values = true, value_parser = number)]
+    pub seal_length: f64,
+}
+
+impl SealArgs {
+    /// The scene's `leakage` output for these flags.
+    pub fn output(
+        &self,
+        percolation_threshold: f64,
+        tolerance: f64,
+    ) -> anyhow::Result<LeakageOutput> {
+        let Some(viscosity) = self.viscosity else {
+            anyhow::bail!("no --viscosity: give the fluid's dynamic viscosity η in Pa s");
+        };
+        if self.pressure_drop.is_none() && self.inlet_pressure.is_none() {
+            anyhow::bail!(
+                "no --pressure-drop: give ΔP in Pa (a liquid), or --inlet-pressure and --outlet-pressure (a gas)"
+            );
+        }
+        Ok(LeakageOutput {
+            viscosity,
+            pressure_drop: self.pressure_drop,
+            inlet_pressure: self.inlet_pressure,
+            outlet_pressure: self.outlet_pressure,
+            seal_width: self.seal_width,
+            seal_length: self.seal_length,
+            percolation_threshold: Some(percolation_threshold),
+            tolerance: Some(tolerance),
+            bem: None,
+            plot: None,
+        })
+    }
+}
+
+/// Run `persson leakage`.
+pub fn run(a: Args) -> anyhow::Result<()> {
+    a.plot.check()?;
+    let out = a.seal.output(a.percolation_threshold, a.tolerance)?;
+    let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
+    let pressures = pressures(&a.pressure, a.spectrum.example)?;
+    let report = transport::leakage(&surface, &pressures, &out)?;
+    #[cfg(feature = "plot")]
+    a.plot
+        .draw(|| persson_studies::scene::plot::leakage(&report))?;
+    print_warned(&report, &report.warnings, &a.format)
+}

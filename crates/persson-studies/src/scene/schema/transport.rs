@@ -1,0 +1,96 @@
+//! What passes through the interface: the scene outputs `conductance` and
+//! `leakage` (issue 23), and the BEM solve a scene may set beside the theory.
+
+use std::path::PathBuf;
+
+use schemars::JsonSchema;
+use serde::{Deserialize, Serialize};
+
+/// Contact conductance against the scene's nominal pressures: through the
+/// contact spots from the stiffness (Barber's identity) and through the gap
+/// from P(u).
+#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct ConductanceOutput {
+    /// Thermal conductivities κ1[, κ2] of the two bodies, W/(m K) (one value:
+    /// both bodies): adds the thermal conductance.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub conductivity: Vec<f64>,
+    /// Electrical resistivities ρ1[, ρ2] of the two bodies, Ω m (one value:
+    /// both bodies): adds the electrical conductance.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub resistivity: Vec<f64>,
+    /// Gas conductivity κ_gas of the gap law α(u) = κ_gas/(u + 2ℓ), W/(m K):
+    /// adds the gap conductance (with `mean_free_path`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub gas_conductivity: Option<f64>,
+    /// Temperature-jump length ℓ of the gas law, m (> 0).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub mean_free_path: Option<f64>,
+    /// A table of the gap's heat-transfer coefficient instead of the gas law:
+    /// `[[u, α], …]`, u ascending in m, α in W/(m² K) (linear in between,
+    /// held at the ends).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub gap_table: Vec<(f64, f64)>,
+    /// Relative tolerance of the wavevector integrals (default 1e-9).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tolerance: Option<f64>,
+    /// Solve the FFT-BEM at the same pressures and report its conductances
+    /// beside the theory's (feature `flow`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bem: Option<TransportBem>,
+    /// Draw h(σ0) on log axes, theory and BEM (.svg or .png).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub plot: Option<PathBuf>,
+}
+
+/// Leak rate of a static seal against the scene's nominal pressures: the
+/// critical junction and the effective medium.
+#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct LeakageOutput {
+    /// Dynamic viscosity η of the fluid, Pa s.
+    pub viscosity: f64,
+    /// Pressure drop ΔP across the seal, Pa (a liquid; or give
+    /// `inlet_pressure` and `outlet_pressure` for a gas).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pressure_drop: Option<f64>,
+    /// Inlet pressure P_a of a gas, Pa (absolute).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub inlet_pressure: Option<f64>,
+    /// Outlet pressure P_b of a gas, Pa (absolute, below P_a).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub outlet_pressure: Option<f64>,
+    /// Seal width L_x along the flow, m.
+    pub seal_width: f64,
+    /// Seal length L_y across the flow, m.
+    pub seal_length: f64,
+    /// Percolation threshold a_c of the critical junction in (0, 1) (default 0.42).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub percolation_threshold: Option<f64>,
+    /// Relative tolerance of the wavevector integrals (default 1e-9).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tolerance: Option<f64>,
+    /// Solve the FFT-BEM at the same pressures and Reynolds' equation on its
+    /// gap, beside the theories (feature `flow`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bem: Option<TransportBem>,
+    /// Draw Q(σ0) on log axes, both theories and the BEM (.svg or .png).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub plot: Option<PathBuf>,
+}
+
+/// The FFT-BEM beside a transport theory: a surface synthesised from the
+/// scene's spectrum (side 2π/q_l, periodic), solved at the scene's pressures.
+#[derive(Debug, Clone, Copy, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct TransportBem {
+    /// Grid side N (q_s should be resolved: N ≥ 8 q_s/q_l or so).
+    pub grid: usize,
+    /// Seed of the synthesised surface (default 1).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub seed: Option<u64>,
+    /// Solver tolerance ε of the contact and of the stiffness's CG (default 1e-10).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tolerance: Option<f64>,
+}
