@@ -17,7 +17,7 @@ FloatArray = npt.NDArray[np.float64]
 ArrayLike = Union[float, Sequence[float], FloatArray]
 PathLike = Union[str, os.PathLike[str]]
 Report = dict[str, Any]
-Theory = Literal["original", "yang-persson", "wang-muser", "xu"]
+Theory = Literal["original", "yang-persson", "wang-muser", "xu", "overlap", "greenwood-williamson", "bush"]
 Convention = Literal["persson", "surface-topography", "profile1d", "grid"]
 Detrend = Literal["none", "mean", "plane", "curvature"]
 Window = Literal["none", "hann", "blackman"]
@@ -176,6 +176,7 @@ def area(
     *,
     zeta: Optional[float] = None,
     tolerance: float = 1e-12,
+    yield_stress: Optional[float] = None,
 ) -> Report:
     """`persson area --json`."""
 def magnification(

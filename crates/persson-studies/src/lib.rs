@@ -28,6 +28,7 @@
 #[cfg(all(doctest, feature = "bem", feature = "topography"))]
 mod guide;
 
+pub mod asperity;
 #[cfg(feature = "plot")]
 pub mod plot;
 pub mod report;

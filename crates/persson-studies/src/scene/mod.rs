@@ -29,6 +29,7 @@ use persson::material::Material;
 use persson::spectrum::Spectrum;
 use persson::stress::Start;
 
+mod asperity;
 #[cfg(feature = "bem")]
 mod bem;
 mod measured;
