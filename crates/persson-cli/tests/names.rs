@@ -143,6 +143,8 @@ fn commands(out_dir: &Path) -> Vec<Vec<Vec<String>>> {
         "bem hertz --grid 32",
         "bem hertz --grid 16,32 --yield-stress 0.05",
         "bem rough --example --grid 32",
+        "bem rough --example --grid 32 --pressure 1e7 --patches --subsurface --depth 1e-5,1e-4 --tensile-yield-stress 1e8",
+        "bem hertz --grid 32 --subsurface",
         "compare --example --grid 32 --levels 2",
         "compare --example --grid 32 --levels 2 --yield-stress 6e6",
         "spectrum --surface tests/reference/data/map_a.npy --pixel-size 1e-6",

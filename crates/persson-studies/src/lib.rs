@@ -29,6 +29,8 @@
 mod guide;
 
 pub mod asperity;
+#[cfg(feature = "bem")]
+pub mod bem_detail;
 #[cfg(feature = "plot")]
 pub mod plot;
 pub mod report;

@@ -14,12 +14,14 @@ use persson_studies::table::Tabulate;
 
 pub use super::bem_args::{Args, SolverArgs};
 use super::bem_args::{Cmd, HertzArgs, RoughArgs};
+use super::bem_detail::{Details, RoughWithDetails};
 use super::output::{print, print_narrowed};
 use super::progress::Progress;
 
 /// Run `persson bem`.
 pub fn run(a: Args) -> anyhow::Result<()> {
     match a.cmd {
+        Cmd::Hertz(h) if h.subsurface => hertz_subsurface(&h),
         Cmd::Hertz(h) => {
             let grid = match (h.grid.as_slice(), h.yield_stress) {
                 (_, Some(y)) => return plastic_disc(&h, y),
@@ -53,6 +55,25 @@ fn plastic_disc(h: &HertzArgs, y: f64) -> anyhow::Result<()> {
     print_narrowed(&r?, &[], &h.format, h.wide)
 }
 
+/// `persson bem hertz --subsurface`: the stress on the contact's axis.
+fn hertz_subsurface(h: &HertzArgs) -> anyhow::Result<()> {
+    let grid = match h.grid.as_slice() {
+        [n] => *n,
+        _ => anyhow::bail!("--grid: one grid side with --subsurface"),
+    };
+    check_memory(grid, h.boundary)?;
+    let case = hertz_case(h, grid);
+    let mut bar = Progress::spinner(&format!("Hertz {grid}²"));
+    let r = persson_studies::bem_detail::hertz_subsurface(
+        &case,
+        &h.solver.options()?,
+        h.poisson,
+        &mut |it| bar.update(0, &|| "Hertz".into(), it),
+    );
+    bar.finish();
+    print(&r?, &h.format)
+}
+
 fn hertz_case(h: &HertzArgs, grid: usize) -> HertzCase {
     HertzCase {
         grid,
@@ -70,6 +91,7 @@ struct Solves<'a> {
     fields: Option<&'a Path>,
     several: bool,
     n: usize,
+    details: Details<'a>,
 }
 
 impl Observer for Solves<'_> {
@@ -78,6 +100,7 @@ impl Observer for Solves<'_> {
         self.bar.update(p.index, &what, p.iteration);
     }
     fn solution(&mut self, k: usize, s: &Solution) -> persson::Result<()> {
+        self.details.solution(k, s)?;
         match self.fields {
             Some(path) => npy::write(
                 &indexed(path, self.several.then_some(k)),
@@ -138,6 +161,14 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
         fields: a.pressure_field.as_deref(),
         several,
         n: surface.n,
+        details: Details::new(
+            &a.detail,
+            surface.n,
+            surface.size,
+            a.boundary,
+            a.material.poisson,
+            &pressures,
+        )?,
     };
     let report = if a.plot.is_some() {
         rough::rough_contact_mapped(&surface, source, e_star, &pressures, &options, &mut solves)
@@ -170,7 +201,12 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
     }
     let mut warnings = a.spectrum.file_warnings();
     warnings.extend(persson_studies::warning::of_rough(&report));
-    print_narrowed(&report, &warnings, &a.format, a.wide)
+    let out = RoughWithDetails {
+        rough: &report,
+        patches: solves.details.patches,
+        subsurface: solves.details.subsurface,
+    };
+    print_narrowed(&out, &warnings, &a.format, a.wide)
 }
 
 /// `dir/name.ext` → `dir/name_k.ext` when `k` is given.
