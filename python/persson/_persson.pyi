@@ -276,6 +276,25 @@ def bem_hertz(
     grids: Optional[Sequence[int]] = None,
 ) -> Report:
     """`persson bem hertz --json`; with `yield_stress`, `bem hertz --yield-stress` on `grids`."""
+def contact_patches(
+    pressure: FloatArray,
+    size: float,
+    *,
+    connectivity: Literal["four", "eight"] = "four",
+    boundary: Boundary = "periodic",
+    bins_per_decade: int = 5,
+) -> Report:
+    """`bem rough --patches` of one N × N pressure field: patches, area distribution, pressure tail."""
+def subsurface_stress(
+    pressure: FloatArray,
+    size: float,
+    depth: ArrayLike,
+    *,
+    poisson: float = 0.3,
+    boundary: Boundary = "periodic",
+    tensile_yield_stress: Optional[float] = None,
+) -> Report:
+    """`bem rough --subsurface` of one N × N pressure field; `von_mises_stress`: one N × N array per depth."""
 def compare(
     spectrum: Spectrum,
     modulus: float,

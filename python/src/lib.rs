@@ -8,6 +8,7 @@
 //! `OSError` (files) or `ValueError` (everything else) with the CLI's text.
 
 mod arrays;
+mod asperity;
 mod bem;
 mod reports;
 mod spectrum;
@@ -105,5 +106,6 @@ fn _persson(m: &Bound<'_, PyModule>) -> PyResult<()> {
     theory::register(m)?;
     reports::register(m)?;
     bem::register(m)?;
+    asperity::register(m)?;
     Ok(())
 }
