@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 import persson
-from conftest import run_cli, same
+from conftest import read_from, run_cli, same
 
 # A self-affine surface with roll-off, given on the command line and in Python.
 FLAGS = ["--hurst", 0.7, "--q-l", 1e3, "--q-r", 1e4, "--q-s", 1e7]
@@ -220,10 +220,24 @@ def test_height_map_spectrum_matches_cli(tmp_path):
     pixel = 2e-7
     cli = run_cli("area", "--surface", path, "--pixel-size", pixel, "--contact-modulus", E_STAR,
                   *pressure_flag([1e6, 1e7]))
+    # The map's Hurst fit is outside (0, 1): the CLI warns, and so does every
+    # report of a Python spectrum of the same heights (the test's point).
+    kinds = [w["kind"] for w in cli["warnings"]]
+    assert "hurst_out_of_range" in kinds, cli["warnings"]
     s = persson.Spectrum.from_height_map(h, pixel)
-    same(persson.area(s, E_STAR, [1e6, 1e7]), cli, drop=("seconds", "surface"))
+    with pytest.warns(UserWarning, match="no Hurst exponent"):
+        r = persson.area(s, E_STAR, [1e6, 1e7])
+    assert [w["kind"] for w in r["warnings"]] == kinds
+    assert all(w["file"] == "(array)" for w in r["warnings"] if "file" in w)
+    same(read_from(r, "(array)", path), cli, drop=("seconds", "surface"))
     assert s.description.startswith("measured surface (array) (64 × 72 points")
-    same(persson.area(persson.Spectrum.from_file(path, pixel_size=pixel), E_STAR, [1e6, 1e7]), cli)
+    f = persson.Spectrum.from_file(path, pixel_size=pixel)
+    same(persson.area(f, E_STAR, [1e6, 1e7]), cli)
+    # A pickled copy (multiprocessing, Dask) keeps the warnings.
+    import pickle
+    same(persson.area(pickle.loads(pickle.dumps(f)), E_STAR, [1e6, 1e7]), cli)
+    same(read_from(persson.area(pickle.loads(pickle.dumps(s)), E_STAR, [1e6, 1e7]), "(array)",
+                   path), cli, drop=("seconds", "surface"))
     analysis = run_cli("spectrum", "--surface", path, "--pixel-size", pixel, "--detrend", "mean",
                        "--window", "blackman")
     same(persson.analyse_height_map(h, pixel, detrend="mean", window="blackman"), analysis)
@@ -245,7 +259,10 @@ def test_topography_duck_typed(tmp_path):
     np.save(path, h)
     cli = run_cli("area", "--surface", path, "--pixel-size", 2e-7, "--contact-modulus", E_STAR,
                   "--pressure", 1e6)
-    same(persson.area(s, E_STAR, [1e6]), cli, drop=("seconds", "surface"))
+    assert any(w["kind"] == "hurst_out_of_range" for w in cli["warnings"])
+    with pytest.warns(UserWarning, match="no Hurst exponent"):
+        r = persson.area(s, E_STAR, [1e6])
+    same(read_from(r, "(topography)", path), cli, drop=("seconds", "surface"))
 
 
 def test_run_scene_path_and_dict_match_cli(tmp_path):
@@ -297,3 +314,4 @@ def test_tabulated_start_matches_cli(tmp_path):
     same(r, cli)
     with pytest.raises(ValueError, match="^start, table: give exactly one"):
         persson.stress("flat", 0.4, table=(sigma, density))
+

@@ -480,9 +480,18 @@ pub fn of_rough(r: &persson::bem::rough::RoughReport) -> Vec<Warning> {
 /// bins left out of the 2D spectrum).
 #[cfg(feature = "topography")]
 pub fn of_measured(file: &std::path::Path, a: &persson::topography::Analysis) -> Vec<Warning> {
+    of_notes(file, &a.notes)
+}
+
+/// The warnings of a measured surface's notes ([`of_measured`] without the
+/// analysis: for a spectrum that keeps only its notes, as a pickled Python
+/// `Spectrum` does). `file` names the input (a stand-in such as `(array)`
+/// for heights that came from no file).
+#[cfg(feature = "topography")]
+pub fn of_notes(file: &std::path::Path, notes: &[persson::topography::Note]) -> Vec<Warning> {
     use persson::topography::Note;
     let file = file.to_path_buf();
-    a.notes
+    notes
         .iter()
         .map(|note| match note {
             Note::Resampled {
