@@ -66,6 +66,7 @@ fn contact_patches<'py>(
 /// array per depth.
 #[pyfunction]
 #[pyo3(signature = (pressure, size, depth, *, poisson=0.3, boundary="periodic", tensile_yield_stress=None))]
+#[allow(clippy::too_many_arguments)]
 fn subsurface_stress<'py>(
     py: Python<'py>,
     pressure: &Bound<'py, PyAny>,
