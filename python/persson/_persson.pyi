@@ -17,7 +17,7 @@ FloatArray = npt.NDArray[np.float64]
 ArrayLike = Union[float, Sequence[float], FloatArray]
 PathLike = Union[str, os.PathLike[str]]
 Report = dict[str, Any]
-Theory = Literal["original", "yang-persson", "wang-muser", "xu"]
+Theory = Literal["original", "yang-persson", "wang-muser", "xu", "overlap", "greenwood-williamson", "bush"]
 Convention = Literal["persson", "surface-topography", "profile1d", "grid"]
 Detrend = Literal["none", "mean", "plane", "curvature"]
 Window = Literal["none", "hann", "blackman"]
@@ -192,6 +192,7 @@ def area(
     *,
     zeta: Optional[float] = None,
     tolerance: float = 1e-12,
+    yield_stress: Optional[float] = None,
 ) -> Report:
     """`persson area --json`."""
 def magnification(
@@ -321,6 +322,25 @@ def bem_hertz(
     grids: Optional[Sequence[int]] = None,
 ) -> Report:
     """`persson bem hertz --json`; with `yield_stress`, `bem hertz --yield-stress` on `grids`."""
+def contact_patches(
+    pressure: FloatArray,
+    size: float,
+    *,
+    connectivity: Literal["four", "eight"] = "four",
+    boundary: Boundary = "periodic",
+    bins_per_decade: int = 5,
+) -> Report:
+    """`bem rough --patches` of one N × N pressure field: patches, area distribution, pressure tail."""
+def subsurface_stress(
+    pressure: FloatArray,
+    size: float,
+    depth: ArrayLike,
+    *,
+    poisson: float = 0.3,
+    boundary: Boundary = "periodic",
+    tensile_yield_stress: Optional[float] = None,
+) -> Report:
+    """`bem rough --subsurface` of one N × N pressure field; `von_mises_stress`: one N × N array per depth."""
 def compare(
     spectrum: Spectrum,
     contact_modulus: float,

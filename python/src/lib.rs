@@ -8,6 +8,7 @@
 //! `OSError` (files) or `ValueError` (everything else) with the CLI's text.
 
 mod arrays;
+mod asperity;
 mod bem;
 mod ensemble;
 mod friction;
@@ -115,5 +116,6 @@ fn _persson(m: &Bound<'_, PyModule>) -> PyResult<()> {
     ensemble::register(m)?;
     friction::register(m)?;
     transport::register(m)?;
+    asperity::register(m)?;
     Ok(())
 }

@@ -38,9 +38,12 @@ const _: () = {
 };
 
 /// `persson area --json`: A/A0 against the nominal pressures with G, its
-/// error bound, the effective G of a corrected theory and the linear laws.
+/// error bound, the effective G of a corrected theory and the linear laws;
+/// with an asperity theory (`overlap`, needing `yield_stress`,
+/// `greenwood-williamson`, `bush`) its A/A0, separation and contact density
+/// beside Persson's, and the surface's moments and summit statistics.
 #[pyfunction]
-#[pyo3(signature = (spectrum, contact_modulus, pressure, theory="original", gamma=None, *, zeta=None, tolerance=1e-12))]
+#[pyo3(signature = (spectrum, contact_modulus, pressure, theory="original", gamma=None, *, zeta=None, tolerance=1e-12, yield_stress=None))]
 #[allow(clippy::too_many_arguments)]
 fn area<'py>(
     py: Python<'py>,
@@ -51,6 +54,7 @@ fn area<'py>(
     gamma: Option<f64>,
     zeta: Option<f64>,
     tolerance: f64,
+    yield_stress: Option<f64>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let pressures = float_list("pressure", pressure)?;
     let surface = spectrum.contact(contact_modulus)?;
@@ -59,6 +63,7 @@ fn area<'py>(
         theory: name("theory", theory)?,
         gamma,
         tolerance: Some(tolerance),
+        yield_stress,
         plot: None,
     };
     let r = py

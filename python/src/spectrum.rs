@@ -248,6 +248,8 @@ impl Spectrum {
             breaks: self.breaks.clone(),
             description: self.description.clone(),
             warnings: self.warnings.clone(),
+            // Asperity theories take their moments from the spectrum here.
+            height_map: None,
         })
     }
 

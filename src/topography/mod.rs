@@ -263,6 +263,13 @@ impl Topography {
         &self.heights
     }
 
+    /// The heights with the least-squares trend `detrend` removed, row-major
+    /// `ny × nx` (the heights the spectrum and the statistics of [`analyse`]
+    /// use; a line per profile for line scans).
+    pub fn detrended(&self, detrend: Detrend) -> Vec<f64> {
+        condition::detrended(self, detrend)
+    }
+
     /// The same surface with another periodicity flag.
     pub fn with_periodic(mut self, periodic: bool) -> Self {
         self.periodic = periodic;

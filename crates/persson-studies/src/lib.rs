@@ -28,6 +28,9 @@
 #[cfg(all(doctest, feature = "bem", feature = "topography"))]
 mod guide;
 
+pub mod asperity;
+#[cfg(feature = "bem")]
+pub mod bem_detail;
 #[cfg(feature = "plot")]
 pub mod plot;
 pub mod report;

@@ -228,6 +228,40 @@ pub enum Warning {
         #[serde(skip_serializing_if = "Option::is_none")]
         percolation_threshold: Option<f64>,
     },
+    /// Nayak's bandwidth parameter α of the surface is below the asperity
+    /// theories' threshold ([`persson::asperity::moments::SMALL_BANDWIDTH`]).
+    SmallBandwidth {
+        /// The asperity theory.
+        theory: crate::scene::TheoryName,
+        /// α = m0 m4/m2².
+        bandwidth_parameter: f64,
+        /// The threshold.
+        threshold: f64,
+    },
+    /// An asperity theory's A/A0 is above the fraction where its contacts
+    /// coalesce ([`persson::asperity::COALESCENCE_FRACTION`]).
+    Coalescence {
+        /// The asperity theory.
+        theory: crate::scene::TheoryName,
+        /// The first σ0 above the threshold.
+        nominal_pressure: f64,
+        /// Its A/A0.
+        contact_fraction: f64,
+        /// How many of the pressures are above the threshold.
+        count: usize,
+        /// The threshold.
+        threshold: f64,
+    },
+    /// A height map's fourth moment depends on its pixel size
+    /// ([`persson::asperity::moments::CURVATURE_RESOLUTION_RATIO`]).
+    CurvatureUnresolved {
+        /// The file.
+        file: PathBuf,
+        /// m4 over 2Δ / m4 over Δ.
+        curvature_resolution_ratio: f64,
+        /// The threshold.
+        threshold: f64,
+    },
 }
 
 impl Warning {
@@ -475,6 +509,9 @@ impl fmt::Display for Warning {
                     n(*nominal_pressure)
                 )
             }
+            Warning::SmallBandwidth { .. }
+            | Warning::Coalescence { .. }
+            | Warning::CurvatureUnresolved { .. } => crate::asperity::describe(self, f),
             Warning::MapNotPeriodic => write!(
                 f,
                 "the map is not periodic: its coarser copies are block averages, each a \
@@ -573,7 +610,8 @@ impl Warning {
     /// `rising_spectrum`, `clipped_band`, `map_not_periodic`, `resampled`,
     /// `hurst_not_fitted`, `hurst_out_of_range`, `bins_left_out`,
     /// `preconditioner_fallback`, `master_curve_range`, `friction_not_converged`, `shift_table_extended`,
-    /// `sum_bands`, `measurement_gap`, `sealed`).
+    /// `sum_bands`, `measurement_gap`, `sealed`, `small_bandwidth`, `coalescence`,
+    /// `curvature_unresolved`).
     pub fn kind(&self) -> &'static str {
         match self {
             Warning::HighPressure { .. } => "high_pressure",
@@ -595,6 +633,9 @@ impl Warning {
             Warning::FrictionNotConverged { .. } => "friction_not_converged",
             Warning::ShiftTableExtended { .. } => "shift_table_extended",
             Warning::Sealed { .. } => "sealed",
+            Warning::SmallBandwidth { .. } => "small_bandwidth",
+            Warning::Coalescence { .. } => "coalescence",
+            Warning::CurvatureUnresolved { .. } => "curvature_unresolved",
         }
     }
 }

@@ -47,7 +47,7 @@ fn area_matches_the_closed_form_and_only_it_is_computed() {
         );
         assert!((p.non_contact_fraction - libm::erfc(0.5 / g.sqrt())).abs() < AREA_ABS_TOL);
         assert!(p.error_bound > 0.0 && p.error_bound < AREA_ABS_TOL);
-        assert_eq!(p.effective_g, p.g, "original theory: G_e = G");
+        assert_eq!(p.effective_g, Some(p.g), "original theory: G_e = G");
         let bush = (2.0 * std::f64::consts::PI).sqrt() * sigma0;
         assert!((p.contact_fraction_bush_linear - bush).abs() <= 4.0 * f64::EPSILON * bush);
     }

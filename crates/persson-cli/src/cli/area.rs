@@ -22,6 +22,10 @@ pub struct Args {
     zeta: Option<f64>,
     #[command(flatten)]
     theory: TheoryArgs,
+    /// Hardness σY of the overlap theory's load law σ0 = σY A/A0 (same unit
+    /// as the pressures; required by --theory overlap, refused by the others).
+    #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
+    yield_stress: Option<f64>,
     #[command(flatten)]
     format: Format,
     #[command(flatten)]
@@ -32,13 +36,16 @@ pub struct Args {
 #[derive(clap::Args, Debug, Clone)]
 pub struct TheoryArgs {
     /// Contact-area theory: original (Persson 2001), yang-persson (Yang & Persson
-    /// 2008, γ = 0.45), wang-muser (Wang & Müser 2017, γ = 5/9), xu (Xu et al. 2024, γ = 0.42).
+    /// 2008, γ = 0.45), wang-muser (Wang & Müser 2017, γ = 5/9), xu (Xu et al. 2024, γ = 0.42);
+    /// the asperity theories overlap (bearing area, needs --yield-stress),
+    /// greenwood-williamson (1966) and bush (Bush, Gibson & Thomas 1975), from the moments m0, m2, m4.
     #[arg(long, value_enum, default_value_t = TheoryName::Original)]
     pub theory: TheoryName,
     /// γ of the corrected theory (yang-persson and xu: [0.001, 1]; wang-muser: [0.02, 11/9]).
     #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
     pub gamma: Option<f64>,
-    /// Absolute tolerance on A/A0 of the corrected theories' solver.
+    /// Absolute tolerance on A/A0 of the corrected theories' solver (for bush:
+    /// the relative tolerance of its integrals).
     #[arg(
         long,
         alias = "theory-tolerance",
@@ -59,6 +66,7 @@ pub fn run(a: Args) -> anyhow::Result<()> {
         theory: a.theory.theory,
         gamma: a.theory.gamma,
         tolerance: Some(a.theory.tolerance),
+        yield_stress: a.yield_stress,
         plot: None,
     };
     let report = run::area(&surface, &pressures, &out)?;

@@ -14,12 +14,14 @@ use persson_studies::table::Tabulate;
 
 pub use super::bem_args::{Args, SolverArgs};
 use super::bem_args::{Cmd, HertzArgs, RoughArgs};
+use super::bem_detail::{Details, RoughWithDetails};
 use super::output::{print, print_narrowed};
 use super::progress::Progress;
 
 /// Run `persson bem`.
 pub fn run(a: Args) -> anyhow::Result<()> {
     match a.cmd {
+        Cmd::Hertz(h) if h.subsurface => hertz_subsurface(&h),
         Cmd::Hertz(h) => {
             let grid = match (h.grid.as_slice(), h.yield_stress) {
                 (_, Some(y)) => return plastic_disc(&h, y),
@@ -53,6 +55,25 @@ fn plastic_disc(h: &HertzArgs, y: f64) -> anyhow::Result<()> {
     print_narrowed(&r?, &[], &h.format, h.wide)
 }
 
+/// `persson bem hertz --subsurface`: the stress on the contact's axis.
+fn hertz_subsurface(h: &HertzArgs) -> anyhow::Result<()> {
+    let grid = match h.grid.as_slice() {
+        [n] => *n,
+        _ => anyhow::bail!("--grid: one grid side with --subsurface"),
+    };
+    check_memory(grid, h.boundary)?;
+    let case = hertz_case(h, grid);
+    let mut bar = Progress::spinner(&format!("Hertz {grid}²"));
+    let r = persson_studies::bem_detail::hertz_subsurface(
+        &case,
+        &h.solver.options()?,
+        h.poisson,
+        &mut |it| bar.update(0, &|| "Hertz".into(), it),
+    );
+    bar.finish();
+    print(&r?, &h.format)
+}
+
 fn hertz_case(h: &HertzArgs, grid: usize) -> HertzCase {
     HertzCase {
         grid,
@@ -71,6 +92,7 @@ struct Solves<'a> {
     gaps: Option<&'a Path>,
     several: bool,
     n: usize,
+    details: Details<'a>,
 }
 
 impl Observer for Solves<'_> {
@@ -79,6 +101,7 @@ impl Observer for Solves<'_> {
         self.bar.update(p.index, &what, p.iteration);
     }
     fn solution(&mut self, k: usize, s: &Solution) -> persson::Result<()> {
+        self.details.solution(k, s)?;
         if let Some(path) = self.fields {
             let p = indexed(path, self.several.then_some(k));
             npy::write(&p, self.n, self.n, &s.pressure)?;
@@ -153,6 +176,14 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
         gaps: a.transport.gap_field.as_deref(),
         several,
         n: surface.n,
+        details: Details::new(
+            &a.detail,
+            surface.n,
+            surface.size,
+            a.boundary,
+            a.material.poisson,
+            &pressures,
+        )?,
     };
     let mut observer = super::bem_transport::Observed::new(
         &mut solves,
@@ -207,13 +238,26 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
     }
     let mut warnings = a.spectrum.file_warnings();
     warnings.extend(persson_studies::warning::of_rough(&report));
+    let (patches, subsurface) = (solves.details.patches, solves.details.subsurface);
     match transport {
         Some(points) => {
             let report = persson_studies::scene::RoughTransportReport::new(report, points);
             warnings.extend(super::bem_transport::sealed(&report));
-            print_narrowed(&report, &warnings, &a.format, a.wide)
+            let out = RoughWithDetails {
+                rough: &report,
+                patches,
+                subsurface,
+            };
+            print_narrowed(&out, &warnings, &a.format, a.wide)
         }
-        None => print_narrowed(&report, &warnings, &a.format, a.wide),
+        None => {
+            let out = RoughWithDetails {
+                rough: &report,
+                patches,
+                subsurface,
+            };
+            print_narrowed(&out, &warnings, &a.format, a.wide)
+        }
     }
 }
 

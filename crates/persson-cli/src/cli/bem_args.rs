@@ -76,6 +76,13 @@ pub struct HertzArgs {
     /// for a plastic zone): report the plastic disc's radius per grid instead of η.
     #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
     pub yield_stress: Option<f64>,
+    /// Report the stress below the surface on the contact's axis (z/a = 0.05 …
+    /// 2) against Johnson's closed forms, instead of η.
+    #[arg(long, conflicts_with = "yield_stress")]
+    pub subsurface: bool,
+    /// Poisson ratio ν of the body, for --subsurface (the contact needs only E*).
+    #[arg(long, default_value = "0.3", allow_hyphen_values = true, value_parser = super::number::number)]
+    pub poisson: f64,
     #[command(flatten)]
     pub solver: SolverArgs,
     /// Text tables with every column (default: each fits 100 characters, the
@@ -84,6 +91,37 @@ pub struct HertzArgs {
     pub wide: bool,
     #[command(flatten)]
     pub format: Format,
+}
+
+/// What `bem rough` reports besides the load curve: contact patches and the
+/// stress below the surface.
+#[derive(clap::Args, Debug)]
+pub struct DetailArgs {
+    /// Report the connected contact patches of each solve (count, largest,
+    /// perimeters, log-binned area distribution, pressure-tail fits).
+    #[arg(long)]
+    pub patches: bool,
+    /// Neighbourhood of a patch: four (edges) or eight (edges and corners).
+    #[arg(long, default_value = "four", value_parser = ["four", "eight"], requires = "patches")]
+    pub connectivity: String,
+    /// Log bins per decade of the patch-area distribution.
+    #[arg(long, default_value = "5", requires = "patches", allow_hyphen_values = true, value_parser = super::number::count)]
+    pub bins_per_decade: usize,
+    /// Report the stress below the surface on the planes of --depth.
+    #[arg(long, requires = "depth")]
+    pub subsurface: bool,
+    /// Depths z of the planes below the surface (unit of L; > 0 and at most L),
+    /// comma-separated or repeated.
+    #[arg(long, value_delimiter = ',', requires = "subsurface", allow_hyphen_values = true, value_parser = super::number::number)]
+    pub depth: Vec<f64>,
+    /// Uniaxial yield stress Y of the von Mises criterion (unit of the
+    /// pressure): where and at which load factor the subsurface first yields.
+    #[arg(long, requires = "subsurface", allow_hyphen_values = true, value_parser = super::number::number)]
+    pub tensile_yield_stress: Option<f64>,
+    /// Write the von Mises stress of each plane as .npy (N×N float64); `_k_j`
+    /// (pressure k, depth j) is added before the extension.
+    #[arg(long, requires = "subsurface")]
+    pub stress_field: Option<PathBuf>,
 }
 
 #[derive(clap::Args, Debug)]
@@ -148,6 +186,8 @@ pub struct RoughArgs {
     pub plot: Option<PathBuf>,
     #[command(flatten)]
     pub transport: TransportArgs,
+    #[command(flatten)]
+    pub detail: DetailArgs,
     #[command(flatten)]
     pub format: Format,
 }

@@ -7,6 +7,7 @@ mod args;
 mod bem;
 #[cfg(feature = "bem")]
 mod bem_args;
+mod bem_detail;
 #[cfg(feature = "bem")]
 mod bem_transport;
 #[cfg(feature = "bem")]

@@ -31,6 +31,7 @@ use persson::material::Material;
 use persson::spectrum::Spectrum;
 use persson::stress::Start;
 
+mod asperity;
 #[cfg(feature = "bem")]
 mod bem;
 pub mod friction;

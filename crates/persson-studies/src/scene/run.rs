@@ -30,6 +30,9 @@ pub struct RoughContact {
     /// Remarks on the spectrum (its file's convention, a steep slope), passed
     /// on to every report of this surface.
     pub warnings: Vec<Warning>,
+    /// The measured map the spectrum was taken from, if any: the asperity
+    /// theories take their moments from its heights.
+    pub height_map: Option<HeightMapSpec>,
 }
 
 impl RoughContact {
@@ -67,12 +70,16 @@ impl RoughContact {
             breaks: spectrum.breaks(),
             description,
             warnings,
+            height_map: match spectrum {
+                SpectrumSpec::HeightMap(m) => Some(m.clone()),
+                _ => None,
+            },
         })
     }
 
     /// The surface's warnings with those of the nominal pressures and the
     /// magnifications of one output.
-    fn warnings(&self, pressures: &[f64], zetas: &[f64]) -> Vec<Warning> {
+    pub(crate) fn warnings(&self, pressures: &[f64], zetas: &[f64]) -> Vec<Warning> {
         let mut w = self.warnings.clone();
         warning::push(
             &mut w,
@@ -83,7 +90,7 @@ impl RoughContact {
         w
     }
 
-    fn model(&self) -> Result<Persson<'_>> {
+    pub(crate) fn model(&self) -> Result<Persson<'_>> {
         Persson::new(self.spectrum.as_ref(), self.contact_modulus)
     }
 
@@ -101,6 +108,15 @@ pub fn area(surface: &RoughContact, pressures: &[f64], out: &AreaOutput) -> Resu
         return Err(required(
             "nominal_pressure (a non-empty list, for outputs.area)",
         ));
+    }
+    if crate::asperity::is_asperity(out.theory) {
+        return super::asperity::area(surface, pressures, out);
+    }
+    if out.yield_stress.is_some() {
+        return Err(Error::Inconsistent {
+            name: "yield_stress".into(),
+            requirement: "only with the overlap theory (the hardness of its load law)".into(),
+        });
     }
     let model = surface.model()?;
     let zeta = out.zeta.unwrap_or_else(|| model.zeta_max());
@@ -124,7 +140,9 @@ pub fn area(surface: &RoughContact, pressures: &[f64], out: &AreaOutput) -> Resu
         kappa_persson: Kappa::Persson.value(),
         theory: out.theory,
         gamma: theory.gamma(),
-        kappa: theory.low_load_kappa(),
+        kappa: Some(theory.low_load_kappa()),
+        yield_stress: None,
+        asperity: None,
         zeta,
         original_contact_fraction: points.iter().map(|p| p.contact_fraction).collect(),
         points: points

@@ -21,8 +21,9 @@ pub struct LoadPoint {
     pub g: f64,
     /// Bound on the absolute error of G.
     pub g_error_bound: f64,
-    /// G_e of the theory (= G for the original theory).
-    pub effective_g: f64,
+    /// G_e of the theory (= G for the original theory; none for an asperity theory).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub effective_g: Option<f64>,
     /// A/A0 of the theory.
     pub contact_fraction: f64,
     /// 1 − A/A0, computed without cancellation.
@@ -35,6 +36,15 @@ pub struct LoadPoint {
     pub contact_fraction_bush_linear: f64,
     /// Persson's linear law, κ = √(8/π).
     pub contact_fraction_persson_linear: f64,
+    /// An asperity theory: the separation d of the flat from the mean plane, m.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub separation: Option<f64>,
+    /// An asperity theory (GW, BGT): contacts per unit nominal area, 1/m².
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub contact_number_density: Option<f64>,
+    /// An asperity theory: Persson's (original) A/A0 at the same σ0, beside it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub contact_fraction_original: Option<f64>,
 }
 
 impl LoadPoint {
@@ -54,13 +64,41 @@ impl LoadPoint {
             zeta: p.zeta,
             g: p.g,
             g_error_bound: p.g_error_bound,
-            effective_g: theory.effective_g,
+            effective_g: Some(theory.effective_g),
             contact_fraction,
             non_contact_fraction,
             error_bound,
             rms_slope: p.rms_slope,
             contact_fraction_bush_linear: p.contact_fraction_bush_linear,
             contact_fraction_persson_linear: p.contact_fraction_persson_linear,
+            separation: None,
+            contact_number_density: None,
+            contact_fraction_original: None,
+        }
+    }
+
+    /// Persson's point `p` with the A/A0 of an asperity theory's point `a`
+    /// (relative error bound `relative_error`).
+    pub(crate) fn asperity(
+        p: &AreaPoint,
+        a: &persson::asperity::AsperityPoint,
+        relative_error: f64,
+    ) -> Self {
+        LoadPoint {
+            nominal_pressure: p.nominal_pressure,
+            zeta: p.zeta,
+            g: p.g,
+            g_error_bound: p.g_error_bound,
+            effective_g: None,
+            contact_fraction: a.contact_fraction,
+            non_contact_fraction: 1.0 - a.contact_fraction,
+            error_bound: relative_error * a.contact_fraction,
+            rms_slope: p.rms_slope,
+            contact_fraction_bush_linear: p.contact_fraction_bush_linear,
+            contact_fraction_persson_linear: p.contact_fraction_persson_linear,
+            separation: Some(a.separation),
+            contact_number_density: a.contact_number_density,
+            contact_fraction_original: Some(p.contact_fraction),
         }
     }
 }
@@ -87,8 +125,16 @@ pub struct AreaReport {
     /// Its γ (none for the original theory).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub gamma: Option<f64>,
-    /// The theory's low-load κ.
-    pub kappa: f64,
+    /// The theory's low-load κ (none for GW and the overlap model).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub kappa: Option<f64>,
+    /// The overlap model: the hardness σY of its load law.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub yield_stress: Option<f64>,
+    /// An asperity theory: the surface's moments and summit statistics
+    /// (their keys at the top level of the report).
+    #[serde(flatten)]
+    pub asperity: Option<crate::asperity::AsperityParameters>,
     /// Magnification ζ.
     pub zeta: f64,
     /// One point per pressure.
@@ -105,7 +151,7 @@ pub struct AreaReport {
 
 /// Significant digits that print every input as given (its shortest
 /// round-trip form): `1e4`, `3e8`, `4.26e8`.
-pub(super) fn input_digits(values: impl IntoIterator<Item = f64>) -> usize {
+pub(crate) fn input_digits(values: impl IntoIterator<Item = f64>) -> usize {
     values
         .into_iter()
         .filter(|v| v.is_finite() && *v != 0.0)
@@ -130,12 +176,15 @@ fn theory_heading(theory: TheoryName, gamma: Option<f64>) -> String {
     }
 }
 
-pub(super) fn surface_prefix(surface: &Option<String>) -> String {
+pub(crate) fn surface_prefix(surface: &Option<String>) -> String {
     surface.as_ref().map_or(String::new(), |s| format!("{s}\n"))
 }
 
 impl Tabulate for AreaReport {
     fn tables(&self) -> Vec<Table> {
+        if crate::asperity::is_asperity(self.theory) {
+            return vec![self.asperity_table()];
+        }
         let mut t = Table::new(
             "area",
             format!(

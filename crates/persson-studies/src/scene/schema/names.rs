@@ -123,6 +123,14 @@ names! {
         WangMuser = "wang-muser",
         /// Xu et al., Tribol. Lett. (2024), doi:10.1007/s11249-024-01838-4, γ = 0.42.
         Xu = "xu",
+        /// Overlap (bearing-area) model with the hardness law σ0 = σY A/A0
+        /// (Abbott & Firestone 1933; needs a yield stress).
+        Overlap = "overlap",
+        /// Greenwood & Williamson, Proc. R. Soc. Lond. A 295, 300 (1966), summits
+        /// from the moments m0, m2, m4 (Nayak 1971, McCool 1986).
+        GreenwoodWilliamson = "greenwood-williamson",
+        /// Bush, Gibson & Thomas, Wear 35, 87 (1975), at finite load.
+        Bush = "bush",
     }
 }
 
@@ -141,15 +149,27 @@ impl TheorySpec {
     /// The validated theory.
     ///
     /// # Errors
-    /// γ given for `original`, or out of the theory's range.
+    /// γ given for `original`, or out of the theory's range; an asperity
+    /// theory (it is not one of Persson's, see [`crate::asperity`]).
     pub fn build(&self) -> Result<Theory> {
+        if crate::asperity::is_asperity(self.theory) {
+            return Err(Error::Inconsistent {
+                name: "theory".into(),
+                requirement: format!(
+                    "{} is an asperity theory, not one of Persson's (original, yang-persson, \
+                     wang-muser, xu): it has no G and no γ; it is an `area` theory and is in `compare`",
+                    self.theory
+                ),
+            });
+        }
         Theory::from_name(self.theory.name(), self.gamma)
     }
 
-    /// Each theory with its default γ.
+    /// Each of Persson's theories (original and the corrected ones) with its default γ.
     pub fn all() -> Vec<TheorySpec> {
         TheoryName::ALL
             .iter()
+            .filter(|&&t| !crate::asperity::is_asperity(t))
             .map(|&theory| TheorySpec {
                 theory,
                 gamma: None,

@@ -88,9 +88,14 @@ pub struct AreaOutput {
     /// γ of a corrected theory (default: the paper's value).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub gamma: Option<f64>,
-    /// Absolute tolerance on A/A0 of the corrected theories' solver (default 1e-12).
+    /// Absolute tolerance on A/A0 of the corrected theories' solver; for
+    /// `bush`, the relative tolerance of its integrals (default 1e-12).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tolerance: Option<f64>,
+    /// Hardness σY of the `overlap` theory's load law σ0 = σY A/A0 (required
+    /// by it, refused by the others).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub yield_stress: Option<f64>,
     /// Draw A/A0 against load with the Bush and Persson lines (.svg or .png).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub plot: Option<PathBuf>,
