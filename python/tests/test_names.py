@@ -26,6 +26,8 @@ NOT_QUANTITIES = {
     "data", "data_histogram",  # the user's CSV files
     "client", "threads", "timeout",  # where an ensemble runs
     "size", "pixel_size", "q_min", "q_max",  # a band or a map's extent, as the CLI's flags
+    "paths", "spectra",  # several inputs (Spectrum.combine, Spectrum.sum)
+    "sizes", "pixel_sizes", "tip_radii",  # per-file lists of size, pixel_size, tip_radius
 }
 
 

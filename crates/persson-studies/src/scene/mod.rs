@@ -386,16 +386,17 @@ pub fn render_plots(scene: &Scene, report: &SceneReport, dir: &Path) -> Result<V
     if let (Some(out), Some(r)) = (&o.bem, &report.bem) {
         draw(&out.plot, &|| plot::bem(r))?;
     }
-    if let (Some(Some(path)), Some(r)) = (o.friction.as_ref().map(|f| &f.plot), &report.friction) {
-        let p = dir.join(path);
-        crate::plot::render_stacked(&plot::friction(r)?, &p)?;
-        written.push(p);
-    }
     if let (Some(out), Some(r)) = (&o.conductance, &report.conductance) {
         draw(&out.plot, &|| plot::conductance(r))?;
     }
     if let (Some(out), Some(r)) = (&o.leakage, &report.leakage) {
         draw(&out.plot, &|| plot::leakage(r))?;
+    }
+    // Two panels: drawn here, after the last use of `draw` (which holds `written`).
+    if let (Some(Some(path)), Some(r)) = (o.friction.as_ref().map(|f| &f.plot), &report.friction) {
+        let p = dir.join(path);
+        crate::plot::render_stacked(&plot::friction(r)?, &p)?;
+        written.push(p);
     }
     Ok(written)
 }
