@@ -29,6 +29,7 @@ use persson::material::Material;
 use persson::spectrum::Spectrum;
 use persson::stress::Start;
 
+mod adhesion;
 #[cfg(feature = "bem")]
 mod bem;
 mod measured;
@@ -38,6 +39,7 @@ pub mod report;
 pub mod run;
 pub mod schema;
 
+pub use adhesion::{DEFAULT_STICKINESS_POINTS, DEFAULT_TOLERANCE as DEFAULT_ADHESION_TOLERANCE};
 #[cfg(feature = "topography")]
 pub use measured::describe;
 pub use report::*;
@@ -165,6 +167,7 @@ impl Scene {
             || o.magnification.is_some()
             || o.theories.is_some()
             || o.separation.is_some()
+            || o.adhesion.is_some()
             || o.stress.as_ref().is_some_and(|st| !st.zeta.is_empty())
             || (o.kappa.is_some() && with_surface && !self.nominal_pressure.is_empty());
         let surface = if needs_surface {
@@ -204,6 +207,12 @@ impl Scene {
         }
         if let Some(sep) = &o.separation {
             report.separation = Some(run::separation(&surface, &self.nominal_pressure, sep, &[])?);
+        }
+        if let Some(ad) = &o.adhesion {
+            report.adhesion = Some(
+                run::adhesion(&surface, &self.nominal_pressure, ad)
+                    .map_err(|e| prefix("outputs.adhesion.", e))?,
+            );
         }
         if let Some(st) = o.stress.as_ref().filter(|st| !st.zeta.is_empty()) {
             report.stress =

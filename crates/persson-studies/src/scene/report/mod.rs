@@ -6,12 +6,14 @@ use serde::Serialize;
 
 use crate::table::{Table, Tabulate};
 
+mod adhesion;
 mod area;
 mod bem;
 mod separation;
 mod spectrum;
 mod stress;
 
+pub use adhesion::*;
 pub use area::*;
 pub use bem::*;
 pub use separation::*;
@@ -56,6 +58,9 @@ pub struct SceneReport {
     /// FFT-BEM Hertz convergence.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub bem_hertz: Option<BemHertzReport>,
+    /// Adhesion (stickiness, adhesive contact area, pull-off).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub adhesion: Option<AdhesionReport>,
     /// Remarks on the input (never a change of a number); the CLI prints them
     /// on stderr and in the top-level `warnings` of `--json`.
     #[serde(skip)]
@@ -73,6 +78,7 @@ impl SceneReport {
             self.theories.as_ref().map(|r| &r.warnings),
             self.separation.as_ref().map(|r| &r.warnings),
             self.stress.as_ref().map(|r| &r.warnings),
+            self.adhesion.as_ref().map(|r| &r.warnings),
         ];
         let mut all = std::mem::take(&mut self.warnings);
         for w in lists.into_iter().flatten().flatten() {
@@ -95,7 +101,7 @@ impl Tabulate for SceneReport {
         let bem = self.bem.as_ref().map(|r| r as &dyn Tabulate);
         #[cfg(not(feature = "bem"))]
         let bem = None;
-        let parts: [Option<&dyn Tabulate>; 9] = [
+        let parts: [Option<&dyn Tabulate>; 10] = [
             self.spectrum.as_ref().map(|r| r as &dyn Tabulate),
             self.kappa.as_ref().map(|r| r as &dyn Tabulate),
             self.area.as_ref().map(|r| r as &dyn Tabulate),
@@ -105,6 +111,7 @@ impl Tabulate for SceneReport {
             self.stress.as_ref().map(|r| r as &dyn Tabulate),
             bem,
             self.bem_hertz.as_ref().map(|r| r as &dyn Tabulate),
+            self.adhesion.as_ref().map(|r| r as &dyn Tabulate),
         ];
         for p in parts.into_iter().flatten() {
             out.extend(p.tables());
