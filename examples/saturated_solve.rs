@@ -2,10 +2,12 @@
 //! `examples/tamaas_compare.py --yield-stress …`: reads the `.npy` heights
 //! (side L = 1, E* = 1, periodic), solves at the mean pressure with
 //! 0 ≤ p ≤ σY and prints one JSON line (fractions, iterations, residual,
-//! seconds); writes the pressure field to the given `.npy`.
+//! seconds, whether the preconditioned solver fell back); writes the
+//! pressure field to the given `.npy`. A sixth argument `plain` selects the
+//! plain Polonsky–Keer method of persson 0.3 (default: preconditioned).
 //!
 //! `cargo run --release --features bem --example saturated_solve -- \
-//!     heights.npy pressure yield_stress tolerance pressure_out.npy`
+//!     heights.npy pressure yield_stress tolerance pressure_out.npy [plain]`
 
 #[cfg(not(feature = "bem"))]
 fn main() {
@@ -15,15 +17,21 @@ fn main() {
 #[cfg(feature = "bem")]
 fn main() -> persson::Result<()> {
     use persson::bem::surface::read_height_map;
-    use persson::bem::{Boundary, Control, Operator, Options, Solver};
+    use persson::bem::{Boundary, Control, Method, Operator, Options, Solver};
     use persson::io::npy;
     use std::path::Path;
 
     let a: Vec<String> = std::env::args().collect();
-    if a.len() != 6 {
-        eprintln!("usage: saturated_solve heights.npy pressure yield_stress tolerance out.npy");
+    if a.len() != 6 && a.len() != 7 {
+        eprintln!(
+            "usage: saturated_solve heights.npy pressure yield_stress tolerance out.npy [plain]"
+        );
         std::process::exit(2);
     }
+    let method = match a.get(6).map(String::as_str) {
+        Some("plain") => Method::Plain,
+        _ => Method::default(),
+    };
     let num = |s: &str| s.parse::<f64>().expect("a number");
     let surf = read_height_map(Path::new(&a[1]), 1.0)?;
     let opts = Options {
@@ -31,13 +39,14 @@ fn main() -> persson::Result<()> {
         yield_stress: Some(num(&a[3])),
         ..Options::default()
     };
-    let mut solver = Solver::new(Operator::new(Boundary::Periodic, surf.n, 1.0, 1.0)?);
+    let mut solver =
+        Solver::with_method(Operator::new(Boundary::Periodic, surf.n, 1.0, 1.0)?, method);
     let sol = solver.solve(&surf.heights, Control::MeanPressure(num(&a[2])), &opts)?;
     npy::write(Path::new(&a[5]), surf.n, surf.n, &sol.pressure)?;
     println!(
         "{{\"contact_fraction\": {:e}, \"elastic_fraction\": {:e}, \"plastic_fraction\": {:e}, \
          \"plastic_displacement_mean\": {:e}, \"plastic_displacement_max\": {:e}, \
-         \"iterations\": {}, \"residual\": {:e}, \"seconds\": {:e}}}",
+         \"iterations\": {}, \"residual\": {:e}, \"seconds\": {:e}, \"fallback\": {}}}",
         sol.contact_fraction,
         sol.elastic_fraction,
         sol.plastic_fraction,
@@ -45,7 +54,8 @@ fn main() -> persson::Result<()> {
         sol.plastic_displacement_max,
         sol.iterations,
         sol.residual,
-        sol.seconds
+        sol.seconds,
+        sol.fallback.is_some()
     );
     Ok(())
 }

@@ -17,8 +17,15 @@
 //!
 //! # Pieces
 //! - `fft` (internal): planned 2-D real FFT (rustfft + realfft), no allocation per call.
-//! - [`kernel`]: the compliance operators 𝒢 (periodic, free).
-//! - [`solver`]: Polonsky–Keer constrained conjugate gradient.
+//! - [`kernel`]: the compliance operators 𝒢 (periodic, free) and the stiffness 𝒦.
+//! - [`problem`]: the set-up of a solve ([`Problem`]: heights, control,
+//!   offset, σ_h) and its knobs ([`Options`], [`Method`]).
+//! - [`workspace`]: the operator and the fields every loop works in.
+//! - [`solver`]: the solver ([`Solver`]), its stopping rule and the load
+//!   path ([`LoadPath`], warm starts).
+//! - [`preconditioned`]: the stiffness-preconditioned constrained conjugate
+//!   gradient (default); [`polonsky_keer`]: the plain Polonsky–Keer loop
+//!   (its fallback); `elastic` (internal) chooses between them.
 //! - [`saturated`]: the same with a yield stress, 0 ≤ p ≤ σY.
 //! - [`hertz`]: closed-form Hertz solution and the η validation; with a
 //!   yield stress, the plastic disc per grid ([`hertz::plastic_disc`]).
@@ -41,25 +48,35 @@
 //! # Ok(()) }
 //! ```
 
+mod elastic;
 pub mod fft;
 pub mod hertz;
 pub mod histogram;
 pub mod kernel;
 pub mod patches;
+pub mod polonsky_keer;
+pub mod preconditioned;
+pub mod problem;
 pub mod resample;
 #[cfg(feature = "flow")]
 pub mod reynolds;
 pub mod rough;
 pub mod saturated;
+pub mod solution;
 pub mod solver;
+mod steps;
 pub mod stiffness;
 pub mod subsurface;
 pub mod surface;
+pub mod workspace;
 
 pub use histogram::{pressure_histogram, saturated_histogram, HistogramBin, SaturatedHistogram};
 pub use kernel::{Boundary, Operator};
-pub use solver::{Control, Iteration, Options, Solution, Solver};
+pub use problem::{Control, Method, Options, Problem};
+pub use solution::{Fallback, Iteration, Solution};
+pub use solver::{LoadPath, Solver};
 pub use surface::GridSurface;
+pub use workspace::{Displacement, Fields, Finish, Start, Workspace};
 
 /// The name of [`GridSurface`] in persson 0.3 (kept for one release).
 #[deprecated(

@@ -33,7 +33,7 @@ use serde::Serialize;
 
 use super::histogram::{pressure_histogram, saturated_histogram, HistogramBin};
 use super::{check_memory, surface, Boundary, Control, Iteration, Operator, Options, Solution};
-use super::{GridSurface, Solver};
+use super::{Fallback, GridSurface, Solver};
 use crate::error::{check, Error, Result};
 use crate::spectrum::Spectrum;
 
@@ -99,6 +99,11 @@ pub struct RoughPoint {
     /// With a yield stress: largest plastic displacement (unit of L).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub plastic_displacement_max: Option<f64>,
+    /// Set when the preconditioned solver stalled and the plain one
+    /// finished this solve (same answer, more time): the application layer
+    /// warns about it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub fallback: Option<Fallback>,
 }
 
 /// Progress of [`solve`], once per solver iteration.
@@ -132,7 +137,8 @@ pub trait Observer {
 impl Observer for () {}
 
 /// Solve the contact of `surface` at each nominal pressure, in the given
-/// order, on one solver (warm start as `options.solver.warm_start`).
+/// order, along one [`LoadPath`](super::LoadPath): each solve starts from the
+/// previous solution when `options.solver.warm_start`.
 ///
 /// # Errors
 /// No pressure, a pressure not finite and positive, `bins == Some(0)`;
@@ -157,11 +163,13 @@ pub fn solve(
     check_memory(surface.n, options.boundary)?;
     let op = Operator::new(options.boundary, surface.n, surface.size, contact_modulus)?;
     let mut solver = Solver::new(op);
+    let mut path = solver
+        .load_path(&surface.heights)
+        .warm(options.solver.warm_start);
     let total = pressures.len();
     let mut points = Vec::with_capacity(total);
     for (index, &p) in pressures.iter().enumerate() {
-        let sol = solver.solve_observed(
-            &surface.heights,
+        let sol = path.solve_observed(
             Control::MeanPressure(p),
             &options.solver,
             &mut |iteration| {
@@ -194,6 +202,7 @@ pub fn solve(
             plastic_fraction: plastic(sol.plastic_fraction),
             plastic_displacement_mean: plastic(sol.plastic_displacement_mean),
             plastic_displacement_max: plastic(sol.plastic_displacement_max),
+            fallback: sol.fallback,
         });
     }
     Ok(points)

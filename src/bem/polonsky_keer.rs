@@ -1,0 +1,327 @@
+//! The plain Polonsky–Keer constrained conjugate gradient ([`Method::Plain`],
+//! the solver of persson 0.3, unchanged in every operation).
+//!
+//! # Algorithm
+//! Polonsky & Keer (1999), §2: conjugate gradient on the contact set
+//! `I_c = {p > 0}`, restarted when the active set grows (points with `p = 0`
+//! and `g < 0` re-enter with `p = −τ g`), with the mean gap on `I_c` removed
+//! and the pressure rescaled to the target mean after each step (mean
+//! pressure control). Two applications of 𝒢 per iteration; when the active
+//! set did not change during a step (or changed at a few nodes, whose
+//! correction is summed directly) the displacement is updated linearly
+//! (`u ← s(u − τ 𝒢t)`) instead, and it is always recomputed from `p` before
+//! convergence is declared.
+//!
+//! Only the gap is stored (the displacement is `g + h` up to the offset), the
+//! step's rescaling of p is applied by the next step (which rewrites p
+//! anyway), and the search direction is formed row by row as the transform
+//! of 𝒢t reads it, whose output rows feed the step's sums: four `N × N`
+//! fields, and two passes per iteration besides the transform's (the solve
+//! is bound by memory traffic as much as by the FFTs).
+//!
+//! # References
+//! I. A. Polonsky & L. M. Keer, Wear 231, 206–219 (1999),
+//! doi:10.1016/S0043-1648(99)00113-1.
+//!
+//! [`Method::Plain`]: super::Method::Plain
+
+use std::cell::Cell;
+use std::time::Instant;
+
+use super::problem::{Options, Problem};
+use super::solution::{Iteration, Solution};
+use super::steps::{
+    gap_stats, project_step, refresh_gap, sparse_limit, Entry, GapStats, Pending, LANES,
+};
+use super::workspace::{Finish, Workspace};
+use crate::error::{Error, Result};
+
+/// Solve `problem` from the pressure [`Workspace::start`] (or
+/// [`Workspace::resume`]) wrote; `k0` iterations were spent before (by a
+/// stalled loop), and count against `opts.max_iterations`.
+///
+/// # Errors
+/// [`Error::NotConverged`] after `opts.max_iterations` iterations in all.
+pub(crate) fn solve(
+    problem: &Problem,
+    ws: &mut Workspace,
+    opts: &Options,
+    k0: usize,
+    observer: &mut dyn FnMut(Iteration),
+) -> Result<Solution> {
+    let start = Instant::now();
+    let mut state = State::new(problem, ws, k0)?;
+    let (residual, stats) = loop {
+        let st = state.measure(problem, ws);
+        let eps = st.residual(state.load, problem.sigma_h());
+        observer(Iteration {
+            iteration: state.k,
+            residual: eps,
+            contact_fraction: st.count as f64 / problem.nodes() as f64,
+        });
+        if eps <= opts.tolerance && !st.overlap(state.load, opts.tolerance, problem.sigma_h()) {
+            if state.fresh {
+                break (eps, st);
+            }
+            state.refresh(problem, ws)?;
+            continue;
+        }
+        if state.k >= opts.max_iterations {
+            return Err(Error::NotConverged {
+                what: "Polonsky–Keer contact solver".into(),
+                iterations: state.k,
+                residual: eps,
+                tolerance: opts.tolerance,
+            });
+        }
+        state.iterate(problem, ws, &st)?;
+    };
+    let f = ws.fields();
+    f.pressure.iter_mut().for_each(|p| *p *= state.p_scale);
+    // Final gap: zero at the lowest contact point (load control);
+    // g = u − (h − max h) − g_min = 0 on the contact  ⇒  δ = g_min.
+    let shift = if state.load && stats.count > 0 {
+        stats.g_min
+    } else {
+        0.0
+    };
+    let approach = if state.load {
+        shift
+    } else {
+        problem.penetration()
+    };
+    let mut done = Finish::elastic(shift, approach, stats.count, state.k, residual);
+    done.seconds = start.elapsed().as_secs_f64();
+    Ok(ws.finish(problem, done))
+}
+
+/// The iteration's state between passes.
+struct State {
+    load: bool,
+    /// The gap was computed from a fresh `𝒢p` (convergence is declared only then).
+    fresh: bool,
+    g_old: f64,
+    conjugate: bool,
+    /// The step's linear gap update (with its rescaling s), applied lazily
+    /// in the next gap pass.
+    pending: Pending,
+    /// The pressure is `p_scale · p` (the step's rescaling is applied by the
+    /// next step, which rewrites p anyway).
+    p_scale: f64,
+    g_ref: f64,
+    k: usize,
+}
+
+impl State {
+    /// The first gap, from the start pressure.
+    fn new(problem: &Problem, ws: &mut Workspace, k0: usize) -> Result<Self> {
+        let f = ws.fields();
+        refresh_gap(
+            f.op,
+            f.pressure,
+            f.gap,
+            problem.heights(),
+            problem.offset(),
+            1.0,
+        )?;
+        f.direction.fill(0.0);
+        Ok(State {
+            load: problem.target_total().is_some(),
+            fresh: true,
+            g_old: 1.0,
+            conjugate: false,
+            pending: Pending::NONE,
+            p_scale: 1.0,
+            g_ref: 0.0,
+            k: k0,
+        })
+    }
+
+    /// Apply the pending update and gather the gap statistics.
+    fn measure(&mut self, problem: &Problem, ws: &mut Workspace) -> GapStats {
+        let f = ws.fields();
+        let st = gap_stats(
+            f.pressure,
+            f.gap,
+            f.response,
+            problem.heights(),
+            problem.offset(),
+            self.pending,
+            self.g_ref,
+            self.p_scale,
+        );
+        self.pending = Pending::NONE;
+        st
+    }
+
+    /// A fresh gap `𝒢(p_scale·p)` before convergence is declared.
+    fn refresh(&mut self, problem: &Problem, ws: &mut Workspace) -> Result<()> {
+        let f = ws.fields();
+        refresh_gap(
+            f.op,
+            f.pressure,
+            f.gap,
+            problem.heights(),
+            problem.offset(),
+            self.p_scale,
+        )?;
+        self.fresh = true;
+        Ok(())
+    }
+
+    /// One conjugate-gradient step: direction, step length, projection,
+    /// re-entry, rescaling, and the gap update (linear, sparse or fresh).
+    fn iterate(&mut self, problem: &Problem, ws: &mut Workspace, st: &GapStats) -> Result<()> {
+        if st.count == 0 && !self.load {
+            // No contact but overlap: start the pressure there.
+            self.conjugate = false;
+        }
+        let f = ws.fields();
+        let (g_bar, g_norm) = st.contact_mean(self.load, self.g_ref, f.gap, f.pressure);
+        self.g_ref = g_bar;
+        let beta = if self.conjugate {
+            g_norm / self.g_old
+        } else {
+            0.0
+        };
+        self.g_old = g_norm;
+        let [s_r, s_t, s_gt, s_rt] = direction_and_response(ws, g_bar, beta)?;
+        let denom = if self.load && st.count > 0 {
+            s_rt - s_r / st.count as f64 * s_t
+        } else {
+            s_rt
+        };
+        let tau = if denom > 0.0 && denom.is_finite() {
+            s_gt / denom
+        } else {
+            0.0
+        };
+        // Overlapping points enter with p = −τ g (degenerate step τ = 0:
+        // with the overlap times the stiffness guess).
+        let coeff = if tau > 0.0 {
+            -tau
+        } else {
+            -problem.stiffness()
+        };
+        let f = ws.fields();
+        let limit = sparse_limit(f.pressure.len());
+        let step = project_step(
+            f.pressure,
+            f.direction,
+            f.gap,
+            self.p_scale,
+            tau,
+            Entry::Overlap { g_bar, coeff },
+            limit,
+            f.sparse_idx,
+            f.sparse_val,
+        );
+        self.conjugate = !step.entered;
+        let scale = match problem.target_total() {
+            Some(total) if step.sum_p > 0.0 => total / step.sum_p,
+            _ => 1.0,
+        };
+        let sparse = step.changed <= limit && f.op.add_sparse(f.sparse_idx, f.sparse_val, f.gap);
+        if step.changed == 0 || sparse {
+            // u = s (u − τ 𝒢t + 𝒢c), c the sparse correction (just added).
+            self.pending = Pending {
+                g_scale: scale,
+                tau,
+                update: true,
+            };
+            self.fresh = false;
+        } else {
+            // u = 𝒢(s p) = s 𝒢p.
+            refresh_gap(
+                f.op,
+                f.pressure,
+                f.gap,
+                problem.heights(),
+                problem.offset(),
+                scale,
+            )?;
+            self.fresh = true;
+        }
+        self.p_scale = scale;
+        self.k += 1;
+        Ok(())
+    }
+}
+
+/// The search direction `t` (written row by row as the transform reads
+/// it) and the response `r = 𝒢t`, with the step's sums
+/// `[Σ_c r, Σ t, Σ (g − ḡ) t, Σ r t]`.
+fn direction_and_response(ws: &mut Workspace, g_bar: f64, beta: f64) -> Result<[f64; 4]> {
+    let f = ws.fields();
+    let n = f.op.n();
+    let (p, g, r) = (&*f.pressure, &*f.gap, f.response);
+    // Both passes see t: `fill` writes row i before `emit` reads it.
+    let t = Cell::from_mut(f.direction).as_slice_of_cells();
+    let (mut s_t, mut s_gt, mut s_r, mut s_rt) = (0.0, 0.0, 0.0, 0.0);
+    f.op.apply_rows(
+        &mut |i, row| {
+            let k = i * n..(i + 1) * n;
+            let [a, b] = direction_row(&p[k.clone()], &g[k.clone()], &t[k], g_bar, beta, row);
+            s_t += a;
+            s_gt += b;
+        },
+        &mut |i, row| {
+            let k = i * n..(i + 1) * n;
+            let [a, b] = response_row(&p[k.clone()], &t[k.clone()], row, &mut r[k]);
+            s_r += a;
+            s_rt += b;
+        },
+    )?;
+    Ok([s_r, s_t, s_gt, s_rt])
+}
+
+/// One row of the search direction, `t ← m (g − ḡ + β t)` with `m = [p > 0]`,
+/// written to `t` and `out`; returns `[Σ t, Σ (g − ḡ) t]` over the row.
+fn direction_row(
+    p: &[f64],
+    g: &[f64],
+    t: &[Cell<f64>],
+    g_bar: f64,
+    beta: f64,
+    out: &mut [f64],
+) -> [f64; 2] {
+    let mut acc = [[0.0f64; LANES]; 2];
+    let chunks = p
+        .chunks(LANES)
+        .zip(g.chunks(LANES))
+        .zip(t.chunks(LANES))
+        .zip(out.chunks_mut(LANES));
+    for (((pc, gc), tc), oc) in chunks {
+        for l in 0..pc.len() {
+            let m = if pc[l] > 0.0 { 1.0 } else { 0.0 };
+            let dg = gc[l] - g_bar;
+            let v = m * (dg + beta * tc[l].get());
+            tc[l].set(v);
+            oc[l] = v;
+            acc[0][l] += v;
+            acc[1][l] += dg * v;
+        }
+    }
+    acc.map(|a| a.iter().sum())
+}
+
+/// One row of the response `r = 𝒢t`, copied to `r`; returns
+/// `[Σ_c r, Σ r t]` over the row (t vanishes off the contact).
+fn response_row(p: &[f64], t: &[Cell<f64>], row: &[f64], r: &mut [f64]) -> [f64; 2] {
+    let mut acc = [[0.0f64; LANES]; 2];
+    let chunks = p
+        .chunks(LANES)
+        .zip(t.chunks(LANES))
+        .zip(row.chunks(LANES))
+        .zip(r.chunks_mut(LANES));
+    for (((pc, tc), xc), rc) in chunks {
+        for l in 0..pc.len() {
+            let m = if pc[l] > 0.0 { 1.0 } else { 0.0 };
+            let x = xc[l];
+            rc[l] = x;
+            acc[0][l] += m * x;
+            acc[1][l] += x * tc[l].get();
+        }
+    }
+    acc.map(|a| a.iter().sum())
+}

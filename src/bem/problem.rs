@@ -1,0 +1,277 @@
+//! The set-up of a contact solve, built once and read by every loop: the
+//! rigid heights, what is prescribed (load or approach), the gap offset and
+//! the height statistics of the stopping rule; with the accuracy knobs
+//! ([`Options`]) and the choice of method ([`Method`]).
+//!
+//! # Formula
+//! ```text
+//! gap            g = 𝒢p − (h − o)            o = max h − δ   (offset)
+//! mean pressure  p̄ = Σp / N²                 (load control: fixed, δ free)
+//! stopping rule  σ_h = sqrt(Σ (h_i − h̄)² / (N² − 1))
+//! ```
+//! `h − o` is always formed first: it is the size of the roughness, so a
+//! large mean height costs no digits in the gap.
+//!
+//! Every loop ([`super::polonsky_keer`], [`super::preconditioned`],
+//! [`super::saturated`], and loops added later such as a gap-based adhesive
+//! one) takes a `&Problem` and a `&mut` [`super::Workspace`]: the problem is
+//! never written, the workspace holds every buffer.
+
+use super::kernel::{Boundary, Operator};
+use crate::error::{check, Error, Result};
+
+/// What is prescribed: the mean pressure or the penetration.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Control {
+    /// Nominal mean pressure p̄ = load / L² (same unit as E*), > 0.
+    MeanPressure(f64),
+    /// Approach δ from first touch (unit of L), ≥ 0.
+    Penetration(f64),
+}
+
+/// Accuracy knobs of the solver.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Options {
+    /// Relative tolerance on ε (see [`super::solver`]), in `[1e-15, 0.1]`.
+    pub tolerance: f64,
+    /// Maximum number of CG iterations.
+    pub max_iterations: usize,
+    /// Start from the previous solution (rescaled to the new load) when the
+    /// workspace holds one: speeds up load sweeps (see also
+    /// [`super::LoadPath`], which always does).
+    pub warm_start: bool,
+    /// Yield stress σY (hardness, unit of E*): pressures are bounded by
+    /// `0 ≤ p ≤ σY` (the saturated problem, see [`super::saturated`]).
+    /// `None`: the elastic problem, solved exactly as without this field.
+    pub yield_stress: Option<f64>,
+}
+
+impl Default for Options {
+    /// `tolerance = 1e-10`, `max_iterations = 10 000`, no warm start, no yield stress.
+    fn default() -> Self {
+        Options {
+            tolerance: 1e-10,
+            max_iterations: 10_000,
+            warm_start: false,
+            yield_stress: None,
+        }
+    }
+}
+
+/// Which constrained conjugate gradient solves the problem. Both stop on
+/// the same ε (see [`super::solver`]), so equal tolerances give equal
+/// answers to the tolerance.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum Method {
+    /// Polonsky & Keer (1999) as in persson 0.3: iterations grow with the
+    /// grid (~√N: 217 at 512², 323 at 1024² on the rough case at σ0 = 0.005 E*).
+    Plain,
+    /// Preconditioned by the half-space stiffness 𝒦 = E*|q|/2 restricted to
+    /// the free set ([`super::preconditioned`]). Falls back to [`Method::Plain`]
+    /// (flagged in [`super::Solution::fallback`]) when ε has not halved within
+    /// `stall_iterations` iterations.
+    Preconditioned {
+        /// Window of the stall test, ≥ 1 (default [`Method::STALL_ITERATIONS`]).
+        stall_iterations: usize,
+    },
+}
+
+impl Method {
+    /// Default stall window of [`Method::Preconditioned`]: the rough case
+    /// drops ε by ~10⁻⁴ in 30 iterations (rate ~0.65 per iteration), so a
+    /// factor 2 in 30 is missed only by a stalled iteration.
+    pub const STALL_ITERATIONS: usize = 30;
+
+    /// The preconditioned method with the default stall window.
+    pub const PRECONDITIONED: Method = Method::Preconditioned {
+        stall_iterations: Method::STALL_ITERATIONS,
+    };
+}
+
+impl Default for Method {
+    /// [`Method::PRECONDITIONED`].
+    fn default() -> Self {
+        Method::PRECONDITIONED
+    }
+}
+
+/// The set-up of one solve: heights, control and their derived values.
+///
+/// Built once per surface and load by [`Problem::new`] (which validates
+/// them); [`Problem::with_control`] reuses the height statistics for another
+/// load of the same surface (load paths).
+#[derive(Debug, Clone, Copy)]
+pub struct Problem<'a> {
+    heights: &'a [f64],
+    n: usize,
+    size: f64,
+    e_star: f64,
+    boundary: Boundary,
+    control: Control,
+    h_max: f64,
+    h_mean: f64,
+    sigma_h: f64,
+}
+
+impl<'a> Problem<'a> {
+    /// The problem of the rigid surface `heights` (`N × N` row-major, unit of
+    /// L) on the grid of `op`, under `control`.
+    ///
+    /// # Errors
+    /// Heights of the wrong length or not finite; a mean pressure not finite
+    /// and > 0; a penetration not finite and ≥ 0, or (periodic) at least
+    /// `max h − mean h` (full contact needs an infinite load).
+    pub fn new(heights: &'a [f64], op: &Operator, control: Control) -> Result<Self> {
+        let n = op.n();
+        let n2 = n * n;
+        if heights.len() != n2 {
+            return Err(Error::Inconsistent {
+                name: "heights".into(),
+                requirement: format!("N² = {n2} values, got {}", heights.len()),
+            });
+        }
+        if let Some(k) = heights.iter().position(|h| !h.is_finite()) {
+            return Err(Error::invalid(
+                format!("height[{}, {}]", k / n, k % n),
+                heights[k],
+                "finite",
+            ));
+        }
+        let h_max = heights.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        let h_mean = heights.iter().sum::<f64>() / n2 as f64;
+        let sigma_h =
+            (heights.iter().map(|h| (h - h_mean).powi(2)).sum::<f64>() / (n2 as f64 - 1.0)).sqrt();
+        let problem = Problem {
+            heights,
+            n,
+            size: op.size(),
+            e_star: op.e_star(),
+            boundary: op.boundary(),
+            control,
+            h_max,
+            h_mean,
+            sigma_h,
+        };
+        problem.with_control(control)
+    }
+
+    /// The same surface under another control (the height statistics are
+    /// reused).
+    ///
+    /// # Errors
+    /// As [`Problem::new`] for the control.
+    pub fn with_control(&self, control: Control) -> Result<Self> {
+        match control {
+            Control::MeanPressure(pm) => {
+                check::positive("pressure", pm)?;
+            }
+            Control::Penetration(d) => {
+                check::non_negative("penetration", d)?;
+                let room = self.h_max - self.h_mean;
+                if self.boundary == Boundary::Periodic && d >= room {
+                    return Err(Error::invalid(
+                        "penetration",
+                        d,
+                        format!(
+                            "below max(h) − mean(h) = {room:e} in a periodic system (full contact needs infinite load)"
+                        ),
+                    ));
+                }
+            }
+        }
+        Ok(Problem { control, ..*self })
+    }
+
+    /// The rigid heights `h` (unit of L).
+    pub fn heights(&self) -> &'a [f64] {
+        self.heights
+    }
+
+    /// Grid side N.
+    pub fn n(&self) -> usize {
+        self.n
+    }
+
+    /// Number of nodes N².
+    pub fn nodes(&self) -> usize {
+        self.n * self.n
+    }
+
+    /// Boundary condition of the half-space.
+    pub fn boundary(&self) -> Boundary {
+        self.boundary
+    }
+
+    /// What is prescribed.
+    pub fn control(&self) -> Control {
+        self.control
+    }
+
+    /// The prescribed total `N² p̄` under load control (`None` under
+    /// penetration control).
+    pub fn target_total(&self) -> Option<f64> {
+        match self.control {
+            Control::MeanPressure(pm) => Some(pm * self.nodes() as f64),
+            Control::Penetration(_) => None,
+        }
+    }
+
+    /// The prescribed mean pressure p̄ (`None` under penetration control).
+    pub fn target_mean(&self) -> Option<f64> {
+        match self.control {
+            Control::MeanPressure(pm) => Some(pm),
+            Control::Penetration(_) => None,
+        }
+    }
+
+    /// The approach δ: the prescribed one, 0 under load control (whose gap
+    /// is shifted by its contact level instead).
+    pub fn penetration(&self) -> f64 {
+        match self.control {
+            Control::MeanPressure(_) => 0.0,
+            Control::Penetration(d) => d,
+        }
+    }
+
+    /// Gap offset `o = max h − δ`: the gap is `g = 𝒢p − (h − o)`.
+    pub fn offset(&self) -> f64 {
+        self.h_max - self.penetration()
+    }
+
+    /// Highest height `max h`.
+    pub fn h_max(&self) -> f64 {
+        self.h_max
+    }
+
+    /// Mean height `h̄`.
+    pub fn h_mean(&self) -> f64 {
+        self.h_mean
+    }
+
+    /// Standard deviation of the heights σ_h (the scale of ε).
+    pub fn sigma_h(&self) -> f64 {
+        self.sigma_h
+    }
+
+    /// A flat surface (σ_h = 0): no iteration is needed.
+    pub fn is_flat(&self) -> bool {
+        self.sigma_h == 0.0
+    }
+
+    /// A stiffness guess `E* π N / L` (pressure per unit overlap, the order
+    /// of a node's self-stiffness) for starting points and degenerate steps.
+    pub fn stiffness(&self) -> f64 {
+        self.e_star * std::f64::consts::PI * self.n as f64 / self.size
+    }
+
+    /// Contact modulus E*.
+    pub fn e_star(&self) -> f64 {
+        self.e_star
+    }
+
+    /// Side L of the grid.
+    pub fn size(&self) -> f64 {
+        self.size
+    }
+}
