@@ -93,7 +93,7 @@ def saturated(a, tmp):
         # The surface: persson's synthesis (seed 1), written to .npy.
         ours(a.bin, ["rough", "--hurst", "0.8", "--q-l", repr(ql), "--q-r", repr(4 * ql),
                      "--q-s", repr(ql * n / 4), "--rms-slope", "0.1", "--size", "1",
-                     "--grid", str(n), "--seed", "1", "--modulus", "1",
+                     "--grid", str(n), "--seed", "1", "--contact-modulus", "1",
                      "--pressure", repr(a.pressure), "--tolerance", "1e-4",
                      "--surface-out", surf])
         heights = np.load(surf)
@@ -164,7 +164,7 @@ def main():
             np.save(hz, heights)
             pf = os.path.join(tmp, "p_hertz.npy")
             load = 4 * 0.1 ** 3 / 3
-            run = ours(a.bin, ["rough", "--surface", hz, "--size", "1", "--modulus", "1",
+            run = ours(a.bin, ["rough", "--surface", hz, "--size", "1", "--contact-modulus", "1",
                                "--pressure", repr(load), "--tolerance", repr(a.tolerance),
                                "--pressure-field", pf])
             compare("hertz periodic", n, hz, load, run, np.load(pf), a.tolerance, tmp)
@@ -177,7 +177,7 @@ def main():
             run = ours(a.bin, ["rough", "--hurst", "0.8", "--q-l", repr(ql),
                                "--q-r", repr(4 * ql), "--q-s", repr(ql * n / 4),
                                "--rms-slope", "0.1", "--size", "1", "--grid", str(n),
-                               "--seed", "1", "--modulus", "1",
+                               "--seed", "1", "--contact-modulus", "1",
                                "--pressure", repr(a.rough_pressure),
                                "--tolerance", repr(a.tolerance),
                                "--surface-out", surf, "--pressure-field", pf])

@@ -140,6 +140,7 @@ proptest! {
             boundary: c.boundary,
             solver: Options { tolerance: TOL, warm_start: true, ..Options::default() },
             bins: Some(bins),
+            ..RoughOptions::default()
         };
         let points = rough::solve(&surf, 1.0, &c.pressures, &options, &mut ()).unwrap();
         prop_assert_eq!(points.len(), 3);

@@ -26,6 +26,7 @@ from ._persson import (
     compare,
     contact_area,
     contact_modulus,
+    friction,
     g,
     kappa,
     kappa_report,
@@ -41,6 +42,56 @@ from ._persson import (
     version,
 )
 
+import functools as _functools
+import warnings as _warnings
+
+from ._ensemble import ensemble
+
+
+def _renamed(f, **old_names):
+    """`f` with old keyword names (persson ≤ 0.3, ``old=new``) accepted as
+    deprecated aliases: a ``DeprecationWarning``, then the same call with
+    the new name. The signature and docstring stay the compiled function's
+    (``functools.wraps``)."""
+
+    @_functools.wraps(f)
+    def wrapper(*args, **kwargs):
+        for old, new in old_names.items():
+            if old not in kwargs:
+                continue
+            if new in kwargs:
+                raise TypeError(f"{f.__name__}(): give {new}= only ({old}= is its old name)")
+            _warnings.warn(
+                f"{f.__name__}({old}=...) is deprecated since persson 0.4: use {new}= "
+                "(the name of src/names.md)",
+                DeprecationWarning,
+                stacklevel=2,
+            )
+            kwargs[new] = kwargs.pop(old)
+        return f(*args, **kwargs)
+
+    return wrapper
+
+
+def _modulus_alias(f):
+    return _renamed(f, modulus="contact_modulus")
+
+
+# The functions whose E* argument was `modulus` in 0.3.
+area = _modulus_alias(area)
+bem_hertz = _modulus_alias(bem_hertz)
+bem_rough = _modulus_alias(bem_rough)
+bem_solve = _renamed(bem_solve, modulus="contact_modulus", penetration="approach")
+compare = _modulus_alias(compare)
+contact_area = _modulus_alias(contact_area)
+g = _modulus_alias(g)
+kappa_report = _modulus_alias(kappa_report)
+magnification = _modulus_alias(magnification)
+mean_separation = _modulus_alias(mean_separation)
+separation = _modulus_alias(separation)
+stress_physical = _modulus_alias(stress_physical)
+theories = _modulus_alias(theories)
+
 __all__ = [
     "Spectrum",
     "adhesion",
@@ -52,6 +103,8 @@ __all__ = [
     "compare",
     "contact_area",
     "contact_modulus",
+    "ensemble",
+    "friction",
     "g",
     "kappa",
     "kappa_report",

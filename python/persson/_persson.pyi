@@ -1,6 +1,6 @@
 """Type stubs of the compiled module persson._persson (re-exported by persson).
 
-Units: SI; pressures and moduli in any one unit (that of ``modulus``);
+Units: SI; pressures and moduli in any one unit (that of ``contact_modulus``);
 q in 1/m (angular); C(q) in m⁴ (Persson's normalisation); lengths in m.
 Dicts are the CLI's ``--json`` for the same input.
 """
@@ -137,13 +137,13 @@ def contact_modulus(
     """E* from 1/E* = (1 − ν₁²)/E₁ + (1 − ν₂²)/E₂ (second body rigid when absent)."""
 
 @overload
-def g(spectrum: Spectrum, modulus: float, pressure: ArrayLike, zeta: Optional[ArrayLike] = None, *, error_bound: Literal[False] = False) -> Union[float, FloatArray]: ...
+def g(spectrum: Spectrum, contact_modulus: float, pressure: ArrayLike, zeta: Optional[ArrayLike] = None, *, error_bound: Literal[False] = False) -> Union[float, FloatArray]: ...
 @overload
-def g(spectrum: Spectrum, modulus: float, pressure: ArrayLike, zeta: Optional[ArrayLike] = None, *, error_bound: Literal[True]) -> Tuple[Union[float, FloatArray], Union[float, FloatArray]]: ...
+def g(spectrum: Spectrum, contact_modulus: float, pressure: ArrayLike, zeta: Optional[ArrayLike] = None, *, error_bound: Literal[True]) -> Tuple[Union[float, FloatArray], Union[float, FloatArray]]: ...
 @overload
 def contact_area(
     spectrum: Spectrum,
-    modulus: float,
+    contact_modulus: float,
     pressure: ArrayLike,
     theory: Theory = "original",
     gamma: Optional[float] = None,
@@ -156,7 +156,7 @@ def contact_area(
 @overload
 def contact_area(
     spectrum: Spectrum,
-    modulus: float,
+    contact_modulus: float,
     pressure: ArrayLike,
     theory: Theory = "original",
     gamma: Optional[float] = None,
@@ -170,7 +170,7 @@ def kappa(law: Literal["bush", "persson"] = "persson") -> float:
 def low_load_kappa(theory: Theory = "original", gamma: Optional[float] = None) -> float: ...
 def area(
     spectrum: Spectrum,
-    modulus: float,
+    contact_modulus: float,
     pressure: ArrayLike,
     theory: Theory = "original",
     gamma: Optional[float] = None,
@@ -180,16 +180,16 @@ def area(
 ) -> Report:
     """`persson area --json`."""
 def magnification(
-    spectrum: Spectrum, modulus: float, pressure: float, zeta: Optional[ArrayLike] = None, *, points: int = 21
+    spectrum: Spectrum, contact_modulus: float, pressure: float, zeta: Optional[ArrayLike] = None, *, points: int = 21
 ) -> Report:
     """`persson magnification --json`."""
 def kappa_report(
-    spectrum: Optional[Spectrum] = None, modulus: Optional[float] = None, pressure: Optional[ArrayLike] = None
+    spectrum: Optional[Spectrum] = None, contact_modulus: Optional[float] = None, pressure: Optional[ArrayLike] = None
 ) -> Report:
     """`persson kappa --json`."""
 def theories(
     spectrum: Spectrum,
-    modulus: float,
+    contact_modulus: float,
     pressure: ArrayLike,
     theories: Optional[Sequence[Theory]] = None,
     *,
@@ -197,10 +197,40 @@ def theories(
     tolerance: Optional[float] = None,
 ) -> Report:
     """The scene output `theories`: A/A0 of every theory against load."""
-def separation(spectrum: Spectrum, modulus: float, pressure: ArrayLike, *, tolerance: float = 1e-10) -> Report:
+def separation(spectrum: Spectrum, contact_modulus: float, pressure: ArrayLike, *, tolerance: float = 1e-10) -> Report:
     """`persson separation --json`."""
+def friction(
+    spectrum: Spectrum,
+    velocity: ArrayLike,
+    pressure: ArrayLike,
+    temperature: Optional[ArrayLike] = None,
+    *,
+    master_curve: Optional[str | os.PathLike[str]] = None,
+    frequency_unit: Optional[Literal["rad/s", "Hz"]] = None,
+    prony: Optional[str | os.PathLike[str]] = None,
+    standard_linear_solid: Optional[Sequence[float]] = None,
+    wlf: Optional[Sequence[float]] = None,
+    shift_table: Optional[str | os.PathLike[str]] = None,
+    reference_temperature: Optional[float] = None,
+    vertical_shift: Optional[Literal["none", "entropic", "table"]] = None,
+    poisson: float = 0.5,
+    q1: Optional[float] = None,
+    q1_rms_slope: Optional[float] = None,
+    gamma: float = 0.5,
+    tolerance: float = 1e-8,
+    points_per_decade: int = 4,
+    flash_temperature: bool = False,
+    thermal_conductivity: Optional[float] = None,
+    density: Optional[float] = None,
+    heat_capacity: Optional[float] = None,
+) -> Report:
+    """`persson friction --json` (Persson's rubber friction) plus arrays of shape
+    (temperatures, pressures, velocities): `friction_coefficient`, `contact_fraction`,
+    their `_error_bound`s and, with `flash_temperature=True`, `flash_friction_coefficient`,
+    `flash_contact_fraction`, `flash_temperature`; 1-D `temperature`, `nominal_pressure`,
+    `velocity`."""
 def mean_separation(
-    spectrum: Spectrum, modulus: float, pressure: ArrayLike, *, tolerance: float = 1e-10
+    spectrum: Spectrum, contact_modulus: float, pressure: ArrayLike, *, tolerance: float = 1e-10
 ) -> dict[str, FloatArray]:
     """ū (m), K (unit of E*/m), U_el (J/m²) and their error bounds as arrays."""
 def stress(
@@ -217,7 +247,7 @@ def stress(
     """`persson stress --json`: σH P against σ/σH at each G."""
 def stress_physical(
     spectrum: Spectrum,
-    modulus: float,
+    contact_modulus: float,
     zeta: ArrayLike,
     start: Start = "flat",
     *,
@@ -236,10 +266,10 @@ def synthesize(spectrum: Spectrum, grid: int, *, size: Optional[float] = None, s
 def bem_solve(
     heights: FloatArray,
     size: float,
-    modulus: float,
+    contact_modulus: float,
     *,
     pressure: Optional[float] = None,
-    penetration: Optional[float] = None,
+    approach: Optional[float] = None,
     boundary: Boundary = "periodic",
     yield_stress: Optional[float] = None,
     tolerance: float = 1e-10,
@@ -247,7 +277,7 @@ def bem_solve(
 ) -> Tuple[FloatArray, FloatArray, dict[str, Any]]:
     """One FFT-BEM solve: (pressure N×N, gap N×N, summary)."""
 def bem_rough(
-    modulus: float,
+    contact_modulus: float,
     pressure: ArrayLike,
     *,
     heights: Optional[FloatArray] = None,
@@ -268,7 +298,7 @@ def bem_hertz(
     boundary: Boundary = "free",
     size: float = 1.0,
     radius: float = 1.0,
-    modulus: float = 1.0,
+    contact_modulus: float = 1.0,
     contact_radius: Optional[float] = None,
     tolerance: float = 1e-10,
     max_iterations: int = 10000,
@@ -278,7 +308,7 @@ def bem_hertz(
     """`persson bem hertz --json`; with `yield_stress`, `bem hertz --yield-stress` on `grids`."""
 def compare(
     spectrum: Spectrum,
-    modulus: float,
+    contact_modulus: float,
     pressure: Optional[ArrayLike] = None,
     *,
     heights: Optional[FloatArray] = None,
@@ -292,7 +322,7 @@ def compare(
     pixels_per_wavelength: float = 4.0,
     tolerance: float = 1e-10,
     max_iterations: int = 10000,
-    bins: int = 40,
+    bins: int = 50,
     histogram_pressure: Optional[float] = None,
     data: Optional[PathLike] = None,
     data_histogram: Optional[PathLike] = None,
@@ -313,3 +343,21 @@ def adhesion(
 ) -> Report:
     """`persson adhesion --json`: Δγ_eff(ζ) and the stickiness verdict; A/A0 and the
     pull-off stress at the nominal pressures (≤ 0 allowed)."""
+def ensemble(
+    spectrum: Spectrum,
+    contact_modulus: float,
+    pressure: ArrayLike,
+    *,
+    grid: int = 64,
+    levels: int = 2,
+    seeds: int = 4,
+    seed: int = 1,
+    pixels_per_wavelength: float = 4.0,
+    tolerance: float = 1e-10,
+    max_iterations: int = 10000,
+    client: Any = None,
+    threads: int = 1,
+    timeout: str = "10s",
+) -> Report:
+    """`persson compare ensemble --json`: the BEM on seeds × grids, here or on Dask
+    (`client`: a dask.distributed Client or a scheduler address)."""

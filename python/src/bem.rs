@@ -31,7 +31,11 @@ fn boundary(b: &str) -> PyResult<Boundary> {
     Ok(name::<BoundaryName>("boundary", b)?.into())
 }
 
-fn options(tolerance: f64, max_iterations: usize, yield_stress: Option<f64>) -> PyResult<Options> {
+pub(crate) fn options(
+    tolerance: f64,
+    max_iterations: usize,
+    yield_stress: Option<f64>,
+) -> PyResult<Options> {
     check::tolerance("tolerance", tolerance).map_err(err)?;
     Ok(Options {
         tolerance,
@@ -88,34 +92,32 @@ fn synthesize<'py>(
 
 /// One FFT-BEM solve (Polonsky & Keer, Wear 231, 206 (1999)): a rigid rough
 /// surface `heights` (N × N float64 array, m) of side `size` (m) pressed on
-/// an elastic half-space of contact modulus `modulus`, at the mean pressure
-/// `pressure` (unit of E*) or the penetration `penetration` (m, from first
+/// an elastic half-space of contact modulus `contact_modulus`, at the mean pressure
+/// `pressure` (unit of E*) or the approach `approach` (m, from first
 /// touch); "periodic" or "free" boundary; pressures bounded by
 /// `yield_stress` when given. Returns (pressure, gap, summary): two N × N
 /// arrays (unit of E*; m) and a dict with the mean pressure, A/A0 (and its
 /// elastic and plastic parts with a yield stress), the mean separation,
 /// the approach, iterations, residual and seconds.
 #[pyfunction]
-#[pyo3(signature = (heights, size, modulus, *, pressure=None, penetration=None, boundary="periodic", yield_stress=None, tolerance=1e-10, max_iterations=10_000))]
+#[pyo3(signature = (heights, size, contact_modulus, *, pressure=None, approach=None, boundary="periodic", yield_stress=None, tolerance=1e-10, max_iterations=10_000))]
 #[allow(clippy::too_many_arguments)]
 fn bem_solve<'py>(
     py: Python<'py>,
     heights: &Bound<'py, PyAny>,
     size: f64,
-    modulus: f64,
+    contact_modulus: f64,
     pressure: Option<f64>,
-    penetration: Option<f64>,
+    approach: Option<f64>,
     boundary: &str,
     yield_stress: Option<f64>,
     tolerance: f64,
     max_iterations: usize,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let control = match (pressure, penetration) {
+    let control = match (pressure, approach) {
         (Some(p), None) => Control::MeanPressure(check::positive("pressure", p).map_err(err)?),
-        (None, Some(d)) => {
-            Control::Penetration(check::non_negative("penetration", d).map_err(err)?)
-        }
-        _ => return Err(value_error("pressure, penetration: give exactly one")),
+        (None, Some(d)) => Control::Penetration(check::non_negative("approach", d).map_err(err)?),
+        _ => return Err(value_error("pressure, approach: give exactly one")),
     };
     let b = self::boundary(boundary)?;
     let opts = options(tolerance, max_iterations, yield_stress)?;
@@ -123,7 +125,7 @@ fn bem_solve<'py>(
     let sol = py
         .detach(|| -> persson::Result<_> {
             check_memory(s.n, b)?;
-            let op = Operator::new(b, s.n, s.size, modulus)?;
+            let op = Operator::new(b, s.n, s.size, contact_modulus)?;
             Solver::new(op).solve(&s.heights, control, &opts)
         })
         .map_err(err)?;
@@ -157,13 +159,13 @@ fn bem_solve<'py>(
 /// histogram.
 #[pyfunction]
 #[pyo3(
-    signature = (modulus, pressure, *, heights=None, size=None, spectrum=None, grid=None, seed=Seed(1), boundary="periodic", yield_stress=None, bins=None, tolerance=1e-10, max_iterations=10_000),
-    text_signature = "(modulus, pressure, *, heights=None, size=None, spectrum=None, grid=None, seed=1, boundary='periodic', yield_stress=None, bins=None, tolerance=1e-10, max_iterations=10000)"
+    signature = (contact_modulus, pressure, *, heights=None, size=None, spectrum=None, grid=None, seed=Seed(1), boundary="periodic", yield_stress=None, bins=None, tolerance=1e-10, max_iterations=10_000),
+    text_signature = "(contact_modulus, pressure, *, heights=None, size=None, spectrum=None, grid=None, seed=1, boundary='periodic', yield_stress=None, bins=None, tolerance=1e-10, max_iterations=10000)"
 )]
 #[allow(clippy::too_many_arguments)]
 fn bem_rough<'py>(
     py: Python<'py>,
-    modulus: f64,
+    contact_modulus: f64,
     pressure: &Bound<'py, PyAny>,
     heights: Option<&Bound<'py, PyAny>>,
     size: Option<f64>,
@@ -183,13 +185,16 @@ fn bem_rough<'py>(
         boundary: b,
         solver: options(tolerance, max_iterations, yield_stress)?,
         bins,
+        ..RoughOptions::default()
     };
     let r = match (heights, spectrum, grid) {
         (Some(h), None, None) => {
             let size = size.ok_or_else(|| value_error("size: required with heights"))?;
             let s = surface(h, size)?;
             let source = SurfaceOrigin::height_map(Path::new("(array)"));
-            py.detach(|| rough::rough_contact(&s, source, modulus, &pressures, &opts, &mut ()))
+            py.detach(|| {
+                rough::rough_contact(&s, source, contact_modulus, &pressures, &opts, &mut ())
+            })
         }
         (None, Some(sp), Some(n)) => {
             let shared = &sp.shared;
@@ -201,7 +206,7 @@ fn bem_rough<'py>(
                 )?;
                 let s = synth(shared, n, size, seed)?;
                 let source = SurfaceOrigin::synthesised(shared, seed)?;
-                rough::rough_contact(&s, source, modulus, &pressures, &opts, &mut ())
+                rough::rough_contact(&s, source, contact_modulus, &pressures, &opts, &mut ())
             })
         }
         _ => {
@@ -218,12 +223,12 @@ fn bem_rough<'py>(
 /// ball of radius `radius` on a grid of side `size`, load from the contact
 /// radius, default 0.1 L): energy-norm error η, contact radius and peak pressure.
 ///
-/// With `yield_stress` σY (unit of `modulus`): `persson bem hertz --yield-stress
+/// With `yield_stress` σY (unit of `contact_modulus`): `persson bem hertz --yield-stress
 /// --json`, the plastic disc (pressure capped at σY) on each of `grids`
 /// (default `[grid]`): its radius and convergence, the fractions and the
 /// plastic displacement.
 #[pyfunction]
-#[pyo3(signature = (*, grid=256, boundary="free", size=1.0, radius=1.0, modulus=1.0, contact_radius=None, tolerance=1e-10, max_iterations=10_000, yield_stress=None, grids=None))]
+#[pyo3(signature = (*, grid=256, boundary="free", size=1.0, radius=1.0, contact_modulus=1.0, contact_radius=None, tolerance=1e-10, max_iterations=10_000, yield_stress=None, grids=None))]
 #[allow(clippy::too_many_arguments)]
 fn bem_hertz<'py>(
     py: Python<'py>,
@@ -231,7 +236,7 @@ fn bem_hertz<'py>(
     boundary: &str,
     size: f64,
     radius: f64,
-    modulus: f64,
+    contact_modulus: f64,
     contact_radius: Option<f64>,
     tolerance: f64,
     max_iterations: usize,
@@ -249,7 +254,7 @@ fn bem_hertz<'py>(
         boundary: self::boundary(boundary)?,
         size,
         radius,
-        e_star: modulus,
+        e_star: contact_modulus,
         contact_radius: contact_radius.unwrap_or(0.1 * size),
     };
     let opts = options(tolerance, max_iterations, None)?;
@@ -278,19 +283,19 @@ fn bem_hertz<'py>(
 /// that map and its coarser copies instead (as `compare --surface`; a
 /// `periodic` map on a periodic half-space, otherwise a free one), the
 /// theories on `spectrum` (e.g. `Spectrum.from_height_map` of the same map).
-/// With `yield_stress` σY (unit of `modulus`, above every pressure): the
+/// With `yield_stress` σY (unit of `contact_modulus`, above every pressure): the
 /// saturated BEM against Persson's finite-σY P(σ), A_el and A_pl, as
 /// `compare --yield-stress`.
 #[pyfunction]
 #[pyo3(
-    signature = (spectrum, modulus, pressure=None, *, heights=None, size=None, periodic=false, grid=256, levels=3, seeds=1, seed=Seed(1), alpha=Some(0.7), pixels_per_wavelength=4.0, tolerance=1e-10, max_iterations=10_000, bins=50, histogram_pressure=None, data=None, data_histogram=None, yield_stress=None),
-    text_signature = "(spectrum, modulus, pressure=None, *, heights=None, size=None, periodic=False, grid=256, levels=3, seeds=1, seed=1, alpha=0.7, pixels_per_wavelength=4.0, tolerance=1e-10, max_iterations=10000, bins=50, histogram_pressure=None, data=None, data_histogram=None, yield_stress=None)"
+    signature = (spectrum, contact_modulus, pressure=None, *, heights=None, size=None, periodic=false, grid=256, levels=3, seeds=1, seed=Seed(1), alpha=Some(0.7), pixels_per_wavelength=4.0, tolerance=1e-10, max_iterations=10_000, bins=50, histogram_pressure=None, data=None, data_histogram=None, yield_stress=None),
+    text_signature = "(spectrum, contact_modulus, pressure=None, *, heights=None, size=None, periodic=False, grid=256, levels=3, seeds=1, seed=1, alpha=0.7, pixels_per_wavelength=4.0, tolerance=1e-10, max_iterations=10000, bins=50, histogram_pressure=None, data=None, data_histogram=None, yield_stress=None)"
 )]
 #[allow(clippy::too_many_arguments)]
 fn compare<'py>(
     py: Python<'py>,
     spectrum: &Spectrum,
-    modulus: f64,
+    contact_modulus: f64,
     pressure: Option<&Bound<'py, PyAny>>,
     heights: Option<&Bound<'py, PyAny>>,
     size: Option<f64>,
@@ -313,7 +318,7 @@ fn compare<'py>(
     if seeds < 1 {
         return Err(value_error("seeds: must be at least 1"));
     }
-    let mut config = ComparisonConfig::new(modulus);
+    let mut config = ComparisonConfig::new(contact_modulus);
     config.nominal_pressure = pressure
         .map(|p| float_list("pressure", p))
         .transpose()?

@@ -10,9 +10,13 @@
 mod adhesion;
 mod arrays;
 mod bem;
+mod ensemble;
+mod friction;
 mod reports;
+mod serde_probe;
 mod spectrum;
 mod theory;
+mod to_python;
 
 use pyo3::exceptions::{PyOSError, PyValueError};
 use pyo3::prelude::*;
@@ -33,14 +37,15 @@ pub(crate) fn value_error(msg: impl Into<String>) -> PyErr {
     PyValueError::new_err(msg.into())
 }
 
-/// A typed report as the dict `json.loads` makes of the CLI's `--json`: the
-/// same serde serialisation, so the same keys and the same digits.
+/// A typed report as the dict `json.loads` makes of the CLI's `--json`,
+/// built directly from the struct (no JSON text in between) by the
+/// serializer of [`to_python`], whose mapping is serde_json's: the same keys
+/// and the same floats, NaN and ±∞ as None.
 pub(crate) fn to_dict<'py, T: Serialize>(
     py: Python<'py>,
     report: &T,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let text = serde_json::to_string(report).map_err(|e| value_error(e.to_string()))?;
-    py.import("json")?.call_method1("loads", (text,))
+    to_python::to_python(py, report)
 }
 
 /// A report with warnings as the dict of the CLI's `--json` (its top-level
@@ -101,11 +106,14 @@ fn version() -> &'static str {
 #[pymodule]
 fn _persson(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(version, m)?)?;
+    m.add_function(wrap_pyfunction!(serde_probe::_serde_probe, m)?)?;
     m.add_class::<spectrum::Spectrum>()?;
     m.add_function(wrap_pyfunction!(spectrum::analyse_height_map, m)?)?;
     theory::register(m)?;
     reports::register(m)?;
     bem::register(m)?;
     adhesion::register(m)?;
+    ensemble::register(m)?;
+    friction::register(m)?;
     Ok(())
 }

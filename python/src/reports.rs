@@ -40,12 +40,12 @@ const _: () = {
 /// `persson area --json`: A/A0 against the nominal pressures with G, its
 /// error bound, the effective G of a corrected theory and the linear laws.
 #[pyfunction]
-#[pyo3(signature = (spectrum, modulus, pressure, theory="original", gamma=None, *, zeta=None, tolerance=1e-12))]
+#[pyo3(signature = (spectrum, contact_modulus, pressure, theory="original", gamma=None, *, zeta=None, tolerance=1e-12))]
 #[allow(clippy::too_many_arguments)]
 fn area<'py>(
     py: Python<'py>,
     spectrum: &Spectrum,
-    modulus: f64,
+    contact_modulus: f64,
     pressure: &Bound<'py, PyAny>,
     theory: &str,
     gamma: Option<f64>,
@@ -53,7 +53,7 @@ fn area<'py>(
     tolerance: f64,
 ) -> PyResult<Bound<'py, PyAny>> {
     let pressures = float_list("pressure", pressure)?;
-    let surface = spectrum.contact(modulus)?;
+    let surface = spectrum.contact(contact_modulus)?;
     let out = AreaOutput {
         zeta,
         theory: name("theory", theory)?,
@@ -70,16 +70,16 @@ fn area<'py>(
 /// `persson magnification --json`: G(ζ) and A/A0 against magnification at
 /// one nominal pressure; ζ from `zeta`, else `points` log-spaced from 1 to q_s/q_l.
 #[pyfunction]
-#[pyo3(signature = (spectrum, modulus, pressure, zeta=None, *, points=21))]
+#[pyo3(signature = (spectrum, contact_modulus, pressure, zeta=None, *, points=21))]
 fn magnification<'py>(
     py: Python<'py>,
     spectrum: &Spectrum,
-    modulus: f64,
+    contact_modulus: f64,
     pressure: f64,
     zeta: Option<&Bound<'py, PyAny>>,
     points: usize,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let surface = spectrum.contact(modulus)?;
+    let surface = spectrum.contact(contact_modulus)?;
     let out = MagnificationOutput {
         nominal_pressure: pressure,
         zeta: zeta
@@ -99,14 +99,14 @@ fn magnification<'py>(
 /// `persson kappa --json`: κ of Bush and of Persson and, with a spectrum,
 /// modulus and pressures, both linear laws A/A0 = κ σ0/(E* h'_rms).
 #[pyfunction]
-#[pyo3(signature = (spectrum=None, modulus=None, pressure=None))]
+#[pyo3(signature = (spectrum=None, contact_modulus=None, pressure=None))]
 fn kappa_report<'py>(
     py: Python<'py>,
     spectrum: Option<&Spectrum>,
-    modulus: Option<f64>,
+    contact_modulus: Option<f64>,
     pressure: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let r = match (spectrum, modulus) {
+    let r = match (spectrum, contact_modulus) {
         (Some(s), Some(m)) => {
             let pressures = pressure
                 .map(|p| float_list("pressure", p))
@@ -116,7 +116,11 @@ fn kappa_report<'py>(
             run::kappa(Some((&surface, &pressures[..])))
         }
         (None, None) => run::kappa(None),
-        _ => return Err(value_error("spectrum and modulus: give both or neither")),
+        _ => {
+            return Err(value_error(
+                "spectrum and contact_modulus: give both or neither",
+            ))
+        }
     }
     .map_err(err)?;
     to_dict_warned(py, &r, &r.warnings)
@@ -125,11 +129,11 @@ fn kappa_report<'py>(
 /// `persson theories --json`: A/A0 against load for every theory (or the
 /// names in `theories`, each with its default γ).
 #[pyfunction]
-#[pyo3(signature = (spectrum, modulus, pressure, theories=None, *, zeta=None, tolerance=None))]
+#[pyo3(signature = (spectrum, contact_modulus, pressure, theories=None, *, zeta=None, tolerance=None))]
 fn theories<'py>(
     py: Python<'py>,
     spectrum: &Spectrum,
-    modulus: f64,
+    contact_modulus: f64,
     pressure: &Bound<'py, PyAny>,
     theories: Option<Vec<String>>,
     zeta: Option<f64>,
@@ -146,7 +150,7 @@ fn theories<'py>(
             })
         })
         .collect::<PyResult<Vec<_>>>()?;
-    let surface = spectrum.contact(modulus)?;
+    let surface = spectrum.contact(contact_modulus)?;
     let out = TheoriesOutput {
         theories: list,
         zeta,
@@ -163,16 +167,16 @@ fn theories<'py>(
 /// contact stiffness K = −dσ0/dū and the stored elastic energy per area
 /// against load, with error bounds (Persson, Phys. Rev. Lett. 99, 125502 (2007)).
 #[pyfunction]
-#[pyo3(signature = (spectrum, modulus, pressure, *, tolerance=1e-10))]
+#[pyo3(signature = (spectrum, contact_modulus, pressure, *, tolerance=1e-10))]
 fn separation<'py>(
     py: Python<'py>,
     spectrum: &Spectrum,
-    modulus: f64,
+    contact_modulus: f64,
     pressure: &Bound<'py, PyAny>,
     tolerance: f64,
 ) -> PyResult<Bound<'py, PyAny>> {
     let pressures = float_list("pressure", pressure)?;
-    let surface = spectrum.contact(modulus)?;
+    let surface = spectrum.contact(contact_modulus)?;
     let out = SeparationOutput {
         tolerance: Some(tolerance),
     };
@@ -186,11 +190,11 @@ fn separation<'py>(
 /// elastic energy U_el (J/m²) at the nominal pressures, as a dict of numpy
 /// arrays with their error bounds (the `points` of `separation`).
 #[pyfunction]
-#[pyo3(signature = (spectrum, modulus, pressure, *, tolerance=1e-10))]
+#[pyo3(signature = (spectrum, contact_modulus, pressure, *, tolerance=1e-10))]
 fn mean_separation<'py>(
     py: Python<'py>,
     spectrum: &Spectrum,
-    modulus: f64,
+    contact_modulus: f64,
     pressure: &Bound<'py, PyAny>,
     tolerance: f64,
 ) -> PyResult<Bound<'py, PyDict>> {
@@ -199,7 +203,7 @@ fn mean_separation<'py>(
     let breaks = &spectrum.breaks;
     let pts = py
         .detach(|| {
-            Separation::new(s, modulus)?
+            Separation::new(s, contact_modulus)?
                 .with_tolerance(tolerance)?
                 .with_breaks(breaks)
                 .load_curve(&pressures)
@@ -280,12 +284,12 @@ fn stress<'py>(
 /// (radius m, load N) or "cylinder" (radius m, load per length N/m), or any
 /// start with its peak pressure σH; elastic or with a yield stress σY.
 #[pyfunction]
-#[pyo3(signature = (spectrum, modulus, zeta, start="flat", *, peak_pressure=None, ball=None, cylinder=None, yield_stress=None, points=201, tolerance=1e-12))]
+#[pyo3(signature = (spectrum, contact_modulus, zeta, start="flat", *, peak_pressure=None, ball=None, cylinder=None, yield_stress=None, points=201, tolerance=1e-12))]
 #[allow(clippy::too_many_arguments)]
 fn stress_physical<'py>(
     py: Python<'py>,
     spectrum: &Spectrum,
-    modulus: f64,
+    contact_modulus: f64,
     zeta: &Bound<'py, PyAny>,
     start: &str,
     peak_pressure: Option<f64>,
@@ -295,7 +299,7 @@ fn stress_physical<'py>(
     points: usize,
     tolerance: f64,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let surface = spectrum.contact(modulus)?;
+    let surface = spectrum.contact(contact_modulus)?;
     let out = StressOutput {
         start: name("start", start)?,
         g: vec![],

@@ -1,12 +1,12 @@
 //! `persson.Spectrum`: a roughness power spectrum C(q) in Persson's
 //! normalisation, built as the CLI and scenes build it.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use numpy::ndarray::Zip;
 use persson::spectrum::{Spectrum as _, Tabulated};
-use persson::topography::{self as topo, AnalysisOptions, Topography};
+use persson::topography::{self as topo, AnalysisOptions, Note, Topography};
 use persson::{Estimate, Result};
 use persson_studies::scene::{
     ConventionName, DetrendName, HeightMapSpec, Sides, SpectrumSpec, WindowName, EXAMPLE,
@@ -58,9 +58,27 @@ pub struct Spectrum {
     pub description: Option<String>,
     /// How to build it again (pickling, for multiprocessing and Dask).
     pub recipe: Recipe,
-    /// Remarks on the spectrum (a file's convention, a slope above 1), as
-    /// the CLI's for the same spectrum; passed on to every report.
+    /// Remarks on the spectrum (a file's convention, a slope above 1, what
+    /// the analysis of a measured map could not do), as the CLI's for the
+    /// same spectrum; passed on to every report.
     pub warnings: Vec<persson_studies::Warning>,
+    /// The notes of a measured map's analysis and the input they name (its
+    /// file, or `(array)`, `(topography)`): kept so that a pickled copy
+    /// words the same warnings.
+    pub measured: Option<Measured>,
+}
+
+/// What the analysis of a measured height map noted, and the input it read.
+#[derive(Clone)]
+pub struct Measured {
+    pub file: PathBuf,
+    pub notes: Vec<Note>,
+}
+
+impl Measured {
+    fn warnings(&self) -> Vec<persson_studies::Warning> {
+        persson_studies::warning::of_notes(&self.file, &self.notes)
+    }
 }
 
 /// What rebuilds a spectrum exactly: a self-affine spec (as scene JSON) or
@@ -72,20 +90,34 @@ pub enum Recipe {
 }
 
 impl Spectrum {
-    fn tabulated_spectrum(t: Tabulated, description: Option<String>) -> Self {
+    /// A tabulated spectrum with its warnings: a measured map's first (as
+    /// the CLI lists them), then a slope above 1.
+    fn tabulated_spectrum(
+        t: Tabulated,
+        description: Option<String>,
+        measured: Option<Measured>,
+    ) -> Self {
         let points = t.points().collect();
-        let warnings = t
+        let mut warnings = measured
+            .as_ref()
+            .map(Measured::warnings)
+            .unwrap_or_default();
+        let steep = t
             .rms_slope(t.q_min(), t.q_max())
             .ok()
-            .and_then(|m| persson_studies::Warning::steep_slope(m.value))
-            .into_iter()
-            .collect();
+            .and_then(|m| persson_studies::Warning::steep_slope(m.value));
+        if let Some(w) = steep {
+            if !warnings.contains(&w) {
+                warnings.push(w);
+            }
+        }
         Spectrum {
             shared: Shared(Arc::new(t)),
             breaks: vec![],
             description,
             recipe: Recipe::Points(points),
             warnings,
+            measured,
         }
     }
 }
@@ -93,7 +125,18 @@ impl Spectrum {
 impl Spectrum {
     fn from_spec(spec: &SpectrumSpec) -> PyResult<Self> {
         let mut s = Self::from_spec_quiet(spec)?;
-        s.warnings = persson_studies::scene::run::spectrum_warnings(spec, &s.shared);
+        // As the CLI's surface (RoughContact): a measured map's warnings
+        // first, then the spectrum's own.
+        s.warnings = s
+            .measured
+            .as_ref()
+            .map(Measured::warnings)
+            .unwrap_or_default();
+        for w in persson_studies::scene::run::spectrum_warnings(spec, &s.shared) {
+            if !s.warnings.contains(&w) {
+                s.warnings.push(w);
+            }
+        }
         Ok(s)
     }
 
@@ -109,6 +152,7 @@ impl Spectrum {
                         serde_json::to_string(spec).map_err(|e| value_error(e.to_string()))?,
                     ),
                     warnings: vec![],
+                    measured: None,
                 })
             }
             // As SpectrumSpec::build, keeping the concrete Tabulated.
@@ -119,11 +163,21 @@ impl Spectrum {
             } => {
                 let t =
                     Tabulated::from_csv(file, convention.with(*size).map_err(err)?).map_err(err)?;
-                Ok(Self::tabulated_spectrum(t, None))
+                Ok(Self::tabulated_spectrum(t, None, None))
             }
+            // As HeightMapSpec::spectrum_described, keeping the notes.
             SpectrumSpec::HeightMap(m) => {
-                let d = m.spectrum_described().map_err(err)?;
-                Ok(Self::tabulated_spectrum(d.value, d.description))
+                let a = m.analyse().map_err(err)?;
+                // The file's name in an error, as HeightMapSpec's (in_file).
+                if let Err(e) = a.psd.to_tabulated() {
+                    let name = m.file.display().to_string();
+                    return Err(err(if e.to_string().contains(&name) {
+                        e
+                    } else {
+                        persson::Error::parse(&m.file, 0, 0, e.to_string())
+                    }));
+                }
+                measured(a, &m.file)
             }
         }
     }
@@ -198,15 +252,16 @@ fn analysis(
     topo::analyse(t, &options).map_err(err)
 }
 
-fn measured(a: topo::Analysis, what: &str) -> PyResult<Spectrum> {
+/// The spectrum of a measured map's analysis, described and with its
+/// warnings, `file` naming the input (a path, or `(array)`, `(topography)`).
+fn measured(a: topo::Analysis, file: &Path) -> PyResult<Spectrum> {
     let s = a.psd.to_tabulated().map_err(err)?;
-    Ok(Spectrum::tabulated_spectrum(
-        s,
-        Some(persson_studies::scene::describe(
-            std::path::Path::new(what),
-            &a,
-        )),
-    ))
+    let description = Some(persson_studies::scene::describe(file, &a));
+    let notes = Measured {
+        file: file.to_path_buf(),
+        notes: a.notes,
+    };
+    Ok(Spectrum::tabulated_spectrum(s, description, Some(notes)))
 }
 
 /// The map's sides from its pixel size, as the file readers compute them
@@ -292,7 +347,7 @@ impl Spectrum {
             .to_persson(&pts)
             .map_err(err)?;
         let s = Tabulated::new(&pts).map_err(err)?;
-        Ok(Self::tabulated_spectrum(s, None))
+        Ok(Self::tabulated_spectrum(s, None, None))
     }
 
     /// A tabulated spectrum from a CSV file of two columns q, C (as the
@@ -365,7 +420,7 @@ impl Spectrum {
     ) -> PyResult<Self> {
         let t = heights_topography(heights, sides_from_pixel(pixel_size)?, periodic)?;
         let a = py.detach(|| analysis(&t, detrend, window, q_max))?;
-        measured(a, "(array)")
+        measured(a, Path::new("(array)"))
     }
 
     /// The spectrum of a SurfaceTopography `Topography` (or anything with
@@ -417,7 +472,7 @@ impl Spectrum {
             periodic,
         )?;
         let a = py.detach(|| analysis(&t, detrend, window, q_max))?;
-        measured(a, "(topography)")
+        measured(a, Path::new("(topography)"))
     }
 
     /// C(q) in m⁴ at the wavevectors q (1/m; a number or an array), 0
@@ -537,17 +592,25 @@ impl Spectrum {
             Recipe::SelfAffine(json) => ("self_affine", json.clone().into_pyobject(py)?.into_any()),
             Recipe::Points(p) => ("points", p.clone().into_pyobject(py)?.into_any()),
         };
-        (restore, (state.0, state.1, s.description.clone()))
+        let measured = s.measured.as_ref().map(|m| {
+            (
+                m.file.clone(),
+                m.notes.iter().map(note_state).collect::<Vec<_>>(),
+            )
+        });
+        (restore, (state.0, state.1, s.description.clone(), measured))
             .into_pyobject(py)
             .map(|t| t.into_any())
     }
 
     /// Rebuild a pickled spectrum (see `__reduce__`).
     #[staticmethod]
+    #[pyo3(signature = (kind, payload, description, measured=None))]
     fn _restore(
         kind: &str,
         payload: &Bound<'_, PyAny>,
         description: Option<String>,
+        measured: Option<(PathBuf, Vec<NoteState>)>,
     ) -> PyResult<Self> {
         let mut s = match kind {
             "self_affine" => {
@@ -557,7 +620,16 @@ impl Spectrum {
             }
             "points" => {
                 let points: Vec<(f64, f64)> = payload.extract()?;
-                Self::tabulated_spectrum(Tabulated::new(&points).map_err(err)?, None)
+                let measured = measured
+                    .map(|(file, notes)| -> PyResult<Measured> {
+                        let notes = notes
+                            .into_iter()
+                            .map(note_of_state)
+                            .collect::<PyResult<_>>()?;
+                        Ok(Measured { file, notes })
+                    })
+                    .transpose()?;
+                Self::tabulated_spectrum(Tabulated::new(&points).map_err(err)?, None, measured)
             }
             _ => return Err(value_error(format!("invalid kind = '{kind}'"))),
         };
@@ -576,6 +648,45 @@ impl Spectrum {
                 .unwrap_or_default()
         )
     }
+}
+
+/// A measured map's note as plain data for pickling: its kind, its
+/// integers and its floats.
+type NoteState = (String, Vec<usize>, Vec<f64>);
+
+fn note_state(n: &Note) -> NoteState {
+    match n {
+        Note::Resampled {
+            points,
+            max_deviation,
+        } => ("resampled".into(), vec![*points], vec![*max_deviation]),
+        Note::HurstNotFitted { bins } => ("hurst_not_fitted".into(), vec![*bins], vec![]),
+        Note::HurstOutOfRange { hurst, hurst_error } => (
+            "hurst_out_of_range".into(),
+            vec![],
+            vec![*hurst, *hurst_error],
+        ),
+        Note::BinsLeftOut { q, of } => ("bins_left_out".into(), vec![*of], q.clone()),
+    }
+}
+
+fn note_of_state((kind, ints, floats): NoteState) -> PyResult<Note> {
+    Ok(match (kind.as_str(), &ints[..], &floats[..]) {
+        ("resampled", [points], [max_deviation]) => Note::Resampled {
+            points: *points,
+            max_deviation: *max_deviation,
+        },
+        ("hurst_not_fitted", [bins], []) => Note::HurstNotFitted { bins: *bins },
+        ("hurst_out_of_range", [], [hurst, hurst_error]) => Note::HurstOutOfRange {
+            hurst: *hurst,
+            hurst_error: *hurst_error,
+        },
+        ("bins_left_out", [of], q) => Note::BinsLeftOut {
+            q: q.to_vec(),
+            of: *of,
+        },
+        _ => return Err(value_error(format!("invalid pickled note '{kind}'"))),
+    })
 }
 
 fn estimate<'py>(py: Python<'py>, e: Estimate, error_bound: bool) -> PyResult<Bound<'py, PyAny>> {

@@ -158,11 +158,11 @@ fn map_parallel(
 /// numbers or numpy arrays broadcast against each other. With
 /// `error_bound=True`: the pair (G, bound on its absolute error).
 #[pyfunction]
-#[pyo3(signature = (spectrum, modulus, pressure, zeta=None, *, error_bound=false))]
+#[pyo3(signature = (spectrum, contact_modulus, pressure, zeta=None, *, error_bound=false))]
 fn g<'py>(
     py: Python<'py>,
     spectrum: &Spectrum,
-    modulus: f64,
+    contact_modulus: f64,
     pressure: &Bound<'py, PyAny>,
     zeta: Option<&Bound<'py, PyAny>>,
     error_bound: bool,
@@ -171,7 +171,7 @@ fn g<'py>(
     let s = &spectrum.shared;
     let (values, bounds) = py
         .detach(|| -> persson::Result<_> {
-            let model = Persson::new(s, modulus)?;
+            let model = Persson::new(s, contact_modulus)?;
             let mut cache: HashMap<u64, persson::Estimate> = HashMap::new();
             let mut values = Vec::with_capacity(pts.pressure.len());
             let mut bounds = Vec::with_capacity(pts.pressure.len());
@@ -195,7 +195,7 @@ fn g<'py>(
 }
 
 /// The real contact area A/A0 at the nominal pressures σ0 (`pressure`, unit
-/// of the contact modulus `modulus`) and magnifications ζ (default the full
+/// of the contact modulus `contact_modulus`) and magnifications ζ (default the full
 /// q_s/q_l), numbers or numpy arrays broadcast against each other.
 ///
 /// theory: "original" (Persson, J. Chem. Phys. 115, 3840 (2001):
@@ -206,12 +206,12 @@ fn g<'py>(
 /// A/A0 of the corrected theories' solvers. With `error_bound=True`: the pair
 /// (A/A0, bound on its absolute error). The same numbers as `persson area`.
 #[pyfunction]
-#[pyo3(signature = (spectrum, modulus, pressure, theory="original", gamma=None, *, zeta=None, tolerance=1e-12, error_bound=false))]
+#[pyo3(signature = (spectrum, contact_modulus, pressure, theory="original", gamma=None, *, zeta=None, tolerance=1e-12, error_bound=false))]
 #[allow(clippy::too_many_arguments)]
 fn contact_area<'py>(
     py: Python<'py>,
     spectrum: &Spectrum,
-    modulus: f64,
+    contact_modulus: f64,
     pressure: &Bound<'py, PyAny>,
     theory: &str,
     gamma: Option<f64>,
@@ -229,7 +229,7 @@ fn contact_area<'py>(
     let n = pts.pressure.len();
     let (values, bounds) = py
         .detach(|| -> persson::Result<_> {
-            let model = Persson::new(s, modulus)?;
+            let model = Persson::new(s, contact_modulus)?;
             if spec.theory == TheoryName::Original {
                 // As Persson::load_curve: ⟨|∇h|²⟩ once per ζ, then
                 // G and erf point by point (independent: safe to split).

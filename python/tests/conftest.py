@@ -69,6 +69,24 @@ def same(python, cli, drop=("seconds",)):
     assert strip(python, drop) == strip(cli, drop)
 
 
+def read_from(python, stand_in, path):
+    """A Python report on heights given as an array, its warnings naming the
+    file the CLI read instead of the stand-in (`(array)`, `(topography)`):
+    the `file` field and the message's leading name. Nothing else changes,
+    so the rest of each warning is compared as it is."""
+    python = dict(python)
+    warnings = []
+    for w in python.get("warnings", []):
+        w = dict(w)
+        if w.get("file") == stand_in:
+            w["file"] = str(path)
+            assert w["message"].startswith(stand_in + ": "), w["message"]
+            w["message"] = str(path) + w["message"][len(stand_in):]
+        warnings.append(w)
+    python["warnings"] = warnings
+    return python
+
+
 @pytest.fixture(scope="session", autouse=True)
 def cli_binary():
     assert os.access(BIN, os.X_OK), f"no persson binary at {BIN}: run cargo build --release or set PERSSON_BIN"

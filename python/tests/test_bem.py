@@ -65,7 +65,7 @@ def test_solve_pressure_and_gap_match_cli(tmp_path):
     assert abs(p.mean() - 0.02) < 1e-12
     assert gap.min() >= 0 and gap[p > 0].max() < 1e-9 * np.ptp(h)
     # Penetration control: the approach of that solve gives back its load.
-    p2, _, s2 = persson.bem_solve(h, 1.0, 1.0, penetration=summary["approach"])
+    p2, _, s2 = persson.bem_solve(h, 1.0, 1.0, approach=summary["approach"])
     assert abs(s2["nominal_pressure"] - 0.02) < 1e-6 * 0.02
 
 
@@ -74,8 +74,14 @@ def test_hertz_matches_cli():
     same(persson.bem_hertz(grid=32), cli)
     cli = run_cli("bem", "hertz", "--grid", 32, "--boundary", "periodic", "--size", 2,
                   "--radius", 3, "--contact-modulus", 5, "--contact-radius", 0.3)
-    same(persson.bem_hertz(grid=32, boundary="periodic", size=2.0, radius=3.0, modulus=5.0,
-                           contact_radius=0.3), cli)
+    r = persson.bem_hertz(grid=32, boundary="periodic", size=2.0, radius=3.0,
+                          contact_modulus=5.0, contact_radius=0.3)
+    same(r, cli)
+    # Independent of the CLI: Hertz's closed form for the contact radius
+    # a = 0.3 asked for, p0 = 2 E* a / (π R) (Johnson, Contact Mechanics,
+    # Eq. 4.24), to rounding.
+    assert r["hertz_contact_radius"] == 0.3
+    assert r["hertz_peak_pressure"] == pytest.approx(2 * 5.0 * 0.3 / (np.pi * 3.0), rel=1e-14)
 
 
 def test_compare_matches_cli():

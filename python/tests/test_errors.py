@@ -36,8 +36,10 @@ def test_other_real_dtypes_are_the_float64_values(dtype):
 def test_negative_seed_is_a_value_error_naming_seed():
     sp = persson.Spectrum.self_affine(0.8, 2 * np.pi, 32 * np.pi, rms_slope=0.1)
     for bad in [-1, 2**64, 1.5]:
-        with pytest.raises(ValueError, match=r"^invalid seed = \S+: must be an integer from 0"):
+        with pytest.raises(ValueError, match=r"^invalid seed = \S+: must be an integer from 0") as e:
             persson.synthesize(sp, 16, seed=bad)
+        # The bound it names is 2⁶⁴ − 1, computed here, not copied.
+        assert str(2**64 - 1) in message(e)
     with pytest.raises(ValueError, match=r"^invalid seed = -1"):
         persson.bem_rough(1.0, [0.01], spectrum=sp, grid=16, seed=-1)
     # numpy integers are seeds too
@@ -147,7 +149,7 @@ def test_files(tmp_path):
 def test_other_inconsistencies():
     with pytest.raises(ValueError, match="exactly one"):
         persson.Spectrum.self_affine(0.8, 1e4, 1e8)
-    with pytest.raises(ValueError, match="^pressure, penetration: give exactly one"):
+    with pytest.raises(ValueError, match="^pressure, approach: give exactly one"):
         persson.bem_solve(H, 1.0, 1.0)
     with pytest.raises(ValueError, match=r"^pressure \(shape \[2\]\) and zeta \(shape \[3\]\) do not broadcast"):
         persson.contact_area(S, 1e9, [1e6, 1e7], zeta=[1.0, 2.0, 3.0])

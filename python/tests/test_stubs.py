@@ -44,3 +44,11 @@ def test_stub_matches_runtime():
         runtime = list(inspect.signature(obj).parameters)
         assert stubs[name] == runtime, name
         assert obj.__doc__, name
+
+
+def test_version_is_the_packages():
+    """An independent value: the version pyproject.toml declares."""
+    import re
+    text = (pathlib.Path(__file__).resolve().parents[1] / "pyproject.toml").read_text()
+    declared = re.search(r'^version = "([^"]+)"', text, re.M).group(1)
+    assert persson.__version__ == persson.version() == declared

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 import persson
-from conftest import run_cli, same
+from conftest import read_from, run_cli, same
 
 # A self-affine surface with roll-off, given on the command line and in Python.
 FLAGS = ["--hurst", 0.7, "--q-l", 1e3, "--q-r", 1e4, "--q-s", 1e7]
@@ -220,10 +220,24 @@ def test_height_map_spectrum_matches_cli(tmp_path):
     pixel = 2e-7
     cli = run_cli("area", "--surface", path, "--pixel-size", pixel, "--contact-modulus", E_STAR,
                   *pressure_flag([1e6, 1e7]))
+    # The map's Hurst fit is outside (0, 1): the CLI warns, and so does every
+    # report of a Python spectrum of the same heights (the test's point).
+    kinds = [w["kind"] for w in cli["warnings"]]
+    assert "hurst_out_of_range" in kinds, cli["warnings"]
     s = persson.Spectrum.from_height_map(h, pixel)
-    same(persson.area(s, E_STAR, [1e6, 1e7]), cli, drop=("seconds", "surface"))
+    with pytest.warns(UserWarning, match="no Hurst exponent"):
+        r = persson.area(s, E_STAR, [1e6, 1e7])
+    assert [w["kind"] for w in r["warnings"]] == kinds
+    assert all(w["file"] == "(array)" for w in r["warnings"] if "file" in w)
+    same(read_from(r, "(array)", path), cli, drop=("seconds", "surface"))
     assert s.description.startswith("measured surface (array) (64 × 72 points")
-    same(persson.area(persson.Spectrum.from_file(path, pixel_size=pixel), E_STAR, [1e6, 1e7]), cli)
+    f = persson.Spectrum.from_file(path, pixel_size=pixel)
+    same(persson.area(f, E_STAR, [1e6, 1e7]), cli)
+    # A pickled copy (multiprocessing, Dask) keeps the warnings.
+    import pickle
+    same(persson.area(pickle.loads(pickle.dumps(f)), E_STAR, [1e6, 1e7]), cli)
+    same(read_from(persson.area(pickle.loads(pickle.dumps(s)), E_STAR, [1e6, 1e7]), "(array)",
+                   path), cli, drop=("seconds", "surface"))
     analysis = run_cli("spectrum", "--surface", path, "--pixel-size", pixel, "--detrend", "mean",
                        "--window", "blackman")
     same(persson.analyse_height_map(h, pixel, detrend="mean", window="blackman"), analysis)
@@ -245,7 +259,10 @@ def test_topography_duck_typed(tmp_path):
     np.save(path, h)
     cli = run_cli("area", "--surface", path, "--pixel-size", 2e-7, "--contact-modulus", E_STAR,
                   "--pressure", 1e6)
-    same(persson.area(s, E_STAR, [1e6]), cli, drop=("seconds", "surface"))
+    assert any(w["kind"] == "hurst_out_of_range" for w in cli["warnings"])
+    with pytest.warns(UserWarning, match="no Hurst exponent"):
+        r = persson.area(s, E_STAR, [1e6])
+    same(read_from(r, "(topography)", path), cli, drop=("seconds", "surface"))
 
 
 def test_run_scene_path_and_dict_match_cli(tmp_path):
@@ -297,3 +314,31 @@ def test_tabulated_start_matches_cli(tmp_path):
     same(r, cli)
     with pytest.raises(ValueError, match="^start, table: give exactly one"):
         persson.stress("flat", 0.4, table=(sigma, density))
+
+
+def test_moments_g_and_area_against_closed_forms():
+    """Independent of the CLI: the moments of the piecewise power law in
+    closed form, G = (E*/σ0)² h'²_rms / 8 at full magnification, and Persson's
+    A/A0 = erf(1/(2√G)) (Persson, J. Chem. Phys. 115, 3840 (2001))."""
+    import math
+    h, q_l, q_r, q_s = 0.7, 1e3, 1e4, 1e7
+    s = spectrum("c_r", 1e-30)
+    c_r = 1e-30
+
+    def moment(k):
+        # 2π ∫ q^(k+1) C dq: flat C_r on [q_l, q_r], C_r (q/q_r)^(−2(1+H)) above.
+        flat = c_r * (q_r ** (k + 2) - q_l ** (k + 2)) / (k + 2)
+        e = k + 2 - 2 * (1 + h)
+        tail = c_r * q_r ** (2 + 2 * h) * (q_s ** e - q_r ** e) / e
+        return 2 * math.pi * (flat + tail)
+
+    # The crate's quadrature claims ~1e-12 relative on these moments.
+    rel = 1e-10
+    assert s.rms_height() == pytest.approx(math.sqrt(moment(0)), rel=rel)
+    assert s.rms_slope() == pytest.approx(math.sqrt(moment(2)), rel=rel)
+    assert s.rms_curvature() == pytest.approx(math.sqrt(moment(4)), rel=rel)
+    for p in PRESSURES:
+        g = (E_STAR / p) ** 2 * moment(2) / 8
+        assert persson.g(s, E_STAR, p) == pytest.approx(g, rel=rel)
+        assert persson.contact_area(s, E_STAR, p) == pytest.approx(
+            math.erf(1 / (2 * math.sqrt(g))), rel=rel)

@@ -37,6 +37,13 @@ def test_steep_slope_and_file_convention_warn_as_the_cli(tmp_path):
     assert any(w["kind"] == "psd_convention" and w["convention"] == "surface-topography"
                for w in cli["warnings"])
     assert any("rms slope" in w["message"] for w in cli["warnings"])
+    # Independent of the CLI: the warned slope is the closed form of the
+    # power law the file samples, h'² = 2π ∫ q³ C dq with Persson's
+    # C = 1e-11/(2π)² (q/1e3)^-3.6 (SurfaceTopography's C is (2π)² times his).
+    c0 = 1e-11 / (2 * np.pi) ** 2
+    slope2 = 2 * np.pi * c0 * 1e3 ** 3.6 * (1e6 ** 0.4 - 1e3 ** 0.4) / 0.4
+    steep = [w for w in cli["warnings"] if w["kind"] == "steep_slope"]
+    assert steep[0]["rms_slope"] == pytest.approx(np.sqrt(slope2), rel=1e-10)
     assert not any("--" in w["message"] for w in cli["warnings"])
     s = persson.Spectrum.from_csv(path, "surface-topography")
     with pytest.warns(UserWarning):

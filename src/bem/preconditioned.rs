@@ -36,6 +36,16 @@
 //! more than log₂ N² nodes were clamped (else the gap is updated linearly,
 //! as in [`super::polonsky_keer`]); the same four fields.
 //!
+//! # Memory
+//! Nothing beyond the plain loop's: per solve, the four N² fields of the
+//! [`Workspace`] (pressure p, gap g, direction t, response — 𝒦r, then 𝒢t),
+//! the operator's buffers (2.25 N² values periodic: row spectra, multiplier,
+//! real-space kernel; 3 N² free: padded row spectra and multiplier — 𝒦 uses
+//! 𝒢's multiplier, no table of its own) and the heights (N², the caller's):
+//! 7.25 N² doubles periodic, 8 N² free, plus the sparse-correction lists
+//! (≤ 2 log₂ N² entries); with the surface synthesis's two transient fields
+//! 9.25 N² and 10 N² ([`super::required_bytes`]), within 10 N².
+//!
 //! # Why this method
 //! Vollebregt (2014) compared CG variants for the elastic normal contact
 //! problem and made the FFT-based approximate inverse of the influence

@@ -33,7 +33,7 @@ use serde::Serialize;
 
 use super::histogram::{pressure_histogram, saturated_histogram, HistogramBin};
 use super::{check_memory, surface, Boundary, Control, Iteration, Operator, Options, Solution};
-use super::{Fallback, GridSurface, Solver};
+use super::{Fallback, GridSurface, Method, Solver};
 use crate::error::{check, Error, Result};
 use crate::spectrum::Spectrum;
 
@@ -46,10 +46,14 @@ pub struct RoughOptions {
     pub solver: Options,
     /// Bins of the pressure histogram of each solve (`None`: no histogram).
     pub bins: Option<usize>,
+    /// The solver's method (default: preconditioned, falling back to the
+    /// plain loop when it stalls; [`RoughPoint::fallback`] says so).
+    pub method: Method,
 }
 
 impl Default for RoughOptions {
-    /// Periodic, the solver's defaults with warm start, no histogram.
+    /// Periodic, the solver's defaults with warm start, no histogram, the
+    /// preconditioned method.
     fn default() -> Self {
         RoughOptions {
             boundary: Boundary::Periodic,
@@ -58,6 +62,7 @@ impl Default for RoughOptions {
                 ..Options::default()
             },
             bins: None,
+            method: Method::default(),
         }
     }
 }
@@ -162,7 +167,7 @@ pub fn solve(
     }
     check_memory(surface.n, options.boundary)?;
     let op = Operator::new(options.boundary, surface.n, surface.size, contact_modulus)?;
-    let mut solver = Solver::new(op);
+    let mut solver = Solver::with_method(op, options.method);
     let mut path = solver
         .load_path(&surface.heights)
         .warm(options.solver.warm_start);

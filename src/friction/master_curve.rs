@@ -285,7 +285,10 @@ fn check_rows(path: &Path, rows: &[Row], freq: &str) -> Result<()> {
     for pair in rows.windows(2) {
         let (prev, w) = (pair[0].values[0], pair[1].values[0]);
         if w == prev {
-            let msg = format!("repeated (also on line {})", pair[0].line);
+            let msg = format!(
+                "different from line {}'s (a repeated frequency)",
+                pair[0].line
+            );
             return Err(cell_error(path, &pair[1], freq, w, &msg));
         }
         if (w > prev) != ascending {

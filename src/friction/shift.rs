@@ -156,6 +156,32 @@ impl ShiftTable {
         )
     }
 
+    /// The temperature (K) where the table's a_T (ln a_T linear in T between
+    /// rows) equals 1: the reference temperature of the master curve it
+    /// shifts. `None` when no row pair brackets a_T = 1.
+    ///
+    /// # Examples
+    /// ```
+    /// use persson::friction::ShiftTable;
+    /// let t = ShiftTable::new(&[(280.0, 100.0, None), (300.0, 0.1, None)]).unwrap();
+    /// // ln a_T = ln 100 − (T − 280) ln 1000/20 crosses 0 at T = 280 + 20·2/3.
+    /// let t_ref = t.unit_shift_temperature().unwrap();
+    /// assert!((t_ref - (280.0 + 40.0 / 3.0)).abs() < 1e-12);
+    /// ```
+    pub fn unit_shift_temperature(&self) -> Option<f64> {
+        let (t, y) = (&self.temperature, &self.ln_shift);
+        (0..t.len() - 1).find_map(|i| {
+            if y[i] == 0.0 {
+                return Some(t[i]);
+            }
+            if y[i + 1] == 0.0 {
+                return Some(t[i + 1]);
+            }
+            (y[i].signum() != y[i + 1].signum())
+                .then(|| t[i] + (t[i + 1] - t[i]) * y[i] / (y[i] - y[i + 1]))
+        })
+    }
+
     /// (ln a_T, b_T) by linear interpolation, extended linearly beyond the ends.
     fn at(&self, t: f64) -> (f64, Option<f64>) {
         let n = self.temperature.len();
@@ -333,7 +359,7 @@ impl TemperatureShift {
                         temperature,
                         format!(
                             "> T_ref − C2 = {} K (the WLF singularity)",
-                            self.reference_temperature - c2
+                            ((self.reference_temperature - c2) * 1e6).round() / 1e6
                         ),
                     ));
                 }

@@ -30,6 +30,7 @@ const CONTAINERS: &[&str] = &[
     "stress",
     "bem",
     "bem_hertz",
+    "friction",
     // Keys whose value is a label from a closed set, spelled as on the command
     // line (CONTRACT: theory, boundary, start, convention).
     "theory",
@@ -53,6 +54,7 @@ const CONTAINERS: &[&str] = &[
     "theory_curve",
     "fit",
     "power_law_fit",
+    "solves", // an ensemble's jobs, one row per (seed, grid)
 ];
 
 /// Prefixes of a quantity set beside the same quantity from elsewhere.
@@ -138,11 +140,13 @@ fn commands(out_dir: &Path) -> Vec<Vec<Vec<String>>> {
         "stress --example --ball-radius 0.01 --load 10 --zeta 10 --yield-stress 1e8 --points 5",
         "separation --example",
         "adhesion --hurst 0.8 --q-l 1e4 --q-s 1e6 --c-r 1e-19 --contact-modulus 1e6 --work-of-adhesion 1 --pressure -1e5,-4e4,1e3 --adhesion-range 1e-9 --points 3",
+        "friction --example --standard-linear-solid 3e8,3e6,1e-4 --pressure 2e5 --velocity 1e-2,1 --flash-temperature --thermal-conductivity 0.25 --density 1200 --heat-capacity 1500",
         "bem hertz --grid 32",
         "bem hertz --grid 16,32 --yield-stress 0.05",
         "bem rough --example --grid 32",
         "compare --example --grid 32 --levels 2",
         "compare --example --grid 32 --levels 2 --yield-stress 6e6",
+        "compare ensemble --example --grid 32 --levels 2 --seeds 2 --pressure 1e6 --threads 1",
         "spectrum --surface tests/reference/data/map_a.npy --pixel-size 1e-6",
         "compare --surface tests/reference/data/map_b.npy --pixel-size 2e-6 --periodic --contact-modulus 1e9",
         "report stability",

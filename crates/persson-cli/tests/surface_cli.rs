@@ -501,6 +501,7 @@ fn the_finest_grid_of_a_periodic_map_is_its_band_limited_map() {
         boundary: Boundary::Periodic,
         solver: config.sweep.options,
         bins: None,
+        ..RoughOptions::default()
     };
     let direct = rough::solve(&band, 1e9, &config.nominal_pressure, &options, &mut ()).unwrap();
     let finest = c.bem.last().unwrap();

@@ -175,6 +175,49 @@ pub enum Warning {
         /// h''_rms over the band, 1/m.
         rms_curvature: f64,
     },
+    /// The BEM's preconditioned solver stalled (ε not falling) at these
+    /// nominal pressures and the plain Polonsky–Keer loop finished the solves:
+    /// the same answer to the same tolerance, in more time.
+    PreconditionerFallback {
+        /// σ0 of the solves that fell back.
+        nominal_pressure: Vec<f64>,
+        /// Iterations of the preconditioned loop before it was abandoned (per solve).
+        iterations: Vec<usize>,
+    },
+    /// Rubber friction sampled a master curve outside its frequency range,
+    /// where it is held at its end values.
+    MasterCurveRange {
+        /// Lowest and highest tabulated ω, rad/s.
+        frequency_range: (f64, f64),
+        /// Most decades of a_T q v below the table over the points.
+        decades_below: f64,
+        /// Most decades of a_T q v above the table over the points.
+        decades_above: f64,
+        /// The largest share of μ from outside the table over the points.
+        friction_fraction: f64,
+        /// Points (T, σ0, v) that sampled outside the table.
+        count: usize,
+        /// Points in all.
+        of: usize,
+    },
+    /// Rubber friction whose integrals did not reach the tolerance at some
+    /// points (their error bounds say how far off).
+    FrictionNotConverged {
+        /// Points that did not converge.
+        count: usize,
+        /// Points in all.
+        of: usize,
+        /// The largest relative error bound of μ among them.
+        relative_error_bound: f64,
+    },
+    /// The flash temperature heated the rubber beyond a shift table's last
+    /// row: a_T was extended linearly in ln a_T.
+    ShiftTableExtended {
+        /// The table's highest temperature, K.
+        temperature_max: f64,
+        /// The highest temperature reached, K.
+        temperature: f64,
+    },
 }
 
 impl Warning {
@@ -379,6 +422,27 @@ impl fmt::Display for Warning {
                 n(*adhesion_range),
                 n(16.0 / 3.0 * rms_slope * rms_slope / rms_curvature)
             ),
+            Warning::PreconditionerFallback {
+                nominal_pressure,
+                iterations,
+            } => {
+                let list: Vec<String> = nominal_pressure.iter().map(|&p| n(p)).collect();
+                write!(
+                    f,
+                    "the preconditioned BEM solver stalled at σ0 = {} (after {} iteration(s)) \
+                     and the plain Polonsky–Keer loop finished: same answer and tolerance, \
+                     more time",
+                    list.join(", "),
+                    iterations
+                        .iter()
+                        .map(|k| k.to_string())
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                )
+            }
+            Warning::MasterCurveRange { .. }
+            | Warning::FrictionNotConverged { .. }
+            | Warning::ShiftTableExtended { .. } => friction(f, self),
             Warning::MapNotPeriodic => write!(
                 f,
                 "the map is not periodic: its coarser copies are block averages, each a \
@@ -386,6 +450,53 @@ impl fmt::Display for Warning {
                  trust the finest grid (the map as measured)"
             ),
         }
+    }
+}
+
+/// The text of the rubber-friction warnings.
+fn friction(f: &mut fmt::Formatter<'_>, w: &Warning) -> fmt::Result {
+    let n = |v: f64| number(v, 3);
+    match w {
+        Warning::MasterCurveRange {
+            frequency_range,
+            decades_below,
+            decades_above,
+            friction_fraction,
+            count,
+            of,
+        } => write!(
+            f,
+            "the master curve (ω = {} … {} rad/s) was sampled outside its range at {count} of \
+             {of} points, up to {} decade(s) below and {} above (a_T q v; held at its end \
+             values there): up to {} % of μ comes from there (extend the master curve, or \
+             narrow the velocities, temperatures or q1)",
+            n(frequency_range.0),
+            n(frequency_range.1),
+            n(*decades_below),
+            n(*decades_above),
+            n(100.0 * friction_fraction)
+        ),
+        Warning::FrictionNotConverged {
+            count,
+            of,
+            relative_error_bound,
+        } => write!(
+            f,
+            "the friction integrals did not reach the tolerance at {count} of {of} points \
+             (relative error bound of μ up to {}; see friction_coefficient_error_bound)",
+            n(*relative_error_bound)
+        ),
+        Warning::ShiftTableExtended {
+            temperature_max,
+            temperature,
+        } => write!(
+            f,
+            "the flash temperature heated the rubber to {} K, beyond the shift table's last \
+             row at {} K: a_T was extended linearly in ln a_T there",
+            n(*temperature),
+            n(*temperature_max)
+        ),
+        _ => Ok(()),
     }
 }
 
@@ -429,6 +540,7 @@ impl Warning {
     /// `zeta_beyond_band`, `band_limited`, `psd_convention`,
     /// `rising_spectrum`, `clipped_band`, `map_not_periodic`, `resampled`,
     /// `hurst_not_fitted`, `hurst_out_of_range`, `bins_left_out`,
+    /// `preconditioner_fallback`, `master_curve_range`, `friction_not_converged`, `shift_table_extended`,
     /// `beyond_pull_off`, `adhesion_tolerance_not_met`, `long_adhesion_range`).
     pub fn kind(&self) -> &'static str {
         match self {
@@ -447,6 +559,10 @@ impl Warning {
             Warning::BeyondPullOff { .. } => "beyond_pull_off",
             Warning::AdhesionToleranceNotMet { .. } => "adhesion_tolerance_not_met",
             Warning::LongAdhesionRange { .. } => "long_adhesion_range",
+            Warning::PreconditionerFallback { .. } => "preconditioner_fallback",
+            Warning::MasterCurveRange { .. } => "master_curve_range",
+            Warning::FrictionNotConverged { .. } => "friction_not_converged",
+            Warning::ShiftTableExtended { .. } => "shift_table_extended",
         }
     }
 }
@@ -485,11 +601,27 @@ impl<'a, R: Serialize> Warned<'a, R> {
     }
 }
 
+/// [`Warning::PreconditionerFallback`] when some solve of `points` fell back
+/// to the plain solver ([`persson::bem::rough::RoughPoint::fallback`]).
+#[cfg(feature = "bem")]
+pub fn preconditioner_fallback(points: &[persson::bem::rough::RoughPoint]) -> Option<Warning> {
+    let (nominal_pressure, iterations): (Vec<f64>, Vec<usize>) = points
+        .iter()
+        .filter_map(|p| p.fallback.map(|f| (p.nominal_pressure, f.iterations)))
+        .unzip();
+    (!nominal_pressure.is_empty()).then_some(Warning::PreconditionerFallback {
+        nominal_pressure,
+        iterations,
+    })
+}
+
 /// The warnings of an FFT-BEM rough contact: a synthesised surface
-/// band-limited by its grid, pressures above 0.1 E*, a surface steeper than 1.
+/// band-limited by its grid, pressures above 0.1 E*, a surface steeper than 1,
+/// solves finished by the plain solver.
 #[cfg(feature = "bem")]
 pub fn of_rough(r: &persson::bem::rough::RoughReport) -> Vec<Warning> {
     let mut w = Vec::new();
+    push(&mut w, preconditioner_fallback(&r.points));
     let pressures: Vec<f64> = r.points.iter().map(|p| p.nominal_pressure).collect();
     push(
         &mut w,
@@ -512,9 +644,18 @@ pub fn of_rough(r: &persson::bem::rough::RoughReport) -> Vec<Warning> {
 /// bins left out of the 2D spectrum).
 #[cfg(feature = "topography")]
 pub fn of_measured(file: &std::path::Path, a: &persson::topography::Analysis) -> Vec<Warning> {
+    of_notes(file, &a.notes)
+}
+
+/// The warnings of a measured surface's notes ([`of_measured`] without the
+/// analysis: for a spectrum that keeps only its notes, as a pickled Python
+/// `Spectrum` does). `file` names the input (a stand-in such as `(array)`
+/// for heights that came from no file).
+#[cfg(feature = "topography")]
+pub fn of_notes(file: &std::path::Path, notes: &[persson::topography::Note]) -> Vec<Warning> {
     use persson::topography::Note;
     let file = file.to_path_buf();
-    a.notes
+    notes
         .iter()
         .map(|note| match note {
             Note::Resampled {

@@ -107,6 +107,7 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
             ..a.solver.options()?
         },
         bins: a.histogram.as_ref().map(|_| a.bins),
+        ..RoughOptions::default()
     };
     let e_star = a.material.build(a.spectrum.example)?.contact_modulus();
     let (surface, source) = if let Some(path) = &a.surface {

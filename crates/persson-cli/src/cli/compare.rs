@@ -11,7 +11,7 @@ use persson_studies::validation::{
 };
 
 pub use super::compare_args::Args;
-use super::compare_args::{BemArgs, KappaArgs, MainArgs, Study};
+use super::compare_args::{BemArgs, EnsembleArgs, KappaArgs, MainArgs, Study};
 use super::output::{print_narrowed, print_warned};
 use super::progress::Progress;
 use persson_studies::Warning;
@@ -20,6 +20,7 @@ use persson_studies::Warning;
 pub fn run(a: Args) -> anyhow::Result<()> {
     match a.study {
         Some(Study::Kappa(k)) => kappa_study(&k),
+        Some(Study::Ensemble(e)) => ensemble(&e),
         None => compare(&a.main),
     }
 }
@@ -149,4 +150,17 @@ fn kappa_study(a: &KappaArgs) -> anyhow::Result<()> {
     let report = with_progress(|p| validation::kappa_study(&config, p))?;
     super::compare_plot::kappa(a, &report)?;
     print_warned(&report, &warnings, &a.format)
+}
+
+/// `persson compare ensemble`: the jobs (seed, grid) on local threads, the
+/// same study the Python package runs on Dask.
+fn ensemble(a: &EnsembleArgs) -> anyhow::Result<()> {
+    let spectrum = a.spectrum.build()?;
+    let config = validation::EnsembleConfig {
+        contact_modulus: a.material.build(a.spectrum.example)?.contact_modulus(),
+        nominal_pressure: a.pressure.clone(),
+        sweep: a.settings()?,
+    };
+    let report = validation::ensemble(spectrum.as_ref(), &config, a.threads)?;
+    print_warned(&report, &report.warnings, &a.format)
 }

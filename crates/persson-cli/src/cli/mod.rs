@@ -14,6 +14,7 @@ mod compare;
 mod compare_args;
 #[cfg(feature = "bem")]
 mod compare_plot;
+mod friction;
 mod kappa;
 mod magnification;
 mod measured_args;
@@ -68,6 +69,8 @@ enum Cmd {
     /// Theories against the BEM at several resolutions, its continuum limit, κ and your data.
     #[cfg(feature = "bem")]
     Compare(compare::Args),
+    /// Rubber friction μ(v, T, σ0) and A/A0 from a viscoelastic master curve (Persson 2001, 2006).
+    Friction(friction::Args),
 }
 
 /// Run one parsed command line.
@@ -86,5 +89,6 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
         Cmd::Bem(a) => bem::run(a),
         #[cfg(feature = "bem")]
         Cmd::Compare(a) => compare::run(a),
+        Cmd::Friction(a) => friction::run(a),
     }
 }

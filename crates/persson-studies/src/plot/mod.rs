@@ -45,12 +45,14 @@ mod draw;
 pub mod figures;
 pub mod map;
 mod prepare;
+mod stack;
 mod ticks;
 
 pub use figures::{
     area_vs_load, area_vs_zeta, error_vs_time, g_vs_zeta, spectrum, stress_family, LinearLaw,
     PowerLaw,
 };
+pub use stack::render_stacked;
 
 use crate::{Error, Result};
 use std::path::Path;

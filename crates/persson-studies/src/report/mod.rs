@@ -17,6 +17,7 @@ use persson::error::Result;
 #[cfg(feature = "bem")]
 mod bem;
 mod core;
+mod friction;
 mod stress;
 
 /// The accuracy knob of a method.
@@ -167,6 +168,7 @@ pub(crate) fn time_it<T>(budget: f64, mut f: impl FnMut() -> T) -> (T, f64) {
 pub fn accuracy(extent: Extent) -> Result<AccuracyReport> {
     let mut methods = vec![core::g_quadrature(extent)?];
     methods.extend(stress::accuracy(extent)?);
+    methods.push(friction::friction_quadrature(extent)?);
     #[cfg(feature = "bem")]
     methods.extend(bem::accuracy(extent)?);
     Ok(AccuracyReport { methods })

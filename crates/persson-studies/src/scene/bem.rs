@@ -136,6 +136,7 @@ pub fn bem_rough(scene: &Scene, b: &BemOutput) -> Result<RoughReport> {
             ..Options::default()
         },
         bins: b.histogram.as_ref().map(|_| bins),
+        ..RoughOptions::default()
     };
     rough::rough_contact(
         &surf,

@@ -6,7 +6,9 @@
 //! format is [`schema`] (its JSON Schema is `crates/persson-studies/schema/scene.schema.json`), the
 //! computation [`run`] and the typed results [`report`]: the subcommands
 //! `area`, `magnification`, `kappa`, `separation` and `stress` call the same
-//! functions and print the same reports.
+//! functions and print the same reports. The output `friction` (rubber
+//! friction, with the scene's `rubber` instead of `material`) is computed by
+//! [`friction()`], which `persson friction` calls too.
 //!
 //! ```json
 //! { "schema": 1,
@@ -32,6 +34,7 @@ use persson::stress::Start;
 mod adhesion;
 #[cfg(feature = "bem")]
 mod bem;
+pub mod friction;
 mod measured;
 #[cfg(feature = "plot")]
 pub mod plot;
@@ -40,6 +43,7 @@ pub mod run;
 pub mod schema;
 
 pub use adhesion::{DEFAULT_STICKINESS_POINTS, DEFAULT_TOLERANCE as DEFAULT_ADHESION_TOLERANCE};
+pub use friction::{friction, friction_on};
 #[cfg(feature = "topography")]
 pub use measured::describe;
 pub use report::*;
@@ -76,6 +80,9 @@ impl Scene {
             if file.is_relative() {
                 *file = base.join(&*file);
             }
+        }
+        if let Some(r) = &mut s.rubber {
+            r.resolve(base);
         }
         Ok(s)
     }
@@ -162,6 +169,20 @@ impl Scene {
             report.spectrum = Some(r);
         }
         self.run_bem(&mut report)?;
+        if let Some(f) = &o.friction {
+            let s = self.spectrum.as_ref().ok_or_else(|| required("spectrum"))?;
+            let r = self
+                .rubber
+                .as_ref()
+                .ok_or_else(|| required("rubber (for outputs.friction)"))?;
+            report.friction = Some(friction::friction_named(
+                s,
+                r,
+                &self.nominal_pressure,
+                f,
+                ["spectrum.", "rubber.", "outputs.friction."],
+            )?);
+        }
         let with_surface = self.spectrum.is_some() && self.material.is_some();
         let needs_surface = o.area.is_some()
             || o.magnification.is_some()
@@ -265,6 +286,7 @@ impl Scene {
             o.stress.as_ref().and_then(|s| s.plot.clone()),
             o.bem.as_ref().and_then(|b| b.plot.clone()),
             o.bem.as_ref().and_then(|b| b.histogram.clone()),
+            o.friction.as_ref().and_then(|f| f.plot.clone()),
         ]
         .into_iter()
         .flatten()
@@ -283,7 +305,7 @@ impl Scene {
 
     /// The input files the scene reads.
     pub fn input_paths(&self) -> Vec<PathBuf> {
-        match &self.spectrum {
+        let mut files = match &self.spectrum {
             Some(
                 SpectrumSpec::Tabulated { file, .. }
                 | SpectrumSpec::HeightMap(HeightMapSpec { file, .. }),
@@ -291,7 +313,11 @@ impl Scene {
                 vec![file.clone()]
             }
             _ => vec![],
+        };
+        if let Some(r) = &self.rubber {
+            files.extend(r.files());
         }
+        files
     }
 }
 
@@ -353,6 +379,11 @@ pub fn render_plots(scene: &Scene, report: &SceneReport, dir: &Path) -> Result<V
     #[cfg(feature = "bem")]
     if let (Some(out), Some(r)) = (&o.bem, &report.bem) {
         draw(&out.plot, &|| plot::bem(r))?;
+    }
+    if let (Some(Some(path)), Some(r)) = (o.friction.as_ref().map(|f| &f.plot), &report.friction) {
+        let p = dir.join(path);
+        crate::plot::render_stacked(&plot::friction(r)?, &p)?;
+        written.push(p);
     }
     Ok(written)
 }

@@ -10,6 +10,10 @@
 //!   A_el/A0 and A_pl/A0 on both sides (`persson compare --yield-stress`).
 //! - [`kappa_study`] (feature `bem`): κ against the Hurst exponent
 //!   ([`KappaStudy`], `persson compare kappa`).
+//! - [`ensemble()`] (feature `bem`): the BEM on seeds × grids of independent
+//!   surfaces, mean and standard error per grid and pressure
+//!   ([`EnsembleReport`], `persson compare ensemble`; the Python package runs
+//!   its jobs on Dask).
 //! - [`hertz`] (feature `bem`): the BEM against the Hertz closed form
 //!   ([`HertzValidation`], `persson bem hertz`).
 //!
@@ -47,6 +51,8 @@ mod compare;
 #[cfg(feature = "bem")]
 mod distribution;
 #[cfg(feature = "bem")]
+pub mod ensemble;
+#[cfg(feature = "bem")]
 mod hertz;
 #[cfg(feature = "bem")]
 mod kappa_study;
@@ -70,6 +76,8 @@ pub use kappa::{fit_kappa, KappaEstimate, KappaFit};
 #[cfg(feature = "bem")]
 pub use compare::{compare, compare_surface, ComparisonConfig, DEFAULT_BINS, KAPPA_MAX_FRACTION};
 #[cfg(feature = "bem")]
+pub use ensemble::{ensemble, EnsembleConfig, EnsembleJob, EnsembleReport, EnsembleSolve};
+#[cfg(feature = "bem")]
 pub use hertz::{hertz, HertzValidation};
 #[cfg(feature = "bem")]
 pub use kappa::{GridKappa, SweepKappa};
@@ -85,4 +93,4 @@ pub use resolution::{
     SweepSettings, DEFAULT_LEVELS, DEFAULT_PIXELS_PER_WAVELENGTH,
 };
 #[cfg(feature = "bem")]
-pub use sweep::{sweep, sweep_source, GridResult, Sweep, SweepProgress, SweepSource};
+pub use sweep::{sweep, sweep_one, sweep_source, GridResult, Sweep, SweepProgress, SweepSource};

@@ -158,6 +158,7 @@ pub fn sweep_source(
         boundary,
         solver: config.options,
         bins: None,
+        ..RoughOptions::default()
     };
     let mut done = 0;
     for (si, &seed) in seeds.iter().enumerate() {
@@ -185,6 +186,69 @@ pub fn sweep_source(
         histograms,
         yield_stress: config.options.yield_stress,
     })
+}
+
+/// One seed on one grid of a synthesised sweep: the same surface
+/// ([`nested_surfaces`] of `seed` on all of `config.grids`, this grid's
+/// copy), the same pressures in the same order and the same solver, so the
+/// result is, number for number, row `seed` of grid `grid` in [`sweep`] of
+/// the same `config` (its one seed row; `config.seeds` is not used). The
+/// independent unit of an ensemble ([`super::ensemble`]).
+///
+/// # Errors
+/// `grid` not one of `config.grids`; as [`sweep`].
+pub fn sweep_one(
+    spectrum: &dyn Spectrum,
+    contact_modulus: f64,
+    pressures: &[f64],
+    config: &SweepConfig,
+    seed: u64,
+    grid: usize,
+) -> Result<GridResult> {
+    check_input(
+        contact_modulus,
+        pressures,
+        &[seed],
+        config,
+        Boundary::Periodic,
+    )?;
+    let gi = config
+        .grids
+        .iter()
+        .position(|&g| g == grid)
+        .ok_or_else(|| {
+            Error::invalid(
+                "grid",
+                grid as f64,
+                format!("one of the ensemble's grids {:?}", config.grids),
+            )
+        })?;
+    let mut order: Vec<usize> = (0..pressures.len()).collect();
+    order.sort_by(|&a, &b| pressures[a].total_cmp(&pressures[b]));
+    let sorted: Vec<f64> = order.iter().map(|&k| pressures[k]).collect();
+    let surfaces = nested_surfaces(spectrum, &config.grids, config.size, seed)?;
+    let surf = &surfaces[gi];
+    let mut result = GridResult::zeros(grid, 1, pressures.len());
+    result.surface_rms_slope[0] = surf.rms_slope()?;
+    let options = RoughOptions {
+        boundary: Boundary::Periodic,
+        solver: config.options,
+        bins: None,
+        ..RoughOptions::default()
+    };
+    let mut observer = SweepObserver {
+        progress: &mut |_| {},
+        done: 0,
+        total: pressures.len(),
+        grid,
+        seed,
+        order: &order,
+        counts: None,
+        yield_stress: config.options.yield_stress,
+    };
+    let points = rough::solve(surf, contact_modulus, &sorted, &options, &mut observer)?;
+    result.record(0, &points, &order);
+    Ok(result)
 }
 
 /// The inputs of a sweep: E* and every pressure finite and positive, a seed,

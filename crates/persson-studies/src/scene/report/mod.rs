@@ -9,6 +9,7 @@ use crate::table::{Table, Tabulate};
 mod adhesion;
 mod area;
 mod bem;
+mod friction;
 mod separation;
 mod spectrum;
 mod stress;
@@ -16,6 +17,7 @@ mod stress;
 pub use adhesion::*;
 pub use area::*;
 pub use bem::*;
+pub use friction::*;
 pub use separation::*;
 pub use spectrum::*;
 pub use stress::*;
@@ -61,6 +63,9 @@ pub struct SceneReport {
     /// Adhesion (stickiness, adhesive contact area, pull-off).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub adhesion: Option<AdhesionReport>,
+    /// Rubber friction.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub friction: Option<FrictionReport>,
     /// Remarks on the input (never a change of a number); the CLI prints them
     /// on stderr and in the top-level `warnings` of `--json`.
     #[serde(skip)]
@@ -79,6 +84,7 @@ impl SceneReport {
             self.separation.as_ref().map(|r| &r.warnings),
             self.stress.as_ref().map(|r| &r.warnings),
             self.adhesion.as_ref().map(|r| &r.warnings),
+            self.friction.as_ref().map(|r| &r.warnings),
         ];
         let mut all = std::mem::take(&mut self.warnings);
         for w in lists.into_iter().flatten().flatten() {
@@ -101,7 +107,7 @@ impl Tabulate for SceneReport {
         let bem = self.bem.as_ref().map(|r| r as &dyn Tabulate);
         #[cfg(not(feature = "bem"))]
         let bem = None;
-        let parts: [Option<&dyn Tabulate>; 10] = [
+        let parts: [Option<&dyn Tabulate>; 11] = [
             self.spectrum.as_ref().map(|r| r as &dyn Tabulate),
             self.kappa.as_ref().map(|r| r as &dyn Tabulate),
             self.area.as_ref().map(|r| r as &dyn Tabulate),
@@ -112,6 +118,7 @@ impl Tabulate for SceneReport {
             bem,
             self.bem_hertz.as_ref().map(|r| r as &dyn Tabulate),
             self.adhesion.as_ref().map(|r| r as &dyn Tabulate),
+            self.friction.as_ref().map(|r| r as &dyn Tabulate),
         ];
         for p in parts.into_iter().flatten() {
             out.extend(p.tables());

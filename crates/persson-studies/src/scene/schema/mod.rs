@@ -10,6 +10,7 @@
 //! | `spectrum` | the roughness: self-affine, tabulated or a measured height map |
 //! | `names` | the closed sets (convention, boundary, start, theory, detrend, window) |
 //! | `outputs` | what a scene asks for, one struct per output |
+//! | `friction` | the rubber and the `friction` output |
 
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
@@ -44,10 +45,12 @@ macro_rules! names {
     };
 }
 
+mod friction;
 mod names;
 mod outputs;
 mod spectrum;
 
+pub use friction::*;
 pub use names::*;
 pub use outputs::*;
 pub use spectrum::*;
@@ -70,6 +73,10 @@ pub struct Scene {
     /// The material (needed by every output but `kappa`, `stress` in G and `bem_hertz`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub material: Option<MaterialSpec>,
+    /// The rubber (needed by `friction` only; it has its own modulus, so
+    /// `material` is not needed there).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rubber: Option<RubberSpec>,
     /// The roughness spectrum (or, for `bem` only, a height map).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub spectrum: Option<SpectrumSpec>,

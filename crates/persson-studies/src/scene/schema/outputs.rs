@@ -43,6 +43,9 @@ pub struct Outputs {
     /// nominal pressures (which may be ≤ 0) with the pull-off stress.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub adhesion: Option<AdhesionOutput>,
+    /// Rubber friction μ and A/A0 against sliding velocity (needs `rubber`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub friction: Option<super::FrictionOutput>,
 }
 
 /// Spectrum summary: rms height, slope and curvature over [q_min, q_max],

@@ -1,0 +1,211 @@
+//! `persson friction`: Persson's rubber friction μ(v, T, σ0) and A/A0 from a
+//! measured master curve (the scene output `friction`; Persson, J. Chem.
+//! Phys. 115, 3840 (2001); J. Phys.: Condens. Matter 18, 7789 (2006)).
+
+use std::path::PathBuf;
+
+use anyhow::bail;
+use persson_studies::scene::{
+    friction, FrequencyUnitName, FrictionOutput, RubberSpec, StandardLinearSolidSpec,
+    VelocityRange, VerticalShiftName, WlfSpec,
+};
+
+use super::args::{spectrum_spec, MeasuredArgs, SpectrumArgs};
+use super::number::number;
+use super::output::{print_warned, Format};
+
+/// The rubber: its modulus, temperature shift, Poisson ratio and thermal data.
+#[derive(clap::Args, Debug)]
+pub struct RubberArgs {
+    /// Viscoelastic master curve at T_ref: columns ω (or f), E′, E″ in Pa; `#` comments.
+    #[arg(long, value_name = "FILE", group = "modulus")]
+    master_curve: Option<PathBuf>,
+    /// Unit of the --master-curve frequency column.
+    #[arg(long, value_enum, requires = "master_curve")]
+    frequency_unit: Option<FrequencyUnitName>,
+    /// Prony series (generalised Maxwell): rows E_k (Pa), τ_k (s); a row with τ = inf is E∞.
+    #[arg(long, value_name = "FILE", group = "modulus")]
+    prony: Option<PathBuf>,
+    /// Standard linear solid E0,Einf,tau: instantaneous and relaxed modulus (Pa), τ (s).
+    #[arg(long, value_name = "E0,EINF,TAU", group = "modulus", value_delimiter = ',',
+          allow_hyphen_values = true, value_parser = number)]
+    standard_linear_solid: Vec<f64>,
+    /// WLF shift C1,C2,Tref: log10 a_T = −C1 (T − Tref)/(C2 + T − Tref), C2 and Tref in K.
+    #[arg(long, value_name = "C1,C2,TREF", value_delimiter = ',', conflicts_with = "shift_table",
+          allow_hyphen_values = true, value_parser = number)]
+    wlf: Vec<f64>,
+    /// Shift table: rows T (K), a_T[, b_T]; `#` comments.
+    #[arg(long, value_name = "FILE")]
+    shift_table: Option<PathBuf>,
+    /// T_ref of a --shift-table (default: where its a_T = 1) or of an unshifted rubber, K.
+    #[arg(long, allow_hyphen_values = true, value_parser = number)]
+    reference_temperature: Option<f64>,
+    /// Vertical shift b_T.
+    #[arg(long, value_enum)]
+    vertical_shift: Option<VerticalShiftName>,
+    /// Poisson ratio ν of the rubber.
+    #[arg(long, default_value = "0.5", allow_hyphen_values = true, value_parser = number)]
+    poisson: f64,
+    /// Thermal conductivity of the rubber, W/(m K) (for --flash-temperature).
+    #[arg(long, allow_hyphen_values = true, value_parser = number)]
+    thermal_conductivity: Option<f64>,
+    /// Density of the rubber, kg/m³ (for --flash-temperature).
+    #[arg(long, allow_hyphen_values = true, value_parser = number)]
+    density: Option<f64>,
+    /// Specific heat capacity of the rubber, J/(kg K) (for --flash-temperature).
+    #[arg(long, allow_hyphen_values = true, value_parser = number)]
+    heat_capacity: Option<f64>,
+}
+
+/// Arguments of `persson friction`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    #[command(flatten)]
+    spectrum: SpectrumArgs,
+    #[command(flatten)]
+    measured: MeasuredArgs,
+    #[command(flatten)]
+    rubber: RubberArgs,
+    /// Background temperature T, K; repeatable or comma-separated (default T_ref).
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = number)]
+    temperature: Vec<f64>,
+    /// Nominal (mean) pressure σ0, Pa; repeatable or comma-separated.
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = number)]
+    pressure: Vec<f64>,
+    /// Sliding velocity v, m/s; repeatable or comma-separated.
+    #[arg(long, value_delimiter = ',', conflicts_with = "velocity_range",
+          allow_hyphen_values = true, value_parser = number)]
+    velocity: Vec<f64>,
+    /// Log-spaced velocities VMIN,VMAX,N (m/s).
+    #[arg(long, value_name = "VMIN,VMAX,N", value_delimiter = ',', allow_hyphen_values = true,
+          value_parser = number)]
+    velocity_range: Vec<f64>,
+    /// Upper cut-off q1 of the friction integrals, 1/m (default q_s).
+    #[arg(long, conflicts_with = "q1_rms_slope", allow_hyphen_values = true, value_parser = number)]
+    q1: Option<f64>,
+    /// q1 where the rms slope of the roughness from q_l reaches this value (Lorenz et al. 2011).
+    #[arg(long, allow_hyphen_values = true, value_parser = number)]
+    q1_rms_slope: Option<f64>,
+    /// γ of S(q) = γ + (1 − γ) P(q)².
+    #[arg(long, default_value = "0.5", allow_hyphen_values = true, value_parser = number)]
+    gamma: f64,
+    /// Relative tolerance of μ, G and the flash temperature.
+    #[arg(long, default_value = "1e-8", allow_hyphen_values = true, value_parser = number)]
+    tolerance: f64,
+    /// Magnifications per decade of the profiles in --json.
+    #[arg(long, default_value_t = 4, allow_hyphen_values = true, value_parser = super::number::count)]
+    points_per_decade: usize,
+    /// Also with the flash temperature (needs --thermal-conductivity, --density, --heat-capacity).
+    #[arg(long)]
+    flash_temperature: bool,
+    #[command(flatten)]
+    format: Format,
+    /// Also draw μ against v, with A/A0 on a second panel, into this file (.svg or .png).
+    #[command(flatten)]
+    plot: super::plot::PlotArg,
+}
+
+impl RubberArgs {
+    /// The scene file's `rubber` entry.
+    fn spec(&self) -> anyhow::Result<RubberSpec> {
+        let sls = match self.standard_linear_solid.as_slice() {
+            [] => None,
+            &[e0, e_inf, tau] => Some(StandardLinearSolidSpec {
+                instantaneous_modulus: e0,
+                relaxed_modulus: e_inf,
+                relaxation_time: tau,
+            }),
+            v => bail!(
+                "--standard-linear-solid: three values E0,Einf,tau, got {}",
+                v.len()
+            ),
+        };
+        let wlf = match self.wlf.as_slice() {
+            [] => None,
+            &[c1, c2, t_ref] => Some(WlfSpec {
+                wlf_c1: c1,
+                wlf_c2: c2,
+                reference_temperature: t_ref,
+            }),
+            v => bail!("--wlf: three values C1,C2,Tref, got {}", v.len()),
+        };
+        if self.master_curve.is_none() && self.prony.is_none() && sls.is_none() {
+            bail!("no rubber: give --master-curve FILE --frequency-unit rad/s|Hz, --prony FILE or --standard-linear-solid E0,Einf,tau");
+        }
+        if self.master_curve.is_some() && self.frequency_unit.is_none() {
+            bail!("--master-curve needs --frequency-unit rad/s or Hz");
+        }
+        Ok(RubberSpec {
+            master_curve: self.master_curve.clone(),
+            frequency_unit: self.frequency_unit,
+            prony: self.prony.clone(),
+            standard_linear_solid: sls,
+            wlf,
+            shift_table: self.shift_table.clone(),
+            reference_temperature: self.reference_temperature,
+            vertical_shift: self.vertical_shift,
+            poisson: Some(self.poisson),
+            thermal_conductivity: self.thermal_conductivity,
+            density: self.density,
+            heat_capacity: self.heat_capacity,
+        })
+    }
+}
+
+/// Run `persson friction`.
+pub fn run(a: Args) -> anyhow::Result<()> {
+    a.plot.check()?;
+    let thermal = [
+        a.rubber.thermal_conductivity,
+        a.rubber.density,
+        a.rubber.heat_capacity,
+    ];
+    if a.flash_temperature && thermal.iter().any(Option::is_none) {
+        bail!("--flash-temperature needs --thermal-conductivity, --density and --heat-capacity");
+    }
+    let spectrum = spectrum_spec(&a.spectrum, &a.measured)?;
+    let rubber = a.rubber.spec()?;
+    if a.pressure.is_empty() {
+        bail!("no nominal pressure: give --pressure P (Pa; repeatable or comma-separated)");
+    }
+    let velocity_range = match a.velocity_range.as_slice() {
+        [] => None,
+        &[lo, hi, n] => {
+            if !(n.fract() == 0.0 && (1.0..=1e6).contains(&n)) {
+                bail!("--velocity-range: N = {n} must be a whole number in 1..=1000000");
+            }
+            Some(VelocityRange {
+                velocity_min: lo,
+                velocity_max: hi,
+                points: n as usize,
+            })
+        }
+        v => bail!(
+            "--velocity-range: three values VMIN,VMAX,N, got {}",
+            v.len()
+        ),
+    };
+    if a.velocity.is_empty() && velocity_range.is_none() {
+        bail!("no velocity: give --velocity V (m/s; repeatable or comma-separated) or --velocity-range VMIN,VMAX,N");
+    }
+    let out = FrictionOutput {
+        velocity: a.velocity.clone(),
+        velocity_range,
+        temperature: a.temperature.clone(),
+        q1: a.q1,
+        q1_rms_slope: a.q1_rms_slope,
+        gamma: Some(a.gamma),
+        tolerance: Some(a.tolerance),
+        points_per_decade: Some(a.points_per_decade),
+        flash_temperature: a.flash_temperature,
+        plot: None,
+    };
+    let report =
+        friction(&spectrum, &rubber, &a.pressure, &out).map_err(|e| a.spectrum.psd_hint(e))?;
+    #[cfg(feature = "plot")]
+    if let Some(path) = &a.plot.plot {
+        use persson_studies::scene::plot;
+        persson_studies::plot::render_stacked(&plot::friction(&report)?, path)?;
+    }
+    print_warned(&report, &report.warnings, &a.format)
+}

@@ -1,0 +1,370 @@
+//! The rubber of a scene (its modulus, time–temperature shift, Poisson ratio
+//! and thermal properties) and the `friction` output: Persson's viscoelastic
+//! rubber friction, `persson::friction`.
+
+use std::path::{Path, PathBuf};
+
+use schemars::JsonSchema;
+use serde::{Deserialize, Serialize};
+
+use super::required;
+use persson::error::{Error, Result};
+use persson::friction::{
+    FrequencyUnit, MasterCurve, Prony, Rubber, ShiftTable, TemperatureShift, Thermal,
+    VerticalShift, Viscoelastic,
+};
+
+/// The reference temperature of a rubber without a temperature shift (K):
+/// 20 °C, where its modulus does not depend on T and T only labels results.
+pub const DEFAULT_REFERENCE_TEMPERATURE: f64 = 293.15;
+
+/// The unit of a master curve's frequency column.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, JsonSchema)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
+pub enum FrequencyUnitName {
+    /// Angular frequency ω in rad/s.
+    #[serde(rename = "rad/s")]
+    #[cfg_attr(feature = "clap", value(name = "rad/s"))]
+    RadPerSecond,
+    /// Frequency f in Hz (ω = 2π f).
+    #[serde(rename = "Hz")]
+    #[cfg_attr(feature = "clap", value(name = "Hz"))]
+    Hertz,
+}
+
+impl From<FrequencyUnitName> for FrequencyUnit {
+    fn from(u: FrequencyUnitName) -> Self {
+        match u {
+            FrequencyUnitName::RadPerSecond => FrequencyUnit::RadPerSecond,
+            FrequencyUnitName::Hertz => FrequencyUnit::Hertz,
+        }
+    }
+}
+
+names! {
+    /// The vertical shift b_T of time–temperature superposition.
+    #[derive(Default)]
+    VerticalShiftName {
+        /// b_T = 1.
+        #[default]
+        None = "none",
+        /// b_T = T/T_ref (entropic elasticity).
+        Entropic = "entropic",
+        /// b_T from the shift table's third column.
+        Table = "table",
+    }
+}
+
+impl From<VerticalShiftName> for VerticalShift {
+    fn from(v: VerticalShiftName) -> Self {
+        match v {
+            VerticalShiftName::None => VerticalShift::None,
+            VerticalShiftName::Entropic => VerticalShift::Entropic,
+            VerticalShiftName::Table => VerticalShift::Table,
+        }
+    }
+}
+
+/// A standard linear solid E(t) = E∞ + (E0 − E∞) e^{−t/τ}.
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct StandardLinearSolidSpec {
+    /// E0, the instantaneous (glassy, ω → ∞) modulus, Pa.
+    pub instantaneous_modulus: f64,
+    /// E∞, the relaxed (rubbery, ω → 0) modulus, Pa.
+    pub relaxed_modulus: f64,
+    /// τ, s.
+    pub relaxation_time: f64,
+}
+
+/// The Williams–Landel–Ferry shift log10 a_T = −C1 (T − T_ref)/(C2 + T − T_ref).
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct WlfSpec {
+    /// C1 (dimensionless).
+    pub wlf_c1: f64,
+    /// C2, K.
+    pub wlf_c2: f64,
+    /// T_ref, K: the temperature of the master curve.
+    pub reference_temperature: f64,
+}
+
+/// The rubber: exactly one of `master_curve`, `prony`, `standard_linear_solid`;
+/// at most one of `wlf`, `shift_table`; the thermal properties for the flash
+/// temperature.
+#[derive(Debug, Clone, Default, PartialEq, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RubberSpec {
+    /// A DMA master curve at T_ref: columns ω (or f), E′, E″ (Pa); `#` comments.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub master_curve: Option<PathBuf>,
+    /// Unit of the master curve's first column (required with it: `rad/s` or `Hz`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub frequency_unit: Option<FrequencyUnitName>,
+    /// A Prony series: rows E_k (Pa), τ_k (s); a row with τ = inf gives E∞.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub prony: Option<PathBuf>,
+    /// A standard linear solid.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub standard_linear_solid: Option<StandardLinearSolidSpec>,
+    /// The WLF shift.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub wlf: Option<WlfSpec>,
+    /// A shift table: rows T (K), a_T[, b_T]; `#` comments.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub shift_table: Option<PathBuf>,
+    /// T_ref (K) of a shift table (default: where its a_T = 1) or of a rubber
+    /// without a shift (default 293.15 K, a label only).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub reference_temperature: Option<f64>,
+    /// The vertical shift b_T (default `none`; `table` is the shift table's third column).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub vertical_shift: Option<VerticalShiftName>,
+    /// Poisson ratio ν (default 0.5).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub poisson: Option<f64>,
+    /// Thermal conductivity, W/(m K) (for the flash temperature).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub thermal_conductivity: Option<f64>,
+    /// Density, kg/m³ (for the flash temperature).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub density: Option<f64>,
+    /// Specific heat capacity, J/(kg K) (for the flash temperature).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub heat_capacity: Option<f64>,
+}
+
+impl RubberSpec {
+    /// The rubber, with its thermal properties when `flash` (then required).
+    ///
+    /// # Errors
+    /// Not exactly one modulus; a master curve without its frequency unit;
+    /// both shifts; file errors (naming the file and line); invalid values,
+    /// named as in the scene file.
+    pub fn build(&self, flash: bool) -> Result<Rubber> {
+        self.assemble(self.viscoelastic()?, flash)
+    }
+
+    /// The modulus at the reference temperature.
+    ///
+    /// # Errors
+    /// As [`RubberSpec::build`].
+    pub fn viscoelastic(&self) -> Result<Viscoelastic> {
+        let given = [
+            self.master_curve.is_some(),
+            self.prony.is_some(),
+            self.standard_linear_solid.is_some(),
+        ];
+        if given.iter().filter(|&&g| g).count() != 1 {
+            return Err(Error::Inconsistent {
+                name: "master_curve, prony, standard_linear_solid".into(),
+                requirement: "exactly one of them".into(),
+            });
+        }
+        if let Some(file) = &self.master_curve {
+            let unit = self
+                .frequency_unit
+                .ok_or_else(|| required("frequency_unit (rad/s or Hz, with master_curve)"))?;
+            return Ok(MasterCurve::from_file(file, unit.into())?.into());
+        }
+        if self.frequency_unit.is_some() {
+            return Err(Error::Inconsistent {
+                name: "frequency_unit".into(),
+                requirement: "only with master_curve".into(),
+            });
+        }
+        if let Some(file) = &self.prony {
+            return Ok(Prony::from_file(file)?.into());
+        }
+        match self.standard_linear_solid {
+            Some(s) => Ok(Prony::standard_linear_solid(
+                s.instantaneous_modulus,
+                s.relaxed_modulus,
+                s.relaxation_time,
+            )
+            .map_err(|e| section("standard_linear_solid.", e))?
+            .into()),
+            None => Err(required("master_curve, prony or standard_linear_solid")),
+        }
+    }
+
+    /// The temperature shift.
+    ///
+    /// # Errors
+    /// Both `wlf` and `shift_table`; a shift table whose T_ref is neither given
+    /// nor where its a_T = 1; invalid values.
+    pub fn shift(&self) -> Result<TemperatureShift> {
+        let shift = match (&self.wlf, &self.shift_table) {
+            (Some(_), Some(_)) => {
+                return Err(Error::Inconsistent {
+                    name: "wlf, shift_table".into(),
+                    requirement: "at most one of them".into(),
+                })
+            }
+            (Some(w), None) => {
+                if let Some(t) = self.reference_temperature {
+                    if t != w.reference_temperature {
+                        return Err(Error::Inconsistent {
+                            name: "reference_temperature".into(),
+                            requirement: format!(
+                                "the WLF reference temperature {} K (given twice, differently)",
+                                w.reference_temperature
+                            ),
+                        });
+                    }
+                }
+                TemperatureShift::wlf(w.reference_temperature, w.wlf_c1, w.wlf_c2)
+                    .map_err(|e| section("wlf.", e))?
+            }
+            (None, Some(file)) => {
+                let table = ShiftTable::from_file(file)?;
+                let t_ref = match self.reference_temperature {
+                    Some(t) => t,
+                    None => table.unit_shift_temperature().ok_or_else(|| {
+                        required(&format!(
+                            "reference_temperature (the shift table {} has no a_T = 1)",
+                            file.display()
+                        ))
+                    })?,
+                };
+                TemperatureShift::table(t_ref, table)?
+            }
+            (None, None) => TemperatureShift::none(
+                self.reference_temperature
+                    .unwrap_or(DEFAULT_REFERENCE_TEMPERATURE),
+            )?,
+        };
+        match self.vertical_shift {
+            Some(v) => shift.with_vertical(v.into()),
+            None => Ok(shift),
+        }
+    }
+
+    /// The thermal properties, if all three are given.
+    ///
+    /// # Errors
+    /// Some but not all of them; invalid values.
+    pub fn thermal(&self) -> Result<Option<Thermal>> {
+        match (self.thermal_conductivity, self.density, self.heat_capacity) {
+            (Some(k), Some(rho), Some(c)) => Ok(Some(Thermal::new(k, rho, c)?)),
+            (None, None, None) => Ok(None),
+            _ => Err(required(
+                "thermal_conductivity, density and heat_capacity (all three, or none)",
+            )),
+        }
+    }
+
+    /// The rubber from its modulus and these shift, Poisson and thermal fields.
+    ///
+    /// # Errors
+    /// As [`RubberSpec::shift`] and [`RubberSpec::thermal`]; `flash` without
+    /// the thermal properties; ν outside (−1, 0.5].
+    pub fn assemble(&self, viscoelastic: Viscoelastic, flash: bool) -> Result<Rubber> {
+        let mut rubber = Rubber::new(viscoelastic, self.shift()?);
+        if let Some(nu) = self.poisson {
+            rubber = rubber.with_poisson(nu)?;
+        }
+        let thermal = self.thermal()?;
+        if flash {
+            let t = thermal.ok_or_else(|| {
+                required(
+                    "thermal_conductivity, density and heat_capacity (for the flash temperature)",
+                )
+            })?;
+            rubber = rubber.with_thermal(t);
+        }
+        Ok(rubber)
+    }
+
+    /// The files the rubber is read from.
+    pub fn files(&self) -> Vec<PathBuf> {
+        [&self.master_curve, &self.prony, &self.shift_table]
+            .into_iter()
+            .flatten()
+            .cloned()
+            .collect()
+    }
+
+    /// Resolve relative file names against `base` (a scene's directory).
+    pub fn resolve(&mut self, base: &Path) {
+        for f in [
+            &mut self.master_curve,
+            &mut self.prony,
+            &mut self.shift_table,
+        ]
+        .into_iter()
+        .flatten()
+        {
+            if f.is_relative() {
+                *f = base.join(&*f);
+            }
+        }
+    }
+}
+
+/// Velocities log-spaced from `velocity_min` to `velocity_max` (m/s), both included.
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct VelocityRange {
+    /// The lowest velocity, m/s.
+    pub velocity_min: f64,
+    /// The highest velocity, m/s.
+    pub velocity_max: f64,
+    /// How many (at least 2, or 1 when both ends are equal).
+    pub points: usize,
+}
+
+/// Rubber friction (Persson 2001, 2006): μ, A/A0 and, with the flash
+/// temperature, both against velocity at every temperature and nominal
+/// pressure (the scene's `nominal_pressure`, in Pa); needs `rubber` and `spectrum`.
+#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct FrictionOutput {
+    /// Sliding velocities v, m/s (or `velocity_range`).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub velocity: Vec<f64>,
+    /// Log-spaced velocities.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub velocity_range: Option<VelocityRange>,
+    /// Background temperatures T, K (default: the rubber's T_ref).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub temperature: Vec<f64>,
+    /// Upper cut-off q1 of the friction integrals, 1/m (default q_s).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub q1: Option<f64>,
+    /// q1 where the rms slope of the roughness from q_l reaches this value
+    /// (Lorenz et al. 2011; instead of `q1`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub q1_rms_slope: Option<f64>,
+    /// γ of S(q) = γ + (1 − γ) P(q)² (default 0.5).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub gamma: Option<f64>,
+    /// Relative tolerance of μ, G and the flash temperature (default 1e-8).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tolerance: Option<f64>,
+    /// Magnifications per decade of the profiles (default 4).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub points_per_decade: Option<usize>,
+    /// Also with the flash temperature (needs the rubber's thermal properties).
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub flash_temperature: bool,
+    /// Draw μ against v with A/A0 on a second panel (.svg or .png).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub plot: Option<PathBuf>,
+}
+
+/// Prefix the parameter name of an error with its section (`wlf.wlf_c1`).
+fn section(prefix: &str, e: Error) -> Error {
+    match e {
+        Error::InvalidParameter {
+            name,
+            value,
+            requirement,
+        } => Error::InvalidParameter {
+            name: format!("{prefix}{name}"),
+            value,
+            requirement,
+        },
+        other => other,
+    }
+}
