@@ -36,7 +36,10 @@ fn data(name: &str) -> PathBuf {
 
 fn options_for(name: &str) -> ReadOptions {
     ReadOptions {
-        fill_undefined: name.contains("xyz-2") || name.ends_with(".x3p"),
+        fill_undefined: name.contains("xyz-2")
+            || [".x3p", ".gwy", ".sur", ".nc"]
+                .iter()
+                .any(|e| name.ends_with(e)),
         ..Default::default()
     }
 }
@@ -94,11 +97,12 @@ fn maps_agree_with_surface_topography() {
             m.rms_laplacian,
             tol,
         );
-        // SurfaceTopography's rms_curvature_from_area is the mean curvature ∇²h/2.
+        // SurfaceTopography's rms_curvature_from_area is the mean curvature
+        // ∇²h/2, our second key (issue 25 item 5).
         check(
             w,
             &format!("{} mean curvature", m.file),
-            a.rms_curvature / 2.0,
+            a.mean_curvature_rms,
             m.rms_mean_curvature,
             tol,
         );
@@ -707,20 +711,16 @@ fn unsupported_binary_formats_say_what_to_do() {
     let o = ReadOptions::default();
     let cases: [(&str, &[u8], &str); 6] = [
         (
-            "scan.sur",
-            b"DIGITAL SURF\0\0\x01",
-            "unsupported format (.sur)",
+            "scan.opd",
+            b"\x01\x00Directory",
+            "unsupported format (.opd)",
         ),
         ("map.plu", b"anything", "unsupported format (.plu)"),
-        (
-            "zygo.dat",
-            b"\x88\x1b\x03\x70\0\0\x02\0rest",
-            "unsupported format (Zygo MetroPro .dat)",
-        ),
+        ("scan.vk4", b"VK4_\0\0", "unsupported format (.vk4)"),
         (
             "renamed.bin",
-            b"DSCOMPRESSED\0\0",
-            "unsupported format (Digital Surf .sur)",
+            b"VCA DATA\0\0",
+            "unsupported format (Bruker .opdx)",
         ),
         (
             "raw.dat",

@@ -14,8 +14,9 @@ use libfuzzer_sys::fuzz_target;
 use persson::topography::read::{from_bytes, ReadOptions, SizeSpec};
 use persson::topography::{analyse, AnalysisOptions};
 
-const NAMES: [&str; 8] = [
-    "fuzz.npy", "fuzz.txt", "fuzz.csv", "fuzz.dat", "fuzz.xyz", "fuzz.gsf", "fuzz.x3p", "fuzz",
+const NAMES: [&str; 11] = [
+    "fuzz.npy", "fuzz.txt", "fuzz.csv", "fuzz.dat", "fuzz.xyz", "fuzz.gsf", "fuzz.x3p", "fuzz.gwy",
+    "fuzz.sur", "fuzz.nc", "fuzz",
 ];
 
 fuzz_target!(|data: &[u8]| {

@@ -75,6 +75,22 @@ class Spectrum:
     ) -> Spectrum:
         """The spectrum of a measured surface file (the CLI's --surface)."""
     @staticmethod
+    def sum(spectra: Sequence[Spectrum]) -> Spectrum:
+        """Two (or more) rough bodies: C = C1 + C2 (the CLI's --psd2/--surface2)."""
+    @staticmethod
+    def combine(
+        paths: Sequence[PathLike],
+        *,
+        sizes: Optional[Sequence[Optional[float]]] = None,
+        pixel_sizes: Optional[Sequence[Optional[float]]] = None,
+        tip_radii: Optional[Sequence[Optional[float]]] = None,
+        periodic: bool = False,
+        detrend: Optional[Detrend] = None,
+        window: Optional[Window] = None,
+        q_max: Optional[float] = None,
+    ) -> Spectrum:
+        """One spectrum from several measurements (the CLI's repeated --surface): mode-weighted mean."""
+    @staticmethod
     def from_height_map(
         heights: FloatArray,
         pixel_size: Union[float, Tuple[float, float]],

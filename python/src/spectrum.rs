@@ -87,6 +87,8 @@ impl Measured {
 pub enum Recipe {
     SelfAffine(String),
     Points(Vec<(f64, f64)>),
+    /// Two rough bodies: the parts' recipes.
+    Sum(Vec<Recipe>),
 }
 
 impl Spectrum {
@@ -126,12 +128,14 @@ impl Spectrum {
     fn from_spec(spec: &SpectrumSpec) -> PyResult<Self> {
         let mut s = Self::from_spec_quiet(spec)?;
         // As the CLI's surface (RoughContact): a measured map's warnings
-        // first, then the spectrum's own.
-        s.warnings = s
-            .measured
-            .as_ref()
-            .map(Measured::warnings)
-            .unwrap_or_default();
+        // first (a sum's or a multi-scale set's: those its parts gave), then
+        // the spectrum's own.
+        let own = std::mem::take(&mut s.warnings);
+        s.warnings = match (&s.measured, spec) {
+            (Some(m), _) => m.warnings(),
+            (None, SpectrumSpec::Sum { .. } | SpectrumSpec::MultiScale { .. }) => own,
+            (None, _) => vec![],
+        };
         for w in persson_studies::scene::run::spectrum_warnings(spec, &s.shared) {
             if !s.warnings.contains(&w) {
                 s.warnings.push(w);
@@ -179,7 +183,57 @@ impl Spectrum {
                 }
                 measured(a, &m.file)
             }
+            SpectrumSpec::MultiScale { measurements } => {
+                let d = persson_studies::scene::multiscale::described(measurements).map_err(err)?;
+                let mut s = Self::tabulated_spectrum(d.value, d.description, None);
+                for w in d.warnings {
+                    if !s.warnings.contains(&w) {
+                        s.warnings.push(w);
+                    }
+                }
+                Ok(s)
+            }
+            SpectrumSpec::Sum { parts } => {
+                let parts: Vec<Spectrum> =
+                    parts.iter().map(Self::from_spec).collect::<PyResult<_>>()?;
+                Self::sum_of(&parts)
+            }
         }
+    }
+
+    /// The sum C = C1 + C2 + … of built spectra (two rough bodies).
+    fn sum_of(parts: &[Spectrum]) -> PyResult<Self> {
+        let sum = persson::spectrum::Sum::new(
+            parts
+                .iter()
+                .map(|p| Box::new(p.shared.clone()) as Box<dyn persson::Spectrum>)
+                .collect(),
+        )
+        .map_err(err)?;
+        let mut warnings: Vec<persson_studies::Warning> = Vec::new();
+        for w in parts
+            .iter()
+            .flat_map(|p| p.warnings.clone())
+            .chain(persson_studies::Warning::sum_bands(&sum))
+        {
+            if !warnings.contains(&w) {
+                warnings.push(w);
+            }
+        }
+        let mut breaks: Vec<f64> = parts.iter().flat_map(|p| p.breaks.clone()).collect();
+        breaks.sort_by(f64::total_cmp);
+        breaks.dedup();
+        Ok(Spectrum {
+            shared: Shared(Arc::new(sum)),
+            breaks,
+            description: Some(format!(
+                "two rough bodies, C = C1 + C2 ({} spectra)",
+                parts.len()
+            )),
+            recipe: Recipe::Sum(parts.iter().map(|p| p.recipe.clone()).collect()),
+            warnings,
+            measured: None,
+        })
     }
 
     /// The library's surface: this spectrum on a body of contact modulus E*.
@@ -401,6 +455,79 @@ impl Spectrum {
         Self::from_spec(&SpectrumSpec::HeightMap(spec))
     }
 
+    /// The roughness of two (or more) rough bodies pressed together: the sum
+    /// of their spectra, C = C1 + C2 (each zero outside its band; the CLI's
+    /// --psd2/--surface2). Use it with the E* of both bodies.
+    #[staticmethod]
+    fn sum(spectra: Vec<PyRef<'_, Spectrum>>) -> PyResult<Self> {
+        let parts: Vec<Spectrum> = spectra
+            .iter()
+            .map(|s| Spectrum {
+                shared: s.shared.clone(),
+                breaks: s.breaks.clone(),
+                description: s.description.clone(),
+                recipe: s.recipe.clone(),
+                warnings: s.warnings.clone(),
+                measured: s.measured.clone(),
+            })
+            .collect();
+        Self::sum_of(&parts)
+    }
+
+    /// One spectrum from several measurements of one surface in files (the
+    /// CLI's repeated --surface): each contributes its reliable band (its
+    /// size down to Nyquist, `q_max`, or the tip-radius cut-off), and C is
+    /// the mode-weighted mean over the overlaps. `sizes`, `pixel_sizes`,
+    /// `tip_radii`: one value per file (None where the file says).
+    #[staticmethod]
+    #[pyo3(signature = (paths, *, sizes=None, pixel_sizes=None, tip_radii=None, periodic=false, detrend=None, window=None, q_max=None))]
+    #[allow(clippy::too_many_arguments)]
+    fn combine(
+        paths: Vec<PathBuf>,
+        sizes: Option<Vec<Option<f64>>>,
+        pixel_sizes: Option<Vec<Option<f64>>>,
+        tip_radii: Option<Vec<Option<f64>>>,
+        periodic: bool,
+        detrend: Option<&str>,
+        window: Option<&str>,
+        q_max: Option<f64>,
+    ) -> PyResult<Self> {
+        let n = paths.len();
+        let each = |arg: &str, v: Option<Vec<Option<f64>>>| -> PyResult<Vec<Option<f64>>> {
+            match v {
+                None => Ok(vec![None; n]),
+                Some(v) if v.len() == n => Ok(v),
+                Some(v) => Err(value_error(format!(
+                    "{arg}: {} values for {n} paths, expected one per path",
+                    v.len()
+                ))),
+            }
+        };
+        let (sizes, pixels, tips) = (
+            each("sizes", sizes)?,
+            each("pixel_sizes", pixel_sizes)?,
+            each("tip_radii", tip_radii)?,
+        );
+        let detrend: Option<DetrendName> = detrend.map(|d| name("detrend", d)).transpose()?;
+        let window: Option<WindowName> = window.map(|w| name("window", w)).transpose()?;
+        let measurements = paths
+            .into_iter()
+            .enumerate()
+            .map(|(i, path)| {
+                let mut m = HeightMapSpec::new(path);
+                m.size = sizes[i].map(Sides::One);
+                m.pixel_size = pixels[i];
+                m.tip_radius = tips[i];
+                m.periodic = periodic;
+                m.detrend = detrend;
+                m.window = window;
+                m.q_max = q_max;
+                m
+            })
+            .collect();
+        Self::from_spec(&SpectrumSpec::MultiScale { measurements })
+    }
+
     /// The binned isotropic spectrum of a height map given as a numpy array
     /// (rows along y, columns along x; a 1-D array is one line scan) with
     /// its pixel size Δ or (Δx, Δy) in m. Non-periodic maps are detrended
@@ -588,10 +715,7 @@ impl Spectrum {
         let py = slf.py();
         let s = slf.get();
         let restore = py.get_type::<Spectrum>().getattr("_restore")?;
-        let state = match &s.recipe {
-            Recipe::SelfAffine(json) => ("self_affine", json.clone().into_pyobject(py)?.into_any()),
-            Recipe::Points(p) => ("points", p.clone().into_pyobject(py)?.into_any()),
-        };
+        let state = recipe_state(py, &s.recipe)?;
         let measured = s.measured.as_ref().map(|m| {
             (
                 m.file.clone(),
@@ -631,6 +755,14 @@ impl Spectrum {
                     .transpose()?;
                 Self::tabulated_spectrum(Tabulated::new(&points).map_err(err)?, None, measured)
             }
+            "sum" => {
+                let parts: Vec<(String, Bound<'_, PyAny>)> = payload.extract()?;
+                let parts: Vec<Spectrum> = parts
+                    .iter()
+                    .map(|(k, p)| Self::_restore(k, p, None, None))
+                    .collect::<PyResult<_>>()?;
+                Self::sum_of(&parts)?
+            }
             _ => return Err(value_error(format!("invalid kind = '{kind}'"))),
         };
         s.description = description;
@@ -648,6 +780,22 @@ impl Spectrum {
                 .unwrap_or_default()
         )
     }
+}
+
+/// The pickled state of a recipe: its kind and payload (a sum: the list of
+/// its parts' states).
+fn recipe_state<'py>(py: Python<'py>, r: &Recipe) -> PyResult<(&'static str, Bound<'py, PyAny>)> {
+    Ok(match r {
+        Recipe::SelfAffine(json) => ("self_affine", json.clone().into_pyobject(py)?.into_any()),
+        Recipe::Points(p) => ("points", p.clone().into_pyobject(py)?.into_any()),
+        Recipe::Sum(parts) => {
+            let list = parts
+                .iter()
+                .map(|p| recipe_state(py, p))
+                .collect::<PyResult<Vec<_>>>()?;
+            ("sum", list.into_pyobject(py)?.into_any())
+        }
+    })
 }
 
 /// A measured map's note as plain data for pickling: its kind, its

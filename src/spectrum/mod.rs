@@ -20,12 +20,14 @@ pub mod convention;
 mod function;
 mod power;
 mod self_affine;
+mod sum;
 mod tabulated;
 
 pub use band_limited::BandLimited;
 pub use convention::Convention;
 pub use function::FnSpectrum;
 pub use self_affine::{Amplitude, SelfAffine};
+pub use sum::Sum;
 pub use tabulated::Tabulated;
 pub use tabulated::{parse_columns, Rows};
 

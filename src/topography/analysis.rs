@@ -81,6 +81,17 @@ pub struct Analysis {
     /// rms Laplacian (real space, 5-point; 2D-equivalent √(8/3)·h''_x for line
     /// scans), 1/m.
     pub rms_curvature: f64,
+    /// Half of `rms_curvature`: the rms mean curvature `∇²h/2`, 1/m. This is
+    /// the number SurfaceTopography and contact.engineering call
+    /// `rms_curvature` (`rms_curvature_from_area`); persson's
+    /// `rms_curvature` is Persson's `√⟨(∇²h)²⟩`, twice it. (For line scans
+    /// contact.engineering's rms curvature is `rms_curvature_profile`.)
+    ///
+    /// # Formula
+    /// ```text
+    /// mean_curvature_rms = ½ √⟨(∇²h)²⟩ = rms_curvature / 2
+    /// ```
+    pub mean_curvature_rms: f64,
     /// Line scans: rms slope along the profiles `h'_x` (real space, forward
     /// differences), dimensionless; `None` for maps.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -185,6 +196,7 @@ pub fn analyse(t: &Topography, options: &AnalysisOptions) -> Result<Analysis> {
         rms_height: real.rms_height,
         rms_slope: real.rms_slope,
         rms_curvature: real.rms_curvature,
+        mean_curvature_rms: real.rms_curvature / 2.0,
         rms_slope_profile: real.rms_slope_profile,
         rms_curvature_profile: real.rms_curvature_profile,
         rms_height_from_spectrum: psd.rms_height,

@@ -40,6 +40,7 @@ mod analysis;
 mod condition;
 mod fill;
 mod fit;
+mod multiscale;
 mod note;
 mod psd;
 pub mod read;
@@ -49,6 +50,9 @@ mod window;
 pub use analysis::{analyse, Analysis, AnalysisOptions, Conditioning};
 pub use condition::Detrend;
 pub use fit::{fit_hurst, fit_hurst_profile, HurstFit};
+pub use multiscale::{
+    multi_scale, tip_radius_cutoff, Contribution, Gap, Measurement, MultiScale, TIP_SAFETY_FACTOR,
+};
 pub use note::Note;
 pub use psd::{
     isotropic_spectrum, profile_spectrum, Bins, IsotropicConversion, ProfileSpectrum, Psd,

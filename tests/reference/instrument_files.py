@@ -110,6 +110,108 @@ def profile_entry(name, t, note=""):
 """
 
 
+def metres(t):
+    """A map read by SurfaceTopography, in m (heights and sizes)."""
+    f = UNITS[t.unit]
+    h = t.heights()
+    return Topography(h * f, tuple(float(x) * f for x in t.physical_sizes), unit="m",
+                      periodic=False)
+
+
+def samples(nx, ny, h):
+    """Heights at a few defined points (ix, iy) of h[ix, iy] (NaN undefined)."""
+    out = []
+    for ix, iy in [(0, 0), (nx - 1, 0), (0, ny - 1), (nx - 1, ny - 1), (nx // 3, ny // 2),
+                   (nx // 2, ny // 3), (1, 2), (nx - 2, ny // 5)]:
+        if np.isfinite(h[ix, iy]) and (ix, iy) not in [(a, b) for a, b, _ in out]:
+            out.append((ix, iy, float(h[ix, iy])))
+    return out
+
+
+def points_entry(name, nx, ny, lx, ly, h, note):
+    """Grid, sizes, undefined points and heights as read, h[ix, iy] in m."""
+    h = np.asarray(h, dtype=float)
+    ok = np.isfinite(h)
+    a = np.where(ok, np.abs(h), 0.0)
+    ix, iy = np.meshgrid(np.arange(nx), np.arange(ny), indexing="ij")
+    pts = ", ".join(f"({i}, {j}, {v!r})" for i, j, v in samples(nx, ny, h))
+    return f"""    // {name}: {note}
+    Points {{
+        file: "{name}",
+        nx: {nx},
+        ny: {ny},
+        lx: {float(lx)!r},
+        ly: {float(ly)!r},
+        undefined: {int((~ok).sum())},
+        sum_abs: {float(a.sum())!r},
+        sum_ix_abs: {float((ix * a).sum())!r},
+        sum_iy_abs: {float((iy * a).sum())!r},
+        at: &[{pts}],
+    }},
+"""
+
+
+def st_points(path, name):
+    """Points of a file as SurfaceTopography reads it, in m."""
+    t = read_topography(path(name))
+    f = UNITS[t.unit]
+    h = np.ma.filled(np.ma.masked_array(t.heights(), dtype=float), np.nan) * f
+    nx, ny = t.nb_grid_pts
+    lx, ly = (float(x) * f for x in t.physical_sizes)
+    return t, points_entry(name, nx, ny, lx, ly, h,
+                           f"SurfaceTopography {type(t).__name__}, unit {t.unit} → m")
+
+
+def gwyfile_points(path, name, z, xy):
+    """Points of a .gwy without units read by gwyfile, in the units given."""
+    import gwyfile
+
+    d = gwyfile.load(path(name))["/0/data"]
+    nx, ny = d["xres"], d["yres"]
+    h = np.asarray(d.data, dtype=float).reshape(ny, nx).T * z
+    return points_entry(name, nx, ny, d["xreal"] * xy, d["yreal"] * xy, h,
+                        f"gwyfile {gwyfile.__version__} (SurfaceTopography reads no channel "
+                        f"without a unit), heights × {z!r}, sizes × {xy!r}")
+
+
+def write_gwyfile_mask(path):
+    """gwyfile-mask.gwy from matrix-4.txt with gwyfile's writer (module docs)."""
+    from gwyfile.objects import GwyContainer, GwyDataField, GwySIUnit
+
+    if os.path.exists(path("gwyfile-mask.gwy")):
+        return
+    t = read_topography(path("matrix-4.txt"))
+    rows = np.array(t.heights(), dtype=float).T.copy()  # [iy, ix]: x fastest
+    mask = np.zeros_like(rows)
+    mask[100:110, 20:35] = 1.0
+    mask.flat[::101] = 1.0
+    lx, ly = t.physical_sizes
+    unit = lambda u: GwySIUnit(unitstr=u)  # noqa: E731
+    c = GwyContainer()
+    c["/0/data/title"] = "Phase"
+    c["/0/data"] = GwyDataField(np.sin(rows * 1e7), xreal=lx, yreal=ly,
+                                si_unit_xy=unit("m"), si_unit_z=unit("deg"))
+    c["/1/data/title"] = "Height"
+    c["/1/data"] = GwyDataField(rows * 1e6, xreal=lx, yreal=ly,
+                                si_unit_xy=unit("m"), si_unit_z=unit("µm"))
+    c["/1/mask"] = GwyDataField(mask, xreal=lx, yreal=ly)
+    c.tofile(path("gwyfile-mask.gwy"))
+
+
+def write_st_mask_nc(path):
+    """st-mask.nc: matrix-4.txt with 378 undefined points, SurfaceTopography's to_netcdf."""
+    if os.path.exists(path("st-mask.nc")):
+        return
+    t = read_topography(path("matrix-4.txt"))
+    h = np.array(t.heights(), dtype=float)  # [ix, iy]
+    undefined = np.zeros(h.shape, dtype=bool)
+    undefined[20:32, 100:112] = True
+    undefined.flat[::97] = True
+    u = Topography(np.ma.masked_array(h * 1e6, mask=undefined),
+                   tuple(x * 1e6 for x in t.physical_sizes), unit="µm")
+    u.to_netcdf(path("st-mask.nc"))
+
+
 def uniform_metres(t):
     """A uniform line scan in metres from what SurfaceTopography read."""
     f = UNITS[t.unit]
@@ -141,7 +243,20 @@ def main():
     path = lambda name: os.path.join(DATA, name)  # noqa: E731
     undefined = write_masked_x3p(path)
     assert undefined == 378, undefined
+    write_gwyfile_mask(path)
     maps = []
+    binary_maps = []
+    points = []
+    write_st_mask_nc(path)
+    for name in ["gwyfile-mask.gwy", "sur-2.sur", "sur-3.sur", "metropro-1.dat", "nc-1.nc",
+                 "st-mask.nc"]:
+        t, entry = st_points(path, name)
+        points.append(entry)
+        # sur-3: 89 % undefined; nc-1: a plane (its detrended rms is rounding
+        # noise, 2e-24 m): grid, sizes and heights only
+        if name not in ("sur-3.sur", "nc-1.nc"):
+            binary_maps.append(map_entry(name, metres(t)))
+    points.append(gwyfile_points(path, "gwyfile-test.gwy", 1e-9, 1e-6))
     for name in ["gwyddion-export-english.txt", "gwyddion-export-german.txt",
                  "txt_example.txt", "matrix-4.txt", "xyz-1.txt", "xyz-2.txt",
                  "ISO5436-sample1_bin.x3p", "ISO5436-sample4_bin.x3p",
@@ -149,6 +264,7 @@ def main():
         t = read_topography(path(name))
         assert UNITS[t.unit] == 1.0, (name, t.unit)
         maps.append(map_entry(name, t))
+    maps += binary_maps  # after the text and x3p files (MAPS[0] is used alone)
 
     profiles = []
     for name in ["opdx-3.txt", "xy-4.txt"]:
@@ -204,8 +320,28 @@ pub struct Profile {{
     pub c1d_st: &'static [f64],
 }}
 
+/// A file's grid, sizes and heights as read (m), before any conditioning.
+pub struct Points {{
+    pub file: &'static str,
+    pub nx: usize,
+    pub ny: usize,
+    pub lx: f64,
+    pub ly: f64,
+    /// Undefined points (mask, missing-data marker).
+    pub undefined: usize,
+    /// Σ|h|, Σ ix·|h|, Σ iy·|h| over the defined points (orientation).
+    pub sum_abs: f64,
+    pub sum_ix_abs: f64,
+    pub sum_iy_abs: f64,
+    /// Heights h[ix, iy] at a few defined points.
+    pub at: &'static [(usize, usize, f64)],
+}}
+
 pub const MAPS: &[Map] = &[
 {"".join(maps)}];
+
+pub const POINTS: &[Points] = &[
+{"".join(points)}];
 
 pub const PROFILES: &[Profile] = &[
 {"".join(profiles)}];

@@ -69,9 +69,12 @@ mod cli {
     /// η of `persson bem hertz --grid 64` (free, ε ≤ 1e-10), measured.
     const HERTZ_ETA_64: f64 = 0.01127897643;
 
-    /// Relative tolerance on the pinned η: the value above is printed to 10
-    /// digits; the solve is deterministic.
-    const HERTZ_ETA_REL_TOL: f64 = 1e-8;
+    /// Relative tolerance on the pinned η (measured with the plain solver of
+    /// 0.3): the preconditioned solver of 0.4, converged to the same ε ≤ 1e-10
+    /// from another path, gives 0.01127897662 (1.7e-8 relative); ε bounds the
+    /// gap, so two converged solves agree in η to ~1e-8, not to the 10 digits
+    /// printed.
+    const HERTZ_ETA_REL_TOL: f64 = 5e-8;
 
     #[test]
     fn help_shows_readable_defaults_and_the_names_table_flags() {

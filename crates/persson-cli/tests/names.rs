@@ -148,6 +148,9 @@ fn commands(out_dir: &Path) -> Vec<Vec<Vec<String>>> {
         "compare --example --grid 32 --levels 2 --yield-stress 6e6",
         "compare ensemble --example --grid 32 --levels 2 --seeds 2 --pressure 1e6 --threads 1",
         "spectrum --surface tests/reference/data/map_a.npy --pixel-size 1e-6",
+        "spectrum --surface tests/reference/data/map_a.npy --surface tests/reference/data/map_b.npy --pixel-size 4e-6,1e-6",
+        "spectrum --surface tests/reference/data/map_a.npy --surface tests/reference/data/map_b.npy --pixel-size 1e-6,1e-3",
+        "area --example --psd2 tests/reference/data/psd_second_body.csv",
         "compare --surface tests/reference/data/map_b.npy --pixel-size 2e-6 --periodic --contact-modulus 1e9",
         "report stability",
     ]

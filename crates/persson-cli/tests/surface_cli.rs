@@ -125,6 +125,7 @@ fn spectrum_of_the_reference_maps_is_the_library_analysis() {
             ("rms_height", a.rms_height),
             ("rms_slope", a.rms_slope),
             ("rms_curvature", a.rms_curvature),
+            ("mean_curvature_rms", a.mean_curvature_rms),
             ("hurst", a.hurst.unwrap()),
             ("hurst_error", a.hurst_error.unwrap()),
             ("q_min", a.q_min),
@@ -628,13 +629,13 @@ fn instrument_files_through_the_command_line() {
     t.push("--transpose");
     assert_eq!(json(&t)["shape"], serde_json::json!([3, 2]));
 
-    let sur = dir().join("scan.sur");
-    std::fs::write(&sur, b"DIGITAL SURF\0\0\0").unwrap();
+    let sur = dir().join("scan.plu");
+    std::fs::write(&sur, b"anything\0\0\0").unwrap();
     let (code, out, err) = persson(&["spectrum", "--surface", &sur.to_string_lossy()]);
     assert_eq!((code, out.as_str()), (2, ""), "{err}");
     assert_eq!(err.lines().count(), 1, "{err}");
     assert!(
-        err.contains("unsupported format (.sur): persson reads")
+        err.contains("unsupported format (.plu): persson reads")
             && err.contains("export to GSF or x3p with Gwyddion or SurfaceTopography"),
         "{err}"
     );

@@ -30,6 +30,10 @@ pub const HIGH_PRESSURE_RATIO: f64 = 0.1;
 /// An rms slope above this is warned of ([`Warning::SteepSlope`]).
 pub const STEEP_SLOPE: f64 = 1.0;
 
+/// The bands of two rough bodies' spectra further apart than this factor
+/// (at either end) are warned of ([`Warning::SumBands`]).
+pub const SUM_BAND_RATIO: f64 = 10.0;
+
 /// One remark on the input of a calculation; it never changes a number.
 ///
 /// Serialised as `{"kind": …, <its fields>, "message": <its text>}`, the kind
@@ -175,6 +179,25 @@ pub enum Warning {
         /// h''_rms over the band, 1/m.
         rms_curvature: f64,
     },
+    /// The spectra of two (or more) rough bodies cover bands more than
+    /// [`SUM_BAND_RATIO`] apart: outside their common band the sum is one
+    /// body's roughness alone.
+    SumBands {
+        /// Each body's band (q_min, q_max), 1/m.
+        bands: Vec<(f64, f64)>,
+        /// The largest ratio of the lower or of the upper ends.
+        ratio: f64,
+    },
+    /// Measurements of one surface whose reliable bands do not overlap: the
+    /// combined spectrum is interpolated across the gap.
+    MeasurementGap {
+        /// The measurement below the gap (its file).
+        below: PathBuf,
+        /// The measurement above it.
+        above: PathBuf,
+        /// The gap (q_max of the one below, q_min of the one above), 1/m.
+        q_range: (f64, f64),
+    },
     /// The BEM's preconditioned solver stalled (ε not falling) at these
     /// nominal pressures and the plain Polonsky–Keer loop finished the solves:
     /// the same answer to the same tolerance, in more time.
@@ -248,6 +271,16 @@ impl Warning {
         (max > zeta_max * (1.0 + 1e-12)).then_some(Warning::ZetaBeyondBand {
             zeta: max,
             zeta_max,
+        })
+    }
+
+    /// [`Warning::SumBands`] when the parts' bands are more than
+    /// [`SUM_BAND_RATIO`] apart.
+    pub fn sum_bands(sum: &persson::spectrum::Sum) -> Option<Self> {
+        let ratio = sum.band_mismatch();
+        (ratio > SUM_BAND_RATIO).then(|| Warning::SumBands {
+            bands: sum.bands(),
+            ratio,
         })
     }
 
@@ -422,6 +455,32 @@ impl fmt::Display for Warning {
                 n(*adhesion_range),
                 n(16.0 / 3.0 * rms_slope * rms_slope / rms_curvature)
             ),
+            Warning::SumBands { bands, ratio } => {
+                let b: Vec<String> = bands
+                    .iter()
+                    .map(|(a, b)| format!("{} … {}", n(*a), n(*b)))
+                    .collect();
+                write!(
+                    f,
+                    "the rough bodies' spectra cover bands q = {} 1/m, a factor {} apart: \
+                     outside their common band the summed roughness is one body's alone",
+                    b.join(" and "),
+                    n(*ratio)
+                )
+            }
+            Warning::MeasurementGap {
+                below,
+                above,
+                q_range,
+            } => write!(
+                f,
+                "the reliable bands of {} and {} do not overlap: no measurement covers \
+                 q = {} … {} 1/m, where the combined spectrum is interpolated (power law)",
+                below.display(),
+                above.display(),
+                n(q_range.0),
+                n(q_range.1)
+            ),
             Warning::PreconditionerFallback {
                 nominal_pressure,
                 iterations,
@@ -541,6 +600,7 @@ impl Warning {
     /// `rising_spectrum`, `clipped_band`, `map_not_periodic`, `resampled`,
     /// `hurst_not_fitted`, `hurst_out_of_range`, `bins_left_out`,
     /// `preconditioner_fallback`, `master_curve_range`, `friction_not_converged`, `shift_table_extended`,
+    /// `sum_bands`, `measurement_gap`,
     /// `beyond_pull_off`, `adhesion_tolerance_not_met`, `long_adhesion_range`).
     pub fn kind(&self) -> &'static str {
         match self {
@@ -559,6 +619,8 @@ impl Warning {
             Warning::BeyondPullOff { .. } => "beyond_pull_off",
             Warning::AdhesionToleranceNotMet { .. } => "adhesion_tolerance_not_met",
             Warning::LongAdhesionRange { .. } => "long_adhesion_range",
+            Warning::SumBands { .. } => "sum_bands",
+            Warning::MeasurementGap { .. } => "measurement_gap",
             Warning::PreconditionerFallback { .. } => "preconditioner_fallback",
             Warning::MasterCurveRange { .. } => "master_curve_range",
             Warning::FrictionNotConverged { .. } => "friction_not_converged",

@@ -3,29 +3,21 @@
 
 use std::path::Path;
 
-use super::{gsf, Format};
+use super::{gsf, gwy, metropro, netcdf, sur, Format};
 use crate::error::{Error, Result};
 
 /// Extensions of binary instrument formats persson does not read.
 const UNSUPPORTED: &[&str] = &[
-    "sur", "plu", "plux", "datx", "opd", "opdx", "di", "spm", "ibw", "mi", "nid", "frt", "al3d",
-    "bcrf", "bcr", "mnt", "lext", "vk3", "vk4", "vk6", "vk7", "zon", "zmg", "os3d", "oir", "poir",
-    "jpk", "gwy", "tmd", "top", "nms", "stp", "nc", "h5", "hdf5", "mat", "tif", "tiff", "sdf",
-    "ezd", "mdt", "xlsx", "xls", "zip", "gz", "hgt", "dzi", "qep", "nmm", "ps", "wsxm",
+    "plu", "plux", "datx", "opd", "opdx", "di", "spm", "ibw", "mi", "nid", "frt", "al3d", "bcrf",
+    "bcr", "mnt", "lext", "vk3", "vk4", "vk6", "vk7", "zon", "zmg", "os3d", "oir", "poir", "jpk",
+    "tmd", "top", "nms", "stp", "h5", "hdf5", "mat", "tif", "tiff", "sdf", "ezd", "mdt", "xlsx",
+    "xls", "zip", "gz", "hgt", "dzi", "qep", "nmm", "ps", "wsxm",
 ];
 
 /// Leading bytes of binary formats persson does not read, with their names.
 const MAGICS: &[(&[u8], &str)] = &[
-    (b"\x88\x1b\x03\x6f", "Zygo MetroPro .dat"),
-    (b"\x88\x1b\x03\x70", "Zygo MetroPro .dat"),
-    (b"\x88\x1b\x03\x71", "Zygo MetroPro .dat"),
-    (b"DIGITAL SURF", "Digital Surf .sur"),
-    (b"DSCOMPRESSED", "Digital Surf .sur"),
-    (b"GWYP", "Gwyddion .gwy"),
-    (b"GWYQ", "Gwyddion .gwy"),
+    (b"GWYO", "Gwyddion 1 .gwy"),
     (b"\x89HDF\r\n\x1a\n", "HDF5"),
-    (b"CDF\x01", "NetCDF"),
-    (b"CDF\x02", "NetCDF"),
     (b"II*\x00", "TIFF"),
     (b"MM\x00*", "TIFF"),
     (b"MATLAB", "MATLAB .mat"),
@@ -34,9 +26,10 @@ const MAGICS: &[(&[u8], &str)] = &[
 ];
 
 /// What persson reads, for the error on a format it does not.
-pub(crate) const READS: &str = "persson reads .npy, text (a matrix, XYZ triples or a line scan, \
-     in .txt, .csv, .dat, .asc or .xyz), Gwyddion .gsf and ISO 25178-72 .x3p; export to GSF or \
-     x3p with Gwyddion or SurfaceTopography";
+pub(crate) const READS: &str = "persson reads .npy, text (a matrix, XYZ triples or a line \
+     scan, in .txt, .csv, .dat, .asc or .xyz), Gwyddion .gsf and .gwy, Digital Surf .sur, \
+     Zygo MetroPro .dat, NetCDF .nc and ISO 25178-72 .x3p; export to GSF or x3p with Gwyddion or \
+     SurfaceTopography";
 
 fn unsupported(path: &Path, what: &str) -> Error {
     Error::parse(path, 0, 0, format!("unsupported format ({what}): {READS}"))
@@ -58,6 +51,9 @@ pub(crate) fn format(path: &Path, bytes: &[u8]) -> Result<Format> {
         Some("gsf") => return Ok(Format::Gsf),
         Some("x3p") => return Ok(Format::X3p),
         Some("xyz") => return Ok(Format::Xyz),
+        Some("gwy") => return Ok(Format::Gwy),
+        Some("sur") => return Ok(Format::Sur),
+        Some("nc") => return Ok(Format::NetCdf),
         Some(e) if UNSUPPORTED.contains(&e) => return Err(unsupported(path, &format!(".{e}"))),
         _ => {}
     }
@@ -66,6 +62,18 @@ pub(crate) fn format(path: &Path, bytes: &[u8]) -> Result<Format> {
     }
     if bytes.starts_with(gsf::MAGIC) {
         return Ok(Format::Gsf);
+    }
+    if metropro::MAGICS.iter().any(|m| bytes.starts_with(m)) {
+        return Ok(Format::MetroPro);
+    }
+    if bytes.starts_with(netcdf::MAGIC) {
+        return Ok(Format::NetCdf);
+    }
+    if bytes.starts_with(gwy::MAGIC) {
+        return Ok(Format::Gwy);
+    }
+    if bytes.starts_with(sur::MAGIC) || bytes.starts_with(sur::MAGIC_COMPRESSED) {
+        return Ok(Format::Sur);
     }
     if bytes.starts_with(b"PK\x03\x04") {
         return Ok(Format::X3p);

@@ -200,6 +200,7 @@ pub(crate) fn parse(path: &Path, r: &Rows) -> Result<Raw> {
         height_unit: h_unit,
         layout: Layout::LineScans,
         notes,
+        require_units: false,
     })
 }
 

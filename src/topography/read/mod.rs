@@ -8,6 +8,10 @@
 //! | line scan: x, h (or index, x, h; or x, h, valid) | two columns, or three as shown | from x | column headings else the caller | `nan`, valid = 0 |
 //! | Gwyddion Simple Field | `.gsf`, or its first line | `XReal`, `YReal` | `ZUnits` (default: the caller's) | NaN |
 //! | ISO 25178-72 XML 3D surface profile | `.x3p`, or a zip archive | `CX`/`CY` increments | m | NaN, `ValidPointsLink` mask |
+//! | Gwyddion native (first height channel) | `.gwy`, or `GWYP` | `xreal`, `yreal` | `si_unit_z` (empty: the caller's, required) | `/N/mask` > 0.5 |
+//! | Digital Surf | `.sur`, or `DIGITAL SURF` | `nx·Δx`, `ny·Δy` | the unit of the scaled z | z_min − 2 with "special points" |
+//! | Zygo MetroPro phase map | its magic (any extension, `.dat`) | `width·Δ`, `height·Δ` (Δ = 0: the caller's) | m | raw ≥ 2147483640 |
+//! | NetCDF classic, `heights(x, y)` or `heights(x)` | `.nc`, or `CDF` | `length` of `x`, `y` (absent: the caller's) | `unit` of `heights` (absent: of `x`) | `mask` ≠ 0, `_FillValue` |
 //!
 //! # Axis order
 //! A row of a `.npy` array or text matrix runs along x: the array of
@@ -44,17 +48,23 @@
 //! one of them but not the other needs the other from the caller.
 //!
 //! # Unsupported formats
-//! Binary instrument formats (`.sur`, `.plu`, `.datx`, `.opd`, MetroPro
-//! `.dat`, …) are an error that says so and how to convert them.
+//! Binary instrument formats not in the table (`.plu`, `.datx`, `.opd`,
+//! `.vk4`, HDF5, …) are an error that names the format and says how to
+//! convert them.
 //!
 //! Every error is an [`Error::Parse`] naming the file (and line where it
 //! helps); undefined points are an error with their count unless
 //! [`ReadOptions::fill_undefined`] asks for harmonic interpolation.
 
+mod bin;
 mod detect;
 mod gsf;
+mod gwy;
 mod header;
 mod line;
+mod metropro;
+mod netcdf;
+mod sur;
 mod text;
 mod units;
 mod x3p;
@@ -93,6 +103,14 @@ pub enum Format {
     X3p,
     /// Line scan (x, h).
     LineScan,
+    /// Gwyddion native `.gwy`.
+    Gwy,
+    /// Digital Surf `.sur`.
+    Sur,
+    /// Zygo MetroPro `.dat`.
+    MetroPro,
+    /// NetCDF classic `.nc` (SurfaceTopography's conventions).
+    NetCdf,
 }
 
 /// How to read a topography.
@@ -145,6 +163,10 @@ pub(crate) struct Raw {
     pub height_unit: Unit,
     pub layout: Layout,
     pub notes: Vec<Note>,
+    /// The file states that its numbers have no unit (Gwyddion's empty
+    /// unit): the caller must give the units it leaves out, never metres
+    /// by default.
+    pub require_units: bool,
 }
 
 impl Raw {
@@ -158,6 +180,7 @@ impl Raw {
             height_unit: Unit::Unstated,
             layout: Layout::Map,
             notes: Vec::new(),
+            require_units: false,
         }
     }
 }
@@ -196,11 +219,55 @@ pub fn read(path: &Path, options: &ReadOptions) -> Result<Topography> {
 /// let e = from_bytes(Path::new("flat.txt"), b"1 1 1\n1 1 1\n", &o).unwrap_err();
 /// assert!(e.to_string().starts_with("flat.txt") && e.to_string().contains("not all equal"));
 /// // A binary format persson does not read says so.
-/// let e = from_bytes(Path::new("scan.sur"), b"DIGITAL SURF\0\0", &o).unwrap_err();
-/// assert!(e.to_string().contains("unsupported format (.sur)"));
+/// let e = from_bytes(Path::new("scan.plu"), b"anything\0\0", &o).unwrap_err();
+/// assert!(e.to_string().contains("unsupported format (.plu)"));
 /// # Ok(()) }
 /// ```
 pub fn from_bytes(path: &Path, bytes: &[u8], options: &ReadOptions) -> Result<Topography> {
+    finish(path, parse(path, bytes, options)?, options)
+}
+
+/// A file's grid, size and heights as read: in metres, NaN where the file
+/// marks a point undefined, before any filling, transposing or checks of
+/// the heights (what [`read()`] starts from).
+#[derive(Debug, Clone, PartialEq)]
+pub struct AsRead {
+    /// Points along x (a row).
+    pub nx: usize,
+    /// Rows (1 for a line scan).
+    pub ny: usize,
+    /// Physical size along x, m.
+    pub lx: f64,
+    /// Physical size along y, m (0 for a line scan).
+    pub ly: f64,
+    /// Heights, m, x fastest: `heights[iy·nx + ix]`; NaN where undefined.
+    pub heights: Vec<f64>,
+}
+
+/// The heights of a file as read ([`AsRead`]), for inspecting undefined
+/// points and comparing with another reader.
+///
+/// # Errors
+/// As [`read()`], except that undefined points and a constant map are not
+/// errors.
+pub fn as_read(path: &Path, options: &ReadOptions) -> Result<AsRead> {
+    let bytes = crate::io::read(path)?;
+    let mut raw = parse(path, &bytes, options)?;
+    let bad = |m: String| Error::parse(path, 0, 0, m);
+    let (z, xy) = unit_factors(&raw, options).map_err(bad)?;
+    raw.heights.iter_mut().for_each(|h| *h *= z);
+    let (lx, ly) = sizes(&raw, xy, options).map_err(bad)?;
+    Ok(AsRead {
+        nx: raw.nx,
+        ny: raw.ny,
+        lx,
+        ly,
+        heights: raw.heights,
+    })
+}
+
+/// The format's parser on `bytes`.
+fn parse(path: &Path, bytes: &[u8], options: &ReadOptions) -> Result<Raw> {
     let format = match options.format {
         Some(f) => f,
         None => detect::format(path, bytes)?,
@@ -215,8 +282,12 @@ pub fn from_bytes(path: &Path, bytes: &[u8], options: &ReadOptions) -> Result<To
         Format::Gsf => gsf::parse(path, bytes)?,
         Format::X3p => x3p::parse(path, bytes)?,
         Format::LineScan => line::parse(path, &crate::io::text::rows(path, bytes)?)?,
+        Format::Gwy => gwy::parse(path, bytes)?,
+        Format::Sur => sur::parse(path, bytes)?,
+        Format::MetroPro => metropro::parse(path, bytes)?,
+        Format::NetCdf => netcdf::parse(path, bytes)?,
     };
-    finish(path, raw, options)
+    Ok(raw)
 }
 
 /// Units, sizes, undefined points, transpose, validation; every error
@@ -279,6 +350,9 @@ fn unit_factors(raw: &Raw, options: &ReadOptions) -> std::result::Result<(f64, f
                     } else {
                         "heights"
                     }
+                )),
+                Unit::Unstated if raw.require_units => Err(format!(
+                    "the file states no unit of the {what} (an empty unit): give the {flag}"
                 )),
                 Unit::Unstated => Ok(1.0),
             },

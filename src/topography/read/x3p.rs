@@ -335,5 +335,6 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
             Layout::Map
         },
         notes: Vec::new(),
+        require_units: false,
     })
 }

@@ -189,5 +189,6 @@ pub(crate) fn parse(path: &Path, rows: &Rows) -> Result<Raw> {
         height_unit: z_unit,
         layout: Layout::Map,
         notes: Vec::new(),
+        require_units: false,
     })
 }

@@ -59,6 +59,52 @@ pub struct SpectrumArgs {
     /// Side L (m) of the periodic surface, for --psd-convention grid.
     #[arg(long, requires = "psd", allow_hyphen_values = true, value_parser = number)]
     pub psd_size: Option<f64>,
+    #[command(flatten)]
+    pub second: SecondBodyArgs,
+}
+
+/// The roughness of a second rough body: the contact sees C = C1 + C2.
+#[derive(clap::Args, Debug, Clone, Default)]
+pub struct SecondBodyArgs {
+    /// Spectrum of the second rough body (CSV q, C as --psd): the contact's
+    /// roughness is the sum C = C1 + C2.
+    #[arg(long, conflicts_with = "surface2")]
+    pub psd2: Option<PathBuf>,
+    /// Convention of the --psd2 file.
+    #[arg(long, value_enum, default_value_t = ConventionName::Persson, requires = "psd2")]
+    pub psd2_convention: ConventionName,
+    /// Measured surface of the second rough body (its isotropic spectrum, the
+    /// default conditioning): the contact's roughness is the sum C = C1 + C2.
+    #[arg(long)]
+    pub surface2: Option<PathBuf>,
+    /// Pixel size Δ of the --surface2 map (files that store their size need none), m.
+    #[arg(long, requires = "surface2", allow_hyphen_values = true, value_parser = number)]
+    pub pixel_size2: Option<f64>,
+}
+
+impl SecondBodyArgs {
+    /// `first` alone, or the sum of `first` and the second body's spectrum.
+    pub fn with(&self, first: SpectrumSpec) -> anyhow::Result<SpectrumSpec> {
+        let second = if let Some(file) = &self.psd2 {
+            if self.psd2_convention == ConventionName::Grid {
+                bail!("--psd2-convention grid is not supported: convert the file to persson");
+            }
+            SpectrumSpec::Tabulated {
+                file: file.clone(),
+                convention: self.psd2_convention,
+                size: None,
+            }
+        } else if let Some(file) = &self.surface2 {
+            let mut m = persson_studies::scene::HeightMapSpec::new(file.clone());
+            m.pixel_size = self.pixel_size2;
+            SpectrumSpec::HeightMap(m)
+        } else {
+            return Ok(first);
+        };
+        Ok(SpectrumSpec::Sum {
+            parts: vec![first, second],
+        })
+    }
 }
 
 impl SpectrumArgs {
@@ -75,6 +121,12 @@ impl SpectrumArgs {
 
     /// The scene file's spectrum entry for these flags.
     pub fn spec(&self) -> anyhow::Result<SpectrumSpec> {
+        let first = self.spec_first()?;
+        self.second.with(first)
+    }
+
+    /// The first body's spectrum entry (without `--psd2`/`--surface2`).
+    fn spec_first(&self) -> anyhow::Result<SpectrumSpec> {
         if let Some(path) = &self.psd {
             if self.psd_convention == ConventionName::Grid && self.psd_size.is_none() {
                 bail!("--psd-convention grid needs --psd-size L (m)");
@@ -253,8 +305,8 @@ pub fn measured_contact(
 /// The spectrum entry: the measured surface's (its band cut at `--q-s`) or
 /// the spectrum flags'.
 pub fn spectrum_spec(s: &SpectrumArgs, h: &MeasuredArgs) -> anyhow::Result<SpectrumSpec> {
-    match h.spec(s.q_s)? {
-        Some(map) => Ok(SpectrumSpec::HeightMap(map)),
+    match h.spectrum_spec(s.q_s)? {
+        Some(spec) => s.second.with(spec),
         None => s.spec(),
     }
 }

@@ -6,7 +6,9 @@
 use std::path::PathBuf;
 
 use anyhow::bail;
-use persson_studies::scene::{DetrendName, HeightMapSpec, LengthUnitName, Sides, WindowName};
+use persson_studies::scene::{
+    DetrendName, HeightMapSpec, LengthUnitName, Sides, SpectrumSpec, WindowName,
+};
 
 /// A measured surface as the spectrum (`--surface FILE` and its conditioning),
 /// flattened next to [`SpectrumArgs`]; the scene's `height_map` spectrum.
@@ -14,20 +16,30 @@ use persson_studies::scene::{DetrendName, HeightMapSpec, LengthUnitName, Sides, 
 pub struct MeasuredArgs {
     /// Measured surface whose isotropic spectrum is used (q_l and q_s from the map):
     /// .npy, text matrix, .xyz, Gwyddion .gsf, ISO 25178-72 .x3p, or two-column line scans.
+    /// Repeat it for measurements of one surface at different scales: their spectra
+    /// are combined (mode-weighted mean over the overlaps of their reliable bands).
     #[arg(long, conflicts_with_all = ["hurst", "q_l", "q_r", "amplitude", "psd", "example"])]
-    pub surface: Option<PathBuf>,
-    /// Pixel size Δ of the --surface map (square pixels), m.
+    pub surface: Vec<PathBuf>,
+    /// Pixel size Δ of the --surface map (square pixels), m; with several
+    /// --surface, one value for all or one per surface (comma-separated or repeated).
     #[arg(
         long,
         requires = "surface",
         conflicts_with = "size",
+        value_delimiter = ',',
         allow_hyphen_values = true,
         value_parser = super::number::number,
     )]
-    pub pixel_size: Option<f64>,
+    pub pixel_size: Vec<f64>,
+    /// Tip radius R of the scanning probe that measured the --surface, m: the band
+    /// ends where the measured curvature is sharper than the tip (safety factor 1/2);
+    /// with several --surface, one value for all or one per surface.
+    #[arg(long, requires = "surface", value_delimiter = ',', allow_hyphen_values = true, value_parser = super::number::number)]
+    pub tip_radius: Vec<f64>,
     /// Physical size LX[,LY] of the --surface map, m (files that store it need none; a
     /// given one is checked against the file's). A row of a .npy or text matrix runs
     /// along x: LX is along a row, the array of shape (ny, nx) has nx points along x.
+    /// With several --surface, one LX per surface (square pixels).
     #[arg(
         long,
         requires = "surface",
@@ -64,11 +76,54 @@ impl MeasuredArgs {
     /// The scene's `height_map` entry for these flags (`q_max`: the band's
     /// upper end, `--q-s` or `spectrum --q-max`), if `--surface` is given.
     pub fn spec(&self, q_max: Option<f64>) -> anyhow::Result<Option<HeightMapSpec>> {
-        let Some(file) = self.surface.clone() else {
-            return Ok(None);
+        match self.surface.len() {
+            0 => Ok(None),
+            1 => self.one(0, q_max).map(Some),
+            n => bail!("{n} --surface files: this command takes one"),
+        }
+    }
+
+    /// The spectrum entry: one `height_map`, or `multi_scale` for several
+    /// --surface; `None` without --surface.
+    pub fn spectrum_spec(&self, q_max: Option<f64>) -> anyhow::Result<Option<SpectrumSpec>> {
+        if self.surface.len() < 2 {
+            return Ok(self.spec(q_max)?.map(SpectrumSpec::HeightMap));
+        }
+        let n = self.surface.len();
+        for (flag, given) in [
+            ("--pixel-size", self.pixel_size.len()),
+            ("--tip-radius", self.tip_radius.len()),
+            ("--size", self.size.len()),
+        ] {
+            if given > 1 && given != n || (flag == "--size" && given == 1) {
+                bail!(
+                    "{flag}: {given} values for {n} --surface files: give one per surface{}",
+                    if flag == "--size" {
+                        " (LX each)"
+                    } else {
+                        " or one for all"
+                    }
+                );
+            }
+        }
+        let measurements = (0..n)
+            .map(|i| self.one(i, q_max))
+            .collect::<anyhow::Result<Vec<_>>>()?;
+        Ok(Some(SpectrumSpec::MultiScale { measurements }))
+    }
+
+    /// The `i`-th surface's entry.
+    fn one(&self, i: usize, q_max: Option<f64>) -> anyhow::Result<HeightMapSpec> {
+        let file = self.surface[i].clone();
+        let pick = |v: &[f64]| match v.len() {
+            0 => None,
+            1 => Some(v[0]),
+            _ => v.get(i).copied(),
         };
+        let several = self.surface.len() > 1;
         let size = match self.size[..] {
             [] => None,
+            _ if several => self.size.get(i).map(|&lx| Sides::One(lx)),
             [lx] => Some(Sides::One(lx)),
             [lx, ly] => Some(Sides::Two([lx, ly])),
             _ => bail!(
@@ -76,9 +131,10 @@ impl MeasuredArgs {
                 self.size.len()
             ),
         };
-        Ok(Some(HeightMapSpec {
+        Ok(HeightMapSpec {
             size,
-            pixel_size: self.pixel_size,
+            pixel_size: pick(&self.pixel_size),
+            tip_radius: pick(&self.tip_radius),
             periodic: self.periodic,
             detrend: self.detrend,
             window: self.window,
@@ -88,6 +144,6 @@ impl MeasuredArgs {
             lateral_unit: self.lateral_unit,
             transpose: self.transpose,
             ..HeightMapSpec::new(file)
-        }))
+        })
     }
 }

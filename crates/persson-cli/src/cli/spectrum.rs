@@ -38,6 +38,9 @@ pub struct Args {
 /// Run `persson spectrum`.
 pub fn run(a: Args) -> anyhow::Result<()> {
     a.plot.check()?;
+    if a.measured.surface.len() > 1 {
+        return multi_scale(&a);
+    }
     if let Some(map) = a.measured.spec(a.q_max)? {
         return measured(&a, &map);
     }
@@ -87,4 +90,30 @@ fn measured(_: &Args, map: &persson_studies::scene::HeightMapSpec) -> anyhow::Re
         "--surface {}: this persson was built without the `topography` feature",
         map.file.display()
     )
+}
+
+/// Several `--surface`: each measurement's band and the combined spectrum.
+fn multi_scale(a: &Args) -> anyhow::Result<()> {
+    use persson_studies::scene::SpectrumSpec;
+    let Some(SpectrumSpec::MultiScale { measurements }) = a.measured.spectrum_spec(a.q_max)? else {
+        anyhow::bail!("several --surface files expected");
+    };
+    if let Some(path) = &a.psd_out {
+        persson::io::check_writable(path)?;
+    }
+    let report = persson_studies::scene::multiscale::multi_scale(&measurements)?;
+    #[cfg(feature = "plot")]
+    a.plot
+        .draw(|| persson_studies::scene::plot::multi_scale(&report))?;
+    if let Some(path) = &a.psd_out {
+        use persson::io::csv_number as num;
+        let mut text = String::from(
+            "# combined isotropic power spectrum, Persson's normalisation: q (1/m, angular), c (m^4)\nq,c\n",
+        );
+        for (q, c) in report.q.iter().zip(&report.c) {
+            text.push_str(&format!("{},{}\n", num(*q), num(*c)));
+        }
+        persson::io::write_atomic(path, text.as_bytes())?;
+    }
+    print_warned(&report, &report.warnings, &a.format)
 }

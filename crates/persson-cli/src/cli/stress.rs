@@ -144,7 +144,7 @@ pub fn run(a: Args) -> anyhow::Result<()> {
     {
         return physical(&a);
     }
-    if a.spectrum.is_given() || a.measured.surface.is_some() || !a.zeta.is_empty() {
+    if a.spectrum.is_given() || !a.measured.surface.is_empty() || !a.zeta.is_empty() {
         anyhow::bail!(
             "a spectrum, --surface or --zeta needs a physical contact: --ball-radius R --load F, \
              --cylinder-radius R --load-per-length F, --flat --pressure P, or --start S \

@@ -97,10 +97,20 @@ impl HeightMapSpec {
     #[cfg(feature = "topography")]
     pub fn analyse(&self) -> Result<Analysis> {
         let t = self.read()?;
+        let tip = match self.tip_radius {
+            Some(r) => topo::tip_radius_cutoff(&t, r, topo::TIP_SAFETY_FACTOR)
+                .map_err(|e| in_file(&self.file, e))?,
+            None => None,
+        };
+        let tip_q = tip.map(|l| std::f64::consts::TAU / l);
+        let q_max = match (self.q_max, tip_q) {
+            (Some(a), Some(b)) => Some(a.min(b)),
+            (a, b) => a.or(b),
+        };
         let options = AnalysisOptions {
             detrend: self.detrend.map(Into::into),
             window: self.window.map(Into::into),
-            q_max: self.q_max,
+            q_max,
             bins: None,
         };
         topo::analyse(&t, &options).map_err(|e| in_file(&self.file, e))

@@ -36,6 +36,7 @@ mod adhesion;
 mod bem;
 pub mod friction;
 mod measured;
+pub mod multiscale;
 #[cfg(feature = "plot")]
 pub mod plot;
 pub mod report;
@@ -72,13 +73,11 @@ impl Scene {
             ));
         }
         let base = path.parent().unwrap_or(Path::new("."));
-        if let Some(
-            SpectrumSpec::Tabulated { file, .. }
-            | SpectrumSpec::HeightMap(HeightMapSpec { file, .. }),
-        ) = &mut s.spectrum
-        {
-            if file.is_relative() {
-                *file = base.join(&*file);
+        if let Some(spectrum) = &mut s.spectrum {
+            for file in spectrum.files_mut() {
+                if file.is_relative() {
+                    *file = base.join(&*file);
+                }
             }
         }
         if let Some(r) = &mut s.rubber {
@@ -305,15 +304,11 @@ impl Scene {
 
     /// The input files the scene reads.
     pub fn input_paths(&self) -> Vec<PathBuf> {
-        let mut files = match &self.spectrum {
-            Some(
-                SpectrumSpec::Tabulated { file, .. }
-                | SpectrumSpec::HeightMap(HeightMapSpec { file, .. }),
-            ) => {
-                vec![file.clone()]
-            }
-            _ => vec![],
-        };
+        let mut spectrum = self.spectrum.clone();
+        let mut files: Vec<PathBuf> = spectrum
+            .as_mut()
+            .map(|s| s.files_mut().into_iter().map(|f| f.clone()).collect())
+            .unwrap_or_default();
         if let Some(r) = &self.rubber {
             files.extend(r.files());
         }

@@ -276,6 +276,31 @@ pub fn measured_spectrum(a: &persson::topography::Analysis) -> Result<Figure> {
     Ok(fig)
 }
 
+/// The spectra of several measurements and their combination (log–log):
+/// each measurement's binned spectrum over its band, the combined one on top.
+///
+/// # Errors
+/// A spectrum with no positive point.
+pub fn multi_scale(r: &crate::scene::multiscale::MultiScaleReport) -> Result<Figure> {
+    let mut fig = plot::spectrum(&r.q, &r.c, None)?;
+    fig.title = format!(
+        "Power spectrum C(q) combined from {} measurements",
+        r.measurements.len()
+    );
+    if let Some(first) = fig.series.first_mut() {
+        first.label = "combined".into();
+    }
+    for m in &r.measurements {
+        let name = m
+            .file
+            .file_name()
+            .map(|f| f.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        fig.push(plot::Series::from_xy(name, &m.psd.q, &m.psd.c)?.with_style(plot::Style::Markers));
+    }
+    Ok(fig)
+}
+
 /// Rubber friction: μ against log v (top) and A/A0 against log v (bottom),
 /// one curve per (T, σ0), dashed with the flash temperature.
 ///

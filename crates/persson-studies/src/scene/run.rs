@@ -492,6 +492,7 @@ pub fn spectrum(
         rms_slope_error_bound: m.error,
         rms_curvature: k.value,
         rms_curvature_error_bound: k.error,
+        mean_curvature_rms: k.value / 2.0,
         power_law_fit: PowerLawFit {
             prefactor: fit.0,
             exponent: fit.1,

@@ -43,6 +43,11 @@ impl Tabulate for Analysis {
             self.rms_curvature,
         )
         .scalar(
+            "mean_curvature_rms",
+            "rms mean curvature ∇²h/2 (1/m)",
+            self.mean_curvature_rms,
+        )
+        .scalar(
             "rms_height_from_spectrum",
             "h_rms from C(q) (m)",
             self.rms_height_from_spectrum,

@@ -193,7 +193,7 @@ pub fn sweep_source(
 /// copy), the same pressures in the same order and the same solver, so the
 /// result is, number for number, row `seed` of grid `grid` in [`sweep`] of
 /// the same `config` (its one seed row; `config.seeds` is not used). The
-/// independent unit of an ensemble ([`super::ensemble`]).
+/// independent unit of an ensemble ([`super::ensemble()`]).
 ///
 /// # Errors
 /// `grid` not one of `config.grids`; as [`sweep`].

@@ -33,6 +33,9 @@ pub struct SpectrumReport {
     pub rms_curvature: f64,
     /// Its error bound.
     pub rms_curvature_error_bound: f64,
+    /// Half of `rms_curvature`, the rms mean curvature ∇²h/2 (1/m): what
+    /// SurfaceTopography and contact.engineering call `rms_curvature`.
+    pub mean_curvature_rms: f64,
     /// Power law C = prefactor q^exponent fitted over the upper half (in log q) of [q_l, q_s].
     pub power_law_fit: PowerLawFit,
     /// C(q) at log-spaced q.
@@ -88,6 +91,11 @@ impl Tabulate for SpectrumReport {
         .scalar("rms_height", "rms height h_rms", self.rms_height)
         .scalar("rms_slope", "rms slope h'_rms", self.rms_slope)
         .scalar("rms_curvature", "rms curvature h''_rms", self.rms_curvature)
+        .scalar(
+            "mean_curvature_rms",
+            "rms mean curvature",
+            self.mean_curvature_rms,
+        )
         .scalar(
             "exponent",
             "fitted exponent of C(q)",

@@ -8,7 +8,7 @@ use serde::{Deserialize, Serialize};
 
 use super::{required, ConventionName, DetrendName, LengthUnitName, WindowName};
 use persson::error::Result;
-use persson::spectrum::{Amplitude, SelfAffine, Spectrum, Tabulated};
+use persson::spectrum::{Amplitude, SelfAffine, Spectrum, Sum, Tabulated};
 
 /// A value built from a scene's entry, with what was assumed to build it in
 /// words (a measured surface's detrending, window, periodicity and band),
@@ -67,6 +67,20 @@ pub enum SpectrumSpec {
     /// every output, and `outputs.bem` solves on the map itself (relative
     /// paths are relative to the scene file).
     HeightMap(HeightMapSpec),
+    /// Two (or more) rough bodies pressed together: the roughness of the
+    /// contact is the sum of their spectra, C = C₁ + C₂ (each zero outside
+    /// its band); `parts` are spectrum entries of any other kind.
+    Sum {
+        /// The bodies' spectra (at least two).
+        parts: Vec<SpectrumSpec>,
+    },
+    /// Several measurements of one surface at different scales (a coarse
+    /// large scan, a fine small one): each contributes its reliable band,
+    /// and the spectrum is their mode-weighted mean over the overlaps.
+    MultiScale {
+        /// The measurements, each as a `height_map` entry (without `kind`).
+        measurements: Vec<HeightMapSpec>,
+    },
 }
 
 /// A measured surface, read with [`persson::topography::read()`] and
@@ -112,6 +126,11 @@ pub struct HeightMapSpec {
     /// column: for arrays saved in SurfaceTopography's `[ix, iy]` order).
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub transpose: bool,
+    /// Tip radius R of the scanning probe, m: the band ends where the
+    /// measured curvature is sharper than the tip (SurfaceTopography's
+    /// reliability cut-off, safety factor 1/2).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tip_radius: Option<f64>,
 }
 
 /// A physical size: one side `Lx` (square pixels) or both `[Lx, Ly]`, m.
@@ -139,6 +158,7 @@ impl HeightMapSpec {
             height_unit: None,
             lateral_unit: None,
             transpose: false,
+            tip_radius: None,
         }
     }
 }
@@ -196,6 +216,16 @@ impl SpectrumSpec {
                 convention.with(*size)?,
             )?)),
             SpectrumSpec::HeightMap(m) => m.spectrum(),
+            SpectrumSpec::Sum { parts } => Ok(Box::new(Sum::new(
+                parts
+                    .iter()
+                    .enumerate()
+                    .map(|(i, p)| p.build().map_err(|e| in_part(i, e)))
+                    .collect::<Result<_>>()?,
+            )?)),
+            SpectrumSpec::MultiScale { measurements } => Ok(Box::new(
+                crate::scene::multiscale::described(measurements)?.value,
+            )),
         }
     }
 
@@ -214,6 +244,36 @@ impl SpectrumSpec {
                     warnings: d.warnings,
                 })
             }
+            SpectrumSpec::Sum { parts } => {
+                let mut built = Vec::with_capacity(parts.len());
+                let (mut described, mut warnings) = (Vec::new(), Vec::new());
+                for (i, p) in parts.iter().enumerate() {
+                    let d = p.build_described().map_err(|e| in_part(i, e))?;
+                    described.extend(d.description);
+                    warnings.extend(d.warnings);
+                    for w in crate::scene::run::spectrum_warnings(p, d.value.as_ref()) {
+                        crate::warning::push(&mut warnings, Some(w));
+                    }
+                    built.push(d.value);
+                }
+                let sum = Sum::new(built)?;
+                crate::warning::push(&mut warnings, crate::Warning::sum_bands(&sum));
+                Ok(Described {
+                    value: Box::new(sum),
+                    description: (!described.is_empty()).then(|| {
+                        format!("two rough bodies, C = C1 + C2: {}", described.join("; "))
+                    }),
+                    warnings,
+                })
+            }
+            SpectrumSpec::MultiScale { measurements } => {
+                let d = crate::scene::multiscale::described(measurements)?;
+                Ok(Described {
+                    value: Box::new(d.value),
+                    description: d.description,
+                    warnings: d.warnings,
+                })
+            }
             _ => Ok(Described {
                 value: self.build()?,
                 description: None,
@@ -222,12 +282,39 @@ impl SpectrumSpec {
         }
     }
 
+    /// The input files the entry reads (tabulated spectra and height maps,
+    /// those of a sum's parts too), to resolve relative paths.
+    pub fn files_mut(&mut self) -> Vec<&mut PathBuf> {
+        match self {
+            SpectrumSpec::SelfAffine { .. } => vec![],
+            SpectrumSpec::Tabulated { file, .. }
+            | SpectrumSpec::HeightMap(HeightMapSpec { file, .. }) => {
+                vec![file]
+            }
+            SpectrumSpec::Sum { parts } => parts.iter_mut().flat_map(|p| p.files_mut()).collect(),
+            SpectrumSpec::MultiScale { measurements } => {
+                measurements.iter_mut().map(|m| &mut m.file).collect()
+            }
+        }
+    }
+
     /// Where C(q) has a kink inside the band (the roll-off), for the
     /// wavevector integrals of the mean separation.
     pub fn breaks(&self) -> Vec<f64> {
         match self {
             SpectrumSpec::SelfAffine { q_r: Some(q_r), .. } => vec![*q_r],
+            SpectrumSpec::Sum { parts } => {
+                let mut b: Vec<f64> = parts.iter().flat_map(|p| p.breaks()).collect();
+                b.sort_by(f64::total_cmp);
+                b.dedup();
+                b
+            }
             _ => vec![],
         }
     }
+}
+
+/// An error of the `i`-th part of a sum, named `parts[i].<field>`.
+fn in_part(i: usize, e: persson::Error) -> persson::Error {
+    super::super::run::prefix(&format!("parts[{i}]."), e)
 }
