@@ -322,7 +322,7 @@ impl AdhesiveSolver {
                 num += r * t;
                 den += q * t;
             }
-            if !(den > 0.0) {
+            if den.is_nan() || den <= 0.0 {
                 break;
             }
             let tau = num / den;
@@ -440,9 +440,8 @@ impl AdhesiveSolver {
         let (mut res, mut scale) = (0.0, 0.0);
         for ((r, w), g) in self.grad.iter().zip(&self.work).zip(&self.gap) {
             let d = r - mean;
-            if *g > 0.0 {
-                res += d * d;
-            } else if d < 0.0 {
+            // free nodes: r = 0; contact nodes: r ≥ 0
+            if *g > 0.0 || d < 0.0 {
                 res += d * d;
             }
             scale += w * w;
