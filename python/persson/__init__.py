@@ -17,6 +17,7 @@ prints for the same input (the same serialisation, so the same digits).
 
 from ._persson import (
     Spectrum,
+    adhesion,
     analyse_height_map,
     area,
     bem_hertz,
@@ -97,6 +98,7 @@ theories = _modulus_alias(theories)
 
 __all__ = [
     "Spectrum",
+    "adhesion",
     "analyse_height_map",
     "area",
     "bem_hertz",

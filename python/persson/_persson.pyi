@@ -23,6 +23,7 @@ Detrend = Literal["none", "mean", "plane", "curvature"]
 Window = Literal["none", "hann", "blackman"]
 Boundary = Literal["periodic", "free"]
 Start = Literal["flat", "hertz", "cylinder"]
+AreaEnhancement = Literal["slopes", "none"]
 
 class TopographyLike(Protocol):
     """A SurfaceTopography Topography: heights indexed [x, y], sizes (Lx, Ly) in m."""
@@ -364,6 +365,20 @@ def compare(
     yield_stress: Optional[float] = None,
 ) -> Report:
     """`persson compare --json` (with `yield_stress`: `compare --yield-stress`)."""
+def adhesion(
+    spectrum: Spectrum,
+    contact_modulus: float,
+    work_of_adhesion: float,
+    pressure: Optional[ArrayLike] = None,
+    *,
+    zeta: Optional[float] = None,
+    points: int = 11,
+    area_enhancement: AreaEnhancement = "slopes",
+    adhesion_range: Optional[float] = None,
+    tolerance: float = 1e-5,
+) -> Report:
+    """`persson adhesion --json`: Δγ_eff(ζ) and the stickiness verdict; A/A0 and the
+    pull-off stress at the nominal pressures (≤ 0 allowed)."""
 def ensemble(
     spectrum: Spectrum,
     contact_modulus: float,

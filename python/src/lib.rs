@@ -7,6 +7,7 @@
 //! (`Python::detach`, pyo3's `allow_threads`). Library errors become
 //! `OSError` (files) or `ValueError` (everything else) with the CLI's text.
 
+mod adhesion;
 mod arrays;
 mod asperity;
 mod bem;
@@ -113,6 +114,7 @@ fn _persson(m: &Bound<'_, PyModule>) -> PyResult<()> {
     theory::register(m)?;
     reports::register(m)?;
     bem::register(m)?;
+    adhesion::register(m)?;
     ensemble::register(m)?;
     friction::register(m)?;
     transport::register(m)?;

@@ -88,10 +88,21 @@
 //!   the evaluation of first-passage-time probability densities*, Adv. Appl.
 //!   Probab. 19, 784 (1987), doi:10.2307/1427102: the regular kernel.
 //!
-//! The equation numbers of the papers could not be checked against their text
-//! from this workplace (only abstracts were reachable); each formula above is
-//! re-derived in the docs of the item that implements it and tested against an
-//! independent computation.
+//! # What is verified, and what is this crate's derivation
+//! The papers' texts could not be read from this workplace: a search of the
+//! public pages and documentation corpora (Nov 2026) returned their abstracts
+//! and the section headings of Persson's review (Surf. Sci. Rep. 61, 201
+//! (2006), Sec. 8.1 "Boundary condition and physical interpretation"), not
+//! their equations. No equation number or prefactor above is therefore
+//! checked against a paper. What is checked, against independent
+//! computations (`tests/adhesion.rs`): U_el (the full-contact energy ½⟨pu⟩
+//! with p̂ = E*qû/2), A_true/A0 of Gaussian slopes (mpmath), Δγ_eff, the
+//! non-adhesive limit erf(1/(2√G)), and the moving-boundary diffusion
+//! (finite differences). Choices 2–5 above, and c_a = 1 in particular, are
+//! this crate's derivation (a Griffith balance fixes σ_a only up to a number
+//! of order one), as are the Pastewka–Robbins constants κ_rep = 2 and
+//! d_rep = 4h'_rms/h''_rms (taken from the authors' group's code, not from
+//! their Eq. 10).
 
 mod contact;
 mod detachment;

@@ -27,6 +27,11 @@
 //!   gradient (default); [`polonsky_keer`]: the plain Polonsky–Keer loop
 //!   (its fallback); `elastic` (internal) chooses between them.
 //! - [`saturated`]: the same with a yield stress, 0 ≤ p ≤ σY.
+//! - [`adhesive`]: adhesive contact (Maugis–Dugdale and exponential cohesive
+//!   laws) in the gap-based formulation under mean-gap control, periodic;
+//!   loading–unloading sequences and their pull-off. It uses the shared
+//!   [`Operator`] (its stiffness 𝒦) but its own buffers: [`Problem`] has no
+//!   mean-gap control.
 //! - [`hertz`]: closed-form Hertz solution and the η validation; with a
 //!   yield stress, the plastic disc per grid ([`hertz::plastic_disc`]).
 //! - [`surface`]: Fourier synthesis from any [`crate::Spectrum`], height-map I/O.
@@ -48,6 +53,7 @@
 //! # Ok(()) }
 //! ```
 
+pub mod adhesive;
 mod elastic;
 pub mod fft;
 pub mod hertz;

@@ -147,6 +147,15 @@ fn cases() -> Vec<(String, String)> {
         // corrected theories and separation
         (format!("area {SA} --contact-modulus 1 --pressure 1 --theory yang-persson --gamma 5"), "gamma"),
         (format!("area {SA} --contact-modulus 1 --pressure 1 --theory wang-muser --gamma 0"), "gamma"),
+        // adhesion: pressures ≤ 0 are tensions, but the rest is checked and names its flag
+        (format!("adhesion {SA} --contact-modulus 1 --work-of-adhesion -1"), "--work-of-adhesion"),
+        (format!("adhesion {SA} --contact-modulus 1 --work-of-adhesion nan"), "--work-of-adhesion"),
+        (format!("adhesion {SA} --contact-modulus 1 --work-of-adhesion 1 --adhesion-range 0"), "--adhesion-range"),
+        (format!("adhesion {SA} --contact-modulus 1 --work-of-adhesion 1 --pressure inf"), "--pressure"),
+        (format!("adhesion {SA} --contact-modulus 1 --work-of-adhesion 1 --zeta 0.5"), "--zeta"),
+        (format!("adhesion {SA} --contact-modulus 1 --work-of-adhesion 1 --points 1"), "--points"),
+        (format!("adhesion {SA} --contact-modulus 1 --work-of-adhesion 1 --tolerance 2"), "--tolerance"),
+        (format!("adhesion {SA} --contact-modulus 1 --work-of-adhesion 1 --area-enhancement x"), "area-enhancement"),
         (format!("separation {SA} --contact-modulus 1 --pressure -1"), "pressure"),
         (format!("separation {SA} --contact-modulus 1 --pressure 0"), "pressure"),
         // BEM

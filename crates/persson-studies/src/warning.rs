@@ -149,6 +149,36 @@ pub enum Warning {
         /// Smallest and largest q left out, 1/m.
         q_range: (f64, f64),
     },
+    /// Nominal pressures at or below −σ_p, the pull-off stress of the
+    /// adhesive theory: nothing is in contact there (A/A0 = 0).
+    BeyondPullOff {
+        /// The highest of them (the σ0 closest to −σ_p).
+        nominal_pressure: f64,
+        /// σ_p.
+        pull_off_stress: f64,
+        /// How many of the pressures are beyond it.
+        count: usize,
+    },
+    /// Adhesive contact fractions whose error estimate exceeds the tolerance
+    /// at the largest mesh allowed.
+    AdhesionToleranceNotMet {
+        /// The requested absolute tolerance.
+        tolerance: f64,
+        /// The largest error estimate.
+        error_bound: f64,
+        /// How many points missed it.
+        count: usize,
+    },
+    /// The adhesion range is not short against g₀ = (16/3) h'²_rms/h''_rms
+    /// (Δr/g₀ ≥ 0.1), as the Pastewka–Robbins criterion assumes.
+    LongAdhesionRange {
+        /// Δr, m.
+        adhesion_range: f64,
+        /// h'_rms over the band.
+        rms_slope: f64,
+        /// h''_rms over the band, 1/m.
+        rms_curvature: f64,
+    },
     /// The spectra of two (or more) rough bodies cover bands more than
     /// [`SUM_BAND_RATIO`] apart: outside their common band the sum is one
     /// body's roughness alone.
@@ -437,6 +467,45 @@ impl fmt::Display for Warning {
                 n(q_range.0),
                 n(q_range.1)
             ),
+            Warning::BeyondPullOff {
+                nominal_pressure,
+                pull_off_stress,
+                count,
+            } => write!(
+                f,
+                "{} at or below −σ_p, minus the pull-off stress σ_p = {} (the highest: \
+                 σ0 = {}): nothing is in contact there (A/A0 = 0)",
+                if *count > 1 {
+                    format!("{count} nominal pressures are")
+                } else {
+                    "a nominal pressure is".to_string()
+                },
+                n(*pull_off_stress),
+                n(*nominal_pressure)
+            ),
+            Warning::AdhesionToleranceNotMet {
+                tolerance,
+                error_bound,
+                count,
+            } => write!(
+                f,
+                "{count} adhesive contact fraction(s) did not reach the tolerance {} at the \
+                 largest mesh: error estimate up to {} (reported with each point)",
+                n(*tolerance),
+                n(*error_bound)
+            ),
+            Warning::LongAdhesionRange {
+                adhesion_range,
+                rms_slope,
+                rms_curvature,
+            } => write!(
+                f,
+                "the adhesion range Δr = {} is not short against g₀ = (16/3) h'²_rms/h''_rms \
+                 = {} (Δr/g₀ ≥ 0.1): the Pastewka–Robbins criterion assumes short-ranged \
+                 adhesion",
+                n(*adhesion_range),
+                n(16.0 / 3.0 * rms_slope * rms_slope / rms_curvature)
+            ),
             Warning::SumBands { bands, ratio } => {
                 let b: Vec<String> = bands
                     .iter()
@@ -611,7 +680,8 @@ impl Warning {
     /// `hurst_not_fitted`, `hurst_out_of_range`, `bins_left_out`,
     /// `preconditioner_fallback`, `master_curve_range`, `friction_not_converged`, `shift_table_extended`,
     /// `sum_bands`, `measurement_gap`, `sealed`, `small_bandwidth`, `coalescence`,
-    /// `curvature_unresolved`).
+    /// `curvature_unresolved`, `beyond_pull_off`, `adhesion_tolerance_not_met`,
+    /// `long_adhesion_range`).
     pub fn kind(&self) -> &'static str {
         match self {
             Warning::HighPressure { .. } => "high_pressure",
@@ -626,6 +696,9 @@ impl Warning {
             Warning::HurstNotFitted { .. } => "hurst_not_fitted",
             Warning::HurstOutOfRange { .. } => "hurst_out_of_range",
             Warning::BinsLeftOut { .. } => "bins_left_out",
+            Warning::BeyondPullOff { .. } => "beyond_pull_off",
+            Warning::AdhesionToleranceNotMet { .. } => "adhesion_tolerance_not_met",
+            Warning::LongAdhesionRange { .. } => "long_adhesion_range",
             Warning::SumBands { .. } => "sum_bands",
             Warning::MeasurementGap { .. } => "measurement_gap",
             Warning::PreconditionerFallback { .. } => "preconditioner_fallback",

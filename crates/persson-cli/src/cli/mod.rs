@@ -1,6 +1,7 @@
 //! Command-line interface: argument parsing and dispatch. Every subcommand
 //! lives in its own file and only calls the library.
 
+mod adhesion;
 mod area;
 mod args;
 #[cfg(feature = "bem")]
@@ -65,6 +66,8 @@ enum Cmd {
     Stress(stress::Args),
     /// Mean interfacial separation ū, stiffness K = −dσ0/dū and elastic energy against load.
     Separation(separation::Args),
+    /// Adhesion: stickiness per magnification, A/A0 against load (tension included), pull-off.
+    Adhesion(adhesion::Args),
     /// FFT boundary-element cross-check: Hertz validation and rough contact.
     #[cfg(feature = "bem")]
     Bem(bem::Args),
@@ -90,6 +93,7 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
         Cmd::Report(a) => report::run(a),
         Cmd::Stress(a) => stress::run(a),
         Cmd::Separation(a) => separation::run(a),
+        Cmd::Adhesion(a) => adhesion::run(a),
         #[cfg(feature = "bem")]
         Cmd::Bem(a) => bem::run(a),
         #[cfg(feature = "bem")]

@@ -32,6 +32,7 @@ use persson::spectrum::Spectrum;
 use persson::stress::Start;
 
 mod asperity;
+mod adhesion;
 #[cfg(feature = "bem")]
 mod bem;
 pub mod friction;
@@ -46,6 +47,7 @@ pub mod transport;
 #[cfg(feature = "flow")]
 pub mod transport_bem;
 
+pub use adhesion::{DEFAULT_STICKINESS_POINTS, DEFAULT_TOLERANCE as DEFAULT_ADHESION_TOLERANCE};
 pub use friction::{friction, friction_on};
 #[cfg(feature = "topography")]
 pub use measured::describe;
@@ -191,6 +193,7 @@ impl Scene {
             || o.separation.is_some()
             || o.conductance.is_some()
             || o.leakage.is_some()
+            || o.adhesion.is_some()
             || o.stress.as_ref().is_some_and(|st| !st.zeta.is_empty())
             || (o.kappa.is_some() && with_surface && !self.nominal_pressure.is_empty());
         let surface = if needs_surface {
@@ -241,6 +244,12 @@ impl Scene {
             report.leakage = Some(
                 transport::leakage(&surface, &self.nominal_pressure, l)
                     .map_err(|e| prefix("outputs.leakage.", e))?,
+            );
+        }
+        if let Some(ad) = &o.adhesion {
+            report.adhesion = Some(
+                run::adhesion(&surface, &self.nominal_pressure, ad)
+                    .map_err(|e| prefix("outputs.adhesion.", e))?,
             );
         }
         if let Some(st) = o.stress.as_ref().filter(|st| !st.zeta.is_empty()) {

@@ -11,6 +11,7 @@ use persson::spectrum::Spectrum;
 use persson::stress::{HertzContact, Solver, Start, StressScene};
 use persson::theory::{log_zetas, Persson};
 
+pub use super::adhesion::adhesion;
 use super::report::*;
 use super::schema::*;
 

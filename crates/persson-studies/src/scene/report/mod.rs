@@ -6,6 +6,7 @@ use serde::Serialize;
 
 use crate::table::{Table, Tabulate};
 
+mod adhesion;
 mod area;
 mod bem;
 mod friction;
@@ -14,6 +15,7 @@ mod spectrum;
 mod stress;
 mod transport;
 
+pub use adhesion::*;
 pub use area::*;
 pub use bem::*;
 pub use friction::*;
@@ -60,6 +62,9 @@ pub struct SceneReport {
     /// FFT-BEM Hertz convergence.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub bem_hertz: Option<BemHertzReport>,
+    /// Adhesion (stickiness, adhesive contact area, pull-off).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub adhesion: Option<AdhesionReport>,
     /// Rubber friction.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub friction: Option<FrictionReport>,
@@ -86,6 +91,7 @@ impl SceneReport {
             self.theories.as_ref().map(|r| &r.warnings),
             self.separation.as_ref().map(|r| &r.warnings),
             self.stress.as_ref().map(|r| &r.warnings),
+            self.adhesion.as_ref().map(|r| &r.warnings),
             self.friction.as_ref().map(|r| &r.warnings),
             self.conductance.as_ref().map(|r| &r.warnings),
             self.leakage.as_ref().map(|r| &r.warnings),
@@ -111,7 +117,7 @@ impl Tabulate for SceneReport {
         let bem = self.bem.as_ref().map(|r| r as &dyn Tabulate);
         #[cfg(not(feature = "bem"))]
         let bem = None;
-        let parts: [Option<&dyn Tabulate>; 12] = [
+        let parts: [Option<&dyn Tabulate>; 13] = [
             self.spectrum.as_ref().map(|r| r as &dyn Tabulate),
             self.kappa.as_ref().map(|r| r as &dyn Tabulate),
             self.area.as_ref().map(|r| r as &dyn Tabulate),
@@ -121,6 +127,7 @@ impl Tabulate for SceneReport {
             self.stress.as_ref().map(|r| r as &dyn Tabulate),
             bem,
             self.bem_hertz.as_ref().map(|r| r as &dyn Tabulate),
+            self.adhesion.as_ref().map(|r| r as &dyn Tabulate),
             self.friction.as_ref().map(|r| r as &dyn Tabulate),
             self.conductance.as_ref().map(|r| r as &dyn Tabulate),
             self.leakage.as_ref().map(|r| r as &dyn Tabulate),

@@ -203,3 +203,24 @@ names! {
         Blackman = "blackman",
     }
 }
+
+names! {
+    /// Whether the work of adhesion acts on the true (sloped) surface area.
+    #[derive(Default)]
+    AreaEnhancementName {
+        /// Δγ on the true area of Gaussian slopes (Persson & Tosatti 2001).
+        #[default]
+        Slopes = "slopes",
+        /// Δγ on the projected area only.
+        None = "none",
+    }
+}
+
+impl From<AreaEnhancementName> for persson::adhesion::AreaEnhancement {
+    fn from(a: AreaEnhancementName) -> Self {
+        match a {
+            AreaEnhancementName::Slopes => persson::adhesion::AreaEnhancement::Slopes,
+            AreaEnhancementName::None => persson::adhesion::AreaEnhancement::None,
+        }
+    }
+}

@@ -1,0 +1,94 @@
+//! `persson adhesion`: whether a rough surface sticks (the full-contact
+//! energy balance per magnification and its verdict), the adhesive contact
+//! area against nominal pressure (tension ≤ 0 allowed) and the pull-off
+//! stress, from Persson's theory (the scene output `adhesion`).
+
+use persson_studies::scene::{run, AdhesionOutput, AreaEnhancementName};
+
+use super::args::{measured_contact, MaterialArgs, MeasuredArgs, SpectrumArgs};
+use super::output::{print_warned, Format};
+
+/// Arguments of `persson adhesion`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    #[command(flatten)]
+    spectrum: SpectrumArgs,
+    #[command(flatten)]
+    measured: MeasuredArgs,
+    #[command(flatten)]
+    material: MaterialArgs,
+    /// Work of adhesion Δγ (J/m², ≥ 0).
+    #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
+    work_of_adhesion: f64,
+    /// Nominal (mean) pressure σ0, same unit as E*, negative in tension;
+    /// repeatable or comma-separated (none: the stickiness balance only).
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = super::number::number)]
+    pressure: Vec<f64>,
+    /// Magnification ζ of the contact points (default q_s/q_l).
+    #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
+    zeta: Option<f64>,
+    /// Number of log-spaced ζ of the stickiness balance, from 1 to q_s/q_l.
+    #[arg(long, default_value_t = persson_studies::scene::DEFAULT_STICKINESS_POINTS, allow_hyphen_values = true, value_parser = super::number::count)]
+    points: usize,
+    /// Whether Δγ acts on the true (sloped) area or the projected one.
+    #[arg(long, value_enum, default_value_t = AreaEnhancementName::Slopes)]
+    area_enhancement: AreaEnhancementName,
+    /// Range Δr of the adhesive interaction (m): adds the Pastewka–Robbins criterion.
+    #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
+    adhesion_range: Option<f64>,
+    /// Absolute tolerance of the contact fractions.
+    #[arg(long, default_value = "1e-5", allow_hyphen_values = true, value_parser = super::number::number)]
+    tolerance: f64,
+    #[command(flatten)]
+    format: Format,
+}
+
+/// The flag of a field the library names in an error.
+const FLAGS: &[(&str, &str)] = &[
+    ("work_of_adhesion", "--work-of-adhesion"),
+    ("nominal_pressure", "--pressure"),
+    ("zeta", "--zeta"),
+    ("points", "--points"),
+    ("adhesion_range", "--adhesion-range"),
+    ("tolerance", "--tolerance"),
+];
+
+/// Run `persson adhesion`.
+pub fn run(a: Args) -> anyhow::Result<()> {
+    if !(a.work_of_adhesion.is_finite() && a.work_of_adhesion >= 0.0) {
+        anyhow::bail!(
+            "--work-of-adhesion {}: must be finite and ≥ 0 (J/m²)",
+            a.work_of_adhesion
+        );
+    }
+    if let Some(r) = a.adhesion_range.filter(|r| !(r.is_finite() && *r > 0.0)) {
+        anyhow::bail!("--adhesion-range {r}: must be finite and > 0 (m)");
+    }
+    if let Some(p) = a.pressure.iter().find(|p| !p.is_finite()) {
+        anyhow::bail!("--pressure {p}: must be finite (≤ 0 is a tension)");
+    }
+    let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
+    let out = AdhesionOutput {
+        work_of_adhesion: a.work_of_adhesion,
+        zeta: a.zeta,
+        points: Some(a.points),
+        area_enhancement: Some(a.area_enhancement),
+        adhesion_range: a.adhesion_range,
+        tolerance: Some(a.tolerance),
+    };
+    let report = run::adhesion(&surface, &a.pressure, &out).map_err(name_flag)?;
+    print_warned(&report, &report.warnings, &a.format)
+}
+
+/// The library's error with the flag of the field it names.
+fn name_flag(e: persson::Error) -> anyhow::Error {
+    let field = match &e {
+        persson::Error::InvalidParameter { name, .. } => Some(name.as_str()),
+        persson::Error::Inconsistent { name, .. } => Some(name.as_str()),
+        _ => None,
+    };
+    match field.and_then(|f| FLAGS.iter().find(|(k, _)| *k == f)) {
+        Some((_, flag)) => anyhow::anyhow!("{flag}: {e}"),
+        None => e.into(),
+    }
+}
