@@ -61,7 +61,7 @@
 //! # Stall and fallback
 //! ε is not monotone in a projected CG. When the best ε has not halved
 //! within `stall_iterations` iterations, or a step is degenerate (no descent
-//! direction, τ not finite), the loop stops and reports [`Outcome::Stalled`];
+//! direction, τ not finite), the loop stops and reports `Outcome::Stalled`;
 //! the caller finishes with [`super::polonsky_keer`] from the current
 //! pressure and flags the solution ([`super::Fallback`]).
 //!

@@ -230,7 +230,7 @@ pub enum Start {
     /// The previous pressure times `p̄_new / p̄_old` (persson 0.3).
     Rescaled,
     /// The previous pressure plus a uniform approach increment on its
-    /// contact set, predicted by the stiffness (see [`predict`]); under
+    /// contact set, predicted by the stiffness (see `predict`); under
     /// penetration control the previous pressure.
     Predicted,
 }
