@@ -259,7 +259,7 @@ fn predict(f: Fields<'_>, pm: f64) -> Result<()> {
     let total = pm * f.pressure.len() as f64;
     let sum_p: f64 = f.pressure.iter().sum();
     let ratio = total / sum_p;
-    if !(sum_p > 0.0 && ratio <= PREDICT_RATIO && ratio >= 1.0 / PREDICT_RATIO) {
+    if !(sum_p > 0.0 && (1.0 / PREDICT_RATIO..=PREDICT_RATIO).contains(&ratio)) {
         f.pressure.fill(pm);
         return Ok(());
     }
@@ -281,7 +281,8 @@ fn predict(f: Fields<'_>, pm: f64) -> Result<()> {
             }
         },
     )?;
-    if !(sum_w > 0.0) {
+    // NaN (no contact weight) falls back too.
+    if sum_w.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
         f.pressure.fill(pm);
         return Ok(());
     }
