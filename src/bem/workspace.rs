@@ -230,7 +230,7 @@ pub enum Start {
     /// The previous pressure times `p̄_new / p̄_old` (persson 0.3).
     Rescaled,
     /// The previous pressure plus a uniform approach increment on its
-    /// contact set, predicted by the stiffness (`predict`); under
+    /// contact set, predicted by the stiffness (see `predict`); under
     /// penetration control the previous pressure.
     Predicted,
 }
@@ -259,9 +259,7 @@ fn predict(f: Fields<'_>, pm: f64) -> Result<()> {
     let total = pm * f.pressure.len() as f64;
     let sum_p: f64 = f.pressure.iter().sum();
     let ratio = total / sum_p;
-    // A NaN sum or ratio (no contact yet) fails both tests: cold start.
-    let usable = sum_p > 0.0 && (1.0 / PREDICT_RATIO..=PREDICT_RATIO).contains(&ratio);
-    if !usable {
+    if !(sum_p > 0.0 && (1.0 / PREDICT_RATIO..=PREDICT_RATIO).contains(&ratio)) {
         f.pressure.fill(pm);
         return Ok(());
     }
@@ -283,7 +281,8 @@ fn predict(f: Fields<'_>, pm: f64) -> Result<()> {
             }
         },
     )?;
-    if sum_w.is_nan() || sum_w <= 0.0 {
+    // NaN (no contact weight) falls back too.
+    if sum_w.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
         f.pressure.fill(pm);
         return Ok(());
     }
