@@ -17,8 +17,8 @@ mod compare;
 mod compare_args;
 #[cfg(feature = "bem")]
 mod compare_plot;
-mod friction;
 mod conductance;
+mod friction;
 mod kappa;
 mod leakage;
 mod magnification;

@@ -31,8 +31,8 @@ use persson::material::Material;
 use persson::spectrum::Spectrum;
 use persson::stress::Start;
 
-mod asperity;
 mod adhesion;
+mod asperity;
 #[cfg(feature = "bem")]
 mod bem;
 pub mod friction;
