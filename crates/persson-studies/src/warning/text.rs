@@ -1,0 +1,335 @@
+//! The text of each warning for people: one line that names the input
+//! (never a CLI flag; the CLI appends its own).
+
+use std::fmt;
+
+use super::{Warning, HIGH_PRESSURE_RATIO};
+use crate::scene::ConventionName;
+use crate::table::number;
+
+impl fmt::Display for Warning {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let n = |v: f64| number(v, 6);
+        match self {
+            Warning::HighPressure {
+                nominal_pressure,
+                contact_modulus,
+                count,
+            } => high_pressure(f, *nominal_pressure, *contact_modulus, *count),
+            Warning::SteepSlope { rms_slope } => write!(
+                f,
+                "rms slope h'_rms = {} is above 1: outside the small-slope theory \
+                 (lengths are in m and wavevectors in 1/m: a height in µm given as m?)",
+                n(*rms_slope)
+            ),
+            Warning::ZetaBeyondBand { zeta, zeta_max } => write!(
+                f,
+                "ζ = {} is beyond q_s/q_l = {}: C(q) = 0 above q_s, so the result is that of \
+                 full magnification ζ = {}",
+                n(*zeta),
+                n(*zeta_max),
+                n(*zeta_max)
+            ),
+            Warning::BandLimited {
+                grid,
+                surface_rms_slope,
+                rms_slope,
+            } => write!(
+                f,
+                "the {grid}² surface is band-limited by its grid: its rms slope is {} against \
+                 the spectrum's {} (a finer grid, or a smaller q_s, resolves it)",
+                n(*surface_rms_slope),
+                n(*rms_slope)
+            ),
+            Warning::PsdConvention { file, convention } => {
+                write!(
+                    f,
+                    "spectrum file {} read in the `{convention}` convention",
+                    file.display()
+                )?;
+                if *convention == ConventionName::Persson {
+                    write!(
+                        f,
+                        "; a SurfaceTopography or contact.engineering PSD needs the \
+                         `surface-topography` convention"
+                    )?;
+                }
+                Ok(())
+            }
+            Warning::RisingSpectrum {
+                file,
+                c_first,
+                c_last,
+            } => write!(
+                f,
+                "C(q) of {} does not fall with q (C = {} at the first q, {} at the last): \
+                 is it a height map or profile? a measured surface is read as a height map, \
+                 not as a spectrum",
+                file.display(),
+                n(*c_first),
+                n(*c_last)
+            ),
+            Warning::ClippedBand {
+                q_s_requested,
+                q_s,
+                q_l,
+                grid,
+                pixels_per_wavelength,
+            } => write!(
+                f,
+                "q_s = {} is not resolved by the coarsest grid ({grid}², {} pixels per \
+                 wavelength); the theories and the BEM use q_s = {} (= {}·q_l)",
+                n(*q_s_requested),
+                n(*pixels_per_wavelength),
+                n(*q_s),
+                n(*q_s / *q_l)
+            ),
+            Warning::Resampled {
+                file,
+                points,
+                max_deviation,
+            } => write!(
+                f,
+                "{}: the x positions are not equally spaced (up to {} pixel(s) off the equally \
+                 spaced grid): the heights were linearly interpolated onto {points} equally \
+                 spaced points",
+                file.display(),
+                n(*max_deviation)
+            ),
+            Warning::HurstNotFitted { file, bins } => write!(
+                f,
+                "{}: no Hurst exponent (hurst null): {bins} spectrum bin(s) in the band, a fit \
+                 needs 3",
+                file.display()
+            ),
+            Warning::HurstOutOfRange {
+                file,
+                hurst,
+                hurst_error,
+            } => write!(
+                f,
+                "{}: no Hurst exponent (hurst null): the fit gives H = {} ± {}, outside (0, 1) \
+                 where the spectrum is self-affine",
+                file.display(),
+                n(*hurst),
+                n(*hurst_error)
+            ),
+            Warning::BinsLeftOut {
+                file,
+                count,
+                of,
+                q_range,
+            } => write!(
+                f,
+                "{}: {count} of {of} bins of the line scans' 1D spectrum (q = {} … {} 1/m) do \
+                 not fall faster than 1/q and have no isotropic 2D counterpart: left out of \
+                 C(q) (the rms values keep them)",
+                file.display(),
+                n(q_range.0),
+                n(q_range.1)
+            ),
+            Warning::BeyondPullOff {
+                nominal_pressure,
+                pull_off_stress,
+                count,
+            } => write!(
+                f,
+                "{} at or below −σ_p, minus the pull-off stress σ_p = {} (the highest: \
+                 σ0 = {}): nothing is in contact there (A/A0 = 0)",
+                if *count > 1 {
+                    format!("{count} nominal pressures are")
+                } else {
+                    "a nominal pressure is".to_string()
+                },
+                n(*pull_off_stress),
+                n(*nominal_pressure)
+            ),
+            Warning::AdhesionToleranceNotMet {
+                tolerance,
+                error_bound,
+                count,
+            } => write!(
+                f,
+                "{count} adhesive contact fraction(s) did not reach the tolerance {} at the \
+                 largest mesh: error estimate up to {} (reported with each point)",
+                n(*tolerance),
+                n(*error_bound)
+            ),
+            Warning::LongAdhesionRange {
+                adhesion_range,
+                rms_slope,
+                rms_curvature,
+            } => write!(
+                f,
+                "the adhesion range Δr = {} is not short against g₀ = (16/3) h'²_rms/h''_rms \
+                 = {} (Δr/g₀ ≥ 0.1): the Pastewka–Robbins criterion assumes short-ranged \
+                 adhesion",
+                n(*adhesion_range),
+                n(16.0 / 3.0 * rms_slope * rms_slope / rms_curvature)
+            ),
+            Warning::SumBands { bands, ratio } => {
+                let b: Vec<String> = bands
+                    .iter()
+                    .map(|(a, b)| format!("{} … {}", n(*a), n(*b)))
+                    .collect();
+                write!(
+                    f,
+                    "the rough bodies' spectra cover bands q = {} 1/m, a factor {} apart: \
+                     outside their common band the summed roughness is one body's alone",
+                    b.join(" and "),
+                    n(*ratio)
+                )
+            }
+            Warning::MeasurementGap {
+                below,
+                above,
+                q_range,
+            } => write!(
+                f,
+                "the reliable bands of {} and {} do not overlap: no measurement covers \
+                 q = {} … {} 1/m, where the combined spectrum is interpolated (power law)",
+                below.display(),
+                above.display(),
+                n(q_range.0),
+                n(q_range.1)
+            ),
+            Warning::PreconditionerFallback {
+                nominal_pressure,
+                iterations,
+            } => {
+                let list: Vec<String> = nominal_pressure.iter().map(|&p| n(p)).collect();
+                write!(
+                    f,
+                    "the preconditioned BEM solver stalled at σ0 = {} (after {} iteration(s)) \
+                     and the plain Polonsky–Keer loop finished: same answer and tolerance, \
+                     more time",
+                    list.join(", "),
+                    iterations
+                        .iter()
+                        .map(|k| k.to_string())
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                )
+            }
+            Warning::MasterCurveRange { .. }
+            | Warning::FrictionNotConverged { .. }
+            | Warning::ShiftTableExtended { .. } => friction(f, self),
+            Warning::Sealed {
+                method,
+                nominal_pressure,
+                count,
+                contact_fraction,
+                percolation_threshold,
+            } => {
+                let why = match percolation_threshold {
+                    Some(a) => format!(
+                        "A/A0 = {} is at or above the percolation threshold {}",
+                        n(*contact_fraction),
+                        n(*a)
+                    ),
+                    None => format!(
+                        "A/A0 = {}, no open path joins inlet and outlet",
+                        n(*contact_fraction)
+                    ),
+                };
+                write!(
+                    f,
+                    "the contact already percolates at {count} load(s) from σ0 = {} ({why}): \
+                     the {method} leak rate is 0 there",
+                    n(*nominal_pressure)
+                )
+            }
+            Warning::SmallBandwidth { .. }
+            | Warning::Coalescence { .. }
+            | Warning::CurvatureUnresolved { .. } => crate::asperity::describe(self, f),
+            Warning::MapNotPeriodic => write!(
+                f,
+                "the map is not periodic: its coarser copies are block averages, each a \
+                 smoother surface, so N → ∞ is a resolution trend, not a continuum limit; \
+                 trust the finest grid (the map as measured)"
+            ),
+        }
+    }
+}
+
+/// The text of the rubber-friction warnings.
+fn friction(f: &mut fmt::Formatter<'_>, w: &Warning) -> fmt::Result {
+    let n = |v: f64| number(v, 3);
+    match w {
+        Warning::MasterCurveRange {
+            frequency_range,
+            decades_below,
+            decades_above,
+            friction_fraction,
+            count,
+            of,
+        } => write!(
+            f,
+            "the master curve (ω = {} … {} rad/s) was sampled outside its range at {count} of \
+             {of} points, up to {} decade(s) below and {} above (a_T q v; held at its end \
+             values there): up to {} % of μ comes from there (extend the master curve, or \
+             narrow the velocities, temperatures or q1)",
+            n(frequency_range.0),
+            n(frequency_range.1),
+            n(*decades_below),
+            n(*decades_above),
+            n(100.0 * friction_fraction)
+        ),
+        Warning::FrictionNotConverged {
+            count,
+            of,
+            relative_error_bound,
+        } => write!(
+            f,
+            "the friction integrals did not reach the tolerance at {count} of {of} points \
+             (relative error bound of μ up to {}; see friction_coefficient_error_bound)",
+            n(*relative_error_bound)
+        ),
+        Warning::ShiftTableExtended {
+            temperature_max,
+            temperature,
+        } => write!(
+            f,
+            "the flash temperature heated the rubber to {} K, beyond the shift table's last \
+             row at {} K: a_T was extended linearly in ln a_T there",
+            n(*temperature),
+            n(*temperature_max)
+        ),
+        _ => Ok(()),
+    }
+}
+
+/// The text of [`Warning::HighPressure`]: a unit slip when σ0 exceeds E*
+/// itself, strains of order one above 0.1 E*.
+fn high_pressure(
+    f: &mut fmt::Formatter<'_>,
+    nominal_pressure: f64,
+    contact_modulus: f64,
+    count: usize,
+) -> fmt::Result {
+    let n = |v: f64| number(v, 6);
+    let which = if count > 1 {
+        format!(
+            "{count} nominal pressures, up to σ0 = {}, are",
+            n(nominal_pressure)
+        )
+    } else {
+        format!("the nominal pressure σ0 = {} is", n(nominal_pressure))
+    };
+    if nominal_pressure > contact_modulus {
+        write!(
+            f,
+            "{which} above E* = {} itself: are E (or E*) and σ0 in one unit? \
+             (E typed in MPa or GPa, σ0 in Pa?)",
+            n(contact_modulus)
+        )
+    } else {
+        write!(
+            f,
+            "{which} above 0.1 E* = {} (E* = {}): strains of order one, outside \
+             the small-strain theory (or E and σ0 in different units?)",
+            n(HIGH_PRESSURE_RATIO * contact_modulus),
+            n(contact_modulus)
+        )
+    }
+}
