@@ -2,6 +2,7 @@
 //! areas, periodic wrap joins a patch cut by the boundary, 4- against
 //! 8-connectivity, perimeters, the log-binned distribution, and the
 //! exponential/Gaussian tail fit on samples of known shape.
+#![cfg(feature = "bem")]
 
 use persson::bem::patches::{
     patch_statistics, pressure_tail, Connectivity, PatchOptions, TailShape,

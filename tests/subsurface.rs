@@ -1,7 +1,7 @@
 //! Stress below the surface (issue 27): Fourier modes against the plane-strain
 //! closed form, the free kernels against Boussinesq's point load, and the
 //! Hertz axis stresses against Johnson's closed forms with the error against N.
-
+#![cfg(feature = "bem")]
 #![allow(clippy::excessive_precision)] // reference values keep all their digits
 
 use persson::bem::hertz::HertzCase;

@@ -8,6 +8,7 @@ mod args;
 mod bem;
 #[cfg(feature = "bem")]
 mod bem_args;
+#[cfg(feature = "bem")]
 mod bem_detail;
 #[cfg(feature = "bem")]
 mod bem_transport;
