@@ -1,7 +1,8 @@
 //! Stress distributions P(σ, ζ): accuracy against mpmath, invariants,
 //! method cross-checks and input validation.
 
-#[path = "common/oracle.rs"]
+// The one oracle of the workspace's tests (the root crate's tests/common).
+#[path = "../../../tests/common/oracle.rs"]
 mod oracle;
 use persson::stress::{distribution, Start};
 

@@ -9,7 +9,8 @@ use persson_studies::plot::{
     Series, Style, DEFAULT_SIZE, PALETTE,
 };
 
-#[path = "common/oracle.rs"]
+// The one oracle of the workspace's tests (the root crate's tests/common).
+#[path = "../../../tests/common/oracle.rs"]
 mod oracle;
 use std::path::{Path, PathBuf};
 
