@@ -28,7 +28,7 @@
 //!
 //! # References
 //! B. N. J. Persson, J. Phys.: Condens. Matter 18, 7789 (2006),
-//! doi:10.1088/0953-8984/18/32/025, Sec. 3 (T_q fed back into E(ω, T_q) in
+//! doi:10.1088/0953-8984/18/32/025 (T_q fed back into E(ω, T_q) in
 //! μ and G).
 
 use super::chebyshev::{rule, solve, Map, NODES};
