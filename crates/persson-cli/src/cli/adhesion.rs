@@ -44,7 +44,7 @@ pub struct Args {
 }
 
 /// The flag of a field the library names in an error.
-const FLAGS: &[(&str, &'static str)] = &[
+const FLAGS: &[(&str, &str)] = &[
     ("work_of_adhesion", "--work-of-adhesion"),
     ("nominal_pressure", "--pressure"),
     ("zeta", "--zeta"),

@@ -153,7 +153,7 @@ impl RubberArgs {
 }
 
 /// The flag of each field the library names in an error.
-const FLAGS: &[(&str, &'static str)] = &[
+const FLAGS: &[(&str, &str)] = &[
     ("velocity", "--velocity"),
     ("velocity_min", "--velocity-range"),
     ("velocity_max", "--velocity-range"),
