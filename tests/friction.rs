@@ -417,6 +417,71 @@ fn rigid_limit_at_fixed_modulus_over_pressure() {
     }
 }
 
+/// ∫₀^∞ P³ dG, P = erf(1/(2√G)) (mpmath, 30 digits; the γ < 1 part of
+/// the rigid limit below).
+#[allow(clippy::excessive_precision)] // the reference keeps 20 digits
+const P_CUBED_INTEGRAL: f64 = 0.757_602_154_836_948_197_53;
+
+/// The rigid limit against its two-term closed form: the remainder is
+/// O(1/G1) relative (≈ 2e-12 at σ0 = 1 Pa, G1 ≈ 6e11), plus the solver's
+/// 1e-12; measured ≤ 4e-13 (and 3e-16 at σ0 = 1e-2 Pa).
+const RIGID_TOL: f64 = 1e-11;
+
+/// Frequency-independent E = E1 + i E2, both limits of E/σ0 in closed form.
+///
+/// Rigid limit, E/σ0 → ∞ (G1 → ∞): with dG = κ q³C dq,
+/// κ = (π/4)|E|²/((1 − ν²)σ0)², μ = 2E2/((1 − ν²)σ0κ) ∫₀^{G1} (γP + (1 − γ)P³) dG,
+/// ∫₀^{G1} P dG = 2√(G1/π) − ½ + O(G1^{−½}) (from the closed form of
+/// tests/reference/friction_limits.py) and ∫₀^{G1} P³ dG = c3 + O(G1^{−½}).
+/// The leading term, μ → γ (8/π)(E2/|E|)√m3 with m3 = ∫ q³C dq, depends on
+/// neither v nor the load.
+/// Small-G limit (σ0 ≫ E, P = S = 1): μ = 2 E2 m3/((1 − ν²)σ0), A/A0 = 1.
+#[test]
+fn rigid_and_full_contact_limits_in_closed_form() {
+    let s = spectrum();
+    let (e1, e2) = (2e6f64, 5e5f64);
+    let m3 = s.moment(3, 1e2, 1e7).unwrap().value;
+    let rubber = Rubber::new(
+        constant_modulus(e1, e2),
+        TemperatureShift::none(T_REF).unwrap(),
+    );
+    for gamma in [1.0, 0.5] {
+        let opts = FrictionOptions {
+            gamma,
+            ..options(TIGHT)
+        };
+        let f = Friction::new(&s, &rubber, &opts).unwrap();
+        let leading = gamma * 8.0 / PI * e2 / e1.hypot(e2) * m3.sqrt();
+        for v in [1e-9, 1e-2, 1e3] {
+            for sigma0 in [1.0, 1e-2] {
+                let k = 0.75 * sigma0;
+                let kappa = PI / 4.0 * (e1 * e1 + e2 * e2) / (k * k);
+                let g1 = kappa * m3;
+                let two_term = 2.0 * e2 / (k * kappa)
+                    * (gamma * (2.0 * (g1 / PI).sqrt() - 0.5) + (1.0 - gamma) * P_CUBED_INTEGRAL);
+                let r = f.point(v, T_REF, sigma0).unwrap().isothermal;
+                assert!(
+                    rel(r.friction_coefficient, two_term) <= RIGID_TOL,
+                    "γ {gamma} v {v} σ0 {sigma0}: {} vs {two_term} (bound {:e})",
+                    r.friction_coefficient,
+                    r.friction_coefficient_error_bound
+                );
+                assert!(rel(r.friction_coefficient, leading) <= 1.0 / g1.sqrt());
+            }
+            for sigma0 in [1e9, 1e11] {
+                let r = f.point(v, T_REF, sigma0).unwrap().isothermal;
+                let full = 2.0 * e2 * m3 / (0.75 * sigma0);
+                assert!(
+                    rel(r.friction_coefficient, full) <= REFERENCE_TOL,
+                    "σ0 {sigma0}: {} vs {full}",
+                    r.friction_coefficient
+                );
+                assert_eq!(r.contact_fraction, 1.0);
+            }
+        }
+    }
+}
+
 #[test]
 fn cutoff_by_rms_slope_and_its_bounds() {
     let s = spectrum();

@@ -20,12 +20,15 @@
 //! integration matrix, F = dT/dt) with G_j from the same cumulative
 //! integration of dG. They are solved by Newton's method with the Jacobian
 //! I − S diag(∂F_k/∂T_k) (∂F/∂T by a forward difference; the weak coupling
-//! through S(G) is left out of the Jacobian, not out of the residual). A panel
-//! whose iteration does not converge is bisected.
+//! through S(G) is left out of the Jacobian, not out of the residual). The
+//! Jacobian is kept from one iteration to the next (a chord iteration) while
+//! the residual falls at least tenfold per step, and refreshed otherwise; the
+//! stopping rule is on the residual either way. A panel whose iteration does
+//! not converge is bisected.
 //!
 //! # References
 //! B. N. J. Persson, J. Phys.: Condens. Matter 18, 7789 (2006),
-//! doi:10.1088/0953-8984/18/32/025, Sec. 3 (T_q fed back into E(ω, T_q) in
+//! doi:10.1088/0953-8984/18/32/025 (T_q fed back into E(ω, T_q) in
 //! μ and G).
 
 use super::chebyshev::{rule, solve, Map, NODES};
@@ -41,6 +44,10 @@ const NEWTON_TOL: f64 = 1e-14;
 
 /// Forward-difference step of ∂F/∂T, relative to the background temperature.
 const DIFF_STEP: f64 = 1e-6;
+
+/// The Jacobian is kept (chord iteration) while each step cuts the largest
+/// residual by at least this factor; otherwise it is refreshed.
+const CHORD_RATE: f64 = 0.1;
 
 impl Run<'_, '_> {
     /// The node integrands at temperature T.
@@ -66,7 +73,10 @@ impl Run<'_, '_> {
     }
 
     /// Newton's method on the collocation equations for the node rises
-    /// T_j − T; fills `out` on success.
+    /// T_j − T; fills `out` on success. The temperature derivatives (the
+    /// Jacobian and ∂μ/∂T) are refreshed only when the residual stops
+    /// falling fast (a chord iteration otherwise): each refresh costs a
+    /// second integrand evaluation per node.
     fn newton(
         &mut self,
         a: f64,
@@ -80,19 +90,25 @@ impl Run<'_, '_> {
         let step = DIFF_STEP * t0;
         let stop = NEWTON_TOL.max(1e-3 * self.fr.tolerance);
         let b0 = self.base_at(nodes[0].2, c_q[0], h_q[0], t0 + rise_a)?;
-        let b0p = self.base_at(nodes[0].2, c_q[0], h_q[0], t0 + rise_a + step)?;
         let (s0, _, _) = self.sp(self.state.g);
         let mut rise: [f64; NODES] =
             std::array::from_fn(|j| rise_a + s0 * b0.hb * (nodes[j].0 - a));
         rise[0] = rise_a;
+        // ∂(hb, mb)/∂T at the nodes, from the last refresh.
+        let mut slope = [(0.0, 0.0); NODES];
+        let (mut refresh, mut previous) = (true, f64::INFINITY);
         for _ in 0..MAX_NEWTON {
             let mut base = [b0; NODES];
-            let mut plus = [b0p; NODES];
             for j in 1..NODES {
                 base[j] = self.base_at(nodes[j].2, c_q[j], h_q[j], t0 + rise[j])?;
-                plus[j] = self.base_at(nodes[j].2, c_q[j], h_q[j], t0 + rise[j] + step)?;
             }
-            let df = self.fill_nodes(&base, &plus, step, out);
+            if refresh {
+                for j in 0..NODES {
+                    let plus = self.base_at(nodes[j].2, c_q[j], h_q[j], t0 + rise[j] + step)?;
+                    slope[j] = ((plus.hb - base[j].hb) / step, (plus.mb - base[j].mb) / step);
+                }
+            }
+            let df = self.fill_nodes(&base, &slope, out);
             // Residuals of the 16 unknowns (node 0 is the known rise at a).
             let mut res = [0.0; NODES];
             let (mut worst, mut scale) = (0.0f64, rise_a.abs());
@@ -113,6 +129,8 @@ impl Run<'_, '_> {
                 }
                 return Ok(true);
             }
+            refresh = worst > CHORD_RATE * previous;
+            previous = worst;
             let mut jac = [[0.0; NODES]; NODES];
             for j in 1..NODES {
                 for k in 1..NODES {
@@ -131,12 +149,12 @@ impl Run<'_, '_> {
     }
 
     /// The node values of `out` from the integrands at the current rises
-    /// (`base`) and one step hotter (`plus`); returns ∂F/∂T at the nodes.
+    /// (`base`) and their temperature derivatives `slope` = (∂hb/∂T,
+    /// ∂mb/∂T); returns ∂F/∂T at the nodes.
     fn fill_nodes(
         &self,
         base: &[Base; NODES],
-        plus: &[Base; NODES],
-        step: f64,
+        slope: &[(f64, f64); NODES],
         out: &mut PanelOut,
     ) -> [f64; NODES] {
         let r = rule();
@@ -149,10 +167,10 @@ impl Run<'_, '_> {
             out.big_g[j] = self.state.g + cum;
             let (s, p, dsp) = self.sp(out.big_g[j]);
             out.f[j] = s * base[j].hb;
-            df[j] = s * (plus[j].hb - base[j].hb) / step;
+            df[j] = s * slope[j].0;
             out.m[j] = s * p * base[j].mb;
             out.dm_dg[j] = dsp * base[j].mb;
-            out.dm_dt[j] = s * p * (plus[j].mb - base[j].mb) / step;
+            out.dm_dt[j] = s * p * slope[j].1;
             out.g_out[j] = base[j].g_out;
             out.m_out[j] = s * p * base[j].mb_out;
         }

@@ -22,14 +22,36 @@
 //! `tests/reference/friction_heat_kernel.py`), which avoids the cancellation
 //! of the O(1) terms of the numerator.
 //!
+//! # Checks
+//! - The closed form solves the heat equation of the model: in the units
+//!   z → qz, t → Dq²t, u = Dq² ρc T/Q̇0 it reads u_t = u_zz − u + e^{−2z},
+//!   u_z(0) = 0, u(z, 0) = 0, whose surface value has the Laplace transform
+//!   U(0, s) = 1/(s √(s+1) (√(s+1) + 2)); R(x) = u(0, x²)/x² from its
+//!   numerical inversion (mpmath) is a test (`tests/friction/flash.rs`),
+//!   independent of the k-integral and of the erf form, as are both limits.
+//! - Energy: the adiabatic rise of band q is Q̇0 τ/(ρc) with Q̇0 = 2q × the
+//!   band's power per unit contact area, i.e. 2π σ0 dμ/(P ρc): the frictional
+//!   work of half a wavelength deposited in a layer 1/(2q) deep. In full
+//!   contact the adiabatic flash temperature is 2π σ0 μ/(ρc) (tested in
+//!   closed form for a frequency-independent loss).
+//!
 //! # References
 //! - B. N. J. Persson, J. Phys.: Condens. Matter 18, 7789 (2006),
-//!   doi:10.1088/0953-8984/18/32/025, Sec. 3: the flash temperature T_q of the
-//!   contact regions at magnification q/q_L, built up from the heat produced at
-//!   the larger scales q′ < q. The kernel above is this crate's derivation of
-//!   that heat-diffusion step (source depth 1/(2q), lateral size π/q, contact
-//!   time π/(qv), insulated surface); the paper's own kernel could not be
-//!   checked factor by factor here.
+//!   doi:10.1088/0953-8984/18/32/025 (arXiv:cond-mat/0605273): the
+//!   flash temperature T_q of the contact regions at magnification q/q_L,
+//!   built up from the heat produced at the larger scales q′ < q and fed back
+//!   into E(ω, T_q). **Not checked factor by factor.** The stored copies of
+//!   the paper reachable here (ar5iv, core.ac.uk, tomesphere) hold only its
+//!   title, abstract and first paragraph; the later papers that restate the
+//!   equations (Fortunato et al., J. Phys.: Condens. Matter 27, 175008
+//!   (2015); Fortunato et al., arXiv:1512.01359; Lorenz et al., Eur. Phys.
+//!   J. E 34, 129 (2011)) only their abstracts; the open implementations
+//!   found either have no flash temperature (`perssonmodelling`) or use
+//!   Greenwood's single-contact interpolation formula instead of a per-scale
+//!   kernel. So the source depth 1/(2q), the spot size π/q, the contact time
+//!   τ = π/(qv), the insulated surface and the dependence of the kernel on
+//!   q′ only (not on the observation scale q) are this crate's choices; the
+//!   paper's kernel may differ in any of them by factors of order one.
 //! - H. S. Carslaw, J. C. Jaeger, *Conduction of Heat in Solids*, 2nd ed.
 //!   (Oxford, 1959), ch. 10 (instantaneous and continuous sources).
 

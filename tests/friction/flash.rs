@@ -19,6 +19,42 @@ const RK4_TOL: f64 = 1e-11;
 /// this (K) and μ changes by less than this relative amount.
 const FAST_CONDUCTION_TOL: f64 = 1e-6;
 
+/// R(x) = h/τ from the heat equation of the kernel's model, solved in the
+/// Laplace domain and inverted numerically (mpmath, Talbot and de Hoog agree
+/// to 40 digits; tests/reference/friction_heat_kernel.py): independent of the
+/// k-integral and of the erf closed form in src/friction/heat.rs.
+#[allow(clippy::excessive_precision)] // the references keep 20 digits
+const R_FROM_THE_HEAT_EQUATION: [(f64, f64); 7] = [
+    (0.02, 9.704_980_885_709_048_348_5e-1),
+    (0.2, 7.490_916_537_044_985_852_3e-1),
+    (0.7, 3.830_786_541_188_604_319_4e-1),
+    (1.0, 2.597_854_681_927_137_206_1e-1),
+    (2.0, 8.276_281_355_264_321_109_5e-2),
+    (5.0, 1.333_333_333_330_273_017_8e-2),
+    (20.0, 8.333_333_333_333_333_333_3e-4),
+];
+
+/// erf/erfcx are ≤ 2 ulp; the closed form's numerator cancels to ~3e-2 of
+/// its terms at x = 0.1 (just above the series switch): ≤ 1e-14 relative.
+const KERNEL_TOL: f64 = 1e-14;
+
+/// The heat kernel against the heat equation it claims to solve (source
+/// Q̇0 e^{−2qz} cos(qx) switched on for τ = π/(qv), insulated surface): the
+/// short-time limit R → 1 (adiabatic), the long-time limit R → 1/(3x²)
+/// (steady conduction) and five points between them.
+#[test]
+fn heat_kernel_solves_its_heat_equation() {
+    for (x, want) in R_FROM_THE_HEAT_EQUATION {
+        let r = persson::friction::heat_kernel_ratio(x);
+        assert!(rel(r, want) <= KERNEL_TOL, "R({x}) = {r}, want {want}");
+        // h(q) = τ R(x) with x² = π D q / v.
+        let (q, v) = (1e5, 0.01);
+        let d = x * x * v / (PI * q);
+        let h = heat_kernel(q, v, d);
+        assert!(rel(h, PI / (q * v) * want) <= KERNEL_TOL, "h at x {x}");
+    }
+}
+
 /// The flash temperature of a temperature-independent rubber with γ = 1 (S = 1),
 /// E = E1 + i E2 constant: ΔT = 4 v E2/((1 − ν²) ρc) ∫ q⁴ C h(q) dq.
 /// Adiabatic (D → 0, h = π/(qv)): ΔT = 2 E2 h′²_rms/((1 − ν²) ρc).

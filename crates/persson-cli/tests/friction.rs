@@ -119,13 +119,15 @@ fn bad_input_names_the_flag_or_the_line() {
     );
     let nan = file("nan.txt", "1 1e6 1e5\n10 2e6 nan\n100 3e6 3e5\n");
     let short = file("short.txt", "1 1e6 1e5\n10 2e6 2e5\n");
+    let negative = file("negative.txt", "1 1e6 1e5\n10 -2e6 2e5\n100 3e6 3e5\n");
+    let lossless = file("lossless.txt", "1 1e6 1e5\n10 2e6 2e5\n100 3e6 0\n");
     let cases: Vec<(String, &str)> = vec![
-        (format!("{SLS} --pressure 2e5 --velocity 0"), "velocity"),
-        (format!("{SLS} --pressure 2e5 --velocity -1"), "velocity"),
-        (format!("{SLS} --pressure 2e5 --velocity nan"), "velocity"),
+        (format!("{SLS} --pressure 2e5 --velocity 0"), "--velocity"),
+        (format!("{SLS} --pressure 2e5 --velocity -1"), "--velocity"),
+        (format!("{SLS} --pressure 2e5 --velocity nan"), "--velocity"),
         (
             format!("{SLS} --pressure 2e5 --velocity-range 0,1,3"),
-            "velocity_min",
+            "--velocity-range",
         ),
         (
             format!("{SLS} --pressure 2e5 --velocity-range 1,2"),
@@ -135,12 +137,25 @@ fn bad_input_names_the_flag_or_the_line() {
             format!("{SLS} --wlf 8.86,101.6,293.15 --temperature 191 --pressure 2e5 --velocity 1"),
             "WLF singularity",
         ),
-        (format!("{SLS} --pressure 2e5 --velocity 1 --q1 1e8"), "q1"),
-        (format!("{SLS} --pressure 2e5 --velocity 1 --q1 1e3"), "q1"),
         (
-            format!("{SLS} --pressure 0 --velocity 1"),
-            "nominal_pressure",
+            format!(
+                "{SLS} --wlf 8.86,101.6,293.15 --temperature 191.55 --pressure 2e5 --velocity 1"
+            ),
+            "--temperature",
         ),
+        (
+            format!("{SLS} --pressure 2e5 --velocity 1 --q1 1e8"),
+            "--q1",
+        ),
+        (
+            format!("{SLS} --pressure 2e5 --velocity 1 --q1 1e3"),
+            "--q1",
+        ),
+        (
+            format!("{SLS} --pressure 2e5 --velocity 1 --q1-rms-slope 50"),
+            "--q1-rms-slope",
+        ),
+        (format!("{SLS} --pressure 0 --velocity 1"), "--pressure"),
         (format!("{SLS} --velocity 1"), "--pressure"),
         (format!("{SLS} --pressure 2e5"), "--velocity"),
         (
@@ -166,6 +181,14 @@ fn bad_input_names_the_flag_or_the_line() {
         (
             format!("--master-curve {short} --frequency-unit Hz --pressure 2e5 --velocity 1"),
             "at least 3",
+        ),
+        (
+            format!("--master-curve {negative} --frequency-unit Hz --pressure 2e5 --velocity 1"),
+            "negative.txt:2",
+        ),
+        (
+            format!("--master-curve {lossless} --frequency-unit Hz --pressure 2e5 --velocity 1"),
+            "lossless.txt:3",
         ),
         (
             format!("--master-curve {short} --pressure 2e5 --velocity 1"),

@@ -82,13 +82,8 @@ pub fn run(a: Args) -> anyhow::Result<()> {
 
 /// The library's error with the flag of the field it names.
 fn name_flag(e: persson::Error) -> anyhow::Error {
-    let field = match &e {
-        persson::Error::InvalidParameter { name, .. } => Some(name.as_str()),
-        persson::Error::Inconsistent { name, .. } => Some(name.as_str()),
-        _ => None,
-    };
-    match field.and_then(|f| FLAGS.iter().find(|(k, _)| *k == f)) {
-        Some((_, flag)) => anyhow::anyhow!("{flag}: {e}"),
+    match super::args::flag_of(&e, FLAGS) {
+        Some(flag) => anyhow::anyhow!("{flag}: {e}"),
         None => e.into(),
     }
 }
