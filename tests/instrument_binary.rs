@@ -1,6 +1,6 @@
 //! Binary instrument formats (Gwyddion `.gwy`, Digital Surf `.sur`, Zygo
 //! MetroPro `.dat`, NetCDF `.nc`, Alicona `.al3d`, Sensofar `.plu`, Igor
-//! binary wave `.ibw`) on
+//! binary wave `.ibw`, Bruker Nanoscope `.di`) on
 //! real files (`tests/data/`, origins and licences in `tests/data/README.md`):
 //! the grid, sizes, undefined points and heights as read, against
 //! SurfaceTopography (or gwyfile where SurfaceTopography reads nothing)
@@ -149,6 +149,8 @@ fn truncated_files_are_errors_naming_the_format() {
             "Igor binary wave .ibw",
             None,
         ),
+        // The first channel (ZSensor); three more follow.
+        ("di-3.di", "Nanoscope .spm/.di", Some(40960 + 256 * 256 * 2)),
     ] {
         let b = std::fs::read(data(name)).unwrap();
         let o = ReadOptions {
@@ -540,4 +542,60 @@ fn ibw_big_endian_wave_reads_with_igors_y_upwards() {
     // Igor's last row (y up) is the map's first.
     let um: Vec<f64> = t.heights().iter().map(|h| (h * 1e6).round()).collect();
     assert_eq!(um, [5.0, 7.0, 3.0, 4.0, 1.0, 2.0]);
+}
+
+#[test]
+fn nanoscope_channels_scales_and_damage() {
+    let b = std::fs::read(data("di-3.di")).unwrap();
+    let o = ReadOptions::default();
+    let text = |from: &str, to: &str| {
+        let at = b
+            .windows(from.len())
+            .position(|w| w == from.as_bytes())
+            .unwrap();
+        let mut c = b.clone();
+        c[at..at + to.len()].copy_from_slice(to.as_bytes());
+        c
+    };
+    // The first channel's sensitivity in V/V (not a length): the next
+    // length channel (Height, the fourth) is read.
+    let t = read::from_bytes(
+        Path::new("h.di"),
+        &text("[Sens. ZsensSens]", "[Sens. biassens] "),
+        &o,
+    )
+    .unwrap();
+    let first = read::from_bytes(Path::new("h.di"), &b, &o).unwrap();
+    assert_ne!(t.heights()[0], first.heights()[0]);
+    error_of(
+        "s.di",
+        &text("[Sens. ZsensSens]", "[Sens. Nonesuch] "),
+        &o,
+        "\"Sens. Nonesuch\" of ZSensor is not in the header",
+    );
+    error_of(
+        "b.di",
+        &text("Bytes/pixel: 2", "Bytes/pixel: 3"),
+        &o,
+        "3 bytes per pixel",
+    );
+    error_of(
+        "l.di",
+        &text("Data length: 131072", "Data length: 131070"),
+        &o,
+        "data length 131070",
+    );
+    error_of(
+        "z.di",
+        &text("Scan Size: 10 10 ~m", "Scan Size: 10 10 Hz"),
+        &o,
+        "Scan Size",
+    );
+    error_of(
+        "x.di",
+        &text("\\Version", "Version"),
+        &o,
+        "does not start with a backslash",
+    );
+    error_of("e.di", &b[..30000], &o, "no \\*File list end");
 }

@@ -253,7 +253,7 @@ def main():
     write_st_mask_nc(path)
     for name in ["gwyfile-mask.gwy", "sur-2.sur", "sur-3.sur", "metropro-1.dat", "nc-1.nc",
                  "st-mask.nc", "al3d-1.al3d", "plu-1.plu", "spot_1-1000nm.ibw",
-                 "10x10-one_channel_without_name.ibw"]:
+                 "10x10-one_channel_without_name.ibw", "di-3.di"]:
         t, entry = st_points(path, name)
         points.append(entry)
         # sur-3: 89 % undefined; nc-1: a plane (its detrended rms is rounding

@@ -14,6 +14,7 @@
 //! | NetCDF classic, `heights(x, y)` or `heights(x)` | `.nc`, or `CDF` | `length` of `x`, `y` (absent: the caller's) | `unit` of `heights` (absent: of `x`) | `mask` ≠ 0, `_FillValue` |
 //! | Alicona `.al3d` | `.al3d`, or `AliconaImaging` | `Cols·PixelSizeXMeter`, `Rows·PixelSizeYMeter` | m | NaN, `InvalidPixelValue` |
 //! | Sensofar `.plu` (topography, first layer) | `.plu`, `.apx` (no magic) | nx·Δx, ny·Δy | µm | 1000001 |
+//! | Bruker/Veeco Nanoscope (the first height channel) | `.spm`, `.di`, or `\*File list` (`.000`, `.001`, …) | `Scan Size` | the sensitivity's (`nm/V`) | – |
 //! | Igor binary wave `.ibw` v5 (Asylum Research; the first height channel) | `.ibw` | nx·sfA[0], ny·sfA[1] (no unit of x: the caller's) | `dataUnits` (none: the caller's, required) | NaN |
 //!
 //! # Axis order
@@ -52,7 +53,7 @@
 //!
 //! # Unsupported formats
 //! Binary instrument formats not in the table (`.datx`, `.opd`,
-//! `.vk4`, `.spm`, HDF5, …) are an error that names the format and says how to
+//! `.vk4`, HDF5, …) are an error that names the format and says how to
 //! convert them.
 //!
 //! Every error is an [`Error::Parse`] naming the file (and line where it
@@ -62,6 +63,7 @@
 mod al3d;
 mod bin;
 mod detect;
+mod di;
 mod gsf;
 mod gwy;
 mod header;
@@ -123,6 +125,8 @@ pub enum Format {
     Plu,
     /// Igor binary wave `.ibw` (Asylum Research).
     Ibw,
+    /// Bruker/Veeco Nanoscope `.spm`, `.di`, `.000`, ….
+    Nanoscope,
 }
 
 /// How to read a topography.
@@ -301,6 +305,7 @@ fn parse(path: &Path, bytes: &[u8], options: &ReadOptions) -> Result<Raw> {
         Format::Al3d => al3d::parse(path, bytes)?,
         Format::Plu => plu::parse(path, bytes)?,
         Format::Ibw => ibw::parse(path, bytes)?,
+        Format::Nanoscope => di::parse(path, bytes)?,
     };
     Ok(raw)
 }
