@@ -1,5 +1,6 @@
 //! Binary instrument formats (Gwyddion `.gwy`, Digital Surf `.sur`, Zygo
-//! MetroPro `.dat`, NetCDF `.nc`) on
+//! MetroPro `.dat`, NetCDF `.nc`, Alicona `.al3d`, Sensofar `.plu`, Igor
+//! binary wave `.ibw`, Bruker Nanoscope `.di`) on
 //! real files (`tests/data/`, origins and licences in `tests/data/README.md`):
 //! the grid, sizes, undefined points and heights as read, against
 //! SurfaceTopography (or gwyfile where SurfaceTopography reads nothing)
@@ -39,6 +40,12 @@ fn options(name: &str) -> ReadOptions {
         "gwyfile-test.gwy" => ReadOptions {
             height_unit: Some(LengthUnit::Nanometre),
             lateral_unit: Some(LengthUnit::Micrometre),
+            ..Default::default()
+        },
+        // An Igor wave without units (Igor's default step 1).
+        "10x10-one_channel_without_name.ibw" => ReadOptions {
+            height_unit: Some(LengthUnit::Metre),
+            size: Some(read::SizeSpec::PixelSize(1.0)),
             ..Default::default()
         },
         _ => ReadOptions::default(),
@@ -124,29 +131,53 @@ fn error_of(name: &str, bytes: &[u8], o: &ReadOptions, needle: &str) -> String {
 
 #[test]
 fn truncated_files_are_errors_naming_the_format() {
-    for (name, format) in [
-        ("gwyfile-mask.gwy", "Gwyddion .gwy"),
-        ("gwyfile-test.gwy", "Gwyddion .gwy"),
-        ("sur-2.sur", "Digital Surf .sur"),
-        ("sur-3.sur", "Digital Surf .sur"),
-        ("metropro-1.dat", "Zygo MetroPro .dat"),
-        ("nc-1.nc", "NetCDF .nc"),
-        ("st-mask.nc", "NetCDF .nc"),
+    // The bytes each reader needs: the whole file, or up to the end of the
+    // heights (al3d: a texture image follows; ibw: Igor's optional records).
+    for (name, format, needed) in [
+        ("gwyfile-mask.gwy", "Gwyddion .gwy", None),
+        ("gwyfile-test.gwy", "Gwyddion .gwy", None),
+        ("sur-2.sur", "Digital Surf .sur", None),
+        ("sur-3.sur", "Digital Surf .sur", None),
+        ("metropro-1.dat", "Zygo MetroPro .dat", None),
+        ("nc-1.nc", "NetCDF .nc", None),
+        ("st-mask.nc", "NetCDF .nc", None),
+        ("al3d-1.al3d", "Alicona .al3d", Some(1261 + 200 * 296 * 4)),
+        ("plu-1.plu", "Sensofar .plu", None),
+        ("spot_1-1000nm.ibw", "Igor binary wave .ibw", Some(2112969)),
+        (
+            "10x10-one_channel_without_name.ibw",
+            "Igor binary wave .ibw",
+            None,
+        ),
+        // The first channel (ZSensor); three more follow.
+        ("di-3.di", "Nanoscope .spm/.di", Some(40960 + 256 * 256 * 2)),
     ] {
         let b = std::fs::read(data(name)).unwrap();
         let o = ReadOptions {
             fill_undefined: true,
             ..options(name)
         };
-        for cut in [4, 13, 100, 511, 512, 600, b.len() / 2, b.len() - 1] {
+        let n = needed.unwrap_or(b.len());
+        for cut in [4, 13, 100, 511, 512, 600, n / 2, n - 1] {
             let e = error_of(name, &b[..cut], &o, format);
             assert!(e.contains("truncated"), "{name} cut at {cut}: {e}");
         }
+        assert!(
+            read::from_bytes(Path::new(name), &b[..n], &o).is_ok(),
+            "{name}"
+        );
         // The same bytes under another name are recognised by content (and
         // parsed to the undefined points, not filled here: sur-3 has 2.3·10⁵).
+        // .plu and .ibw have no magic: read by their extension only.
         let o = options(name);
+        let by_extension = name.ends_with(".plu") || name.ends_with(".ibw");
         match read::from_bytes(Path::new("renamed.bin"), &b, &o) {
-            Ok(t) => assert!(t.nx() > 1, "{name}"),
+            Ok(t) => assert!(t.nx() > 1 && !by_extension, "{name}"),
+            Err(e) if by_extension => assert!(
+                e.to_string()
+                    .contains("unsupported format (.bin, binary data)"),
+                "{name}: {e}"
+            ),
             Err(e) => assert!(
                 e.to_string().contains("points are undefined"),
                 "{name}: {e}"
@@ -379,4 +410,233 @@ fn netcdf_versions_conventions_and_damage() {
     // The heights in nm as the x unit says; x:length 5 (nm) over 5 points.
     let t = read::from_bytes(Path::new("n.nc"), &b, &o).unwrap();
     assert_eq!((t.nx(), t.ny(), t.lx(), t.ly()), (5, 10, 5e-9, 1e-8));
+}
+
+#[test]
+fn al3d_plu_ibw_units_channels_and_damage() {
+    let o = ReadOptions::default();
+    let with = |name: &str, offset: usize, v: &[u8]| {
+        let mut c = std::fs::read(data(name)).unwrap();
+        c[offset..offset + v.len()].copy_from_slice(v);
+        c
+    };
+    // al3d: tags of 52 bytes after the 17-byte magic; the third is Cols.
+    let al3d = "al3d-1.al3d";
+    error_of(
+        "a.al3d",
+        &with(al3d, 17 + 50, b"\n\r"),
+        &o,
+        "does not end with CR LF",
+    );
+    error_of(
+        "a.al3d",
+        &with(al3d, 17 + 2 * 52, b"Colz"),
+        &o,
+        "no tag Cols",
+    );
+    error_of(
+        "a.al3d",
+        &with(al3d, 17 + 52 + 20, b"x"),
+        &o,
+        "TagCount = \"x7\"",
+    );
+    error_of(
+        "a.al3d",
+        &with(al3d, 17 + 2 * 52 + 20, b"0\0\0"),
+        &o,
+        "Cols × Rows = 0 × 296",
+    );
+    // The marker of undefined points, written where the first height is.
+    let marker = 3.000000028082e15f32.to_le_bytes();
+    error_of(
+        "a.al3d",
+        &with(al3d, 1261, &marker),
+        &o,
+        "1 of 59200 points are undefined",
+    );
+    // plu: the measurement type at 428 (1: a profile); no layers.
+    let plu = "plu-1.plu";
+    error_of(
+        "p.plu",
+        &with(plu, 428, &1u32.to_le_bytes()),
+        &o,
+        "type 1 (a profile)",
+    );
+    error_of("p.plu", &with(plu, 489, &[0]), &o, "no layers");
+    error_of(
+        "p.plu",
+        &with(plu, 508, &1_000_001f32.to_le_bytes()),
+        &o,
+        "1 of 442368 points",
+    );
+    // ibw: without units the caller gives them; channels by name.
+    let bare = "10x10-one_channel_without_name.ibw";
+    let b = std::fs::read(data(bare)).unwrap();
+    error_of("w.ibw", &b, &o, "states no unit of the heights");
+    let z = ReadOptions {
+        height_unit: Some(LengthUnit::Nanometre),
+        ..Default::default()
+    };
+    error_of("w.ibw", &b, &z, "stores no physical size");
+    let t = read::from_bytes(Path::new("w.ibw"), &b, &options(bare)).unwrap();
+    assert_eq!((t.nx(), t.ny(), t.lx()), (10, 10, 10.0));
+    let spot = "spot_1-1000nm.ibw";
+    // The labels follow the note: rename the two height channels.
+    let labels = 64 + 2097472 + 15145 + 32;
+    let renamed = with(spot, labels, b"PhaseA\0");
+    let renamed = {
+        let mut c = renamed;
+        c[labels + 32..labels + 39].copy_from_slice(b"PhaseB\0");
+        c
+    };
+    error_of("s.ibw", &renamed, &o, "no height channel");
+    // HeightRetrace (the second channel) when the first is not a height.
+    let t = read::from_bytes(Path::new("s.ibw"), &with(spot, labels, b"PhaseA\0"), &o).unwrap();
+    let first =
+        read::from_bytes(Path::new("s.ibw"), &std::fs::read(data(spot)).unwrap(), &o).unwrap();
+    assert_ne!(t.heights()[0], first.heights()[0]);
+    error_of(
+        "s.ibw",
+        &with(spot, 148 + 64, b"deg\0"),
+        &o,
+        "not a unit of length",
+    );
+    error_of("s.ibw", &with(spot, 0, &[3, 0]), &o, "version 3");
+    error_of(
+        "s.ibw",
+        &with(spot, 64 + 16, &1i16.to_le_bytes()),
+        &o,
+        "wave type 0x1",
+    );
+    error_of(
+        "s.ibw",
+        &with(spot, 64 + 12, &7i32.to_le_bytes()),
+        &o,
+        "npnts = 7",
+    );
+}
+
+#[test]
+fn ibw_big_endian_wave_reads_with_igors_y_upwards() {
+    // A 2 × 3 float32 wave in µm, big-endian (Igor on a Mac): version 5,
+    // wfmSize 320 + 24, then the wave header and the values, x fastest.
+    let mut b = vec![0u8; 64 + 320];
+    b[0..2].copy_from_slice(&5i16.to_be_bytes());
+    b[4..8].copy_from_slice(&(320i32 + 24).to_be_bytes());
+    let w = 64;
+    b[w + 12..w + 16].copy_from_slice(&6i32.to_be_bytes());
+    b[w + 16..w + 18].copy_from_slice(&2i16.to_be_bytes());
+    b[w + 68..w + 72].copy_from_slice(&2i32.to_be_bytes());
+    b[w + 72..w + 76].copy_from_slice(&3i32.to_be_bytes());
+    b[w + 84..w + 92].copy_from_slice(&0.5f64.to_be_bytes());
+    b[w + 92..w + 100].copy_from_slice(&0.25f64.to_be_bytes());
+    for at in [148, 152, 156] {
+        b[w + at] = b'u';
+        b[w + at + 1] = b'm';
+    }
+    for v in [1f32, 2.0, 3.0, 4.0, 5.0, 7.0] {
+        b.extend(v.to_be_bytes());
+    }
+    let t = read::from_bytes(Path::new("be.ibw"), &b, &ReadOptions::default()).unwrap();
+    assert_eq!((t.nx(), t.ny(), t.lx(), t.ly()), (2, 3, 1e-6, 0.75e-6));
+    // Igor's last row (y up) is the map's first.
+    let um: Vec<f64> = t.heights().iter().map(|h| (h * 1e6).round()).collect();
+    assert_eq!(um, [5.0, 7.0, 3.0, 4.0, 1.0, 2.0]);
+}
+
+#[test]
+fn nanoscope_channels_scales_and_damage() {
+    let b = std::fs::read(data("di-3.di")).unwrap();
+    let o = ReadOptions::default();
+    let text = |from: &str, to: &str| {
+        let at = b
+            .windows(from.len())
+            .position(|w| w == from.as_bytes())
+            .unwrap();
+        let mut c = b.clone();
+        c[at..at + to.len()].copy_from_slice(to.as_bytes());
+        c
+    };
+    // The first channel's sensitivity in V/V (not a length): the next
+    // length channel (Height, the fourth) is read.
+    let t = read::from_bytes(
+        Path::new("h.di"),
+        &text("[Sens. ZsensSens]", "[Sens. biassens] "),
+        &o,
+    )
+    .unwrap();
+    let first = read::from_bytes(Path::new("h.di"), &b, &o).unwrap();
+    assert_ne!(t.heights()[0], first.heights()[0]);
+    error_of(
+        "s.di",
+        &text("[Sens. ZsensSens]", "[Sens. Nonesuch] "),
+        &o,
+        "\"Sens. Nonesuch\" of ZSensor is not in the header",
+    );
+    error_of(
+        "b.di",
+        &text("Bytes/pixel: 2", "Bytes/pixel: 3"),
+        &o,
+        "3 bytes per pixel",
+    );
+    error_of(
+        "l.di",
+        &text("Data length: 131072", "Data length: 131070"),
+        &o,
+        "data length 131070",
+    );
+    error_of(
+        "z.di",
+        &text("Scan Size: 10 10 ~m", "Scan Size: 10 10 Hz"),
+        &o,
+        "Scan Size",
+    );
+    error_of(
+        "x.di",
+        &text("\\Version", "Version"),
+        &o,
+        "does not start with a backslash",
+    );
+    error_of("e.di", &b[..30000], &o, "no \\*File list end");
+}
+
+/// Every prefix of the header region and 64 longer ones, and 400 files
+/// with one to four bytes of the first 4 kB replaced (a fixed-seed
+/// generator): an error or a topography with finite heights, never a
+/// panic. (The fuzz targets `fuzz/fuzz_targets/read_*.rs` search further.)
+#[test]
+fn damaged_al3d_plu_ibw_nanoscope_files_never_panic() {
+    let o = ReadOptions::default();
+    let mut seed: u64 = 0x9E37_79B9_7F4A_7C15;
+    let mut next = move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        seed
+    };
+    for name in [
+        "al3d-1.al3d",
+        "plu-1.plu",
+        "spot_1-1000nm.ibw",
+        "10x10-one_channel_without_name.ibw",
+        "di-3.di",
+    ] {
+        let b = std::fs::read(data(name)).unwrap();
+        let check = |bytes: &[u8]| {
+            if let Ok(t) = read::from_bytes(Path::new(name), bytes, &o) {
+                assert!(t.heights().iter().all(|h| h.is_finite()), "{name}");
+            }
+        };
+        let head = b.len().min(4096);
+        (0..head).for_each(|n| check(&b[..n]));
+        (1..=64).for_each(|k| check(&b[..b.len() * k / 64]));
+        for _ in 0..400 {
+            let mut c = b.clone();
+            for _ in 0..1 + next() % 4 {
+                let at = (next() % head as u64) as usize;
+                c[at] = next() as u8;
+            }
+            check(&c);
+        }
+    }
 }

@@ -24,6 +24,14 @@ const ST_AGREEMENT: f64 = 1e-10;
 /// conjugate gradients to a relative residual of 1e-12 here and by a sparse
 /// direct solve there: the filled heights agree to ~1e-12 of the heights.
 const ST_FILLED: f64 = 1e-10;
+/// The spectrum of a map whose heights carry a large constant (al3d-1.al3d:
+/// heights near 0.076 m, 2.9e-7 m rms after the plane): the plane fit
+/// cancels 5.4 digits, so each detrended height is rounded to
+/// ε·0.076/2.9e-7 ≈ 6e-11 of itself, and the low-q bins, where the plane
+/// matters most, more. SurfaceTopography's own C(q) moves by 2.2e-10
+/// (relative, first bin) when the mean is subtracted from the heights
+/// before it detrends (measured).
+const ST_LARGE_OFFSET: f64 = 1e-9;
 /// Heights written as decimals and read back: one rounding of the product
 /// raw·increment + offset (x3p) or raw·factor (text with a conversion factor).
 const ONE_ROUNDING: f64 = 4.0 * f64::EPSILON;
@@ -70,6 +78,11 @@ fn maps_agree_with_surface_topography() {
             ST_FILLED
         } else {
             ST_AGREEMENT
+        };
+        let tol_c = if m.file == "al3d-1.al3d" {
+            ST_LARGE_OFFSET
+        } else {
+            tol
         };
         let mut worst: f64 = 0.0;
         let w = &mut worst;
@@ -120,7 +133,7 @@ fn maps_agree_with_surface_topography() {
                 &format!("{} C[{b}]", m.file),
                 a.psd.c[b] * TAU * TAU,
                 m.c_st[b],
-                tol,
+                tol_c,
             );
         }
         eprintln!(
@@ -715,7 +728,7 @@ fn unsupported_binary_formats_say_what_to_do() {
             b"\x01\x00Directory",
             "unsupported format (.opd)",
         ),
-        ("map.plu", b"anything", "unsupported format (.plu)"),
+        ("map.plux", b"anything", "unsupported format (.plux)"),
         ("scan.vk4", b"VK4_\0\0", "unsupported format (.vk4)"),
         (
             "renamed.bin",

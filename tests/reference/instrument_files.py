@@ -56,6 +56,9 @@ from SurfaceTopography import Topography, UniformLineScan, read_topography
 HERE = os.path.dirname(os.path.abspath(__file__))
 DATA = os.path.join(HERE, "..", "data")
 UNITS = {"m": 1.0, "mm": 1e-3, "µm": 1e-6, "um": 1e-6, "nm": 1e-9, None: 1.0}
+# plu-1.plu is the first 1 769 988 bytes of SurfaceTopography's plu-1.plu
+# (the header and the height layer; the images after it left out):
+# SurfaceTopography reads both to the same numbers (tests/data/README.md).
 
 
 def arr(values):
@@ -249,12 +252,14 @@ def main():
     points = []
     write_st_mask_nc(path)
     for name in ["gwyfile-mask.gwy", "sur-2.sur", "sur-3.sur", "metropro-1.dat", "nc-1.nc",
-                 "st-mask.nc"]:
+                 "st-mask.nc", "al3d-1.al3d", "plu-1.plu", "spot_1-1000nm.ibw",
+                 "10x10-one_channel_without_name.ibw", "di-3.di"]:
         t, entry = st_points(path, name)
         points.append(entry)
         # sur-3: 89 % undefined; nc-1: a plane (its detrended rms is rounding
         # noise, 2e-24 m): grid, sizes and heights only
-        if name not in ("sur-3.sur", "nc-1.nc"):
+        # 10x10-…ibw: no units (persson needs them given), a smooth test wave
+        if name not in ("sur-3.sur", "nc-1.nc", "10x10-one_channel_without_name.ibw"):
             binary_maps.append(map_entry(name, metres(t)))
     points.append(gwyfile_points(path, "gwyfile-test.gwy", 1e-9, 1e-6))
     for name in ["gwyddion-export-english.txt", "gwyddion-export-german.txt",

@@ -629,14 +629,25 @@ fn instrument_files_through_the_command_line() {
     t.push("--transpose");
     assert_eq!(json(&t)["shape"], serde_json::json!([3, 2]));
 
-    let sur = dir().join("scan.plu");
+    let sur = dir().join("scan.vk4");
     std::fs::write(&sur, b"anything\0\0\0").unwrap();
     let (code, out, err) = persson(&["spectrum", "--surface", &sur.to_string_lossy()]);
     assert_eq!((code, out.as_str()), (2, ""), "{err}");
     assert_eq!(err.lines().count(), 1, "{err}");
     assert!(
-        err.contains("unsupported format (.plu): persson reads")
+        err.contains("unsupported format (.vk4): persson reads")
             && err.contains("export to GSF or x3p with Gwyddion or SurfaceTopography"),
+        "{err}"
+    );
+    // An Igor wave without units: the user says them, never metres by default.
+    let ibw = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../tests/data/10x10-one_channel_without_name.ibw"
+    );
+    let (code, _, err) = persson(&["spectrum", "--surface", ibw]);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("no unit of the heights") && err.contains("--height-unit"),
         "{err}"
     );
 }

@@ -3,15 +3,15 @@
 
 use std::path::Path;
 
-use super::{gsf, gwy, metropro, netcdf, sur, Format};
+use super::{al3d, di, gsf, gwy, metropro, netcdf, sur, Format};
 use crate::error::{Error, Result};
 
 /// Extensions of binary instrument formats persson does not read.
 const UNSUPPORTED: &[&str] = &[
-    "plu", "plux", "datx", "opd", "opdx", "di", "spm", "ibw", "mi", "nid", "frt", "al3d", "bcrf",
-    "bcr", "mnt", "lext", "vk3", "vk4", "vk6", "vk7", "zon", "zmg", "os3d", "oir", "poir", "jpk",
-    "tmd", "top", "nms", "stp", "h5", "hdf5", "mat", "tif", "tiff", "sdf", "ezd", "mdt", "xlsx",
-    "xls", "zip", "gz", "hgt", "dzi", "qep", "nmm", "ps", "wsxm",
+    "plux", "datx", "opd", "opdx", "mi", "nid", "frt", "bcrf", "bcr", "mnt", "lext", "vk3", "vk4",
+    "vk6", "vk7", "zon", "zmg", "os3d", "oir", "poir", "jpk", "tmd", "top", "nms", "stp", "h5",
+    "hdf5", "mat", "tif", "tiff", "sdf", "ezd", "mdt", "xlsx", "xls", "zip", "gz", "hgt", "dzi",
+    "qep", "nmm", "ps", "wsxm",
 ];
 
 /// Leading bytes of binary formats persson does not read, with their names.
@@ -28,7 +28,8 @@ const MAGICS: &[(&[u8], &str)] = &[
 /// What persson reads, for the error on a format it does not.
 pub(crate) const READS: &str = "persson reads .npy, text (a matrix, XYZ triples or a line \
      scan, in .txt, .csv, .dat, .asc or .xyz), Gwyddion .gsf and .gwy, Digital Surf .sur, \
-     Zygo MetroPro .dat, NetCDF .nc and ISO 25178-72 .x3p; export to GSF or x3p with Gwyddion or \
+     Zygo MetroPro .dat, NetCDF .nc, Alicona .al3d, Sensofar .plu, Igor binary wave .ibw \
+     (Asylum Research), Bruker Nanoscope .spm/.di/.000 and ISO 25178-72 .x3p; export to GSF or x3p with Gwyddion or \
      SurfaceTopography";
 
 fn unsupported(path: &Path, what: &str) -> Error {
@@ -54,6 +55,10 @@ pub(crate) fn format(path: &Path, bytes: &[u8]) -> Result<Format> {
         Some("gwy") => return Ok(Format::Gwy),
         Some("sur") => return Ok(Format::Sur),
         Some("nc") => return Ok(Format::NetCdf),
+        Some("al3d") => return Ok(Format::Al3d),
+        Some("plu" | "apx") => return Ok(Format::Plu),
+        Some("ibw") => return Ok(Format::Ibw),
+        Some("spm" | "di") => return Ok(Format::Nanoscope),
         Some(e) if UNSUPPORTED.contains(&e) => return Err(unsupported(path, &format!(".{e}"))),
         _ => {}
     }
@@ -74,6 +79,12 @@ pub(crate) fn format(path: &Path, bytes: &[u8]) -> Result<Format> {
     }
     if bytes.starts_with(sur::MAGIC) || bytes.starts_with(sur::MAGIC_COMPRESSED) {
         return Ok(Format::Sur);
+    }
+    if bytes.starts_with(di::MAGIC) {
+        return Ok(Format::Nanoscope);
+    }
+    if bytes.starts_with(al3d::MAGIC) {
+        return Ok(Format::Al3d);
     }
     if bytes.starts_with(b"PK\x03\x04") {
         return Ok(Format::X3p);

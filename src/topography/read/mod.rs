@@ -12,6 +12,10 @@
 //! | Digital Surf | `.sur`, or `DIGITAL SURF` | `nx·Δx`, `ny·Δy` | the unit of the scaled z | z_min − 2 with "special points" |
 //! | Zygo MetroPro phase map | its magic (any extension, `.dat`) | `width·Δ`, `height·Δ` (Δ = 0: the caller's) | m | raw ≥ 2147483640 |
 //! | NetCDF classic, `heights(x, y)` or `heights(x)` | `.nc`, or `CDF` | `length` of `x`, `y` (absent: the caller's) | `unit` of `heights` (absent: of `x`) | `mask` ≠ 0, `_FillValue` |
+//! | Alicona `.al3d` | `.al3d`, or `AliconaImaging` | `Cols·PixelSizeXMeter`, `Rows·PixelSizeYMeter` | m | NaN, `InvalidPixelValue` |
+//! | Sensofar `.plu` (topography, first layer) | `.plu`, `.apx` (no magic) | nx·Δx, ny·Δy | µm | 1000001 |
+//! | Bruker/Veeco Nanoscope (the first height channel) | `.spm`, `.di`, or `\*File list` (`.000`, `.001`, …) | `Scan Size` | the sensitivity's (`nm/V`) | – |
+//! | Igor binary wave `.ibw` v5 (Asylum Research; the first height channel) | `.ibw` | nx·sfA[0], ny·sfA[1] (no unit of x: the caller's) | `dataUnits` (none: the caller's, required) | NaN |
 //!
 //! # Axis order
 //! A row of a `.npy` array or text matrix runs along x: the array of
@@ -48,7 +52,7 @@
 //! one of them but not the other needs the other from the caller.
 //!
 //! # Unsupported formats
-//! Binary instrument formats not in the table (`.plu`, `.datx`, `.opd`,
+//! Binary instrument formats not in the table (`.datx`, `.opd`,
 //! `.vk4`, HDF5, …) are an error that names the format and says how to
 //! convert them.
 //!
@@ -56,14 +60,18 @@
 //! helps); undefined points are an error with their count unless
 //! [`ReadOptions::fill_undefined`] asks for harmonic interpolation.
 
+mod al3d;
 mod bin;
 mod detect;
+mod di;
 mod gsf;
 mod gwy;
 mod header;
+mod ibw;
 mod line;
 mod metropro;
 mod netcdf;
+mod plu;
 mod sur;
 mod text;
 mod units;
@@ -111,6 +119,14 @@ pub enum Format {
     MetroPro,
     /// NetCDF classic `.nc` (SurfaceTopography's conventions).
     NetCdf,
+    /// Alicona `.al3d`.
+    Al3d,
+    /// Sensofar `.plu`.
+    Plu,
+    /// Igor binary wave `.ibw` (Asylum Research).
+    Ibw,
+    /// Bruker/Veeco Nanoscope `.spm`, `.di`, `.000`, ….
+    Nanoscope,
 }
 
 /// How to read a topography.
@@ -219,8 +235,8 @@ pub fn read(path: &Path, options: &ReadOptions) -> Result<Topography> {
 /// let e = from_bytes(Path::new("flat.txt"), b"1 1 1\n1 1 1\n", &o).unwrap_err();
 /// assert!(e.to_string().starts_with("flat.txt") && e.to_string().contains("not all equal"));
 /// // A binary format persson does not read says so.
-/// let e = from_bytes(Path::new("scan.plu"), b"anything\0\0", &o).unwrap_err();
-/// assert!(e.to_string().contains("unsupported format (.plu)"));
+/// let e = from_bytes(Path::new("scan.vk4"), b"anything\0\0", &o).unwrap_err();
+/// assert!(e.to_string().contains("unsupported format (.vk4)"));
 /// # Ok(()) }
 /// ```
 pub fn from_bytes(path: &Path, bytes: &[u8], options: &ReadOptions) -> Result<Topography> {
@@ -286,6 +302,10 @@ fn parse(path: &Path, bytes: &[u8], options: &ReadOptions) -> Result<Raw> {
         Format::Sur => sur::parse(path, bytes)?,
         Format::MetroPro => metropro::parse(path, bytes)?,
         Format::NetCdf => netcdf::parse(path, bytes)?,
+        Format::Al3d => al3d::parse(path, bytes)?,
+        Format::Plu => plu::parse(path, bytes)?,
+        Format::Ibw => ibw::parse(path, bytes)?,
+        Format::Nanoscope => di::parse(path, bytes)?,
     };
     Ok(raw)
 }

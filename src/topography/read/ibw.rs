@@ -1,0 +1,279 @@
+//! Igor binary wave `.ibw`, version 5 (Asylum Research / Oxford
+//! Instruments AFMs).
+//!
+//! A 64-byte binary header, a 320-byte wave header, the wave's values, then
+//! sections whose sizes the binary header gives (formula, note, extended
+//! units, dimension labels). Either byte order: the version (i16 at 0) is 5
+//! in the file's order. Read (byte offsets):
+//!
+//! ```text
+//! binary header:   0 version (i16)   4 wfmSize (i32)   8 formulaSize   12 noteSize
+//!                 16 dataEUnitsSize  20 dimEUnitsSize[4]  36 dimLabelsSize[4] (i32)
+//! wave header:    76 npnts (i32)   80 type (i16)   132 nDim[4] (i32)
+//!                148 sfA[4] (f64: the step per index)   212 dataUnits (4 chars)
+//!                216 dimUnits[4][4] (chars)
+//! values:        384 npnts values of the type, first index fastest
+//! ```
+//!
+//! An AFM image is a wave of `nx × ny × channels` (Igor's first index is x);
+//! each channel's name is a 32-byte dimension label of the third dimension
+//! (after the dimension's own label). The channel read is the first whose
+//! name contains `Height` or `ZSensor`; a wave without names reads its
+//! first channel; named channels none of which is a height are an error
+//! naming them. With SurfaceTopography's orientation (Igor's y runs
+//! upwards, the map's rows downwards):
+//!
+//! ```text
+//! h[iy, ix] = value[ix + nx·(ny − 1 − iy) + nx·ny·channel]   (dataUnits)
+//! Lx = nx·sfA[0],   Ly = ny·sfA[1]   (dimUnits)
+//! ```
+//!
+//! Units are the extended units where the file has them, else the 4-char
+//! fields. A wave without a height unit needs `--height-unit`; without a
+//! unit of x it stores no size (`--size`/`--pixel-size`): Igor's default
+//! step is 1 of no unit.
+//!
+//! # References
+//! WaveMetrics, Igor Pro Technical Note PTN003 "Igor Binary Wave Format"
+//! (`IgorBin.h`: `BinHeader5`, `WaveHeader5`); the layout as
+//! SurfaceTopography's `IO/IBW.py` (through igor2) reads it.
+
+use std::path::Path;
+
+use super::bin::{product, Bin};
+use super::units::Unit;
+use super::{Raw, Stored};
+use crate::error::Result;
+
+/// The binary header's size; the wave header follows.
+const BIN_HEADER: usize = 64;
+/// The wave header's size; the values follow.
+const WAVE_HEADER: usize = 320;
+/// A dimension label: 31 characters and a NUL.
+const LABEL: usize = 32;
+/// Relative precision of a float64 step.
+const F64_RESOLUTION: f64 = 2.3e-16;
+
+/// Fields in the file's byte order.
+struct Fields<'b> {
+    f: Bin<'b>,
+    big: bool,
+}
+
+impl Fields<'_> {
+    fn raw<const N: usize>(&self, offset: usize, what: &str) -> Result<[u8; N]> {
+        let mut a = [0u8; N];
+        a.copy_from_slice(self.f.slice(offset, N, what)?);
+        if self.big {
+            a.reverse();
+        }
+        Ok(a)
+    }
+
+    fn i16(&self, offset: usize, what: &str) -> Result<i16> {
+        self.raw(offset, what).map(i16::from_le_bytes)
+    }
+
+    fn i32(&self, offset: usize, what: &str) -> Result<i32> {
+        self.raw(offset, what).map(i32::from_le_bytes)
+    }
+
+    /// A size or count: an i32 that must not be negative.
+    fn size(&self, offset: usize, what: &str) -> Result<usize> {
+        let v = self.i32(offset, what)?;
+        usize::try_from(v).map_err(|_| self.f.bad(format!("{what} = {v}: negative")))
+    }
+
+    fn f64(&self, offset: usize, what: &str) -> Result<f64> {
+        self.raw(offset, what).map(f64::from_le_bytes)
+    }
+}
+
+pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
+    let f = Bin {
+        bytes: b,
+        path,
+        format: "Igor binary wave .ibw",
+    };
+    let v = f.slice(0, 2, "the version")?;
+    let big = match (v[0], v[1]) {
+        (0, 5) => true,
+        (5, 0) => false,
+        (0, n) | (n, 0) if (1..=3).contains(&n) => {
+            return Err(f.bad(format!(
+                "version {n}: only version 5 is read (save it from Igor Pro 3 or later)"
+            )))
+        }
+        _ => return Err(f.bad("the file does not start with an Igor binary wave version")),
+    };
+    let w = Fields { f, big };
+    let f = &w.f;
+    f.slice(0, BIN_HEADER + WAVE_HEADER, "the headers")?;
+    let h = BIN_HEADER;
+    let npnts = w.size(h + 12, "npnts")?;
+    let (item, kind) = match w.i16(h + 16, "type")? {
+        2 => (4, Kind::F32),
+        4 => (8, Kind::F64),
+        8 => (1, Kind::I8),
+        0x10 => (2, Kind::I16),
+        0x20 => (4, Kind::I32),
+        0x48 => (1, Kind::U8),
+        0x50 => (2, Kind::U16),
+        0x60 => (4, Kind::U32),
+        t => {
+            return Err(f.bad(format!(
+                "wave type {t:#x}: real numbers (float32/64, 8/16/32-bit integers) are read, \
+                 not complex or text waves"
+            )))
+        }
+    };
+    let mut dims = [0usize; 4];
+    for (d, n) in dims.iter_mut().enumerate() {
+        *n = w.size(h + 68 + 4 * d, "nDim")?;
+    }
+    let [nx, ny, channels, layers] = dims;
+    if nx < 1 || ny < 1 || layers > 1 {
+        return Err(f.bad(format!(
+            "the wave has dimensions {dims:?}: an image (nx × ny, or nx × ny × channels) is read"
+        )));
+    }
+    let channels = channels.max(1);
+    let points = product(nx, ny, channels).filter(|&p| p == npnts);
+    let Some(points) = points else {
+        return Err(f.bad(format!(
+            "npnts = {npnts}, the dimensions {nx} × {ny} × {channels} disagree"
+        )));
+    };
+    let values = f.slice(
+        BIN_HEADER + WAVE_HEADER,
+        product(points, item, 1).unwrap_or(usize::MAX),
+        "the values",
+    )?;
+    // The sections after the wave: formula, note, extended units, labels.
+    let mut at = BIN_HEADER.saturating_add(w.size(4, "wfmSize")?);
+    for (offset, what) in [(8, "formulaSize"), (12, "noteSize")] {
+        at = at.saturating_add(w.size(offset, what)?);
+    }
+    let data_units = section(&w, &mut at, 16, "the extended data units")?;
+    let mut dim_units = Vec::new();
+    for d in 0..4 {
+        dim_units.push(section(
+            &w,
+            &mut at,
+            20 + 4 * d,
+            "the extended dimension units",
+        )?);
+    }
+    let mut labels = Vec::new();
+    for d in 0..4 {
+        labels.push(section(&w, &mut at, 36 + 4 * d, "the dimension labels")?);
+    }
+    let names: Vec<String> = labels[2].chunks(LABEL).skip(1).map(|l| text(l)).collect();
+    let channel = channel(f, &names, channels)?;
+    let start = channel * nx * ny;
+    let value = |k: usize| -> f64 {
+        let c = &values[(start + k) * item..(start + k + 1) * item];
+        let mut a = [0u8; 8];
+        a[..item].copy_from_slice(c);
+        if big {
+            a[..item].reverse();
+        }
+        let [b0, b1, b2, b3, ..] = a;
+        match kind {
+            Kind::F32 => f64::from(f32::from_le_bytes([b0, b1, b2, b3])),
+            Kind::F64 => f64::from_le_bytes(a),
+            Kind::I8 => f64::from(b0 as i8),
+            Kind::I16 => f64::from(i16::from_le_bytes([b0, b1])),
+            Kind::I32 => f64::from(i32::from_le_bytes([b0, b1, b2, b3])),
+            Kind::U8 => f64::from(b0),
+            Kind::U16 => f64::from(u16::from_le_bytes([b0, b1])),
+            Kind::U32 => f64::from(u32::from_le_bytes([b0, b1, b2, b3])),
+        }
+    };
+    let mut heights = Vec::with_capacity(nx * ny);
+    for iy in 0..ny {
+        let row = nx * (ny - 1 - iy);
+        heights.extend((0..nx).map(|ix| value(row + ix)));
+    }
+    let unit = |extended: &[u8], short: usize, what: &str| -> Result<Unit> {
+        let s = if extended.is_empty() {
+            text(f.slice(short, 4, what)?)
+        } else {
+            text(extended)
+        };
+        Unit::declared(what, &s).map_err(|m| f.bad(m))
+    };
+    let height_unit = unit(data_units, h + 148, "the heights")?;
+    let ux = unit(dim_units[0], h + 152, "x")?;
+    let uy = unit(dim_units[1], h + 156, "y")?;
+    if ux != uy {
+        return Err(f.bad(format!("the units of x ({ux:?}) and y ({uy:?}) differ")));
+    }
+    let size = match ux {
+        Unit::Unstated => None,
+        unit => Some(Stored {
+            lx: nx as f64 * w.f64(h + 84, "sfA")?.abs(),
+            ly: ny as f64 * w.f64(h + 92, "sfA")?.abs(),
+            unit,
+            resolution: F64_RESOLUTION,
+        }),
+    };
+    Ok(Raw {
+        size,
+        height_unit,
+        require_units: true,
+        ..Raw::map(nx, ny, heights)
+    })
+}
+
+/// The value types of a real wave.
+#[derive(Clone, Copy)]
+enum Kind {
+    F32,
+    F64,
+    I8,
+    I16,
+    I32,
+    U8,
+    U16,
+    U32,
+}
+
+/// The next section after the wave, of the size at `offset` of the binary
+/// header; `at` moves past it.
+fn section<'b>(w: &Fields<'b>, at: &mut usize, offset: usize, what: &str) -> Result<&'b [u8]> {
+    let n = w.size(offset, what)?;
+    let s = w.f.slice(*at, n, what)?;
+    *at += n;
+    Ok(s)
+}
+
+/// NUL-terminated Latin-1 text.
+fn text(b: &[u8]) -> String {
+    b.iter()
+        .take_while(|&&c| c != 0)
+        .map(|&c| char::from(c))
+        .collect::<String>()
+        .trim()
+        .to_string()
+}
+
+/// The channel to read (module docs).
+fn channel(f: &Bin, names: &[String], channels: usize) -> Result<usize> {
+    let named: Vec<&String> = names.iter().take(channels).collect();
+    if named.iter().all(|n| n.is_empty()) {
+        return Ok(0);
+    }
+    named
+        .iter()
+        .position(|n| {
+            let n = n.to_ascii_lowercase();
+            n.contains("height") || n.contains("zsensor")
+        })
+        .ok_or_else(|| {
+            f.bad(format!(
+                "no height channel (Height…, ZSensor…) among {named:?}: export the height \
+                 channel"
+            ))
+        })
+}
