@@ -626,7 +626,11 @@ fn greenwood_tripp_composite_surface() {
     )
     .unwrap();
     let m_scaled = SpectralMoments::from_spectrum(&scaled).unwrap();
-    for (a, b) in [(two.m0, m_scaled.m0), (two.m2, m_scaled.m2), (two.m4, m_scaled.m4)] {
+    for (a, b) in [
+        (two.m0, m_scaled.m0),
+        (two.m2, m_scaled.m2),
+        (two.m4, m_scaled.m4),
+    ] {
         assert!(rel(a, b) < CLAIM, "{a} {b}");
     }
     let (s1, s2) = (m1.summits(), two.summits());
@@ -643,9 +647,15 @@ fn greenwood_tripp_composite_surface() {
     );
     for k in [-1.0, 0.0, 1.0, 2.5] {
         let d = s1.summit_mean_height + k * s1.summit_rms_height;
-        let (p1, p2) = (g1.at_separation(d).unwrap(), g2.at_separation(r2 * d).unwrap());
+        let (p1, p2) = (
+            g1.at_separation(d).unwrap(),
+            g2.at_separation(r2 * d).unwrap(),
+        );
         assert!(rel(p2.contact_fraction, p1.contact_fraction) < CLAIM, "{k}");
-        assert!(rel(p2.nominal_pressure, r2 * p1.nominal_pressure) < CLAIM, "{k}");
+        assert!(
+            rel(p2.nominal_pressure, r2 * p1.nominal_pressure) < CLAIM,
+            "{k}"
+        );
         assert!(
             rel(
                 p2.contact_number_density.unwrap(),
