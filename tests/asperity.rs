@@ -592,3 +592,76 @@ fn bad_input_names_the_field() {
         "yield_stress"
     );
 }
+
+/// Greenwood & Tripp (1970): two rough surfaces act as one "composite"
+/// surface. For independent Gaussian surfaces the gap h1 − h2 is Gaussian
+/// with spectrum C1 + C2, so its moments are m_n1 + m_n2 and GW and BGT apply
+/// to it unchanged (`SpectralMoments::combined`; McCool 1986 uses the same
+/// sum). Checked three ways: the moments of the summed spectrum, the
+/// √2-heights surface that two identical ones make, and GW's scaling laws
+/// under h → √2 h (η and α unchanged, β and the heights ×√2, so A/A0 at a √2
+/// larger separation is the same and σ0 is √2 larger).
+#[test]
+fn greenwood_tripp_composite_surface() {
+    use persson::spectrum::Sum;
+    let one = || SelfAffine::new(1e4, 4e4, 4e6, 0.8, Amplitude::RmsSlope(0.5)).unwrap();
+    let other = SelfAffine::new(1e4, 2e4, 4e6, 0.5, Amplitude::RmsSlope(0.3)).unwrap();
+    let m1 = SpectralMoments::from_spectrum(&one()).unwrap();
+    let m2 = SpectralMoments::from_spectrum(&other).unwrap();
+    // The summed spectrum's moments are the sum of the moments.
+    let sum = Sum::new(vec![Box::new(one()), Box::new(other)]).unwrap();
+    let ms = SpectralMoments::from_spectrum(&sum).unwrap();
+    let mc = m1.combined(&m2);
+    for (a, b) in [(ms.m0, mc.m0), (ms.m2, mc.m2), (ms.m4, mc.m4)] {
+        assert!(rel(a, b) < CLAIM, "{a} {b}");
+    }
+    // Two identical surfaces: one surface of √2 the heights (rms slope ×√2).
+    let two = m1.combined(&m1);
+    let scaled = SelfAffine::new(
+        1e4,
+        4e4,
+        4e6,
+        0.8,
+        Amplitude::RmsSlope(0.5 * std::f64::consts::SQRT_2),
+    )
+    .unwrap();
+    let m_scaled = SpectralMoments::from_spectrum(&scaled).unwrap();
+    for (a, b) in [
+        (two.m0, m_scaled.m0),
+        (two.m2, m_scaled.m2),
+        (two.m4, m_scaled.m4),
+    ] {
+        assert!(rel(a, b) < CLAIM, "{a} {b}");
+    }
+    let (s1, s2) = (m1.summits(), two.summits());
+    let r2 = std::f64::consts::SQRT_2;
+    assert!(rel(s2.bandwidth_parameter, s1.bandwidth_parameter) < CLAIM);
+    assert!(rel(s2.summit_density, s1.summit_density) < CLAIM);
+    assert!(rel(s2.summit_curvature, r2 * s1.summit_curvature) < CLAIM);
+    assert!(rel(s2.summit_rms_height, r2 * s1.summit_rms_height) < CLAIM);
+    assert!(rel(s2.summit_mean_height, r2 * s1.summit_mean_height) < CLAIM);
+    let e = 1e9;
+    let (g1, g2) = (
+        GreenwoodWilliamson::from_moments(&m1, e).unwrap(),
+        GreenwoodWilliamson::from_moments(&two, e).unwrap(),
+    );
+    for k in [-1.0, 0.0, 1.0, 2.5] {
+        let d = s1.summit_mean_height + k * s1.summit_rms_height;
+        let (p1, p2) = (
+            g1.at_separation(d).unwrap(),
+            g2.at_separation(r2 * d).unwrap(),
+        );
+        assert!(rel(p2.contact_fraction, p1.contact_fraction) < CLAIM, "{k}");
+        assert!(
+            rel(p2.nominal_pressure, r2 * p1.nominal_pressure) < CLAIM,
+            "{k}"
+        );
+        assert!(
+            rel(
+                p2.contact_number_density.unwrap(),
+                p1.contact_number_density.unwrap()
+            ) < CLAIM,
+            "{k}"
+        );
+    }
+}

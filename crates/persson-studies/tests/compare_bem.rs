@@ -3,6 +3,10 @@
 //! comparison, and the `persson compare` CLI (keys, user data, bad files).
 #![cfg(feature = "bem")]
 
+// The one oracle of the workspace's tests (the root crate's tests/common).
+#[path = "../../../tests/common/oracle.rs"]
+mod oracle;
+
 use persson::bem::histogram::integral;
 use persson::bem::resample::nested_surfaces;
 use persson::bem::rough::{self, RoughOptions};
@@ -295,4 +299,89 @@ fn comparison_parts_agree_with_closed_forms_and_each_other() {
     assert!(of("bush-linear").max_relative_deviation > 0.3);
     // the sweep did not change with the data
     assert_eq!(w.extrapolated, r.extrapolated);
+}
+
+/// GW's A/A0 and σ0 from its closed forms: the quadrature of F_n (oracle,
+/// 1e-13) and the moments' summit statistics; the separation search is
+/// solved to 1e-14 of σ_s (asperity::GW_RELATIVE_ERROR allows 1e-13).
+const GW_CLOSED_FORM: f64 = 1e-10;
+
+#[test]
+fn compare_sets_the_asperity_theories_beside_the_continuum_limit() {
+    use persson_studies::scene::TheoryName;
+    let s = surface_spectrum(8.0);
+    let mut cfg = ComparisonConfig::new(1.0);
+    cfg.nominal_pressure = vec![5e-4, 2e-3];
+    cfg.sweep = SweepSettings {
+        grid: 32,
+        seeds: vec![1],
+        levels: 2,
+        ..SweepSettings::default()
+    };
+    let r = compare(&s, &cfg, &mut |_| {}).unwrap();
+    let a = &r.asperity;
+    let names: Vec<TheoryName> = a.curves.iter().map(|c| c.theory).collect();
+    // elastic: GW and BGT, the overlap model needs a hardness
+    assert_eq!(
+        names,
+        vec![TheoryName::GreenwoodWilliamson, TheoryName::Bush]
+    );
+    let p = a.parameters.as_ref().unwrap();
+    let (m0, m2, m4) = (p.moments.m0, p.moments.m2, p.moments.m4);
+    // the compared band's moments: m2 = h'_rms²/2, m0 = h_rms²
+    assert!((m2 - r.spectrum.rms_slope.powi(2) / 2.0).abs() < 1e-12 * m2);
+    assert!((m0 - r.spectrum.rms_height.powi(2)).abs() < 1e-12 * m0);
+    // Nayak / McCool summit statistics, then GW's integrals at t = (d − y_s)/σ_s
+    let alpha = m0 * m4 / (m2 * m2);
+    let eta = m4 / (6.0 * std::f64::consts::PI * 3f64.sqrt() * m2);
+    let beta = 1.0 / ((8.0 / 3.0) * (m4 / std::f64::consts::PI).sqrt());
+    let y_s = 4.0 * m2 / (std::f64::consts::PI * m4).sqrt();
+    let sigma_s =
+        (m0 * (1.0 - (1.0 + 16.0 / std::f64::consts::PI - 3f64.sqrt() * 3.0) / alpha)).sqrt();
+    let phi = |x: f64| (-0.5 * x * x).exp() / std::f64::consts::TAU.sqrt();
+    let f_n = |n: f64, t: f64| {
+        oracle::integrate(
+            "F_n",
+            |s| (s - t).powf(n) * phi(s),
+            t,
+            t + 40.0,
+            0.0,
+            1e-14,
+            100_000,
+        )
+    };
+    let gw = &a.curves[0];
+    for (k, &sigma0) in r.nominal_pressure.iter().enumerate() {
+        let t = (gw.separation[k] - y_s) / sigma_s;
+        let area = std::f64::consts::PI * eta * beta * sigma_s * f_n(1.0, t);
+        let load = (4.0 / 3.0) * eta * beta.sqrt() * sigma_s.powf(1.5) * f_n(1.5, t);
+        assert!(
+            (gw.contact_fraction[k] - area).abs() < GW_CLOSED_FORM * area,
+            "{k}"
+        );
+        assert!((load - sigma0).abs() < GW_CLOSED_FORM * sigma0, "{k}");
+    }
+    // the agreement is the ratio to A∞, pressure by pressure
+    for c in &a.curves {
+        assert!(c.not_computed.is_none(), "{c:?}");
+        for (k, e) in r.extrapolated.iter().enumerate() {
+            let want = c.contact_fraction[k] / e.contact_fraction;
+            assert!((c.ratio_to_continuum[k] - want).abs() < ROUNDING * want);
+        }
+    }
+    // α = m0 m4/m2² of this narrow band (ζ = 4) is below 10: warned
+    assert!(alpha < 10.0);
+    assert!(a.warnings.iter().any(|w| w.kind() == "small_bandwidth"));
+    // with a hardness σY the overlap model joins, its load law σ0 = σY A/A0
+    cfg.sweep.options.yield_stress = Some(0.05);
+    let y = compare(&s, &cfg, &mut |_| {}).unwrap();
+    let overlap = y
+        .asperity
+        .curves
+        .iter()
+        .find(|c| c.theory == TheoryName::Overlap)
+        .unwrap();
+    for (a, p) in overlap.contact_fraction.iter().zip(&y.nominal_pressure) {
+        assert!((a - p / 0.05).abs() < ROUNDING * a, "{a} {p}");
+    }
 }

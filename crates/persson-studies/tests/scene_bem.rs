@@ -207,6 +207,84 @@ mod bem {
         assert!(e.contains("outputs.bem.grid"), "{e}");
     }
 
+    /// Σ patch areas = A/A0 L²: a sum of ≤ 32² cell areas (rounding).
+    const AREA_SUM: f64 = 1e-12;
+
+    /// At z = L every mode but the mean has decayed by e^{−2π} or more: the
+    /// uniform stress of the mean load, σ_vM = σ0 (1 − 2ν)/(1 − ν), within 5 %
+    /// (docs/asperity.md, Accuracy).
+    const DEEP_PLANE: f64 = 0.05;
+
+    #[test]
+    fn patches_and_subsurface_as_scene_outputs() {
+        let out = r#"{"bem": {"grid": 32, "patches": {"connectivity": "eight", "plot": "patches.svg"},
+            "subsurface": {"depth": [0.05, 1.0], "stress_field": "vm.npy", "plot": "depth.svg"}}}"#;
+        let text = rough(out).replace(
+            r#""contact_modulus": 1.0"#,
+            r#""contact_modulus": 1.0, "poisson": 0.25"#,
+        );
+        // E* given with the body's ν: the stress uses that ν
+        let scene = parse(&text).unwrap();
+        let nu = 0.25;
+        let r = scene.run().unwrap();
+        let bem = r.bem.as_ref().unwrap();
+        let patches = r.bem_patches.as_ref().unwrap();
+        let size = 1.0; // L = 2π/q_l
+        for (p, b) in patches.points.iter().zip(&bem.points) {
+            let areas: f64 = p.area_distribution.iter().map(|x| x.count).sum::<usize>() as f64;
+            assert_eq!(areas as usize, p.patch_count);
+            assert!(
+                (p.mean_patch_area * p.patch_count as f64 - b.contact_fraction * size * size).abs()
+                    < AREA_SUM
+            );
+        }
+        let sub = r.bem_subsurface.as_ref().unwrap();
+        for (p, &sigma0) in sub.points.iter().zip(&[0.001, 0.003, 0.01]) {
+            let deep = p.report.planes[1].von_mises_stress.value;
+            let uniform = sigma0 * (1.0 - 2.0 * nu) / (1.0 - nu);
+            assert!(
+                (deep / uniform - 1.0).abs() < DEEP_PLANE,
+                "{deep} {uniform}"
+            );
+        }
+        let dir = tmp("details");
+        std::fs::create_dir_all(&dir).unwrap();
+        let written = persson_studies::scene::write_data(&scene, &r, &dir).unwrap();
+        assert_eq!(written.len(), 3 * 2);
+        // the .npy map of pressure 2, depth 0 holds the plane's maximum
+        let path = dir.join("vm_2_0.npy");
+        let map = npy::parse(&path, &std::fs::read(&path).unwrap()).unwrap();
+        assert_eq!((map.rows, map.cols), (32, 32));
+        let max = map.values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        assert_eq!(max, sub.points[2].report.planes[0].von_mises_stress.value);
+        #[cfg(feature = "plot")]
+        {
+            let plots = persson_studies::scene::render_plots(&scene, &r, &dir).unwrap();
+            assert!(plots.contains(&dir.join("patches.svg")), "{plots:?}");
+            assert!(plots.contains(&dir.join("depth.svg")), "{plots:?}");
+        }
+        // bad input is named: a depth beyond the side, no bins
+        for (bad, needle) in [
+            (r#""depth": [0.05, 1.0]"#, r#""depth": [2.0]"#),
+            (r#""depth": [0.05, 1.0]"#, r#""depth": [0.0]"#),
+        ] {
+            let e = parse(&rough(&out.replace(bad, needle)))
+                .unwrap()
+                .run()
+                .unwrap_err()
+                .to_string();
+            assert!(e.contains("outputs.bem.subsurface.depth"), "{e}");
+        }
+        let e = parse(&rough(
+            &out.replace(r#""connectivity": "eight""#, r#""bins_per_decade": 0"#),
+        ))
+        .unwrap()
+        .run()
+        .unwrap_err()
+        .to_string();
+        assert!(e.contains("outputs.bem.patches.bins_per_decade"), "{e}");
+    }
+
     #[test]
     fn bad_bem_outputs_are_named() {
         let cases = [

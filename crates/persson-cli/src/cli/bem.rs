@@ -14,9 +14,10 @@ use persson_studies::table::Tabulate;
 
 pub use super::bem_args::{Args, SolverArgs};
 use super::bem_args::{Cmd, HertzArgs, RoughArgs};
-use super::bem_detail::{Details, RoughWithDetails};
+use super::bem_detail::{details, RoughWithDetails};
 use super::output::{print, print_narrowed};
 use super::progress::Progress;
+use persson_studies::bem_detail::Details;
 
 /// Run `persson bem`.
 pub fn run(a: Args) -> anyhow::Result<()> {
@@ -92,7 +93,7 @@ struct Solves<'a> {
     gaps: Option<&'a Path>,
     several: bool,
     n: usize,
-    details: Details<'a>,
+    details: Details,
 }
 
 impl Observer for Solves<'_> {
@@ -176,11 +177,9 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
         gaps: a.transport.gap_field.as_deref(),
         several,
         n: surface.n,
-        details: Details::new(
+        details: details(
             &a.detail,
-            surface.n,
-            surface.size,
-            a.boundary,
+            (surface.n, surface.size, a.boundary),
             a.material.poisson,
             &pressures,
         )?,

@@ -124,6 +124,7 @@ fn compare(a: &MainArgs) -> anyhow::Result<()> {
         }
     };
     super::compare_plot::comparison(a, &report)?;
+    warnings.extend(report.asperity.warnings.iter().cloned());
     print_narrowed(&report, &warnings, &a.format, a.wide)
 }
 

@@ -45,15 +45,24 @@ fn xy(x: &[f64], y: &[f64]) -> Vec<(f64, f64)> {
 #[cfg(feature = "plot")]
 pub fn comparison(a: &MainArgs, r: &Comparison) -> anyhow::Result<()> {
     use persson_studies::plot::{Axis, Figure, Series, Style};
+    use persson_studies::validation::asperity;
     use persson_studies::validation::report::AreaTheory;
     let p = &r.nominal_pressure;
     a.plot.draw(|| {
-        let curves: Vec<(&str, &[f64])> = r
+        let mut curves: Vec<(&str, &[f64])> = r
             .theories
             .iter()
             .filter(|t| !matches!(t.theory, AreaTheory::BushLinear | AreaTheory::PerssonLinear))
             .map(|t| (t.theory.label(), t.contact_fraction.as_slice()))
             .collect();
+        // The asperity theories (GW, BGT, with σY the overlap model) beside them.
+        curves.extend(
+            r.asperity
+                .curves
+                .iter()
+                .filter(|c| c.not_computed.is_none())
+                .map(|c| (asperity::label(c.theory), c.contact_fraction.as_slice())),
+        );
         let law = persson_studies::plot::LinearLaw {
             contact_modulus: r.contact_modulus,
             rms_slope: r.spectrum.rms_slope,

@@ -1,6 +1,7 @@
 //! The FFT-BEM outputs of a scene (feature `bem`): rough contact at the
 //! scene's pressures and the Hertz convergence table.
 
+use persson::bem::patches::PatchOptions;
 use persson::bem::rough::{self, RoughOptions, RoughReport, SurfaceOrigin};
 use persson::bem::{check_memory, hertz, surface, Options};
 use persson::error::{check, Error, Result};
@@ -8,6 +9,7 @@ use persson::error::{check, Error, Result};
 use super::report::{BemHertzReport, BemHertzRow};
 use super::run::prefix;
 use super::schema::{required, BemHertzOutput, BemOutput, BoundaryName, Scene, SpectrumSpec};
+use crate::bem_detail::{Details, SubsurfaceOptions, DEFAULT_POISSON};
 
 /// `outputs.bem_hertz`: η per grid.
 ///
@@ -108,7 +110,7 @@ fn bem_surface(
 ///
 /// # Errors
 /// Missing or invalid inputs; a solve that fails.
-pub fn bem_rough(scene: &Scene, b: &BemOutput) -> Result<RoughReport> {
+pub fn bem_rough(scene: &Scene, b: &BemOutput) -> Result<(RoughReport, Details)> {
     let named = |e: Error| prefix("outputs.bem.", e);
     let boundary = b.boundary.unwrap_or(BoundaryName::Periodic).into();
     let tol = check::tolerance("tolerance", b.tolerance.unwrap_or(1e-10)).map_err(named)?;
@@ -138,13 +140,59 @@ pub fn bem_rough(scene: &Scene, b: &BemOutput) -> Result<RoughReport> {
         bins: b.histogram.as_ref().map(|_| bins),
         ..RoughOptions::default()
     };
-    rough::rough_contact(
+    let mut details = details(scene, b, (surf.n, surf.size, boundary))?;
+    let report = rough::rough_contact(
         &surf,
         source,
         e_star,
         &scene.nominal_pressure,
         &options,
-        &mut (),
+        &mut details,
     )
-    .map_err(named)
+    .map_err(named)?;
+    Ok((report, details))
+}
+
+/// The patch and stress studies of `outputs.bem.patches` and
+/// `outputs.bem.subsurface` (ν from the scene's material, else 0.3).
+///
+/// # Errors
+/// `bins_per_decade` 0; a depth out of (0, L] (named
+/// `outputs.bem.subsurface.depth`).
+fn details(
+    scene: &Scene,
+    b: &BemOutput,
+    grid: (usize, f64, persson::bem::Boundary),
+) -> Result<Details> {
+    let patches = match &b.patches {
+        Some(p) => {
+            let bins_per_decade = p.bins_per_decade.unwrap_or(5);
+            if bins_per_decade == 0 {
+                return Err(prefix(
+                    "outputs.bem.patches.",
+                    Error::invalid("bins_per_decade", 0.0, ">= 1"),
+                ));
+            }
+            Some(PatchOptions {
+                connectivity: p.connectivity.unwrap_or_default().into(),
+                boundary: grid.2,
+                bins_per_decade,
+            })
+        }
+        None => None,
+    };
+    let subsurface = b.subsurface.as_ref().map(|s| SubsurfaceOptions {
+        depth: s.depth.clone(),
+        poisson: scene
+            .material
+            .as_ref()
+            .and_then(|m| m.poisson)
+            .unwrap_or(DEFAULT_POISSON),
+        tensile_yield_stress: s.tensile_yield_stress,
+        // Written into the scene's output directory by `write_data`.
+        stress_field: None,
+        keep_maps: s.stress_field.is_some(),
+    });
+    Details::new(grid, &scene.nominal_pressure, patches, subsurface)
+        .map_err(|e| prefix("outputs.bem.subsurface.", e))
 }

@@ -286,7 +286,11 @@ impl Scene {
             report.bem_hertz = Some(bem::bem_hertz(h)?);
         }
         if let Some(b) = &self.outputs.bem {
-            report.bem = Some(bem::bem_rough(self, b)?);
+            let (rough, details) = bem::bem_rough(self, b)?;
+            report.bem = Some(rough);
+            report.bem_patches = details.patches;
+            report.bem_subsurface = details.subsurface;
+            report.bem_stress_maps = details.maps;
         }
         Ok(())
     }
@@ -303,6 +307,14 @@ impl Scene {
             o.stress.as_ref().and_then(|s| s.plot.clone()),
             o.bem.as_ref().and_then(|b| b.plot.clone()),
             o.bem.as_ref().and_then(|b| b.histogram.clone()),
+            o.bem
+                .as_ref()
+                .and_then(|b| b.patches.as_ref())
+                .and_then(|p| p.plot.clone()),
+            o.bem
+                .as_ref()
+                .and_then(|b| b.subsurface.as_ref())
+                .and_then(|s| s.plot.clone()),
             o.friction.as_ref().and_then(|f| f.plot.clone()),
             o.conductance.as_ref().and_then(|c| c.plot.clone()),
             o.leakage.as_ref().and_then(|l| l.plot.clone()),
@@ -352,6 +364,17 @@ pub fn write_data(scene: &Scene, report: &SceneReport, dir: &Path) -> Result<Vec
                 written.push(p);
             }
         }
+        let field = out
+            .subsurface
+            .as_ref()
+            .and_then(|s| s.stress_field.as_ref());
+        if let Some(file) = field {
+            for m in &report.bem_stress_maps {
+                let p = crate::bem_detail::indexed(&dir.join(file), m.index, m.depth_index);
+                persson::io::npy::write(&p, r.grid, r.grid, &m.von_mises_stress)?;
+                written.push(p);
+            }
+        }
     }
     #[cfg(not(feature = "bem"))]
     let _ = (scene, report, dir, &mut written);
@@ -394,6 +417,12 @@ pub fn render_plots(scene: &Scene, report: &SceneReport, dir: &Path) -> Result<V
     #[cfg(feature = "bem")]
     if let (Some(out), Some(r)) = (&o.bem, &report.bem) {
         draw(&out.plot, &|| plot::bem(r))?;
+        if let (Some(p), Some(r)) = (&out.patches, &report.bem_patches) {
+            draw(&p.plot, &|| plot::patch_areas(r))?;
+        }
+        if let (Some(s), Some(r)) = (&out.subsurface, &report.bem_subsurface) {
+            draw(&s.plot, &|| plot::subsurface_profiles(r))?;
+        }
     }
     if let (Some(out), Some(r)) = (&o.conductance, &report.conductance) {
         draw(&out.plot, &|| plot::conductance(r))?;

@@ -1,6 +1,7 @@
 //! [`compare`]: every theory against the FFT-BEM at several resolutions of one
 //! physical surface, in one call.
 
+use super::asperity::asperity_comparison;
 use super::data::{interpolate_log, score, UserData, UserHistogram};
 use super::distribution::{chosen_histogram, pressure_distributions, user_histogram};
 use super::kappa::fit_kappa;
@@ -427,6 +428,7 @@ fn compare_on(
     };
     let cont = sw.extrapolate(config.sweep.alpha)?;
     let a_inf: Vec<f64> = cont.iter().map(|c| c.fit.value).collect();
+    let asperity = asperity_comparison(&band, e_star, yield_stress, &pressures, &a_inf);
 
     let distributions = pressure_distributions(&sw, &model, config.bins)?;
     let finest = sw.mean_contact_fraction().pop().unwrap_or(SeedMean {
@@ -483,6 +485,7 @@ fn compare_on(
         yield_stress,
         nominal_pressure: pressures,
         theories,
+        asperity,
         bem: bem_grids(&sw),
         extrapolated: extrapolated_points(&sw, &cont)?,
         kappa,

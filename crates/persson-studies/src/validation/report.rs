@@ -4,6 +4,7 @@
 
 use serde::Serialize;
 
+use super::asperity::AsperityComparison;
 use super::data::Score;
 use super::kappa::{KappaFit, SweepKappa};
 use crate::table::number;
@@ -451,6 +452,8 @@ pub struct Comparison {
     pub nominal_pressure: Vec<f64>,
     /// The theories' A/A0.
     pub theories: Vec<TheoryArea>,
+    /// The asperity theories (GW, BGT; with σY the overlap model) against A∞.
+    pub asperity: AsperityComparison,
     /// The BEM per grid.
     pub bem: Vec<BemGrid>,
     /// The continuum limit per pressure.

@@ -3,13 +3,26 @@
 //! split, the mean separation, the shown pressure distribution, the user's
 //! data and the solves.
 
+use super::asperity::asperity_table;
 use super::kappa::KappaEstimate;
 use super::report::{Comparison, Fitted};
 use crate::table::{number, Cell, Table, Tabulate};
 
 impl Tabulate for Comparison {
     fn tables(&self) -> Vec<Table> {
-        let mut tables = vec![self.theory_table(), self.bem_table(), self.kappa_table()];
+        let mut tables = vec![self.theory_table(), self.bem_table()];
+        let a_inf: Vec<f64> = self
+            .extrapolated
+            .iter()
+            .map(|c| c.contact_fraction)
+            .collect();
+        tables.push(asperity_table(
+            &self.asperity,
+            &self.nominal_pressure,
+            &a_inf,
+            self.yield_stress.is_some(),
+        ));
+        tables.push(self.kappa_table());
         tables.extend(self.yield_table());
         tables.push(self.separation_table());
         tables.extend(self.distribution_table());

@@ -59,6 +59,18 @@ pub struct SceneReport {
     #[cfg(feature = "bem")]
     #[serde(skip_serializing_if = "Option::is_none")]
     pub bem: Option<persson::bem::rough::RoughReport>,
+    /// Contact-patch statistics of the BEM's solves (feature `bem`).
+    #[cfg(feature = "bem")]
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub bem_patches: Option<crate::bem_detail::PatchReport>,
+    /// Stress below the BEM's solves (feature `bem`).
+    #[cfg(feature = "bem")]
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub bem_subsurface: Option<crate::bem_detail::SubsurfaceStudy>,
+    /// The von Mises maps of `bem_subsurface` to write (`stress_field`).
+    #[cfg(feature = "bem")]
+    #[serde(skip)]
+    pub bem_stress_maps: Vec<crate::bem_detail::StressMap>,
     /// FFT-BEM Hertz convergence.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub bem_hertz: Option<BemHertzReport>,
@@ -114,10 +126,14 @@ impl Tabulate for SceneReport {
     fn tables(&self) -> Vec<Table> {
         let mut out = Vec::new();
         #[cfg(feature = "bem")]
-        let bem = self.bem.as_ref().map(|r| r as &dyn Tabulate);
+        let (bem, patches, subsurface) = (
+            self.bem.as_ref().map(|r| r as &dyn Tabulate),
+            self.bem_patches.as_ref().map(|r| r as &dyn Tabulate),
+            self.bem_subsurface.as_ref().map(|r| r as &dyn Tabulate),
+        );
         #[cfg(not(feature = "bem"))]
-        let bem = None;
-        let parts: [Option<&dyn Tabulate>; 13] = [
+        let (bem, patches, subsurface) = (None, None, None);
+        let parts: [Option<&dyn Tabulate>; 15] = [
             self.spectrum.as_ref().map(|r| r as &dyn Tabulate),
             self.kappa.as_ref().map(|r| r as &dyn Tabulate),
             self.area.as_ref().map(|r| r as &dyn Tabulate),
@@ -126,6 +142,8 @@ impl Tabulate for SceneReport {
             self.separation.as_ref().map(|r| r as &dyn Tabulate),
             self.stress.as_ref().map(|r| r as &dyn Tabulate),
             bem,
+            patches,
+            subsurface,
             self.bem_hertz.as_ref().map(|r| r as &dyn Tabulate),
             self.adhesion.as_ref().map(|r| r as &dyn Tabulate),
             self.friction.as_ref().map(|r| r as &dyn Tabulate),

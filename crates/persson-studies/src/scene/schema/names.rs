@@ -88,6 +88,28 @@ impl From<BoundaryName> for persson::bem::Boundary {
 }
 
 names! {
+    /// Neighbourhood of a contact patch.
+    #[derive(Default)]
+    ConnectivityName {
+        /// Edge neighbours only.
+        #[default]
+        Four = "four",
+        /// Edge and corner neighbours.
+        Eight = "eight",
+    }
+}
+
+#[cfg(feature = "bem")]
+impl From<ConnectivityName> for persson::bem::patches::Connectivity {
+    fn from(c: ConnectivityName) -> Self {
+        match c {
+            ConnectivityName::Four => persson::bem::patches::Connectivity::Four,
+            ConnectivityName::Eight => persson::bem::patches::Connectivity::Eight,
+        }
+    }
+}
+
+names! {
     /// Start condition P(σ, ζ = 1) of the stress distribution (Persson,
     /// Bucher & Chiaia 2002, Figs. 2–4).
     StartName {

@@ -6,8 +6,8 @@ use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
 use super::{
-    AreaEnhancementName, BoundaryName, ConductanceOutput, LeakageOutput, StartName, TheoryName,
-    TheorySpec,
+    AreaEnhancementName, BoundaryName, ConductanceOutput, ConnectivityName, LeakageOutput,
+    StartName, TheoryName, TheorySpec,
 };
 
 /// The outputs a scene asks for; absent ones are not computed.
@@ -263,6 +263,49 @@ pub struct BemOutput {
     /// the plastic peak at σY as its own row.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub yield_stress: Option<f64>,
+    /// The connected contact patches of each solve (Hyun, Pei, Molinari &
+    /// Robbins 2004) and the fits of its pressure tail.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub patches: Option<PatchesOutput>,
+    /// The stress below the surface under each solve, on planes at given depths.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub subsurface: Option<SubsurfaceOutput>,
+}
+
+/// `outputs.bem.patches`: contact-patch statistics of each solve.
+#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct PatchesOutput {
+    /// Neighbourhood of a patch (default `four`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub connectivity: Option<ConnectivityName>,
+    /// Log bins per decade of the patch-area distribution (default 5).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bins_per_decade: Option<usize>,
+    /// Draw the log-binned patch-area distribution n(A) of each solve on
+    /// log axes (.svg or .png).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub plot: Option<PathBuf>,
+}
+
+/// `outputs.bem.subsurface`: the stress below each solve.
+#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SubsurfaceOutput {
+    /// Depths z of the planes (unit of L; each > 0 and at most L).
+    pub depth: Vec<f64>,
+    /// Uniaxial yield stress Y of the von Mises criterion (unit of the
+    /// pressure): where and at which load factor the subsurface first yields.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tensile_yield_stress: Option<f64>,
+    /// Write each plane's von Mises map as .npy (N×N float64); `_k_j`
+    /// (pressure k, depth j) is added before the extension.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stress_field: Option<PathBuf>,
+    /// Draw the depth profiles of the largest von Mises stress and maximum
+    /// shear of each solve (.svg or .png).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub plot: Option<PathBuf>,
 }
 
 /// FFT-BEM Hertz convergence: sphere R = L, a = 0.1 L, E* = 1 (Molinari,

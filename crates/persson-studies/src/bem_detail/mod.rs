@@ -28,7 +28,11 @@
 //! - C. Campañá, M. H. Müser, EPL 77, 38005 (2007), doi:10.1209/0295-5075/77/38005.
 //! - K. L. Johnson, *Contact Mechanics* (CUP 1985), §3.4, §4.2.
 
+mod solves;
+
 use serde::Serialize;
+
+pub use solves::{indexed, Details, StressMap, SubsurfaceOptions, DEFAULT_POISSON};
 
 use crate::table::{Table, Tabulate};
 use persson::bem::hertz::HertzCase;
