@@ -33,10 +33,19 @@
 //!
 //! # Stopping rule
 //! ```text
-//! ε = ( Σ_{g>0} r_i² + Σ_{g=0} min(r_i, 0)² )^{1/2} / ( Σ_i [𝒦(g + h)]_i² + N² p̄² )^{1/2} ≤ tolerance
+//! ε = ( Σ_{g>0} r_i² + Σ_{g=0} min(r_i, 0)² )^{1/2}
+//!     / ( Σ_i [𝒦(g + h)]_i² + Σ_i W′(g_i)² + N² p̄² )^{1/2} ≤ tolerance
 //! ```
 //! (the relative residual of the KKT conditions); a solve that reaches
 //! `max_iterations` first returns its point with `converged = false`.
+//!
+//! A detached state, where no node touches or attracts (Maugis–Dugdale with
+//! every gap ≥ ρ, or Δγ = 0 out of contact), has no force at all: its
+//! residual and its scale are both round-off, so ε is 0/0 and the iteration
+//! cannot stop. Its exact solution is the rigid gap shifted to ḡ (𝒦 of a
+//! constant is 0, p̄ = 0); the solver returns it (0 iterations) whenever the
+//! iterate is detached and that rigid gap is detached too. These were the
+//! Maugis–Dugdale solves that never converged before.
 //!
 //! # References
 //! - L. Rey, G. Anciaux, J.-F. Molinari, *Normal adhesive contact on rough
@@ -276,6 +285,10 @@ impl AdhesiveSolver {
             }
         }
         self.scale_to(mean_gap);
+        if self.detach(heights, law, mean_gap) {
+            self.warm = true;
+            return Ok(self.point(law, mean_gap, 0.0, 0, 0.0, true));
+        }
         self.search.iter_mut().for_each(|t| *t = 0.0);
         let (mut g_old, mut delta) = (1.0, 0.0);
         let mut residual = f64::INFINITY;
@@ -286,6 +299,10 @@ impl AdhesiveSolver {
             if eps <= opts.tolerance {
                 self.warm = true;
                 return Ok(self.point(law, mean_gap, -mean, iterations, eps, true));
+            }
+            if self.detach(heights, law, mean_gap) {
+                self.warm = true;
+                return Ok(self.point(law, mean_gap, 0.0, iterations, 0.0, true));
             }
             iterations += 1;
             // r on the free set, centred; search direction centred on it too
@@ -399,6 +416,27 @@ impl AdhesiveSolver {
         Ok(())
     }
 
+    /// The detached solution: when no node of the current gap interacts
+    /// (no contact, no attraction) and the rigid gap at ḡ, g = ḡ + mean(h) − h,
+    /// does not interact either, that gap is the exact stationary point of its
+    /// region (𝒦(g + h) = 0, p̄ = 0): it replaces the gap and `true` is
+    /// returned. The iteration cannot find it, since its KKT residual and its
+    /// scale are both round-off.
+    fn detach(&mut self, heights: &[f64], law: &CohesiveLaw, mean_gap: f64) -> bool {
+        let interacts = |g: f64| g <= 0.0 || law.attraction(g) > 0.0;
+        if self.gap.iter().any(|g| interacts(*g)) {
+            return false;
+        }
+        let mean_h = heights.iter().sum::<f64>() / heights.len() as f64;
+        if heights.iter().any(|h| interacts(mean_gap + mean_h - h)) {
+            return false;
+        }
+        for (g, h) in self.gap.iter_mut().zip(heights) {
+            *g = mean_gap + mean_h - h;
+        }
+        true
+    }
+
     fn mean_of_gap(&self) -> f64 {
         self.gap.iter().sum::<f64>() / self.gap.len() as f64
     }
@@ -444,7 +482,7 @@ impl AdhesiveSolver {
             if *g > 0.0 || d < 0.0 {
                 res += d * d;
             }
-            scale += w * w;
+            scale += w * w + (r - w) * (r - w);
         }
         scale += self.gap.len() as f64 * mean * mean;
         let eps = if scale > 0.0 {
