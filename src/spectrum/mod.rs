@@ -15,6 +15,7 @@
 //! segment) for [`SelfAffine`] and [`Tabulated`], and come from adaptive
 //! quadrature with an error estimate for [`FnSpectrum`].
 
+pub mod anisotropic;
 mod band_limited;
 pub mod convention;
 mod function;
@@ -23,6 +24,7 @@ mod self_affine;
 mod sum;
 mod tabulated;
 
+pub use anisotropic::{Radial, Spectrum2d, Stretched};
 pub use band_limited::BandLimited;
 pub use convention::Convention;
 pub use function::FnSpectrum;
