@@ -154,7 +154,8 @@ fn normal_pair(rng: &mut Pcg64Mcg) -> (f64, f64) {
     (r * c, r * s)
 }
 
-/// Synthesise a periodic Gaussian surface with spectrum `C(q)` (module docs).
+/// Synthesise a periodic Gaussian surface with spectrum `C(q)` (module docs);
+/// an anisotropic spectrum ([`Spectrum::as_2d`]) through [`synthesize_2d`].
 ///
 /// # Errors
 /// Grid below 8, size not positive.
@@ -170,7 +171,10 @@ fn normal_pair(rng: &mut Pcg64Mcg) -> (f64, f64) {
 /// # Ok(()) }
 /// ```
 pub fn synthesize(spectrum: &dyn Spectrum, n: usize, size: f64, seed: u64) -> Result<GridSurface> {
-    synthesize_grid(&Radial(spectrum), n, size, seed)
+    match spectrum.as_2d() {
+        Some(s2) => synthesize_2d(s2, n, size, seed),
+        None => synthesize_grid(&Radial(spectrum), n, size, seed),
+    }
 }
 
 /// A 2-D spectrum in the FFT's frame: `c2(q_row, q_col) = C(q_x = q_col, q_y = q_row)`

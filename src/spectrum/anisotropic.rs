@@ -210,6 +210,10 @@ impl Spectrum for Stretched {
         Spectrum2d::q_min(self)
     }
 
+    fn as_2d(&self) -> Option<&dyn Spectrum2d> {
+        Some(self)
+    }
+
     fn q_max(&self) -> f64 {
         Spectrum2d::q_max(self)
     }

@@ -66,6 +66,13 @@ pub trait Spectrum: Send + Sync {
         rms(self.moment(3, a, b)?)
     }
 
+    /// The spectrum over the plane when it is anisotropic ([`Stretched`]);
+    /// `None` for an isotropic one. The contact area needs only the angular
+    /// average (this trait's C(q)); a synthesised surface needs the plane.
+    fn as_2d(&self) -> Option<&dyn Spectrum2d> {
+        None
+    }
+
     /// rms curvature `sqrt(2π m_5)` over `[a, b]`, in 1/m.
     fn rms_curvature(&self, a: f64, b: f64) -> Result<Estimate> {
         rms(self.moment(5, a, b)?)

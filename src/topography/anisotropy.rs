@@ -319,8 +319,11 @@ fn texture_aspect_ratio(t: &Topography, detrend: Detrend) -> Result<(f64, f64)> 
             return Err(Error::Inconsistent {
                 name: "texture_aspect_ratio".into(),
                 requirement: format!(
-                    "an autocorrelation that falls to s = {STR_THRESHOLD} within half the map in every direction; at {:.1}° it is still {f_prev:.3} at {r_prev:e} m (map {lx:e} × {ly:e} m): measure a larger area",
-                    theta.to_degrees()
+                    "an autocorrelation that falls to s = {STR_THRESHOLD} within half the map in every direction; at {:.1}° it is still {f_prev:.3} at {} m (map {} × {} m): measure a larger area",
+                    theta.to_degrees(),
+                    crate::error::num(r_prev),
+                    crate::error::num(lx),
+                    crate::error::num(ly)
                 ),
             });
         };
