@@ -180,7 +180,10 @@ fn statistics_of_synthesised_maps() {
                 "{msg}"
             );
             if gamma != 1.0 {
-                assert!(half_turn(a.principal_direction, lay) < DIRECTION_STAT, "{msg}");
+                assert!(
+                    half_turn(a.principal_direction, lay) < DIRECTION_STAT,
+                    "{msg}"
+                );
                 assert!(half_turn(a.texture_direction, lay) < STD_STAT, "{msg}");
             }
         }

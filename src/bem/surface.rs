@@ -225,7 +225,12 @@ pub fn synthesize_2d(
 }
 
 /// The synthesis with the spectrum in the FFT's (row, column) frame.
-fn synthesize_grid(spectrum: &dyn Spectrum2d, n: usize, size: f64, seed: u64) -> Result<GridSurface> {
+fn synthesize_grid(
+    spectrum: &dyn Spectrum2d,
+    n: usize,
+    size: f64,
+    seed: u64,
+) -> Result<GridSurface> {
     check::positive("size", size)?;
     super::check_grid(n)?;
     let dq = std::f64::consts::TAU / size;

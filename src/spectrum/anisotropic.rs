@@ -184,7 +184,7 @@ impl Spectrum2d for Stretched {
 impl Spectrum for Stretched {
     /// The angular average C̄(q) = (2π)⁻¹ ∫ C(q, φ) dφ (a quadrature over φ).
     fn c(&self, q: f64) -> f64 {
-        if !(q >= Spectrum2d::q_min(self) && q <= Spectrum2d::q_max(self)) {
+        if q.is_nan() || q < Spectrum2d::q_min(self) || q > Spectrum2d::q_max(self) {
             return 0.0;
         }
         let f = |phi: f64| self.iso.c(q * self.scale(phi));
@@ -336,7 +336,12 @@ pub fn slope_variance_2d(c: &dyn Spectrum2d, zeta: f64) -> Result<Estimate> {
 ///
 /// # Errors
 /// `contact_modulus` or `pressure` not finite and > 0; as [`slope_variance_2d`].
-pub fn g_2d(c: &dyn Spectrum2d, zeta: f64, contact_modulus: f64, pressure: f64) -> Result<Estimate> {
+pub fn g_2d(
+    c: &dyn Spectrum2d,
+    zeta: f64,
+    contact_modulus: f64,
+    pressure: f64,
+) -> Result<Estimate> {
     check::positive("contact_modulus", contact_modulus)?;
     check::positive("pressure", pressure)?;
     let s = slope_variance_2d(c, zeta)?;

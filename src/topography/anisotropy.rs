@@ -130,12 +130,12 @@ fn fft2(buf: &mut [Complex64], nx: usize, ny: usize, inverse: bool) {
     }
     let mut col = vec![Complex64::new(0.0, 0.0); ny];
     for ix in 0..nx {
-        for iy in 0..ny {
-            col[iy] = buf[iy * nx + ix];
+        for (iy, c) in col.iter_mut().enumerate() {
+            *c = buf[iy * nx + ix];
         }
         cols.process(&mut col);
-        for iy in 0..ny {
-            buf[iy * nx + ix] = col[iy];
+        for (iy, c) in col.iter().enumerate() {
+            buf[iy * nx + ix] = *c;
         }
     }
 }
@@ -241,7 +241,7 @@ fn peklenik(s: &Spectrum2dMap) -> Result<(f64, f64)> {
     let mean = 0.5 * (a + d);
     let r = (0.5 * (a - d)).hypot(b);
     let (l1, l2) = (mean + r, mean - r);
-    if !(l2 > f64::EPSILON * l1) {
+    if l2.is_nan() || l2 <= f64::EPSILON * l1 {
         return Err(Error::Inconsistent {
             name: "peklenik_number".into(),
             requirement: format!(
@@ -293,7 +293,7 @@ fn texture_aspect_ratio(t: &Topography, detrend: Detrend) -> Result<(f64, f64)> 
         .for_each(|z| *z = Complex64::new(z.norm_sqr(), 0.0));
     fft2(&mut buf, px, py, true);
     let r0 = buf[0].re;
-    if !(r0 > 0.0) {
+    if r0.is_nan() || r0 <= 0.0 {
         return Err(fft_error("zero autocorrelation at zero lag"));
     }
     let acf: Vec<f64> = buf.iter().map(|z| z.re / r0).collect();

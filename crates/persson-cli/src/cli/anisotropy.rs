@@ -27,8 +27,8 @@ pub fn run(a: Args) -> anyhow::Result<()> {
         detrend: map.detrend.map_or(defaults.detrend, Into::into),
         window: map.window.map_or(defaults.window, Into::into),
     };
-    let report = anisotropy(&t, conditioning)
-        .map_err(|e| anyhow::anyhow!("{}: {e}", map.file.display()))?;
+    let report =
+        anisotropy(&t, conditioning).map_err(|e| anyhow::anyhow!("{}: {e}", map.file.display()))?;
     print(&report, &a.format)
 }
 
