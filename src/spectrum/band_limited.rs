@@ -79,7 +79,9 @@ impl super::Spectrum2d for BandLimited<'_> {
         if q > self.q_max {
             return 0.0;
         }
-        self.inner.as_2d().map_or_else(|| self.inner.c(q), |s| s.c2(qx, qy))
+        self.inner
+            .as_2d()
+            .map_or_else(|| self.inner.c(q), |s| s.c2(qx, qy))
     }
     fn q_min(&self) -> f64 {
         self.inner.q_min()
@@ -91,9 +93,7 @@ impl super::Spectrum2d for BandLimited<'_> {
 
 impl Spectrum for BandLimited<'_> {
     fn as_2d(&self) -> Option<&dyn super::Spectrum2d> {
-        self.inner
-            .as_2d()
-            .map(|_| self as &dyn super::Spectrum2d)
+        self.inner.as_2d().map(|_| self as &dyn super::Spectrum2d)
     }
 
     fn c(&self, q: f64) -> f64 {
