@@ -146,7 +146,7 @@ impl Spectrum {
 
     fn from_spec_quiet(spec: &SpectrumSpec) -> PyResult<Self> {
         match spec {
-            SpectrumSpec::SelfAffine { .. } => {
+            SpectrumSpec::SelfAffine { .. } | SpectrumSpec::Stretched { .. } => {
                 let built = spec.build_described().map_err(err)?;
                 Ok(Spectrum {
                     shared: Shared(Arc::from(built.value)),

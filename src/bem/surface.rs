@@ -46,7 +46,7 @@ use rustfft::num_complex::Complex64;
 use super::fft::Fft2;
 use super::kernel::signed;
 use crate::error::{check, Error, Result};
-use crate::spectrum::Spectrum;
+use crate::spectrum::{Radial, Spectrum, Spectrum2d};
 
 /// A periodic height map on the BEM's `N × N` grid of side `size`: the rigid
 /// rough surface of a solve (called `Surface` in persson 0.3; a measured map
@@ -130,15 +130,15 @@ const GL4: [(f64, f64); 4] = [
     (0.861_136_311_594_052_6, 0.347_854_845_137_453_9),
 ];
 
-/// Expected `|h_q|²` of mode `(kx, ky)`: `∫_cell C(|q|) d²q` (4 × 4 Gauss).
-fn mode_variance(spectrum: &dyn Spectrum, kx: f64, ky: f64, dq: f64) -> f64 {
+/// Expected `|h_q|²` of mode `(kx, ky)`: `∫_cell C(q) d²q` (4 × 4 Gauss).
+fn mode_variance(spectrum: &dyn Spectrum2d, kx: f64, ky: f64, dq: f64) -> f64 {
     let hw = 0.5 * dq;
     let mut s = 0.0;
     for (a, wa) in GL4 {
         for (b, wb) in GL4 {
             let qx = (kx + 0.5 * a) * dq;
             let qy = (ky + 0.5 * b) * dq;
-            s += wa * wb * spectrum.c(qx.hypot(qy));
+            s += wa * wb * spectrum.c2(qx, qy);
         }
     }
     s * hw * hw
@@ -154,7 +154,8 @@ fn normal_pair(rng: &mut Pcg64Mcg) -> (f64, f64) {
     (r * c, r * s)
 }
 
-/// Synthesise a periodic Gaussian surface with spectrum `C(q)` (module docs).
+/// Synthesise a periodic Gaussian surface with spectrum `C(q)` (module docs);
+/// an anisotropic spectrum ([`Spectrum::as_2d`]) through [`synthesize_2d`].
 ///
 /// # Errors
 /// Grid below 8, size not positive.
@@ -170,6 +171,66 @@ fn normal_pair(rng: &mut Pcg64Mcg) -> (f64, f64) {
 /// # Ok(()) }
 /// ```
 pub fn synthesize(spectrum: &dyn Spectrum, n: usize, size: f64, seed: u64) -> Result<GridSurface> {
+    match spectrum.as_2d() {
+        Some(s2) => synthesize_2d(s2, n, size, seed),
+        None => synthesize_grid(&Radial(spectrum), n, size, seed),
+    }
+}
+
+/// A 2-D spectrum in the FFT's frame: `c2(q_row, q_col) = C(q_x = q_col, q_y = q_row)`
+/// (the half spectrum is indexed by the row wavenumber first, [`super::fft`];
+/// x runs along a row of the height map).
+struct RowColumn<'a>(&'a dyn Spectrum2d);
+
+impl Spectrum2d for RowColumn<'_> {
+    fn c2(&self, q_row: f64, q_col: f64) -> f64 {
+        self.0.c2(q_col, q_row)
+    }
+    fn q_min(&self) -> f64 {
+        self.0.q_min()
+    }
+    fn q_max(&self) -> f64 {
+        self.0.q_max()
+    }
+}
+
+/// Synthesise a periodic Gaussian surface with a 2-D spectrum `C(q_x, q_y)`
+/// (module docs, with `C(q)` for `C(|q|)`; the same seed and draws as
+/// [`synthesize`]: on [`Radial`] the two give the same surface). Heights are
+/// row-major with x along a row (`heights[iy·N + ix]`, as
+/// [`crate::topography::Topography::map`]). An anisotropic
+/// self-affine surface is [`crate::spectrum::Stretched`] here.
+///
+/// # Errors
+/// Grid below 8, size not positive.
+///
+/// # Examples
+/// ```
+/// use std::sync::Arc;
+/// use persson::spectrum::{Amplitude, SelfAffine, Stretched};
+/// # fn main() -> persson::Result<()> {
+/// let iso = Arc::new(SelfAffine::new(20.0, 40.0, 320.0, 0.8, Amplitude::RmsSlope(0.1))?);
+/// let s = Stretched::new(iso, 3.0, 0.0)?; // ridges along x
+/// let a = persson::bem::surface::synthesize_2d(&s, 64, 1.0, 7)?;
+/// assert_eq!(a.heights.len(), 64 * 64);
+/// # Ok(()) }
+/// ```
+pub fn synthesize_2d(
+    spectrum: &dyn Spectrum2d,
+    n: usize,
+    size: f64,
+    seed: u64,
+) -> Result<GridSurface> {
+    synthesize_grid(&RowColumn(spectrum), n, size, seed)
+}
+
+/// The synthesis with the spectrum in the FFT's (row, column) frame.
+fn synthesize_grid(
+    spectrum: &dyn Spectrum2d,
+    n: usize,
+    size: f64,
+    seed: u64,
+) -> Result<GridSurface> {
     check::positive("size", size)?;
     super::check_grid(n)?;
     let dq = std::f64::consts::TAU / size;
@@ -212,6 +273,12 @@ pub fn synthesize(spectrum: &dyn Spectrum, n: usize, size: f64, seed: u64) -> Re
 /// The expected rms height and rms slope of [`synthesize`]'s surfaces:
 /// `sqrt(Σ_q v_q)` and `sqrt(Σ_q |q|² v_q)` over the grid's modes.
 pub fn expected_rms(spectrum: &dyn Spectrum, n: usize, size: f64) -> (f64, f64) {
+    expected_rms_2d(&Radial(spectrum), n, size)
+}
+
+/// [`expected_rms`] of [`synthesize_2d`]'s surfaces (the sums run over the
+/// whole plane, so the frame does not matter).
+pub fn expected_rms_2d(spectrum: &dyn Spectrum2d, n: usize, size: f64) -> (f64, f64) {
     let dq = std::f64::consts::TAU / size;
     let (mut h2, mut s2) = (0.0, 0.0);
     for i in 0..n {
@@ -220,7 +287,7 @@ pub fn expected_rms(spectrum: &dyn Spectrum, n: usize, size: f64) -> (f64, f64) 
             if kx == 0.0 && ky == 0.0 {
                 continue;
             }
-            let v = mode_variance(spectrum, kx, ky.abs(), dq);
+            let v = mode_variance(spectrum, kx, ky, dq);
             h2 += v;
             s2 += v * dq * dq * (kx * kx + ky * ky);
         }

@@ -71,7 +71,31 @@ impl std::fmt::Debug for BandLimited<'_> {
     }
 }
 
+/// An anisotropic `inner` cut at |q| ≤ q_max over the plane, so that a
+/// band-limited anisotropic spectrum still synthesises anisotropic surfaces.
+impl super::Spectrum2d for BandLimited<'_> {
+    fn c2(&self, qx: f64, qy: f64) -> f64 {
+        let q = qx.hypot(qy);
+        if q > self.q_max {
+            return 0.0;
+        }
+        self.inner
+            .as_2d()
+            .map_or_else(|| self.inner.c(q), |s| s.c2(qx, qy))
+    }
+    fn q_min(&self) -> f64 {
+        self.inner.q_min()
+    }
+    fn q_max(&self) -> f64 {
+        self.q_max
+    }
+}
+
 impl Spectrum for BandLimited<'_> {
+    fn as_2d(&self) -> Option<&dyn super::Spectrum2d> {
+        self.inner.as_2d().map(|_| self as &dyn super::Spectrum2d)
+    }
+
     fn c(&self, q: f64) -> f64 {
         if q > self.q_max {
             0.0

@@ -15,6 +15,7 @@
 //! segment) for [`SelfAffine`] and [`Tabulated`], and come from adaptive
 //! quadrature with an error estimate for [`FnSpectrum`].
 
+pub mod anisotropic;
 mod band_limited;
 pub mod convention;
 mod function;
@@ -23,6 +24,7 @@ mod self_affine;
 mod sum;
 mod tabulated;
 
+pub use anisotropic::{Radial, Spectrum2d, Stretched};
 pub use band_limited::BandLimited;
 pub use convention::Convention;
 pub use function::FnSpectrum;
@@ -62,6 +64,13 @@ pub trait Spectrum: Send + Sync {
     /// rms slope `sqrt(2π m_3)` over `[a, b]` (dimensionless).
     fn rms_slope(&self, a: f64, b: f64) -> Result<Estimate> {
         rms(self.moment(3, a, b)?)
+    }
+
+    /// The spectrum over the plane when it is anisotropic ([`Stretched`]);
+    /// `None` for an isotropic one. The contact area needs only the angular
+    /// average (this trait's C(q)); a synthesised surface needs the plane.
+    fn as_2d(&self) -> Option<&dyn Spectrum2d> {
+        None
     }
 
     /// rms curvature `sqrt(2π m_5)` over `[a, b]`, in 1/m.

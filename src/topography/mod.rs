@@ -37,6 +37,7 @@
 //! windows, reliable band).
 
 mod analysis;
+mod anisotropy;
 mod condition;
 mod fill;
 mod fit;
@@ -48,6 +49,7 @@ mod stats;
 mod window;
 
 pub use analysis::{analyse, Analysis, AnalysisOptions, Conditioning};
+pub use anisotropy::{anisotropy, spectrum_2d, Anisotropy, Spectrum2dMap, STR_THRESHOLD};
 pub use condition::Detrend;
 pub use fit::{fit_hurst, fit_hurst_profile, HurstFit};
 pub use multiscale::{

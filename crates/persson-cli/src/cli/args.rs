@@ -70,6 +70,14 @@ pub struct SpectrumArgs {
     /// Side L (m) of the periodic surface, for --psd-convention grid.
     #[arg(long, requires = "psd", allow_hyphen_values = true, value_parser = number)]
     pub psd_size: Option<f64>,
+    /// Anisotropic roughness: the spectrum stretched by γ > 0 along
+    /// --lay-angle, C(q) = γ C(√((γ q_u)² + q_v²)); the area uses its angular
+    /// average (Carbone et al. 2009), a synthesised BEM surface the plane.
+    #[arg(long, value_name = "GAMMA", allow_hyphen_values = true, value_parser = number)]
+    pub anisotropy: Option<f64>,
+    /// Direction of the stretch (the lay for γ > 1), degrees from x.
+    #[arg(long, value_name = "DEG", requires = "anisotropy", allow_hyphen_values = true, value_parser = number)]
+    pub lay_angle: Option<f64>,
     #[command(flatten)]
     pub second: SecondBodyArgs,
 }
@@ -132,7 +140,14 @@ impl SpectrumArgs {
 
     /// The scene file's spectrum entry for these flags.
     pub fn spec(&self) -> anyhow::Result<SpectrumSpec> {
-        let first = self.spec_first()?;
+        let mut first = self.spec_first()?;
+        if let Some(gamma) = self.anisotropy {
+            first = SpectrumSpec::Stretched {
+                spectrum: Box::new(first),
+                anisotropy: gamma,
+                lay_angle: self.lay_angle,
+            };
+        }
         self.second.with(first)
     }
 

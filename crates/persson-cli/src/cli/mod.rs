@@ -2,6 +2,7 @@
 //! lives in its own file and only calls the library.
 
 mod adhesion;
+mod anisotropy;
 mod area;
 mod args;
 #[cfg(feature = "bem")]
@@ -57,6 +58,8 @@ enum Cmd {
     Magnification(magnification::Args),
     /// Real contact area A/A0 against nominal pressure (load curve).
     Area(area::Args),
+    /// Anisotropy of a height map: Peklenik number, texture aspect ratio Str, direction Std.
+    Anisotropy(anisotropy::Args),
     /// κ of the linear low-load law for Bush and Persson.
     Kappa(kappa::Args),
     /// Compute what a scene file (JSON) asks for, and nothing else.
@@ -89,6 +92,7 @@ pub fn run(cli: Cli) -> anyhow::Result<()> {
         Cmd::Spectrum(a) => spectrum::run(a),
         Cmd::Magnification(a) => magnification::run(a),
         Cmd::Area(a) => area::run(a),
+        Cmd::Anisotropy(a) => anisotropy::run(a),
         Cmd::Kappa(a) => kappa::run(a),
         Cmd::Run(a) => run::run(a),
         Cmd::Report(a) => report::run(a),

@@ -108,3 +108,32 @@ fn profile_table(p: &ProfileSpectrum) -> Table {
     }
     t
 }
+
+impl Tabulate for persson::topography::Anisotropy {
+    /// One table `anisotropy`: the Peklenik number and the ISO 25178-2
+    /// texture parameters as scalars, then the slope variance along the two
+    /// principal directions.
+    fn tables(&self) -> Vec<Table> {
+        vec![Table::new(
+            "anisotropy",
+            "Anisotropy of the height map (Peklenik: slope tensor; Str, Sal: autocorrelation at s = 0.2; Std: the lay)",
+        )
+        .scalar("peklenik_number", "Peklenik number γ", self.peklenik_number)
+        .scalar(
+            "principal_direction",
+            "principal direction, long axis (deg from x)",
+            self.principal_direction,
+        )
+        .scalar("texture_aspect_ratio", "Str", self.texture_aspect_ratio)
+        .scalar(
+            "autocorrelation_length",
+            "Sal (m)",
+            self.autocorrelation_length,
+        )
+        .scalar(
+            "texture_direction",
+            "Std, the lay (deg from x)",
+            self.texture_direction,
+        )]
+    }
+}

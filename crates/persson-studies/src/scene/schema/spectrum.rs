@@ -81,6 +81,20 @@ pub enum SpectrumSpec {
         /// The measurements, each as a `height_map` entry (without `kind`).
         measurements: Vec<HeightMapSpec>,
     },
+    /// An anisotropic surface: `spectrum` stretched by `anisotropy` (γ > 0)
+    /// along the direction `lay_angle` (degrees from x),
+    /// C(q) = γ C_iso(√((γ q_u)² + q_v²)) (the Peklenik number is γ or 1/γ).
+    /// The contact area uses its angular average (Carbone et al. 2009); a
+    /// synthesised BEM surface the whole plane.
+    Stretched {
+        /// The isotropic spectrum stretched (any other kind).
+        spectrum: Box<SpectrumSpec>,
+        /// The stretch γ > 0: the correlation length along the lay over the one across it.
+        anisotropy: f64,
+        /// The direction of the stretch, degrees from x towards y (default 0).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        lay_angle: Option<f64>,
+    },
 }
 
 /// A measured surface, read with [`persson::topography::read()`] and
@@ -226,6 +240,18 @@ impl SpectrumSpec {
             SpectrumSpec::MultiScale { measurements } => Ok(Box::new(
                 crate::scene::multiscale::described(measurements)?.value,
             )),
+            SpectrumSpec::Stretched {
+                spectrum,
+                anisotropy,
+                lay_angle,
+            } => {
+                let iso: std::sync::Arc<dyn Spectrum> = spectrum.build()?.into();
+                Ok(Box::new(persson::spectrum::Stretched::new(
+                    iso,
+                    *anisotropy,
+                    lay_angle.unwrap_or(0.0).to_radians(),
+                )?))
+            }
         }
     }
 
@@ -295,6 +321,7 @@ impl SpectrumSpec {
             SpectrumSpec::MultiScale { measurements } => {
                 measurements.iter_mut().map(|m| &mut m.file).collect()
             }
+            SpectrumSpec::Stretched { spectrum, .. } => spectrum.files_mut(),
         }
     }
 
