@@ -123,6 +123,7 @@ fn compare(a: &MainArgs) -> anyhow::Result<()> {
             with_progress(|p| validation::compare(spectrum.as_ref(), &config, p))?
         }
     };
+    warnings.extend(report.warnings.iter().cloned());
     super::compare_plot::comparison(a, &report)?;
     print_narrowed(&report, &warnings, &a.format, a.wide)
 }

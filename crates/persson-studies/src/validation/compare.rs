@@ -11,7 +11,8 @@ use super::report::{
 };
 use super::resolution::{default_pressures, resolution_grids, SweepConfig, SweepSettings};
 use super::sweep::{sweep_source, GridResult, Sweep, SweepProgress, SweepSource};
-use persson::bem::{Boundary, GridSurface};
+use crate::warning::{fallen_back, Warning};
+use persson::bem::{Boundary, GridSurface, Method};
 use persson::corrected::{self, Theory};
 use persson::error::{check, Result};
 use persson::kappa::Kappa;
@@ -48,6 +49,10 @@ pub struct ComparisonConfig {
     pub histogram_pressure: Option<f64>,
     /// Bins of the BEM pressure histograms.
     pub bins: usize,
+    /// The BEM solver's method (default: preconditioned; a stall falls back
+    /// to the plain loop with the warning `preconditioner_fallback` in
+    /// [`Comparison::warnings`]).
+    pub method: Method,
 }
 
 impl ComparisonConfig {
@@ -62,6 +67,7 @@ impl ComparisonConfig {
             data_histogram: None,
             histogram_pressure: None,
             bins: DEFAULT_BINS,
+            method: Method::default(),
         }
     }
 }
@@ -241,7 +247,8 @@ fn bem_grid(
     }
 }
 
-/// A periodic map as measured (unfiltered), solved on its own grid.
+/// A periodic map as measured (unfiltered), solved on its own grid; with the
+/// solves that fell back to the plain loop ([`GridResult::fallbacks`]).
 fn measured_map(
     m: &GridSurface,
     e_star: f64,
@@ -249,7 +256,7 @@ fn measured_map(
     sweep_config: &SweepConfig,
     yield_stress: Option<f64>,
     progress: &mut dyn FnMut(SweepProgress),
-) -> Result<Option<BemGrid>> {
+) -> Result<(Option<BemGrid>, Vec<(f64, usize)>)> {
     let own = SweepConfig {
         grids: vec![m.n],
         ..sweep_config.clone()
@@ -273,9 +280,12 @@ fn measured_map(
         split.first(),
         s.mean_plastic_displacement().pop(),
     ) else {
-        return Ok(None);
+        return Ok((None, Vec::new()));
     };
-    Ok(Some(bem_grid(g, mean, gap, split, d, yield_stress)))
+    Ok((
+        Some(bem_grid(g, mean, gap, split, d, yield_stress)),
+        g.fallbacks.clone(),
+    ))
 }
 
 /// Every grid of the sweep, seed-averaged.
@@ -399,7 +409,8 @@ fn compare_on(
     progress: &mut dyn FnMut(SweepProgress),
 ) -> Result<Comparison> {
     let e_star = check::positive("contact_modulus", config.contact_modulus)?;
-    let (sweep_config, q_s) = sweep_setup(spectrum, map, config)?;
+    let (mut sweep_config, q_s) = sweep_setup(spectrum, map, config)?;
+    sweep_config.method = config.method;
     let band = BandLimited::new(spectrum, q_s)?;
     let (q_l, q_max) = (spectrum.q_min(), band.q_max());
     let rms_slope = band.rms_slope(q_l, q_max)?.value;
@@ -419,12 +430,20 @@ fn compare_on(
         Some((m, b)) => SweepSource::Map(m, b),
     };
     let sw = sweep_source(source, e_star, &pressures, &sweep_config, progress)?;
-    let measured = match map {
+    let (measured, measured_fallbacks) = match map {
         Some((m, Boundary::Periodic)) => {
             measured_map(m, e_star, &pressures, &sweep_config, yield_stress, progress)?
         }
-        _ => None,
+        _ => (None, Vec::new()),
     };
+    let warnings: Vec<Warning> = fallen_back(
+        sw.grids
+            .iter()
+            .flat_map(|g| g.fallbacks.iter().copied())
+            .chain(measured_fallbacks),
+    )
+    .into_iter()
+    .collect();
     let cont = sw.extrapolate(config.sweep.alpha)?;
     let a_inf: Vec<f64> = cont.iter().map(|c| c.fit.value).collect();
 
@@ -495,5 +514,6 @@ fn compare_on(
         data,
         data_histogram,
         measured,
+        warnings,
     })
 }
