@@ -184,27 +184,43 @@ pub fn compare_surface(
 }
 
 /// The BEM side of a comparison on `map` (or a synthesised surface): the
-/// sweep's grids, size and seeds, and the q_s of both sides.
+/// sweep's grids, size and seeds, and the q_s of both sides; with the
+/// warning that q_s was clipped to what the coarsest grid resolves, or (a
+/// free map) that the map is not periodic.
 fn sweep_setup(
     spectrum: &dyn Spectrum,
     map: Option<(&GridSurface, Boundary)>,
     config: &ComparisonConfig,
-) -> Result<(SweepConfig, f64)> {
+) -> Result<(SweepConfig, f64, Option<Warning>)> {
     let q_l = spectrum.q_min();
     let mut sweep_config = config.sweep.config(q_l)?;
-    let q_s = match map {
-        None => config.sweep.band(q_l, Some(spectrum.q_max()))?.q_s,
+    sweep_config.method = config.method;
+    let band = match map {
+        None => config.sweep.band(q_l, Some(spectrum.q_max()))?,
         Some((m, b)) => {
             sweep_config.grids = resolution_grids(m.n, config.sweep.levels)?;
             sweep_config.size = m.size;
             sweep_config.seeds.truncate(1);
             match b {
-                Boundary::Periodic => config.sweep.map_band(q_l, spectrum.q_max(), m.n)?.q_s,
-                Boundary::Free => spectrum.q_max(),
+                Boundary::Periodic => config.sweep.map_band(q_l, spectrum.q_max(), m.n)?,
+                Boundary::Free => {
+                    let q_s = spectrum.q_max();
+                    return Ok((sweep_config, q_s, Some(Warning::MapNotPeriodic)));
+                }
             }
         }
     };
-    Ok((sweep_config, q_s))
+    let clipped = match (band.clipped, band.q_s_requested) {
+        (true, Some(q)) => Some(Warning::ClippedBand {
+            q_s_requested: q,
+            q_s: band.q_s,
+            q_l,
+            grid: sweep_config.grids.first().copied().unwrap_or_default(),
+            pixels_per_wavelength: config.sweep.pixels_per_wavelength,
+        }),
+        _ => None,
+    };
+    Ok((sweep_config, band.q_s, clipped))
 }
 
 /// The compared pressures: the given ones, else the data's, else eight
@@ -409,8 +425,7 @@ fn compare_on(
     progress: &mut dyn FnMut(SweepProgress),
 ) -> Result<Comparison> {
     let e_star = check::positive("contact_modulus", config.contact_modulus)?;
-    let (mut sweep_config, q_s) = sweep_setup(spectrum, map, config)?;
-    sweep_config.method = config.method;
+    let (sweep_config, q_s, setup_warning) = sweep_setup(spectrum, map, config)?;
     let band = BandLimited::new(spectrum, q_s)?;
     let (q_l, q_max) = (spectrum.q_min(), band.q_max());
     let rms_slope = band.rms_slope(q_l, q_max)?.value;
@@ -436,14 +451,15 @@ fn compare_on(
         }
         _ => (None, Vec::new()),
     };
-    let warnings: Vec<Warning> = fallen_back(
-        sw.grids
-            .iter()
-            .flat_map(|g| g.fallbacks.iter().copied())
-            .chain(measured_fallbacks),
-    )
-    .into_iter()
-    .collect();
+    let fallbacks = sw
+        .grids
+        .iter()
+        .flat_map(|g| g.fallbacks.iter().copied())
+        .chain(measured_fallbacks);
+    let warnings: Vec<Warning> = setup_warning
+        .into_iter()
+        .chain(fallen_back(fallbacks))
+        .collect();
     let cont = sw.extrapolate(config.sweep.alpha)?;
     let a_inf: Vec<f64> = cont.iter().map(|c| c.fit.value).collect();
 
