@@ -263,6 +263,9 @@ fn bem_grid(
     }
 }
 
+/// σ0 and preconditioned iterations of the solves that fell back ([`GridResult::fallbacks`]).
+type Fallbacks = Vec<(f64, usize)>;
+
 /// A periodic map as measured (unfiltered), solved on its own grid; with the
 /// solves that fell back to the plain loop ([`GridResult::fallbacks`]).
 fn measured_map(
@@ -272,7 +275,7 @@ fn measured_map(
     sweep_config: &SweepConfig,
     yield_stress: Option<f64>,
     progress: &mut dyn FnMut(SweepProgress),
-) -> Result<(Option<BemGrid>, Vec<(f64, usize)>)> {
+) -> Result<(Option<BemGrid>, Fallbacks)> {
     let own = SweepConfig {
         grids: vec![m.n],
         ..sweep_config.clone()

@@ -163,7 +163,6 @@ pub fn sweep_source(
         solver: config.options,
         bins: None,
         method: config.method,
-        ..RoughOptions::default()
     };
     let mut done = 0;
     for (si, &seed) in seeds.iter().enumerate() {
@@ -240,7 +239,6 @@ pub fn sweep_one(
         solver: config.options,
         bins: None,
         method: config.method,
-        ..RoughOptions::default()
     };
     let mut observer = SweepObserver {
         progress: &mut |_| {},
