@@ -361,5 +361,5 @@ fn compare<'py>(
         }
     }
     .map_err(err)?;
-    to_dict(py, &r)
+    crate::to_dict_warned(py, &r, &r.warnings)
 }

@@ -58,6 +58,32 @@
 //! memory, and applies unchanged to the saturated loop (box constraints) and
 //! to gap-based loops (whose operator is 𝒦, preconditioned by 𝒢).
 //!
+//! # Deflation, measured and not adopted
+//! Vollebregt's deflation was measured in a numpy prototype that reproduces
+//! this loop's iteration counts exactly (rough case of issue 22, periodic,
+//! ε ≤ 1e-10): the balancing (BNN) form of a two-level preconditioner,
+//! ```text
+//! z = Z E⁻¹ Zᵀ r + (I − Z E⁻¹ Zᵀ𝒢) [F]𝒦[F] (I − 𝒢 Z E⁻¹ Zᵀ) r,   E = Zᵀ𝒢Z   (exact, on F)
+//! ```
+//! with Z the indicators of the free set on m = 4 × 4 coarse blocks, took at
+//! σ0 = 0.05 E* 27 / 40 / 48 iterations at N = 256 / 512 / 1024 (this loop:
+//! 34 / 45 / 59) and at σ0 = 0.005 E* 35 / 44 at 512 / 1024 (39 / 49);
+//! 8 × 8 blocks: 25 and 39 at 256 and 512. The count still grows with N, by
+//! about the same factor per doubling, while each iteration costs two more
+//! convolutions (𝒢 of the coarse correction and of the preconditioned
+//! residual) and E costs m convolutions whenever F changes: slower in time
+//! at every size. The growth is in the linear problem itself, not in the
+//! active set: with the contact set fixed at the solution's, the same
+//! preconditioned CG takes 28 / 36 / 48 iterations at 256 / 512 / 1024
+//! (σ0 = 0.05 E*; the nonlinear loop 34 / 45 / 59) and 24 / 28 at 256 / 512
+//! (0.005 E*). The modes it misjudges are therefore not the
+//! coarse smooth ones a block space catches; nor are they a diagonal effect:
+//! diag([F]𝒦[F]𝒢[F]) lies in 0.99–1.34 on the rough case (256²,
+//! σ0 = 0.05 E*), and the symmetric scaling by its inverse square root left
+//! the fixed-set count at 28–29. For the free boundary the
+//! periodic N-grid 𝒦 instead of the padded 2N one was measured too: 59
+//! against 40 iterations at 256², σ0 = 0.05 E*.
+//!
 //! # Stall and fallback
 //! ε is not monotone in a projected CG. When the best ε has not halved
 //! within `stall_iterations` iterations, or a step is degenerate (no descent

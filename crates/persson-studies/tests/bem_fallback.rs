@@ -8,6 +8,7 @@ use persson::bem::rough::{rough_contact, RoughOptions, RoughReport, SurfaceOrigi
 use persson::bem::surface::synthesize;
 use persson::bem::{Method, Options};
 use persson::spectrum::{Amplitude, SelfAffine};
+use persson_studies::validation::{compare, ComparisonConfig, SweepSettings};
 use persson_studies::warning::{of_rough, Warning};
 
 /// ε of the solves.
@@ -80,4 +81,56 @@ fn a_forced_stall_falls_back_and_warns() {
     assert!(of_rough(&plain)
         .iter()
         .all(|w| w.kind() != "preconditioner_fallback"));
+}
+
+/// `compare` at `PRESSURES` on two grids (32², 64²) of the rough case with `method`.
+fn comparison(method: Method) -> persson_studies::validation::Comparison {
+    let ql = std::f64::consts::TAU;
+    let s = SelfAffine::new(ql, 4.0 * ql, 16.0 * ql, 0.8, Amplitude::RmsSlope(0.1)).unwrap();
+    let mut config = ComparisonConfig::new(1.0);
+    config.nominal_pressure = PRESSURES.to_vec();
+    config.sweep = SweepSettings {
+        grid: 64,
+        levels: 2,
+        alpha: Some(0.7),
+        ..SweepSettings::default()
+    };
+    config.sweep.options.tolerance = TOL;
+    config.method = method;
+    compare(&s, &config, &mut |_| {}).unwrap()
+}
+
+#[test]
+fn compare_carries_the_fallback_warning() {
+    let forced = comparison(Method::Preconditioned {
+        stall_iterations: 1,
+    });
+    let w = forced
+        .warnings
+        .iter()
+        .find(|w| w.kind() == "preconditioner_fallback")
+        .expect("a fallback warning in compare");
+    let Warning::PreconditionerFallback {
+        nominal_pressure, ..
+    } = w
+    else {
+        panic!("{w:?}")
+    };
+    // The cold first solve stalls on both grids (the warm-started second may
+    // not: its ε can halve at every iteration); only compared pressures.
+    let first = nominal_pressure
+        .iter()
+        .filter(|&&p| p == PRESSURES[0])
+        .count();
+    assert_eq!(first, 2, "{nominal_pressure:?}");
+    assert!(nominal_pressure.iter().all(|p| PRESSURES.contains(p)));
+    // Same answer as the default method, which does not fall back here.
+    let default = comparison(Method::default());
+    assert!(default
+        .warnings
+        .iter()
+        .all(|w| w.kind() != "preconditioner_fallback"));
+    for (a, b) in forced.bem.iter().zip(&default.bem) {
+        assert_eq!(a.contact_fraction, b.contact_fraction);
+    }
 }

@@ -49,6 +49,7 @@ fn config(finest: usize, seeds: u64) -> SweepConfig {
             yield_stress: None,
         },
         size: std::f64::consts::TAU,
+        method: persson::bem::Method::default(),
     }
 }
 

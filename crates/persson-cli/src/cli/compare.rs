@@ -100,29 +100,13 @@ fn compare(a: &MainArgs) -> anyhow::Result<()> {
             if let Some(d) = described {
                 eprintln!("note: {d}; BEM on the map, {} boundary", boundary.name());
             }
-            if m.periodic {
-                let q_l = spectrum.q_min();
-                let band = config.sweep.map_band(q_l, spectrum.q_max(), surface.n)?;
-                let coarsest = validation::resolution_grids(surface.n, config.sweep.levels)?[0];
-                warnings.extend(warn_clipped(&band, q_l, coarsest, &a.bem));
-            } else {
-                warnings.push(Warning::MapNotPeriodic);
-            }
             with_progress(|p| {
                 validation::compare_surface(spectrum.as_ref(), &surface, boundary, &config, p)
             })?
         }
-        None => {
-            let q_l = spectrum.q_min();
-            warnings.extend(warn_clipped(
-                &config.sweep.band(q_l, Some(spectrum.q_max()))?,
-                q_l,
-                config.sweep.grids()?[0],
-                &a.bem,
-            ));
-            with_progress(|p| validation::compare(spectrum.as_ref(), &config, p))?
-        }
+        None => with_progress(|p| validation::compare(spectrum.as_ref(), &config, p))?,
     };
+    warnings.extend(report.warnings.iter().cloned());
     super::compare_plot::comparison(a, &report)?;
     warnings.extend(report.asperity.warnings.iter().cloned());
     print_narrowed(&report, &warnings, &a.format, a.wide)

@@ -12,7 +12,8 @@ use super::report::{
 };
 use super::resolution::{default_pressures, resolution_grids, SweepConfig, SweepSettings};
 use super::sweep::{sweep_source, GridResult, Sweep, SweepProgress, SweepSource};
-use persson::bem::{Boundary, GridSurface};
+use crate::warning::{fallen_back, Warning};
+use persson::bem::{Boundary, GridSurface, Method};
 use persson::corrected::{self, Theory};
 use persson::error::{check, Result};
 use persson::kappa::Kappa;
@@ -49,6 +50,10 @@ pub struct ComparisonConfig {
     pub histogram_pressure: Option<f64>,
     /// Bins of the BEM pressure histograms.
     pub bins: usize,
+    /// The BEM solver's method (default: preconditioned; a stall falls back
+    /// to the plain loop with the warning `preconditioner_fallback` in
+    /// [`Comparison::warnings`]).
+    pub method: Method,
 }
 
 impl ComparisonConfig {
@@ -63,6 +68,7 @@ impl ComparisonConfig {
             data_histogram: None,
             histogram_pressure: None,
             bins: DEFAULT_BINS,
+            method: Method::default(),
         }
     }
 }
@@ -179,27 +185,43 @@ pub fn compare_surface(
 }
 
 /// The BEM side of a comparison on `map` (or a synthesised surface): the
-/// sweep's grids, size and seeds, and the q_s of both sides.
+/// sweep's grids, size and seeds, and the q_s of both sides; with the
+/// warning that q_s was clipped to what the coarsest grid resolves, or (a
+/// free map) that the map is not periodic.
 fn sweep_setup(
     spectrum: &dyn Spectrum,
     map: Option<(&GridSurface, Boundary)>,
     config: &ComparisonConfig,
-) -> Result<(SweepConfig, f64)> {
+) -> Result<(SweepConfig, f64, Option<Warning>)> {
     let q_l = spectrum.q_min();
     let mut sweep_config = config.sweep.config(q_l)?;
-    let q_s = match map {
-        None => config.sweep.band(q_l, Some(spectrum.q_max()))?.q_s,
+    sweep_config.method = config.method;
+    let band = match map {
+        None => config.sweep.band(q_l, Some(spectrum.q_max()))?,
         Some((m, b)) => {
             sweep_config.grids = resolution_grids(m.n, config.sweep.levels)?;
             sweep_config.size = m.size;
             sweep_config.seeds.truncate(1);
             match b {
-                Boundary::Periodic => config.sweep.map_band(q_l, spectrum.q_max(), m.n)?.q_s,
-                Boundary::Free => spectrum.q_max(),
+                Boundary::Periodic => config.sweep.map_band(q_l, spectrum.q_max(), m.n)?,
+                Boundary::Free => {
+                    let q_s = spectrum.q_max();
+                    return Ok((sweep_config, q_s, Some(Warning::MapNotPeriodic)));
+                }
             }
         }
     };
-    Ok((sweep_config, q_s))
+    let clipped = match (band.clipped, band.q_s_requested) {
+        (true, Some(q)) => Some(Warning::ClippedBand {
+            q_s_requested: q,
+            q_s: band.q_s,
+            q_l,
+            grid: sweep_config.grids.first().copied().unwrap_or_default(),
+            pixels_per_wavelength: config.sweep.pixels_per_wavelength,
+        }),
+        _ => None,
+    };
+    Ok((sweep_config, band.q_s, clipped))
 }
 
 /// The compared pressures: the given ones, else the data's, else eight
@@ -242,7 +264,11 @@ fn bem_grid(
     }
 }
 
-/// A periodic map as measured (unfiltered), solved on its own grid.
+/// σ0 and preconditioned iterations of the solves that fell back ([`GridResult::fallbacks`]).
+type Fallbacks = Vec<(f64, usize)>;
+
+/// A periodic map as measured (unfiltered), solved on its own grid; with the
+/// solves that fell back to the plain loop ([`GridResult::fallbacks`]).
 fn measured_map(
     m: &GridSurface,
     e_star: f64,
@@ -250,7 +276,7 @@ fn measured_map(
     sweep_config: &SweepConfig,
     yield_stress: Option<f64>,
     progress: &mut dyn FnMut(SweepProgress),
-) -> Result<Option<BemGrid>> {
+) -> Result<(Option<BemGrid>, Fallbacks)> {
     let own = SweepConfig {
         grids: vec![m.n],
         ..sweep_config.clone()
@@ -274,9 +300,12 @@ fn measured_map(
         split.first(),
         s.mean_plastic_displacement().pop(),
     ) else {
-        return Ok(None);
+        return Ok((None, Vec::new()));
     };
-    Ok(Some(bem_grid(g, mean, gap, split, d, yield_stress)))
+    Ok((
+        Some(bem_grid(g, mean, gap, split, d, yield_stress)),
+        g.fallbacks.clone(),
+    ))
 }
 
 /// Every grid of the sweep, seed-averaged.
@@ -400,7 +429,7 @@ fn compare_on(
     progress: &mut dyn FnMut(SweepProgress),
 ) -> Result<Comparison> {
     let e_star = check::positive("contact_modulus", config.contact_modulus)?;
-    let (sweep_config, q_s) = sweep_setup(spectrum, map, config)?;
+    let (sweep_config, q_s, setup_warning) = sweep_setup(spectrum, map, config)?;
     let band = BandLimited::new(spectrum, q_s)?;
     let (q_l, q_max) = (spectrum.q_min(), band.q_max());
     let rms_slope = band.rms_slope(q_l, q_max)?.value;
@@ -420,12 +449,21 @@ fn compare_on(
         Some((m, b)) => SweepSource::Map(m, b),
     };
     let sw = sweep_source(source, e_star, &pressures, &sweep_config, progress)?;
-    let measured = match map {
+    let (measured, measured_fallbacks) = match map {
         Some((m, Boundary::Periodic)) => {
             measured_map(m, e_star, &pressures, &sweep_config, yield_stress, progress)?
         }
-        _ => None,
+        _ => (None, Vec::new()),
     };
+    let fallbacks = sw
+        .grids
+        .iter()
+        .flat_map(|g| g.fallbacks.iter().copied())
+        .chain(measured_fallbacks);
+    let warnings: Vec<Warning> = setup_warning
+        .into_iter()
+        .chain(fallen_back(fallbacks))
+        .collect();
     let cont = sw.extrapolate(config.sweep.alpha)?;
     let a_inf: Vec<f64> = cont.iter().map(|c| c.fit.value).collect();
     let asperity = asperity_comparison(&band, e_star, yield_stress, &pressures, &a_inf);
@@ -498,5 +536,6 @@ fn compare_on(
         data,
         data_histogram,
         measured,
+        warnings,
     })
 }

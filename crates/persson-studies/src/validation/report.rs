@@ -476,6 +476,13 @@ pub struct Comparison {
     /// (unfiltered, its own grid), beside the band-limited sweep.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub measured: Option<BemGrid>,
+    /// Remarks on the comparison: q_s clipped to what the coarsest grid
+    /// resolves (`clipped_band`), a map solved with a free boundary
+    /// (`map_not_periodic`), solves the plain loop finished after the
+    /// preconditioned one stalled (`preconditioner_fallback`). Printed on
+    /// stderr and in the top-level `warnings` of `--json`.
+    #[serde(skip)]
+    pub warnings: Vec<crate::Warning>,
 }
 
 impl Comparison {

@@ -17,7 +17,7 @@
 
 use serde::Serialize;
 
-use persson::bem::{self, Options};
+use persson::bem::{self, Method, Options};
 use persson::error::{check, Error, Result};
 
 /// Pixels per shortest wavelength 2π/q_s required on the coarsest grid.
@@ -195,6 +195,7 @@ impl SweepSettings {
             seeds: self.seeds.clone(),
             options: self.options,
             size: std::f64::consts::TAU / q_l,
+            method: Method::default(),
         })
     }
 }
@@ -210,6 +211,9 @@ pub struct SweepConfig {
     pub options: Options,
     /// Side L of the surface (unit of 1/q).
     pub size: f64,
+    /// The solver's method (default: preconditioned, falling back to the
+    /// plain loop on a stall; [`super::sweep::GridResult::fallbacks`]).
+    pub method: Method,
 }
 
 /// Default nominal pressures: `count` pressures, log-spaced, whose

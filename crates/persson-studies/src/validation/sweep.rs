@@ -71,6 +71,10 @@ pub struct GridResult {
     pub residual: f64,
     /// Wall-clock seconds of this grid's solves.
     pub seconds: f64,
+    /// The solves the plain loop finished after the preconditioned one
+    /// stalled (σ0 and the preconditioned iterations, by seed and pressure
+    /// ascending); empty when none fell back.
+    pub fallbacks: Vec<(f64, usize)>,
 }
 
 /// The resolution sweep: every grid, seed and pressure.
@@ -158,7 +162,7 @@ pub fn sweep_source(
         boundary,
         solver: config.options,
         bins: None,
-        ..RoughOptions::default()
+        method: config.method,
     };
     let mut done = 0;
     for (si, &seed) in seeds.iter().enumerate() {
@@ -234,7 +238,7 @@ pub fn sweep_one(
         boundary: Boundary::Periodic,
         solver: config.options,
         bins: None,
-        ..RoughOptions::default()
+        method: config.method,
     };
     let mut observer = SweepObserver {
         progress: &mut |_| {},
@@ -316,6 +320,7 @@ impl GridResult {
             iterations: 0,
             residual: 0.0,
             seconds: 0.0,
+            fallbacks: Vec::new(),
         }
     }
 
@@ -331,6 +336,9 @@ impl GridResult {
             self.iterations += pt.iterations;
             self.residual = self.residual.max(pt.residual);
             self.seconds += pt.seconds;
+            if let Some(f) = pt.fallback {
+                self.fallbacks.push((pt.nominal_pressure, f.iterations));
+            }
         }
     }
 }

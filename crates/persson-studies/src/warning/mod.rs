@@ -424,10 +424,17 @@ impl<'a, R: Serialize> Warned<'a, R> {
 /// to the plain solver ([`persson::bem::rough::RoughPoint::fallback`]).
 #[cfg(feature = "bem")]
 pub fn preconditioner_fallback(points: &[persson::bem::rough::RoughPoint]) -> Option<Warning> {
-    let (nominal_pressure, iterations): (Vec<f64>, Vec<usize>) = points
-        .iter()
-        .filter_map(|p| p.fallback.map(|f| (p.nominal_pressure, f.iterations)))
-        .unzip();
+    fallen_back(
+        points
+            .iter()
+            .filter_map(|p| p.fallback.map(|f| (p.nominal_pressure, f.iterations))),
+    )
+}
+
+/// [`Warning::PreconditionerFallback`] from the (σ0, preconditioned
+/// iterations) of the solves that fell back; `None` when there are none.
+pub fn fallen_back(solves: impl IntoIterator<Item = (f64, usize)>) -> Option<Warning> {
+    let (nominal_pressure, iterations): (Vec<f64>, Vec<usize>) = solves.into_iter().unzip();
     (!nominal_pressure.is_empty()).then_some(Warning::PreconditionerFallback {
         nominal_pressure,
         iterations,
