@@ -447,7 +447,7 @@ fn al3d_plu_ibw_units_channels_and_damage() {
         "Cols × Rows = 0 × 296",
     );
     // The marker of undefined points, written where the first height is.
-    let marker = 3.000000028082e15f32.to_le_bytes();
+    let marker = (3.000000028082e15_f64 as f32).to_le_bytes();
     error_of(
         "a.al3d",
         &with(al3d, 1261, &marker),

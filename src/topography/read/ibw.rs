@@ -168,7 +168,7 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
     for d in 0..4 {
         labels.push(section(&w, &mut at, 36 + 4 * d, "the dimension labels")?);
     }
-    let names: Vec<String> = labels[2].chunks(LABEL).skip(1).map(|l| text(l)).collect();
+    let names: Vec<String> = labels[2].chunks(LABEL).skip(1).map(text).collect();
     let channel = channel(f, &names, channels)?;
     let start = channel * nx * ny;
     let value = |k: usize| -> f64 {
