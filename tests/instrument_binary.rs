@@ -446,8 +446,8 @@ fn al3d_plu_ibw_units_channels_and_damage() {
         &o,
         "Cols × Rows = 0 × 296",
     );
-    // The marker of undefined points (the f32 nearest 3e15), written where the first height is.
-    let marker = 3e15_f32.to_le_bytes();
+    // The marker of undefined points, written where the first height is.
+    let marker = (3.000000028082e15_f64 as f32).to_le_bytes();
     error_of(
         "a.al3d",
         &with(al3d, 1261, &marker),
