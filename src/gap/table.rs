@@ -176,7 +176,7 @@ fn band_rule(spectrum: &dyn Spectrum, lo: f64, breaks: &[f64], n: usize) -> Resu
             let q = lo + delta;
             let m3 = spectrum.moment(3, lo, q)?.value;
             let c = spectrum.c(q);
-            if !(m3 > 0.0) || c == 0.0 {
+            if m3.is_nan() || m3 <= 0.0 || c == 0.0 {
                 continue;
             }
             let w = 1.0 / (std::f64::consts::PI * m3).sqrt();
@@ -259,7 +259,7 @@ impl SeparationTable {
         let q_l = spectrum.q_min();
         let q_s = spectrum.q_max();
         let m3_total = spectrum.moment(3, q_l, q_s)?.value;
-        if !(m3_total > 0.0) {
+        if m3_total.is_nan() || m3_total <= 0.0 {
             return Err(Error::invalid(
                 "spectrum",
                 m3_total,

@@ -287,7 +287,7 @@ fn bruggeman_points(
     adaptive: Option<&SeparationDensity>,
 ) -> Result<Estimate> {
     let top = points.largest_separation().powi(3).min(f64::MAX.sqrt());
-    if !(top > 0.0) {
+    if top.is_nan() || top <= 0.0 {
         return Ok(Estimate {
             value: 0.0,
             error: 0.0,
