@@ -8,7 +8,9 @@
 //! [`super::SeparationDensity::expectation`]). The weights carry the ζ-rule's
 //! coefficients, so Σ w f(u) = ∫ P_nc f du. The error of an expectation is
 //! the ζ-rule's |Kronrod − Gauss| per panel plus the u-rule's per node,
-//! both evaluated on f.
+//! both evaluated on f. Each node's Kronrod u-weights are scaled to the
+//! Gaussian's unit mass on its window (a 1e−8 correction), so that a
+//! constant f is integrated exactly.
 
 use super::{folded, SeparationDensity, NARROW, WG, WGK, WINDOW, XGK};
 use crate::quad::Estimate;
@@ -49,6 +51,7 @@ impl PointSet {
                     continue;
                 }
                 let (zk, zg) = (n.kronrod * n.loss, n.gauss * n.loss);
+                let first = points.len();
                 let mut push = |u: f64, wk: f64, wg: f64| {
                     points.push(Point {
                         u,
@@ -78,6 +81,15 @@ impl PointSet {
                             let d = folded(u, n.u1, n.h) * half;
                             push(u, WGK[j] * d, gauss * d);
                         }
+                    }
+                }
+                // the folded Gaussian has unit mass on its window (to 1e−22):
+                // scale the Kronrod u-rule to it, so a constant f is exact
+                let mass: f64 = points[first..].iter().map(|p| p.kronrod).sum::<f64>() / zk;
+                if mass > 0.0 {
+                    for p in &mut points[first..] {
+                        p.kronrod /= mass;
+                        p.gauss_zeta /= mass;
                     }
                 }
             }
