@@ -4,7 +4,7 @@
 //! of either quantity under 10 ms; Reynolds on a 512² gap under 2 s and on
 //! 1024² under 10 s, one thread.
 
-use persson::conductance::{Conductance, ConductanceOptions, Conductivity};
+use persson::conductance::{Conductance, ConductanceOptions, Conductivity, GapLaw};
 use persson::gap::DensityOptions;
 use persson::leakage::{CriticalJunction, Drive, EffectiveMedium, Seal};
 use persson::spectrum::{Amplitude, SelfAffine};
@@ -61,7 +61,41 @@ fn critical_junction_curve_100(b: divan::Bencher) {
     b.bench(|| model.load_curve(divan::black_box(&p)).unwrap());
 }
 
-/// The effective-medium leak rate at one load (a P(u) and a Bruggeman root).
+/// The effective-medium leak rate at 100 loads (one P(u) table, then a
+/// P(u) and a Bruggeman root per load).
+#[divan::bench(sample_count = 10)]
+fn effective_medium_curve_100(b: divan::Bencher) {
+    let s = spectrum();
+    let opts = DensityOptions {
+        breaks: vec![4e4],
+        ..Default::default()
+    };
+    let model = EffectiveMedium::new(&s, 1e9, seal(), opts).unwrap();
+    let p = pressures();
+    b.bench(|| model.load_curve(divan::black_box(&p)).unwrap());
+}
+
+/// The gap conductance (gas) at 100 loads (one P(u) table).
+#[divan::bench(sample_count = 10)]
+fn gap_conductance_curve_100(b: divan::Bencher) {
+    let s = spectrum();
+    let opts = ConductanceOptions {
+        gap_law: Some(GapLaw::Gas {
+            gas_conductivity: 0.026,
+            mean_free_path: 7e-8,
+        }),
+        density: DensityOptions {
+            breaks: vec![4e4],
+            ..Default::default()
+        },
+        ..Default::default()
+    };
+    let model = Conductance::new(&s, 1e9, opts).unwrap();
+    let p = pressures();
+    b.bench(|| model.load_curve(divan::black_box(&p)).unwrap());
+}
+
+/// The effective-medium leak rate at one load (adaptive P(u) and a Bruggeman root).
 #[divan::bench(sample_count = 10)]
 fn effective_medium_point(b: divan::Bencher) {
     let s = spectrum();

@@ -46,7 +46,7 @@
 use serde::Serialize;
 
 use crate::error::{check, Error, Result};
-use crate::gap::{DensityOptions, SeparationDensity};
+use crate::gap::{DensityOptions, PointSet, SeparationDensity, SeparationTable, TableOptions};
 use crate::quad::Estimate;
 use crate::separation::Separation;
 use crate::spectrum::Spectrum;
@@ -296,11 +296,17 @@ impl GapLaw {
 /// A bad law ([`GapLaw::validate`]; a gas needs ℓ > 0 here, since P_nc
 /// reaches u = 0); quadrature failures.
 pub fn gap_conductance(density: &SeparationDensity, law: &GapLaw) -> Result<Estimate> {
+    check_for_density(law)?;
+    density.expectation(&|u| law.alpha(u), 1e-12, law.lipschitz())
+}
+
+/// A law usable over a P(u): valid, and a gas with ℓ > 0 (P_nc reaches u = 0).
+fn check_for_density(law: &GapLaw) -> Result<()> {
     law.validate()?;
     if let GapLaw::Gas { mean_free_path, .. } = law {
         check::positive("mean_free_path", *mean_free_path)?;
     }
-    density.expectation(&|u| law.alpha(u), 1e-12, law.lipschitz())
+    Ok(())
 }
 
 /// The gap conductance of a gap field: the mean of α(g) over the nodes out
@@ -424,6 +430,19 @@ impl<'a> Conductance<'a> {
     /// # Ok(()) }
     /// ```
     pub fn point(&self, pressure: f64) -> Result<ConductancePoint> {
+        self.point_with(pressure, |law| {
+            let d = &self.options.density;
+            let density = SeparationDensity::new(self.spectrum, self.contact_modulus, pressure, d)?;
+            gap_conductance(&density, law)
+        })
+    }
+
+    /// The conductances at σ0 with the gap term from `gap(law)`.
+    fn point_with(
+        &self,
+        pressure: f64,
+        gap: impl Fn(&GapLaw) -> Result<Estimate>,
+    ) -> Result<ConductancePoint> {
         let d = &self.options.density;
         let sep = Separation::new(self.spectrum, self.contact_modulus)?
             .with_tolerance(d.tolerance)?
@@ -442,14 +461,7 @@ impl<'a> Conductance<'a> {
                 .map(|r| electrical_conductance(k, self.contact_modulus, &r))
                 .transpose()?,
         );
-        let gap = match &self.options.gap_law {
-            Some(law) => {
-                let density =
-                    SeparationDensity::new(self.spectrum, self.contact_modulus, pressure, d)?;
-                Some(gap_conductance(&density, law)?)
-            }
-            None => None,
-        };
+        let gap = self.options.gap_law.as_ref().map(gap).transpose()?;
         let (gp, gp_e) = split(gap);
         Ok(ConductancePoint {
             nominal_pressure: pressure,
@@ -464,7 +476,10 @@ impl<'a> Conductance<'a> {
         })
     }
 
-    /// [`Conductance::point`] for each pressure.
+    /// [`Conductance::point`] for each pressure; the gap term from one
+    /// [`SeparationTable`] built for the lowest pressure (breaks of the
+    /// density options, default table knobs) and the fixed point rule of
+    /// [`PointSet`], with those rules' bounds.
     ///
     /// # Errors
     /// As [`Conductance::point`], for the first bad pressure.
@@ -472,6 +487,33 @@ impl<'a> Conductance<'a> {
         for &p in pressures {
             check::positive("nominal_pressure", p)?;
         }
-        pressures.iter().map(|&p| self.point(p)).collect()
+        let table = match (
+            &self.options.gap_law,
+            pressures.iter().copied().reduce(f64::min),
+        ) {
+            (Some(_), Some(lowest)) => Some(SeparationTable::new(
+                self.spectrum,
+                self.contact_modulus,
+                lowest,
+                &TableOptions {
+                    breaks: self.options.density.breaks.clone(),
+                    ..TableOptions::default()
+                },
+            )?),
+            _ => None,
+        };
+        pressures
+            .iter()
+            .map(|&p| {
+                self.point_with(p, |law| {
+                    check_for_density(law)?;
+                    let density = match &table {
+                        Some(t) => t.density(p)?,
+                        None => unreachable!("a table is built whenever there is a gap law"),
+                    };
+                    Ok(PointSet::new(&density).expectation(|u| law.alpha(u)))
+                })
+            })
+            .collect()
     }
 }

@@ -47,6 +47,8 @@
 //! - B. N. J. Persson, Phys. Rev. Lett. 99, 125502 (2007) (ū(p)).
 
 pub mod magnified;
+pub mod points;
+pub mod table;
 
 use serde::Serialize;
 
@@ -55,6 +57,8 @@ use crate::quad::{integrate, Estimate};
 use crate::separation::Separation;
 use crate::spectrum::Spectrum;
 use magnified::Magnified;
+pub use points::PointSet;
+pub use table::{SeparationTable, TableOptions};
 
 /// Default relative tolerance of the q-integrals behind u1(ζ).
 pub const DEFAULT_TOLERANCE: f64 = 1e-9;
@@ -175,6 +179,11 @@ pub struct SeparationDensity {
     contact_fraction: f64,
     mean_separation: Estimate,
     panels: Vec<Panel>,
+    /// ∫(−A′/A0) u1 dζ over the ζ-range the panels leave out (the table's
+    /// ζ < ζ_lo; 0 for the adaptive route).
+    volume_below: Estimate,
+    /// Weight of P_nc the panels leave out (the table's erfc(x_lo)).
+    weight_left_out: f64,
 }
 
 /// The 15 Kronrod nodes of one ζ-panel.
@@ -341,6 +350,11 @@ impl SeparationDensity {
             contact_fraction: a1,
             mean_separation: mean,
             panels: done,
+            volume_below: Estimate {
+                value: 0.0,
+                error: 0.0,
+            },
+            weight_left_out: 0.0,
         })
     }
 
@@ -361,7 +375,9 @@ impl SeparationDensity {
 
     /// ∫ P_nc du (= 1 − A(ζ1)/A0 up to the ζ-rule's error).
     pub fn non_contact_fraction(&self) -> Estimate {
-        self.sum(|n| n.loss, |_| 0.0)
+        let mut e = self.sum(|n| n.loss, |_| 0.0);
+        e.error += self.weight_left_out;
+        e
     }
 
     /// ∫ f dζ by the ζ-rule, with the Gauss–Kronrod differences and the
@@ -431,7 +447,10 @@ impl SeparationDensity {
     /// ∫ (−A′/A0) u1 dζ, the first moment without the fold: equals ū
     /// (module docs of [`magnified`]).
     pub fn unfolded_first_moment(&self) -> Estimate {
-        self.sum(|n| n.volume, |n| n.volume_error)
+        let mut e = self.sum(|n| n.volume, |n| n.volume_error);
+        e.value += self.volume_below.value;
+        e.error += self.volume_below.error;
+        e
     }
 
     /// ∫ u P du − ∫ (−A′/A0) u1 dζ = Σ (−A′)(E|X| − u1) ≥ 0: what the fold
