@@ -108,7 +108,6 @@ fn compare(a: &MainArgs) -> anyhow::Result<()> {
     };
     warnings.extend(report.warnings.iter().cloned());
     super::compare_plot::comparison(a, &report)?;
-    warnings.extend(report.asperity.warnings.iter().cloned());
     print_narrowed(&report, &warnings, &a.format, a.wide)
 }
 

@@ -460,13 +460,16 @@ fn compare_on(
         .iter()
         .flat_map(|g| g.fallbacks.iter().copied())
         .chain(measured_fallbacks);
-    let warnings: Vec<Warning> = setup_warning
-        .into_iter()
-        .chain(fallen_back(fallbacks))
-        .collect();
     let cont = sw.extrapolate(config.sweep.alpha)?;
     let a_inf: Vec<f64> = cont.iter().map(|c| c.fit.value).collect();
     let asperity = asperity_comparison(&band, e_star, yield_stress, &pressures, &a_inf);
+    // One list for every front end (CLI stderr/JSON, Python): the study's own
+    // remarks, then the asperity theories' (their assumptions failing).
+    let warnings: Vec<Warning> = setup_warning
+        .into_iter()
+        .chain(fallen_back(fallbacks))
+        .chain(asperity.warnings.iter().cloned())
+        .collect();
 
     let distributions = pressure_distributions(&sw, &model, config.bins)?;
     let finest = sw.mean_contact_fraction().pop().unwrap_or(SeedMean {

@@ -479,7 +479,9 @@ pub struct Comparison {
     /// Remarks on the comparison: q_s clipped to what the coarsest grid
     /// resolves (`clipped_band`), a map solved with a free boundary
     /// (`map_not_periodic`), solves the plain loop finished after the
-    /// preconditioned one stalled (`preconditioner_fallback`). Printed on
+    /// preconditioned one stalled (`preconditioner_fallback`), and the
+    /// asperity theories' warnings (`small_bandwidth`, `coalescence`, also in
+    /// [`Comparison::asperity`]). Printed on
     /// stderr and in the top-level `warnings` of `--json`.
     #[serde(skip)]
     pub warnings: Vec<crate::Warning>,
