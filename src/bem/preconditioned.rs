@@ -78,7 +78,7 @@
 //! (σ0 = 0.05 E*; the nonlinear loop 34 / 45 / 59) and 24 / 28 at 256 / 512
 //! (0.005 E*). The modes it misjudges are therefore not the
 //! coarse smooth ones a block space catches; nor are they a diagonal effect:
-//! diag([F]𝒦[F]𝒢[F]) lies in 0.99–1.34 on the rough case (256²,
+//! diag(\[F\]𝒦\[F\]𝒢\[F\]) lies in 0.99–1.34 on the rough case (256²,
 //! σ0 = 0.05 E*), and the symmetric scaling by its inverse square root left
 //! the fixed-set count at 28–29. For the free boundary the
 //! periodic N-grid 𝒦 instead of the padded 2N one was measured too: 59

@@ -15,7 +15,7 @@
 //! | Alicona `.al3d` | `.al3d`, or `AliconaImaging` | `Cols·PixelSizeXMeter`, `Rows·PixelSizeYMeter` | m | NaN, `InvalidPixelValue` |
 //! | Sensofar `.plu` (topography, first layer) | `.plu`, `.apx` (no magic) | nx·Δx, ny·Δy | µm | 1000001 |
 //! | Bruker/Veeco Nanoscope (the first height channel) | `.spm`, `.di`, or `\*File list` (`.000`, `.001`, …) | `Scan Size` | the sensitivity's (`nm/V`) | – |
-//! | Igor binary wave `.ibw` v5 (Asylum Research; the first height channel) | `.ibw` | nx·sfA[0], ny·sfA[1] (no unit of x: the caller's) | `dataUnits` (none: the caller's, required) | NaN |
+//! | Igor binary wave `.ibw` v5 (Asylum Research; the first height channel) | `.ibw` | nx·sfA\[0\], ny·sfA\[1\] (no unit of x: the caller's) | `dataUnits` (none: the caller's, required) | NaN |
 //!
 //! # Axis order
 //! A row of a `.npy` array or text matrix runs along x: the array of
