@@ -3,7 +3,7 @@
 //! ([`persson::topography::anisotropy`]).
 
 use super::measured_args::MeasuredArgs;
-use super::output::{print, Format};
+use super::output::Format;
 
 /// Arguments of `persson anisotropy`.
 #[derive(clap::Args, Debug)]
@@ -17,6 +17,7 @@ pub struct Args {
 /// Run `persson anisotropy`.
 #[cfg(feature = "topography")]
 pub fn run(a: Args) -> anyhow::Result<()> {
+    use super::output::print;
     use persson::topography::{anisotropy, Conditioning};
     let Some(map) = a.measured.spec(None)? else {
         anyhow::bail!("persson anisotropy needs a height map: --surface FILE");
