@@ -84,6 +84,64 @@
 //! periodic N-grid 𝒦 instead of the padded 2N one was measured too: 59
 //! against 40 iterations at 256², σ0 = 0.05 E*.
 //!
+//! # A two-level preconditioner on aggregates, measured and not adopted
+//! The second attempt of issue 22, in a numpy replica of this loop that
+//! gives its counts exactly (34 / 30 at 256², 45 at 512²;
+//! `examples/bem_two_level.py`, rough case, periodic, ε ≤ 1e-10). Balancing
+//! (BNN) form, as above, but the coarse space is made of *aggregates of fixed
+//! size*: Z the indicators of the b × b blocks of the grid intersected with
+//! F (N²/b² coarse unknowns, not 16 or 64), E = Zᵀ𝒜Z (𝒜: 𝒢 on F with the
+//! load constraint), factorised densely. With the contact set fixed at the
+//! solution's (iterations):
+//! ```text
+//!                                   N = 256   512   1024   2048
+//! FFT preconditioner (this loop)        28    36     48     65     σ0 = 0.05 E*
+//!                                       24    29     37            σ0 = 0.005 E*
+//! BNN, b = 32, E Galerkin               18    18     18     18     σ0 = 0.05 E*
+//!                                                    18            σ0 = 0.005 E*
+//! BNN, b = 16 / 8 / 4, E Galerkin       14 / 11 / 8 (256), 13 (512, b = 16)
+//! ```
+//! The count stops growing with N as long as b stays fixed. Three variants
+//! fail: the additive form z = \[F\]𝒦\[F\]r + Z E⁻¹ Zᵀ r (30 at 256², b = 16:
+//! 𝒦 already overestimates the inverse on F, and adding a positive term only
+//! raises the large eigenvalues); a coarse matrix that is not Galerkin in its
+//! near field (each aggregate's contact smeared over its block,
+//! E ≈ w_I w_J 𝒢_c(I − J): 19 / 57 / 160 at 256 / 512 / 1024, b = 16,
+//! σ0 = 0.05 E*, and 241–392 at 0.005 E*); and a fixed number of coarse
+//! blocks (the deflation above). A cheap assembly of E is as good as the
+//! exact one: near field (|I − J| ≤ 1 block) exact by probing with 16
+//! colours (one convolution each), far field from the aggregates' monopole
+//! and dipole moments through the block kernel (relative error 1e-3 of
+//! max E; the counts above are with it at 1024² and 2048²).
+//!
+//! In the nonlinear loop, F changes and so do Z and E. Re-assembled
+//! whenever F changed, and F-independent otherwise (iterations, both loads
+//! σ0 = 0.05 / 0.005 E*):
+//! ```text
+//!                                   N = 256       512       1024
+//! FFT preconditioner (this loop)       34 / 30    45 / 39   59 / 49
+//! BNN, b = 16                          19 / 20
+//! BNN, b = 32                          24 / 24    29 / 27
+//! BNN, b = 32, stale E (below)                    29 / 31   1024_ROW
+//! BNN, b = 64                          28
+//! ```
+//! "Stale E": re-assembled only when F has changed at more than 1 % of its
+//! nodes since the last assembly (at 256², b = 16: the same 19 / 20, with 5
+//! and 9 assemblies; at 5 %, 27 / 24). So the nonlinear count still grows
+//! (24 → 29 at b = 32): what remains is the active set's, not the linear
+//! problem's. And each BNN iteration costs four convolutions (𝒦r, 𝒢 of the
+//! coarse correction, 𝒢 of the smoothed residual, 𝒢t) against two, each
+//! assembly 17 (16 colours and 𝒢 of the free set's indicator), plus a dense
+//! factorisation of N²/b² unknowns (4096 at 2048², b = 32: 16.8 M values,
+//! 4 N², beyond the memory budget). At 512², σ0 = 0.05 E*: 29 × 4 + 7 × 17
+//! = 235 convolutions against this loop's 45 × 2 = 90, so slower in time at
+//! every size measured; not adopted. What a next attempt would need: an
+//! assembly that follows F incrementally (the near-field entries of the
+//! aggregates whose nodes changed, by direct sums with the real-space kernel,
+//! about 9 b² operations per changed node), a coarse solve without a dense
+//! factor (the far field is a coarse circulant), and the projection without
+//! its extra transforms.
+//!
 //! # Stall and fallback
 //! ε is not monotone in a projected CG. When the best ε has not halved
 //! within `stall_iterations` iterations, or a step is degenerate (no descent
