@@ -114,28 +114,30 @@
 //! and dipole moments through the block kernel (relative error 1e-3 of
 //! max E; the counts above are with it at 1024² and 2048²).
 //!
-//! In the nonlinear loop, F changes and so do Z and E. Re-assembled
-//! whenever F changed, and F-independent otherwise (iterations, both loads
-//! σ0 = 0.05 / 0.005 E*):
+//! In the nonlinear loop F changes, and Z and E with it. With E
+//! re-assembled at every iteration in which F changed (iterations,
+//! σ0 = 0.05 / 0.005 E*; –: not run):
 //! ```text
 //!                                   N = 256       512       1024
 //! FFT preconditioner (this loop)       34 / 30    45 / 39   59 / 49
 //! BNN, b = 16                          19 / 20
-//! BNN, b = 32                          24 / 24    29 / 27
-//! BNN, b = 32, stale E (below)                    29 / 31   1024_ROW
+//! BNN, b = 32                          24 / 24    29 / 27   51 / –
+//! BNN, b = 32, stale E (below)                    29 / 31   49 / 39
 //! BNN, b = 64                          28
 //! ```
 //! "Stale E": re-assembled only when F has changed at more than 1 % of its
 //! nodes since the last assembly (at 256², b = 16: the same 19 / 20, with 5
 //! and 9 assemblies; at 5 %, 27 / 24). So the nonlinear count still grows
-//! (24 → 29 at b = 32): what remains is the active set's, not the linear
-//! problem's. And each BNN iteration costs four convolutions (𝒦r, 𝒢 of the
-//! coarse correction, 𝒢 of the smoothed residual, 𝒢t) against two, each
-//! assembly 17 (16 colours and 𝒢 of the free set's indicator), plus a dense
-//! factorisation of N²/b² unknowns (4096 at 2048², b = 32: 16.8 M values,
+//! (24 → 29 → 51 at b = 32, σ0 = 0.05 E*; 29 assemblies at 1024²), though
+//! the linear problem's does not: the growth that remains comes with the
+//! moving active set. And each BNN iteration costs four convolutions (𝒦r,
+//! 𝒢 of the coarse correction, 𝒢 of the smoothed residual, 𝒢t) against two,
+//! each assembly 17 (16 colours and 𝒢 of the free set's indicator), plus a
+//! dense factorisation of N²/b² unknowns (4096 at 2048², b = 32: 16.8 M values,
 //! 4 N², beyond the memory budget). At 512², σ0 = 0.05 E*: 29 × 4 + 7 × 17
-//! = 235 convolutions against this loop's 45 × 2 = 90, so slower in time at
-//! every size measured; not adopted. What a next attempt would need: an
+//! = 235 convolutions against this loop's 45 × 2 = 90, at 1024² (stale E)
+//! 49 × 4 + 10 × 17 = 366 against 59 × 2 = 118: slower in time at every
+//! size measured; not adopted. What a next attempt would need: an
 //! assembly that follows F incrementally (the near-field entries of the
 //! aggregates whose nodes changed, by direct sums with the real-space kernel,
 //! about 9 b² operations per changed node), a coarse solve without a dense
