@@ -96,10 +96,11 @@
 //! ```text
 //!                                   N = 256   512   1024   2048
 //! FFT preconditioner (this loop)        28    36     48     65     σ0 = 0.05 E*
-//!                                       24    29     37            σ0 = 0.005 E*
+//!                                       24    29     37     49     σ0 = 0.005 E*
 //! BNN, b = 32, E Galerkin               18    18     18     18     σ0 = 0.05 E*
-//!                                                    18            σ0 = 0.005 E*
+//!                                                    18     18     σ0 = 0.005 E*
 //! BNN, b = 16 / 8 / 4, E Galerkin       14 / 11 / 8 (256), 13 (512, b = 16)
+//! BNN, b = 64, E Galerkin                                    24     σ0 = 0.05 E*
 //! ```
 //! The count stops growing with N as long as b stays fixed. Three variants
 //! fail: the additive form z = \[F\]𝒦\[F\]r + Z E⁻¹ Zᵀ r (30 at 256², b = 16:
