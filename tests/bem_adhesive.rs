@@ -4,7 +4,7 @@
 #![cfg(feature = "bem")]
 
 use persson::bem::adhesive::{AdhesiveOptions, AdhesiveSolver, CohesiveLaw};
-use persson::bem::{Boundary, Control, Operator, Options, Solver};
+use persson::bem::{Boundary, Control, Method, Operator, Options, Solver};
 
 /// A periodic "rough" surface: a few cosines (deterministic), N × N on L = 1.
 fn waves(n: usize) -> Vec<f64> {
@@ -200,5 +200,92 @@ fn maugis_dugdale_converges_along_load_paths() {
             .map(|(g, hi)| (g - (last.mean_gap + mean_h - hi)).abs())
             .fold(0.0, f64::max);
         assert_eq!(worst, 0.0, "detached gap is not the rigid gap");
+    }
+}
+
+/// The sphere z = −r²/2 (R = 1) on N × N, L = 1.
+fn sphere(n: usize) -> Vec<f64> {
+    let dx = 1.0 / n as f64;
+    let mut h = vec![0.0; n * n];
+    for i in 0..n {
+        for j in 0..n {
+            let x = (i as f64 + 0.5) * dx - 0.5;
+            let y = (j as f64 + 0.5) * dx - 0.5;
+            h[i * n + j] = -(x * x + y * y) / 2.0;
+        }
+    }
+    h
+}
+
+/// Δγ = 1e-4 and ρ of the Maugis parameter λ for the sphere R = 1, E* = 1.
+fn range_of_lambda(dg: f64, lambda: f64) -> f64 {
+    dg / lambda * (9.0 / (2.0 * std::f64::consts::PI * dg)).cbrt()
+}
+
+/// The load paths of the preconditioned-vs-plain comparison: (name, heights,
+/// law, mean gaps), loading and unloading.
+fn comparison_cases(n: usize) -> Vec<(String, Vec<f64>, CohesiveLaw, Vec<f64>)> {
+    let dg = 1e-4;
+    let s = sphere(n);
+    let r = rigid_mean_gap(&s);
+    let mut cases = Vec::new();
+    for lambda in [1.0, 3.0] {
+        let rho = range_of_lambda(dg, lambda);
+        let path = load_path(r + 2.0 * rho, r - 0.006, r + 0.02, 20);
+        cases.push((
+            format!("sphere exponential λ = {lambda}"),
+            s.clone(),
+            CohesiveLaw::exponential(dg, rho).unwrap(),
+            path.clone(),
+        ));
+        cases.push((
+            format!("sphere Maugis λ = {lambda}"),
+            s.clone(),
+            CohesiveLaw::maugis(dg, rho).unwrap(),
+            path,
+        ));
+    }
+    let h = waves(n);
+    let r = rigid_mean_gap(&h);
+    for law in [
+        CohesiveLaw::exponential(1e-4, 1e-3).unwrap(),
+        CohesiveLaw::maugis(1e-4, 1e-3).unwrap(),
+    ] {
+        cases.push((
+            format!("waves {law:?}"),
+            h.clone(),
+            law,
+            load_path(r + 2e-3, 0.4 * r, r + 5e-3, 20),
+        ));
+    }
+    cases
+}
+
+#[test]
+fn preconditioned_matches_plain_along_load_paths() {
+    let n = 64;
+    let opts = AdhesiveOptions::default();
+    for (name, h, law, gaps) in comparison_cases(n) {
+        let op = || Operator::new(Boundary::Periodic, n, 1.0, 1.0).unwrap();
+        let mut plain = AdhesiveSolver::new(op()).unwrap().with_method(Method::Plain);
+        let mut pre = AdhesiveSolver::new(op()).unwrap();
+        let a = plain.sequence(&h, &law, &gaps, &opts).unwrap();
+        let b = pre.sequence(&h, &law, &gaps, &opts).unwrap();
+        let (ia, ib): (usize, usize) = (
+            a.points.iter().map(|p| p.iterations).sum(),
+            b.points.iter().map(|p| p.iterations).sum(),
+        );
+        let mut worst_p: f64 = 0.0;
+        let mut worst_c: f64 = 0.0;
+        for (p, q) in a.points.iter().zip(&b.points) {
+            assert!(p.converged && q.converged, "{name}: {p:?} {q:?}");
+            let scale = p.mean_pressure.abs().max(a.pull_off_pressure);
+            worst_p = worst_p.max((p.mean_pressure - q.mean_pressure).abs() / scale);
+            worst_c = worst_c.max((p.contact_fraction - q.contact_fraction).abs());
+        }
+        eprintln!(
+            "{name}: iterations plain {ia} preconditioned {ib}, fallbacks {}, worst Δp̄/scale {worst_p:.2e}, Δ contact {worst_c:.2e}, pull-off {:.6e} {:.6e}",
+            b.fallbacks, a.pull_off_pressure, b.pull_off_pressure
+        );
     }
 }
