@@ -303,7 +303,9 @@ fn preconditioned_matches_plain_along_load_paths() {
     let mut fallbacks = 0;
     for (name, h, law, gaps) in exponential_cases(n) {
         let op = || Operator::new(Boundary::Periodic, n, 1.0, 1.0).unwrap();
-        let mut plain = AdhesiveSolver::new(op()).unwrap().with_method(Method::Plain);
+        let mut plain = AdhesiveSolver::new(op())
+            .unwrap()
+            .with_method(Method::Plain);
         let mut pre = AdhesiveSolver::new(op()).unwrap();
         assert_eq!(pre.method_for(&law), Method::PRECONDITIONED);
         let a = plain.sequence(&h, &law, &gaps, &opts).unwrap();
@@ -447,7 +449,9 @@ fn free_boundary_sphere_pull_off_lies_between_jkr_and_dmt() {
     let (dg, lambda) = (1e-4, 1.0);
     let rho = range_of_lambda(dg, lambda);
     let law = CohesiveLaw::exponential(dg, rho).unwrap();
-    let mut approaches: Vec<f64> = (0..=10).map(|k| -2.0 * rho + 0.006 * k as f64 / 10.0).collect();
+    let mut approaches: Vec<f64> = (0..=10)
+        .map(|k| -2.0 * rho + 0.006 * k as f64 / 10.0)
+        .collect();
     approaches.extend((0..=50).map(|k| 0.006 - 0.026 * k as f64 / 50.0));
     let mut s = AdhesiveSolver::new(Operator::new(Boundary::Free, n, 1.0, 1.0).unwrap()).unwrap();
     let seq = s

@@ -602,7 +602,7 @@ impl AdhesiveSolver {
         if self.layout.periodic() {
             let (h_max, h_mean) = height_stats(heights);
             let mean_gap = h_max - h_mean - approach;
-            if !(mean_gap > 0.0) {
+            if mean_gap <= 0.0 {
                 return Err(Error::invalid(
                     "approach",
                     approach,
@@ -837,7 +837,7 @@ impl AdhesiveSolver {
                 beta = 0.0;
                 self.search.iter_mut().for_each(|t| *t = 0.0);
             }
-            if !(descent > 0.0) {
+            if descent.is_nan() || descent <= 0.0 {
                 return Ok(stalled);
             }
             rz_old = r_z;
