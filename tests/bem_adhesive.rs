@@ -373,7 +373,7 @@ fn maugis_dugdale_preconditioned_converges() {
 
 /// The gap, the force over L² and the contact fraction of a non-adhesive
 /// free-boundary solve.
-fn free_reference(h: &[f64], n: usize, approach: f64) -> (Vec<f64>, f64, f64) {
+fn free_reference(h: &[f64], n: usize, approach: f64) -> (Vec<f64>, f64, f64, Vec<f64>) {
     let mut reference = Solver::new(Operator::new(Boundary::Free, n, 1.0, 1.0).unwrap());
     let sol = reference
         .solve(
@@ -385,14 +385,20 @@ fn free_reference(h: &[f64], n: usize, approach: f64) -> (Vec<f64>, f64, f64) {
             },
         )
         .unwrap();
-    (sol.gap, sol.mean_pressure, sol.contact_fraction)
+    (
+        sol.gap,
+        sol.mean_pressure,
+        sol.contact_fraction,
+        sol.pressure,
+    )
 }
 
 /// Free boundary, Δγ = 0: the adhesive solver under approach control is the
 /// non-adhesive free-boundary solver at the same approach, with both
 /// iterations, on the sphere and the cosine surface (N = 32, tolerance
-/// 1e-12 both). Measured: gaps equal to 6e-14 of the largest gap, forces
-/// to 4e-11 relative, contact fractions equal; asserted to 1e-9.
+/// 1e-12 both). Measured: gaps equal to 6e-14 of the largest gap, pressure
+/// fields to 5e-11 of the largest pressure, forces to 4e-11 relative,
+/// contact fractions equal; asserted to 1e-9.
 #[test]
 fn free_boundary_zero_work_of_adhesion_is_the_non_adhesive_solver() {
     let n = 32;
@@ -412,7 +418,19 @@ fn free_boundary_zero_work_of_adhesion_is_the_non_adhesive_solver() {
             for &d in &approaches {
                 let p = s.solve_approach(&h, &law, d, &opts).unwrap();
                 assert!(p.converged && p.contact_fraction > 0.0, "{name}: {p:?}");
-                let (gap, force, contact) = free_reference(&h, n, d);
+                let (gap, force, contact, pressure) = free_reference(&h, n, d);
+                let mut p_field = vec![0.0; n * n];
+                s.pressure(&h, &law, &mut p_field).unwrap();
+                let p_max = pressure.iter().copied().fold(0.0, f64::max);
+                let worst_p = pressure
+                    .iter()
+                    .zip(&p_field)
+                    .map(|(a, b)| (a - b).abs())
+                    .fold(0.0, f64::max);
+                assert!(
+                    worst_p <= 1e-6 * p_max,
+                    "{name}: pressure differs by {worst_p} of {p_max}"
+                );
                 let g_max = gap.iter().copied().fold(0.0, f64::max);
                 let worst = gap
                     .iter()
@@ -420,7 +438,7 @@ fn free_boundary_zero_work_of_adhesion_is_the_non_adhesive_solver() {
                     .map(|(a, b)| (a - b).abs())
                     .fold(0.0, f64::max);
                 eprintln!(
-                    "{name} {method:?} δ = {d}: force {} vs {force}, worst gap {worst:.2e} of {g_max:.2e}, iterations {}",
+                    "{name} {method:?} δ = {d}: force {} vs {force}, worst gap {worst:.2e} of {g_max:.2e}, pressure {worst_p:.2e} of {p_max:.2e}, iterations {}",
                     p.mean_pressure, p.iterations
                 );
                 assert!(worst <= 1e-9 * g_max, "{name}: gap differs by {worst}");
