@@ -1,6 +1,7 @@
 //! Adhesion theory timings: the stickiness scan, one adhesive point (the
 //! moving-boundary Volterra solve on two meshes) in the bulk and near
-//! pull-off, and a rubber case in physical units.
+//! pull-off, and a rubber case in physical units; with the `bem` feature, one
+//! adhesive FFT-BEM solve at 128² with each iteration.
 //!
 //! Run: `cargo bench --bench adhesion`
 
@@ -67,4 +68,55 @@ fn point_rubber_zero_load() -> f64 {
     c.point(divan::black_box(0.0), 1e4)
         .unwrap()
         .contact_fraction
+}
+
+/// The adhesive FFT-BEM: one cold solve of the exponential law on a 128²
+/// self-affine surface (the set-up of examples/adhesive_tamaas.rs, tolerance
+/// 1e-10), with each iteration.
+#[cfg(feature = "bem")]
+mod bem {
+    use persson::bem::adhesive::{AdhesiveOptions, AdhesiveSolver, CohesiveLaw};
+    use persson::bem::surface::synthesize;
+    use persson::bem::{Boundary, Method, Operator};
+    use persson::spectrum::{Amplitude, SelfAffine};
+
+    fn case(n: usize) -> (Vec<f64>, CohesiveLaw, f64) {
+        let tau = std::f64::consts::TAU;
+        let s = SelfAffine::new(tau, tau, 32.0 * tau, 0.8, Amplitude::RmsSlope(0.1)).unwrap();
+        let h = synthesize(&s, n, 1.0, 1).unwrap().heights;
+        let n2 = (n * n) as f64;
+        let mean = h.iter().sum::<f64>() / n2;
+        let rms = (h.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / n2).sqrt();
+        let h_max = h.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        let rho = rms / 20.0;
+        let law = CohesiveLaw::exponential(0.02 * rho, rho).unwrap();
+        (h, law, 0.6 * (h_max - mean))
+    }
+
+    fn solve(method: Method) -> f64 {
+        let n = 128;
+        let (h, law, mean_gap) = case(n);
+        let opts = AdhesiveOptions {
+            tolerance: 1e-10,
+            max_iterations: 20_000,
+        };
+        let mut s = AdhesiveSolver::new(Operator::new(Boundary::Periodic, n, 1.0, 1.0).unwrap())
+            .unwrap()
+            .with_method(method);
+        s.solve(&h, &law, divan::black_box(mean_gap), &opts)
+            .unwrap()
+            .mean_pressure
+    }
+
+    /// Preconditioned (the exponential law's default).
+    #[divan::bench]
+    fn adhesive_bem_preconditioned_128() -> f64 {
+        solve(Method::PRECONDITIONED)
+    }
+
+    /// Plain conjugate gradient.
+    #[divan::bench]
+    fn adhesive_bem_plain_128() -> f64 {
+        solve(Method::Plain)
+    }
 }

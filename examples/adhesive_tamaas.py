@@ -3,9 +3,11 @@
 heights, mean gap, law and tolerance (1e-10), at 256² and 512².
 
 Run from the workspace root (builds and runs examples/adhesive_tamaas.rs):
-    /work/peers/bin/python examples/adhesive_tamaas.py [N ...] [--law exponential]
+    /work/peers/bin/python examples/adhesive_tamaas.py [N ...] [--law exponential] [--plain]
 Prints both answers, their relative differences and the wall time per solve of
-each (one solve each, cold start), with the load average (`uptime`).
+each (one solve each, cold start), with the load average (`uptime`). Ours uses
+the solver's iteration for the law (preconditioned for the exponential law,
+plain for Maugis-Dugdale); `--plain` also runs the plain iteration.
 """
 import json
 import os
@@ -19,9 +21,9 @@ import tamaas as tm
 TOLERANCE = 1e-10
 
 
-def persson(n, out, law):
+def persson(n, out, law, method="auto"):
     cmd = ["cargo", "run", "--quiet", "--release", "--example", "adhesive_tamaas",
-           "--", str(n), out, law]
+           "--", str(n), out, law, method]
     return json.loads(subprocess.run(cmd, check=True, capture_output=True,
                                      text=True).stdout)
 
@@ -87,6 +89,7 @@ def main():
     os.makedirs(out, exist_ok=True)
     tm.set_log_level(tm.LogLevel.error)
     for n in grids:
+        plain = persson(n, out, law, "plain") if "--plain" in sys.argv else None
         ours = persson(n, out, law)
         heights = np.load(os.path.join(out, f"surface_{n}.npy"))
         theirs = tamaas(heights, ours, law)
@@ -103,8 +106,14 @@ def main():
             eps, energy = check(gap, heights, ours, law)
             print(f"  {who:7s} KKT residual {eps:.1e}, energy/A {energy:.10e}")
         print(f"  time per solve: persson {ours['seconds']:.3f} s "
-              f"({ours['iterations']} iterations, converged {ours['converged']}), "
+              f"({ours['method']}, {ours['iterations']} iterations, converged "
+              f"{ours['converged']}, fallback {ours['fallback']}), "
               f"tamaas {theirs['seconds']:.3f} s, ratio {theirs['seconds'] / ours['seconds']:.1f}")
+        if plain is not None:
+            print(f"  persson plain: {plain['seconds']:.3f} s ({plain['iterations']} iterations), "
+                  f"mean pressure {plain['mean_pressure']:.8e} (relative difference "
+                  f"{abs(plain['mean_pressure'] - ours['mean_pressure']) / abs(ours['mean_pressure']):.1e}), "
+                  f"ratio tamaas/plain {theirs['seconds'] / plain['seconds']:.1f}")
 
 
 if __name__ == "__main__":

@@ -28,9 +28,10 @@
 //!   (its fallback); `elastic` (internal) chooses between them.
 //! - [`saturated`]: the same with a yield stress, 0 ≤ p ≤ σY.
 //! - [`adhesive`]: adhesive contact (Maugis–Dugdale and exponential cohesive
-//!   laws) in the gap-based formulation under mean-gap control, periodic;
-//!   loading–unloading sequences and their pull-off. It uses the shared
-//!   [`Operator`] (its stiffness 𝒦) but its own buffers: [`Problem`] has no
+//!   laws) in the gap-based formulation under mean-gap control (periodic) or
+//!   approach control (periodic or free); loading–unloading sequences and
+//!   their pull-off. It uses the shared [`Operator`] (its stiffness 𝒦; free:
+//!   its own padded 2N circulant) but its own buffers: [`Problem`] has no
 //!   mean-gap control.
 //! - [`hertz`]: closed-form Hertz solution and the η validation; with a
 //!   yield stress, the plastic disc per grid ([`hertz::plastic_disc`]).
