@@ -5,10 +5,11 @@
 //! (`bem rough --patches`, `bem rough --subsurface`, `bem hertz --subsurface`).
 //!
 //! # Patch-area exponent
-//! Hyun, Pei, Molinari & Robbins (2004) find the patch areas of a
-//! self-affine contact distributed as a power law n(A) ∝ A^{−τ} between the
-//! pixel and the largest patch. The report fits it by least squares on the
-//! log-binned distribution:
+//! The patch areas of a self-affine elastic contact fall off as a power law
+//! of the number density, n(A) ∝ A^{−τ}, at large A (Hyun, Pei, Molinari &
+//! Robbins 2004; Müser & Wang, Lubricants 6, 85 (2018); docs/asperity.md
+//! sets the measured τ beside them). The report fits it by least squares on
+//! the log-binned density (not the counts per bin, which fall as A^{1−τ}):
 //! ```text
 //! ln n_k = c − τ ln √(A_low,k A_high,k)      over the bins with a patch
 //! ```
