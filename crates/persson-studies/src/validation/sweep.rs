@@ -200,7 +200,7 @@ pub fn sweep_source_observed(
                 yield_stress: config.options.yield_stress,
                 hook: hook.as_mut().map(|h| {
                     // Shorten the trait object's lifetime to this solve's borrow.
-                    let h: &mut dyn FnMut(usize, usize, usize, &Solution) -> Result<()> = &mut **h;
+                    let h: SolutionHook<'_> = &mut **h;
                     (gi, si, h)
                 }),
             };
@@ -380,11 +380,7 @@ struct SweepObserver<'a> {
     counts: Option<&'a mut Vec<PressureCounts>>,
     yield_stress: Option<f64>,
     /// The caller's hook with this grid's and seed's indices.
-    hook: Option<(
-        usize,
-        usize,
-        &'a mut dyn FnMut(usize, usize, usize, &Solution) -> Result<()>,
-    )>,
+    hook: Option<(usize, usize, SolutionHook<'a>)>,
 }
 
 impl rough::Observer for SweepObserver<'_> {
