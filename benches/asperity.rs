@@ -77,6 +77,30 @@ fn bush_pressure_curve(bencher: divan::Bencher) {
     bencher.bench_local(|| b.pressure_curve(divan::black_box(&p)).unwrap());
 }
 
+/// The pressure curve of `bush_pressure_curve` without the table of ln J/φ
+/// in δ: every Newton step integrates the summit table (the path before it).
+#[divan::bench(sample_count = 20)]
+fn bush_pressure_curve_summit_table(bencher: divan::Bencher) {
+    let b = Bush::new(&moments(), 1.0, EllipticHertz::Exact)
+        .unwrap()
+        .with_separation_table(false);
+    let p = pressures();
+    b.at_separation(0.0).unwrap();
+    bencher.bench_local(|| b.pressure_curve(divan::black_box(&p)).unwrap());
+}
+
+/// `bush_separation_curve` without the table of ln J/φ in δ.
+#[divan::bench]
+fn bush_separation_curve_summit_table(bencher: divan::Bencher) {
+    let m = moments();
+    let b = Bush::new(&m, 1.0, EllipticHertz::Exact)
+        .unwrap()
+        .with_separation_table(false);
+    let d = separations(&m);
+    b.at_separation(0.0).unwrap();
+    bencher.bench_local(|| b.separation_curve(divan::black_box(&d)).unwrap());
+}
+
 #[cfg(feature = "bem")]
 mod bem {
     use persson::bem::patches::{patch_statistics, PatchOptions};

@@ -525,6 +525,58 @@ fn bush_summit_table_matches_the_direct_integrals() {
     }
 }
 
+/// The table of ln J/φ in δ (−6 ≤ δ ≤ 12) at points off its Chebyshev
+/// nodes (a step incommensurate with the pieces) against the direct
+/// u-integrals, the summit-table path beside it, and its own error estimate.
+#[test]
+fn bush_separation_table_matches_the_direct_integrals_off_its_nodes() {
+    for alpha in [4.0, 7.3, 1e3] {
+        let m = SpectralMoments::new(1.0, 1.0, alpha).unwrap();
+        for hertz in [EllipticHertz::Exact, EllipticHertz::GeometricMean] {
+            let b = Bush::new(&m, 1.0, hertz).unwrap();
+            let slow = b.clone().with_separation_table(false);
+            assert_eq!(slow.separation_table_tail(), None);
+            let tail = b.separation_table_tail().unwrap();
+            assert!(tail < 1e-13, "α = {alpha}, {hertz:?}: tail {tail}");
+            for i in 0..=41 {
+                let delta = -6.0 + 18.0 * (f64::from(i) + 0.3137) / 42.0;
+                let fast = b.scaled_integrals(delta).unwrap();
+                let summit = slow.scaled_integrals(delta).unwrap();
+                let direct = b.scaled_integrals_direct(delta).unwrap();
+                for j in 0..3 {
+                    assert!(
+                        rel(fast[j], direct[j]) < TABLE_TOL,
+                        "α = {alpha}, {hertz:?}, δ = {delta}, {j}"
+                    );
+                    assert!(
+                        rel(summit[j], direct[j]) < TABLE_TOL,
+                        "α = {alpha}, {hertz:?}, δ = {delta}, {j}"
+                    );
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn bush_pressure_curve_is_the_same_with_and_without_the_separation_table() {
+    let m = SpectralMoments::new(1.0, 1.0, 12.0).unwrap();
+    let b = Bush::new(&m, 1.0, EllipticHertz::Exact).unwrap();
+    let slow = b.clone().with_separation_table(false);
+    let p: Vec<f64> = (0..30)
+        .map(|i| 1e-6 * 10f64.powf(0.2 * f64::from(i)))
+        .collect();
+    for (f, s) in b
+        .pressure_curve(&p)
+        .unwrap()
+        .iter()
+        .zip(&slow.pressure_curve(&p).unwrap())
+    {
+        assert!((f.separation - s.separation).abs() < 1e-12, "{f:?} {s:?}");
+        assert!(rel(f.contact_fraction, s.contact_fraction) < 1e-12);
+    }
+}
+
 #[test]
 fn bush_pressure_curve_agrees_with_single_points() {
     let m = SpectralMoments::new(1.0, 1.0, 30.0).unwrap();

@@ -89,6 +89,14 @@ def test_compare_matches_cli():
                   "--pressure", "0.002,0.005,0.01")
     r = persson.compare(spectrum(), 1.0, [0.002, 0.005, 0.01], grid=64, levels=3)
     same(r, cli)
+    # The contact patches per grid and σ0 (issue 27): the largest patch's
+    # share of the contact area is a fraction, the counts are whole solves'.
+    per_grid = r["patches"]["per_grid"]
+    assert [g["grid"] for g in per_grid] == [16, 32, 64]
+    for g in per_grid:
+        assert set(g) == {"grid", "patch_count", "largest_patch_share", "patch_area_exponent"}
+        assert all(0 < s <= 1 for s in g["largest_patch_share"])
+        assert all(c >= 1 and c == int(c) for c in g["patch_count"])
 
 
 @pytest.mark.parametrize("periodic", [True, False])

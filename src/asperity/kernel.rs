@@ -130,6 +130,16 @@ impl Chebyshev {
         [0, 1, 2].map(|j| t * b1[j] - b2[j] + series[j].c[0])
     }
 
+    /// The largest magnitude of the last `n` coefficients (an estimate of
+    /// the interpolation error once their decay has levelled off).
+    pub(crate) fn tail(&self, n: usize) -> f64 {
+        self.c
+            .iter()
+            .rev()
+            .take(n)
+            .fold(0.0, |m: f64, c| m.max(c.abs()))
+    }
+
     /// Clenshaw summation at x ∈ [a, b].
     pub(crate) fn eval(&self, x: f64) -> f64 {
         let t = (2.0 * x - self.a - self.b) / (self.b - self.a);

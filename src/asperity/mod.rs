@@ -53,6 +53,7 @@ mod hertz_ellipse;
 mod kernel;
 pub mod moments;
 pub mod overlap;
+mod separation_table;
 mod summit_table;
 
 pub use bush::{Bush, EllipticHertz};

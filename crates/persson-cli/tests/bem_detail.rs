@@ -121,3 +121,51 @@ fn bad_depths_name_the_flag() {
         assert!(!err.contains("panicked"), "{err}");
     }
 }
+
+#[test]
+#[cfg(feature = "plot")]
+fn stress_plots_are_drawn_beside_the_npy() {
+    let dir = std::env::temp_dir().join(format!("persson-stress-plot-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let s = |name: &str| dir.join(name).to_string_lossy().into_owned();
+    let (code, _, err) = persson(&[
+        "bem",
+        "rough",
+        "--example",
+        "--grid",
+        "32",
+        "--pressure",
+        "1e6,1e7",
+        "--subsurface",
+        "--depth",
+        "1e-6,1e-5",
+        "--stress-field",
+        &s("vm.npy"),
+        "--stress-plot",
+        &s("vm.svg"),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    for k in 0..2 {
+        for j in 0..2 {
+            let svg = std::fs::read_to_string(dir.join(format!("vm_{k}_{j}.svg"))).unwrap();
+            assert!(svg.contains("Von Mises stress at z"), "{k} {j}");
+            assert!(dir.join(format!("vm_{k}_{j}.npy")).exists());
+        }
+    }
+    let (code, _, err) = persson(&[
+        "bem",
+        "hertz",
+        "--grid",
+        "32",
+        "--subsurface",
+        "--stress-plot",
+        &s("section.png"),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(std::fs::metadata(dir.join("section.png")).unwrap().len() > 1000);
+    // The flag needs --subsurface.
+    let (code, _, err) = persson(&["bem", "hertz", "--stress-plot", &s("x.svg")]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("--subsurface"), "{err}");
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -262,6 +262,16 @@ mod bem {
             let plots = persson_studies::scene::render_plots(&scene, &r, &dir).unwrap();
             assert!(plots.contains(&dir.join("patches.svg")), "{plots:?}");
             assert!(plots.contains(&dir.join("depth.svg")), "{plots:?}");
+            // each plane's von Mises map beside it: 3 pressures × 2 depths
+            for k in 0..3 {
+                for j in 0..2 {
+                    let p = dir.join(format!("depth_{k}_{j}.svg"));
+                    assert!(plots.contains(&p), "{plots:?}");
+                    let svg = std::fs::read_to_string(&p).unwrap();
+                    assert!(svg.contains("Von Mises stress at z"), "{k} {j}");
+                }
+            }
+            assert_eq!(plots.len(), 2 + 3 * 2, "{plots:?}");
         }
         // bad input is named: a depth beyond the side, no bins
         for (bad, needle) in [

@@ -72,7 +72,21 @@ fn hertz_subsurface(h: &HertzArgs) -> anyhow::Result<()> {
         &mut |it| bar.update(0, &|| "Hertz".into(), it),
     );
     bar.finish();
-    print(&r?, &h.format)
+    let r = r?;
+    if let Some(path) = &h.stress_plot {
+        #[cfg(feature = "plot")]
+        {
+            use persson_studies::plot::stress_map::{hertz_section_figure, render_field};
+            let section = persson_studies::bem_detail::hertz_section(&r)?;
+            render_field(&hertz_section_figure(&r, &section), path)?;
+        }
+        #[cfg(not(feature = "plot"))]
+        anyhow::bail!(
+            "--stress-plot {}: this persson was built without the `plot` feature",
+            path.display()
+        );
+    }
+    print(&r, &h.format)
 }
 
 fn hertz_case(h: &HertzArgs, grid: usize) -> HertzCase {
@@ -237,6 +251,22 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
     }
     let mut warnings = a.spectrum.file_warnings();
     warnings.extend(persson_studies::warning::of_rough(&report));
+    if let Some(path) = &a.detail.stress_plot {
+        #[cfg(feature = "plot")]
+        persson_studies::plot::stress_map::render_planes(
+            &solves.details.maps,
+            (surface.n, surface.size),
+            &a.detail.depth,
+            &pressures,
+            if e_star == 1.0 { "E*" } else { "Pa" },
+            path,
+        )?;
+        #[cfg(not(feature = "plot"))]
+        anyhow::bail!(
+            "--stress-plot {}: this persson was built without the `plot` feature",
+            path.display()
+        );
+    }
     let (patches, subsurface) = (solves.details.patches, solves.details.subsurface);
     match transport {
         Some(points) => {

@@ -83,6 +83,10 @@ pub struct HertzArgs {
     /// Poisson ratio ν of the body, for --subsurface (the contact needs only E*).
     #[arg(long, default_value = "0.3", allow_hyphen_values = true, value_parser = super::number::number)]
     pub poisson: f64,
+    /// With --subsurface, also draw the von Mises stress σ_vM/p0 on the
+    /// vertical section through the axis (z/a ≤ 2, |r|/a ≤ 3) as a colour map.
+    #[arg(long, requires = "subsurface", value_name = "FILE.svg|png")]
+    pub stress_plot: Option<PathBuf>,
     #[command(flatten)]
     pub solver: SolverArgs,
     /// Text tables with every column (default: each fits 100 characters, the
@@ -122,6 +126,10 @@ pub struct DetailArgs {
     /// (pressure k, depth j) is added before the extension.
     #[arg(long, requires = "subsurface")]
     pub stress_field: Option<PathBuf>,
+    /// Draw the von Mises stress of each plane as a colour map (.svg or
+    /// .png); `_k_j` (pressure k, depth j) is added before the extension.
+    #[arg(long, requires = "subsurface", value_name = "FILE.svg|png")]
+    pub stress_plot: Option<PathBuf>,
 }
 
 #[derive(clap::Args, Debug)]

@@ -35,7 +35,7 @@ pub fn details(
         poisson: poisson.unwrap_or(DEFAULT_POISSON),
         tensile_yield_stress: args.tensile_yield_stress,
         stress_field: args.stress_field.clone(),
-        keep_maps: false,
+        keep_maps: args.stress_plot.is_some(),
     });
     Details::new((n, size, boundary), pressures, patches, subsurface)
         .map_err(|e| anyhow::anyhow!("--depth: {e}"))

@@ -5,10 +5,11 @@
 //! (`bem rough --patches`, `bem rough --subsurface`, `bem hertz --subsurface`).
 //!
 //! # Patch-area exponent
-//! Hyun, Pei, Molinari & Robbins (2004) find the patch areas of a
-//! self-affine contact distributed as a power law n(A) ∝ A^{−τ} between the
-//! pixel and the largest patch. The report fits it by least squares on the
-//! log-binned distribution:
+//! The patch areas of a self-affine elastic contact fall off as a power law
+//! of the number density, n(A) ∝ A^{−τ}, at large A (Hyun, Pei, Molinari &
+//! Robbins 2004; Müser & Wang, Lubricants 6, 85 (2018); docs/asperity.md
+//! sets the measured τ beside them). The report fits it by least squares on
+//! the log-binned density (not the counts per bin, which fall as A^{1−τ}):
 //! ```text
 //! ln n_k = c − τ ln √(A_low,k A_high,k)      over the bins with a patch
 //! ```
@@ -28,10 +29,12 @@
 //! - C. Campañá, M. H. Müser, EPL 77, 38005 (2007), doi:10.1209/0295-5075/77/38005.
 //! - K. L. Johnson, *Contact Mechanics* (CUP 1985), §3.4, §4.2.
 
+mod section;
 mod solves;
 
 use serde::Serialize;
 
+pub use section::{hertz_section, VerticalSection};
 pub use solves::{indexed, Details, StressMap, SubsurfaceOptions, DEFAULT_POISSON};
 
 use crate::table::{Table, Tabulate};
@@ -381,6 +384,12 @@ pub struct HertzSubsurface {
     pub max_shear_stress: f64,
     /// Its depth ratio z/a.
     pub depth_ratio: f64,
+    /// The solved pressure field, `N × N` (for [`hertz_section`]; not serialised).
+    #[serde(skip)]
+    pub pressure: Vec<f64>,
+    /// Side L of the grid, m (not serialised).
+    #[serde(skip)]
+    pub size: f64,
 }
 
 /// Depths of the axis profile, in units of the contact radius.
@@ -438,6 +447,8 @@ pub fn hertz_subsurface(
         max_shear_stress: best.map_or(0.0, |b| b.max_shear_stress),
         depth_ratio: best.map_or(0.0, |b| b.depth_ratio),
         points,
+        pressure: sol.pressure,
+        size: case.size,
     })
 }
 

@@ -128,7 +128,7 @@ impl MapFigure {
 }
 
 /// Viridis at `t` in [0, 1].
-fn viridis(t: f64) -> RGBColor {
+pub(super) fn viridis(t: f64) -> RGBColor {
     let t = if t.is_finite() {
         t.clamp(0.0, 1.0)
     } else {
@@ -145,7 +145,7 @@ fn viridis(t: f64) -> RGBColor {
 type DrawResult<DB> =
     std::result::Result<(), DrawingAreaErrorKind<<DB as DrawingBackend>::ErrorType>>;
 
-fn font(size: f64, k: u32) -> FontDesc<'static> {
+pub(super) fn font(size: f64, k: u32) -> FontDesc<'static> {
     ("sans-serif", size * k as f64).into_font()
 }
 
@@ -461,6 +461,6 @@ pub fn rough_map(r: &persson::bem::rough::RoughReport) -> Result<MapFigure> {
 
 /// A tick label in the tables' number style (`1e8`, `0.0125`, `2.5e-9`):
 /// plotters' default prints `100000000.0` and rounds 1e-8 to `0.0`.
-fn tick(v: f64) -> String {
+pub(super) fn tick(v: f64) -> String {
     crate::table::number(v, 3)
 }

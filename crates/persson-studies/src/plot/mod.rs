@@ -46,6 +46,7 @@ pub mod figures;
 pub mod map;
 mod prepare;
 mod stack;
+pub mod stress_map;
 mod ticks;
 
 pub use figures::{

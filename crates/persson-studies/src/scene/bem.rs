@@ -191,7 +191,8 @@ fn details(
         tensile_yield_stress: s.tensile_yield_stress,
         // Written into the scene's output directory by `write_data`.
         stress_field: None,
-        keep_maps: s.stress_field.is_some(),
+        // Kept for the .npy files and for the maps drawn beside the plot.
+        keep_maps: s.stress_field.is_some() || s.plot.is_some(),
     });
     Details::new(grid, &scene.nominal_pressure, patches, subsurface)
         .map_err(|e| prefix("outputs.bem.subsurface.", e))

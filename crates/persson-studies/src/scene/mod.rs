@@ -390,6 +390,9 @@ pub fn render_plots(scene: &Scene, report: &SceneReport, dir: &Path) -> Result<V
     use crate::plot::Figure;
     let o = &scene.outputs;
     let mut written = Vec::new();
+    // The subsurface maps (written beside `written`, which `draw` holds).
+    #[cfg(feature = "bem")]
+    let mut planes: Vec<PathBuf> = Vec::new();
     let mut draw = |path: &Option<PathBuf>, fig: &dyn Fn() -> Result<Figure>| -> Result<()> {
         if let Some(p) = path {
             let p = dir.join(p);
@@ -423,6 +426,19 @@ pub fn render_plots(scene: &Scene, report: &SceneReport, dir: &Path) -> Result<V
         if let (Some(s), Some(r)) = (&out.subsurface, &report.bem_subsurface) {
             draw(&s.plot, &|| plot::subsurface_profiles(r))?;
         }
+        if let (Some(Some(p)), Some(s)) =
+            (out.subsurface.as_ref().map(|s| &s.plot), &out.subsurface)
+        {
+            // Each plane's von Mises map beside the depth plot: `_k_j` added.
+            planes.extend(crate::plot::stress_map::render_planes(
+                &report.bem_stress_maps,
+                (r.grid, r.size),
+                &s.depth,
+                &scene.nominal_pressure,
+                if r.contact_modulus == 1.0 { "E*" } else { "Pa" },
+                &dir.join(p),
+            )?);
+        }
     }
     if let (Some(out), Some(r)) = (&o.conductance, &report.conductance) {
         draw(&out.plot, &|| plot::conductance(r))?;
@@ -430,6 +446,8 @@ pub fn render_plots(scene: &Scene, report: &SceneReport, dir: &Path) -> Result<V
     if let (Some(out), Some(r)) = (&o.leakage, &report.leakage) {
         draw(&out.plot, &|| plot::leakage(r))?;
     }
+    #[cfg(feature = "bem")]
+    written.extend(planes);
     // Two panels: drawn here, after the last use of `draw` (which holds `written`).
     if let (Some(Some(path)), Some(r)) = (o.friction.as_ref().map(|f| &f.plot), &report.friction) {
         let p = dir.join(path);

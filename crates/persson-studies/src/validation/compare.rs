@@ -6,12 +6,15 @@ use super::data::{interpolate_log, score, UserData, UserHistogram};
 use super::distribution::{chosen_histogram, pressure_distributions, user_histogram};
 use super::kappa::fit_kappa;
 use super::limits::{Continuum, ContinuumSplit, PlasticSplit, SeedMean};
+use super::patches::PatchCollector;
 use super::report::{
     AreaTheory, BemGrid, ComparedSpectrum, Comparison, ContinuumPoint, DataComparison, DataScore,
     Fitted, KappaFits, MeanSeparation, ScoreReference, TheoryArea, TheoryKappa,
 };
 use super::resolution::{default_pressures, resolution_grids, SweepConfig, SweepSettings};
-use super::sweep::{sweep_source, GridResult, Sweep, SweepProgress, SweepSource};
+use super::sweep::{
+    sweep_source, sweep_source_observed, GridResult, Sweep, SweepProgress, SweepSource,
+};
 use crate::warning::{fallen_back, Warning};
 use persson::bem::{Boundary, GridSurface, Method};
 use persson::corrected::{self, Theory};
@@ -448,7 +451,24 @@ fn compare_on(
         Some((m, Boundary::Periodic)) => SweepSource::BandLimitedMap(m, q_s),
         Some((m, b)) => SweepSource::Map(m, b),
     };
-    let sw = sweep_source(source, e_star, &pressures, &sweep_config, progress)?;
+    // The patches of every solve, as it arrives (module `patches`).
+    let boundary = map.map_or(Boundary::Periodic, |(_, b)| b);
+    let mut collector = PatchCollector::new(
+        &sweep_config.grids,
+        sweep_config.seeds.len(),
+        pressures.len(),
+        sweep_config.size,
+        boundary,
+    );
+    let sw = sweep_source_observed(
+        source,
+        e_star,
+        &pressures,
+        &sweep_config,
+        progress,
+        Some(&mut |g, s, k, solution| collector.add(g, s, k, solution)),
+    )?;
+    let (patches, few_patches) = collector.finish(&pressures);
     let (measured, measured_fallbacks) = match map {
         Some((m, Boundary::Periodic)) => {
             measured_map(m, e_star, &pressures, &sweep_config, yield_stress, progress)?
@@ -469,6 +489,7 @@ fn compare_on(
         .into_iter()
         .chain(fallen_back(fallbacks))
         .chain(asperity.warnings.iter().cloned())
+        .chain(few_patches)
         .collect();
 
     let distributions = pressure_distributions(&sw, &model, config.bins)?;
@@ -527,6 +548,7 @@ fn compare_on(
         nominal_pressure: pressures,
         theories,
         asperity,
+        patches,
         bem: bem_grids(&sw),
         extrapolated: extrapolated_points(&sw, &cont)?,
         kappa,

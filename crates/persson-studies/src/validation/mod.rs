@@ -61,6 +61,8 @@ mod kappa_study;
 #[cfg(feature = "bem")]
 pub mod limits;
 #[cfg(feature = "bem")]
+pub mod patches;
+#[cfg(feature = "bem")]
 mod plastic;
 #[cfg(feature = "bem")]
 pub mod report;

@@ -454,6 +454,8 @@ pub struct Comparison {
     pub theories: Vec<TheoryArea>,
     /// The asperity theories (GW, BGT; with σY the overlap model) against A∞.
     pub asperity: AsperityComparison,
+    /// The BEM's contact patches per grid and σ0 ([`super::patches`]).
+    pub patches: super::patches::PatchComparison,
     /// The BEM per grid.
     pub bem: Vec<BemGrid>,
     /// The continuum limit per pressure.

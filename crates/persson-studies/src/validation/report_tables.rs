@@ -28,6 +28,11 @@ impl Tabulate for Comparison {
         tables.extend(self.distribution_table());
         tables.extend(self.data_table());
         tables.push(self.solves_table());
+        // Last, so that the other tables keep their places (issue 27).
+        tables.push(super::patches::patch_table(
+            &self.patches,
+            &self.nominal_pressure,
+        ));
         tables
     }
 }

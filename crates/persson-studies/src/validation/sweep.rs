@@ -144,6 +144,26 @@ pub fn sweep_source(
     config: &SweepConfig,
     progress: &mut dyn FnMut(SweepProgress),
 ) -> Result<Sweep> {
+    sweep_source_observed(source, contact_modulus, pressures, config, progress, None)
+}
+
+/// What a sweep hands each solution to: (grid index, seed index, pressure
+/// index in the caller's order, the solution).
+pub type SolutionHook<'a> = &'a mut dyn FnMut(usize, usize, usize, &Solution) -> Result<()>;
+
+/// [`sweep_source`], handing every solution to `hook` as it arrives (the
+/// patch statistics of `compare`, [`super::patches`]).
+///
+/// # Errors
+/// As [`sweep_source`]; the hook's.
+pub fn sweep_source_observed(
+    source: SweepSource<'_>,
+    contact_modulus: f64,
+    pressures: &[f64],
+    config: &SweepConfig,
+    progress: &mut dyn FnMut(SweepProgress),
+    mut hook: Option<SolutionHook<'_>>,
+) -> Result<Sweep> {
     let (boundary, seeds) = source.boundary_and_seeds(&config.seeds);
     check_input(contact_modulus, pressures, seeds, config, boundary)?;
     let mut order: Vec<usize> = (0..pressures.len()).collect();
@@ -178,6 +198,11 @@ pub fn sweep_source(
                 order: &order,
                 counts: (gi + 1 == surfaces.len()).then_some(&mut histograms),
                 yield_stress: config.options.yield_stress,
+                hook: hook.as_mut().map(|h| {
+                    // Shorten the trait object's lifetime to this solve's borrow.
+                    let h: SolutionHook<'_> = &mut **h;
+                    (gi, si, h)
+                }),
             };
             let points = rough::solve(surf, contact_modulus, &sorted, &options, &mut observer)?;
             done += points.len();
@@ -249,6 +274,7 @@ pub fn sweep_one(
         order: &order,
         counts: None,
         yield_stress: config.options.yield_stress,
+        hook: None,
     };
     let points = rough::solve(surf, contact_modulus, &sorted, &options, &mut observer)?;
     result.record(0, &points, &order);
@@ -353,6 +379,8 @@ struct SweepObserver<'a> {
     order: &'a [usize],
     counts: Option<&'a mut Vec<PressureCounts>>,
     yield_stress: Option<f64>,
+    /// The caller's hook with this grid's and seed's indices.
+    hook: Option<(usize, usize, SolutionHook<'a>)>,
 }
 
 impl rough::Observer for SweepObserver<'_> {
@@ -368,6 +396,9 @@ impl rough::Observer for SweepObserver<'_> {
     }
 
     fn solution(&mut self, index: usize, solution: &Solution) -> Result<()> {
+        if let Some((gi, si, hook)) = self.hook.as_mut() {
+            hook(*gi, *si, self.order[index], solution)?;
+        }
         if let Some(h) = self.counts.as_deref_mut() {
             match self.yield_stress {
                 // The nodes at σY are the δ-peak, counted apart (plastic_fraction).

@@ -282,6 +282,19 @@ pub enum Warning {
         /// The threshold.
         threshold: f64,
     },
+    /// `compare`'s patch-area exponent τ rests on fewer than
+    /// [`crate::validation::patches::MIN_PATCHES`] patches, or could not be
+    /// fitted, in some solves.
+    FewPatches {
+        /// The first grid where it happens.
+        grid: usize,
+        /// Its first σ0.
+        nominal_pressure: f64,
+        /// How many (grid, σ0) points are affected.
+        count: usize,
+        /// The threshold.
+        min_patches: usize,
+    },
     /// A height map's fourth moment depends on its pixel size
     /// ([`persson::asperity::moments::CURVATURE_RESOLUTION_RATIO`]).
     CurvatureUnresolved {
@@ -382,6 +395,7 @@ impl Warning {
             Warning::SmallBandwidth { .. } => "small_bandwidth",
             Warning::Coalescence { .. } => "coalescence",
             Warning::CurvatureUnresolved { .. } => "curvature_unresolved",
+            Warning::FewPatches { .. } => "few_patches",
         }
     }
 }

@@ -242,6 +242,10 @@ impl fmt::Display for Warning {
             Warning::SmallBandwidth { .. }
             | Warning::Coalescence { .. }
             | Warning::CurvatureUnresolved { .. } => crate::asperity::describe(self, f),
+            #[cfg(feature = "bem")]
+            Warning::FewPatches { .. } => crate::validation::patches::describe(self, f),
+            #[cfg(not(feature = "bem"))]
+            Warning::FewPatches { count, .. } => write!(f, "{count} solve(s) with few patches"),
             Warning::MapNotPeriodic => write!(
                 f,
                 "the map is not periodic: its coarser copies are block averages, each a \

@@ -303,7 +303,8 @@ pub struct SubsurfaceOutput {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub stress_field: Option<PathBuf>,
     /// Draw the depth profiles of the largest von Mises stress and maximum
-    /// shear of each solve (.svg or .png).
+    /// shear of each solve (.svg or .png), and beside it each plane's von
+    /// Mises map as a colour map (`_k_j` added: pressure k, depth j).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub plot: Option<PathBuf>,
 }
