@@ -72,6 +72,13 @@ pub trait Spectrum2d: Send + Sync {
     fn band_at(&self, _phi: f64) -> (f64, f64) {
         (self.q_min(), self.q_max())
     }
+    /// The |q| along φ at which C jumps inside or at the ends of
+    /// [`Spectrum2d::band_at`] (a sum's parts' band edges); the integrals of
+    /// this module split there. By default the two ends of the band.
+    fn edges_at(&self, phi: f64) -> Vec<f64> {
+        let (lo, hi) = self.band_at(phi);
+        vec![lo, hi]
+    }
 }
 
 /// An isotropic spectrum seen as a 2-D one, `C(q_x, q_y) = C(|q|)`.
@@ -114,11 +121,20 @@ impl Stretched {
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] naming `anisotropy` when γ is not finite
-    /// and > 0, `lay_angle` when the angle is not finite.
+    /// and > 0, `lay_angle` when the angle is not finite;
+    /// [`Error::Inconsistent`] naming `spectrum` when `iso` is itself
+    /// anisotropic (the moments here assume an isotropic `iso`: stretch the
+    /// parts of a sum instead).
     pub fn new(iso: Arc<dyn Spectrum>, gamma: f64, angle: f64) -> Result<Self> {
         check::positive("anisotropy", gamma)?;
         if !angle.is_finite() {
             return Err(Error::invalid("lay_angle", angle, "finite (radians)"));
+        }
+        if iso.as_2d().is_some() {
+            return Err(Error::Inconsistent {
+                name: "spectrum".into(),
+                requirement: "an isotropic spectrum to stretch (this one is anisotropic already: stretch the parts of a sum instead)".into(),
+            });
         }
         Ok(Stretched { iso, gamma, angle })
     }
@@ -281,7 +297,8 @@ impl Spectrum for Stretched {
 /// modes up to magnification ζ, by nested adaptive quadrature in polar
 /// coordinates (outer φ ∈ [0, 2π], inner q ∈ [q_l, ζ q_l]).
 ///
-/// `q_l` is [`Spectrum2d::q_min`]; the inner integrals are split at `q_max`.
+/// `q_l` is [`Spectrum2d::q_min`]; the inner integrals are split at the
+/// edges along each direction ([`Spectrum2d::edges_at`]).
 ///
 /// # Errors
 /// ζ < 1 or not finite; a quadrature that does not converge.
@@ -305,24 +322,32 @@ pub fn slope_variance_2d(c: &dyn Spectrum2d, zeta: f64) -> Result<Estimate> {
         if hi <= lo {
             return 0.0;
         }
-        match integrate(
-            "slope variance over |q| (2-D spectrum)",
-            g,
-            lo,
-            hi,
-            0.0,
-            INNER_REL_TOL,
-            PHI_MAX_EVALS,
-        ) {
-            Ok(e) => {
-                inner_err.set(inner_err.get().max(e.error));
-                e.value
-            }
-            Err(e) => {
-                failed.set(Some(e));
-                f64::NAN
+        // One quadrature between consecutive edges (C jumps at each).
+        let mut cuts = vec![lo, hi];
+        cuts.extend(c.edges_at(phi).into_iter().filter(|&x| x > lo && x < hi));
+        cuts.sort_by(f64::total_cmp);
+        let mut sum = 0.0;
+        for w in cuts.windows(2) {
+            match integrate(
+                "slope variance over |q| (2-D spectrum)",
+                g,
+                w[0],
+                w[1],
+                0.0,
+                INNER_REL_TOL,
+                PHI_MAX_EVALS,
+            ) {
+                Ok(e) => {
+                    inner_err.set(inner_err.get().max(e.error));
+                    sum += e.value;
+                }
+                Err(e) => {
+                    failed.set(Some(e));
+                    return f64::NAN;
+                }
             }
         }
+        sum
     };
     let r = integrate(
         "slope variance over the angle (2-D spectrum)",
