@@ -5,7 +5,7 @@ use std::f64::consts::TAU;
 use std::sync::Arc;
 
 use persson::bem::surface::{synthesize, synthesize_2d};
-use persson::spectrum::anisotropic::{g_2d, slope_variance_2d};
+use persson::spectrum::anisotropic::{g_2d, slope_tensor_2d, slope_variance_2d};
 use persson::spectrum::{Amplitude, Radial, SelfAffine, Spectrum, Spectrum2d, Stretched};
 use persson::theory::Persson;
 use persson::topography::{anisotropy, Conditioning, Topography};
@@ -317,6 +317,13 @@ fn sum_with_a_stretched_part_is_synthesised_anisotropic() {
     let along = decay_length(|r| autocorrelation(&a, r / gamma) + autocorrelation(&b, r));
     let across = decay_length(|r| autocorrelation(&a, r) + autocorrelation(&b, r));
     let str_ref = across / along;
+    // The nested quadrature of the plane's slope tensor gives the same.
+    let (p2d, dir2d) = slope_tensor_2d(sum.as_2d().unwrap())
+        .unwrap()
+        .principal()
+        .unwrap();
+    assert!((p2d / peklenik - 1.0).abs() < SUM_VS_2D, "{p2d} {peklenik}");
+    assert!(half_turn(dir2d, lay) < 1e-6, "{dir2d}");
     println!("spectrum: Peklenik {peklenik}, Str {str_ref} ({across} / {along})");
     let mut str_mean = 0.0;
     for seed in 1..=3 {
@@ -354,4 +361,44 @@ fn stretching_an_anisotropic_spectrum_is_an_error() {
         Arc::new(Sum::new(vec![Box::new(st), Box::new(s.as_ref().clone())]).unwrap());
     let e = Stretched::new(sum, 2.0, 0.0).unwrap_err().to_string();
     assert!(e.contains("spectrum") && e.contains("anisotropic"), "{e}");
+}
+
+/// Rounding of the FFT sums of a 256² map (relative to the trace).
+const MAP_TENSOR: f64 = 1e-10;
+
+#[test]
+fn slope_tensor_of_a_stretched_spectrum_and_of_its_surface() {
+    let s = iso(TAU, 4.0 * TAU, 60.0 * TAU);
+    for (gamma, lay) in [(2.5, 30.0f64), (0.4, -50.0), (1.5, 95.0)] {
+        let st = Stretched::new(s.clone(), gamma, lay.to_radians()).unwrap();
+        // Closed form: the eigenvalues s²/(2γ²) along the stretch and s²/2
+        // across, so γ (or 1/γ) and the lay; trace = 2π m₃ of C̄.
+        let m = slope_tensor_2d(&st).unwrap();
+        let (p, dir) = m.principal().unwrap();
+        let lay_ref = if gamma < 1.0 { lay + 90.0 } else { lay };
+        let trace = TAU
+            * st.moment(3, Spectrum::q_min(&st), Spectrum::q_max(&st))
+                .unwrap()
+                .value;
+        println!("γ {gamma}: {m:?} → {p}, {dir}°");
+        assert!(
+            (p / gamma.max(1.0 / gamma) - 1.0).abs() < AVERAGE_VS_2D,
+            "{p}"
+        );
+        assert!(half_turn(dir, lay_ref) < 1e-7, "{dir}");
+        assert!(((m.xx + m.yy) / trace - 1.0).abs() < AVERAGE_VS_2D);
+        // A synthesised surface's tensor (half spectrum, bem FFT) against the
+        // map statistics' (full-plane FFT of the same heights) and rms slope.
+        let g = synthesize(&st, 256, 1.0, 4).unwrap();
+        let t = g.slope_tensor().unwrap();
+        let tr = t.xx + t.yy;
+        assert!((tr / g.rms_slope().unwrap().powi(2) - 1.0).abs() < MAP_TENSOR);
+        let (pm, dm) = t.principal().unwrap();
+        let a = stats(&Topography::map(256, 256, 1.0, 1.0, g.heights.clone(), true).unwrap());
+        assert!(
+            (pm / a.peklenik_number - 1.0).abs() < MAP_TENSOR,
+            "{pm} {a:?}"
+        );
+        assert!(half_turn(dm, a.principal_direction) < 1e-6, "{dm} {a:?}");
+    }
 }
