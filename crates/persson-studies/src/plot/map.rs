@@ -128,7 +128,7 @@ impl MapFigure {
 }
 
 /// Viridis at `t` in [0, 1].
-fn viridis(t: f64) -> RGBColor {
+pub(super) fn viridis(t: f64) -> RGBColor {
     let t = if t.is_finite() {
         t.clamp(0.0, 1.0)
     } else {

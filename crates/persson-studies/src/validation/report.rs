@@ -454,6 +454,9 @@ pub struct Comparison {
     pub theories: Vec<TheoryArea>,
     /// The asperity theories (GW, BGT; with σY the overlap model) against A∞.
     pub asperity: AsperityComparison,
+    /// An anisotropic spectrum's Peklenik number and lay, and its surfaces'.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub anisotropy: Option<super::anisotropic::ComparedAnisotropy>,
     /// The BEM per grid.
     pub bem: Vec<BemGrid>,
     /// The continuum limit per pressure.
