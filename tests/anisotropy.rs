@@ -296,7 +296,7 @@ fn sum_with_a_stretched_part_is_synthesised_anisotropic() {
         SelfAffine::new(TAU, 16.0 * TAU, 60.0 * TAU, 0.8, Amplitude::RmsSlope(0.07)).unwrap(),
     );
     let st = Stretched::new(a.clone(), gamma, lay.to_radians()).unwrap();
-    let sum = Sum::new(vec![Box::new(st), Box::new(b.as_ref().clone())]).unwrap();
+    let sum = Sum::new(vec![Box::new(st), Box::new(*b.as_ref())]).unwrap();
     assert!(sum.as_2d().is_some(), "the sum is anisotropic");
     // Its plane integrates to the angular average's moments (C̄ = Σ C̄_i).
     let q_l = Spectrum::q_min(&sum);
@@ -358,7 +358,7 @@ fn stretching_an_anisotropic_spectrum_is_an_error() {
     let s = iso(TAU, 4.0 * TAU, 60.0 * TAU);
     let st = Stretched::new(s.clone(), 2.0, 0.0).unwrap();
     let sum: Arc<dyn Spectrum> =
-        Arc::new(Sum::new(vec![Box::new(st), Box::new(s.as_ref().clone())]).unwrap());
+        Arc::new(Sum::new(vec![Box::new(st), Box::new(*s.as_ref())]).unwrap());
     let e = Stretched::new(sum, 2.0, 0.0).unwrap_err().to_string();
     assert!(e.contains("spectrum") && e.contains("anisotropic"), "{e}");
 }
