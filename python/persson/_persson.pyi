@@ -147,6 +147,28 @@ def analyse_height_map(
 ) -> Report:
     """`persson spectrum --surface FILE --json` for an array."""
 
+def anisotropy(
+    heights: FloatArray,
+    size: Union[float, Tuple[float, float]],
+    *,
+    periodic: bool = False,
+    detrend: Optional[Detrend] = None,
+    window: Optional[Window] = None,
+) -> Report:
+    """`persson anisotropy --surface FILE --json` for an array: peklenik_number,
+    principal_direction, texture_aspect_ratio (Str), autocorrelation_length (Sal),
+    texture_direction (Std)."""
+
+def spectrum_2d(
+    heights: FloatArray,
+    size: Union[float, Tuple[float, float]],
+    *,
+    periodic: bool = False,
+    detrend: Optional[Detrend] = None,
+    window: Optional[Window] = None,
+) -> Tuple[FloatArray, FloatArray, FloatArray]:
+    """(qx, qy, C): the 2-D spectrum C(q_x, q_y) (ny × nx, m⁴; q = 0 at index n/2)."""
+
 def contact_modulus(
     young: float, poisson: float, young2: Optional[float] = None, poisson2: Optional[float] = None
 ) -> float:

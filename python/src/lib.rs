@@ -8,6 +8,7 @@
 //! `OSError` (files) or `ValueError` (everything else) with the CLI's text.
 
 mod adhesion;
+mod anisotropy;
 mod arrays;
 mod asperity;
 mod bem;
@@ -111,6 +112,8 @@ fn _persson(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(serde_probe::_serde_probe, m)?)?;
     m.add_class::<spectrum::Spectrum>()?;
     m.add_function(wrap_pyfunction!(spectrum::analyse_height_map, m)?)?;
+    m.add_function(wrap_pyfunction!(anisotropy::anisotropy, m)?)?;
+    m.add_function(wrap_pyfunction!(anisotropy::spectrum_2d, m)?)?;
     theory::register(m)?;
     reports::register(m)?;
     bem::register(m)?;

@@ -42,6 +42,11 @@ impl persson::Spectrum for Shared {
     fn rms_curvature(&self, a: f64, b: f64) -> Result<Estimate> {
         self.0.rms_curvature(a, b)
     }
+    /// The plane of an anisotropic spectrum, so that `synthesize` and the
+    /// BEM on a stretched spectrum see it (not only its angular average).
+    fn as_2d(&self) -> Option<&dyn persson::spectrum::Spectrum2d> {
+        self.0.as_2d()
+    }
 }
 
 /// An isotropic roughness power spectrum C(q) in Persson's normalisation

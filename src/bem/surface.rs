@@ -46,6 +46,7 @@ use rustfft::num_complex::Complex64;
 use super::fft::Fft2;
 use super::kernel::signed;
 use crate::error::{check, Error, Result};
+use crate::spectrum::anisotropic::SlopeTensor;
 use crate::spectrum::{Radial, Spectrum, Spectrum2d};
 
 /// A periodic height map on the BEM's `N × N` grid of side `size`: the rigid
@@ -119,6 +120,43 @@ impl GridSurface {
             }
         }
         Ok((s / (n as f64).powi(4)).sqrt())
+    }
+
+    /// The slope tensor `⟨∇h ∇hᵀ⟩ = Σ_q q qᵀ |h_q|²` of the trigonometric
+    /// interpolant (x along a row), whose trace is `rms_slope()²`; its
+    /// [`SlopeTensor::principal`] is the surface's Peklenik number and lay.
+    ///
+    /// # Errors
+    /// Internal FFT errors only.
+    pub fn slope_tensor(&self) -> Result<SlopeTensor> {
+        let n = self.n;
+        let mut fft = Fft2::new(n, n)?;
+        let mut x = self.heights.clone();
+        let mut spec = vec![Complex64::new(0.0, 0.0); fft.spectrum_len()];
+        fft.forward(&mut x, &mut spec)?;
+        let dq = std::f64::consts::TAU / self.size;
+        let (mut xx, mut xy, mut yy) = (0.0, 0.0, 0.0);
+        // The half spectrum: kj the column (x) wavenumber, ki the row (y) one.
+        for kj in 0..fft.nc() {
+            let w = if kj == 0 || (n.is_multiple_of(2) && kj == n / 2) {
+                1.0
+            } else {
+                2.0
+            };
+            for ki in 0..n {
+                let (qx, qy) = (dq * kj as f64, dq * signed(ki, n) as f64);
+                let p = w * spec[kj * n + ki].norm_sqr();
+                xx += qx * qx * p;
+                xy += qx * qy * p;
+                yy += qy * qy * p;
+            }
+        }
+        let f = (n as f64).powi(-4);
+        Ok(SlopeTensor {
+            xx: f * xx,
+            xy: f * xy,
+            yy: f * yy,
+        })
     }
 }
 

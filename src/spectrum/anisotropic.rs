@@ -55,6 +55,11 @@ const OUTER_REL_TOL: f64 = 1e-11;
 /// of the integral: the closed-form moments of a narrow range carry rounding
 /// of ~1e-12 of that bound (measured: `compare` failed at 1e-14).
 const MOMENT_ABS_TOL: f64 = 1e-11;
+/// Relative tolerance (of the trace) of the slope tensor's angular
+/// integrals: a report's Peklenik number needs far less, and the inner
+/// integrals of a band-limited stretched spectrum have kinks in φ where its
+/// edges cross the cut.
+const TENSOR_REL_TOL: f64 = 1e-9;
 /// Evaluation budget of one φ quadrature.
 const PHI_MAX_EVALS: usize = 200_000;
 
@@ -71,6 +76,13 @@ pub trait Spectrum2d: Send + Sync {
     /// (radians from x); the integrals of this module split at its ends.
     fn band_at(&self, _phi: f64) -> (f64, f64) {
         (self.q_min(), self.q_max())
+    }
+    /// The |q| along φ at which C jumps inside or at the ends of
+    /// [`Spectrum2d::band_at`] (a sum's parts' band edges); the integrals of
+    /// this module split there. By default the two ends of the band.
+    fn edges_at(&self, phi: f64) -> Vec<f64> {
+        let (lo, hi) = self.band_at(phi);
+        vec![lo, hi]
     }
 }
 
@@ -114,11 +126,20 @@ impl Stretched {
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] naming `anisotropy` when γ is not finite
-    /// and > 0, `lay_angle` when the angle is not finite.
+    /// and > 0, `lay_angle` when the angle is not finite;
+    /// [`Error::Inconsistent`] naming `spectrum` when `iso` is itself
+    /// anisotropic (the moments here assume an isotropic `iso`: stretch the
+    /// parts of a sum instead).
     pub fn new(iso: Arc<dyn Spectrum>, gamma: f64, angle: f64) -> Result<Self> {
         check::positive("anisotropy", gamma)?;
         if !angle.is_finite() {
             return Err(Error::invalid("lay_angle", angle, "finite (radians)"));
+        }
+        if iso.as_2d().is_some() {
+            return Err(Error::Inconsistent {
+                name: "spectrum".into(),
+                requirement: "an isotropic spectrum to stretch (this one is anisotropic already: stretch the parts of a sum instead)".into(),
+            });
         }
         Ok(Stretched { iso, gamma, angle })
     }
@@ -281,7 +302,8 @@ impl Spectrum for Stretched {
 /// modes up to magnification ζ, by nested adaptive quadrature in polar
 /// coordinates (outer φ ∈ [0, 2π], inner q ∈ [q_l, ζ q_l]).
 ///
-/// `q_l` is [`Spectrum2d::q_min`]; the inner integrals are split at `q_max`.
+/// `q_l` is [`Spectrum2d::q_min`]; the inner integrals are split at the
+/// edges along each direction ([`Spectrum2d::edges_at`]).
 ///
 /// # Errors
 /// ζ < 1 or not finite; a quadrature that does not converge.
@@ -297,31 +319,14 @@ pub fn slope_variance_2d(c: &dyn Spectrum2d, zeta: f64) -> Result<Estimate> {
     }
     let inner_err = std::cell::Cell::new(0.0f64);
     let failed = std::cell::Cell::new(None);
-    let outer = |phi: f64| {
-        let (s, co) = phi.sin_cos();
-        let g = |q: f64| q * q * q * c.c2(q * co, q * s);
-        let (lo, hi) = c.band_at(phi);
-        let (lo, hi) = (lo.max(q_l), hi.min(top));
-        if hi <= lo {
-            return 0.0;
+    let outer = |phi: f64| match radial_q3(c, phi, q_l, top) {
+        Ok(e) => {
+            inner_err.set(inner_err.get().max(e.error));
+            e.value
         }
-        match integrate(
-            "slope variance over |q| (2-D spectrum)",
-            g,
-            lo,
-            hi,
-            0.0,
-            INNER_REL_TOL,
-            PHI_MAX_EVALS,
-        ) {
-            Ok(e) => {
-                inner_err.set(inner_err.get().max(e.error));
-                e.value
-            }
-            Err(e) => {
-                failed.set(Some(e));
-                f64::NAN
-            }
+        Err(e) => {
+            failed.set(Some(e));
+            f64::NAN
         }
     };
     let r = integrate(
@@ -340,6 +345,133 @@ pub fn slope_variance_2d(c: &dyn Spectrum2d, zeta: f64) -> Result<Estimate> {
     Ok(Estimate {
         value: r.value,
         error: r.error + std::f64::consts::TAU * inner_err.get(),
+    })
+}
+
+/// `∫ q³ C(q cos φ, q sin φ) dq` over the band along φ clipped to
+/// `[lo, hi]`, one adaptive quadrature between consecutive edges
+/// ([`Spectrum2d::edges_at`]: C jumps at each).
+fn radial_q3(c: &dyn Spectrum2d, phi: f64, lo: f64, hi: f64) -> Result<Estimate> {
+    let (s, co) = phi.sin_cos();
+    let g = |q: f64| q * q * q * c.c2(q * co, q * s);
+    let (a, b) = c.band_at(phi);
+    let (lo, hi) = (a.max(lo), b.min(hi));
+    let mut r = Estimate {
+        value: 0.0,
+        error: 0.0,
+    };
+    if hi <= lo {
+        return Ok(r);
+    }
+    let mut cuts = vec![lo, hi];
+    cuts.extend(c.edges_at(phi).into_iter().filter(|&x| x > lo && x < hi));
+    cuts.sort_by(f64::total_cmp);
+    for w in cuts.windows(2) {
+        let e = integrate(
+            "slope variance over |q| (2-D spectrum)",
+            g,
+            w[0],
+            w[1],
+            0.0,
+            INNER_REL_TOL,
+            PHI_MAX_EVALS,
+        )?;
+        r.value += e.value;
+        r.error += e.error;
+    }
+    Ok(r)
+}
+
+/// The slope tensor `⟨∇h ∇hᵀ⟩` of a surface, m⁰ (components along x and y).
+///
+/// # Formula
+/// ```text
+/// M = ∫ d²q q qᵀ C(q) = [[xx, xy], [xy, yy]],   xx + yy = ⟨|∇h|²⟩
+/// eigenvalues λ₁ ≥ λ₂:  Peklenik number γ = √(λ₁/λ₂) ≥ 1
+/// ```
+/// The eigenvector of λ₂ is the direction of slowest variation (the lay);
+/// for a [`Stretched`] spectrum `γ` and the lay are the stretch's (exactly:
+/// `∫ q_u² C = ⟨|∇h_iso|²⟩/(2γ²)`, `∫ q_v² C = ⟨|∇h_iso|²⟩/2`).
+/// Peklenik, Proc. Inst. Mech. Eng. 182, 108 (1967) (correlation lengths);
+/// the moment form is the one of `persson::topography::anisotropy`.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct SlopeTensor {
+    /// ⟨(∂h/∂x)²⟩.
+    pub xx: f64,
+    /// ⟨∂h/∂x · ∂h/∂y⟩.
+    pub xy: f64,
+    /// ⟨(∂h/∂y)²⟩.
+    pub yy: f64,
+}
+
+impl SlopeTensor {
+    /// `(γ, direction)`: the Peklenik number √(λ₁/λ₂) ≥ 1 and the direction
+    /// of slowest variation, degrees in [0, 180) counterclockwise from x.
+    ///
+    /// # Errors
+    /// [`Error::Inconsistent`] naming `peklenik_number` when λ₂ is not above
+    /// rounding of λ₁ (a surface that does not vary along some direction).
+    pub fn principal(&self) -> Result<(f64, f64)> {
+        let (a, b, d) = (self.xx, self.xy, self.yy);
+        let mean = 0.5 * (a + d);
+        let r = (0.5 * (a - d)).hypot(b);
+        let (l1, l2) = (mean + r, mean - r);
+        if l2.is_nan() || l2 <= f64::EPSILON * l1 {
+            return Err(Error::Inconsistent {
+                name: "peklenik_number".into(),
+                requirement: format!(
+                    "a surface whose heights vary in every direction (the slope variances along the principal axes are {l1:e} and {l2:e})"
+                ),
+            });
+        }
+        // Eigenvector of λ₁ at ½ atan2(2b, a − d); the lay is perpendicular to it.
+        let theta1 = 0.5 * (2.0 * b).atan2(a - d);
+        let deg = (theta1 + std::f64::consts::FRAC_PI_2)
+            .to_degrees()
+            .rem_euclid(180.0);
+        Ok(((l1 / l2).sqrt(), if deg >= 180.0 { 0.0 } else { deg }))
+    }
+}
+
+/// The slope tensor `∫ d²q q qᵀ C(q)` of a 2-D spectrum over its whole band,
+/// by nested adaptive quadrature in polar coordinates (as
+/// [`slope_variance_2d`]); the components to ~1e-9 of the trace.
+///
+/// # Errors
+/// A quadrature that does not converge.
+pub fn slope_tensor_2d(c: &dyn Spectrum2d) -> Result<SlopeTensor> {
+    let (lo, hi) = (c.q_min(), c.q_max());
+    let failed = std::cell::Cell::new(None);
+    let radial = |phi: f64| match radial_q3(c, phi, lo, hi) {
+        Ok(e) => e.value,
+        Err(e) => {
+            failed.set(Some(e));
+            f64::NAN
+        }
+    };
+    let over_angle = |f: &dyn Fn(f64) -> f64, abs_tol: f64| {
+        let r = integrate(
+            "slope tensor over the angle (2-D spectrum)",
+            f,
+            0.0,
+            std::f64::consts::TAU,
+            abs_tol,
+            TENSOR_REL_TOL,
+            PHI_MAX_EVALS,
+        );
+        match failed.take() {
+            Some(e) => Err(e),
+            None => r.map(|e| e.value),
+        }
+    };
+    let trace = over_angle(&radial, 0.0)?;
+    let tol = TENSOR_REL_TOL * trace;
+    let xx = over_angle(&|phi: f64| radial(phi) * phi.cos().powi(2), tol)?;
+    let xy = over_angle(&|phi: f64| radial(phi) * phi.cos() * phi.sin(), tol)?;
+    Ok(SlopeTensor {
+        xx,
+        xy,
+        yy: trace - xx,
     })
 }
 

@@ -89,6 +89,24 @@ impl super::Spectrum2d for BandLimited<'_> {
     fn q_max(&self) -> f64 {
         self.q_max
     }
+    fn band_at(&self, phi: f64) -> (f64, f64) {
+        let (lo, hi) = self
+            .inner
+            .as_2d()
+            .map_or((self.inner.q_min(), self.inner.q_max()), |s| s.band_at(phi));
+        (lo, hi.min(self.q_max))
+    }
+    fn edges_at(&self, phi: f64) -> Vec<f64> {
+        let mut e: Vec<f64> = self
+            .inner
+            .as_2d()
+            .map_or_else(|| vec![self.inner.q_min()], |s| s.edges_at(phi))
+            .into_iter()
+            .filter(|&q| q < self.q_max)
+            .collect();
+        e.push(self.q_max);
+        e
+    }
 }
 
 impl Spectrum for BandLimited<'_> {

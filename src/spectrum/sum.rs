@@ -1,6 +1,6 @@
 //! The roughness of two rough bodies in contact: the sum of their spectra.
 
-use super::{check_range, Spectrum};
+use super::{check_range, Spectrum, Spectrum2d};
 use crate::error::{Error, Result};
 use crate::quad::Estimate;
 
@@ -21,6 +21,12 @@ use crate::quad::Estimate;
 /// is that body's alone (a warning in the application layer says when the
 /// bands differ much). The moments are the sums of the parts' moments with
 /// the sums of their error estimates.
+///
+/// When a part is anisotropic ([`super::Stretched`]) the sum is too: over
+/// the plane `C(q_x, q_y) = Σ_i C_i(q_x, q_y)` (an isotropic part as
+/// `C_i(|q|)`), which [`Spectrum::as_2d`] returns, so a surface synthesised
+/// from the sum has the summed 2-D spectrum; as a [`Spectrum`] the sum is the
+/// angular average, `C̄ = Σ_i C̄_i`.
 ///
 /// # References
 /// B. N. J. Persson, J. Chem. Phys. 115, 3840 (2001), doi:10.1063/1.1388626
@@ -97,7 +103,53 @@ impl std::fmt::Debug for Sum {
     }
 }
 
+/// The parts' 2-D spectra summed over the plane (an isotropic part as `C(|q|)`).
+impl Spectrum2d for Sum {
+    fn c2(&self, qx: f64, qy: f64) -> f64 {
+        self.parts
+            .iter()
+            .map(|p| {
+                p.as_2d()
+                    .map_or_else(|| p.c(qx.hypot(qy)), |s| s.c2(qx, qy))
+            })
+            .sum()
+    }
+    fn q_min(&self) -> f64 {
+        Spectrum::q_min(self)
+    }
+    fn q_max(&self) -> f64 {
+        Spectrum::q_max(self)
+    }
+    /// The union of the parts' bands along φ (the integrals split at its ends).
+    fn band_at(&self, phi: f64) -> (f64, f64) {
+        self.parts
+            .iter()
+            .map(|p| p.as_2d().map_or((p.q_min(), p.q_max()), |s| s.band_at(phi)))
+            .fold((f64::INFINITY, 0.0), |(lo, hi), (a, b)| {
+                (lo.min(a), hi.max(b))
+            })
+    }
+    /// Every part's band edges along φ: C jumps at each.
+    fn edges_at(&self, phi: f64) -> Vec<f64> {
+        self.parts
+            .iter()
+            .flat_map(|p| {
+                p.as_2d()
+                    .map_or_else(|| vec![p.q_min(), p.q_max()], |s| s.edges_at(phi))
+            })
+            .collect()
+    }
+}
+
 impl Spectrum for Sum {
+    /// The sum over the plane when any part is anisotropic.
+    fn as_2d(&self) -> Option<&dyn Spectrum2d> {
+        self.parts
+            .iter()
+            .any(|p| p.as_2d().is_some())
+            .then_some(self as &dyn Spectrum2d)
+    }
+
     fn c(&self, q: f64) -> f64 {
         self.parts.iter().map(|p| p.c(q)).sum()
     }

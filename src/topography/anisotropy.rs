@@ -225,7 +225,8 @@ fn half_turn_degrees(rad: f64) -> f64 {
     }
 }
 
-/// `(γ, direction°)` from the slope tensor of the spectrum.
+/// `(γ, direction°)` from the slope tensor of the spectrum
+/// ([`crate::spectrum::anisotropic::SlopeTensor::principal`]).
 fn peklenik(s: &Spectrum2dMap) -> Result<(f64, f64)> {
     let nx = s.qx.len();
     let cell = (s.qx[1] - s.qx[0]) * (s.qy[1] - s.qy[0]);
@@ -238,23 +239,12 @@ fn peklenik(s: &Spectrum2dMap) -> Result<(f64, f64)> {
             d += qy * qy * c;
         }
     }
-    let mean = 0.5 * (a + d);
-    let r = (0.5 * (a - d)).hypot(b);
-    let (l1, l2) = (mean + r, mean - r);
-    if l2.is_nan() || l2 <= f64::EPSILON * l1 {
-        return Err(Error::Inconsistent {
-            name: "peklenik_number".into(),
-            requirement: format!(
-                "a surface whose heights vary in every direction (the slope variances along the principal axes are {l1:e} and {l2:e})"
-            ),
-        });
+    crate::spectrum::anisotropic::SlopeTensor {
+        xx: a,
+        xy: b,
+        yy: d,
     }
-    // Eigenvector of λ₁ at ½ atan2(2b, a − d); the lay is perpendicular to it.
-    let theta1 = 0.5 * (2.0 * b).atan2(a - d);
-    Ok((
-        (l1 / l2).sqrt(),
-        half_turn_degrees(theta1 + std::f64::consts::FRAC_PI_2),
-    ))
+    .principal()
 }
 
 /// Bilinear interpolation of a periodic row-major `ny × nx` array at the

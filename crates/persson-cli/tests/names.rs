@@ -157,6 +157,7 @@ fn commands(out_dir: &Path) -> Vec<Vec<Vec<String>>> {
         "bem rough --example --grid 32 --pressure 1e7 --patches --subsurface --depth 1e-5,1e-4 --tensile-yield-stress 1e8",
         "bem hertz --grid 32 --subsurface",
         "compare --example --grid 32 --levels 2",
+        "compare --example --grid 32 --levels 2 --anisotropy 3",
         "compare --example --grid 32 --levels 2 --yield-stress 6e6",
         "compare ensemble --example --grid 32 --levels 2 --seeds 2 --pressure 1e6 --threads 1",
         "spectrum --surface tests/reference/data/map_a.npy --pixel-size 1e-6",

@@ -69,6 +69,9 @@ fn compare(a: &MainArgs) -> anyhow::Result<()> {
     if let (Some(_), Some(flag)) = (&map, a.bem.unused_with_surface()) {
         anyhow::bail!("{flag} is not used with --surface: the map sets the grid");
     }
+    if map.is_some() && a.spectrum.anisotropy.is_some() {
+        anyhow::bail!("--anisotropy is not used with --surface: a measured map has its own anisotropy (persson anisotropy --surface FILE measures it)");
+    }
     let (spectrum, described) = match &map {
         Some(m) => {
             let built = SpectrumSpec::HeightMap(m.clone()).build_described()?;

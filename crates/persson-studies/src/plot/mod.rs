@@ -45,6 +45,7 @@ mod draw;
 pub mod figures;
 pub mod map;
 mod prepare;
+pub mod spectrum_map;
 mod stack;
 pub mod stress_map;
 mod ticks;

@@ -445,6 +445,17 @@ fn compare_on(
     let model = Persson::new(&band, e_star)?;
     let theories = theory_curves(&model, &pressures)?;
 
+    // An anisotropic spectrum's Peklenik number and its surfaces' (cheap; before the BEM).
+    let anisotropy = match map {
+        None => super::anisotropic::compared_anisotropy(
+            &band,
+            sweep_config.grids.last().copied().unwrap_or_default(),
+            sweep_config.size,
+            &sweep_config.seeds,
+        )?,
+        Some(_) => None,
+    };
+
     // The BEM sweep, its continuum limit and the periodic map as measured.
     let source = match map {
         None => SweepSource::Synthesised(&band),
@@ -483,6 +494,7 @@ fn compare_on(
     let cont = sw.extrapolate(config.sweep.alpha)?;
     let a_inf: Vec<f64> = cont.iter().map(|c| c.fit.value).collect();
     let asperity = asperity_comparison(&band, e_star, yield_stress, &pressures, &a_inf);
+
     // One list for every front end (CLI stderr/JSON, Python): the study's own
     // remarks, then the asperity theories' (their assumptions failing).
     let warnings: Vec<Warning> = setup_warning
@@ -549,6 +561,7 @@ fn compare_on(
         theories,
         asperity,
         patches,
+        anisotropy,
         bem: bem_grids(&sw),
         extrapolated: extrapolated_points(&sw, &cont)?,
         kappa,

@@ -47,6 +47,8 @@ pub mod data;
 pub mod kappa;
 
 #[cfg(feature = "bem")]
+pub mod anisotropic;
+#[cfg(feature = "bem")]
 pub mod asperity;
 #[cfg(feature = "bem")]
 mod compare;

@@ -456,6 +456,9 @@ pub struct Comparison {
     pub asperity: AsperityComparison,
     /// The BEM's contact patches per grid and σ0 ([`super::patches`]).
     pub patches: super::patches::PatchComparison,
+    /// An anisotropic spectrum's Peklenik number and lay, and its surfaces'.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub anisotropy: Option<super::anisotropic::ComparedAnisotropy>,
     /// The BEM per grid.
     pub bem: Vec<BemGrid>,
     /// The continuum limit per pressure.

@@ -22,6 +22,9 @@ impl Tabulate for Comparison {
             &a_inf,
             self.yield_stress.is_some(),
         ));
+        if let Some(a) = &self.anisotropy {
+            tables.push(super::anisotropic::anisotropy_table(a, &self.seeds));
+        }
         tables.push(self.kappa_table());
         tables.extend(self.yield_table());
         tables.push(self.separation_table());

@@ -1,0 +1,335 @@
+//! The 2-D power spectrum of a height map as a colour map (`persson
+//! anisotropy --plot`): log10 C(q_x, q_y) over the Fourier grid with a colour
+//! bar, and the lay drawn as a line through q = 0.
+//!
+//! A surface with a lay varies slowly along it, so its power lies in a band
+//! *across* the lay in the q-plane: the drawn line runs along the lay and
+//! the bright band perpendicular to it. Like [`super::Figure`] a
+//! [`SpectrumMapFigure`] is plain data, drawn by [`render_spectrum_map`] into an
+//! `.svg` or `.png` file (atomically) or by [`render_spectrum_map_svg_string`].
+//!
+//! Grids finer than [`super::map::MAP_CELLS`] per side are drawn in blocks,
+//! each the mean of log10 C over its positive values (grey where none is).
+
+use std::path::Path;
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+
+use super::map::{viridis, MAP_CELLS};
+use super::{draw, Format};
+use crate::{Error, Result};
+
+/// Default size in pixels, width × height.
+pub const SPECTRUM_MAP_SIZE: (u32, u32) = (760, 620);
+
+/// The fraction of the positive values below the colour scale's bottom
+/// (drawn in its lowest colour): one map's spectrum spans many decades,
+/// most of them in a few noisy modes near the Nyquist corners.
+const LOW_QUANTILE: f64 = 0.02;
+
+/// Colour of cells without a positive C.
+const EMPTY: RGBColor = RGBColor(225, 225, 225);
+
+/// A 2-D spectrum as plain data.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SpectrumMapFigure {
+    /// Title over the figure.
+    pub title: String,
+    /// q_x of the columns, increasing, 1/m.
+    pub qx: Vec<f64>,
+    /// q_y of the rows, increasing, 1/m.
+    pub qy: Vec<f64>,
+    /// C(q_x, q_y) in m⁴, row-major `qy.len() × qx.len()`.
+    pub c: Vec<f64>,
+    /// The lay, degrees counterclockwise from x (drawn as a line).
+    pub lay: Option<f64>,
+    /// Size in pixels, width × height.
+    pub size: (u32, u32),
+}
+
+impl SpectrumMapFigure {
+    fn check(&self) -> Result<()> {
+        let (nx, ny) = (self.qx.len(), self.qy.len());
+        if nx < 2 || ny < 2 || self.c.len() != nx * ny {
+            return Err(Error::Inconsistent {
+                name: "2-D spectrum".into(),
+                requirement: format!(
+                    "qx.len() × qy.len() = {nx} × {ny} ≥ 2 × 2 values, got {}",
+                    self.c.len()
+                ),
+            });
+        }
+        let (lo, hi) = super::SIZE_LIMITS;
+        for v in [self.size.0, self.size.1] {
+            if !(lo..=hi).contains(&v) {
+                return Err(Error::invalid(
+                    "plot size",
+                    v as f64,
+                    format!("between {lo} and {hi} pixels"),
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// Blocks of k × k modes: columns, rows and the mean log10 C of each
+    /// (NaN where no value is positive).
+    fn cells(&self) -> (usize, usize, Vec<f64>) {
+        let (nx, ny) = (self.qx.len(), self.qy.len());
+        let k = nx.max(ny).div_ceil(MAP_CELLS).max(1);
+        let (mx, my) = (nx.div_ceil(k), ny.div_ceil(k));
+        let mut sum = vec![0.0; mx * my];
+        let mut count = vec![0usize; mx * my];
+        for j in 0..ny {
+            for i in 0..nx {
+                let v = self.c[j * nx + i];
+                if v > 0.0 && v.is_finite() {
+                    let c = (j / k) * mx + i / k;
+                    sum[c] += v.log10();
+                    count[c] += 1;
+                }
+            }
+        }
+        let mean = sum
+            .iter()
+            .zip(&count)
+            .map(|(&s, &n)| if n > 0 { s / n as f64 } else { f64::NAN })
+            .collect();
+        (mx, my, mean)
+    }
+}
+
+/// The colour scale `(bottom, top)` of log10 C: the [`LOW_QUANTILE`] of the
+/// finite values and their maximum.
+fn scale(v: &[f64]) -> (f64, f64) {
+    let mut s: Vec<f64> = v.iter().copied().filter(|x| x.is_finite()).collect();
+    if s.is_empty() {
+        return (0.0, 1.0);
+    }
+    s.sort_by(f64::total_cmp);
+    let lo = s[((s.len() - 1) as f64 * LOW_QUANTILE) as usize];
+    let hi = s[s.len() - 1];
+    if hi > lo {
+        (lo, hi)
+    } else {
+        (lo - 0.5, lo + 0.5)
+    }
+}
+
+type DrawResult<DB> =
+    std::result::Result<(), DrawingAreaErrorKind<<DB as DrawingBackend>::ErrorType>>;
+
+fn font(size: f64, k: u32) -> FontDesc<'static> {
+    ("sans-serif", size * k as f64).into_font()
+}
+
+fn tick(v: f64) -> String {
+    crate::table::number(v, 3)
+}
+
+fn draw_figure<DB: DrawingBackend>(
+    root: DrawingArea<DB, Shift>,
+    f: &SpectrumMapFigure,
+    k: u32,
+) -> DrawResult<DB> {
+    let px = |v: u32| v * k;
+    root.fill(&WHITE)?;
+    let root = root
+        .margin(px(8), 0, 0, 0)
+        .titled(&f.title, font(16.0, k))?;
+    let (w, _) = root.dim_in_pixel();
+    let (map_area, bar_area) = root.split_horizontally(w.saturating_sub(px(120)));
+    let (mx, my, cells) = f.cells();
+    let (lo, hi) = scale(&cells);
+    let (nx, ny) = (f.qx.len(), f.qy.len());
+    let (dqx, dqy) = (f.qx[1] - f.qx[0], f.qy[1] - f.qy[0]);
+    let (x0, x1) = (f.qx[0] - 0.5 * dqx, f.qx[nx - 1] + 0.5 * dqx);
+    let (y0, y1) = (f.qy[0] - 0.5 * dqy, f.qy[ny - 1] + 0.5 * dqy);
+    let mut chart = ChartBuilder::on(&map_area)
+        .margin(px(10))
+        .x_label_area_size(px(45))
+        .y_label_area_size(px(75))
+        .build_cartesian_2d(x0..x1, y0..y1)?;
+    chart
+        .configure_mesh()
+        .disable_mesh()
+        .x_desc("q_x (1/m)")
+        .y_desc("q_y (1/m)")
+        .label_style(font(12.0, k))
+        .x_label_formatter(&|v| tick(*v))
+        .y_label_formatter(&|v| tick(*v))
+        .axis_desc_style(font(14.0, k))
+        .x_labels(5)
+        .y_labels(5)
+        .draw()?;
+    let (bw, bh) = ((x1 - x0) / mx as f64, (y1 - y0) / my as f64);
+    chart.draw_series((0..mx * my).map(|c| {
+        let (j, i) = (c / mx, c % mx);
+        let v = cells[c];
+        let colour = if v.is_nan() {
+            EMPTY
+        } else {
+            viridis((v - lo) / (hi - lo))
+        };
+        let (a, b) = (x0 + i as f64 * bw, y0 + j as f64 * bh);
+        Rectangle::new([(a, b), (a + bw, b + bh)], colour.filled())
+    }))?;
+    if let Some(lay) = f.lay {
+        // The lay through q = 0, to the edges of the plot.
+        let (s, c) = lay.to_radians().sin_cos();
+        // Clipped to the plot here: plotters clamps each coordinate of an
+        // outside point on its own, which would turn the line.
+        let reach = |dir: f64| {
+            let along = |d: f64, lo: f64, hi: f64| {
+                let d = d * dir;
+                if d > 0.0 {
+                    hi / d
+                } else if d < 0.0 {
+                    lo / d
+                } else {
+                    f64::INFINITY
+                }
+            };
+            along(c, x0, x1).min(along(s, y0, y1))
+        };
+        let (tp, tn) = (reach(1.0), reach(-1.0));
+        let white = WHITE.stroke_width(px(2));
+        chart
+            .draw_series(DashedLineSeries::new(
+                [(-tn * c, -tn * s), (tp * c, tp * s)],
+                px(8),
+                px(5),
+                white,
+            ))?
+            .label(format!("lay, {}° from x", crate::table::number(lay, 4)))
+            .legend(move |(x, y)| {
+                PathElement::new([(x, y), (x + 18 * k as i32, y)], BLACK.stroke_width(px(2)))
+            });
+        chart
+            .configure_series_labels()
+            .position(SeriesLabelPosition::UpperLeft)
+            .label_font(font(13.0, k))
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK.mix(0.4))
+            .draw()?;
+    }
+    let mut bar = ChartBuilder::on(&bar_area)
+        .margin_top(px(10))
+        .margin_bottom(px(55))
+        .margin_right(px(5))
+        .y_label_area_size(px(80))
+        .build_cartesian_2d(0.0..1.0, lo..hi)?;
+    bar.configure_mesh()
+        .disable_mesh()
+        .disable_x_axis()
+        .y_desc("log10 C (C in m⁴)")
+        .label_style(font(12.0, k))
+        .y_label_formatter(&|v| tick(*v))
+        .axis_desc_style(font(14.0, k))
+        .y_labels(6)
+        .draw()?;
+    let steps = 100;
+    bar.draw_series((0..steps).map(|s| {
+        let (a, b) = (s as f64 / steps as f64, (s + 1) as f64 / steps as f64);
+        Rectangle::new(
+            [(0.0, lo + a * (hi - lo)), (1.0, lo + b * (hi - lo))],
+            viridis(0.5 * (a + b)).filled(),
+        )
+    }))?;
+    Ok(())
+}
+
+fn svg_string(fig: &SpectrumMapFigure) -> std::result::Result<String, String> {
+    let mut s = String::new();
+    {
+        let root = SVGBackend::with_string(&mut s, fig.size).into_drawing_area();
+        draw_figure(root, fig, 1).map_err(|e| e.to_string())?;
+    }
+    Ok(s)
+}
+
+/// Draws `fig` as an SVG document in memory.
+///
+/// # Errors
+/// As [`render_spectrum_map`], except the file errors.
+pub fn render_spectrum_map_svg_string(fig: &SpectrumMapFigure) -> Result<String> {
+    let here = Path::new("<svg string>");
+    fig.check()?;
+    draw::ensure_font(here)?;
+    svg_string(fig).map_err(|e| Error::Io {
+        path: here.to_path_buf(),
+        source: std::io::Error::other(format!("plot rendering failed: {e}")),
+    })
+}
+
+/// Draws `fig` into `path` (`.svg` or `.png` by extension), atomically.
+///
+/// # Errors
+/// [`Error::Io`] for another extension, an unwritable directory or a
+/// backend failure; [`Error::Inconsistent`] when `c` is not
+/// `qx.len() × qy.len()` values; [`Error::InvalidParameter`] for a size
+/// outside [`super::SIZE_LIMITS`].
+pub fn render_spectrum_map(fig: &SpectrumMapFigure, path: &Path) -> Result<()> {
+    let format = Format::from_path(path)?;
+    fig.check()?;
+    draw::ensure_font(path)?;
+    let io = |source| Error::Io {
+        path: path.to_path_buf(),
+        source,
+    };
+    let backend = |e: String| Error::Io {
+        path: path.to_path_buf(),
+        source: std::io::Error::other(format!("plot rendering failed: {e}")),
+    };
+    match format {
+        Format::Svg => {
+            let svg = svg_string(fig).map_err(backend)?;
+            let tmp = persson::io::TempFile::create(path)?;
+            std::fs::write(tmp.path(), svg).map_err(io)?;
+            tmp.persist()
+        }
+        Format::Png => {
+            let k = draw::supersampling(fig.size);
+            let big = (fig.size.0 * k, fig.size.1 * k);
+            let mut buf = vec![255u8; big.0 as usize * big.1 as usize * 3];
+            {
+                let root = BitMapBackend::with_buffer(&mut buf, big).into_drawing_area();
+                draw_figure(root, fig, k).map_err(|e| backend(e.to_string()))?;
+            }
+            let pixels = draw::downsample(&buf, big, k);
+            let tmp = persson::io::TempFile::create(path)?;
+            draw::write_png(tmp.path(), fig.size, &pixels).map_err(io)?;
+            tmp.persist()
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn blocks_average_log10_and_skip_zeros() {
+        // 4 × 4 values: one block per mode (no averaging), zero is empty.
+        let c: Vec<f64> = (0..16)
+            .map(|k| if k == 5 { 0.0 } else { 10f64.powi(k) })
+            .collect();
+        let f = SpectrumMapFigure {
+            title: String::new(),
+            qx: vec![-2.0, -1.0, 0.0, 1.0],
+            qy: vec![-2.0, -1.0, 0.0, 1.0],
+            c,
+            lay: Some(30.0),
+            size: SPECTRUM_MAP_SIZE,
+        };
+        let (mx, my, cells) = f.cells();
+        assert_eq!((mx, my), (4, 4));
+        assert!(cells[5].is_nan());
+        assert!((cells[7] - 7.0).abs() < 1e-12);
+        let (lo, hi) = scale(&cells);
+        assert_eq!((lo, hi), (0.0, 15.0));
+        let svg = render_spectrum_map_svg_string(&f).unwrap();
+        assert!(svg.contains("lay, 30° from x"), "the lay's legend");
+    }
+}
