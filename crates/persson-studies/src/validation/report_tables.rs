@@ -28,6 +28,8 @@ impl Tabulate for Comparison {
         tables.extend(self.distribution_table());
         tables.extend(self.data_table());
         tables.push(self.solves_table());
+        // compare --leakage / --conductance (absent by default)
+        tables.extend(self.transport.iter().flat_map(|t| t.tables()));
         tables
     }
 }

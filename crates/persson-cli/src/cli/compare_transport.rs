@@ -1,0 +1,115 @@
+//! The flags of `persson compare --leakage / --conductance`: the theories'
+//! leak rate and contact conductance against the BEM's on the sweep's
+//! surfaces ([`persson_studies::validation::compare_transport`]).
+
+use persson_studies::scene::transport::{self, TransportRequest};
+use persson_studies::validation::TransportCompareConfig;
+
+use super::leakage::SealArgs;
+use super::number::number;
+
+/// `compare --leakage / --conductance` (flattened into `compare`'s flags).
+#[derive(clap::Args, Debug, Clone)]
+pub struct TransportArgs {
+    /// Also compare the leak rate of a seal: critical-junction and effective-medium
+    /// theories against Reynolds flow on the BEM's gap (needs --viscosity and
+    /// --pressure-drop, or a gas's --inlet-pressure and --outlet-pressure).
+    #[arg(long)]
+    pub leakage: bool,
+    #[command(flatten)]
+    pub seal: SealArgs,
+    /// Percolation threshold a_c of the critical junction, in (0, 1) (with --leakage).
+    #[arg(long, default_value = "0.42", allow_hyphen_values = true, value_parser = number)]
+    pub percolation_threshold: f64,
+    /// Also compare the contact conductance: Barber's identity on the theory's and
+    /// the BEM's stiffness (needs --conductivity and/or --resistivity, or a gas law).
+    #[arg(long)]
+    pub conductance: bool,
+    /// Thermal conductivities κ1[,κ2] of the two bodies, W/(m K) (with --conductance).
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = number)]
+    pub conductivity: Vec<f64>,
+    /// Electrical resistivities ρ1[,ρ2] of the two bodies, Ω m (with --conductance).
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = number)]
+    pub resistivity: Vec<f64>,
+    /// Gap conductance by gas conduction κ_gas/(u + 2ℓ): κ_gas, W/(m K) (with --conductance).
+    #[arg(long, requires = "mean_free_path", allow_hyphen_values = true, value_parser = number)]
+    pub gas_conductivity: Option<f64>,
+    /// Temperature-jump length ℓ of the gas law, m.
+    #[arg(long, requires = "gas_conductivity", allow_hyphen_values = true, value_parser = number)]
+    pub mean_free_path: Option<f64>,
+}
+
+impl TransportArgs {
+    /// The transport comparison the flags ask for (`None`: none), checked
+    /// before any solve; `breaks` are the spectrum's kinks.
+    pub fn config(&self, breaks: Vec<f64>) -> anyhow::Result<Option<TransportCompareConfig>> {
+        let s = &self.seal;
+        let seal_flags = s.viscosity.is_some()
+            || s.pressure_drop.is_some()
+            || s.inlet_pressure.is_some()
+            || s.outlet_pressure.is_some();
+        if seal_flags && !self.leakage {
+            anyhow::bail!(
+                "--viscosity / --pressure-drop / --inlet-pressure / --outlet-pressure: add --leakage to compare the leak rate"
+            );
+        }
+        let conductance_flags = !self.conductivity.is_empty()
+            || !self.resistivity.is_empty()
+            || self.gas_conductivity.is_some();
+        if conductance_flags && !self.conductance {
+            anyhow::bail!(
+                "--conductivity / --resistivity / --gas-conductivity: add --conductance to compare the conductance"
+            );
+        }
+        if self.conductance && !conductance_flags {
+            anyhow::bail!(
+                "--conductance: give --conductivity κ1[,κ2] (W/(m K)) and/or --resistivity ρ1[,ρ2] (Ω m), or --gas-conductivity with --mean-free-path"
+            );
+        }
+        if !self.leakage && !self.conductance {
+            return Ok(None);
+        }
+        let flag = |e: persson::Error| anyhow::anyhow!("{}", flag_names(&e.to_string()));
+        let seal = if self.leakage {
+            let out = s.output(self.percolation_threshold, 1e-9)?;
+            Some(transport::seal(&out).map_err(flag)?)
+        } else {
+            None
+        };
+        let request = TransportRequest::new(
+            transport::conductivity(&self.conductivity).map_err(flag)?,
+            transport::resistivity(&self.resistivity).map_err(flag)?,
+            transport::gap_law(self.gas_conductivity, self.mean_free_path, &[]).map_err(flag)?,
+            seal,
+        );
+        let mut config = TransportCompareConfig::new(request);
+        config.percolation_threshold = self.percolation_threshold;
+        config.breaks = breaks;
+        config.validate(None, None).map_err(flag)?;
+        Ok(Some(config))
+    }
+}
+
+/// The library's field names as the flags that set them.
+fn flag_names(message: &str) -> String {
+    let mut m = message.to_string();
+    for (field, flag) in [
+        ("percolation_threshold", "--percolation-threshold"),
+        ("viscosity", "--viscosity"),
+        ("pressure_drop", "--pressure-drop"),
+        ("inlet_pressure", "--inlet-pressure"),
+        ("outlet_pressure", "--outlet-pressure"),
+        ("seal_width", "--seal-width"),
+        ("seal_length", "--seal-length"),
+        ("gas_conductivity", "--gas-conductivity"),
+        ("mean_free_path", "--mean-free-path"),
+        ("conductivity", "--conductivity"),
+        ("resistivity", "--resistivity"),
+    ] {
+        if m.contains(field) && !m.contains(flag) {
+            m = m.replacen(field, flag, 1);
+            break;
+        }
+    }
+    m
+}
