@@ -113,3 +113,111 @@ fn flag_names(message: &str) -> String {
     }
     m
 }
+
+/// `FILE.ext` → `FILE_<what>.ext`: the transport figures beside `--plot`'s.
+pub fn sibling(path: &std::path::Path, what: &str) -> std::path::PathBuf {
+    let stem = path.file_stem().unwrap_or_default().to_string_lossy();
+    let name = match path.extension() {
+        Some(e) => format!("{stem}_{what}.{}", e.to_string_lossy()),
+        None => format!("{stem}_{what}"),
+    };
+    path.with_file_name(name)
+}
+
+/// With `--plot FILE` and `--leakage` / `--conductance`: Q(σ0) into
+/// `FILE_leakage.ext` and h(σ0) into `FILE_conductance.ext`, log–log, the
+/// theories as lines and the BEM as markers on one figure each.
+#[cfg(feature = "plot")]
+pub fn plot(
+    path: Option<&std::path::Path>,
+    r: &persson_studies::validation::Comparison,
+) -> anyhow::Result<()> {
+    use persson_studies::plot::{render, Axis, Figure, Series};
+    let (Some(path), Some(t)) = (path, &r.transport) else {
+        return Ok(());
+    };
+    let positive = |pts: Vec<(f64, Option<f64>)>| -> Vec<(f64, f64)> {
+        pts.into_iter()
+            .filter_map(|(x, y)| y.map(|y| (x, y)))
+            .filter(|&(x, y)| x > 0.0 && y > 0.0 && y.is_finite())
+            .collect()
+    };
+    let finest = t.bem.last().map_or(0, |g| g.grid);
+    let leak: Vec<_> = t
+        .points
+        .iter()
+        .filter_map(|p| p.leakage.as_ref().map(|l| (p.nominal_pressure, l)))
+        .collect();
+    if !leak.is_empty() {
+        let mut fig = Figure::new(
+            "Leak rate against load: theories and Reynolds flow on the BEM's gap",
+            Axis::log("nominal pressure σ0 (Pa)"),
+            Axis::log("leak rate Q (m³/s)"),
+        );
+        let series =
+            |f: fn(&persson_studies::validation::compare_transport::LeakageCompared) -> f64| {
+                positive(leak.iter().map(|(p, l)| (*p, Some(f(l)))).collect())
+            };
+        let a_c = t.percolation_threshold.unwrap_or_default();
+        fig.push(Series::line(
+            format!(
+                "critical junction, a_c = {}",
+                persson_studies::table::number(a_c, 3)
+            ),
+            series(|l| l.critical_junction_leak_rate),
+        ));
+        fig.push(Series::dashed(
+            "effective medium",
+            series(|l| l.effective_medium_leak_rate),
+        ));
+        fig.push(Series::markers(
+            format!("BEM {finest}², Reynolds flow (mean of x and y)"),
+            series(|l| l.bem_leak_rate),
+        ));
+        render(&fig, &sibling(path, "leakage"))?;
+    }
+    let cond: Vec<_> = t
+        .points
+        .iter()
+        .filter_map(|p| p.conductance.as_ref().map(|c| (p.nominal_pressure, c)))
+        .collect();
+    if !cond.is_empty() {
+        use persson_studies::validation::compare_transport::ConductanceCompared as C;
+        let mut fig = Figure::new(
+            "Contact conductance against load: theory and BEM (N → ∞)",
+            Axis::log("nominal pressure σ0 (Pa)"),
+            Axis::log("conductance h: W/(m² K) (thermal, gap), S/m² (electrical)"),
+        );
+        type Pick = fn(&C) -> Option<f64>;
+        let curves: [(&str, Pick, Pick); 3] = [
+            (
+                "thermal h_c",
+                |c| c.theory_thermal_conductance,
+                |c| c.bem_thermal_conductance,
+            ),
+            (
+                "electrical h_e",
+                |c| c.theory_electrical_conductance,
+                |c| c.bem_electrical_conductance,
+            ),
+            (
+                "gap h_gap",
+                |c| c.theory_gap_conductance,
+                |c| c.bem_gap_conductance,
+            ),
+        ];
+        for (label, theory, bem) in curves {
+            let th = positive(cond.iter().map(|(p, c)| (*p, theory(c))).collect());
+            if th.is_empty() {
+                continue;
+            }
+            fig.push(Series::line(format!("{label}, theory"), th));
+            fig.push(Series::markers(
+                format!("{label}, BEM N → ∞"),
+                positive(cond.iter().map(|(p, c)| (*p, bem(c))).collect()),
+            ));
+        }
+        render(&fig, &sibling(path, "conductance"))?;
+    }
+    Ok(())
+}
