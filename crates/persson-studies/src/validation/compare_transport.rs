@@ -282,6 +282,7 @@ pub struct TransportComparison {
 }
 
 /// The surfaces of the comparison on every grid of `config`, per seed.
+#[cfg_attr(not(feature = "flow"), allow(dead_code))]
 pub(super) enum Surfaces<'a> {
     /// Synthesised from the band-limited spectrum.
     Synthesised(&'a dyn Spectrum),
@@ -289,6 +290,7 @@ pub(super) enum Surfaces<'a> {
     BandLimitedMap(&'a GridSurface, f64),
 }
 
+#[cfg_attr(not(feature = "flow"), allow(dead_code))]
 impl Surfaces<'_> {
     fn seeds<'s>(&self, seeds: &'s [u64]) -> &'s [u64] {
         match self {
