@@ -90,10 +90,10 @@ impl TransportArgs {
     }
 }
 
-/// The library's field names as the flags that set them.
+/// The library's field names, as whole words of `message`, as the flags
+/// that set them.
 fn flag_names(message: &str) -> String {
-    let mut m = message.to_string();
-    for (field, flag) in [
+    const FLAGS: [(&str, &str); 11] = [
         ("percolation_threshold", "--percolation-threshold"),
         ("viscosity", "--viscosity"),
         ("pressure_drop", "--pressure-drop"),
@@ -105,13 +105,24 @@ fn flag_names(message: &str) -> String {
         ("mean_free_path", "--mean-free-path"),
         ("conductivity", "--conductivity"),
         ("resistivity", "--resistivity"),
-    ] {
-        if m.contains(field) && !m.contains(flag) {
-            m = m.replacen(field, flag, 1);
-            break;
+    ];
+    let mut out = String::with_capacity(message.len() + 8);
+    let mut word = String::new();
+    let flush = |word: &mut String, out: &mut String| {
+        let flag = FLAGS.iter().find(|(f, _)| f == word).map(|(_, g)| *g);
+        out.push_str(flag.unwrap_or(word));
+        word.clear();
+    };
+    for c in message.chars() {
+        if c.is_ascii_alphanumeric() || c == '_' {
+            word.push(c);
+        } else {
+            flush(&mut word, &mut out);
+            out.push(c);
         }
     }
-    m
+    flush(&mut word, &mut out);
+    out
 }
 
 /// `FILE.ext` → `FILE_<what>.ext`: the transport figures beside `--plot`'s.
