@@ -11,13 +11,13 @@ use persson::error::Result;
 /// # Errors
 /// A solve that fails (none should).
 pub fn accuracy(extent: Extent) -> Result<Vec<MethodAccuracy>> {
-    #[allow(unused_mut)]
-    let mut methods = Vec::new();
-    #[cfg(feature = "bem")]
-    methods.push(barber_holm(extent)?);
-    #[cfg(feature = "flow")]
-    methods.push(reynolds_closed_forms(extent)?);
-    methods.push(bruggeman_two_phase()?);
+    let methods = vec![
+        #[cfg(feature = "bem")]
+        barber_holm(extent)?,
+        #[cfg(feature = "flow")]
+        reynolds_closed_forms(extent)?,
+        bruggeman_two_phase()?,
+    ];
     Ok(methods)
 }
 
