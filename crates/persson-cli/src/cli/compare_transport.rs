@@ -126,7 +126,8 @@ fn flag_names(message: &str) -> String {
 }
 
 /// `FILE.ext` → `FILE_<what>.ext`: the transport figures beside `--plot`'s.
-pub fn sibling(path: &std::path::Path, what: &str) -> std::path::PathBuf {
+#[cfg(feature = "plot")]
+fn sibling(path: &std::path::Path, what: &str) -> std::path::PathBuf {
     let stem = path.file_stem().unwrap_or_default().to_string_lossy();
     let name = match path.extension() {
         Some(e) => format!("{stem}_{what}.{}", e.to_string_lossy()),
