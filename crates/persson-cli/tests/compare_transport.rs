@@ -193,6 +193,11 @@ fn text_tables_with_the_flags() {
         assert!(out.contains(title), "{title}\n{out}");
     }
     assert!(out.contains("no open path"), "{out}");
+    // The new tables fit 100 characters like the rest (--wide shows all).
+    let tables = &out[out.find("Leak rate Q").unwrap()..];
+    for line in tables.lines() {
+        assert!(line.chars().count() <= 100, "{line}");
+    }
     assert!(err.contains("leak rate is 0"), "{err}");
 }
 

@@ -702,7 +702,11 @@ impl TransportComparison {
                 "Leak rate Q (m³/s): theories against Reynolds flow on the BEM's gap",
             )
             .scalar("grids", "grids", grids.as_str())
-            .scalar("flow_method", "BEM", FLOW_METHOD)
+            .scalar(
+                "flow_method",
+                "BEM",
+                "finest grid's Reynolds flow, mean of x, y and seeds; not extrapolated",
+            )
             .column("nominal_pressure", "σ0")
             .column_digits("bem_contact_fraction", "A/A0 BEM", 4)
             .column_digits("critical_junction_leak_rate", "Q CJ", 4)
@@ -712,8 +716,8 @@ impl TransportComparison {
             .column_digits("effective_medium_ratio", "EMT/BEM", 3)
             .column_digits("bem_resolution_change", "Q(N)/Q(N/2)−1", 2)
             .omittable(1);
-            for (i, note) in self.notes().into_iter().enumerate() {
-                t = t.scalar(&format!("note_{i}"), "note", note);
+            for (i, (p, note)) in self.short_notes().into_iter().enumerate() {
+                t = t.scalar(&format!("note_{i}"), &format!("σ0 = {p}"), note);
             }
             for p in &self.points {
                 let Some(l) = &p.leakage else { continue };
@@ -749,7 +753,11 @@ impl TransportComparison {
             "Contact conductance: Barber's identity on the theory's and the BEM's stiffness (BEM: N → ∞)",
         )
         .scalar("grids", "grids", grids)
-        .scalar("stiffness_method", "BEM stiffness", STIFFNESS_METHOD)
+        .scalar(
+            "stiffness_method",
+            "BEM stiffness",
+            "linear solve on the converged contact set",
+        )
         .column("nominal_pressure", "σ0")
         .column_digits("theory_stiffness", "K/A0 theory", 4)
         .column_digits("bem_stiffness", "K/A0 BEM", 4)
@@ -757,12 +765,14 @@ impl TransportComparison {
         if thermal {
             t = t
                 .column_digits("theory_thermal_conductance", "h_c theory", 4)
+                .omittable(3)
                 .column_digits("bem_thermal_conductance", "h_c BEM", 4)
                 .omittable(2);
         }
         if electrical {
             t = t
                 .column_digits("theory_electrical_conductance", "h_e theory", 4)
+                .omittable(3)
                 .column_digits("bem_electrical_conductance", "h_e BEM", 4)
                 .omittable(2);
         }
@@ -799,6 +809,32 @@ impl TransportComparison {
             t.push(row);
         }
         t
+    }
+
+    /// The notes of the loads for a text table: (σ0, which methods give Q = 0).
+    fn short_notes(&self) -> Vec<(String, String)> {
+        self.points
+            .iter()
+            .filter_map(|p| {
+                let l = p.leakage.as_ref()?;
+                let mut parts = Vec::new();
+                if l.bem_leak_rate == 0.0 {
+                    parts.push("BEM: no open path");
+                }
+                if l.critical_junction_status == LeakStatus::Sealed {
+                    parts.push("critical junction: sealed");
+                }
+                if l.effective_medium_status == LeakStatus::Sealed {
+                    parts.push("effective medium: sealed");
+                }
+                (!parts.is_empty()).then(|| {
+                    (
+                        number(p.nominal_pressure, 4),
+                        format!("{}; Q = 0", parts.join(", ")),
+                    )
+                })
+            })
+            .collect()
     }
 
     /// The notes of the loads (a leak rate 0, a method sealed), one line each.
