@@ -70,8 +70,7 @@ fn leakage_and_conductance_against_the_bem() {
         for key in [
             "theory_stiffness",
             "bem_stiffness",
-            "bem_stiffness_uncertainty",
-            "bem_stiffness_finest",
+            "bem_stiffness_error",
             "stiffness_ratio",
             "theory_thermal_conductance",
             "bem_thermal_conductance",

@@ -46,15 +46,15 @@ use persson::conductance::{Conductance, ConductanceOptions, ConductancePoint};
 use persson::error::{check, Error, Result};
 use persson::gap::DensityOptions;
 use persson::leakage::{
-    CriticalJunction, CriticalJunctionPoint, EffectiveMedium, EffectiveMediumPoint, LeakStatus,
-    Seal, DEFAULT_PERCOLATION_THRESHOLD,
+    CriticalJunction, CriticalJunctionPoint, Drive, EffectiveMedium, EffectiveMediumPoint,
+    LeakStatus, Seal, DEFAULT_PERCOLATION_THRESHOLD,
 };
 use persson::spectrum::Spectrum;
 
 use super::continuum::extrapolate;
 use super::resolution::SweepConfig;
 use crate::scene::transport::TransportRequest;
-use crate::scene::BemTransportPoint;
+use crate::scene::{BemTransportPoint, Fluid};
 use crate::table::{number, Cell, Table};
 use crate::warning::Warning;
 
@@ -175,10 +175,9 @@ pub struct ConductanceCompared {
     pub theory_stiffness: f64,
     /// The BEM's K/A0 extrapolated to N → ∞.
     pub bem_stiffness: f64,
-    /// Its uncertainty (standard error, else the extrapolation step).
-    pub bem_stiffness_uncertainty: f64,
-    /// The finest grid's K/A0.
-    pub bem_stiffness_finest: f64,
+    /// Its uncertainty: the fit's standard error, else the extrapolation
+    /// step from the finest grid (whose K/A0 is `bem[last].stiffness`).
+    pub bem_stiffness_error: f64,
     /// theory / BEM (extrapolated); also the ratio of h_c and of h_e.
     pub stiffness_ratio: f64,
     /// Theory's h_c, W/(m² K) (with conductivities).
@@ -265,9 +264,27 @@ pub struct TransportComparison {
     /// How the BEM's flow is taken ([`FLOW_METHOD`]; with a seal).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub flow_method: Option<&'static str>,
-    /// The seal and fluid (with `--leakage`).
+    /// The fluid (with `--leakage`).
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub seal: Option<Seal>,
+    pub fluid: Option<Fluid>,
+    /// η, Pa s (with `--leakage`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub viscosity: Option<f64>,
+    /// ΔP of a liquid, Pa.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub pressure_drop: Option<f64>,
+    /// P_a of a gas, Pa.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub inlet_pressure: Option<f64>,
+    /// P_b of a gas, Pa.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub outlet_pressure: Option<f64>,
+    /// L_x, m (with `--leakage`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub seal_width: Option<f64>,
+    /// L_y, m (with `--leakage`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub seal_length: Option<f64>,
     /// a_c of the critical junction (with `--leakage`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub percolation_threshold: Option<f64>,
@@ -517,7 +534,6 @@ pub(super) fn compare_transport(
                 &c[k],
                 k_inf.value,
                 k_inf.uncertainty(),
-                finest.stiffness[k],
                 &grids,
                 &n,
                 k,
@@ -543,7 +559,27 @@ pub(super) fn compare_transport(
         TransportComparison {
             stiffness_method: STIFFNESS_METHOD,
             flow_method: seal.map(|_| FLOW_METHOD),
-            seal,
+            fluid: seal.map(|s| match s.drive {
+                Drive::Liquid { .. } => Fluid::Liquid,
+                Drive::Gas { .. } => Fluid::Gas,
+            }),
+            viscosity: seal.map(|s| s.viscosity),
+            pressure_drop: seal.and_then(|s| match s.drive {
+                Drive::Liquid { pressure_drop } => Some(pressure_drop),
+                Drive::Gas { .. } => None,
+            }),
+            inlet_pressure: seal.and_then(|s| match s.drive {
+                Drive::Gas { inlet_pressure, .. } => Some(inlet_pressure),
+                Drive::Liquid { .. } => None,
+            }),
+            outlet_pressure: seal.and_then(|s| match s.drive {
+                Drive::Gas {
+                    outlet_pressure, ..
+                } => Some(outlet_pressure),
+                Drive::Liquid { .. } => None,
+            }),
+            seal_width: seal.map(|s| s.seal_width),
+            seal_length: seal.map(|s| s.seal_length),
             percolation_threshold: seal.map(|_| a_c),
             alpha: alphas,
             points,
@@ -559,7 +595,6 @@ fn conductance_point(
     c: &ConductancePoint,
     k_inf: f64,
     k_uncertainty: f64,
-    k_finest: f64,
     grids: &[TransportGrid],
     n: &[f64],
     k: usize,
@@ -590,8 +625,7 @@ fn conductance_point(
     Ok(ConductanceCompared {
         theory_stiffness: c.stiffness,
         bem_stiffness: k_inf,
-        bem_stiffness_uncertainty: k_uncertainty,
-        bem_stiffness_finest: k_finest,
+        bem_stiffness_error: k_uncertainty,
         stiffness_ratio: c.stiffness / k_inf,
         theory_thermal_conductance: c.thermal_conductance,
         bem_thermal_conductance: bem_thermal,
@@ -789,7 +823,7 @@ impl TransportComparison {
                 Cell::Num(c.theory_stiffness),
                 Cell::Measured {
                     value: c.bem_stiffness,
-                    error: c.bem_stiffness_uncertainty,
+                    error: c.bem_stiffness_error,
                 },
                 Cell::Num(c.stiffness_ratio),
             ];
