@@ -385,8 +385,20 @@ def compare(
     data: Optional[PathLike] = None,
     data_histogram: Optional[PathLike] = None,
     yield_stress: Optional[float] = None,
+    leakage: bool = False,
+    viscosity: Optional[float] = None,
+    pressure_drop: Optional[float] = None,
+    inlet_pressure: Optional[float] = None,
+    outlet_pressure: Optional[float] = None,
+    seal_width: float = 0.001,
+    seal_length: float = 0.001,
+    percolation_threshold: float = 0.42,
+    conductivity: Optional[ArrayLike] = None,
+    resistivity: Optional[ArrayLike] = None,
+    gas_conductivity: Optional[float] = None,
+    mean_free_path: Optional[float] = None,
 ) -> Report:
-    """`persson compare --json` (with `yield_stress`: `compare --yield-stress`)."""
+    """`persson compare --json` (with `yield_stress`: `compare --yield-stress`; with `leakage` / `conductivity` / `resistivity`: `compare --leakage / --conductance`, key `transport`)."""
 def adhesion(
     spectrum: Spectrum,
     contact_modulus: float,

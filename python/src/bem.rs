@@ -285,11 +285,16 @@ fn bem_hertz<'py>(
 /// theories on `spectrum` (e.g. `Spectrum.from_height_map` of the same map).
 /// With `yield_stress` σY (unit of `contact_modulus`, above every pressure): the
 /// saturated BEM against Persson's finite-σY P(σ), A_el and A_pl, as
-/// `compare --yield-stress`.
+/// `compare --yield-stress`. With `leakage=True` (and `viscosity`,
+/// `pressure_drop` or a gas's `inlet_pressure`/`outlet_pressure`, the seal's
+/// sizes, `percolation_threshold`) and/or `conductivity`/`resistivity`
+/// (κ or ρ, one value or two) or `gas_conductivity` with `mean_free_path`:
+/// the theories' leak rate and conductance against the BEM's, as
+/// `compare --leakage / --conductance` (key `transport`).
 #[pyfunction]
 #[pyo3(
-    signature = (spectrum, contact_modulus, pressure=None, *, heights=None, size=None, periodic=false, grid=256, levels=3, seeds=1, seed=Seed(1), alpha=Some(0.7), pixels_per_wavelength=4.0, tolerance=1e-10, max_iterations=10_000, bins=50, histogram_pressure=None, data=None, data_histogram=None, yield_stress=None),
-    text_signature = "(spectrum, contact_modulus, pressure=None, *, heights=None, size=None, periodic=False, grid=256, levels=3, seeds=1, seed=1, alpha=0.7, pixels_per_wavelength=4.0, tolerance=1e-10, max_iterations=10000, bins=50, histogram_pressure=None, data=None, data_histogram=None, yield_stress=None)"
+    signature = (spectrum, contact_modulus, pressure=None, *, heights=None, size=None, periodic=false, grid=256, levels=3, seeds=1, seed=Seed(1), alpha=Some(0.7), pixels_per_wavelength=4.0, tolerance=1e-10, max_iterations=10_000, bins=50, histogram_pressure=None, data=None, data_histogram=None, yield_stress=None, leakage=false, viscosity=None, pressure_drop=None, inlet_pressure=None, outlet_pressure=None, seal_width=1e-3, seal_length=1e-3, percolation_threshold=0.42, conductivity=None, resistivity=None, gas_conductivity=None, mean_free_path=None),
+    text_signature = "(spectrum, contact_modulus, pressure=None, *, heights=None, size=None, periodic=False, grid=256, levels=3, seeds=1, seed=1, alpha=0.7, pixels_per_wavelength=4.0, tolerance=1e-10, max_iterations=10000, bins=50, histogram_pressure=None, data=None, data_histogram=None, yield_stress=None, leakage=False, viscosity=None, pressure_drop=None, inlet_pressure=None, outlet_pressure=None, seal_width=0.001, seal_length=0.001, percolation_threshold=0.42, conductivity=None, resistivity=None, gas_conductivity=None, mean_free_path=None)"
 )]
 #[allow(clippy::too_many_arguments)]
 fn compare<'py>(
@@ -313,6 +318,18 @@ fn compare<'py>(
     data: Option<PathBuf>,
     data_histogram: Option<PathBuf>,
     yield_stress: Option<f64>,
+    leakage: bool,
+    viscosity: Option<f64>,
+    pressure_drop: Option<f64>,
+    inlet_pressure: Option<f64>,
+    outlet_pressure: Option<f64>,
+    seal_width: f64,
+    seal_length: f64,
+    percolation_threshold: f64,
+    conductivity: Option<&Bound<'py, PyAny>>,
+    resistivity: Option<&Bound<'py, PyAny>>,
+    gas_conductivity: Option<f64>,
+    mean_free_path: Option<f64>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let Seed(seed) = seed;
     if seeds < 1 {
@@ -343,6 +360,31 @@ fn compare<'py>(
         .map_err(err)?;
     config.histogram_pressure = histogram_pressure;
     config.bins = bins;
+    config.transport = crate::transport::compare_transport(
+        crate::transport::CompareTransport {
+            leakage,
+            viscosity,
+            pressure_drop,
+            inlet_pressure,
+            outlet_pressure,
+            seal_width,
+            seal_length,
+            percolation_threshold,
+            conductivity: conductivity
+                .map(|c| float_list("conductivity", c))
+                .transpose()?,
+            resistivity: resistivity
+                .map(|r| float_list("resistivity", r))
+                .transpose()?,
+            gas_conductivity,
+            mean_free_path,
+        },
+        if heights.is_some() {
+            Vec::new()
+        } else {
+            spectrum.breaks.clone()
+        },
+    )?;
     let s = &spectrum.shared;
     let r = match heights {
         None => py.detach(|| validation::compare(s, &config, &mut |_| {})),

@@ -263,3 +263,69 @@ fn leakage<'py>(
     )?;
     Ok(d)
 }
+
+/// The transport keywords of `compare` (`compare --leakage / --conductance`).
+pub(crate) struct CompareTransport {
+    pub leakage: bool,
+    pub viscosity: Option<f64>,
+    pub pressure_drop: Option<f64>,
+    pub inlet_pressure: Option<f64>,
+    pub outlet_pressure: Option<f64>,
+    pub seal_width: f64,
+    pub seal_length: f64,
+    pub percolation_threshold: f64,
+    pub conductivity: Option<Vec<f64>>,
+    pub resistivity: Option<Vec<f64>>,
+    pub gas_conductivity: Option<f64>,
+    pub mean_free_path: Option<f64>,
+}
+
+/// The transport comparison of `compare`'s keywords (`None`: none asked).
+pub(crate) fn compare_transport(
+    k: CompareTransport,
+    breaks: Vec<f64>,
+) -> PyResult<Option<persson_studies::validation::TransportCompareConfig>> {
+    let conductance =
+        k.conductivity.is_some() || k.resistivity.is_some() || k.gas_conductivity.is_some();
+    let seal_given =
+        k.viscosity.is_some() || k.pressure_drop.is_some() || k.inlet_pressure.is_some();
+    if seal_given && !k.leakage {
+        return Err(value_error(
+            "viscosity / pressure_drop / inlet_pressure: add leakage=True to compare the leak rate",
+        ));
+    }
+    if !k.leakage && !conductance {
+        return Ok(None);
+    }
+    let seal = if k.leakage {
+        let viscosity = k
+            .viscosity
+            .ok_or_else(|| value_error("viscosity: required with leakage=True (Pa s)"))?;
+        let out = LeakageOutput {
+            viscosity,
+            pressure_drop: k.pressure_drop,
+            inlet_pressure: k.inlet_pressure,
+            outlet_pressure: k.outlet_pressure,
+            seal_width: k.seal_width,
+            seal_length: k.seal_length,
+            percolation_threshold: Some(k.percolation_threshold),
+            tolerance: None,
+            bem: None,
+            plot: None,
+        };
+        Some(transport::seal(&out).map_err(err)?)
+    } else {
+        None
+    };
+    let request = transport::TransportRequest::new(
+        transport::conductivity(&k.conductivity.unwrap_or_default()).map_err(err)?,
+        transport::resistivity(&k.resistivity.unwrap_or_default()).map_err(err)?,
+        transport::gap_law(k.gas_conductivity, k.mean_free_path, &[]).map_err(err)?,
+        seal,
+    );
+    let mut config = persson_studies::validation::TransportCompareConfig::new(request);
+    config.percolation_threshold = k.percolation_threshold;
+    config.breaks = breaks;
+    config.validate(None, None).map_err(err)?;
+    Ok(Some(config))
+}

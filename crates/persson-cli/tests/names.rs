@@ -159,6 +159,7 @@ fn commands(out_dir: &Path) -> Vec<Vec<Vec<String>>> {
         "compare --example --grid 32 --levels 2",
         "compare --example --grid 32 --levels 2 --anisotropy 3",
         "compare --example --grid 32 --levels 2 --yield-stress 6e6",
+        "compare --example --grid 32 --levels 2 --pressure 1e5,3e6 --leakage --viscosity 1e-3 --pressure-drop 1e5 --conductance --conductivity 50 --resistivity 1e-7 --gas-conductivity 0.026 --mean-free-path 6.8e-8",
         "compare ensemble --example --grid 32 --levels 2 --seeds 2 --pressure 1e6 --threads 1",
         "spectrum --surface tests/reference/data/map_a.npy --pixel-size 1e-6",
         "spectrum --surface tests/reference/data/map_a.npy --surface tests/reference/data/map_b.npy --pixel-size 4e-6,1e-6",

@@ -91,6 +91,11 @@ fn compare(a: &MainArgs) -> anyhow::Result<()> {
         .transpose()?;
     config.histogram_pressure = a.histogram_pressure;
     config.bins = a.bins;
+    let breaks = match &map {
+        Some(_) => Vec::new(),
+        None => a.spectrum.spec()?.breaks(),
+    };
+    config.transport = a.transport.config(breaks)?;
     let mut warnings = a.spectrum.file_warnings();
     let report = match &map {
         Some(m) => {

@@ -121,6 +121,8 @@ pub struct MainArgs {
     /// Number of bins of the BEM pressure histograms.
     #[arg(long, default_value_t = persson_studies::validation::DEFAULT_BINS, allow_hyphen_values = true, value_parser = super::number::count)]
     pub bins: usize,
+    #[command(flatten)]
+    pub transport: super::compare_transport::TransportArgs,
     /// Text tables with every column (default: each fits 100 characters, the coarser
     /// grids' columns of a wider table left out and named).
     #[arg(long)]

@@ -106,6 +106,8 @@ pub fn comparison(a: &MainArgs, r: &Comparison) -> anyhow::Result<()> {
         }
         Ok(fig)
     })?;
+    // --leakage / --conductance: Q(σ0) and h(σ0) beside the --plot file.
+    super::compare_transport::plot(a.plot.plot.as_deref(), r)?;
     let Some(d) = r.shown_distribution() else {
         return Ok(());
     };

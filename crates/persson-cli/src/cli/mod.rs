@@ -19,6 +19,8 @@ mod compare;
 mod compare_args;
 #[cfg(feature = "bem")]
 mod compare_plot;
+#[cfg(feature = "bem")]
+mod compare_transport;
 mod conductance;
 mod friction;
 mod kappa;

@@ -19,6 +19,9 @@ mod bem;
 mod core;
 mod friction;
 mod stress;
+mod transport;
+
+pub use transport::accuracy as transport_accuracy;
 
 /// The accuracy knob of a method.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -31,6 +34,8 @@ pub enum Knob {
     Grid,
     /// The number of terms of a series.
     Terms,
+    /// A phase fraction (the blocked fraction a of a two-phase medium).
+    Fraction,
 }
 
 impl Knob {
@@ -40,6 +45,7 @@ impl Knob {
             Knob::Tolerance => ("tolerance", "ε"),
             Knob::Grid => ("grid", "N"),
             Knob::Terms => ("terms", "terms"),
+            Knob::Fraction => ("fraction", "a"),
         }
     }
 }
@@ -114,7 +120,7 @@ impl Tabulate for AccuracyReport {
                 t = t.column_digits("seconds", "time (s)", 2);
                 for r in &m.rows {
                     let setting = match m.knob {
-                        Knob::Tolerance => Cell::Num(r.setting),
+                        Knob::Tolerance | Knob::Fraction => Cell::Num(r.setting),
                         Knob::Grid | Knob::Terms => Cell::Int(r.setting as i64),
                     };
                     let mut row = vec![setting, Cell::Num(r.error)];
@@ -171,6 +177,7 @@ pub fn accuracy(extent: Extent) -> Result<AccuracyReport> {
     methods.push(friction::friction_quadrature(extent)?);
     #[cfg(feature = "bem")]
     methods.extend(bem::accuracy(extent)?);
+    methods.extend(transport::accuracy(extent)?);
     Ok(AccuracyReport { methods })
 }
 

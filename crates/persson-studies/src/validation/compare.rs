@@ -57,6 +57,9 @@ pub struct ComparisonConfig {
     /// to the plain loop with the warning `preconditioner_fallback` in
     /// [`Comparison::warnings`]).
     pub method: Method,
+    /// `compare --leakage / --conductance`: the leak rate and conductance
+    /// of the theories against the BEM's (`None`: not compared).
+    pub transport: Option<super::compare_transport::TransportCompareConfig>,
 }
 
 impl ComparisonConfig {
@@ -72,6 +75,7 @@ impl ComparisonConfig {
             histogram_pressure: None,
             bins: DEFAULT_BINS,
             method: Method::default(),
+            transport: None,
         }
     }
 }
@@ -442,6 +446,10 @@ fn compare_on(
     if let Some(y) = yield_stress {
         check::yield_stress("yield_stress", y, &pressures)?;
     }
+    if let Some(t) = &config.transport {
+        // Before the sweep: bad transport settings fail at once.
+        t.validate(map.map(|m| m.1), yield_stress)?;
+    }
     let model = Persson::new(&band, e_star)?;
     let theories = theory_curves(&model, &pressures)?;
 
@@ -497,12 +505,29 @@ fn compare_on(
 
     // One list for every front end (CLI stderr/JSON, Python): the study's own
     // remarks, then the asperity theories' (their assumptions failing).
-    let warnings: Vec<Warning> = setup_warning
+    let mut warnings: Vec<Warning> = setup_warning
         .into_iter()
         .chain(fallen_back(fallbacks))
         .chain(asperity.warnings.iter().cloned())
         .chain(few_patches)
         .collect();
+    let transport = match &config.transport {
+        Some(t) => {
+            let (report, w) = transport_comparison(
+                &band,
+                map,
+                q_s,
+                e_star,
+                &pressures,
+                &sweep_config,
+                config,
+                t,
+            )?;
+            warnings.extend(w);
+            Some(report)
+        }
+        None => None,
+    };
 
     let distributions = pressure_distributions(&sw, &model, config.bins)?;
     let finest = sw.mean_contact_fraction().pop().unwrap_or(SeedMean {
@@ -574,6 +599,37 @@ fn compare_on(
         data,
         data_histogram,
         measured,
+        transport,
         warnings,
     })
+}
+
+/// `compare --leakage / --conductance` on the sweep's surfaces: synthesised
+/// ones, or a periodic map's band-limited copies (a free map and σY are
+/// refused by [`super::compare_transport::TransportCompareConfig::validate`]).
+#[allow(clippy::too_many_arguments)]
+fn transport_comparison(
+    band: &BandLimited<'_>,
+    map: Option<(&GridSurface, Boundary)>,
+    q_s: f64,
+    e_star: f64,
+    pressures: &[f64],
+    sweep_config: &SweepConfig,
+    config: &ComparisonConfig,
+    t: &super::compare_transport::TransportCompareConfig,
+) -> Result<(super::compare_transport::TransportComparison, Vec<Warning>)> {
+    use super::compare_transport::{compare_transport, Surfaces};
+    let surfaces = match map {
+        Some((m, Boundary::Periodic)) => Surfaces::BandLimitedMap(m, q_s),
+        _ => Surfaces::Synthesised(band),
+    };
+    compare_transport(
+        band,
+        surfaces,
+        e_star,
+        pressures,
+        sweep_config,
+        config.sweep.alpha,
+        t,
+    )
 }

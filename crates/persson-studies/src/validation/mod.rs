@@ -53,6 +53,8 @@ pub mod asperity;
 #[cfg(feature = "bem")]
 mod compare;
 #[cfg(feature = "bem")]
+pub mod compare_transport;
+#[cfg(feature = "bem")]
 mod distribution;
 #[cfg(feature = "bem")]
 pub mod ensemble;
@@ -81,6 +83,8 @@ pub use kappa::{fit_kappa, KappaEstimate, KappaFit};
 
 #[cfg(feature = "bem")]
 pub use compare::{compare, compare_surface, ComparisonConfig, DEFAULT_BINS, KAPPA_MAX_FRACTION};
+#[cfg(feature = "bem")]
+pub use compare_transport::{TransportCompareConfig, TransportComparison};
 #[cfg(feature = "bem")]
 pub use ensemble::{ensemble, EnsembleConfig, EnsembleJob, EnsembleReport, EnsembleSolve};
 #[cfg(feature = "bem")]

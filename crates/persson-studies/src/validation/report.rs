@@ -481,6 +481,10 @@ pub struct Comparison {
     /// (unfiltered, its own grid), beside the band-limited sweep.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub measured: Option<BemGrid>,
+    /// `compare --leakage / --conductance`: the theories' leak rate and
+    /// conductance against the BEM's ([`super::compare_transport`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub transport: Option<super::compare_transport::TransportComparison>,
     /// Remarks on the comparison: q_s clipped to what the coarsest grid
     /// resolves (`clipped_band`), a map solved with a free boundary
     /// (`map_not_periodic`), solves the plain loop finished after the

@@ -36,6 +36,8 @@ impl Tabulate for Comparison {
             &self.patches,
             &self.nominal_pressure,
         ));
+        // compare --leakage / --conductance (absent by default)
+        tables.extend(self.transport.iter().flat_map(|t| t.tables()));
         tables
     }
 }

@@ -1,0 +1,235 @@
+//! The flags of `persson compare --leakage / --conductance`: the theories'
+//! leak rate and contact conductance against the BEM's on the sweep's
+//! surfaces ([`persson_studies::validation::compare_transport`]).
+
+use persson_studies::scene::transport::{self, TransportRequest};
+use persson_studies::validation::TransportCompareConfig;
+
+use super::leakage::SealArgs;
+use super::number::number;
+
+/// `compare --leakage / --conductance` (flattened into `compare`'s flags).
+#[derive(clap::Args, Debug, Clone)]
+pub struct TransportArgs {
+    /// Also compare the leak rate of a seal: critical-junction and effective-medium
+    /// theories against Reynolds flow on the BEM's gap (needs --viscosity and
+    /// --pressure-drop, or a gas's --inlet-pressure and --outlet-pressure).
+    #[arg(long)]
+    pub leakage: bool,
+    #[command(flatten)]
+    pub seal: SealArgs,
+    /// Percolation threshold a_c of the critical junction, in (0, 1) (with --leakage).
+    #[arg(long, default_value = "0.42", allow_hyphen_values = true, value_parser = number)]
+    pub percolation_threshold: f64,
+    /// Also compare the contact conductance: Barber's identity on the theory's and
+    /// the BEM's stiffness (needs --conductivity and/or --resistivity, or a gas law).
+    #[arg(long)]
+    pub conductance: bool,
+    /// Thermal conductivities κ1[,κ2] of the two bodies, W/(m K) (with --conductance).
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = number)]
+    pub conductivity: Vec<f64>,
+    /// Electrical resistivities ρ1[,ρ2] of the two bodies, Ω m (with --conductance).
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = number)]
+    pub resistivity: Vec<f64>,
+    /// Gap conductance by gas conduction κ_gas/(u + 2ℓ): κ_gas, W/(m K) (with --conductance).
+    #[arg(long, requires = "mean_free_path", allow_hyphen_values = true, value_parser = number)]
+    pub gas_conductivity: Option<f64>,
+    /// Temperature-jump length ℓ of the gas law, m.
+    #[arg(long, requires = "gas_conductivity", allow_hyphen_values = true, value_parser = number)]
+    pub mean_free_path: Option<f64>,
+}
+
+impl TransportArgs {
+    /// The transport comparison the flags ask for (`None`: none), checked
+    /// before any solve; `breaks` are the spectrum's kinks.
+    pub fn config(&self, breaks: Vec<f64>) -> anyhow::Result<Option<TransportCompareConfig>> {
+        let s = &self.seal;
+        let seal_flags = s.viscosity.is_some()
+            || s.pressure_drop.is_some()
+            || s.inlet_pressure.is_some()
+            || s.outlet_pressure.is_some();
+        if seal_flags && !self.leakage {
+            anyhow::bail!(
+                "--viscosity / --pressure-drop / --inlet-pressure / --outlet-pressure: add --leakage to compare the leak rate"
+            );
+        }
+        let conductance_flags = !self.conductivity.is_empty()
+            || !self.resistivity.is_empty()
+            || self.gas_conductivity.is_some();
+        if conductance_flags && !self.conductance {
+            anyhow::bail!(
+                "--conductivity / --resistivity / --gas-conductivity: add --conductance to compare the conductance"
+            );
+        }
+        if self.conductance && !conductance_flags {
+            anyhow::bail!(
+                "--conductance: give --conductivity κ1[,κ2] (W/(m K)) and/or --resistivity ρ1[,ρ2] (Ω m), or --gas-conductivity with --mean-free-path"
+            );
+        }
+        if !self.leakage && !self.conductance {
+            return Ok(None);
+        }
+        let flag = |e: persson::Error| anyhow::anyhow!("{}", flag_names(&e.to_string()));
+        let seal = if self.leakage {
+            let out = s.output(self.percolation_threshold, 1e-9)?;
+            Some(transport::seal(&out).map_err(flag)?)
+        } else {
+            None
+        };
+        let request = TransportRequest::new(
+            transport::conductivity(&self.conductivity).map_err(flag)?,
+            transport::resistivity(&self.resistivity).map_err(flag)?,
+            transport::gap_law(self.gas_conductivity, self.mean_free_path, &[]).map_err(flag)?,
+            seal,
+        );
+        let mut config = TransportCompareConfig::new(request);
+        config.percolation_threshold = self.percolation_threshold;
+        config.breaks = breaks;
+        config.validate(None, None).map_err(flag)?;
+        Ok(Some(config))
+    }
+}
+
+/// The library's field names, as whole words of `message`, as the flags
+/// that set them.
+fn flag_names(message: &str) -> String {
+    const FLAGS: [(&str, &str); 11] = [
+        ("percolation_threshold", "--percolation-threshold"),
+        ("viscosity", "--viscosity"),
+        ("pressure_drop", "--pressure-drop"),
+        ("inlet_pressure", "--inlet-pressure"),
+        ("outlet_pressure", "--outlet-pressure"),
+        ("seal_width", "--seal-width"),
+        ("seal_length", "--seal-length"),
+        ("gas_conductivity", "--gas-conductivity"),
+        ("mean_free_path", "--mean-free-path"),
+        ("conductivity", "--conductivity"),
+        ("resistivity", "--resistivity"),
+    ];
+    let mut out = String::with_capacity(message.len() + 8);
+    let mut word = String::new();
+    let flush = |word: &mut String, out: &mut String| {
+        let flag = FLAGS.iter().find(|(f, _)| f == word).map(|(_, g)| *g);
+        out.push_str(flag.unwrap_or(word));
+        word.clear();
+    };
+    for c in message.chars() {
+        if c.is_ascii_alphanumeric() || c == '_' {
+            word.push(c);
+        } else {
+            flush(&mut word, &mut out);
+            out.push(c);
+        }
+    }
+    flush(&mut word, &mut out);
+    out
+}
+
+/// `FILE.ext` → `FILE_<what>.ext`: the transport figures beside `--plot`'s.
+#[cfg(feature = "plot")]
+fn sibling(path: &std::path::Path, what: &str) -> std::path::PathBuf {
+    let stem = path.file_stem().unwrap_or_default().to_string_lossy();
+    let name = match path.extension() {
+        Some(e) => format!("{stem}_{what}.{}", e.to_string_lossy()),
+        None => format!("{stem}_{what}"),
+    };
+    path.with_file_name(name)
+}
+
+/// With `--plot FILE` and `--leakage` / `--conductance`: Q(σ0) into
+/// `FILE_leakage.ext` and h(σ0) into `FILE_conductance.ext`, log–log, the
+/// theories as lines and the BEM as markers on one figure each.
+#[cfg(feature = "plot")]
+pub fn plot(
+    path: Option<&std::path::Path>,
+    r: &persson_studies::validation::Comparison,
+) -> anyhow::Result<()> {
+    use persson_studies::plot::{render, Axis, Figure, Series};
+    let (Some(path), Some(t)) = (path, &r.transport) else {
+        return Ok(());
+    };
+    let positive = |pts: Vec<(f64, Option<f64>)>| -> Vec<(f64, f64)> {
+        pts.into_iter()
+            .filter_map(|(x, y)| y.map(|y| (x, y)))
+            .filter(|&(x, y)| x > 0.0 && y > 0.0 && y.is_finite())
+            .collect()
+    };
+    let finest = t.bem.last().map_or(0, |g| g.grid);
+    let leak: Vec<_> = t
+        .points
+        .iter()
+        .filter_map(|p| p.leakage.as_ref().map(|l| (p.nominal_pressure, l)))
+        .collect();
+    if !leak.is_empty() {
+        let mut fig = Figure::new(
+            "Leak rate against load: theories and Reynolds flow on the BEM's gap",
+            Axis::log("nominal pressure σ0 (Pa)"),
+            Axis::log("leak rate Q (m³/s)"),
+        );
+        let series =
+            |f: fn(&persson_studies::validation::compare_transport::LeakageCompared) -> f64| {
+                positive(leak.iter().map(|(p, l)| (*p, Some(f(l)))).collect())
+            };
+        let a_c = t.percolation_threshold.unwrap_or_default();
+        fig.push(Series::line(
+            format!(
+                "critical junction, a_c = {}",
+                persson_studies::table::number(a_c, 3)
+            ),
+            series(|l| l.critical_junction_leak_rate),
+        ));
+        fig.push(Series::dashed(
+            "effective medium",
+            series(|l| l.effective_medium_leak_rate),
+        ));
+        fig.push(Series::markers(
+            format!("BEM {finest}², Reynolds flow (mean of x and y)"),
+            series(|l| l.bem_leak_rate),
+        ));
+        render(&fig, &sibling(path, "leakage"))?;
+    }
+    let cond: Vec<_> = t
+        .points
+        .iter()
+        .filter_map(|p| p.conductance.as_ref().map(|c| (p.nominal_pressure, c)))
+        .collect();
+    if !cond.is_empty() {
+        use persson_studies::validation::compare_transport::ConductanceCompared as C;
+        let mut fig = Figure::new(
+            "Contact conductance against load: theory and BEM (N → ∞)",
+            Axis::log("nominal pressure σ0 (Pa)"),
+            Axis::log("conductance h: W/(m² K) (thermal, gap), S/m² (electrical)"),
+        );
+        type Pick = fn(&C) -> Option<f64>;
+        let curves: [(&str, Pick, Pick); 3] = [
+            (
+                "thermal h_c",
+                |c| c.theory_thermal_conductance,
+                |c| c.bem_thermal_conductance,
+            ),
+            (
+                "electrical h_e",
+                |c| c.theory_electrical_conductance,
+                |c| c.bem_electrical_conductance,
+            ),
+            (
+                "gap h_gap",
+                |c| c.theory_gap_conductance,
+                |c| c.bem_gap_conductance,
+            ),
+        ];
+        for (label, theory, bem) in curves {
+            let th = positive(cond.iter().map(|(p, c)| (*p, theory(c))).collect());
+            if th.is_empty() {
+                continue;
+            }
+            fig.push(Series::line(format!("{label}, theory"), th));
+            fig.push(Series::markers(
+                format!("{label}, BEM N → ∞"),
+                positive(cond.iter().map(|(p, c)| (*p, bem(c))).collect()),
+            ));
+        }
+        render(&fig, &sibling(path, "conductance"))?;
+    }
+    Ok(())
+}
