@@ -251,10 +251,13 @@ impl Default for AdhesiveOptions {
 #[non_exhaustive]
 pub struct AdhesivePoint {
     /// ḡ, the mean gap over the grid (unit of L): the prescribed one under
-    /// mean-gap control.
+    /// mean-gap control. Serialised as `mean_separation` (ū, the names table).
+    #[serde(rename = "mean_separation")]
     pub mean_gap: f64,
     /// p̄, the mean pressure over the grid (unit of E*; negative in tension).
-    /// On the free boundary, the force over L².
+    /// On the free boundary, the force over L². Serialised as
+    /// `nominal_pressure` (σ0, the names table).
+    #[serde(rename = "nominal_pressure")]
     pub mean_pressure: f64,
     /// Fraction of nodes in repulsive contact (g = 0).
     pub contact_fraction: f64,

@@ -137,6 +137,9 @@ impl Observer for Solves<'_> {
 }
 
 fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
+    if let Some(dg) = a.adhesion.work_of_adhesion {
+        return adhesive_rough(a, dg);
+    }
     if a.spectrum.example {
         // Say what the example is (stdout stays the report alone).
         eprintln!("persson: {}", persson_studies::scene::EXAMPLE);
@@ -161,26 +164,7 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
         ..RoughOptions::default()
     };
     let e_star = a.material.build(a.spectrum.example)?.contact_modulus();
-    let (surface, source) = if let Some(path) = &a.surface {
-        let mut map = persson_studies::scene::HeightMapSpec::new(path.clone());
-        map.size = a.size.map(persson_studies::scene::Sides::One);
-        (
-            map.bem_surface(a.boundary)?,
-            SurfaceOrigin::height_map(path),
-        )
-    } else {
-        let n = a
-            .grid
-            .context("no surface: give --surface FILE --size L, or spectrum flags with --grid N")?;
-        check_memory(n, a.boundary)?;
-        let spectrum = a.spectrum.build()?;
-        let size = check::positive(
-            "size",
-            a.size.unwrap_or(std::f64::consts::TAU / spectrum.q_min()),
-        )?;
-        let s = synthesize(spectrum.as_ref(), n, size, a.seed)?;
-        (s, SurfaceOrigin::synthesised(spectrum.as_ref(), a.seed)?)
-    };
+    let (surface, source) = rough_surface(a)?;
     if let Some(path) = &a.surface_out {
         npy::write(path, surface.n, surface.n, &surface.heights)?;
     }
@@ -289,6 +273,100 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
         }
     }
 }
+
+/// The rigid surface of `bem rough`: a height map read, or a spectrum synthesised.
+fn rough_surface(
+    a: &RoughArgs,
+) -> anyhow::Result<(persson::bem::surface::GridSurface, SurfaceOrigin)> {
+    Ok(if let Some(path) = &a.surface {
+        let mut map = persson_studies::scene::HeightMapSpec::new(path.clone());
+        map.size = a.size.map(persson_studies::scene::Sides::One);
+        (
+            map.bem_surface(a.boundary)?,
+            SurfaceOrigin::height_map(path),
+        )
+    } else {
+        let n = a
+            .grid
+            .context("no surface: give --surface FILE --size L, or spectrum flags with --grid N")?;
+        check_memory(n, a.boundary)?;
+        let spectrum = a.spectrum.build()?;
+        let size = check::positive(
+            "size",
+            a.size.unwrap_or(std::f64::consts::TAU / spectrum.q_min()),
+        )?;
+        let s = synthesize(spectrum.as_ref(), n, size, a.seed)?;
+        (s, SurfaceOrigin::synthesised(spectrum.as_ref(), a.seed)?)
+    })
+}
+
+/// `bem rough --work-of-adhesion`: the adhesive BEM along the --mean-gap path.
+fn adhesive_rough(a: &RoughArgs, work_of_adhesion: f64) -> anyhow::Result<()> {
+    use persson_studies::bem_detail::{adhesive_path, adhesive_warnings, LawKind};
+    let ad = &a.adhesion;
+    if !(work_of_adhesion.is_finite() && work_of_adhesion > 0.0) {
+        anyhow::bail!("--work-of-adhesion {work_of_adhesion}: must be finite and > 0 (J/m²)");
+    }
+    let range = ad
+        .adhesion_range
+        .context("--work-of-adhesion needs --adhesion-range")?;
+    if !(range.is_finite() && range > 0.0) {
+        anyhow::bail!("--adhesion-range {range}: must be finite and > 0 (m)");
+    }
+    if let Some(g) = ad.mean_gap.iter().find(|g| !(g.is_finite() && **g > 0.0)) {
+        anyhow::bail!("--mean-gap {g}: must be finite and > 0 (m)");
+    }
+    if ad.mean_gap.is_empty() {
+        anyhow::bail!("--work-of-adhesion needs --mean-gap g1,g2,… (the adhesive BEM runs under mean-gap control)");
+    }
+    if a.boundary != persson::bem::Boundary::Periodic {
+        anyhow::bail!(
+            "--boundary {}: the adhesive BEM of `bem rough` is periodic (mean-gap control)",
+            a.boundary.name()
+        );
+    }
+    if a.spectrum.example {
+        eprintln!("persson: {}", persson_studies::scene::EXAMPLE);
+    }
+    let e_star = a.material.build(a.spectrum.example)?.contact_modulus();
+    let (surface, _) = rough_surface(a)?;
+    if let Some(path) = &a.surface_out {
+        npy::write(path, surface.n, surface.n, &surface.heights)?;
+    }
+    let kind = if ad.adhesion == "exponential" {
+        LawKind::Exponential
+    } else {
+        LawKind::Maugis
+    };
+    let options = persson::bem::adhesive::AdhesiveOptions {
+        tolerance: check::tolerance("tolerance", a.solver.tolerance)
+            .map_err(|e| anyhow::anyhow!("--tolerance: {e}"))?,
+        max_iterations: a.solver.max_iterations,
+    };
+    let report = adhesive_path(
+        &surface.heights,
+        (surface.n, surface.size, e_star),
+        (kind, work_of_adhesion, range),
+        &ad.mean_gap,
+        &options,
+    )
+    .map_err(|e| match super::args::flag_of(&e, ADHESION_FLAGS) {
+        Some(flag) => anyhow::anyhow!("{flag}: {e}"),
+        None => e.into(),
+    })?;
+    let mut warnings = a.spectrum.file_warnings();
+    warnings.extend(adhesive_warnings(&report));
+    print_narrowed(&report, &warnings, &a.format, a.wide)
+}
+
+/// The flags of the fields the adhesive solver names in its errors.
+const ADHESION_FLAGS: &[(&str, &str)] = &[
+    ("work_of_adhesion", "--work-of-adhesion"),
+    ("adhesion_range", "--adhesion-range"),
+    ("mean_gap", "--mean-gap"),
+    ("tolerance", "--tolerance"),
+    ("heights", "--surface"),
+];
 
 /// `dir/name.ext` → `dir/name_k.ext` when `k` is given.
 pub fn indexed(path: &Path, k: Option<usize>) -> PathBuf {

@@ -155,7 +155,7 @@ pub struct RoughArgs {
         long,
         value_delimiter = ',',
         allow_hyphen_values = true,
-        required_unless_present = "example", value_parser = super::number::number)]
+        required_unless_present_any = ["example", "work_of_adhesion"], value_parser = super::number::number)]
     pub pressure: Vec<f64>,
     /// Boundary condition of the elastic half-space: periodic (the grid is one period) or free.
     #[arg(long, default_value = "periodic")]
@@ -197,6 +197,8 @@ pub struct RoughArgs {
     #[command(flatten)]
     pub detail: DetailArgs,
     #[command(flatten)]
+    pub adhesion: AdhesionBemArgs,
+    #[command(flatten)]
     pub format: Format,
 }
 
@@ -227,4 +229,31 @@ pub struct TransportArgs {
     /// pressures are given.
     #[arg(long, value_name = "FILE.npy")]
     pub gap_field: Option<PathBuf>,
+}
+
+/// The adhesive BEM along a path of mean gaps (`bem rough --work-of-adhesion`).
+#[derive(clap::Args, Debug, Clone)]
+pub struct AdhesionBemArgs {
+    /// Work of adhesion Δγ, J/m² (unit of the modulus × L): solve the adhesive
+    /// contact at each --mean-gap instead of at the --pressure list.
+    #[arg(
+        long,
+        requires = "adhesion_range",
+        requires = "mean_gap",
+        conflicts_with_all = ["pressure", "yield_stress", "plot", "histogram", "pressure_field"],
+        allow_hyphen_values = true,
+        value_parser = super::number::number
+    )]
+    pub work_of_adhesion: Option<f64>,
+    /// Range ρ of the cohesive law, m (unit of L): Maugis–Dugdale attracts
+    /// with Δγ/ρ below the gap ρ; the exponential law decays over ρ.
+    #[arg(long, requires = "work_of_adhesion", allow_hyphen_values = true, value_parser = super::number::number)]
+    pub adhesion_range: Option<f64>,
+    /// Cohesive law of the adhesive BEM.
+    #[arg(long, default_value = "maugis", value_parser = ["maugis", "exponential"])]
+    pub adhesion: String,
+    /// Mean gaps ḡ of the adhesive path, m, solved in the order given (in and
+    /// out for a loading–unloading curve); comma-separated or repeated.
+    #[arg(long, value_delimiter = ',', requires = "work_of_adhesion", allow_hyphen_values = true, value_parser = super::number::number)]
+    pub mean_gap: Vec<f64>,
 }

@@ -29,11 +29,13 @@
 //! - C. Campañá, M. H. Müser, EPL 77, 38005 (2007), doi:10.1209/0295-5075/77/38005.
 //! - K. L. Johnson, *Contact Mechanics* (CUP 1985), §3.4, §4.2.
 
+mod adhesive;
 mod section;
 mod solves;
 
 use serde::Serialize;
 
+pub use adhesive::{adhesive_path, adhesive_warnings, AdhesiveBemReport, LawKind};
 pub use section::{hertz_section, VerticalSection};
 pub use solves::{indexed, Details, StressMap, SubsurfaceOptions, DEFAULT_POISSON};
 

@@ -207,6 +207,27 @@ pub enum Warning {
         /// Iterations of the preconditioned loop before it was abandoned (per solve).
         iterations: Vec<usize>,
     },
+    /// The adhesive BEM's cohesive range ρ is below one grid spacing L/N: the
+    /// cohesive zone is not resolved and the answer depends on the grid.
+    CohesiveZoneUnresolved {
+        /// ρ, m.
+        adhesion_range: f64,
+        /// L/N, m.
+        grid_spacing: f64,
+    },
+    /// The adhesive BEM's preconditioned iteration stalled at these mean gaps
+    /// and the plain one finished: the same tolerance, more time.
+    AdhesiveFallback {
+        /// ḡ of the solves that fell back, m.
+        mean_gap: Vec<f64>,
+    },
+    /// Adhesive BEM solves that stopped short of the tolerance (iteration limit).
+    AdhesiveNotConverged {
+        /// ḡ of those solves, m.
+        mean_gap: Vec<f64>,
+        /// The tolerance ε asked for.
+        tolerance: f64,
+    },
     /// Rubber friction sampled a master curve outside its frequency range,
     /// where it is held at its end values.
     MasterCurveRange {
@@ -364,7 +385,8 @@ impl Warning {
     /// `zeta_beyond_band`, `band_limited`, `psd_convention`,
     /// `rising_spectrum`, `clipped_band`, `map_not_periodic`, `resampled`,
     /// `hurst_not_fitted`, `hurst_out_of_range`, `bins_left_out`,
-    /// `preconditioner_fallback`, `master_curve_range`, `friction_not_converged`, `shift_table_extended`,
+    /// `preconditioner_fallback`, `cohesive_zone_unresolved`, `adhesive_fallback`,
+    /// `adhesive_not_converged`, `master_curve_range`, `friction_not_converged`, `shift_table_extended`,
     /// `sum_bands`, `measurement_gap`, `sealed`, `small_bandwidth`, `coalescence`,
     /// `curvature_unresolved`, `beyond_pull_off`, `adhesion_tolerance_not_met`,
     /// `long_adhesion_range`).
@@ -388,6 +410,9 @@ impl Warning {
             Warning::SumBands { .. } => "sum_bands",
             Warning::MeasurementGap { .. } => "measurement_gap",
             Warning::PreconditionerFallback { .. } => "preconditioner_fallback",
+            Warning::CohesiveZoneUnresolved { .. } => "cohesive_zone_unresolved",
+            Warning::AdhesiveFallback { .. } => "adhesive_fallback",
+            Warning::AdhesiveNotConverged { .. } => "adhesive_not_converged",
             Warning::MasterCurveRange { .. } => "master_curve_range",
             Warning::FrictionNotConverged { .. } => "friction_not_converged",
             Warning::ShiftTableExtended { .. } => "shift_table_extended",

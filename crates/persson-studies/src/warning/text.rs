@@ -211,6 +211,41 @@ impl fmt::Display for Warning {
                         .join(", ")
                 )
             }
+            Warning::CohesiveZoneUnresolved {
+                adhesion_range,
+                grid_spacing,
+            } => write!(
+                f,
+                "the adhesion range ρ = {} is below the grid spacing L/N = {}: the cohesive \
+                 zone is not resolved and the pull-off depends on the grid (refine the grid \
+                 or lengthen the range)",
+                n(*adhesion_range),
+                n(*grid_spacing)
+            ),
+            Warning::AdhesiveFallback { mean_gap } => write!(
+                f,
+                "the preconditioned adhesive solver stalled at mean gap ḡ = {} and the plain \
+                 iteration finished: same tolerance, more time",
+                mean_gap
+                    .iter()
+                    .map(|&g| n(g))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
+            Warning::AdhesiveNotConverged {
+                mean_gap,
+                tolerance,
+            } => write!(
+                f,
+                "the adhesive solve at mean gap ḡ = {} stopped short of the tolerance {} \
+                 (iteration limit): its numbers are not converged",
+                mean_gap
+                    .iter()
+                    .map(|&g| n(g))
+                    .collect::<Vec<_>>()
+                    .join(", "),
+                n(*tolerance)
+            ),
             Warning::MasterCurveRange { .. }
             | Warning::FrictionNotConverged { .. }
             | Warning::ShiftTableExtended { .. } => friction(f, self),

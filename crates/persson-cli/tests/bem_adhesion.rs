@@ -1,0 +1,192 @@
+//! `bem rough --work-of-adhesion`: the adhesive BEM along a mean-gap path
+//! (issue 24), checked against the non-adhesive `bem rough` (Δγ → 0), the
+//! path's own identities (pull-off = −min p̄, the fractions in [0, 1]) and its
+//! bad input.
+#![cfg(feature = "bem")]
+
+mod common;
+
+use common::{json, persson};
+use serde_json::Value;
+
+/// A 64² self-affine surface, L = 1, E* = 1 (heights of order 1e-2).
+const SURFACE: &[&str] = &[
+    "bem",
+    "rough",
+    "--hurst",
+    "0.8",
+    "--q-l",
+    "6.283",
+    "--q-s",
+    "201",
+    "--rms-slope",
+    "0.1",
+    "--contact-modulus",
+    "1",
+    "--size",
+    "1",
+    "--grid",
+    "64",
+];
+
+fn run(extra: &[&str]) -> Value {
+    let args: Vec<&str> = SURFACE.iter().chain(extra).copied().collect();
+    json(&args)
+}
+
+fn f(v: &Value, key: &str) -> f64 {
+    v[key]
+        .as_f64()
+        .unwrap_or_else(|| panic!("no number `{key}` in {v}"))
+}
+
+/// Δγ → 0 is the non-adhesive contact: at the adhesive solve's mean gap and
+/// the pressure it carries, `bem rough` finds the same contact nodes and the
+/// same mean separation.
+#[test]
+fn vanishing_adhesion_is_the_non_adhesive_contact() {
+    let a = run(&[
+        "--work-of-adhesion",
+        "1e-14",
+        "--adhesion-range",
+        "0.02",
+        "--mean-gap",
+        "4e-3",
+        "--json",
+    ]);
+    let p = &a["points"][0];
+    let (pressure, fraction) = (f(p, "nominal_pressure"), f(p, "contact_fraction"));
+    assert!(pressure > 0.0, "{p}");
+    let b = run(&["--pressure", &format!("{pressure:e}"), "--json"]);
+    let q = &b["points"][0];
+    assert_eq!(f(q, "contact_fraction"), fraction, "{q}");
+    assert!(
+        (f(q, "mean_separation") - 4e-3).abs() < 1e-9,
+        "ū = {} against ḡ = 4e-3",
+        f(q, "mean_separation")
+    );
+}
+
+/// A sticky path in and out: tension on the way out, the pull-off is the
+/// largest tension, the fractions add up to at most 1, every solve converged
+/// and the Maugis–Dugdale cohesive stress Δγ/ρ bounds the tension.
+#[test]
+fn sticky_path_reaches_tension_and_reports_pull_off() {
+    let a = run(&[
+        "--work-of-adhesion",
+        "2e-4",
+        "--adhesion-range",
+        "0.02",
+        "--mean-gap",
+        "4e-3,2e-3,4e-3,8e-3,1.6e-2",
+        "--json",
+    ]);
+    let points = a["points"].as_array().expect("points");
+    assert_eq!(points.len(), 5);
+    let min_p = points
+        .iter()
+        .map(|p| f(p, "nominal_pressure"))
+        .fold(f64::INFINITY, f64::min);
+    assert!(min_p < 0.0, "no tension on the path: {a}");
+    assert_eq!(f(&a, "pull_off_stress"), -min_p);
+    for p in points {
+        let (c, z) = (f(p, "contact_fraction"), f(p, "cohesive_fraction"));
+        assert!((0.0..=1.0).contains(&c) && (0.0..=1.0).contains(&z) && c + z <= 1.0);
+        assert_eq!(p["converged"], Value::Bool(true), "{p}");
+    }
+    // The cohesive stress Δγ/ρ bounds every tension (Maugis–Dugdale).
+    assert!(-min_p <= f(&a, "cohesive_stress") * (1.0 + 1e-12));
+    assert_eq!(a["warnings"].as_array().map(Vec::len), Some(0), "{a}");
+}
+
+/// A range below the grid spacing L/N is warned of, by kind.
+#[test]
+fn unresolved_cohesive_zone_is_warned_of() {
+    let a = run(&[
+        "--work-of-adhesion",
+        "2e-5",
+        "--adhesion-range",
+        "1e-3",
+        "--adhesion",
+        "exponential",
+        "--mean-gap",
+        "4e-3",
+        "--json",
+    ]);
+    let kinds: Vec<&str> = a["warnings"]
+        .as_array()
+        .expect("warnings")
+        .iter()
+        .filter_map(|w| w["kind"].as_str())
+        .collect();
+    assert!(kinds.contains(&"cohesive_zone_unresolved"), "{kinds:?}");
+    assert_eq!(a["adhesion"], "exponential");
+}
+
+/// Bad input names its flag and never panics.
+#[test]
+fn bad_adhesion_input_names_the_flag() {
+    let cases: &[(&[&str], &str)] = &[
+        (
+            &[
+                "--work-of-adhesion",
+                "-1",
+                "--adhesion-range",
+                "0.02",
+                "--mean-gap",
+                "1e-3",
+            ],
+            "--work-of-adhesion",
+        ),
+        (
+            &[
+                "--work-of-adhesion",
+                "1e-4",
+                "--adhesion-range",
+                "0",
+                "--mean-gap",
+                "1e-3",
+            ],
+            "--adhesion-range",
+        ),
+        (
+            &[
+                "--work-of-adhesion",
+                "1e-4",
+                "--adhesion-range",
+                "0.02",
+                "--mean-gap",
+                "-1e-3",
+            ],
+            "--mean-gap",
+        ),
+        (
+            &["--work-of-adhesion", "1e-4", "--mean-gap", "1e-3"],
+            "--adhesion-range",
+        ),
+        (
+            &["--work-of-adhesion", "1e-4", "--adhesion-range", "0.02"],
+            "--mean-gap",
+        ),
+        (
+            &[
+                "--work-of-adhesion",
+                "1e-4",
+                "--adhesion-range",
+                "0.02",
+                "--mean-gap",
+                "1e-3",
+                "--boundary",
+                "free",
+            ],
+            "--boundary",
+        ),
+    ];
+    for (extra, flag) in cases {
+        let args: Vec<&str> = SURFACE.iter().chain(extra.iter()).copied().collect();
+        let (code, _, err) = persson(&args);
+        assert_eq!(code, 2, "{extra:?}: {err}");
+        assert!(err.contains(flag), "{extra:?}: {err}");
+        assert!(!err.contains("panicked"), "{err}");
+    }
+}
