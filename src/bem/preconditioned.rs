@@ -164,7 +164,7 @@
 //! ```text
 //!                 N = 256          512              1024             2048
 //! σ0 = 0.005 E*   28 / 31.4 (30)   35 / 39.1 (39)   44 / 49.1 (49)   56 / 62.1 (62)
-//! σ0 = 0.05 E*    32 / 35.3 (34)   43 / 47.6 (45)   56 / 61.8 (59)   FINE2048 / TOTAL2048 (84)
+//! σ0 = 0.05 E*    32 / 35.3 (34)   43 / 47.6 (45)   56 / 61.8 (59)   80 / 87.9 (84)
 //! ```
 //! Coarse ε 1e-2 (512²: 36 / 38.0, 43 / 45.2), a single coarse level
 //! (1024²: 43 / 46.0, 56 / 58.5), bilinear prolongation (256²: 28 / 29.9,
@@ -173,7 +173,7 @@
 //! fine count falls by 3–10 %, the total by ≤ 6 % and mostly not at all,
 //! and the count still grows with N. The free set's last change on the fine
 //! grid barely moves (σ0 = 0.05 E*: iteration 26 cold and nested at 512²,
-//! 32 and 32 at 1024²; 0.005 E*: 20 → 16, 31 → 27, 47 → 38 at 512² / 1024²
+//! 32 and 32 at 1024², 63 → 57 at 2048²; 0.005 E*: 20 → 16, 31 → 27, 47 → 38 at 512² / 1024²
 //! / 2048²): with q_s = N/4 q_l each doubling adds the octave of roughness
 //! that carries the most slope (H = 0.8), so the coarse contact set does not
 //! predict the fine one. Not adopted. Counted, not timed (load 5.0–6.8).
