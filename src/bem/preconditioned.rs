@@ -151,6 +151,33 @@
 //! factor (the far field is a coarse circulant), and the projection without
 //! its extra transforms.
 //!
+//! # A nested-iteration start, measured and not adopted
+//! The third attempt of issue 22 (`examples/bem_nested.py`, the numpy
+//! replica of this loop with its exact counts; rough case, periodic): the
+//! fine solve starts from the solution of the same realisation on the N/2
+//! grid (Fourier-filtered at the coarse Nyquist; recursively down to 64²,
+//! each level to ε = 1e-4), prolonged piecewise constant and rescaled to the
+//! load (as [`super::Start::Rescaled`]); the fine loop is unchanged
+//! (ε ≤ 1e-10, same answer). Fine iterations / total cost in fine-size
+//! iterations (a level N/2ˡ costs 4⁻ˡ per iteration), cold start in
+//! brackets:
+//! ```text
+//!                 N = 256          512              1024             2048
+//! σ0 = 0.005 E*   28 / 31.4 (30)   35 / 39.1 (39)   44 / 49.1 (49)   56 / 62.1 (62)
+//! σ0 = 0.05 E*    32 / 35.3 (34)   43 / 47.6 (45)   56 / 61.8 (59)   80 / 87.9 (84)
+//! ```
+//! Coarse ε 1e-2 (512²: 36 / 38.0, 43 / 45.2), a single coarse level
+//! (1024²: 43 / 46.0, 56 / 58.5), bilinear prolongation (256²: 28 / 29.9,
+//! 33 / 34.8), tight coarse solves (256², ε 1e-8: 28 / 34.4, 32 / 38.8) and
+//! injected coarse heights (512²: 35 / 39.2, 43 / 47.4) do no better: the
+//! fine count falls by 3–10 %, the total by ≤ 6 % and mostly not at all,
+//! and the count still grows with N. The free set's last change on the fine
+//! grid barely moves (σ0 = 0.05 E*: iteration 26 cold and nested at 512²,
+//! 32 and 32 at 1024², 63 → 57 at 2048²; 0.005 E*: 20 → 16, 31 → 27, 47 → 38 at 512² / 1024²
+//! / 2048²): with q_s = N/4 q_l each doubling adds the octave of roughness
+//! that carries the most slope (H = 0.8), so the coarse contact set does not
+//! predict the fine one. Not adopted. Counted, not timed (load 5.0–6.8).
+//!
 //! # Stall and fallback
 //! ε is not monotone in a projected CG. When the best ε has not halved
 //! within `stall_iterations` iterations, or a step is degenerate (no descent
