@@ -145,6 +145,7 @@ fn commands(out_dir: &Path) -> Vec<Vec<Vec<String>>> {
         "stress --start hertz --g 0.6 --points 11",
         "stress --example --ball-radius 0.01 --load 10 --zeta 10 --yield-stress 1e8 --points 5",
         "separation --example",
+        "separation --example --pressure 1e6 --separation-density --density-points 3",
         "adhesion --hurst 0.8 --q-l 1e4 --q-s 1e6 --c-r 1e-19 --contact-modulus 1e6 --work-of-adhesion 1 --pressure -1e5,-4e4,1e3 --adhesion-range 1e-9 --points 3",
         "friction --example --standard-linear-solid 3e8,3e6,1e-4 --pressure 2e5 --velocity 1e-2,1 --flash-temperature --thermal-conductivity 0.25 --density 1200 --heat-capacity 1500",
         "conductance --example --conductivity 50,20 --resistivity 1e-7 --gas-conductivity 0.026 --mean-free-path 7e-8",

@@ -34,6 +34,16 @@ pub struct Args {
     /// (a single pressure σ0: σ0/100 to 100 σ0).
     #[arg(long, default_value_t = 60, allow_hyphen_values = true, value_parser = super::number::count)]
     plot_points: usize,
+    /// Report the distribution of interfacial separations P(u) at each
+    /// pressure instead: the contact's weight A/A0 at u = 0 and the continuous
+    /// part P_nc(u) (JSON: on --density-points separations), with the checks
+    /// A/A0 + ∫P_nc du = 1 and ∫u P du = ū.
+    #[arg(long, conflicts_with_all = ["plot", "plot_area"])]
+    separation_density: bool,
+    /// Separations u (from 0 to where P_nc is negligible) per pressure for
+    /// --separation-density.
+    #[arg(long, default_value_t = 101, requires = "separation_density", allow_hyphen_values = true, value_parser = super::number::count)]
+    density_points: usize,
 }
 
 /// Run `persson separation`.
@@ -45,6 +55,22 @@ pub fn run(a: Args) -> anyhow::Result<()> {
     plot_area.check()?;
     let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
     let pressures = pressures(&a.pressure, a.spectrum.example)?;
+    if a.separation_density {
+        if a.density_points < 2 {
+            anyhow::bail!("--density-points {}: need at least 2", a.density_points);
+        }
+        let report = persson_studies::scene::separation_density::separation_density(
+            &surface,
+            &pressures,
+            a.density_points,
+            a.tolerance,
+        )
+        .map_err(|e| match super::args::flag_of(&e, DENSITY_FLAGS) {
+            Some(flag) => anyhow::anyhow!("{flag}: {e}"),
+            None => e.into(),
+        })?;
+        return print_warned(&report, &report.warnings, &a.format);
+    }
     let grid = if a.plot.plot.is_some() || plot_area.plot.is_some() {
         plot_pressures(&pressures, a.plot_points)?
     } else {
@@ -90,3 +116,10 @@ fn plot_pressures(given: &[f64], n: usize) -> anyhow::Result<Vec<f64>> {
         .map(|i| (a + (b - a) * i as f64 / (n - 1) as f64).exp())
         .collect())
 }
+
+/// The flags of the fields P(u) names in its errors.
+const DENSITY_FLAGS: &[(&str, &str)] = &[
+    ("nominal_pressure", "--pressure"),
+    ("tolerance", "--tolerance"),
+    ("points", "--density-points"),
+];

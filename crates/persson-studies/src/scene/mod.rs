@@ -43,6 +43,7 @@ pub mod plot;
 pub mod report;
 pub mod run;
 pub mod schema;
+pub mod separation_density;
 pub mod transport;
 #[cfg(feature = "flow")]
 pub mod transport_bem;

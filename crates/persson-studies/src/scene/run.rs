@@ -95,7 +95,7 @@ impl RoughContact {
         Persson::new(self.spectrum.as_ref(), self.contact_modulus)
     }
 
-    fn band(&self) -> (f64, f64) {
+    pub(crate) fn band(&self) -> (f64, f64) {
         (self.spectrum.q_min(), self.spectrum.q_max())
     }
 }
