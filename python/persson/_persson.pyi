@@ -317,7 +317,7 @@ def bem_solve(
     """One FFT-BEM solve: (pressure N×N, gap N×N, summary)."""
 def bem_rough(
     contact_modulus: float,
-    pressure: ArrayLike,
+    pressure: Optional[ArrayLike] = None,
     *,
     heights: Optional[FloatArray] = None,
     size: Optional[float] = None,
@@ -329,8 +329,13 @@ def bem_rough(
     bins: Optional[int] = None,
     tolerance: float = 1e-10,
     max_iterations: int = 10000,
+    work_of_adhesion: Optional[float] = None,
+    adhesion_range: Optional[float] = None,
+    adhesion: Literal["maugis", "exponential"] = "maugis",
+    mean_gap: Optional[ArrayLike] = None,
 ) -> Report:
-    """`persson bem rough --json`."""
+    """`persson bem rough --json`; with `work_of_adhesion`, `adhesion_range` and
+    `mean_gap` instead of `pressure`, `persson bem rough --work-of-adhesion --json`."""
 def bem_hertz(
     *,
     grid: int = 256,

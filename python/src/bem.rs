@@ -9,6 +9,7 @@ use persson::bem::rough::{self, RoughOptions, SurfaceOrigin};
 use persson::bem::surface::{synthesize as synth, GridSurface};
 use persson::bem::{check_memory, Boundary, Control, Operator, Options, Solver};
 use persson::error::check;
+use persson_studies::bem_detail::{adhesive_path, adhesive_warnings, LawKind};
 use persson_studies::scene::BoundaryName;
 use persson_studies::validation::{self, ComparisonConfig, SweepSettings, UserData, UserHistogram};
 use pyo3::prelude::*;
@@ -157,16 +158,21 @@ fn bem_solve<'py>(
 /// on a surface synthesised from `spectrum` on `grid`² nodes with `seed`
 /// (side `size`, default 2π/q_l); with `bins`, each solve's pressure
 /// histogram.
+///
+/// With `work_of_adhesion` Δγ, `adhesion_range` ρ and `mean_gap` (a list,
+/// in order) instead of `pressure`: `persson bem rough --work-of-adhesion
+/// --json`, the adhesive BEM (`adhesion` "maugis" or "exponential") along
+/// the mean-gap path, periodic.
 #[pyfunction]
 #[pyo3(
-    signature = (contact_modulus, pressure, *, heights=None, size=None, spectrum=None, grid=None, seed=Seed(1), boundary="periodic", yield_stress=None, bins=None, tolerance=1e-10, max_iterations=10_000),
-    text_signature = "(contact_modulus, pressure, *, heights=None, size=None, spectrum=None, grid=None, seed=1, boundary='periodic', yield_stress=None, bins=None, tolerance=1e-10, max_iterations=10000)"
+    signature = (contact_modulus, pressure=None, *, heights=None, size=None, spectrum=None, grid=None, seed=Seed(1), boundary="periodic", yield_stress=None, bins=None, tolerance=1e-10, max_iterations=10_000, work_of_adhesion=None, adhesion_range=None, adhesion="maugis", mean_gap=None),
+    text_signature = "(contact_modulus, pressure=None, *, heights=None, size=None, spectrum=None, grid=None, seed=1, boundary='periodic', yield_stress=None, bins=None, tolerance=1e-10, max_iterations=10000, work_of_adhesion=None, adhesion_range=None, adhesion='maugis', mean_gap=None)"
 )]
 #[allow(clippy::too_many_arguments)]
 fn bem_rough<'py>(
     py: Python<'py>,
     contact_modulus: f64,
-    pressure: &Bound<'py, PyAny>,
+    pressure: Option<&Bound<'py, PyAny>>,
     heights: Option<&Bound<'py, PyAny>>,
     size: Option<f64>,
     spectrum: Option<&Spectrum>,
@@ -177,24 +183,97 @@ fn bem_rough<'py>(
     bins: Option<usize>,
     tolerance: f64,
     max_iterations: usize,
+    work_of_adhesion: Option<f64>,
+    adhesion_range: Option<f64>,
+    adhesion: &str,
+    mean_gap: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let Seed(seed) = seed;
-    let pressures = float_list("pressure", pressure)?;
     let b = self::boundary(boundary)?;
+    let source = (heights, size, spectrum, grid, seed);
+    if let Some(dg) = work_of_adhesion {
+        if pressure.is_some() || yield_stress.is_some() || bins.is_some() {
+            return Err(value_error(
+                "work_of_adhesion: solves at mean_gap; pressure, yield_stress and bins do not apply",
+            ));
+        }
+        if b != Boundary::Periodic {
+            return Err(value_error(
+                "boundary: the adhesive BEM of bem_rough is periodic (mean-gap control)",
+            ));
+        }
+        let range = adhesion_range
+            .ok_or_else(|| value_error("adhesion_range: required with work_of_adhesion"))?;
+        let gaps = float_list(
+            "mean_gap",
+            mean_gap.ok_or_else(|| value_error("mean_gap: required with work_of_adhesion"))?,
+        )?;
+        let kind = match adhesion {
+            "maugis" => LawKind::Maugis,
+            "exponential" => LawKind::Exponential,
+            other => {
+                return Err(value_error(format!(
+                    "adhesion {other:?}: one of 'maugis', 'exponential'"
+                )))
+            }
+        };
+        let opts = persson::bem::adhesive::AdhesiveOptions {
+            tolerance: check::tolerance("tolerance", tolerance).map_err(err)?,
+            max_iterations,
+        };
+        let (s, _) = grid_surface(py, source, b)?;
+        let r = py
+            .detach(|| {
+                adhesive_path(
+                    &s.heights,
+                    (s.n, s.size, contact_modulus),
+                    (kind, dg, range),
+                    &gaps,
+                    &opts,
+                )
+            })
+            .map_err(err)?;
+        return to_dict_warned(py, &r, &adhesive_warnings(&r));
+    }
+    let pressures = float_list(
+        "pressure",
+        pressure.ok_or_else(|| value_error("pressure: required (or work_of_adhesion)"))?,
+    )?;
     let opts = RoughOptions {
         boundary: b,
         solver: options(tolerance, max_iterations, yield_stress)?,
         bins,
         ..RoughOptions::default()
     };
-    let r = match (heights, spectrum, grid) {
+    let (s, origin) = grid_surface(py, source, b)?;
+    let r = py
+        .detach(|| rough::rough_contact(&s, origin, contact_modulus, &pressures, &opts, &mut ()))
+        .map_err(err)?;
+    to_dict_warned(py, &r, &persson_studies::warning::of_rough(&r))
+}
+
+/// `bem_rough`'s surface arguments: heights, size, spectrum, grid, seed.
+type SurfaceArgs<'a, 'py> = (
+    Option<&'a Bound<'py, PyAny>>,
+    Option<f64>,
+    Option<&'a Spectrum>,
+    Option<usize>,
+    u64,
+);
+
+/// The surface of `bem_rough`: a height map given, or one synthesised.
+fn grid_surface(
+    py: Python<'_>,
+    (heights, size, spectrum, grid, seed): SurfaceArgs<'_, '_>,
+    b: Boundary,
+) -> PyResult<(GridSurface, SurfaceOrigin)> {
+    match (heights, spectrum, grid) {
         (Some(h), None, None) => {
             let size = size.ok_or_else(|| value_error("size: required with heights"))?;
-            let s = surface(h, size)?;
-            let source = SurfaceOrigin::height_map(Path::new("(array)"));
-            py.detach(|| {
-                rough::rough_contact(&s, source, contact_modulus, &pressures, &opts, &mut ())
-            })
+            Ok((
+                surface(h, size)?,
+                SurfaceOrigin::height_map(Path::new("(array)")),
+            ))
         }
         (None, Some(sp), Some(n)) => {
             let shared = &sp.shared;
@@ -204,19 +283,17 @@ fn bem_rough<'py>(
                     "size",
                     size.unwrap_or(std::f64::consts::TAU / shared.0.q_min()),
                 )?;
-                let s = synth(shared, n, size, seed)?;
-                let source = SurfaceOrigin::synthesised(shared, seed)?;
-                rough::rough_contact(&s, source, contact_modulus, &pressures, &opts, &mut ())
+                Ok((
+                    synth(shared, n, size, seed)?,
+                    SurfaceOrigin::synthesised(shared, seed)?,
+                ))
             })
+            .map_err(err)
         }
-        _ => {
-            return Err(value_error(
-                "no surface: give heights and size, or spectrum and grid",
-            ))
-        }
+        _ => Err(value_error(
+            "no surface: give heights and size, or spectrum and grid",
+        )),
     }
-    .map_err(err)?;
-    to_dict_warned(py, &r, &persson_studies::warning::of_rough(&r))
 }
 
 /// `persson bem hertz --json`: the BEM against the Hertz closed form (a

@@ -142,3 +142,21 @@ def test_solve_releases_the_interpreter():
     inside = [x for x in ticks if start < x < end]
     assert end - start > 0.02, "solve too short to tell"
     assert len(inside) >= 5, (len(inside), end - start)
+
+
+def test_adhesive_rough_matches_cli():
+    """`bem_rough(work_of_adhesion=…)` is `persson bem rough --work-of-adhesion --json`,
+    warnings included (the range here is below the grid spacing 1/32)."""
+    args = dict(work_of_adhesion=2e-5, adhesion_range=1e-2, adhesion="exponential",
+                mean_gap=[4e-3, 2e-3, 8e-3])
+    cli = run_cli("bem", "rough", *SPEC, "--contact-modulus", 1, "--grid", 32, "--seed", 3,
+                  "--work-of-adhesion", 2e-5, "--adhesion-range", 1e-2, "--adhesion",
+                  "exponential", "--mean-gap", "4e-3,2e-3,8e-3")
+    with pytest.warns(UserWarning, match="cohesive zone is not resolved"):
+        r = persson.bem_rough(1.0, spectrum=spectrum(), grid=32, seed=3, **args)
+    same(r, cli)
+    assert [w["kind"] for w in r["warnings"]] == ["cohesive_zone_unresolved"]
+    assert r["pull_off_stress"] == -min(0.0, *(p["nominal_pressure"] for p in r["points"]))
+    with pytest.raises(ValueError, match="mean_gap"):
+        persson.bem_rough(1.0, spectrum=spectrum(), grid=32, work_of_adhesion=1e-5,
+                          adhesion_range=1e-2)

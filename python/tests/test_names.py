@@ -20,7 +20,7 @@ NAMES_MD = pathlib.Path(__file__).resolve().parents[2] / "src" / "names.md"
 # this list short: a quantity belongs in src/names.md.
 NOT_QUANTITIES = {
     "spectrum", "heights", "path", "topography", "scene", "table",  # inputs
-    "theory", "theories", "start", "boundary", "convention", "detrend", "window", "law",  # closed sets
+    "theory", "theories", "start", "boundary", "convention", "detrend", "window", "law", "adhesion",  # closed sets
     "points", "error_bound", "fill_undefined", "periodic",  # how to compute or show
     "ball", "cylinder",  # (radius, load) pairs of a smooth start
     "data", "data_histogram",  # the user's CSV files
