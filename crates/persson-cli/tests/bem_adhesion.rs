@@ -176,6 +176,18 @@ fn bad_adhesion_input_names_the_flag() {
                 "0.02",
                 "--mean-gap",
                 "1e-3",
+                "--patches",
+            ],
+            "--patches",
+        ),
+        (
+            &[
+                "--work-of-adhesion",
+                "1e-4",
+                "--adhesion-range",
+                "0.02",
+                "--mean-gap",
+                "1e-3",
                 "--boundary",
                 "free",
             ],

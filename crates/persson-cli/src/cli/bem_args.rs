@@ -240,7 +240,10 @@ pub struct AdhesionBemArgs {
         long,
         requires = "adhesion_range",
         requires = "mean_gap",
-        conflicts_with_all = ["pressure", "yield_stress", "plot", "histogram", "pressure_field"],
+        conflicts_with_all = [
+            "pressure", "yield_stress", "plot", "histogram", "pressure_field", "patches",
+            "subsurface", "leakage", "conductivity", "resistivity", "gas_conductivity", "gap_field",
+        ],
         allow_hyphen_values = true,
         value_parser = super::number::number
     )]
