@@ -202,3 +202,56 @@ fn bad_adhesion_input_names_the_flag() {
         assert!(!err.contains("panicked"), "{err}");
     }
 }
+
+/// `bem hertz --work-of-adhesion`: at a small Maugis parameter (λ ≈ 0.05,
+/// ρ = 0.05 L resolved by 3 grid spacings at 64²) the sphere's pull-off
+/// approaches DMT's 2πRΔγ from below as the grid is refined (measured
+/// 1.9646 at 32², 1.9770 at 64²); JKR's and DMT's forces and λ are the
+/// closed forms.
+#[test]
+fn adhesive_sphere_tends_to_dmt_at_small_maugis_parameter() {
+    let r = json(&[
+        "bem",
+        "hertz",
+        "--grid",
+        "32,64",
+        "--boundary",
+        "periodic",
+        "--work-of-adhesion",
+        "1e-4",
+        "--adhesion-range",
+        "0.05",
+        "--json",
+    ]);
+    let pi = std::f64::consts::PI;
+    assert!((f(&r, "jkr_pull_off_force") - 1.5 * pi * 1e-4).abs() < 1e-18);
+    assert!((f(&r, "dmt_pull_off_force") - 2.0 * pi * 1e-4).abs() < 1e-18);
+    let lambda = 1e-4 / 0.05 * (9.0 / (2.0 * pi * 1e-4)).cbrt();
+    assert!((f(&r, "maugis_parameter") - lambda).abs() < 1e-14 * lambda);
+    let grids = r["per_grid"].as_array().expect("per_grid");
+    let ratio: Vec<f64> = grids
+        .iter()
+        .map(|g| f(g, "reduced_pull_off_force"))
+        .collect();
+    assert!(ratio[0] < ratio[1] && ratio[1] < 2.0, "{ratio:?}");
+    assert!(2.0 - ratio[1] < 0.03, "{ratio:?}");
+    assert_eq!(r["warnings"].as_array().map(Vec::len), Some(0), "{r}");
+}
+
+#[test]
+fn adhesive_sphere_bad_input_names_the_flag() {
+    for (extra, flag) in [
+        (&["--adhesion-range", "0.05"][..], "--boundary"),
+        (
+            &["--adhesion-range", "-1", "--boundary", "periodic"][..],
+            "--adhesion-range",
+        ),
+        (&["--boundary", "periodic"][..], "--adhesion-range"),
+    ] {
+        let mut args = vec!["bem", "hertz", "--grid", "16", "--work-of-adhesion", "1e-4"];
+        args.extend_from_slice(extra);
+        let (code, _, err) = persson(&args);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(err.contains(flag), "{args:?}: {err}");
+    }
+}

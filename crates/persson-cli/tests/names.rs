@@ -153,6 +153,7 @@ fn commands(out_dir: &Path) -> Vec<Vec<Vec<String>>> {
         "leakage --example --viscosity 1e-5 --inlet-pressure 2e5 --outlet-pressure 1e5",
         "bem rough --example --grid 32 --conductivity 50 --resistivity 1e-7 --gas-conductivity 0.026 --mean-free-path 7e-8 --leakage --viscosity 1e-3 --pressure-drop 1e5",
         "bem hertz --grid 32",
+        "bem hertz --grid 16 --boundary periodic --work-of-adhesion 1e-4 --adhesion-range 0.01",
         "bem rough --example --grid 32 --work-of-adhesion 1e-3 --adhesion-range 1e-7 --mean-gap 1e-6,2e-6",
         "bem hertz --grid 16,32 --yield-stress 0.05",
         "bem rough --example --grid 32",

@@ -23,6 +23,7 @@ use persson_studies::bem_detail::Details;
 pub fn run(a: Args) -> anyhow::Result<()> {
     match a.cmd {
         Cmd::Hertz(h) if h.subsurface => hertz_subsurface(&h),
+        Cmd::Hertz(h) if h.work_of_adhesion.is_some() => adhesive_hertz(&h),
         Cmd::Hertz(h) => {
             let grid = match (h.grid.as_slice(), h.yield_stress) {
                 (_, Some(y)) => return plastic_disc(&h, y),
@@ -302,7 +303,7 @@ fn rough_surface(
 
 /// `bem rough --work-of-adhesion`: the adhesive BEM along the --mean-gap path.
 fn adhesive_rough(a: &RoughArgs, work_of_adhesion: f64) -> anyhow::Result<()> {
-    use persson_studies::bem_detail::{adhesive_path, adhesive_warnings, LawKind};
+    use persson_studies::bem_detail::{adhesive_path, adhesive_warnings};
     let ad = &a.adhesion;
     if !(work_of_adhesion.is_finite() && work_of_adhesion > 0.0) {
         anyhow::bail!("--work-of-adhesion {work_of_adhesion}: must be finite and > 0 (J/m²)");
@@ -333,11 +334,7 @@ fn adhesive_rough(a: &RoughArgs, work_of_adhesion: f64) -> anyhow::Result<()> {
     if let Some(path) = &a.surface_out {
         npy::write(path, surface.n, surface.n, &surface.heights)?;
     }
-    let kind = if ad.adhesion == "exponential" {
-        LawKind::Exponential
-    } else {
-        LawKind::Maugis
-    };
+    let kind = law_kind(&ad.adhesion);
     let options = persson::bem::adhesive::AdhesiveOptions {
         tolerance: check::tolerance("tolerance", a.solver.tolerance)
             .map_err(|e| anyhow::anyhow!("--tolerance: {e}"))?,
@@ -357,6 +354,61 @@ fn adhesive_rough(a: &RoughArgs, work_of_adhesion: f64) -> anyhow::Result<()> {
     let mut warnings = a.spectrum.file_warnings();
     warnings.extend(adhesive_warnings(&report));
     print_narrowed(&report, &warnings, &a.format, a.wide)
+}
+
+/// `bem hertz --work-of-adhesion`: the adhesive sphere's pull-off on each grid.
+fn adhesive_hertz(h: &HertzArgs) -> anyhow::Result<()> {
+    use persson_studies::bem_detail::{adhesive_sphere, sphere_warnings};
+    let dg = h.work_of_adhesion.unwrap_or(0.0);
+    if !(dg.is_finite() && dg > 0.0) {
+        anyhow::bail!("--work-of-adhesion {dg}: must be finite and > 0");
+    }
+    let range = h
+        .adhesion_range
+        .context("--work-of-adhesion needs --adhesion-range")?;
+    if !(range.is_finite() && range > 0.0) {
+        anyhow::bail!("--adhesion-range {range}: must be finite and > 0");
+    }
+    if h.boundary != persson::bem::Boundary::Periodic {
+        anyhow::bail!(
+            "--boundary {}: the adhesive sphere of `bem hertz` is solved on a periodic cell \
+             (give --boundary periodic)",
+            h.boundary.name()
+        );
+    }
+    for (flag, v) in [
+        ("--size", h.size),
+        ("--radius", h.radius),
+        ("--contact-modulus", h.contact_modulus),
+    ] {
+        if !(v.is_finite() && v > 0.0) {
+            anyhow::bail!("{flag} {v}: must be finite and > 0");
+        }
+    }
+    let options = persson::bem::adhesive::AdhesiveOptions {
+        tolerance: check::tolerance("tolerance", h.solver.tolerance)
+            .map_err(|e| anyhow::anyhow!("--tolerance: {e}"))?,
+        max_iterations: h.solver.max_iterations,
+    };
+    let report = adhesive_sphere(
+        &h.grid,
+        (h.size, h.radius, h.contact_modulus),
+        (law_kind(&h.adhesion), dg, range),
+        &options,
+    )
+    .map_err(|e| match super::args::flag_of(&e, ADHESION_FLAGS) {
+        Some(flag) => anyhow::anyhow!("{flag}: {e}"),
+        None => e.into(),
+    })?;
+    print_narrowed(&report, &sphere_warnings(&report), &h.format, h.wide)
+}
+
+/// The cohesive law named by `--adhesion`.
+fn law_kind(name: &str) -> persson_studies::bem_detail::LawKind {
+    match name {
+        "exponential" => persson_studies::bem_detail::LawKind::Exponential,
+        _ => persson_studies::bem_detail::LawKind::Maugis,
+    }
 }
 
 /// The flags of the fields the adhesive solver names in its errors.

@@ -87,6 +87,23 @@ pub struct HertzArgs {
     /// vertical section through the axis (z/a ≤ 2, |r|/a ≤ 3) as a colour map.
     #[arg(long, requires = "subsurface", value_name = "FILE.svg|png")]
     pub stress_plot: Option<PathBuf>,
+    /// Work of adhesion Δγ (unit of E* L): the adhesive sphere instead, its
+    /// pull-off force on each --grid against JKR (1.5πRΔγ) and DMT (2πRΔγ),
+    /// on a periodic cell under mean-gap control.
+    #[arg(
+        long,
+        requires = "adhesion_range",
+        conflicts_with_all = ["yield_stress", "subsurface", "contact_radius"],
+        allow_hyphen_values = true,
+        value_parser = super::number::number
+    )]
+    pub work_of_adhesion: Option<f64>,
+    /// Range ρ of the cohesive law (unit of L).
+    #[arg(long, requires = "work_of_adhesion", allow_hyphen_values = true, value_parser = super::number::number)]
+    pub adhesion_range: Option<f64>,
+    /// Cohesive law of the adhesive sphere.
+    #[arg(long, default_value = "maugis", value_parser = ["maugis", "exponential"])]
+    pub adhesion: String,
     #[command(flatten)]
     pub solver: SolverArgs,
     /// Text tables with every column (default: each fits 100 characters, the

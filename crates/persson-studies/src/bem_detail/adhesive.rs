@@ -185,3 +185,179 @@ impl Tabulate for AdhesiveBemReport {
         vec![t]
     }
 }
+
+/// The pull-off of a sphere from the adhesive BEM on one grid.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[non_exhaustive]
+pub struct SpherePullOff {
+    /// Grid side N.
+    pub grid: usize,
+    /// The pull-off force F = L² max(−p̄) over the path (unit of E* L²).
+    pub pull_off_force: f64,
+    /// F/(π R Δγ): JKR's 1.5, DMT's 2.
+    pub reduced_pull_off_force: f64,
+    /// Points the plain iteration finished after the preconditioned one stalled.
+    pub fallbacks: usize,
+    /// The path in and out (mean gaps, pressures, fractions).
+    pub points: Vec<AdhesivePoint>,
+}
+
+/// The adhesive sphere (`bem hertz --work-of-adhesion`): the pull-off force
+/// against JKR's and DMT's limits at the Maugis parameter λ of the law.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[non_exhaustive]
+pub struct AdhesiveSphereReport {
+    /// Side L of the periodic cell (unit of length).
+    pub size: f64,
+    /// Sphere radius R.
+    pub radius: f64,
+    /// E*.
+    pub contact_modulus: f64,
+    /// The cohesive law.
+    pub adhesion: LawKind,
+    /// Δγ.
+    pub work_of_adhesion: f64,
+    /// ρ.
+    pub adhesion_range: f64,
+    /// λ = (Δγ/ρ)(9R/(2πΔγE*²))^{1/3} (Maugis 1992; with ρ the
+    /// Maugis–Dugdale range, h0 = ρ).
+    pub maugis_parameter: f64,
+    /// JKR's pull-off force 1.5 π R Δγ (λ → ∞).
+    pub jkr_pull_off_force: f64,
+    /// DMT's pull-off force 2 π R Δγ (λ → 0).
+    pub dmt_pull_off_force: f64,
+    /// One row per grid.
+    pub per_grid: Vec<SpherePullOff>,
+}
+
+/// A sphere h = −r²/(2R) centred in the periodic cell of side `size`,
+/// approached and retracted under mean-gap control on each of `grids`.
+///
+/// The path: from ḡ = ḡ_touch + 2ρ (out of range) in to ḡ_touch − 1.5 δ_s in
+/// 10 steps, then out to ḡ_touch + 5 δ_s + 2ρ in 50 steps, with ḡ_touch the
+/// mean gap at first touch and δ_s = (π² Δγ² R / E*²)^{1/3} the JKR approach
+/// scale; the cell must hold the contact (a JKR radius well below L/2).
+///
+/// # Errors
+/// As [`adhesive_path`].
+pub fn adhesive_sphere(
+    grids: &[usize],
+    (size, radius, contact_modulus): (f64, f64, f64),
+    (kind, work_of_adhesion, adhesion_range): (LawKind, f64, f64),
+    options: &AdhesiveOptions,
+) -> Result<AdhesiveSphereReport> {
+    use std::f64::consts::PI;
+    let dg = work_of_adhesion;
+    let approach_scale = (PI * PI * dg * dg * radius / (contact_modulus * contact_modulus)).cbrt();
+    let per_grid = grids
+        .iter()
+        .map(|&n| {
+            let h = sphere(n, size, radius);
+            let h_max = h.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+            let touch = h.iter().map(|v| h_max - v).sum::<f64>() / (n * n) as f64;
+            let start = touch + 2.0 * adhesion_range;
+            let deepest = touch - 1.5 * approach_scale;
+            let last = touch + 5.0 * approach_scale + 2.0 * adhesion_range;
+            let mut gaps: Vec<f64> = (0..=10)
+                .map(|k| start + (deepest - start) * k as f64 / 10.0)
+                .collect();
+            gaps.extend((1..=50).map(|k| deepest + (last - deepest) * k as f64 / 50.0));
+            let r = adhesive_path(
+                &h,
+                (n, size, contact_modulus),
+                (kind, work_of_adhesion, adhesion_range),
+                &gaps,
+                options,
+            )?;
+            let force = r.pull_off_stress * size * size;
+            Ok(SpherePullOff {
+                grid: n,
+                pull_off_force: force,
+                reduced_pull_off_force: force / (PI * radius * dg),
+                fallbacks: r.points.iter().filter(|p| p.fallback.is_some()).count(),
+                points: r.points,
+            })
+        })
+        .collect::<Result<Vec<_>>>()?;
+    Ok(AdhesiveSphereReport {
+        size,
+        radius,
+        contact_modulus,
+        adhesion: kind,
+        work_of_adhesion,
+        adhesion_range,
+        maugis_parameter: dg / adhesion_range
+            * (9.0 * radius / (2.0 * PI * dg * contact_modulus * contact_modulus)).cbrt(),
+        jkr_pull_off_force: 1.5 * PI * radius * dg,
+        dmt_pull_off_force: 2.0 * PI * radius * dg,
+        per_grid,
+    })
+}
+
+/// Heights −r²/(2R) of a sphere centred in the cell, at the cell centres.
+fn sphere(n: usize, size: f64, radius: f64) -> Vec<f64> {
+    let dx = size / n as f64;
+    (0..n * n)
+        .map(|k| {
+            let x = ((k / n) as f64 + 0.5) * dx - 0.5 * size;
+            let y = ((k % n) as f64 + 0.5) * dx - 0.5 * size;
+            -(x * x + y * y) / (2.0 * radius)
+        })
+        .collect()
+}
+
+impl Tabulate for AdhesiveSphereReport {
+    fn tables(&self) -> Vec<Table> {
+        let mut t = Table::new(
+            "bem_adhesive_sphere",
+            format!(
+                "Adhesive sphere ({}, periodic cell): pull-off force against JKR and DMT",
+                match self.adhesion {
+                    LawKind::Maugis => "Maugis–Dugdale",
+                    LawKind::Exponential => "exponential law",
+                }
+            ),
+        )
+        .scalar("maugis_parameter", "Maugis λ", self.maugis_parameter)
+        .scalar("jkr_pull_off_force", "JKR 1.5πRΔγ", self.jkr_pull_off_force)
+        .scalar("dmt_pull_off_force", "DMT 2πRΔγ", self.dmt_pull_off_force)
+        .column("grid", "N")
+        .column("pull_off_force", "F")
+        .column_digits("reduced_pull_off_force", "F/(πRΔγ)", 5)
+        .column("fallbacks", "fallbacks");
+        for g in &self.per_grid {
+            t.push(vec![
+                g.grid.into(),
+                g.pull_off_force.into(),
+                g.reduced_pull_off_force.into(),
+                g.fallbacks.into(),
+            ]);
+        }
+        vec![t]
+    }
+}
+
+/// The warnings of an adhesive sphere: as [`adhesive_warnings`] on each grid.
+pub fn sphere_warnings(r: &AdhesiveSphereReport) -> Vec<Warning> {
+    let mut out: Vec<Warning> = Vec::new();
+    for g in &r.per_grid {
+        let path = AdhesiveBemReport {
+            grid: g.grid,
+            size: r.size,
+            contact_modulus: r.contact_modulus,
+            adhesion: r.adhesion,
+            work_of_adhesion: r.work_of_adhesion,
+            adhesion_range: r.adhesion_range,
+            cohesive_stress: r.work_of_adhesion / r.adhesion_range,
+            tolerance: 0.0,
+            points: g.points.clone(),
+            pull_off_stress: 0.0,
+        };
+        for w in adhesive_warnings(&path) {
+            if !out.contains(&w) {
+                out.push(w);
+            }
+        }
+    }
+    out
+}

@@ -35,7 +35,10 @@ mod solves;
 
 use serde::Serialize;
 
-pub use adhesive::{adhesive_path, adhesive_warnings, AdhesiveBemReport, LawKind};
+pub use adhesive::{
+    adhesive_path, adhesive_sphere, adhesive_warnings, sphere_warnings, AdhesiveBemReport,
+    AdhesiveSphereReport, LawKind, SpherePullOff,
+};
 pub use section::{hertz_section, VerticalSection};
 pub use solves::{indexed, Details, StressMap, SubsurfaceOptions, DEFAULT_POISSON};
 
