@@ -348,6 +348,9 @@ def bem_hertz(
     max_iterations: int = 10000,
     yield_stress: Optional[float] = None,
     grids: Optional[Sequence[int]] = None,
+    work_of_adhesion: Optional[float] = None,
+    adhesion_range: Optional[float] = None,
+    adhesion: Literal["maugis", "exponential"] = "maugis",
 ) -> Report:
     """`persson bem hertz --json`; with `yield_stress`, `bem hertz --yield-stress` on `grids`."""
 def contact_patches(

@@ -9,7 +9,9 @@ use persson::bem::rough::{self, RoughOptions, SurfaceOrigin};
 use persson::bem::surface::{synthesize as synth, GridSurface};
 use persson::bem::{check_memory, Boundary, Control, Operator, Options, Solver};
 use persson::error::check;
-use persson_studies::bem_detail::{adhesive_path, adhesive_warnings, LawKind};
+use persson_studies::bem_detail::{
+    adhesive_path, adhesive_sphere, adhesive_warnings, sphere_warnings, LawKind,
+};
 use persson_studies::scene::BoundaryName;
 use persson_studies::validation::{self, ComparisonConfig, SweepSettings, UserData, UserHistogram};
 use pyo3::prelude::*;
@@ -208,15 +210,7 @@ fn bem_rough<'py>(
             "mean_gap",
             mean_gap.ok_or_else(|| value_error("mean_gap: required with work_of_adhesion"))?,
         )?;
-        let kind = match adhesion {
-            "maugis" => LawKind::Maugis,
-            "exponential" => LawKind::Exponential,
-            other => {
-                return Err(value_error(format!(
-                    "adhesion {other:?}: one of 'maugis', 'exponential'"
-                )))
-            }
-        };
+        let kind = law_kind(adhesion)?;
         let opts = persson::bem::adhesive::AdhesiveOptions {
             tolerance: check::tolerance("tolerance", tolerance).map_err(err)?,
             max_iterations,
@@ -250,6 +244,17 @@ fn bem_rough<'py>(
         .detach(|| rough::rough_contact(&s, origin, contact_modulus, &pressures, &opts, &mut ()))
         .map_err(err)?;
     to_dict_warned(py, &r, &persson_studies::warning::of_rough(&r))
+}
+
+/// The cohesive law named by `adhesion`.
+fn law_kind(adhesion: &str) -> PyResult<LawKind> {
+    match adhesion {
+        "maugis" => Ok(LawKind::Maugis),
+        "exponential" => Ok(LawKind::Exponential),
+        other => Err(value_error(format!(
+            "adhesion {other:?}: one of 'maugis', 'exponential'"
+        ))),
+    }
 }
 
 /// `bem_rough`'s surface arguments: heights, size, spectrum, grid, seed.
@@ -300,12 +305,16 @@ fn grid_surface(
 /// ball of radius `radius` on a grid of side `size`, load from the contact
 /// radius, default 0.1 L): energy-norm error η, contact radius and peak pressure.
 ///
+/// With `work_of_adhesion` Δγ and `adhesion_range` ρ (`boundary="periodic"`):
+/// `persson bem hertz --work-of-adhesion --json`, the adhesive sphere's pull-off
+/// on each of `grids` against JKR and DMT.
+///
 /// With `yield_stress` σY (unit of `contact_modulus`): `persson bem hertz --yield-stress
 /// --json`, the plastic disc (pressure capped at σY) on each of `grids`
 /// (default `[grid]`): its radius and convergence, the fractions and the
 /// plastic displacement.
 #[pyfunction]
-#[pyo3(signature = (*, grid=256, boundary="free", size=1.0, radius=1.0, contact_modulus=1.0, contact_radius=None, tolerance=1e-10, max_iterations=10_000, yield_stress=None, grids=None))]
+#[pyo3(signature = (*, grid=256, boundary="free", size=1.0, radius=1.0, contact_modulus=1.0, contact_radius=None, tolerance=1e-10, max_iterations=10_000, yield_stress=None, grids=None, work_of_adhesion=None, adhesion_range=None, adhesion="maugis"))]
 #[allow(clippy::too_many_arguments)]
 fn bem_hertz<'py>(
     py: Python<'py>,
@@ -319,8 +328,41 @@ fn bem_hertz<'py>(
     max_iterations: usize,
     yield_stress: Option<f64>,
     grids: Option<Vec<usize>>,
+    work_of_adhesion: Option<f64>,
+    adhesion_range: Option<f64>,
+    adhesion: &str,
 ) -> PyResult<Bound<'py, PyAny>> {
     let grids = grids.unwrap_or_else(|| vec![grid]);
+    if let Some(dg) = work_of_adhesion {
+        if yield_stress.is_some() || contact_radius.is_some() {
+            return Err(value_error(
+                "work_of_adhesion: the adhesive sphere runs its own path; yield_stress and contact_radius do not apply",
+            ));
+        }
+        if self::boundary(boundary)? != Boundary::Periodic {
+            return Err(value_error(
+                "boundary: the adhesive sphere is solved on a periodic cell (give boundary='periodic')",
+            ));
+        }
+        let range = adhesion_range
+            .ok_or_else(|| value_error("adhesion_range: required with work_of_adhesion"))?;
+        let opts = persson::bem::adhesive::AdhesiveOptions {
+            tolerance: check::tolerance("tolerance", tolerance).map_err(err)?,
+            max_iterations,
+        };
+        let kind = law_kind(adhesion)?;
+        let r = py
+            .detach(|| {
+                adhesive_sphere(
+                    &grids,
+                    (size, radius, contact_modulus),
+                    (kind, dg, range),
+                    &opts,
+                )
+            })
+            .map_err(err)?;
+        return to_dict_warned(py, &r, &sphere_warnings(&r));
+    }
     if yield_stress.is_none() && grids != [grid] {
         return Err(value_error(
             "grids: a list of grids only with yield_stress (give grid without it)",

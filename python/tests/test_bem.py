@@ -160,3 +160,13 @@ def test_adhesive_rough_matches_cli():
     with pytest.raises(ValueError, match="mean_gap"):
         persson.bem_rough(1.0, spectrum=spectrum(), grid=32, work_of_adhesion=1e-5,
                           adhesion_range=1e-2)
+
+
+def test_adhesive_sphere_matches_cli():
+    """`bem_hertz(work_of_adhesion=…)` is `persson bem hertz --work-of-adhesion --json`."""
+    cli = run_cli("bem", "hertz", "--grid", "16,32", "--boundary", "periodic",
+                  "--work-of-adhesion", 1e-4, "--adhesion-range", 0.05)
+    r = persson.bem_hertz(grids=[16, 32], boundary="periodic", work_of_adhesion=1e-4,
+                          adhesion_range=0.05)
+    same(r, cli)
+    assert 1.5 < r["per_grid"][-1]["reduced_pull_off_force"] < 2.0
