@@ -116,20 +116,30 @@ pub fn adhesive_path(
 /// The warnings of an adhesive path: a cohesive zone shorter than the grid
 /// spacing, solves the plain iteration finished, solves short of the tolerance.
 pub fn adhesive_warnings(r: &AdhesiveBemReport) -> Vec<Warning> {
-    let spacing = r.size / r.grid as f64;
+    path_warnings(
+        r.size / r.grid as f64,
+        r.adhesion_range,
+        r.tolerance,
+        &r.points,
+    )
+}
+
+/// [`adhesive_warnings`] of one path: grid spacing L/N, range ρ, tolerance ε.
+fn path_warnings(
+    spacing: f64,
+    adhesion_range: f64,
+    tolerance: f64,
+    points: &[AdhesivePoint],
+) -> Vec<Warning> {
     let mut out = Vec::new();
-    if r.adhesion_range < spacing {
+    if adhesion_range < spacing {
         out.push(Warning::CohesiveZoneUnresolved {
-            adhesion_range: r.adhesion_range,
+            adhesion_range,
             grid_spacing: spacing,
         });
     }
     let gaps = |f: &dyn Fn(&AdhesivePoint) -> bool| -> Vec<f64> {
-        r.points
-            .iter()
-            .filter(|p| f(p))
-            .map(|p| p.mean_gap)
-            .collect()
+        points.iter().filter(|p| f(p)).map(|p| p.mean_gap).collect()
     };
     let fell_back = gaps(&|p| p.fallback.is_some());
     if !fell_back.is_empty() {
@@ -141,7 +151,7 @@ pub fn adhesive_warnings(r: &AdhesiveBemReport) -> Vec<Warning> {
     if !unconverged.is_empty() {
         out.push(Warning::AdhesiveNotConverged {
             mean_gap: unconverged,
-            tolerance: r.tolerance,
+            tolerance,
         });
     }
     out
@@ -219,6 +229,8 @@ pub struct AdhesiveSphereReport {
     pub work_of_adhesion: f64,
     /// ρ.
     pub adhesion_range: f64,
+    /// Solver tolerance ε.
+    pub tolerance: f64,
     /// λ = (Δγ/ρ)(9R/(2πΔγE*²))^{1/3} (Maugis 1992; with ρ the
     /// Maugis–Dugdale range, h0 = ρ).
     pub maugis_parameter: f64,
@@ -286,6 +298,7 @@ pub fn adhesive_sphere(
         adhesion: kind,
         work_of_adhesion,
         adhesion_range,
+        tolerance: options.tolerance,
         maugis_parameter: dg / adhesion_range
             * (9.0 * radius / (2.0 * PI * dg * contact_modulus * contact_modulus)).cbrt(),
         jkr_pull_off_force: 1.5 * PI * radius * dg,
@@ -341,19 +354,8 @@ impl Tabulate for AdhesiveSphereReport {
 pub fn sphere_warnings(r: &AdhesiveSphereReport) -> Vec<Warning> {
     let mut out: Vec<Warning> = Vec::new();
     for g in &r.per_grid {
-        let path = AdhesiveBemReport {
-            grid: g.grid,
-            size: r.size,
-            contact_modulus: r.contact_modulus,
-            adhesion: r.adhesion,
-            work_of_adhesion: r.work_of_adhesion,
-            adhesion_range: r.adhesion_range,
-            cohesive_stress: r.work_of_adhesion / r.adhesion_range,
-            tolerance: 0.0,
-            points: g.points.clone(),
-            pull_off_stress: 0.0,
-        };
-        for w in adhesive_warnings(&path) {
+        let spacing = r.size / g.grid as f64;
+        for w in path_warnings(spacing, r.adhesion_range, r.tolerance, &g.points) {
             if !out.contains(&w) {
                 out.push(w);
             }
