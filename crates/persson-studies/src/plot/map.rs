@@ -16,7 +16,7 @@ use std::path::Path;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::{draw, Format};
+use super::canvas::{render_canvas, render_canvas_svg_string, Canvas, DrawResult};
 use crate::{Error, Result};
 
 /// Most cells per side drawn in the map (finer maps are averaged in blocks).
@@ -141,9 +141,6 @@ pub(super) fn viridis(t: f64) -> RGBColor {
     let mix = |u: u8, v: u8| (u as f64 + f * (v as f64 - u as f64)).round() as u8;
     RGBColor(mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
 }
-
-type DrawResult<DB> =
-    std::result::Result<(), DrawingAreaErrorKind<<DB as DrawingBackend>::ErrorType>>;
 
 pub(super) fn font(size: f64, k: u32) -> FontDesc<'static> {
     ("sans-serif", size * k as f64).into_font()
@@ -348,47 +345,7 @@ fn draw_histogram<DB: DrawingBackend>(
 /// backend failure; [`Error::Inconsistent`] when the map is not N² values;
 /// [`Error::InvalidParameter`] for a size outside [`super::SIZE_LIMITS`].
 pub fn render_map(fig: &MapFigure, path: &Path) -> Result<()> {
-    let format = Format::from_path(path)?;
-    fig.check()?;
-    draw::ensure_font(path)?;
-    let io = |source| Error::Io {
-        path: path.to_path_buf(),
-        source,
-    };
-    let backend = |e: String| Error::Io {
-        path: path.to_path_buf(),
-        source: std::io::Error::other(format!("plot rendering failed: {e}")),
-    };
-    match format {
-        Format::Svg => {
-            let svg = svg_string(fig).map_err(backend)?;
-            let tmp = persson::io::TempFile::create(path)?;
-            std::fs::write(tmp.path(), svg).map_err(io)?;
-            tmp.persist()
-        }
-        Format::Png => {
-            let k = draw::supersampling(fig.size);
-            let big = (fig.size.0 * k, fig.size.1 * k);
-            let mut buf = vec![255u8; big.0 as usize * big.1 as usize * 3];
-            {
-                let root = BitMapBackend::with_buffer(&mut buf, big).into_drawing_area();
-                draw_map(root, fig, k).map_err(|e| backend(e.to_string()))?;
-            }
-            let pixels = draw::downsample(&buf, big, k);
-            let tmp = persson::io::TempFile::create(path)?;
-            draw::write_png(tmp.path(), fig.size, &pixels).map_err(io)?;
-            tmp.persist()
-        }
-    }
-}
-
-fn svg_string(fig: &MapFigure) -> std::result::Result<String, String> {
-    let mut s = String::new();
-    {
-        let root = SVGBackend::with_string(&mut s, fig.size).into_drawing_area();
-        draw_map(root, fig, 1).map_err(|e| e.to_string())?;
-    }
-    Ok(s)
+    render_canvas(fig, path)
 }
 
 /// Draws `fig` as an SVG document in memory.
@@ -396,13 +353,19 @@ fn svg_string(fig: &MapFigure) -> std::result::Result<String, String> {
 /// # Errors
 /// As [`render_map`], except the file errors.
 pub fn render_map_svg_string(fig: &MapFigure) -> Result<String> {
-    let here = Path::new("<svg string>");
-    fig.check()?;
-    draw::ensure_font(here)?;
-    svg_string(fig).map_err(|e| Error::Io {
-        path: here.to_path_buf(),
-        source: std::io::Error::other(format!("plot rendering failed: {e}")),
-    })
+    render_canvas_svg_string(fig)
+}
+
+impl Canvas for MapFigure {
+    fn size(&self) -> (u32, u32) {
+        self.size
+    }
+    fn check(&self) -> Result<()> {
+        MapFigure::check(self)
+    }
+    fn draw_on<DB: DrawingBackend>(&self, root: DrawingArea<DB, Shift>, k: u32) -> DrawResult<DB> {
+        draw_map(root, self, k)
+    }
 }
 
 /// The map figure of a rough contact: the last solve's pressure field (kept

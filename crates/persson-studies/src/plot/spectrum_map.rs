@@ -16,8 +16,8 @@ use std::path::Path;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::map::{viridis, MAP_CELLS};
-use super::{draw, Format};
+use super::canvas::{render_canvas, render_canvas_svg_string, Canvas, DrawResult};
+use super::map::{font, tick, viridis, MAP_CELLS};
 use crate::{Error, Result};
 
 /// Default size in pixels, width × height.
@@ -115,17 +115,6 @@ fn scale(v: &[f64]) -> (f64, f64) {
     } else {
         (lo - 0.5, lo + 0.5)
     }
-}
-
-type DrawResult<DB> =
-    std::result::Result<(), DrawingAreaErrorKind<<DB as DrawingBackend>::ErrorType>>;
-
-fn font(size: f64, k: u32) -> FontDesc<'static> {
-    ("sans-serif", size * k as f64).into_font()
-}
-
-fn tick(v: f64) -> String {
-    crate::table::number(v, 3)
 }
 
 fn draw_figure<DB: DrawingBackend>(
@@ -240,27 +229,12 @@ fn draw_figure<DB: DrawingBackend>(
     Ok(())
 }
 
-fn svg_string(fig: &SpectrumMapFigure) -> std::result::Result<String, String> {
-    let mut s = String::new();
-    {
-        let root = SVGBackend::with_string(&mut s, fig.size).into_drawing_area();
-        draw_figure(root, fig, 1).map_err(|e| e.to_string())?;
-    }
-    Ok(s)
-}
-
 /// Draws `fig` as an SVG document in memory.
 ///
 /// # Errors
 /// As [`render_spectrum_map`], except the file errors.
 pub fn render_spectrum_map_svg_string(fig: &SpectrumMapFigure) -> Result<String> {
-    let here = Path::new("<svg string>");
-    fig.check()?;
-    draw::ensure_font(here)?;
-    svg_string(fig).map_err(|e| Error::Io {
-        path: here.to_path_buf(),
-        source: std::io::Error::other(format!("plot rendering failed: {e}")),
-    })
+    render_canvas_svg_string(fig)
 }
 
 /// Draws `fig` into `path` (`.svg` or `.png` by extension), atomically.
@@ -271,37 +245,18 @@ pub fn render_spectrum_map_svg_string(fig: &SpectrumMapFigure) -> Result<String>
 /// `qx.len() × qy.len()` values; [`Error::InvalidParameter`] for a size
 /// outside [`super::SIZE_LIMITS`].
 pub fn render_spectrum_map(fig: &SpectrumMapFigure, path: &Path) -> Result<()> {
-    let format = Format::from_path(path)?;
-    fig.check()?;
-    draw::ensure_font(path)?;
-    let io = |source| Error::Io {
-        path: path.to_path_buf(),
-        source,
-    };
-    let backend = |e: String| Error::Io {
-        path: path.to_path_buf(),
-        source: std::io::Error::other(format!("plot rendering failed: {e}")),
-    };
-    match format {
-        Format::Svg => {
-            let svg = svg_string(fig).map_err(backend)?;
-            let tmp = persson::io::TempFile::create(path)?;
-            std::fs::write(tmp.path(), svg).map_err(io)?;
-            tmp.persist()
-        }
-        Format::Png => {
-            let k = draw::supersampling(fig.size);
-            let big = (fig.size.0 * k, fig.size.1 * k);
-            let mut buf = vec![255u8; big.0 as usize * big.1 as usize * 3];
-            {
-                let root = BitMapBackend::with_buffer(&mut buf, big).into_drawing_area();
-                draw_figure(root, fig, k).map_err(|e| backend(e.to_string()))?;
-            }
-            let pixels = draw::downsample(&buf, big, k);
-            let tmp = persson::io::TempFile::create(path)?;
-            draw::write_png(tmp.path(), fig.size, &pixels).map_err(io)?;
-            tmp.persist()
-        }
+    render_canvas(fig, path)
+}
+
+impl Canvas for SpectrumMapFigure {
+    fn size(&self) -> (u32, u32) {
+        self.size
+    }
+    fn check(&self) -> Result<()> {
+        SpectrumMapFigure::check(self)
+    }
+    fn draw_on<DB: DrawingBackend>(&self, root: DrawingArea<DB, Shift>, k: u32) -> DrawResult<DB> {
+        draw_figure(root, self, k)
     }
 }
 

@@ -14,8 +14,8 @@ use std::path::Path;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
+use super::canvas::{render_canvas, Canvas, DrawResult};
 use super::map::{font, tick, viridis, MAP_CELLS};
-use super::{draw, Format};
 use crate::{Error, Result};
 
 /// The default size in pixels of a field figure, width × height.
@@ -173,46 +173,20 @@ pub fn vertical_section(
 /// [`Error::InvalidParameter`] for an empty range or a size outside
 /// [`super::SIZE_LIMITS`].
 pub fn render_field(fig: &FieldFigure, path: &Path) -> Result<()> {
-    let format = Format::from_path(path)?;
-    fig.check()?;
-    draw::ensure_font(path)?;
-    let io = |source| Error::Io {
-        path: path.to_path_buf(),
-        source,
-    };
-    let backend = |e: String| Error::Io {
-        path: path.to_path_buf(),
-        source: std::io::Error::other(format!("plot rendering failed: {e}")),
-    };
-    match format {
-        Format::Svg => {
-            let mut s = String::new();
-            {
-                let root = SVGBackend::with_string(&mut s, fig.size).into_drawing_area();
-                draw_field(root, fig, 1).map_err(|e| backend(e.to_string()))?;
-            }
-            let tmp = persson::io::TempFile::create(path)?;
-            std::fs::write(tmp.path(), s).map_err(io)?;
-            tmp.persist()
-        }
-        Format::Png => {
-            let k = draw::supersampling(fig.size);
-            let big = (fig.size.0 * k, fig.size.1 * k);
-            let mut buf = vec![255u8; big.0 as usize * big.1 as usize * 3];
-            {
-                let root = BitMapBackend::with_buffer(&mut buf, big).into_drawing_area();
-                draw_field(root, fig, k).map_err(|e| backend(e.to_string()))?;
-            }
-            let pixels = draw::downsample(&buf, big, k);
-            let tmp = persson::io::TempFile::create(path)?;
-            draw::write_png(tmp.path(), fig.size, &pixels).map_err(io)?;
-            tmp.persist()
-        }
-    }
+    render_canvas(fig, path)
 }
 
-type DrawResult<DB> =
-    std::result::Result<(), DrawingAreaErrorKind<<DB as DrawingBackend>::ErrorType>>;
+impl Canvas for FieldFigure {
+    fn size(&self) -> (u32, u32) {
+        self.size
+    }
+    fn check(&self) -> Result<()> {
+        FieldFigure::check(self)
+    }
+    fn draw_on<DB: DrawingBackend>(&self, root: DrawingArea<DB, Shift>, k: u32) -> DrawResult<DB> {
+        draw_field(root, self, k)
+    }
+}
 
 /// The field and its colour bar, at `k` times the figure's size.
 fn draw_field<DB: DrawingBackend>(

@@ -1,0 +1,90 @@
+//! The figures drawn straight on a plotters backend (the pressure map, the
+//! 2-D spectrum, the stress maps): one way to write them to `.svg` or `.png`.
+//!
+//! Line figures go through [`super::prepare`] first; these figures have no
+//! layout step, so each implements [`Canvas`] (validate, then draw at `k`
+//! times its size) and [`render_canvas`] does the rest: the format from the
+//! extension, the font check, PNG supersampling, and an atomic write (a
+//! temporary file renamed over `path` only when drawing succeeded).
+
+use std::path::Path;
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+
+use super::{backend_error, draw, Format};
+use crate::{Error, Result};
+
+/// What drawing on a backend `DB` returns.
+pub(crate) type DrawResult<DB> =
+    std::result::Result<(), DrawingAreaErrorKind<<DB as DrawingBackend>::ErrorType>>;
+
+/// A figure that draws itself on any plotters backend.
+pub(crate) trait Canvas {
+    /// Size in pixels, width × height.
+    fn size(&self) -> (u32, u32);
+    /// Checks the figure's data before anything is drawn or written.
+    fn check(&self) -> Result<()>;
+    /// Draws the figure on `root`, at `k` times its size (fonts and lines
+    /// scale along).
+    fn draw_on<DB: DrawingBackend>(&self, root: DrawingArea<DB, Shift>, k: u32) -> DrawResult<DB>;
+}
+
+/// Draws `fig` into `path` (`.svg` or `.png` by extension), atomically.
+///
+/// # Errors
+/// [`Error::Io`] for another extension, an unwritable directory or a
+/// backend failure; the figure's own [`Canvas::check`] errors.
+pub(crate) fn render_canvas<C: Canvas>(fig: &C, path: &Path) -> Result<()> {
+    let format = Format::from_path(path)?;
+    fig.check()?;
+    draw::ensure_font(path)?;
+    let io = |source| Error::Io {
+        path: path.to_path_buf(),
+        source,
+    };
+    let size = fig.size();
+    let bytes = match format {
+        Format::Svg => svg_string(fig)
+            .map_err(|e| backend_error(path, e))?
+            .into_bytes(),
+        Format::Png => {
+            // Drawn at k× the size and averaged down: anti-aliased.
+            let k = draw::supersampling(size);
+            let big = (size.0 * k, size.1 * k);
+            let mut buf = vec![255u8; big.0 as usize * big.1 as usize * 3];
+            {
+                let root = BitMapBackend::with_buffer(&mut buf, big).into_drawing_area();
+                fig.draw_on(root, k)
+                    .map_err(|e| backend_error(path, e.to_string()))?;
+            }
+            let pixels = draw::downsample(&buf, big, k);
+            let tmp = persson::io::TempFile::create(path)?;
+            draw::write_png(tmp.path(), size, &pixels).map_err(io)?;
+            return tmp.persist();
+        }
+    };
+    let tmp = persson::io::TempFile::create(path)?;
+    std::fs::write(tmp.path(), bytes).map_err(io)?;
+    tmp.persist()
+}
+
+/// Draws `fig` as an SVG document in memory.
+///
+/// # Errors
+/// As [`render_canvas`], except the file errors.
+pub(crate) fn render_canvas_svg_string<C: Canvas>(fig: &C) -> Result<String> {
+    let here = Path::new("<svg string>");
+    fig.check()?;
+    draw::ensure_font(here)?;
+    svg_string(fig).map_err(|e| backend_error(here, e))
+}
+
+fn svg_string<C: Canvas>(fig: &C) -> std::result::Result<String, String> {
+    let mut s = String::new();
+    {
+        let root = SVGBackend::with_string(&mut s, fig.size()).into_drawing_area();
+        fig.draw_on(root, 1).map_err(|e| e.to_string())?;
+    }
+    Ok(s)
+}
