@@ -34,9 +34,11 @@ pub(crate) trait Canvas {
 ///
 /// # Errors
 /// [`Error::Io`] for another extension, an unwritable directory or a
-/// backend failure; the figure's own [`Canvas::check`] errors.
+/// backend failure; [`Error::InvalidParameter`] for a size outside
+/// [`super::SIZE_LIMITS`]; the figure's own [`Canvas::check`] errors.
 pub(crate) fn render_canvas<C: Canvas>(fig: &C, path: &Path) -> Result<()> {
     let format = Format::from_path(path)?;
+    check_size(fig.size())?;
     fig.check()?;
     draw::ensure_font(path)?;
     let io = |source| Error::Io {
@@ -75,9 +77,25 @@ pub(crate) fn render_canvas<C: Canvas>(fig: &C, path: &Path) -> Result<()> {
 /// As [`render_canvas`], except the file errors.
 pub(crate) fn render_canvas_svg_string<C: Canvas>(fig: &C) -> Result<String> {
     let here = Path::new("<svg string>");
+    check_size(fig.size())?;
     fig.check()?;
     draw::ensure_font(here)?;
     svg_string(fig).map_err(|e| backend_error(here, e))
+}
+
+/// Both sides within [`super::SIZE_LIMITS`].
+fn check_size(size: (u32, u32)) -> Result<()> {
+    let (lo, hi) = super::SIZE_LIMITS;
+    for v in [size.0, size.1] {
+        if !(lo..=hi).contains(&v) {
+            return Err(Error::invalid(
+                "plot size",
+                v as f64,
+                format!("between {lo} and {hi} pixels"),
+            ));
+        }
+    }
+    Ok(())
 }
 
 fn svg_string<C: Canvas>(fig: &C) -> std::result::Result<String, String> {

@@ -83,16 +83,6 @@ impl MapFigure {
         if !(self.side.is_finite() && self.side > 0.0) {
             return Err(Error::invalid("size", self.side, "finite and > 0"));
         }
-        let (lo, hi) = super::SIZE_LIMITS;
-        for v in [self.size.0, self.size.1] {
-            if !(lo..=hi).contains(&v) {
-                return Err(Error::invalid(
-                    "plot size",
-                    v as f64,
-                    format!("between {lo} and {hi} pixels"),
-                ));
-            }
-        }
         Ok(())
     }
 
@@ -232,17 +222,46 @@ fn draw_colour_bar<DB: DrawingBackend>(
     k: u32,
     top: f64,
 ) -> DrawResult<DB> {
+    let label = format!("{PRESSURE_LABEL} ({})", f.pressure_unit);
+    let mut bar = colour_bar(area, (0.0, top), &label, 80, k)?;
+    if let Some(y) = f.yield_stress {
+        let band = 0.03 * top;
+        bar.draw_series(std::iter::once(Rectangle::new(
+            [(0.0, (y - band).max(0.0)), (1.0, y)],
+            PLASTIC.filled(),
+        )))?;
+    }
+    Ok(())
+}
+
+/// A colour bar's chart: x in [0, 1], y the value.
+pub(super) type BarChart<'a, DB> = ChartContext<
+    'a,
+    DB,
+    Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>,
+>;
+
+/// The chart of a vertical viridis scale from `lo` to `hi` labelled `label`
+/// (`label_area` pixels for the tick labels and the label), at `k` times the
+/// figure's size; the caller may draw more on it.
+pub(super) fn colour_bar<'a, DB: DrawingBackend>(
+    area: &'a DrawingArea<DB, Shift>,
+    (lo, hi): (f64, f64),
+    label: &str,
+    label_area: u32,
+    k: u32,
+) -> std::result::Result<BarChart<'a, DB>, DrawingAreaErrorKind<DB::ErrorType>> {
     let px = |v: u32| v * k;
     let mut bar = ChartBuilder::on(area)
         .margin_top(px(10))
         .margin_bottom(px(55))
         .margin_right(px(5))
-        .y_label_area_size(px(80))
-        .build_cartesian_2d(0.0..1.0, 0.0..top)?;
+        .y_label_area_size(px(label_area))
+        .build_cartesian_2d(0.0..1.0, lo..hi)?;
     bar.configure_mesh()
         .disable_mesh()
         .disable_x_axis()
-        .y_desc(format!("{PRESSURE_LABEL} ({})", f.pressure_unit))
+        .y_desc(label)
         .label_style(font(12.0, k))
         .y_label_formatter(&|v| tick(*v))
         .axis_desc_style(font(14.0, k))
@@ -252,18 +271,11 @@ fn draw_colour_bar<DB: DrawingBackend>(
     bar.draw_series((0..steps).map(|s| {
         let (a, b) = (s as f64 / steps as f64, (s + 1) as f64 / steps as f64);
         Rectangle::new(
-            [(0.0, a * top), (1.0, b * top)],
+            [(0.0, lo + a * (hi - lo)), (1.0, lo + b * (hi - lo))],
             viridis(0.5 * (a + b)).filled(),
         )
     }))?;
-    if let Some(y) = f.yield_stress {
-        let band = 0.03 * top;
-        bar.draw_series(std::iter::once(Rectangle::new(
-            [(0.0, (y - band).max(0.0)), (1.0, y)],
-            PLASTIC.filled(),
-        )))?;
-    }
-    Ok(())
+    Ok(bar)
 }
 
 /// The histogram P(σ) with (σY) the plastic δ-peak as a full-height bar.

@@ -17,7 +17,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use super::canvas::{render_canvas, render_canvas_svg_string, Canvas, DrawResult};
-use super::map::{font, tick, viridis, MAP_CELLS};
+use super::map::{colour_bar, font, tick, viridis, MAP_CELLS};
 use crate::{Error, Result};
 
 /// Default size in pixels, width × height.
@@ -59,16 +59,6 @@ impl SpectrumMapFigure {
                     self.c.len()
                 ),
             });
-        }
-        let (lo, hi) = super::SIZE_LIMITS;
-        for v in [self.size.0, self.size.1] {
-            if !(lo..=hi).contains(&v) {
-                return Err(Error::invalid(
-                    "plot size",
-                    v as f64,
-                    format!("between {lo} and {hi} pixels"),
-                ));
-            }
         }
         Ok(())
     }
@@ -203,29 +193,7 @@ fn draw_figure<DB: DrawingBackend>(
             .border_style(BLACK.mix(0.4))
             .draw()?;
     }
-    let mut bar = ChartBuilder::on(&bar_area)
-        .margin_top(px(10))
-        .margin_bottom(px(55))
-        .margin_right(px(5))
-        .y_label_area_size(px(80))
-        .build_cartesian_2d(0.0..1.0, lo..hi)?;
-    bar.configure_mesh()
-        .disable_mesh()
-        .disable_x_axis()
-        .y_desc("log10 C (C in m⁴)")
-        .label_style(font(12.0, k))
-        .y_label_formatter(&|v| tick(*v))
-        .axis_desc_style(font(14.0, k))
-        .y_labels(6)
-        .draw()?;
-    let steps = 100;
-    bar.draw_series((0..steps).map(|s| {
-        let (a, b) = (s as f64 / steps as f64, (s + 1) as f64 / steps as f64);
-        Rectangle::new(
-            [(0.0, lo + a * (hi - lo)), (1.0, lo + b * (hi - lo))],
-            viridis(0.5 * (a + b)).filled(),
-        )
-    }))?;
+    colour_bar(&bar_area, (lo, hi), "log10 C (C in m⁴)", 80, k)?;
     Ok(())
 }
 

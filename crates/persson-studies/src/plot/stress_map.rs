@@ -15,7 +15,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use super::canvas::{render_canvas, Canvas, DrawResult};
-use super::map::{font, tick, viridis, MAP_CELLS};
+use super::map::{colour_bar, font, tick, viridis, MAP_CELLS};
 use crate::{Error, Result};
 
 /// The default size in pixels of a field figure, width × height.
@@ -63,16 +63,6 @@ impl FieldFigure {
         for (name, (a, b)) in [("x range", self.x_range), ("y range", self.y_range)] {
             if !(a.is_finite() && b.is_finite() && b > a) {
                 return Err(Error::invalid(name, b - a, "finite and > 0"));
-            }
-        }
-        let (lo, hi) = super::SIZE_LIMITS;
-        for v in [self.size.0, self.size.1] {
-            if !(lo..=hi).contains(&v) {
-                return Err(Error::invalid(
-                    "plot size",
-                    v as f64,
-                    format!("between {lo} and {hi} pixels"),
-                ));
             }
         }
         Ok(())
@@ -245,29 +235,7 @@ fn draw_field<DB: DrawingBackend>(
         let (ya, yb) = if flip { (-ya, -yb) } else { (ya, yb) };
         Rectangle::new([(xa, ya), (xb, yb)], viridis(mean[c] / top).filled())
     }))?;
-    let mut bar = ChartBuilder::on(&bar_area)
-        .margin_top(px(10))
-        .margin_bottom(px(55))
-        .margin_right(px(5))
-        .y_label_area_size(px(85))
-        .build_cartesian_2d(0.0..1.0, 0.0..top)?;
-    bar.configure_mesh()
-        .disable_mesh()
-        .disable_x_axis()
-        .y_desc(f.value_label.as_str())
-        .label_style(font(12.0, k))
-        .y_label_formatter(&|v| tick(*v))
-        .axis_desc_style(font(14.0, k))
-        .y_labels(6)
-        .draw()?;
-    let steps = 100;
-    bar.draw_series((0..steps).map(|s| {
-        let (a, b) = (s as f64 / steps as f64, (s + 1) as f64 / steps as f64);
-        Rectangle::new(
-            [(0.0, a * top), (1.0, b * top)],
-            viridis(0.5 * (a + b)).filled(),
-        )
-    }))?;
+    colour_bar(&bar_area, (0.0, top), &f.value_label, 85, k)?;
     Ok(())
 }
 
