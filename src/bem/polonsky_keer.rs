@@ -30,9 +30,7 @@ use std::time::Instant;
 
 use super::problem::{Options, Problem};
 use super::solution::{Iteration, Solution};
-use super::steps::{
-    gap_stats, project_step, refresh_gap, sparse_limit, Entry, GapStats, Pending, LANES,
-};
+use super::steps::{project_step, sparse_limit, Entry, GapStats, LazyGap, LANES};
 use super::workspace::{Finish, Workspace};
 use crate::error::{Error, Result};
 
@@ -52,7 +50,7 @@ pub(crate) fn solve(
     let start = Instant::now();
     let mut state = State::new(problem, ws, k0)?;
     let (residual, stats) = loop {
-        let st = state.measure(problem, ws);
+        let st = state.gap.measure(problem, ws);
         let eps = st.residual(state.load, problem.sigma_h());
         observer(Iteration {
             iteration: state.k,
@@ -60,10 +58,10 @@ pub(crate) fn solve(
             contact_fraction: st.count as f64 / problem.nodes() as f64,
         });
         if eps <= opts.tolerance && !st.overlap(state.load, opts.tolerance, problem.sigma_h()) {
-            if state.fresh {
+            if state.gap.fresh {
                 break (eps, st);
             }
-            state.refresh(problem, ws)?;
+            state.gap.refresh(problem, ws)?;
             continue;
         }
         if state.k >= opts.max_iterations {
@@ -76,8 +74,7 @@ pub(crate) fn solve(
         }
         state.iterate(problem, ws, &st)?;
     };
-    let f = ws.fields();
-    f.pressure.iter_mut().for_each(|p| *p *= state.p_scale);
+    state.gap.hand_over(ws);
     // Final gap: zero at the lowest contact point (load control);
     // g = u − (h − max h) − g_min = 0 on the contact  ⇒  δ = g_min.
     let shift = if state.load && stats.count > 0 {
@@ -98,75 +95,23 @@ pub(crate) fn solve(
 /// The iteration's state between passes.
 struct State {
     load: bool,
-    /// The gap was computed from a fresh `𝒢p` (convergence is declared only then).
-    fresh: bool,
+    /// Pressure scale, pending gap update, freshness.
+    gap: LazyGap,
     g_old: f64,
     conjugate: bool,
-    /// The step's linear gap update (with its rescaling s), applied lazily
-    /// in the next gap pass.
-    pending: Pending,
-    /// The pressure is `p_scale · p` (the step's rescaling is applied by the
-    /// next step, which rewrites p anyway).
-    p_scale: f64,
-    g_ref: f64,
     k: usize,
 }
 
 impl State {
     /// The first gap, from the start pressure.
     fn new(problem: &Problem, ws: &mut Workspace, k0: usize) -> Result<Self> {
-        let f = ws.fields();
-        refresh_gap(
-            f.op,
-            f.pressure,
-            f.gap,
-            problem.heights(),
-            problem.offset(),
-            1.0,
-        )?;
-        f.direction.fill(0.0);
         Ok(State {
             load: problem.target_total().is_some(),
-            fresh: true,
+            gap: LazyGap::start(problem, ws)?,
             g_old: 1.0,
             conjugate: false,
-            pending: Pending::NONE,
-            p_scale: 1.0,
-            g_ref: 0.0,
             k: k0,
         })
-    }
-
-    /// Apply the pending update and gather the gap statistics.
-    fn measure(&mut self, problem: &Problem, ws: &mut Workspace) -> GapStats {
-        let f = ws.fields();
-        let st = gap_stats(
-            f.pressure,
-            f.gap,
-            f.response,
-            problem.heights(),
-            problem.offset(),
-            self.pending,
-            self.g_ref,
-            self.p_scale,
-        );
-        self.pending = Pending::NONE;
-        st
-    }
-
-    /// A fresh gap `𝒢(p_scale·p)` before convergence is declared.
-    fn refresh(&mut self, problem: &Problem, ws: &mut Workspace) -> Result<()> {
-        let f = ws.fields();
-        refresh_gap(
-            f.op,
-            f.pressure,
-            f.gap,
-            problem.heights(),
-            problem.offset(),
-            self.p_scale,
-        )?;
-        self.fresh = true;
-        Ok(())
     }
 
     /// One conjugate-gradient step: direction, step length, projection,
@@ -177,8 +122,8 @@ impl State {
             self.conjugate = false;
         }
         let f = ws.fields();
-        let (g_bar, g_norm) = st.contact_mean(self.load, self.g_ref, f.gap, f.pressure);
-        self.g_ref = g_bar;
+        let (g_bar, g_norm) = st.contact_mean(self.load, self.gap.g_ref, f.gap, f.pressure);
+        self.gap.g_ref = g_bar;
         let beta = if self.conjugate {
             g_norm / self.g_old
         } else {
@@ -209,7 +154,7 @@ impl State {
             f.pressure,
             f.direction,
             f.gap,
-            self.p_scale,
+            self.gap.p_scale,
             tau,
             Entry::Overlap { g_bar, coeff },
             limit,
@@ -217,32 +162,7 @@ impl State {
             f.sparse_val,
         );
         self.conjugate = !step.entered;
-        let scale = match problem.target_total() {
-            Some(total) if step.sum_p > 0.0 => total / step.sum_p,
-            _ => 1.0,
-        };
-        let sparse = step.changed <= limit && f.op.add_sparse(f.sparse_idx, f.sparse_val, f.gap);
-        if step.changed == 0 || sparse {
-            // u = s (u − τ 𝒢t + 𝒢c), c the sparse correction (just added).
-            self.pending = Pending {
-                g_scale: scale,
-                tau,
-                update: true,
-            };
-            self.fresh = false;
-        } else {
-            // u = 𝒢(s p) = s 𝒢p.
-            refresh_gap(
-                f.op,
-                f.pressure,
-                f.gap,
-                problem.heights(),
-                problem.offset(),
-                scale,
-            )?;
-            self.fresh = true;
-        }
-        self.p_scale = scale;
+        self.gap.advance(problem, ws, step, tau, limit)?;
         self.k += 1;
         Ok(())
     }

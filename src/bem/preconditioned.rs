@@ -205,9 +205,7 @@ use std::time::Instant;
 
 use super::problem::{Options, Problem};
 use super::solution::{Fallback, Iteration, Solution};
-use super::steps::{
-    gap_stats, project_step, refresh_gap, sparse_limit, Entry, GapStats, Pending, LANES,
-};
+use super::steps::{project_step, sparse_limit, Entry, GapStats, LazyGap, LANES};
 use super::workspace::{Finish, Workspace};
 use crate::error::{Error, Result};
 
@@ -255,7 +253,7 @@ pub(crate) fn solve(
     let mut state = State::new(problem, ws)?;
     let mut stall = Stall::new(stall_iterations);
     let (residual, stats) = loop {
-        let st = state.measure(problem, ws);
+        let st = state.gap.measure(problem, ws);
         let eps = st.residual(state.load, problem.sigma_h());
         observer(Iteration {
             iteration: state.k,
@@ -263,14 +261,14 @@ pub(crate) fn solve(
             contact_fraction: st.count as f64 / problem.nodes() as f64,
         });
         if eps <= opts.tolerance && !st.overlap(state.load, opts.tolerance, problem.sigma_h()) {
-            if state.fresh {
+            if state.gap.fresh {
                 break (eps, st);
             }
-            state.refresh(problem, ws)?;
+            state.gap.refresh(problem, ws)?;
             continue;
         }
         if cap.is_some_and(|c| eps <= c.tolerance && st.p_max > c.yield_stress) {
-            state.hand_over(ws);
+            state.gap.hand_over(ws);
             return Ok(Outcome::Capped(state.k));
         }
         if state.k >= opts.max_iterations {
@@ -282,14 +280,14 @@ pub(crate) fn solve(
             });
         }
         if stall.stalled(state.k, eps) || !state.iterate(problem, ws, &st)? {
-            state.hand_over(ws);
+            state.gap.hand_over(ws);
             return Ok(Outcome::Stalled(Fallback {
                 iterations: state.k,
                 residual: eps,
             }));
         }
     };
-    state.hand_over(ws);
+    state.gap.hand_over(ws);
     let shift = if state.load && stats.count > 0 {
         stats.g_min
     } else {
@@ -343,10 +341,8 @@ impl Stall {
 /// The iteration's state between passes.
 struct State {
     load: bool,
-    fresh: bool,
-    pending: Pending,
-    p_scale: f64,
-    g_ref: f64,
+    /// Pressure scale, pending gap update, freshness.
+    gap: LazyGap,
     conjugacy: Conjugacy,
     /// Stiffness of the mean mode in the preconditioner (see [`Operator::fundamental_stiffness`]).
     ///
@@ -370,73 +366,23 @@ pub(crate) struct Precond {
 
 impl State {
     fn new(problem: &Problem, ws: &mut Workspace) -> Result<Self> {
-        let f = ws.fields();
-        refresh_gap(
-            f.op,
-            f.pressure,
-            f.gap,
-            problem.heights(),
-            problem.offset(),
-            1.0,
-        )?;
-        f.direction.fill(0.0);
+        let gap = LazyGap::start(problem, ws)?;
         Ok(State {
             load: problem.target_total().is_some(),
-            fresh: true,
-            pending: Pending::NONE,
-            p_scale: 1.0,
-            g_ref: 0.0,
+            gap,
             conjugacy: Conjugacy::default(),
-            mean_stiffness: f.op.fundamental_stiffness(),
+            mean_stiffness: ws.fields().op.fundamental_stiffness(),
             k: 0,
         })
     }
 
-    fn measure(&mut self, problem: &Problem, ws: &mut Workspace) -> GapStats {
-        let f = ws.fields();
-        let st = gap_stats(
-            f.pressure,
-            f.gap,
-            f.response,
-            problem.heights(),
-            problem.offset(),
-            self.pending,
-            self.g_ref,
-            self.p_scale,
-        );
-        self.pending = Pending::NONE;
-        st
-    }
-
-    fn refresh(&mut self, problem: &Problem, ws: &mut Workspace) -> Result<()> {
-        let f = ws.fields();
-        refresh_gap(
-            f.op,
-            f.pressure,
-            f.gap,
-            problem.heights(),
-            problem.offset(),
-            self.p_scale,
-        )?;
-        self.fresh = true;
-        Ok(())
-    }
-
-    /// Apply the deferred rescaling: the workspace holds the pressure itself.
-    fn hand_over(&mut self, ws: &mut Workspace) {
-        let s = self.p_scale;
-        ws.fields().pressure.iter_mut().for_each(|p| *p *= s);
-        self.p_scale = 1.0;
-    }
-
-    /// One preconditioned step; false when it is degenerate (no descent).
     fn iterate(&mut self, problem: &Problem, ws: &mut Workspace, st: &GapStats) -> Result<bool> {
         let g_bar = if self.load && st.count > 0 {
-            self.g_ref + st.sum_dg / st.count as f64
+            self.gap.g_ref + st.sum_dg / st.count as f64
         } else {
             0.0
         };
-        self.g_ref = g_bar;
+        self.gap.g_ref = g_bar;
         let pc = precondition(ws, g_bar, f64::INFINITY, self.mean_stiffness)?;
         let Some((beta, mu)) = self.conjugacy.next(&pc, self.load) else {
             return Ok(false);
@@ -452,37 +398,14 @@ impl State {
             f.pressure,
             f.direction,
             f.gap,
-            self.p_scale,
+            self.gap.p_scale,
             tau,
             Entry::Direction,
             limit,
             f.sparse_idx,
             f.sparse_val,
         );
-        let scale = match problem.target_total() {
-            Some(total) if step.sum_p > 0.0 => total / step.sum_p,
-            _ => 1.0,
-        };
-        let sparse = step.changed <= limit && f.op.add_sparse(f.sparse_idx, f.sparse_val, f.gap);
-        if step.changed == 0 || sparse {
-            self.pending = Pending {
-                g_scale: scale,
-                tau,
-                update: true,
-            };
-            self.fresh = false;
-        } else {
-            refresh_gap(
-                f.op,
-                f.pressure,
-                f.gap,
-                problem.heights(),
-                problem.offset(),
-                scale,
-            )?;
-            self.fresh = true;
-        }
-        self.p_scale = scale;
+        self.gap.advance(problem, ws, step, tau, limit)?;
         self.k += 1;
         Ok(true)
     }

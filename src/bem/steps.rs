@@ -7,6 +7,8 @@
 //! independent sums let the compiler vectorise).
 
 use super::kernel::Operator;
+use super::problem::Problem;
+use super::workspace::Workspace;
 use crate::error::Result;
 
 /// Independent partial sums per reduction.
@@ -289,5 +291,126 @@ pub(crate) fn project_step(
         sum_p: sums.iter().sum(),
         changed,
         entered,
+    }
+}
+
+/// The pressure and gap of a Polonsky–Keer loop between passes, as both
+/// loops (plain and preconditioned) keep them: the step's rescaling of p and
+/// its linear gap update are deferred to the next pass over the fields.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct LazyGap {
+    /// The gap was computed from a fresh `𝒢p` (convergence is declared only then).
+    pub fresh: bool,
+    /// The step's linear gap update (with its rescaling s), applied lazily
+    /// in the next gap pass.
+    pending: Pending,
+    /// The pressure is `p_scale · p` (the step's rescaling is applied by the
+    /// next step, which rewrites p anyway).
+    pub p_scale: f64,
+    /// ḡ of the last step: the reference of the gap pass's contact sums.
+    pub g_ref: f64,
+}
+
+impl LazyGap {
+    /// The first gap, from the start pressure the workspace holds (and a
+    /// zero direction).
+    pub fn start(problem: &Problem, ws: &mut Workspace) -> Result<Self> {
+        let f = ws.fields();
+        refresh_gap(
+            f.op,
+            f.pressure,
+            f.gap,
+            problem.heights(),
+            problem.offset(),
+            1.0,
+        )?;
+        f.direction.fill(0.0);
+        Ok(LazyGap {
+            fresh: true,
+            pending: Pending::NONE,
+            p_scale: 1.0,
+            g_ref: 0.0,
+        })
+    }
+
+    /// Apply the pending update and gather the gap statistics.
+    pub fn measure(&mut self, problem: &Problem, ws: &mut Workspace) -> GapStats {
+        let f = ws.fields();
+        let st = gap_stats(
+            f.pressure,
+            f.gap,
+            f.response,
+            problem.heights(),
+            problem.offset(),
+            self.pending,
+            self.g_ref,
+            self.p_scale,
+        );
+        self.pending = Pending::NONE;
+        st
+    }
+
+    /// A fresh gap `𝒢(p_scale·p)` before convergence is declared.
+    pub fn refresh(&mut self, problem: &Problem, ws: &mut Workspace) -> Result<()> {
+        let f = ws.fields();
+        refresh_gap(
+            f.op,
+            f.pressure,
+            f.gap,
+            problem.heights(),
+            problem.offset(),
+            self.p_scale,
+        )?;
+        self.fresh = true;
+        Ok(())
+    }
+
+    /// Apply the deferred rescaling: the workspace holds the pressure itself.
+    pub fn hand_over(&mut self, ws: &mut Workspace) {
+        let s = self.p_scale;
+        ws.fields().pressure.iter_mut().for_each(|p| *p *= s);
+        self.p_scale = 1.0;
+    }
+
+    /// After [`project_step`] with step length `tau`: rescale p to the load
+    /// (load control) and update the gap, linearly with the sparse
+    /// correction of at most `limit` changed nodes (deferred to the next
+    /// [`LazyGap::measure`]), or from a fresh `𝒢p` when more changed.
+    pub fn advance(
+        &mut self,
+        problem: &Problem,
+        ws: &mut Workspace,
+        step: Step,
+        tau: f64,
+        limit: usize,
+    ) -> Result<()> {
+        let f = ws.fields();
+        let scale = match problem.target_total() {
+            Some(total) if step.sum_p > 0.0 => total / step.sum_p,
+            _ => 1.0,
+        };
+        let sparse = step.changed <= limit && f.op.add_sparse(f.sparse_idx, f.sparse_val, f.gap);
+        if step.changed == 0 || sparse {
+            // u = s (u − τ 𝒢t + 𝒢c), c the sparse correction (just added).
+            self.pending = Pending {
+                g_scale: scale,
+                tau,
+                update: true,
+            };
+            self.fresh = false;
+        } else {
+            // u = 𝒢(s p) = s 𝒢p.
+            refresh_gap(
+                f.op,
+                f.pressure,
+                f.gap,
+                problem.heights(),
+                problem.offset(),
+                scale,
+            )?;
+            self.fresh = true;
+        }
+        self.p_scale = scale;
+        Ok(())
     }
 }
