@@ -333,9 +333,11 @@ def bem_rough(
     adhesion_range: Optional[float] = None,
     adhesion: Literal["maugis", "exponential"] = "maugis",
     mean_gap: Optional[ArrayLike] = None,
+    approach: Optional[ArrayLike] = None,
 ) -> Report:
     """`persson bem rough --json`; with `work_of_adhesion`, `adhesion_range` and
-    `mean_gap` instead of `pressure`, `persson bem rough --work-of-adhesion --json`."""
+    `mean_gap` (or `approach`, periodic or free) instead of `pressure`,
+    `persson bem rough --work-of-adhesion --json`."""
 def bem_hertz(
     *,
     grid: int = 256,

@@ -10,7 +10,8 @@ use persson::bem::surface::{synthesize as synth, GridSurface};
 use persson::bem::{check_memory, Boundary, Control, Operator, Options, Solver};
 use persson::error::check;
 use persson_studies::bem_detail::{
-    adhesive_path, adhesive_sphere, adhesive_warnings, sphere_warnings, LawKind,
+    adhesive_controlled_path, adhesive_sphere, adhesive_warnings, sphere_warnings, LawKind,
+    PathControl,
 };
 use persson_studies::scene::BoundaryName;
 use persson_studies::validation::{self, ComparisonConfig, SweepSettings, UserData, UserHistogram};
@@ -164,11 +165,13 @@ fn bem_solve<'py>(
 /// With `work_of_adhesion` Δγ, `adhesion_range` ρ and `mean_gap` (a list,
 /// in order) instead of `pressure`: `persson bem rough --work-of-adhesion
 /// --json`, the adhesive BEM (`adhesion` "maugis" or "exponential") along
-/// the mean-gap path, periodic.
+/// the mean-gap path, periodic; or with `approach` (a list of rigid-body
+/// approaches from first touch) instead of `mean_gap`, periodic or
+/// `boundary="free"`: `--approach`.
 #[pyfunction]
 #[pyo3(
-    signature = (contact_modulus, pressure=None, *, heights=None, size=None, spectrum=None, grid=None, seed=Seed(1), boundary="periodic", yield_stress=None, bins=None, tolerance=1e-10, max_iterations=10_000, work_of_adhesion=None, adhesion_range=None, adhesion="maugis", mean_gap=None),
-    text_signature = "(contact_modulus, pressure=None, *, heights=None, size=None, spectrum=None, grid=None, seed=1, boundary='periodic', yield_stress=None, bins=None, tolerance=1e-10, max_iterations=10000, work_of_adhesion=None, adhesion_range=None, adhesion='maugis', mean_gap=None)"
+    signature = (contact_modulus, pressure=None, *, heights=None, size=None, spectrum=None, grid=None, seed=Seed(1), boundary="periodic", yield_stress=None, bins=None, tolerance=1e-10, max_iterations=10_000, work_of_adhesion=None, adhesion_range=None, adhesion="maugis", mean_gap=None, approach=None),
+    text_signature = "(contact_modulus, pressure=None, *, heights=None, size=None, spectrum=None, grid=None, seed=1, boundary='periodic', yield_stress=None, bins=None, tolerance=1e-10, max_iterations=10000, work_of_adhesion=None, adhesion_range=None, adhesion='maugis', mean_gap=None, approach=None)"
 )]
 #[allow(clippy::too_many_arguments)]
 fn bem_rough<'py>(
@@ -189,6 +192,7 @@ fn bem_rough<'py>(
     adhesion_range: Option<f64>,
     adhesion: &str,
     mean_gap: Option<&Bound<'py, PyAny>>,
+    approach: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let Seed(seed) = seed;
     let b = self::boundary(boundary)?;
@@ -199,17 +203,25 @@ fn bem_rough<'py>(
                 "work_of_adhesion: solves at mean_gap; pressure, yield_stress and bins do not apply",
             ));
         }
-        if b != Boundary::Periodic {
-            return Err(value_error(
-                "boundary: the adhesive BEM of bem_rough is periodic (mean-gap control)",
-            ));
-        }
         let range = adhesion_range
             .ok_or_else(|| value_error("adhesion_range: required with work_of_adhesion"))?;
-        let gaps = float_list(
-            "mean_gap",
-            mean_gap.ok_or_else(|| value_error("mean_gap: required with work_of_adhesion"))?,
-        )?;
+        let (by_gap, values) = match (mean_gap, approach) {
+            (Some(_), Some(_)) => {
+                return Err(value_error("approach: give mean_gap or approach, not both"))
+            }
+            (Some(_), None) if b != Boundary::Periodic => {
+                return Err(value_error(
+                    "mean_gap: with boundary='free' the adhesive BEM runs under approach control (approach=[…])",
+                ))
+            }
+            (Some(g), None) => (true, float_list("mean_gap", g)?),
+            (None, Some(d)) => (false, float_list("approach", d)?),
+            (None, None) => {
+                return Err(value_error(
+                    "mean_gap: required with work_of_adhesion (or approach)",
+                ))
+            }
+        };
         let kind = law_kind(adhesion)?;
         let opts = persson::bem::adhesive::AdhesiveOptions {
             tolerance: check::tolerance("tolerance", tolerance).map_err(err)?,
@@ -218,11 +230,17 @@ fn bem_rough<'py>(
         let (s, _) = grid_surface(py, source, b)?;
         let r = py
             .detach(|| {
-                adhesive_path(
+                let control = if by_gap {
+                    PathControl::MeanGap(&values)
+                } else {
+                    PathControl::Approach(&values)
+                };
+                adhesive_controlled_path(
                     &s.heights,
                     (s.n, s.size, contact_modulus),
+                    b,
                     (kind, dg, range),
-                    &gaps,
+                    control,
                     &opts,
                 )
             })

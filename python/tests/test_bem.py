@@ -162,6 +162,23 @@ def test_adhesive_rough_matches_cli():
                           adhesion_range=1e-2)
 
 
+def test_adhesive_free_boundary_matches_cli():
+    """`bem_rough(boundary="free", approach=[…])` is `bem rough --boundary free --approach`;
+    mean_gap on the free boundary is refused, naming it."""
+    cli = run_cli("bem", "rough", *SPEC, "--contact-modulus", 1, "--grid", 32, "--seed", 3,
+                  "--boundary", "free", "--work-of-adhesion", 2e-4, "--adhesion-range",
+                  0.05, "--approach", "1e-2,0,-1e-2")
+    r = persson.bem_rough(1.0, spectrum=spectrum(), grid=32, seed=3, boundary="free",
+                          work_of_adhesion=2e-4, adhesion_range=0.05,
+                          approach=[1e-2, 0.0, -1e-2])
+    same(r, cli)
+    assert r["boundary"] == "free"
+    assert [p["approach"] for p in r["points"]] == [1e-2, 0.0, -1e-2]
+    with pytest.raises(ValueError, match="mean_gap"):
+        persson.bem_rough(1.0, spectrum=spectrum(), grid=32, boundary="free",
+                          work_of_adhesion=2e-4, adhesion_range=0.05, mean_gap=[1e-2])
+
+
 def test_adhesive_sphere_matches_cli():
     """`bem_hertz(work_of_adhesion=…)` is `persson bem hertz --work-of-adhesion --json`."""
     cli = run_cli("bem", "hertz", "--grid", "16,32", "--boundary", "periodic",

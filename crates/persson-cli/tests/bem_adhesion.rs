@@ -99,6 +99,60 @@ fn sticky_path_reaches_tension_and_reports_pull_off() {
     assert_eq!(a["warnings"].as_array().map(Vec::len), Some(0), "{a}");
 }
 
+/// `--boundary free --approach`: with Δγ → 0 the free adhesive solve at the
+/// approach δ that `bem rough --boundary free --pressure σ0` reports carries
+/// that σ0 on the same contact nodes with the same mean separation (two
+/// solvers, load against approach control, the same tolerance).
+#[test]
+fn free_boundary_under_approach_control_is_the_non_adhesive_contact() {
+    let free = ["--boundary", "free"];
+    let b = run(&[&free[..], &["--pressure", "0.01", "--json"]].concat());
+    let q = &b["points"][0];
+    let delta = f(q, "approach");
+    let a = run(&[
+        &free[..],
+        &[
+            "--work-of-adhesion",
+            "1e-14",
+            "--adhesion-range",
+            "0.02",
+            "--approach",
+            &format!("{delta:e}"),
+            "--json",
+        ],
+    ]
+    .concat());
+    assert_eq!(a["boundary"], "free");
+    let p = &a["points"][0];
+    assert!(
+        (f(p, "nominal_pressure") / 0.01 - 1.0).abs() < 1e-8,
+        "p̄ = {} against σ0 = 0.01",
+        f(p, "nominal_pressure")
+    );
+    assert_eq!(f(p, "contact_fraction"), f(q, "contact_fraction"));
+    assert!((f(p, "mean_separation") / f(q, "mean_separation") - 1.0).abs() < 1e-8);
+    assert_eq!(f(p, "approach"), delta);
+}
+
+/// Periodic, `--approach δ` is `--mean-gap ḡ` with ḡ = max h − mean h − δ:
+/// the same solve.
+#[test]
+fn periodic_approach_is_the_mean_gap_path() {
+    let law = ["--work-of-adhesion", "2e-4", "--adhesion-range", "0.02"];
+    let g = run(&[&law[..], &["--mean-gap", "4e-3,2e-3", "--json"]].concat());
+    let deltas: Vec<String> = (0..2)
+        .map(|k| format!("{:e}", f(&g["points"][k], "approach")))
+        .collect();
+    let d = run(&[&law[..], &["--approach", &deltas.join(","), "--json"]].concat());
+    for k in 0..2 {
+        let (a, b) = (&g["points"][k], &d["points"][k]);
+        assert!((f(b, "mean_separation") - f(a, "mean_separation")).abs() < 1e-15);
+        assert!((f(b, "nominal_pressure") / f(a, "nominal_pressure") - 1.0).abs() < 1e-9);
+        assert_eq!(f(b, "contact_fraction"), f(a, "contact_fraction"));
+    }
+    assert_eq!(d["pull_off_stress"], g["pull_off_stress"]);
+}
+
 /// A range below the grid spacing L/N is warned of, by kind.
 #[test]
 fn unresolved_cohesive_zone_is_warned_of() {
@@ -192,6 +246,30 @@ fn bad_adhesion_input_names_the_flag() {
                 "free",
             ],
             "--boundary",
+        ),
+        (
+            &[
+                "--work-of-adhesion",
+                "1e-4",
+                "--adhesion-range",
+                "0.02",
+                "--approach",
+                "1",
+            ],
+            "--approach",
+        ),
+        (
+            &[
+                "--work-of-adhesion",
+                "1e-4",
+                "--adhesion-range",
+                "0.02",
+                "--approach",
+                "1e-3",
+                "--mean-gap",
+                "1e-3",
+            ],
+            "--approach",
         ),
     ];
     for (extra, flag) in cases {

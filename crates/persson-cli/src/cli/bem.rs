@@ -303,7 +303,7 @@ fn rough_surface(
 
 /// `bem rough --work-of-adhesion`: the adhesive BEM along the --mean-gap path.
 fn adhesive_rough(a: &RoughArgs, work_of_adhesion: f64) -> anyhow::Result<()> {
-    use persson_studies::bem_detail::{adhesive_path, adhesive_warnings};
+    use persson_studies::bem_detail::{adhesive_controlled_path, adhesive_warnings, PathControl};
     let ad = &a.adhesion;
     if !(work_of_adhesion.is_finite() && work_of_adhesion > 0.0) {
         anyhow::bail!("--work-of-adhesion {work_of_adhesion}: must be finite and > 0 (J/m²)");
@@ -317,15 +317,20 @@ fn adhesive_rough(a: &RoughArgs, work_of_adhesion: f64) -> anyhow::Result<()> {
     if let Some(g) = ad.mean_gap.iter().find(|g| !(g.is_finite() && **g > 0.0)) {
         anyhow::bail!("--mean-gap {g}: must be finite and > 0 (m)");
     }
-    if ad.mean_gap.is_empty() {
-        anyhow::bail!("--work-of-adhesion needs --mean-gap g1,g2,… (the adhesive BEM runs under mean-gap control)");
+    if let Some(d) = ad.approach.iter().find(|d| !d.is_finite()) {
+        anyhow::bail!("--approach {d}: must be finite (m)");
     }
-    if a.boundary != persson::bem::Boundary::Periodic {
-        anyhow::bail!(
-            "--boundary {}: the adhesive BEM of `bem rough` is periodic (mean-gap control)",
-            a.boundary.name()
-        );
-    }
+    let free = a.boundary != persson::bem::Boundary::Periodic;
+    let control = match (ad.mean_gap.is_empty(), ad.approach.is_empty()) {
+        (false, _) if free => anyhow::bail!(
+            "--mean-gap: with --boundary free the adhesive BEM runs under approach control: give --approach d1,d2,… (m) instead"
+        ),
+        (false, _) => PathControl::MeanGap(&ad.mean_gap),
+        (true, false) => PathControl::Approach(&ad.approach),
+        (true, true) => anyhow::bail!(
+            "--work-of-adhesion needs --mean-gap g1,g2,… (or --approach d1,d2,…): the adhesive BEM runs along a path of mean gaps (approaches)"
+        ),
+    };
     if a.spectrum.example {
         eprintln!("persson: {}", persson_studies::scene::EXAMPLE);
     }
@@ -340,11 +345,12 @@ fn adhesive_rough(a: &RoughArgs, work_of_adhesion: f64) -> anyhow::Result<()> {
             .map_err(|e| anyhow::anyhow!("--tolerance: {e}"))?,
         max_iterations: a.solver.max_iterations,
     };
-    let report = adhesive_path(
+    let report = adhesive_controlled_path(
         &surface.heights,
         (surface.n, surface.size, e_star),
+        a.boundary,
         (kind, work_of_adhesion, range),
-        &ad.mean_gap,
+        control,
         &options,
     )
     .map_err(|e| match super::args::flag_of(&e, ADHESION_FLAGS) {
@@ -416,6 +422,7 @@ const ADHESION_FLAGS: &[(&str, &str)] = &[
     ("work_of_adhesion", "--work-of-adhesion"),
     ("adhesion_range", "--adhesion-range"),
     ("mean_gap", "--mean-gap"),
+    ("approach", "--approach"),
     ("tolerance", "--tolerance"),
     ("heights", "--surface"),
 ];

@@ -252,11 +252,10 @@ pub struct TransportArgs {
 #[derive(clap::Args, Debug, Clone)]
 pub struct AdhesionBemArgs {
     /// Work of adhesion Δγ, J/m² (unit of the modulus × L): solve the adhesive
-    /// contact at each --mean-gap instead of at the --pressure list.
+    /// contact at each --mean-gap (or --approach) instead of at the --pressure list.
     #[arg(
         long,
         requires = "adhesion_range",
-        requires = "mean_gap",
         conflicts_with_all = [
             "pressure", "yield_stress", "plot", "histogram", "pressure_field", "patches",
             "subsurface", "leakage", "conductivity", "resistivity", "gas_conductivity", "gap_field",
@@ -276,4 +275,9 @@ pub struct AdhesionBemArgs {
     /// out for a loading–unloading curve); comma-separated or repeated.
     #[arg(long, value_delimiter = ',', requires = "work_of_adhesion", allow_hyphen_values = true, value_parser = super::number::number)]
     pub mean_gap: Vec<f64>,
+    /// Approaches δ of the adhesive path, m: the rigid surface's displacement
+    /// from first touch (δ < 0 apart), in the order given; instead of
+    /// --mean-gap, and the control of `--boundary free`.
+    #[arg(long, value_delimiter = ',', requires = "work_of_adhesion", conflicts_with = "mean_gap", allow_hyphen_values = true, value_parser = super::number::number)]
+    pub approach: Vec<f64>,
 }

@@ -45,7 +45,7 @@ impl LawKind {
     }
 }
 
-/// One adhesive path on one periodic surface.
+/// One adhesive path on one surface.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[non_exhaustive]
 pub struct AdhesiveBemReport {
@@ -53,6 +53,8 @@ pub struct AdhesiveBemReport {
     pub grid: usize,
     /// Side L, m.
     pub size: f64,
+    /// Periodic, or free (the surface a window of an infinite half-space).
+    pub boundary: Boundary,
     /// E*, Pa.
     pub contact_modulus: f64,
     /// The cohesive law.
@@ -71,6 +73,18 @@ pub struct AdhesiveBemReport {
     pub pull_off_stress: f64,
 }
 
+/// What an adhesive path prescribes, point by point.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum PathControl<'a> {
+    /// Mean gaps ḡ (m): periodic only, stable on the whole curve.
+    MeanGap(&'a [f64]),
+    /// Approaches δ of the rigid surface from first touch (m; δ < 0 is a
+    /// separation): periodic or free. Under approach control the free
+    /// boundary's curve is stable too (the rigid surface is held), but a
+    /// periodic δ must keep ḡ = max h − mean h − δ > 0.
+    Approach(&'a [f64]),
+}
+
 /// Solve the adhesive contact of the periodic surface `heights` (N × N,
 /// side `size`, m) against a flat half-space of modulus `contact_modulus` at
 /// each of `mean_gaps` (m) in order.
@@ -80,28 +94,60 @@ pub struct AdhesiveBemReport {
 /// [`AdhesiveSolver::sequence`].
 pub fn adhesive_path(
     heights: &[f64],
-    (n, size, contact_modulus): (usize, f64, f64),
-    (kind, work_of_adhesion, adhesion_range): (LawKind, f64, f64),
+    grid: (usize, f64, f64),
+    law: (LawKind, f64, f64),
     mean_gaps: &[f64],
     options: &AdhesiveOptions,
 ) -> Result<AdhesiveBemReport> {
-    if mean_gaps.is_empty() {
+    adhesive_controlled_path(
+        heights,
+        grid,
+        Boundary::Periodic,
+        law,
+        PathControl::MeanGap(mean_gaps),
+        options,
+    )
+}
+
+/// [`adhesive_path`] on either boundary, under mean-gap or approach
+/// control ([`AdhesiveSolver::sequence_approach`] for the latter).
+///
+/// # Errors
+/// As [`adhesive_path`]; mean-gap control on the free boundary
+/// (`mean_gap`); a bad approach (`approach`).
+pub fn adhesive_controlled_path(
+    heights: &[f64],
+    (n, size, contact_modulus): (usize, f64, f64),
+    boundary: Boundary,
+    (kind, work_of_adhesion, adhesion_range): (LawKind, f64, f64),
+    control: PathControl<'_>,
+    options: &AdhesiveOptions,
+) -> Result<AdhesiveBemReport> {
+    let (name, values) = match control {
+        PathControl::MeanGap(g) => ("mean_gap", g),
+        PathControl::Approach(d) => ("approach", d),
+    };
+    if values.is_empty() {
         return Err(Error::Inconsistent {
-            name: "mean_gap".into(),
-            requirement: "at least one mean gap".into(),
+            name: name.into(),
+            requirement: format!("at least one {}", name.replace('_', " ")),
         });
     }
     let law = kind.law(work_of_adhesion, adhesion_range)?;
-    let op = Operator::new(Boundary::Periodic, n, size, contact_modulus)?;
+    let op = Operator::new(boundary, n, size, contact_modulus)?;
     let mut solver = AdhesiveSolver::new(op)?;
     let AdhesiveSequence {
         points,
         pull_off_pressure,
         ..
-    } = solver.sequence(heights, &law, mean_gaps, options)?;
+    } = match control {
+        PathControl::MeanGap(g) => solver.sequence(heights, &law, g, options)?,
+        PathControl::Approach(d) => solver.sequence_approach(heights, &law, d, options)?,
+    };
     Ok(AdhesiveBemReport {
         grid: n,
         size,
+        boundary,
         contact_modulus,
         adhesion: kind,
         work_of_adhesion,
@@ -109,7 +155,8 @@ pub fn adhesive_path(
         cohesive_stress: work_of_adhesion / adhesion_range,
         tolerance: options.tolerance,
         points,
-        pull_off_stress: pull_off_pressure,
+        // + 0.0: a path never in tension reports 0, not −0.
+        pull_off_stress: pull_off_pressure + 0.0,
     })
 }
 
@@ -162,18 +209,20 @@ impl Tabulate for AdhesiveBemReport {
         let mut t = Table::new(
             "bem_adhesion",
             format!(
-                "Adhesive BEM ({}, {}² periodic): force against mean gap, in the order given",
+                "Adhesive BEM ({}, {}² {}): force along the path, in the order given",
                 match self.adhesion {
                     LawKind::Maugis => "Maugis–Dugdale",
                     LawKind::Exponential => "exponential law",
                 },
-                self.grid
+                self.grid,
+                self.boundary.name()
             ),
         )
         .scalar("work_of_adhesion", "Δγ (J/m²)", self.work_of_adhesion)
         .scalar("adhesion_range", "ρ (m)", self.adhesion_range)
         .scalar("cohesive_stress", "Δγ/ρ", self.cohesive_stress)
         .scalar("pull_off_stress", "pull-off −min p̄", self.pull_off_stress)
+        .column("approach", "δ (m)")
         .column("mean_gap", "ḡ (m)")
         .column("mean_pressure", "p̄")
         .column("contact_fraction", "A_rep/A0")
@@ -184,6 +233,7 @@ impl Tabulate for AdhesiveBemReport {
         .omittable(1);
         for p in &self.points {
             t.push(vec![
+                p.approach.into(),
                 p.mean_gap.into(),
                 p.mean_pressure.into(),
                 p.contact_fraction.into(),

@@ -36,8 +36,8 @@ mod solves;
 use serde::Serialize;
 
 pub use adhesive::{
-    adhesive_path, adhesive_sphere, adhesive_warnings, sphere_warnings, AdhesiveBemReport,
-    AdhesiveSphereReport, LawKind, SpherePullOff,
+    adhesive_controlled_path, adhesive_path, adhesive_sphere, adhesive_warnings, sphere_warnings,
+    AdhesiveBemReport, AdhesiveSphereReport, LawKind, PathControl, SpherePullOff,
 };
 pub use section::{hertz_section, VerticalSection};
 pub use solves::{indexed, Details, StressMap, SubsurfaceOptions, DEFAULT_POISSON};
