@@ -30,8 +30,8 @@ use std::time::Instant;
 
 use super::problem::{Options, Problem};
 use super::solution::{Iteration, Solution};
-use super::steps::{project_step, sparse_limit, Entry, GapStats, LazyGap, LANES};
-use super::workspace::{Finish, Workspace};
+use super::steps::{finish_elastic, project_step, sparse_limit, Entry, GapStats, LazyGap, LANES};
+use super::workspace::Workspace;
 use crate::error::{Error, Result};
 
 /// Solve `problem` from the pressure [`Workspace::start`] (or
@@ -75,21 +75,13 @@ pub(crate) fn solve(
         state.iterate(problem, ws, &st)?;
     };
     state.gap.hand_over(ws);
-    // Final gap: zero at the lowest contact point (load control);
-    // g = u − (h − max h) − g_min = 0 on the contact  ⇒  δ = g_min.
-    let shift = if state.load && stats.count > 0 {
-        stats.g_min
-    } else {
-        0.0
-    };
-    let approach = if state.load {
-        shift
-    } else {
-        problem.penetration()
-    };
-    let mut done = Finish::elastic(shift, approach, stats.count, state.k, residual);
-    done.seconds = start.elapsed().as_secs_f64();
-    Ok(ws.finish(problem, done))
+    Ok(finish_elastic(
+        problem,
+        ws,
+        &stats,
+        (state.k, residual),
+        start,
+    ))
 }
 
 /// The iteration's state between passes.

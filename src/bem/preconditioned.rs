@@ -205,8 +205,8 @@ use std::time::Instant;
 
 use super::problem::{Options, Problem};
 use super::solution::{Fallback, Iteration, Solution};
-use super::steps::{project_step, sparse_limit, Entry, GapStats, LazyGap, LANES};
-use super::workspace::{Finish, Workspace};
+use super::steps::{finish_elastic, project_step, sparse_limit, Entry, GapStats, LazyGap, LANES};
+use super::workspace::Workspace;
 use crate::error::{Error, Result};
 
 /// How the preconditioned loop ended.
@@ -288,19 +288,13 @@ pub(crate) fn solve(
         }
     };
     state.gap.hand_over(ws);
-    let shift = if state.load && stats.count > 0 {
-        stats.g_min
-    } else {
-        0.0
-    };
-    let approach = if state.load {
-        shift
-    } else {
-        problem.penetration()
-    };
-    let mut done = Finish::elastic(shift, approach, stats.count, state.k, residual);
-    done.seconds = start.elapsed().as_secs_f64();
-    Ok(Outcome::Converged(ws.finish(problem, done)))
+    Ok(Outcome::Converged(finish_elastic(
+        problem,
+        ws,
+        &stats,
+        (state.k, residual),
+        start,
+    )))
 }
 
 /// The stall test: the best ε must fall by [`STALL_FACTOR`] in every window.

@@ -8,7 +8,8 @@
 
 use super::kernel::Operator;
 use super::problem::Problem;
-use super::workspace::Workspace;
+use super::solution::Solution;
+use super::workspace::{Finish, Workspace};
 use crate::error::Result;
 
 /// Independent partial sums per reduction.
@@ -413,4 +414,28 @@ impl LazyGap {
         self.p_scale = scale;
         Ok(())
     }
+}
+
+/// The converged solution of an elastic Polonsky–Keer loop (the pressure
+/// handed over) after `iterations`, with ε = `residual`: under load control
+/// the final gap is shifted to zero at the lowest contact point
+/// (g = u − (h − max h) − g_min = 0 on the contact ⇒ δ = g_min), under
+/// penetration control the approach is the prescribed one.
+pub(crate) fn finish_elastic(
+    problem: &Problem,
+    ws: &mut Workspace,
+    stats: &GapStats,
+    (iterations, residual): (usize, f64),
+    start: std::time::Instant,
+) -> Solution {
+    let load = problem.target_total().is_some();
+    let shift = if load && stats.count > 0 {
+        stats.g_min
+    } else {
+        0.0
+    };
+    let approach = if load { shift } else { problem.penetration() };
+    let mut done = Finish::elastic(shift, approach, stats.count, iterations, residual);
+    done.seconds = start.elapsed().as_secs_f64();
+    ws.finish(problem, done)
 }
