@@ -86,7 +86,7 @@ fn zero_work_of_adhesion_is_the_non_adhesive_solver() {
 
 /// JKR's 1.5πRΔγ and DMT's 2πRΔγ bound the pull-off of a sphere for every
 /// Maugis parameter (Maugis 1992); the grid's discretisation error at N = 64
-/// is a few per cent (examples/adhesive_sphere.rs: 1.709 at N = 64, 1.683 at N = 128).
+/// is a few per cent (measured: 1.709 at N = 64, 1.683 at N = 128).
 const PULL_OFF_SLACK: f64 = 0.02;
 
 #[test]

@@ -2,7 +2,8 @@
 //! Persson's theory: the energy balance at full contact (Persson & Tosatti
 //! 2001), the adhesive stress diffusion with a moving detachment boundary
 //! (Persson 2002) and, beside them, the stickiness criterion of Pastewka &
-//! Robbins (2014).
+//! Robbins (2014); and, as the oracle of the adhesive BEM's sphere, Maugis's
+//! (1992) Dugdale-zone solution between JKR and DMT ([`MaugisDugdale`]).
 //!
 //! # Formula
 //! Conventions of the crate (C(q) in Persson's normalisation, E* the contact
@@ -107,6 +108,7 @@
 mod contact;
 mod detachment;
 mod energy;
+mod maugis_dugdale;
 mod model;
 mod moving;
 mod pastewka_robbins;
@@ -114,5 +116,6 @@ mod pastewka_robbins;
 pub use contact::{AdhesiveContact, AdhesivePoint, Flag};
 pub use detachment::DetachmentPoint;
 pub use energy::{true_area_ratio, EnergyPoint, Stickiness};
+pub use maugis_dugdale::{MaugisDugdale, MaugisPoint};
 pub use model::{AdhesionModel, AreaEnhancement};
 pub use pastewka_robbins::{PastewkaRobbins, StickinessComparison};

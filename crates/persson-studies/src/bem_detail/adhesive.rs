@@ -15,6 +15,7 @@ use serde::Serialize;
 
 use crate::table::{Table, Tabulate};
 use crate::Warning;
+use persson::adhesion::MaugisDugdale;
 use persson::bem::adhesive::{
     AdhesiveOptions, AdhesivePoint, AdhesiveSequence, AdhesiveSolver, CohesiveLaw,
 };
@@ -256,6 +257,8 @@ pub struct SpherePullOff {
     pub pull_off_force: f64,
     /// F/(π R Δγ): JKR's 1.5, DMT's 2.
     pub reduced_pull_off_force: f64,
+    /// F / F_MD − 1 against Maugis's pull-off force (Maugis–Dugdale law only).
+    pub maugis_dugdale_difference: Option<f64>,
     /// Points the plain iteration finished after the preconditioned one stalled.
     pub fallbacks: usize,
     /// The path in and out (mean gaps, pressures, fractions).
@@ -288,6 +291,11 @@ pub struct AdhesiveSphereReport {
     pub jkr_pull_off_force: f64,
     /// DMT's pull-off force 2 π R Δγ (λ → 0).
     pub dmt_pull_off_force: f64,
+    /// Maugis's (1992) pull-off force at λ, πRΔγ · (−min P̄)
+    /// ([`persson::adhesion::MaugisDugdale`]): the exact answer of the
+    /// Maugis–Dugdale law for a paraboloid on a half-space; `None` for the
+    /// exponential law, which has no closed form.
+    pub maugis_dugdale_pull_off_force: Option<f64>,
     /// One row per grid.
     pub per_grid: Vec<SpherePullOff>,
 }
@@ -311,6 +319,11 @@ pub fn adhesive_sphere(
     use std::f64::consts::PI;
     let dg = work_of_adhesion;
     let approach_scale = (PI * PI * dg * dg * radius / (contact_modulus * contact_modulus)).cbrt();
+    let lambda = MaugisDugdale::parameter(radius, contact_modulus, dg, dg / adhesion_range)?;
+    let md_force = match kind {
+        LawKind::Maugis => Some(MaugisDugdale::new(lambda)?.pull_off_force() * PI * radius * dg),
+        LawKind::Exponential => None,
+    };
     let per_grid = grids
         .iter()
         .map(|&n| {
@@ -336,6 +349,7 @@ pub fn adhesive_sphere(
                 grid: n,
                 pull_off_force: force,
                 reduced_pull_off_force: force / (PI * radius * dg),
+                maugis_dugdale_difference: md_force.map(|f| force / f - 1.0),
                 fallbacks: r.points.iter().filter(|p| p.fallback.is_some()).count(),
                 points: r.points,
             })
@@ -349,10 +363,10 @@ pub fn adhesive_sphere(
         work_of_adhesion,
         adhesion_range,
         tolerance: options.tolerance,
-        maugis_parameter: dg / adhesion_range
-            * (9.0 * radius / (2.0 * PI * dg * contact_modulus * contact_modulus)).cbrt(),
+        maugis_parameter: lambda,
         jkr_pull_off_force: 1.5 * PI * radius * dg,
         dmt_pull_off_force: 2.0 * PI * radius * dg,
+        maugis_dugdale_pull_off_force: md_force,
         per_grid,
     })
 }
@@ -374,7 +388,7 @@ impl Tabulate for AdhesiveSphereReport {
         let mut t = Table::new(
             "bem_adhesive_sphere",
             format!(
-                "Adhesive sphere ({}, periodic cell): pull-off force against JKR and DMT",
+                "Adhesive sphere ({}, periodic cell): pull-off force against JKR, DMT and Maugis",
                 match self.adhesion {
                     LawKind::Maugis => "Maugis–Dugdale",
                     LawKind::Exponential => "exponential law",
@@ -383,18 +397,30 @@ impl Tabulate for AdhesiveSphereReport {
         )
         .scalar("maugis_parameter", "Maugis λ", self.maugis_parameter)
         .scalar("jkr_pull_off_force", "JKR 1.5πRΔγ", self.jkr_pull_off_force)
-        .scalar("dmt_pull_off_force", "DMT 2πRΔγ", self.dmt_pull_off_force)
-        .column("grid", "N")
-        .column("pull_off_force", "F")
-        .column_digits("reduced_pull_off_force", "F/(πRΔγ)", 5)
-        .column("fallbacks", "fallbacks");
+        .scalar("dmt_pull_off_force", "DMT 2πRΔγ", self.dmt_pull_off_force);
+        if let Some(f) = self.maugis_dugdale_pull_off_force {
+            t = t.scalar("maugis_dugdale_pull_off_force", "Maugis–Dugdale F_MD", f);
+        }
+        t = t
+            .column("grid", "N")
+            .column("pull_off_force", "F")
+            .column_digits("reduced_pull_off_force", "F/(πRΔγ)", 5);
+        let md = self.maugis_dugdale_pull_off_force.is_some();
+        if md {
+            t = t.column("maugis_dugdale_difference", "F/F_MD − 1");
+        }
+        t = t.column("fallbacks", "fallbacks");
         for g in &self.per_grid {
-            t.push(vec![
+            let mut row = vec![
                 g.grid.into(),
                 g.pull_off_force.into(),
                 g.reduced_pull_off_force.into(),
-                g.fallbacks.into(),
-            ]);
+            ];
+            if md {
+                row.push(g.maugis_dugdale_difference.unwrap_or(f64::NAN).into());
+            }
+            row.push(g.fallbacks.into());
+            t.push(row);
         }
         vec![t]
     }
