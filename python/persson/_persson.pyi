@@ -407,6 +407,9 @@ def compare(
     resistivity: Optional[ArrayLike] = None,
     gas_conductivity: Optional[float] = None,
     mean_free_path: Optional[float] = None,
+    work_of_adhesion: Optional[ArrayLike] = None,
+    adhesion_range: Optional[float] = None,
+    adhesion: Literal["maugis", "exponential"] = "maugis",
 ) -> Report:
     """`persson compare --json` (with `yield_stress`: `compare --yield-stress`; with `leakage` / `conductivity` / `resistivity`: `compare --leakage / --conductance`, key `transport`)."""
 def adhesion(

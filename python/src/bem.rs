@@ -427,11 +427,14 @@ fn bem_hertz<'py>(
 /// sizes, `percolation_threshold`) and/or `conductivity`/`resistivity`
 /// (κ or ρ, one value or two) or `gas_conductivity` with `mean_free_path`:
 /// the theories' leak rate and conductance against the BEM's, as
-/// `compare --leakage / --conductance` (key `transport`).
+/// `compare --leakage / --conductance` (key `transport`). With
+/// `work_of_adhesion` (one Δγ or a list; `adhesion_range`, `adhesion`):
+/// Persson's adhesive theory against the adhesive BEM, as
+/// `compare --work-of-adhesion` (key `adhesion`).
 #[pyfunction]
 #[pyo3(
-    signature = (spectrum, contact_modulus, pressure=None, *, heights=None, size=None, periodic=false, grid=256, levels=3, seeds=1, seed=Seed(1), alpha=Some(0.7), pixels_per_wavelength=4.0, tolerance=1e-10, max_iterations=10_000, bins=50, histogram_pressure=None, data=None, data_histogram=None, yield_stress=None, leakage=false, viscosity=None, pressure_drop=None, inlet_pressure=None, outlet_pressure=None, seal_width=1e-3, seal_length=1e-3, percolation_threshold=0.42, conductivity=None, resistivity=None, gas_conductivity=None, mean_free_path=None),
-    text_signature = "(spectrum, contact_modulus, pressure=None, *, heights=None, size=None, periodic=False, grid=256, levels=3, seeds=1, seed=1, alpha=0.7, pixels_per_wavelength=4.0, tolerance=1e-10, max_iterations=10000, bins=50, histogram_pressure=None, data=None, data_histogram=None, yield_stress=None, leakage=False, viscosity=None, pressure_drop=None, inlet_pressure=None, outlet_pressure=None, seal_width=0.001, seal_length=0.001, percolation_threshold=0.42, conductivity=None, resistivity=None, gas_conductivity=None, mean_free_path=None)"
+    signature = (spectrum, contact_modulus, pressure=None, *, heights=None, size=None, periodic=false, grid=256, levels=3, seeds=1, seed=Seed(1), alpha=Some(0.7), pixels_per_wavelength=4.0, tolerance=1e-10, max_iterations=10_000, bins=50, histogram_pressure=None, data=None, data_histogram=None, yield_stress=None, leakage=false, viscosity=None, pressure_drop=None, inlet_pressure=None, outlet_pressure=None, seal_width=1e-3, seal_length=1e-3, percolation_threshold=0.42, conductivity=None, resistivity=None, gas_conductivity=None, mean_free_path=None, work_of_adhesion=None, adhesion_range=None, adhesion="maugis"),
+    text_signature = "(spectrum, contact_modulus, pressure=None, *, heights=None, size=None, periodic=False, grid=256, levels=3, seeds=1, seed=1, alpha=0.7, pixels_per_wavelength=4.0, tolerance=1e-10, max_iterations=10000, bins=50, histogram_pressure=None, data=None, data_histogram=None, yield_stress=None, leakage=False, viscosity=None, pressure_drop=None, inlet_pressure=None, outlet_pressure=None, seal_width=0.001, seal_length=0.001, percolation_threshold=0.42, conductivity=None, resistivity=None, gas_conductivity=None, mean_free_path=None, work_of_adhesion=None, adhesion_range=None, adhesion='maugis')"
 )]
 #[allow(clippy::too_many_arguments)]
 fn compare<'py>(
@@ -467,6 +470,9 @@ fn compare<'py>(
     resistivity: Option<&Bound<'py, PyAny>>,
     gas_conductivity: Option<f64>,
     mean_free_path: Option<f64>,
+    work_of_adhesion: Option<&Bound<'py, PyAny>>,
+    adhesion_range: Option<f64>,
+    adhesion: &str,
 ) -> PyResult<Bound<'py, PyAny>> {
     let Seed(seed) = seed;
     if seeds < 1 {
@@ -497,6 +503,20 @@ fn compare<'py>(
         .map_err(err)?;
     config.histogram_pressure = histogram_pressure;
     config.bins = bins;
+    config.adhesion = match work_of_adhesion {
+        Some(w) => {
+            let mut a = persson_studies::validation::compare_adhesion::AdhesionCompareConfig::new(
+                float_list("work_of_adhesion", w)?,
+            );
+            a.adhesion_range = adhesion_range;
+            a.adhesion = law_kind(adhesion)?;
+            Some(a)
+        }
+        None if adhesion_range.is_some() => {
+            return Err(value_error("adhesion_range: needs work_of_adhesion"))
+        }
+        None => None,
+    };
     config.transport = crate::transport::compare_transport(
         crate::transport::CompareTransport {
             leakage,

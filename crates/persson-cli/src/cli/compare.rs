@@ -96,6 +96,10 @@ fn compare(a: &MainArgs) -> anyhow::Result<()> {
         None => a.spectrum.spec()?.breaks(),
     };
     config.transport = a.transport.config(breaks)?;
+    config.adhesion = a.adhesion.config()?;
+    if config.adhesion.is_some() && a.yield_stress.is_some() {
+        anyhow::bail!("--work-of-adhesion: not with --yield-stress (the adhesive BEM is elastic)");
+    }
     let mut warnings = a.spectrum.file_warnings();
     let report = match &map {
         Some(m) => {

@@ -123,6 +123,8 @@ pub struct MainArgs {
     pub bins: usize,
     #[command(flatten)]
     pub transport: super::compare_transport::TransportArgs,
+    #[command(flatten)]
+    pub adhesion: AdhesionCompareArgs,
     /// Text tables with every column (default: each fits 100 characters, the coarser
     /// grids' columns of a wider table left out and named).
     #[arg(long)]
@@ -224,5 +226,58 @@ impl EnsembleArgs {
             pixels_per_wavelength: self.pixels_per_wavelength,
             options: self.solver.options()?,
         })
+    }
+}
+
+/// `compare --work-of-adhesion` (flattened into `compare`'s flags).
+#[derive(clap::Args, Debug, Clone)]
+pub struct AdhesionCompareArgs {
+    /// Also compare adhesive contact at each work of adhesion Δγ (J/m², unit of the
+    /// modulus × L; comma-separated): Persson's adhesive theory against the adhesive BEM
+    /// along a mean-gap path in and out, A/A0 per point and the pull-off stress.
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = super::number::number)]
+    pub work_of_adhesion: Vec<f64>,
+    /// Range ρ of the BEM's cohesive law, m (default: h'_rms L/N, the height the surface
+    /// changes by over one spacing of the finest grid).
+    #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
+    pub adhesion_range: Option<f64>,
+    /// Cohesive law of the adhesive BEM.
+    #[arg(long, default_value = "maugis", value_parser = ["maugis", "exponential"])]
+    pub adhesion: String,
+}
+
+impl AdhesionCompareArgs {
+    /// The adhesion comparison the flags ask for (`None`: none), each value
+    /// checked and named by its flag.
+    pub fn config(
+        &self,
+    ) -> anyhow::Result<Option<persson_studies::validation::compare_adhesion::AdhesionCompareConfig>>
+    {
+        use persson_studies::bem_detail::LawKind;
+        use persson_studies::validation::compare_adhesion::AdhesionCompareConfig;
+        if self.work_of_adhesion.is_empty() {
+            if self.adhesion_range.is_some() {
+                anyhow::bail!("--adhesion-range: needs --work-of-adhesion Δγ1,Δγ2,…");
+            }
+            return Ok(None);
+        }
+        if let Some(w) = self
+            .work_of_adhesion
+            .iter()
+            .find(|w| !(w.is_finite() && **w > 0.0))
+        {
+            anyhow::bail!("--work-of-adhesion {w}: must be finite and > 0 (J/m²)");
+        }
+        if let Some(r) = self.adhesion_range.filter(|r| !(r.is_finite() && *r > 0.0)) {
+            anyhow::bail!("--adhesion-range {r}: must be finite and > 0 (m)");
+        }
+        let mut c = AdhesionCompareConfig::new(self.work_of_adhesion.clone());
+        c.adhesion_range = self.adhesion_range;
+        c.adhesion = if self.adhesion == "exponential" {
+            LawKind::Exponential
+        } else {
+            LawKind::Maugis
+        };
+        Ok(Some(c))
     }
 }

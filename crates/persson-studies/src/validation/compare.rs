@@ -60,6 +60,9 @@ pub struct ComparisonConfig {
     /// `compare --leakage / --conductance`: the leak rate and conductance
     /// of the theories against the BEM's (`None`: not compared).
     pub transport: Option<super::compare_transport::TransportCompareConfig>,
+    /// `compare --work-of-adhesion`: Persson's adhesive theory against the
+    /// adhesive BEM (`None`: not compared).
+    pub adhesion: Option<super::compare_adhesion::AdhesionCompareConfig>,
 }
 
 impl ComparisonConfig {
@@ -76,6 +79,7 @@ impl ComparisonConfig {
             bins: DEFAULT_BINS,
             method: Method::default(),
             transport: None,
+            adhesion: None,
         }
     }
 }
@@ -450,6 +454,9 @@ fn compare_on(
         // Before the sweep: bad transport settings fail at once.
         t.validate(map.map(|m| m.1), yield_stress)?;
     }
+    if let Some(a) = &config.adhesion {
+        a.validate(map.map(|m| m.1), yield_stress)?;
+    }
     let model = Persson::new(&band, e_star)?;
     let theories = theory_curves(&model, &pressures)?;
 
@@ -528,6 +535,25 @@ fn compare_on(
         }
         None => None,
     };
+    let adhesion = match &config.adhesion {
+        Some(a) => {
+            use super::compare_transport::Surfaces;
+            let surfaces = match map {
+                Some((m, Boundary::Periodic)) => Surfaces::BandLimitedMap(m, q_s),
+                _ => Surfaces::Synthesised(&band),
+            };
+            let max_pressure = pressures.iter().copied().fold(0.0, f64::max);
+            Some(super::compare_adhesion::compare_adhesion(
+                &band,
+                surfaces,
+                (e_star, rms_slope),
+                max_pressure,
+                &sweep_config,
+                a,
+            )?)
+        }
+        None => None,
+    };
 
     let distributions = pressure_distributions(&sw, &model, config.bins)?;
     let finest = sw.mean_contact_fraction().pop().unwrap_or(SeedMean {
@@ -600,6 +626,7 @@ fn compare_on(
         data_histogram,
         measured,
         transport,
+        adhesion,
         warnings,
     })
 }

@@ -309,14 +309,14 @@ pub(super) enum Surfaces<'a> {
 
 #[cfg_attr(not(feature = "flow"), allow(dead_code))]
 impl Surfaces<'_> {
-    fn seeds<'s>(&self, seeds: &'s [u64]) -> &'s [u64] {
+    pub(super) fn seeds<'s>(&self, seeds: &'s [u64]) -> &'s [u64] {
         match self {
             Surfaces::Synthesised(_) => seeds,
             Surfaces::BandLimitedMap(..) => seeds.get(..1).unwrap_or_default(),
         }
     }
 
-    fn on_grids(&self, config: &SweepConfig, seed: u64) -> Result<Vec<GridSurface>> {
+    pub(super) fn on_grids(&self, config: &SweepConfig, seed: u64) -> Result<Vec<GridSurface>> {
         match *self {
             Surfaces::Synthesised(s) => {
                 persson::bem::resample::nested_surfaces(s, &config.grids, config.size, seed)

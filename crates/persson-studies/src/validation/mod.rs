@@ -53,6 +53,8 @@ pub mod asperity;
 #[cfg(feature = "bem")]
 mod compare;
 #[cfg(feature = "bem")]
+pub mod compare_adhesion;
+#[cfg(feature = "bem")]
 pub mod compare_transport;
 #[cfg(feature = "bem")]
 mod distribution;

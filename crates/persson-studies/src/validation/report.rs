@@ -485,6 +485,10 @@ pub struct Comparison {
     /// conductance against the BEM's ([`super::compare_transport`]).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub transport: Option<super::compare_transport::TransportComparison>,
+    /// `compare --work-of-adhesion`: Persson's adhesive theory against the
+    /// adhesive BEM ([`super::compare_adhesion`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub adhesion: Option<super::compare_adhesion::AdhesionComparison>,
     /// Remarks on the comparison: q_s clipped to what the coarsest grid
     /// resolves (`clipped_band`), a map solved with a free boundary
     /// (`map_not_periodic`), solves the plain loop finished after the

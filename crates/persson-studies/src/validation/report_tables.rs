@@ -38,6 +38,8 @@ impl Tabulate for Comparison {
         ));
         // compare --leakage / --conductance (absent by default)
         tables.extend(self.transport.iter().flat_map(|t| t.tables()));
+        // compare --work-of-adhesion (absent by default)
+        tables.extend(self.adhesion.iter().flat_map(|a| a.tables()));
         tables
     }
 }
