@@ -365,3 +365,70 @@ fn adhesive_sphere_bad_input_names_the_flag() {
         assert!(err.contains(flag), "{args:?}: {err}");
     }
 }
+
+/// The scene output `bem_adhesion` is `bem rough --work-of-adhesion --json`
+/// to the last digit (the surface synthesised at the scene's side 2π/q_l);
+/// a mean-gap path on the free boundary is an error naming the field.
+#[test]
+fn scene_output_equals_the_command_line() {
+    let dir = std::env::temp_dir().join(format!("persson-bem-adhesion-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = |output: &str| {
+        format!(
+            r#"{{"schema": 1, "material": {{"contact_modulus": 1}},
+                "spectrum": {{"kind": "self_affine", "hurst": 0.8, "q_l": 6.283, "q_r": 6.283,
+                              "q_s": 201, "rms_slope": 0.1}},
+                "outputs": {{"bem_adhesion": {output}}}}}"#
+        )
+    };
+    let path = dir.join("s.json");
+    std::fs::write(
+        &path,
+        scene(
+            r#"{"grid": 64, "work_of_adhesion": 2e-4, "adhesion_range": 0.02,
+                "adhesion": "exponential", "mean_gap": [4e-3, 2e-3, 8e-3]}"#,
+        ),
+    )
+    .unwrap();
+    let s = json(&["run", path.to_str().unwrap(), "--json"]);
+    let mut cli = json(&[
+        "bem",
+        "rough",
+        "--hurst",
+        "0.8",
+        "--q-l",
+        "6.283",
+        "--q-s",
+        "201",
+        "--rms-slope",
+        "0.1",
+        "--contact-modulus",
+        "1",
+        "--grid",
+        "64",
+        "--work-of-adhesion",
+        "2e-4",
+        "--adhesion-range",
+        "0.02",
+        "--adhesion",
+        "exponential",
+        "--mean-gap",
+        "4e-3,2e-3,8e-3",
+        "--json",
+    ]);
+    assert_eq!(cli["warnings"], s["warnings"]);
+    cli.as_object_mut().unwrap().remove("warnings");
+    assert_eq!(cli, s["bem_adhesion"]);
+    std::fs::write(
+        &path,
+        scene(
+            r#"{"grid": 32, "boundary": "free", "work_of_adhesion": 2e-4,
+                "adhesion_range": 0.02, "mean_gap": [4e-3]}"#,
+        ),
+    )
+    .unwrap();
+    let (code, _, err) = persson(&["run", path.to_str().unwrap()]);
+    assert_ne!(code, 0);
+    assert!(err.contains("outputs.bem_adhesion.mean_gap"), "{err}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -197,3 +197,86 @@ fn details(
     Details::new(grid, &scene.nominal_pressure, patches, subsurface)
         .map_err(|e| prefix("outputs.bem.subsurface.", e))
 }
+
+/// `outputs.bem_adhesion`: the adhesive FFT-BEM along the scene's path of
+/// mean gaps (or approaches), on the scene's surface
+/// ([`crate::bem_detail::adhesive_controlled_path`], the loop of `persson bem
+/// rough --work-of-adhesion`).
+///
+/// # Errors
+/// Missing or invalid inputs (named `outputs.bem_adhesion.…`); neither or
+/// both of `mean_gap` and `approach`; `mean_gap` on the free boundary; a
+/// solve that fails.
+pub fn bem_adhesion(
+    scene: &Scene,
+    a: &super::schema::BemAdhesionOutput,
+) -> Result<crate::bem_detail::AdhesiveBemReport> {
+    use crate::bem_detail::{adhesive_controlled_path, PathControl};
+    let named = |e: Error| prefix("outputs.bem_adhesion.", e);
+    let boundary_name = a.boundary.unwrap_or(BoundaryName::Periodic);
+    let tol = check::tolerance("tolerance", a.tolerance.unwrap_or(1e-10)).map_err(named)?;
+    let control = match (a.mean_gap.is_empty(), a.approach.is_empty()) {
+        (false, false) => {
+            return Err(Error::Inconsistent {
+                name: "outputs.bem_adhesion.mean_gap / approach".into(),
+                requirement: "one of the two".into(),
+            })
+        }
+        (false, true) if boundary_name == BoundaryName::Free => {
+            return Err(Error::Inconsistent {
+                name: "outputs.bem_adhesion.mean_gap".into(),
+                requirement: "a periodic boundary (the free one runs under approach control: \
+                              give approach)"
+                    .into(),
+            })
+        }
+        (false, true) => PathControl::MeanGap(&a.mean_gap),
+        (true, false) => PathControl::Approach(&a.approach),
+        (true, true) => return Err(required("outputs.bem_adhesion.mean_gap (or approach)")),
+    };
+    let as_rough = BemOutput {
+        grid: a.grid,
+        seed: a.seed,
+        ..BemOutput::default()
+    };
+    let e_star = scene.material()?.contact_modulus();
+    let surf = bem_surface(scene, &as_rough, boundary_name.into())
+        .map_err(|e| rename(e, "outputs.bem.", "outputs.bem_adhesion."))?;
+    let options = persson::bem::adhesive::AdhesiveOptions {
+        tolerance: tol,
+        ..Default::default()
+    };
+    adhesive_controlled_path(
+        &surf.heights,
+        (surf.n, surf.size, e_star),
+        boundary_name.into(),
+        (
+            a.adhesion.unwrap_or_default().into(),
+            a.work_of_adhesion,
+            a.adhesion_range,
+        ),
+        control,
+        &options,
+    )
+    .map_err(named)
+}
+
+/// An error of the shared surface set-up, named for the output that asked.
+fn rename(e: Error, from: &str, to: &str) -> Error {
+    match e {
+        Error::InvalidParameter {
+            name,
+            value,
+            requirement,
+        } => Error::InvalidParameter {
+            name: name.replace(from, to),
+            value,
+            requirement,
+        },
+        Error::Inconsistent { name, requirement } => Error::Inconsistent {
+            name: name.replace(from, to),
+            requirement,
+        },
+        e => e,
+    }
+}

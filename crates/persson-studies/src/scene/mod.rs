@@ -269,6 +269,7 @@ impl Scene {
         for (name, asked) in [
             ("outputs.bem", o.bem.is_some()),
             ("outputs.bem_hertz", o.bem_hertz.is_some()),
+            ("outputs.bem_adhesion", o.bem_adhesion.is_some()),
         ] {
             if asked {
                 return Err(Error::Inconsistent {
@@ -292,6 +293,9 @@ impl Scene {
             report.bem_patches = details.patches;
             report.bem_subsurface = details.subsurface;
             report.bem_stress_maps = details.maps;
+        }
+        if let Some(a) = &self.outputs.bem_adhesion {
+            report.bem_adhesion = Some(bem::bem_adhesion(self, a)?);
         }
         Ok(())
     }

@@ -74,6 +74,10 @@ pub struct SceneReport {
     /// FFT-BEM Hertz convergence.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub bem_hertz: Option<BemHertzReport>,
+    /// The adhesive FFT-BEM along a path (feature `bem`).
+    #[cfg(feature = "bem")]
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub bem_adhesion: Option<crate::bem_detail::AdhesiveBemReport>,
     /// Adhesion (stickiness, adhesive contact area, pull-off).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub adhesion: Option<AdhesionReport>,
@@ -118,6 +122,12 @@ impl SceneReport {
                 crate::warning::push(&mut all, Some(w));
             }
         }
+        #[cfg(feature = "bem")]
+        if let Some(r) = &self.bem_adhesion {
+            for w in crate::bem_detail::adhesive_warnings(r) {
+                crate::warning::push(&mut all, Some(w));
+            }
+        }
         self.warnings = all;
     }
 }
@@ -126,14 +136,15 @@ impl Tabulate for SceneReport {
     fn tables(&self) -> Vec<Table> {
         let mut out = Vec::new();
         #[cfg(feature = "bem")]
-        let (bem, patches, subsurface) = (
+        let (bem, patches, subsurface, adhesive) = (
             self.bem.as_ref().map(|r| r as &dyn Tabulate),
             self.bem_patches.as_ref().map(|r| r as &dyn Tabulate),
             self.bem_subsurface.as_ref().map(|r| r as &dyn Tabulate),
+            self.bem_adhesion.as_ref().map(|r| r as &dyn Tabulate),
         );
         #[cfg(not(feature = "bem"))]
-        let (bem, patches, subsurface) = (None, None, None);
-        let parts: [Option<&dyn Tabulate>; 15] = [
+        let (bem, patches, subsurface, adhesive) = (None, None, None, None);
+        let parts: [Option<&dyn Tabulate>; 16] = [
             self.spectrum.as_ref().map(|r| r as &dyn Tabulate),
             self.kappa.as_ref().map(|r| r as &dyn Tabulate),
             self.area.as_ref().map(|r| r as &dyn Tabulate),
@@ -145,6 +156,7 @@ impl Tabulate for SceneReport {
             patches,
             subsurface,
             self.bem_hertz.as_ref().map(|r| r as &dyn Tabulate),
+            adhesive,
             self.adhesion.as_ref().map(|r| r as &dyn Tabulate),
             self.friction.as_ref().map(|r| r as &dyn Tabulate),
             self.conductance.as_ref().map(|r| r as &dyn Tabulate),

@@ -88,6 +88,28 @@ impl From<BoundaryName> for persson::bem::Boundary {
 }
 
 names! {
+    /// Cohesive law of the adhesive FFT-BEM.
+    #[derive(Default)]
+    AdhesionLawName {
+        /// Maugis–Dugdale: attraction Δγ/ρ for gaps below ρ.
+        #[default]
+        Maugis = "maugis",
+        /// Exponential: attraction (Δγ/ρ) e^{−g/ρ}.
+        Exponential = "exponential",
+    }
+}
+
+#[cfg(feature = "bem")]
+impl From<AdhesionLawName> for crate::bem_detail::LawKind {
+    fn from(l: AdhesionLawName) -> Self {
+        match l {
+            AdhesionLawName::Maugis => crate::bem_detail::LawKind::Maugis,
+            AdhesionLawName::Exponential => crate::bem_detail::LawKind::Exponential,
+        }
+    }
+}
+
+names! {
     /// Neighbourhood of a contact patch.
     #[derive(Default)]
     ConnectivityName {

@@ -6,8 +6,8 @@ use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
 use super::{
-    AreaEnhancementName, BoundaryName, ConductanceOutput, ConnectivityName, LeakageOutput,
-    StartName, TheoryName, TheorySpec,
+    AdhesionLawName, AreaEnhancementName, BoundaryName, ConductanceOutput, ConnectivityName,
+    LeakageOutput, StartName, TheoryName, TheorySpec,
 };
 
 /// The outputs a scene asks for; absent ones are not computed.
@@ -42,6 +42,10 @@ pub struct Outputs {
     /// FFT-BEM Hertz convergence, η per grid (feature `bem`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub bem_hertz: Option<BemHertzOutput>,
+    /// The adhesive FFT-BEM along a path of mean gaps or approaches
+    /// (`bem rough --work-of-adhesion`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bem_adhesion: Option<BemAdhesionOutput>,
     /// Adhesion: the stickiness energy balance and A/A0 against the scene's
     /// nominal pressures (which may be ≤ 0) with the pull-off stress.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -327,6 +331,41 @@ pub struct BemHertzOutput {
     /// adds the plastic disc's radius and fractions per grid.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub yield_stress: Option<f64>,
+}
+
+/// The adhesive FFT-BEM (Rey, Anciaux & Molinari, Comput. Mech. 60, 69
+/// (2017)) on the scene's surface along a path in and out: per point the
+/// mean pressure (negative in tension), the repulsive and cohesive
+/// fractions, and the pull-off; the JSON of `bem rough --work-of-adhesion`.
+#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct BemAdhesionOutput {
+    /// Grid side N of the synthesised surface (a height map sets its own).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub grid: Option<usize>,
+    /// Seed of the synthesised surface (default 1).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub seed: Option<u64>,
+    /// Boundary condition (default `periodic`; `free` needs `approach`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub boundary: Option<BoundaryName>,
+    /// Solver tolerance ε (default 1e-10).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tolerance: Option<f64>,
+    /// Work of adhesion Δγ, J/m² (> 0).
+    pub work_of_adhesion: f64,
+    /// Range ρ of the cohesive law, m (> 0).
+    pub adhesion_range: f64,
+    /// Cohesive law (default `maugis`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub adhesion: Option<AdhesionLawName>,
+    /// Mean gaps ḡ of the path, m, in order (periodic).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub mean_gap: Vec<f64>,
+    /// Approaches δ from first touch, m, in order (instead of `mean_gap`;
+    /// the control of the free boundary).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub approach: Vec<f64>,
 }
 
 /// Adhesion from Persson's theory (Persson & Tosatti, J. Chem. Phys. 115,
