@@ -268,6 +268,15 @@ def friction(
     their `_error_bound`s and, with `flash_temperature=True`, `flash_friction_coefficient`,
     `flash_contact_fraction`, `flash_temperature`; 1-D `temperature`, `nominal_pressure`,
     `velocity`."""
+def separation_density(
+    spectrum: Spectrum,
+    contact_modulus: float,
+    pressure: ArrayLike,
+    *,
+    density_points: int = 101,
+    tolerance: float = 1e-10,
+) -> Report:
+    """`persson separation --separation-density --json`: P(u) per pressure."""
 def mean_separation(
     spectrum: Spectrum, contact_modulus: float, pressure: ArrayLike, *, tolerance: float = 1e-10
 ) -> dict[str, FloatArray]:

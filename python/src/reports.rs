@@ -24,6 +24,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(theories, m)?)?;
     m.add_function(wrap_pyfunction!(separation, m)?)?;
     m.add_function(wrap_pyfunction!(mean_separation, m)?)?;
+    m.add_function(wrap_pyfunction!(separation_density, m)?)?;
     m.add_function(wrap_pyfunction!(stress, m)?)?;
     m.add_function(wrap_pyfunction!(stress_physical, m)?)?;
     m.add_function(wrap_pyfunction!(run_scene, m)?)?;
@@ -187,6 +188,42 @@ fn separation<'py>(
     };
     let r = py
         .detach(|| run::separation(&surface, &pressures, &out, &[]))
+        .map_err(err)?;
+    to_dict_warned(py, &r, &r.warnings)
+}
+
+/// `persson separation --separation-density --json`: the distribution of
+/// interfacial separations P(u) at each nominal pressure, the contact's
+/// weight A/A0 at u = 0 and the continuous part P_nc(u) on `density_points`
+/// separations, with A/A0 + ∫P_nc du = 1 and ∫u P du = ū + s_fold beside it
+/// (Almqvist, Campañá, Prodanov & Persson, J. Mech. Phys. Solids 59, 2355
+/// (2011)).
+#[pyfunction]
+#[pyo3(signature = (spectrum, contact_modulus, pressure, *, density_points=101, tolerance=1e-10))]
+fn separation_density<'py>(
+    py: Python<'py>,
+    spectrum: &Spectrum,
+    contact_modulus: f64,
+    pressure: &Bound<'py, PyAny>,
+    density_points: usize,
+    tolerance: f64,
+) -> PyResult<Bound<'py, PyAny>> {
+    let pressures = float_list("pressure", pressure)?;
+    if density_points < 2 {
+        return Err(value_error(format!(
+            "density_points {density_points}: need at least 2"
+        )));
+    }
+    let surface = spectrum.contact(contact_modulus)?;
+    let r = py
+        .detach(|| {
+            persson_studies::scene::separation_density::separation_density(
+                &surface,
+                &pressures,
+                density_points,
+                tolerance,
+            )
+        })
         .map_err(err)?;
     to_dict_warned(py, &r, &r.warnings)
 }

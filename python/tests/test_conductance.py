@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import persson
-from conftest import run_cli
+from conftest import run_cli, same
 
 # A rubber seal on a self-affine surface (the shipped scene conductance.json).
 Q_L = 6283.185307179586
@@ -153,3 +153,20 @@ def test_conductance_bad_input_names_the_keyword(kwargs, name):
 def test_leakage_bad_input_names_the_keyword(kwargs, name):
     with pytest.raises(ValueError, match=name):
         persson.leakage(spectrum(), E_STAR, 1e5, **kwargs)
+
+
+def test_separation_density_matches_cli():
+    """`persson.separation_density` is `persson separation --separation-density --json`,
+    and its identities hold: A/A0 + ∫P_nc du = 1, ∫u P du = ū + s_fold (issue 23)."""
+    cli = run_cli("separation", *SPECTRUM_FLAGS, "--contact-modulus", E_STAR,
+                  "--pressure", "1e4,1e5", "--separation-density", "--density-points", 41)
+    r = persson.separation_density(spectrum(), E_STAR, [1e4, 1e5], density_points=41)
+    same(r, cli)
+    for c in r["curves"]:
+        assert len(c["points"]) == 41
+        assert c["contact_fraction"] + c["non_contact_fraction"] == pytest.approx(
+            1.0, abs=NORMALISATION)
+        assert c["separation_first_moment"] == pytest.approx(
+            c["mean_separation"] + c["fold_shift"], rel=1e-6)
+    with pytest.raises(ValueError, match="density_points"):
+        persson.separation_density(spectrum(), E_STAR, [1e5], density_points=1)

@@ -503,7 +503,21 @@ mod cli {
     fn subcommands_equal_scene_outputs_to_the_last_digit() {
         let r = run_scene(
             r#"{"area": {"theory": "yang-persson"}, "separation": {}, "kappa": {},
-                "magnification": {"nominal_pressure": 0.1, "zeta": [1, 10, 100]}}"#,
+                "magnification": {"nominal_pressure": 0.1, "zeta": [1, 10, 100]},
+                "separation_density": {"density_points": 21}}"#,
+        );
+        assert_eq!(
+            with(
+                "separation",
+                &[
+                    "--pressure",
+                    "0.01,0.1",
+                    "--separation-density",
+                    "--density-points",
+                    "21"
+                ]
+            ),
+            r["separation_density"]
         );
         let area = with(
             "area",

@@ -235,6 +235,18 @@ impl Scene {
         if let Some(sep) = &o.separation {
             report.separation = Some(run::separation(&surface, &self.nominal_pressure, sep, &[])?);
         }
+        if let Some(d) = &o.separation_density {
+            report.separation_density = Some(
+                separation_density::separation_density(
+                    &surface,
+                    &self.nominal_pressure,
+                    d.density_points.unwrap_or(101),
+                    d.tolerance
+                        .unwrap_or(persson::separation::DEFAULT_TOLERANCE),
+                )
+                .map_err(|e| prefix("outputs.separation_density.", e))?,
+            );
+        }
         if let Some(c) = &o.conductance {
             report.conductance = Some(
                 transport::conductance(&surface, &self.nominal_pressure, c)

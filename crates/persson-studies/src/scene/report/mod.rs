@@ -52,6 +52,9 @@ pub struct SceneReport {
     /// Mean separation against load.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub separation: Option<SeparationReport>,
+    /// P(u), the distribution of interfacial separations.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub separation_density: Option<super::separation_density::SeparationDensityReport>,
     /// Stress distributions.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub stress: Option<StressReport>,
@@ -106,6 +109,7 @@ impl SceneReport {
             self.magnification.as_ref().map(|r| &r.warnings),
             self.theories.as_ref().map(|r| &r.warnings),
             self.separation.as_ref().map(|r| &r.warnings),
+            self.separation_density.as_ref().map(|r| &r.warnings),
             self.stress.as_ref().map(|r| &r.warnings),
             self.adhesion.as_ref().map(|r| &r.warnings),
             self.friction.as_ref().map(|r| &r.warnings),
@@ -144,13 +148,14 @@ impl Tabulate for SceneReport {
         );
         #[cfg(not(feature = "bem"))]
         let (bem, patches, subsurface, adhesive) = (None, None, None, None);
-        let parts: [Option<&dyn Tabulate>; 16] = [
+        let parts: [Option<&dyn Tabulate>; 17] = [
             self.spectrum.as_ref().map(|r| r as &dyn Tabulate),
             self.kappa.as_ref().map(|r| r as &dyn Tabulate),
             self.area.as_ref().map(|r| r as &dyn Tabulate),
             self.magnification.as_ref().map(|r| r as &dyn Tabulate),
             self.theories.as_ref().map(|r| r as &dyn Tabulate),
             self.separation.as_ref().map(|r| r as &dyn Tabulate),
+            self.separation_density.as_ref().map(|r| r as &dyn Tabulate),
             self.stress.as_ref().map(|r| r as &dyn Tabulate),
             bem,
             patches,

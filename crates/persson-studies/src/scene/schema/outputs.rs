@@ -33,6 +33,9 @@ pub struct Outputs {
     /// Mean interfacial separation, stiffness and elastic energy against load.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub separation: Option<SeparationOutput>,
+    /// P(u), the distribution of interfacial separations.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub separation_density: Option<SeparationDensityOutput>,
     /// Stress distributions P(σ, ζ).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub stress: Option<StressOutput>,
@@ -163,6 +166,21 @@ pub struct TheoriesOutput {
 #[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SeparationOutput {
+    /// Relative tolerance of the wavevector integrals (default 1e-10).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tolerance: Option<f64>,
+}
+
+/// The distribution of interfacial separations P(u) at the scene's nominal
+/// pressures (Almqvist, Campañá, Prodanov & Persson, J. Mech. Phys. Solids
+/// 59, 2355 (2011)): the report of `persson separation --separation-density`.
+#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SeparationDensityOutput {
+    /// Separations u per pressure, from 0 to where P_nc is negligible
+    /// (default 101, at least 2).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub density_points: Option<usize>,
     /// Relative tolerance of the wavevector integrals (default 1e-10).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tolerance: Option<f64>,
