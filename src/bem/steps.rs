@@ -316,22 +316,15 @@ impl LazyGap {
     /// The first gap, from the start pressure the workspace holds (and a
     /// zero direction).
     pub fn start(problem: &Problem, ws: &mut Workspace) -> Result<Self> {
-        let f = ws.fields();
-        refresh_gap(
-            f.op,
-            f.pressure,
-            f.gap,
-            problem.heights(),
-            problem.offset(),
-            1.0,
-        )?;
-        f.direction.fill(0.0);
-        Ok(LazyGap {
+        let mut lazy = LazyGap {
             fresh: true,
             pending: Pending::NONE,
             p_scale: 1.0,
             g_ref: 0.0,
-        })
+        };
+        lazy.refresh(problem, ws)?;
+        ws.fields().direction.fill(0.0);
+        Ok(lazy)
     }
 
     /// Apply the pending update and gather the gap statistics.
