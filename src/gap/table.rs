@@ -27,10 +27,11 @@
 //! The first moment below s_lo telescopes: ∫_1^{ζ_lo} (−(Aū)′) dζ =
 //! ū(σ0) − A(ζ_lo) ū(ζ_lo), computed from two extra nodes (ζ = 1 and ζ_lo).
 
+use super::fast_e1::e1_fast;
 use super::{Node, Panel, SeparationDensity, WG, WGK, XGK};
 use crate::error::{check, Error, Result};
 use crate::quad::Estimate;
-use crate::special::{e1, erf, erfc};
+use crate::special::{erf, erfc};
 use crate::spectrum::Spectrum;
 
 /// x = 1/(2√G) at the table's lowest s for its lowest load.
@@ -191,37 +192,6 @@ fn band_rule(spectrum: &dyn Spectrum, lo: f64, breaks: &[f64], n: usize) -> Resu
     Ok(out)
 }
 
-/// E1(x) given e^{−x}: [`e1`]'s series for x ≤ 1; above, the same continued
-/// fraction (Abramowitz & Stegun 5.1.22, even form
-/// E1(x) = e^{−x}/(x + 1 − 1²/(x + 3 − 2²/(x + 5 − …)))) evaluated forward by
-/// the modified Lentz method, stopped when a step changes it by < 2ε,
-/// instead of [`e1`]'s fixed backward depth 10 + ⌈160/x⌉ (170 levels at
-/// x = 1). The per-load table sums call this ~10⁴ times a load (measured:
-/// 64 % of the effective-medium curve). Checked against [`e1`] to 1e-14
-/// relative (test below).
-fn e1_lentz(x: f64, exp_minus_x: f64) -> f64 {
-    const TINY: f64 = 1e-300;
-    if x <= 1.0 {
-        return e1(x);
-    }
-    let mut b = x + 1.0;
-    let mut c = 1.0 / TINY;
-    let mut d = 1.0 / b;
-    let mut h = d;
-    for i in 1..200 {
-        let an = -((i * i) as f64);
-        b += 2.0;
-        d = 1.0 / (an * d + b);
-        c = b + an / c;
-        let step = c * d;
-        h *= step;
-        if (step - 1.0).abs() < 2.0 * f64::EPSILON {
-            break;
-        }
-    }
-    h * exp_minus_x
-}
-
 /// [F, p/K, ∂F/∂ζ / ((π/2) dm3)] of one band at r = p/E*, as (Kronrod, |K − G|).
 fn band_sums(band: &[QNode], r: f64) -> ([f64; 3], [f64; 3]) {
     let (mut k, mut g) = ([0.0; 3], [0.0; 3]);
@@ -231,7 +201,7 @@ fn band_sums(band: &[QNode], r: f64) -> ([f64; 3], [f64; 3]) {
             continue;
         }
         let ex = (-x2).exp();
-        let half_e1 = 0.5 * e1_lentz(x2, ex);
+        let half_e1 = 0.5 * e1_fast(x2, ex);
         let v = [n.w * half_e1, n.w * ex, n.w * n.w * n.w * (half_e1 - ex)];
         for i in 0..3 {
             k[i] += n.kronrod * v[i];
@@ -461,23 +431,5 @@ impl SeparationTable {
             volume_below: below,
             weight_left_out: missing,
         })
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The Lentz E1 against the crate's tested backward continued fraction
-    /// and series (`special::e1`, itself checked against mpmath).
-    #[test]
-    fn lentz_e1_matches_special_e1() {
-        let mut worst: f64 = 0.0;
-        for i in 0..=400 {
-            let x = 10f64.powf(-3.0 + 5.8 * f64::from(i) / 400.0);
-            let (fast, reference) = (e1_lentz(x, (-x).exp()), e1(x));
-            worst = worst.max(((fast - reference) / reference).abs());
-        }
-        assert!(worst < 1e-14, "worst relative difference {worst:e}");
     }
 }

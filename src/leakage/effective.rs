@@ -300,8 +300,11 @@ fn bruggeman_points(
             if !u3.is_finite() {
                 return (1.0, 0.0);
             }
-            let den = u3 + c;
-            (1.0 - 2.0 * c / den, -2.0 * c * u3 / den / den)
+            // one division a point, not three (the root's sums are most of
+            // the curve's time after the table sums)
+            let inv = 1.0 / (u3 + c);
+            let two_c_inv = 2.0 * c * inv;
+            (1.0 - two_c_inv, -two_c_inv * u3 * inv)
         });
         (r - contact, d)
     };
