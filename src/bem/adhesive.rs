@@ -633,12 +633,7 @@ impl AdhesiveSolver {
         mean_gaps: &[f64],
         opts: &AdhesiveOptions,
     ) -> Result<AdhesiveSequence> {
-        self.forget();
-        let points = mean_gaps
-            .iter()
-            .map(|&g| self.solve(heights, law, g, opts))
-            .collect::<Result<Vec<_>>>()?;
-        Ok(AdhesiveSequence::new(points))
+        self.walk(mean_gaps, |s, g| s.solve(heights, law, g, opts))
     }
 
     /// A sequence of approaches (in and out), warm-started from each other,
@@ -653,10 +648,21 @@ impl AdhesiveSolver {
         approaches: &[f64],
         opts: &AdhesiveOptions,
     ) -> Result<AdhesiveSequence> {
+        self.walk(approaches, |s, d| s.solve_approach(heights, law, d, opts))
+    }
+
+    /// The one path walk behind [`AdhesiveSolver::sequence`] and
+    /// [`AdhesiveSolver::sequence_approach`]: forget the previous state, then
+    /// solve each control value in order, each warm-started from the last.
+    fn walk(
+        &mut self,
+        controls: &[f64],
+        mut solve: impl FnMut(&mut Self, f64) -> Result<AdhesivePoint>,
+    ) -> Result<AdhesiveSequence> {
         self.forget();
-        let points = approaches
+        let points = controls
             .iter()
-            .map(|&d| self.solve_approach(heights, law, d, opts))
+            .map(|&c| solve(self, c))
             .collect::<Result<Vec<_>>>()?;
         Ok(AdhesiveSequence::new(points))
     }
