@@ -68,18 +68,18 @@ pub fn bem_hertz(h: &BemHertzOutput) -> Result<BemHertzReport> {
     })
 }
 
-/// The rigid surface of `outputs.bem`: the height map, or synthesised from
-/// the spectrum.
+/// The rigid surface of a BEM output (`section`, e.g. `outputs.bem.`): the
+/// height map, or synthesised from the spectrum on `grid` nodes with `seed`.
 fn bem_surface(
     scene: &Scene,
-    b: &BemOutput,
+    (section, grid, seed): (&str, Option<usize>, Option<u64>),
     boundary: persson::bem::Boundary,
 ) -> Result<surface::GridSurface> {
-    let named = |e: Error| prefix("outputs.bem.", e);
+    let named = |e: Error| prefix(section, e);
     if let Some(SpectrumSpec::HeightMap(m)) = &scene.spectrum {
-        if b.grid.is_some() || b.seed.is_some() {
+        if grid.is_some() || seed.is_some() {
             return Err(Error::Inconsistent {
-                name: "outputs.bem.grid / outputs.bem.seed".into(),
+                name: format!("{section}grid / {section}seed"),
                 requirement: "not used with a height map (its file sets the grid)".into(),
             });
         }
@@ -96,13 +96,11 @@ fn bem_surface(
             e => e,
         });
     }
-    let n = b
-        .grid
-        .ok_or_else(|| required("outputs.bem.grid (for a synthesised surface)"))?;
+    let n = grid.ok_or_else(|| required(&format!("{section}grid (for a synthesised surface)")))?;
     check_memory(n, boundary).map_err(named)?;
     let spectrum = scene.spectrum()?;
     let size = std::f64::consts::TAU / spectrum.q_min();
-    surface::synthesize(spectrum.as_ref(), n, size, b.seed.unwrap_or(1)).map_err(named)
+    surface::synthesize(spectrum.as_ref(), n, size, seed.unwrap_or(1)).map_err(named)
 }
 
 /// `outputs.bem`: one solve per pressure, warm-started along the list
@@ -124,7 +122,7 @@ pub fn bem_rough(scene: &Scene, b: &BemOutput) -> Result<(RoughReport, Details)>
         ));
     }
     let e_star = scene.material()?.contact_modulus();
-    let surf = bem_surface(scene, b, boundary)?;
+    let surf = bem_surface(scene, ("outputs.bem.", b.grid, b.seed), boundary)?;
     let source = match &scene.spectrum {
         Some(SpectrumSpec::HeightMap(m)) => SurfaceOrigin::height_map(&m.file),
         _ => SurfaceOrigin::synthesised(scene.spectrum()?.as_ref(), b.seed.unwrap_or(1))?,
@@ -234,14 +232,12 @@ pub fn bem_adhesion(
         (true, false) => PathControl::Approach(&a.approach),
         (true, true) => return Err(required("outputs.bem_adhesion.mean_gap (or approach)")),
     };
-    let as_rough = BemOutput {
-        grid: a.grid,
-        seed: a.seed,
-        ..BemOutput::default()
-    };
     let e_star = scene.material()?.contact_modulus();
-    let surf = bem_surface(scene, &as_rough, boundary_name.into())
-        .map_err(|e| rename(e, "outputs.bem.", "outputs.bem_adhesion."))?;
+    let surf = bem_surface(
+        scene,
+        ("outputs.bem_adhesion.", a.grid, a.seed),
+        boundary_name.into(),
+    )?;
     let options = persson::bem::adhesive::AdhesiveOptions {
         tolerance: tol,
         ..Default::default()
@@ -259,24 +255,4 @@ pub fn bem_adhesion(
         &options,
     )
     .map_err(named)
-}
-
-/// An error of the shared surface set-up, named for the output that asked.
-fn rename(e: Error, from: &str, to: &str) -> Error {
-    match e {
-        Error::InvalidParameter {
-            name,
-            value,
-            requirement,
-        } => Error::InvalidParameter {
-            name: name.replace(from, to),
-            value,
-            requirement,
-        },
-        Error::Inconsistent { name, requirement } => Error::Inconsistent {
-            name: name.replace(from, to),
-            requirement,
-        },
-        e => e,
-    }
 }

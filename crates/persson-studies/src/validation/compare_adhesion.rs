@@ -46,6 +46,7 @@ use persson::separation::Separation;
 use persson::spectrum::Spectrum;
 
 use super::compare_transport::Surfaces;
+use super::continuum::mean_and_error;
 use super::resolution::SweepConfig;
 use crate::bem_detail::LawKind;
 use crate::table::{Cell, Table};
@@ -199,8 +200,8 @@ type SeedPath = (Vec<f64>, Vec<f64>, f64);
 /// band's h'_rms (the default range).
 ///
 /// # Errors
-/// Bad settings (named, [`AdhesionCompareConfig::validate`]); fewer than 2
-/// grids; the theory or the BEM failing.
+/// Fewer than 2 grids; the theory or the BEM failing. (The settings are
+/// checked by [`AdhesionCompareConfig::validate`] before the sweep.)
 pub(super) fn compare_adhesion(
     band: &dyn Spectrum,
     surfaces: Surfaces<'_>,
@@ -209,7 +210,6 @@ pub(super) fn compare_adhesion(
     sweep: &SweepConfig,
     t: &AdhesionCompareConfig,
 ) -> Result<AdhesionComparison> {
-    t.validate(None, None)?;
     let (coarser, finest) = match sweep.grids.as_slice() {
         [.., c, f] => (*c, *f),
         _ => {
@@ -339,17 +339,6 @@ fn stats(h: &[f64]) -> (f64, f64) {
     (max, h.iter().sum::<f64>() / h.len().max(1) as f64)
 }
 
-/// Mean and standard error (None for one value).
-fn mean_se(v: &[f64]) -> (f64, Option<f64>) {
-    let n = v.len().max(1) as f64;
-    let mean = v.iter().sum::<f64>() / n;
-    let se = (v.len() > 1).then(|| {
-        let var = v.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1.0);
-        (var / n).sqrt()
-    });
-    (mean, se)
-}
-
 /// X(N)/X(N/2) − 1 (absent when either is 0).
 fn change(fine: f64, coarse: f64) -> Option<f64> {
     (fine != 0.0 && coarse != 0.0).then(|| fine / coarse - 1.0)
@@ -365,42 +354,40 @@ fn compared(
     runs: &[Vec<SeedPath>; 2],
 ) -> Result<AdhesionCompared> {
     let [coarse, fine] = runs;
-    let column = |r: &[SeedPath], k: usize, which: usize| -> Vec<f64> {
-        r.iter()
-            .map(|(p, a, _)| if which == 0 { p[k] } else { a[k] })
-            .collect()
+    let pressure =
+        |r: &[SeedPath], k: usize| mean_and_error(&r.iter().map(|s| s.0[k]).collect::<Vec<_>>());
+    let area = |r: &[SeedPath], k: usize| {
+        mean_and_error(&r.iter().map(|s| s.1[k]).collect::<Vec<_>>()).mean
     };
     let points = gaps
         .iter()
         .enumerate()
         .map(|(k, &g)| {
-            let (p, p_se) = mean_se(&column(fine, k, 0));
-            let (a, _) = mean_se(&column(fine, k, 1));
-            let (a_coarse, _) = mean_se(&column(coarse, k, 1));
-            let a_theory = theory.point(p, zeta)?.contact_fraction;
+            let p = pressure(fine, k);
+            let a = area(fine, k);
+            let a_theory = theory.point(p.mean, zeta)?.contact_fraction;
             Ok(AdhesionComparedPoint {
                 mean_separation: g,
-                nominal_pressure: p,
-                nominal_pressure_standard_error: p_se,
+                nominal_pressure: p.mean,
+                nominal_pressure_standard_error: p.standard_error,
                 bem_contact_fraction: a,
-                bem_resolution_change: change(a, a_coarse),
+                bem_resolution_change: change(a, area(coarse, k)),
                 theory_contact_fraction: a_theory,
                 contact_fraction_ratio: (a > 0.0).then(|| a_theory / a),
             })
         })
         .collect::<Result<Vec<_>>>()?;
-    let pulls = |r: &[SeedPath]| r.iter().map(|s| s.2).collect::<Vec<f64>>();
-    let (pull, pull_se) = mean_se(&pulls(fine));
-    let (pull_coarse, _) = mean_se(&pulls(coarse));
-    let sigma_p = theory.point(0.0, zeta)?.pull_off_stress;
+    let pulls = |r: &[SeedPath]| mean_and_error(&r.iter().map(|s| s.2).collect::<Vec<f64>>());
+    let (pull, pull_coarse) = (pulls(fine), pulls(coarse).mean);
+    let sigma_p = theory.model().pull_off_stress()?.value;
     Ok(AdhesionCompared {
         work_of_adhesion: dg,
         adhesion_range: rho,
         theory_pull_off_stress: sigma_p,
-        bem_pull_off_stress: pull,
-        bem_pull_off_stress_standard_error: pull_se,
-        bem_pull_off_resolution_change: change(pull, pull_coarse),
-        pull_off_ratio: (pull > 0.0).then(|| sigma_p / pull),
+        bem_pull_off_stress: pull.mean,
+        bem_pull_off_stress_standard_error: pull.standard_error,
+        bem_pull_off_resolution_change: change(pull.mean, pull_coarse),
+        pull_off_ratio: (pull.mean > 0.0).then(|| sigma_p / pull.mean),
         points,
     })
 }
