@@ -337,6 +337,13 @@ fn bruggeman_points(
             break;
         }
         let newton = if d < 0.0 { t - r / d } else { f64::NAN };
+        if (newton - t).abs() <= ROOT_TOLERANCE {
+            // converged: the step may round onto the bracket's end (t
+            // itself), which must not send the search to bisection
+            step = (newton - t).abs();
+            t = newton.clamp(a, b);
+            break;
+        }
         let next = if newton > a && newton < b {
             newton
         } else {
