@@ -30,6 +30,30 @@ struct Point {
     node: u32,
 }
 
+/// The image term's smallest argument b = (u + u1)/h on a window above which e^{−b²/2} underflows
+/// to 0 (b²/2 > 745).
+const MIRROR_CUT: f64 = 38.7;
+
+/// One point of an unclipped window in units of h (see [`PointSet::new`]).
+#[derive(Debug, Clone, Copy)]
+struct Standard {
+    offset: f64,
+    density: f64,
+    kronrod: f64,
+    gauss: f64,
+}
+
+/// The G7/K15 rule on [−1, 1] as (node, Kronrod weight, Gauss weight),
+/// ascending.
+fn rule() -> impl Iterator<Item = (f64, f64, f64)> {
+    (0..15).map(|i| {
+        let j = if i < 8 { i } else { 14 - i };
+        let sign = if i < 7 { -1.0 } else { 1.0 };
+        let gauss = if j % 2 == 1 { WG[j / 2] } else { 0.0 };
+        (sign * XGK[j], WGK[j], gauss)
+    })
+}
+
 /// P_nc(u) as weighted points (module docs).
 #[derive(Debug, Clone)]
 pub struct PointSet {
@@ -42,6 +66,24 @@ pub struct PointSet {
 impl PointSet {
     /// The points of `density` (module docs).
     pub fn new(density: &SeparationDensity) -> Self {
+        // an unclipped window's 30 points in units of h from u1, with
+        // e^{−a²/2}/√(2π) × (half-width/h): the density times the panel's
+        // half-width, in which h cancels
+        let half_width = 0.5 * WINDOW / std::f64::consts::TAU.sqrt();
+        let standard: Vec<Standard> = [-0.5 * WINDOW, 0.5 * WINDOW]
+            .iter()
+            .flat_map(|&mid| {
+                rule().map(move |(x, wk, wg)| {
+                    let offset = mid + 0.5 * WINDOW * x;
+                    Standard {
+                        offset,
+                        density: (-0.5 * offset * offset).exp() * half_width,
+                        kronrod: wk,
+                        gauss: wg,
+                    }
+                })
+            })
+            .collect();
         let mut points = Vec::new();
         let mut node_id = 0u32;
         for (panel_id, panel) in density.panels.iter().enumerate() {
@@ -68,18 +110,31 @@ impl PointSet {
                 }
                 let lo = (n.u1 - WINDOW * n.h).max(0.0);
                 let hi = n.u1 + WINDOW * n.h;
-                for (a, b) in [(lo, n.u1), (n.u1, hi)] {
-                    if b <= a {
-                        continue;
+                // the image term φ_h(u + u1) underflows everywhere on the
+                // window when (u1 − 10h + u1)/h > MIRROR_CUT
+                let image = 2.0 * n.u1 / n.h - WINDOW <= MIRROR_CUT;
+                if lo > 0.0 {
+                    // the whole window: fixed standardised points (no exp
+                    // unless the image term is alive)
+                    for s in &standard {
+                        let u = n.u1 + n.h * s.offset;
+                        let mut d = s.density;
+                        if image {
+                            let b = s.offset + 2.0 * n.u1 / n.h;
+                            d += (-0.5 * b * b).exp() * half_width;
+                        }
+                        push(u, s.kronrod * d, s.gauss * d);
                     }
-                    let (half, mid) = (0.5 * (b - a), 0.5 * (a + b));
-                    for (j, &x) in XGK.iter().enumerate() {
-                        let gauss = if j % 2 == 1 { WG[j / 2] } else { 0.0 };
-                        let signs: &[f64] = if x == 0.0 { &[1.0] } else { &[-1.0, 1.0] };
-                        for &sign in signs {
-                            let u = mid + sign * half * x;
+                } else {
+                    for (a, b) in [(lo, n.u1), (n.u1, hi)] {
+                        if b <= a {
+                            continue;
+                        }
+                        let (half, mid) = (0.5 * (b - a), 0.5 * (a + b));
+                        for (x, wk, wg) in rule() {
+                            let u = mid + half * x;
                             let d = folded(u, n.u1, n.h) * half;
-                            push(u, WGK[j] * d, gauss * d);
+                            push(u, wk * d, wg * d);
                         }
                     }
                 }

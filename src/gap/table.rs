@@ -87,6 +87,16 @@ struct ZetaNode {
     band: Vec<QNode>,
 }
 
+/// One ζ-panel: its ends in s, the band at its start (for the telescoped
+/// first moment of the panels a load leaves out) and its 15 nodes.
+#[derive(Debug, Clone)]
+struct ZetaPanel {
+    start: f64,
+    end: f64,
+    edge: ZetaNode,
+    nodes: Vec<ZetaNode>,
+}
+
 /// The load-independent part of P(u) for one spectrum and E* (module docs).
 #[derive(Debug, Clone)]
 pub struct SeparationTable {
@@ -94,10 +104,9 @@ pub struct SeparationTable {
     lowest_pressure: f64,
     m3_total: f64,
     /// ζ-panels of 15 nodes each, by increasing s.
-    panels: Vec<(f64, Vec<ZetaNode>)>,
-    /// The full band (ζ = 1) for ū(σ0) and the band at s_lo.
+    panels: Vec<ZetaPanel>,
+    /// The full band (ζ = 1) for ū(σ0).
     full: ZetaNode,
-    low: ZetaNode,
 }
 
 /// ζ with m3(ζ) = target by safeguarded Newton in ln ζ (to 1e-14 relative).
@@ -305,6 +314,7 @@ impl SeparationTable {
             let width = (b - a) / n as f64;
             for i in 0..n {
                 let start = a + width * i as f64;
+                let end = if i + 1 == n { b } else { start + width };
                 let mut nodes = Vec::with_capacity(15);
                 for (s, wk, wg) in gk_nodes(start, start + width, 1) {
                     let zeta = zeta_of_m3(spectrum, s.exp())?;
@@ -315,18 +325,22 @@ impl SeparationTable {
                     n.gauss *= jac;
                     nodes.push(n);
                 }
-                panels.push((start, nodes));
+                let edge = node(zeta_of_m3(spectrum, start.exp())?, 0.0, 0.0)?;
+                panels.push(ZetaPanel {
+                    start,
+                    end,
+                    edge,
+                    nodes,
+                });
             }
         }
         let full = node(1.0, 0.0, 0.0)?;
-        let low = node(zeta_of_m3(spectrum, s_lo.exp())?, 0.0, 0.0)?;
         Ok(SeparationTable {
             contact_modulus,
             lowest_pressure,
             m3_total,
             panels,
             full,
-            low,
         })
     }
 
@@ -385,12 +399,21 @@ impl SeparationTable {
         }
         let r = self.contact_modulus / pressure;
         let g = 0.25 * std::f64::consts::PI * r * r;
-        let panels = self
+        // panels wholly below s_cut, where x > X_LOW, carry a weight below
+        // erfc(6.5) at this load: left out, their first moment telescoped
+        let s_cut = (0.25 / (X_LOW * X_LOW * g)).ln();
+        let first = self
             .panels
             .iter()
-            .map(|(start, nodes)| Panel {
-                start: *start,
-                nodes: nodes
+            .position(|p| p.end > s_cut)
+            .unwrap_or(self.panels.len().saturating_sub(1));
+        let kept = self.panels.get(first..).unwrap_or_default();
+        let panels = kept
+            .iter()
+            .map(|panel| Panel {
+                start: panel.start,
+                nodes: panel
+                    .nodes
                     .iter()
                     .map(|n| {
                         let [_, loss, _, _, u1, volume, volume_error] =
@@ -414,15 +437,22 @@ impl SeparationTable {
             value: k[0],
             error: e[0],
         };
-        let low = self.magnified(&self.low, g, pressure);
-        // the telescoped first moment below s_lo: ū(σ0) − A(ζ_lo) ū(ζ_lo)
-        let below = Estimate {
-            value: (mean.value - low[0] * low[2]).max(0.0),
-            error: mean.error + low[0] * low[3] + 8.0 * f64::EPSILON * mean.value,
+        // the telescoped first moment below the first panel kept:
+        // ū(σ0) − A(ζ_b) ū(ζ_b), and the weight left out there, erfc(x_b)
+        let (below, missing) = match kept.first() {
+            Some(panel) => {
+                let edge = self.magnified(&panel.edge, g, pressure);
+                let x_b = 0.5 / (g * panel.edge.m3).sqrt();
+                (
+                    Estimate {
+                        value: (mean.value - edge[0] * edge[2]).max(0.0),
+                        error: mean.error + edge[0] * edge[3] + 8.0 * f64::EPSILON * mean.value,
+                    },
+                    if panel.edge.m3 > 0.0 { erfc(x_b) } else { 0.0 },
+                )
+            }
+            None => (mean, 0.0),
         };
-        // weight left out below s_lo, at this load
-        let x_lo = 0.5 / (g * self.low.m3).sqrt();
-        let missing = if self.low.m3 > 0.0 { erfc(x_lo) } else { 0.0 };
         Ok(SeparationDensity {
             nominal_pressure: pressure,
             contact_fraction: erf(x1),
