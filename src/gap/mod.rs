@@ -46,6 +46,7 @@
 //!   doi:10.1088/0953-8984/20/21/215214 (u1(ζ)).
 //! - B. N. J. Persson, Phys. Rev. Lett. 99, 125502 (2007) (ū(p)).
 
+mod band;
 mod fast_e1;
 pub mod magnified;
 pub mod points;

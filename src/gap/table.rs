@@ -27,7 +27,7 @@
 //! The first moment below s_lo telescopes: ∫_1^{ζ_lo} (−(Aū)′) dζ =
 //! ū(σ0) − A(ζ_lo) ū(ζ_lo), computed from two extra nodes (ζ = 1 and ζ_lo).
 
-use super::fast_e1::e1_fast;
+use super::band::{Band, QNode};
 use super::{Node, Panel, SeparationDensity, WG, WGK, XGK};
 use crate::error::{check, Error, Result};
 use crate::quad::Estimate;
@@ -36,9 +36,6 @@ use crate::spectrum::Spectrum;
 
 /// x = 1/(2√G) at the table's lowest s for its lowest load.
 const X_LOW: f64 = 6.5;
-
-/// Arguments of e^{−x²} and E1(x²) beyond which both underflow.
-const UNDERFLOW_ARG: f64 = 745.0;
 
 /// Default ζ-panels per unit of s = ln m3.
 pub const DEFAULT_ZETA_PANELS_PER_UNIT: f64 = 0.5;
@@ -67,15 +64,6 @@ impl Default for TableOptions {
     }
 }
 
-/// One wavevector node of a band: Kronrod and Gauss coefficients of
-/// √π q² C (Jacobian included) and w_ζ(q).
-#[derive(Debug, Clone, Copy)]
-struct QNode {
-    kronrod: f64,
-    gauss: f64,
-    w: f64,
-}
-
 /// One ζ-node: its s-rule coefficients (× dζ/ds), m3, dm3/dζ, h and the band's q-rule.
 #[derive(Debug, Clone)]
 struct ZetaNode {
@@ -84,7 +72,7 @@ struct ZetaNode {
     m3: f64,
     dm3: f64,
     h: f64,
-    band: Vec<QNode>,
+    band: Band,
 }
 
 /// One ζ-panel: its ends in s, the band at its start (for the telescoped
@@ -157,10 +145,10 @@ fn gk_nodes(a: f64, b: f64, n: usize) -> Vec<(f64, f64, f64)> {
 
 /// The q-rule of the band [lo, q_s] (module docs; the substitution of
 /// [`super::magnified`]).
-fn band_rule(spectrum: &dyn Spectrum, lo: f64, breaks: &[f64], n: usize) -> Result<Vec<QNode>> {
+fn band_rule(spectrum: &dyn Spectrum, lo: f64, breaks: &[f64], n: usize) -> Result<Band> {
     let q_s = spectrum.q_max();
     if lo >= q_s * (1.0 - 1e-12) {
-        return Ok(Vec::new());
+        return Ok(Band::default());
     }
     let mut knots = vec![0.0, (q_s / lo).ln().sqrt()];
     for &b in breaks {
@@ -198,30 +186,7 @@ fn band_rule(spectrum: &dyn Spectrum, lo: f64, breaks: &[f64], n: usize) -> Resu
             });
         }
     }
-    Ok(out)
-}
-
-/// [F, p/K, ∂F/∂ζ / ((π/2) dm3)] of one band at r = p/E*, as (Kronrod, |K − G|).
-fn band_sums(band: &[QNode], r: f64) -> ([f64; 3], [f64; 3]) {
-    let (mut k, mut g) = ([0.0; 3], [0.0; 3]);
-    for n in band {
-        let x2 = (n.w * r) * (n.w * r);
-        if x2 >= UNDERFLOW_ARG {
-            continue;
-        }
-        let ex = (-x2).exp();
-        let half_e1 = 0.5 * e1_fast(x2, ex);
-        let v = [n.w * half_e1, n.w * ex, n.w * n.w * n.w * (half_e1 - ex)];
-        for i in 0..3 {
-            k[i] += n.kronrod * v[i];
-            g[i] += n.gauss * v[i];
-        }
-    }
-    let mut e = [0.0; 3];
-    for i in 0..3 {
-        e[i] = (k[i] - g[i]).abs() + 8.0 * f64::EPSILON * k[i].abs();
-    }
-    (k, e)
+    Ok(Band::new(out))
 }
 
 impl SeparationTable {
@@ -361,7 +326,7 @@ impl SeparationTable {
             (erf(x), loss)
         };
         let p = pressure / a;
-        let (k, e) = band_sums(&n.band, p / self.contact_modulus);
+        let (k, e) = n.band.sums(p / self.contact_modulus);
         let half_pi_dm = 0.5 * std::f64::consts::PI * n.dm3;
         let (u, u_err) = (k[0], e[0]);
         let (compliance, c_err) = (k[1] / p, e[1] / p);
@@ -432,7 +397,7 @@ impl SeparationTable {
             })
             .collect();
         let x1 = 0.5 / (g * self.m3_total).sqrt();
-        let (k, e) = band_sums(&self.full.band, pressure / self.contact_modulus);
+        let (k, e) = self.full.band.sums(pressure / self.contact_modulus);
         let mean = Estimate {
             value: k[0],
             error: e[0],
