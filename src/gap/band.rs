@@ -55,7 +55,7 @@ pub(super) struct QNode {
 #[derive(Debug, Clone, Default)]
 pub(super) struct Band {
     nodes: Vec<QNode>,
-    /// Per tail start i: Kronrod row then Gauss row, `ROW` values each.
+    /// Per tail start i, at row n − 1 − i: Kronrod row then Gauss row, `ROW` values each.
     tails: Vec<f64>,
 }
 
@@ -82,36 +82,27 @@ impl Band {
         nodes.retain(|n| n.w.is_finite() && n.w > 0.0);
         nodes.sort_by(|a, b| b.w.total_cmp(&a.w));
         let n = nodes.len();
-        let mut tails = vec![0.0; 2 * ROW * n];
-        // backwards: the tail at i from the tail at i + 1, rescaled by (w_{i+1}/w_i)^{2k}
+        // backwards: the tail at i from the tail at i + 1, rescaled by
+        // (w_{i+1}/w_i)^{2k}; stored in that order (the tail at i is row n − 1 − i)
+        let mut tails = Vec::with_capacity(2 * ROW * n);
+        let mut next = [[0.0; ROW]; 2];
         for i in (0..n).rev() {
             let node = nodes[i];
             let ratio2 = nodes
                 .get(i + 1)
-                .map_or(0.0, |next| (next.w / node.w) * (next.w / node.w));
+                .map_or(0.0, |after| (after.w / node.w) * (after.w / node.w));
             let ln_w = node.w.ln();
             for (rule, c) in [node.kronrod, node.gauss].into_iter().enumerate() {
-                let at = (2 * i + rule) * ROW;
-                let mut row = [0.0; ROW];
+                let row = &mut next[rule];
+                let term = c * node.w;
                 let mut scale = 1.0;
-                for (k, slot) in row.iter_mut().enumerate().take(TERMS + 2) {
-                    let next = if i + 1 < n {
-                        tails[(2 * (i + 1) + rule) * ROW + k]
-                    } else {
-                        0.0
-                    };
-                    *slot = c * node.w + scale * next;
+                for m in row.iter_mut().take(TERMS + 2) {
+                    *m = term + scale * *m;
                     scale *= ratio2;
                 }
-                let (next_l1, next_l3) = if i + 1 < n {
-                    let base = (2 * (i + 1) + rule) * ROW;
-                    (tails[base + TERMS + 2], tails[base + TERMS + 3])
-                } else {
-                    (0.0, 0.0)
-                };
-                row[TERMS + 2] = c * node.w * ln_w + next_l1;
-                row[TERMS + 3] = c * node.w * ln_w + ratio2 * next_l3;
-                tails[at..at + ROW].copy_from_slice(&row);
+                row[TERMS + 2] += term * ln_w;
+                row[TERMS + 3] = term * ln_w + ratio2 * row[TERMS + 3];
+                tails.extend_from_slice(row);
             }
         }
         Band { nodes, tails }
@@ -139,7 +130,7 @@ impl Band {
             let w2 = first.w * first.w;
             let log_term = 0.5 * (-EULER_GAMMA - 2.0 * r.ln());
             for (rule, out) in [&mut k, &mut g].into_iter().enumerate() {
-                let at = (2 * tail + rule) * ROW;
+                let at = (2 * (self.nodes.len() - 1 - tail) + rule) * ROW;
                 let m = &self.tails[at..at + ROW];
                 let s = tail_sums(m, y);
                 out[0] += log_term * m[0] - m[TERMS + 2] + s[0];
