@@ -46,7 +46,7 @@
 use serde::Serialize;
 
 use crate::error::{check, Error, Result};
-use crate::gap::{DensityOptions, PointSet, SeparationDensity, SeparationTable, TableOptions};
+use crate::gap::{DensityOptions, PointSet, SeparationDensity, SeparationTable};
 use crate::quad::Estimate;
 use crate::separation::Separation;
 use crate::spectrum::Spectrum;
@@ -477,8 +477,9 @@ impl<'a> Conductance<'a> {
     }
 
     /// [`Conductance::point`] for each pressure; the gap term from one
-    /// [`SeparationTable`] built for the lowest pressure (breaks of the
-    /// density options, default table knobs) and the fixed point rule of
+    /// [`SeparationTable`] built for the lowest pressure
+    /// ([`DensityOptions::table`]: the breaks and `table_panels_per_unit`,
+    /// the curve's accuracy knob) and the fixed point rule of
     /// [`PointSet`], with those rules' bounds.
     ///
     /// # Errors
@@ -495,10 +496,7 @@ impl<'a> Conductance<'a> {
                 self.spectrum,
                 self.contact_modulus,
                 lowest,
-                &TableOptions {
-                    breaks: self.options.density.breaks.clone(),
-                    ..TableOptions::default()
-                },
+                &self.options.density.table(),
             )?),
             _ => None,
         };

@@ -13,6 +13,12 @@ use persson::Error;
 /// 1e-10, ū 3e-7, σ_eff 1.2e-6); 10× margin.
 const TABLE_TOL: f64 = 1e-5;
 
+/// The load curves (table with 0.35 ζ-panels per unit, fixed u-rule)
+/// against the adaptive point route: the worst difference measured over 97
+/// loads up to A/A0 = 0.4 is 2.7e-5 (`examples/flow_accuracy.rs -- knobs`;
+/// 2.4e-5 with the table's 0.5, so the fixed u-rule sets it); 2× margin.
+const CURVE_TOL: f64 = 5e-5;
+
 /// P_nc(u) pointwise, relative to its peak, at σ0 ≤ 1e7: the largest
 /// difference measured is 1.8e-5 (σ0 = 1e7, at the peak); 5× margin. At
 /// σ0 = 1e8 (A/A0 ≈ 0.27) the pointwise difference is 7e-4 with 0.5 s-panels
@@ -119,7 +125,7 @@ fn effective_medium_curve_agrees_with_its_points() {
             c.effective_flow_conductivity,
         );
         if p <= 1e8 {
-            assert!((a - b).abs() <= TABLE_TOL * a, "{p}: {a} vs {b}");
+            assert!((a - b).abs() <= CURVE_TOL * a, "{p}: {a} vs {b}");
         }
         // the curve's bound covers the difference
         let bounds =
@@ -148,7 +154,7 @@ fn gap_conductance_curve_agrees_with_its_points() {
     for (c, &p) in curve.iter().zip(&pressures) {
         let a = model.point(p).unwrap().gap_conductance.unwrap();
         let b = c.gap_conductance.unwrap();
-        assert!((a - b).abs() <= TABLE_TOL * a, "{p}: {a} vs {b}");
+        assert!((a - b).abs() <= CURVE_TOL * a, "{p}: {a} vs {b}");
     }
 }
 

@@ -124,11 +124,30 @@ pub struct DensityOptions {
     /// to this (absolute, the total is ≤ 1) and on ∫(−A′) u1 dζ to this
     /// relative to ū; in [1e-15, 0.1].
     pub rule_tolerance: f64,
+    /// ζ-panels per unit of s = ln m3 of the load curves' table
+    /// ([`TableOptions::zeta_panels_per_unit`], > 0, ≤ 100; default
+    /// [`table::DEFAULT_CURVE_PANELS_PER_UNIT`]): the accuracy knob of the
+    /// effective-medium and gap-conductance load curves (their error
+    /// against time: docs/speed.md).
+    pub table_panels_per_unit: f64,
+}
+
+impl DensityOptions {
+    /// The table options of the load curves: `table_panels_per_unit`, the
+    /// breaks, the default q-rule.
+    pub fn table(&self) -> TableOptions {
+        TableOptions {
+            zeta_panels_per_unit: self.table_panels_per_unit,
+            breaks: self.breaks.clone(),
+            ..TableOptions::default()
+        }
+    }
 }
 
 impl Default for DensityOptions {
     fn default() -> Self {
         DensityOptions {
+            table_panels_per_unit: table::DEFAULT_CURVE_PANELS_PER_UNIT,
             tolerance: DEFAULT_TOLERANCE,
             panels_per_decade: DEFAULT_PANELS_PER_DECADE,
             breaks: Vec::new(),

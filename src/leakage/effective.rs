@@ -5,7 +5,7 @@ use serde::Serialize;
 
 use super::{LeakStatus, Seal};
 use crate::error::{check, Error, Result};
-use crate::gap::{DensityOptions, PointSet, SeparationDensity, SeparationTable, TableOptions};
+use crate::gap::{DensityOptions, PointSet, SeparationDensity, SeparationTable};
 use crate::quad::Estimate;
 use crate::spectrum::Spectrum;
 
@@ -254,8 +254,8 @@ impl<'a> EffectiveMedium<'a> {
     }
 
     /// σ_eff and Q at each pressure, from one [`SeparationTable`] built for
-    /// the lowest of them (breaks of the density options; default table
-    /// knobs): the same quantities as [`EffectiveMedium::point`], faster by
+    /// the lowest of them ([`DensityOptions::table`]: the breaks and
+    /// `table_panels_per_unit`, the curve's accuracy knob): the same quantities as [`EffectiveMedium::point`], faster by
     /// the table, with the fixed rules' bounds (tests/leakage.rs checks the
     /// agreement with [`EffectiveMedium::point`]).
     ///
@@ -272,10 +272,7 @@ impl<'a> EffectiveMedium<'a> {
             self.spectrum,
             self.contact_modulus,
             lowest,
-            &TableOptions {
-                breaks: self.options.breaks.clone(),
-                ..TableOptions::default()
-            },
+            &self.options.table(),
         )?;
         // each root starts from the previous loads' roots, extrapolated
         // linearly in ln σ0 (3 Newton steps a load on a curve of 100 loads,
