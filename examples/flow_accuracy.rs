@@ -76,7 +76,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .map(|i| 1e9 * 10f64.powf(-4.0 + 3.5 * f64::from(i) / 99.0))
         .collect();
     if args.first().map(String::as_str) == Some("knobs") {
-        let (em, gap) = models(&s, persson::gap::table::DEFAULT_ZETA_PANELS_PER_UNIT)?;
+        let (em, gap) = models(&s, persson::gap::table::DEFAULT_CURVE_PANELS_PER_UNIT)?;
         // the reference: the adaptive route at each load
         let mut reference = Vec::new();
         for &p in &loads {
@@ -110,7 +110,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         println!("({} of the 100 loads have A/A0 ≤ 0.4)", reference.len());
         return Ok(());
     }
-    let (em, gap) = models(&s, persson::gap::table::DEFAULT_ZETA_PANELS_PER_UNIT)?;
+    let (em, gap) = models(&s, persson::gap::table::DEFAULT_CURVE_PANELS_PER_UNIT)?;
     let (em_curve, em_fast, em_median) = time(|| em.load_curve(&loads));
     let (gap_curve, gap_fast, gap_median) = time(|| gap.load_curve(&loads));
     println!("effective-medium curve: fastest {em_fast:?}, median {em_median:?}");

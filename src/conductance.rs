@@ -430,24 +430,30 @@ impl<'a> Conductance<'a> {
     /// # Ok(()) }
     /// ```
     pub fn point(&self, pressure: f64) -> Result<ConductancePoint> {
-        self.point_with(pressure, |law| {
+        let k = self.stiffness(pressure)?;
+        self.point_with(pressure, k, |law| {
             let d = &self.options.density;
             let density = SeparationDensity::new(self.spectrum, self.contact_modulus, pressure, d)?;
             gap_conductance(&density, law)
         })
     }
 
-    /// The conductances at σ0 with the gap term from `gap(law)`.
+    /// K = −dσ0/dū at σ0 by the adaptive route ([`Separation::stiffness`]).
+    fn stiffness(&self, pressure: f64) -> Result<Estimate> {
+        let d = &self.options.density;
+        Separation::new(self.spectrum, self.contact_modulus)?
+            .with_tolerance(d.tolerance)?
+            .with_breaks(&d.breaks)
+            .stiffness(pressure)
+    }
+
+    /// The conductances at σ0 from the stiffness `k`, with the gap term from `gap(law)`.
     fn point_with(
         &self,
         pressure: f64,
+        k: Estimate,
         gap: impl Fn(&GapLaw) -> Result<Estimate>,
     ) -> Result<ConductancePoint> {
-        let d = &self.options.density;
-        let sep = Separation::new(self.spectrum, self.contact_modulus)?
-            .with_tolerance(d.tolerance)?
-            .with_breaks(&d.breaks);
-        let k = sep.stiffness(pressure)?;
         let split = |e: Option<Estimate>| (e.map(|e| e.value), e.map(|e| e.error));
         let (th, th_e) = split(
             self.options
@@ -476,11 +482,13 @@ impl<'a> Conductance<'a> {
         })
     }
 
-    /// [`Conductance::point`] for each pressure; the gap term from one
-    /// [`SeparationTable`] built for the lowest pressure
+    /// [`Conductance::point`] for each pressure. With a gap law, the gap
+    /// term comes from one [`SeparationTable`] built for the lowest pressure
     /// ([`DensityOptions::table`]: the breaks and `table_panels_per_unit`,
     /// the curve's accuracy knob) and the fixed point rule of
-    /// [`PointSet`], with those rules' bounds.
+    /// [`PointSet`], with those rules' bounds, and the stiffness from the
+    /// table's full band ([`SeparationTable::stiffness`]); without one, the
+    /// stiffness by the adaptive route, as [`Conductance::point`].
     ///
     /// # Errors
     /// As [`Conductance::point`], for the first bad pressure.
@@ -502,15 +510,16 @@ impl<'a> Conductance<'a> {
         };
         pressures
             .iter()
-            .map(|&p| {
-                self.point_with(p, |law| {
+            .map(|&p| match &table {
+                // the table's full band gives K too (1e-13 of the adaptive
+                // route on the bench's spectrum, tests/separation_table.rs)
+                Some(t) => self.point_with(p, t.stiffness(p)?, |law| {
                     check_for_density(law)?;
-                    let density = match &table {
-                        Some(t) => t.density(p)?,
-                        None => unreachable!("a table is built whenever there is a gap law"),
-                    };
-                    Ok(PointSet::new(&density).expectation(|u| law.alpha(u)))
-                })
+                    Ok(PointSet::new(&t.density(p)?).expectation(|u| law.alpha(u)))
+                }),
+                None => self.point_with(p, self.stiffness(p)?, |_| {
+                    unreachable!("a table is built whenever there is a gap law")
+                }),
             })
             .collect()
     }

