@@ -44,9 +44,16 @@
 //! τ  = ⟨r, t⟩ / ⟨t, 𝒦t⟩,   g ← max(g − τ t, 0),   g scaled to ḡ
 //! ```
 //! The conjugacy restarts (β = 0) when a node crosses g = ρ (Maugis–Dugdale)
-//! or the direction does not descend. Three convolutions per iteration, as
-//! the plain loop (𝒦(g + h), 𝒢r, 𝒦t; the plain loop's third is the re-entry
-//! test). Measured (exponential law, N = 64, tests/bem_adhesive.rs): 3.4–6.5×
+//! or the direction does not descend. Two convolutions per iteration (𝒢r,
+//! 𝒦t): 𝒦(g + h) is updated as s(𝒦(g + h) − τ𝒦t − 𝒦h) + 𝒦h (s the
+//! scaling to ḡ) and transformed afresh only when a node closes, every 20
+//! steps and to confirm convergence; the plain loop takes three (𝒦(g + h),
+//! 𝒦t and the re-entry test). The element-wise work is four passes over
+//! the fields per iteration: centring r with ε's numerator; t = z + βt − μ
+//! with ⟨r, t⟩ (⟨r, z⟩ and the sums for μ ride on the emit of 𝒢r, ⟨t, 𝒦t⟩
+//! on the emit of 𝒦t); the gap step with its mean; the scaling, the update
+//! of 𝒦(g + h) and the new r with ε's denominator and p̄ (issue 24: 9–10
+//! passes before, 9 % fewer instructions per solve at 256²). Measured (exponential law, N = 64, tests/bem_adhesive.rs): 3.4–6.5×
 //! fewer iterations along loading–unloading paths; on the 256² and 512²
 //! self-affine surfaces of examples/adhesive_tamaas.rs see docs/adhesion.md.
 //!
@@ -364,10 +371,26 @@ impl Padded {
     /// y = C x (`stiffness` false) or C⁻¹ x, on the m × m grid.
     fn apply(&mut self, stiffness: bool, x: &[f64], y: &mut [f64]) -> Result<()> {
         let m = self.m;
+        self.apply_rows(
+            stiffness,
+            &mut |i, row| row.copy_from_slice(&x[i * m..(i + 1) * m]),
+            &mut |i, row| y[i * m..(i + 1) * m].copy_from_slice(row),
+        )
+    }
+
+    /// [`Padded::apply`] row by row: `fill(i, row)` writes row i of x, then
+    /// `emit(i, row)` receives row i of y.
+    fn apply_rows(
+        &mut self,
+        stiffness: bool,
+        fill: &mut dyn FnMut(usize, &mut [f64]),
+        emit: &mut dyn FnMut(usize, &[f64]),
+    ) -> Result<()> {
+        let m = self.m;
         let norm = 1.0 / (m as f64 * m as f64);
         let c = &self.compliance;
         self.fft.convolve(
-            &mut |i, row| row.copy_from_slice(&x[i * m..(i + 1) * m]),
+            fill,
             &mut |kj, col| {
                 let mk = &c[kj * m..(kj + 1) * m];
                 if stiffness {
@@ -380,7 +403,7 @@ impl Padded {
                     }
                 }
             },
-            Some(&mut |i, row| y[i * m..(i + 1) * m].copy_from_slice(row)),
+            Some(emit),
         )
     }
 }
@@ -401,10 +424,28 @@ impl Ops {
         }
     }
 
-    fn compliance(&mut self, x: &[f64], y: &mut [f64]) -> Result<()> {
+    /// y = 𝒦x row by row (as [`Operator::apply_rows`]; rows of the
+    /// iteration's grid).
+    fn stiffness_rows(
+        &mut self,
+        fill: &mut dyn FnMut(usize, &mut [f64]),
+        emit: &mut dyn FnMut(usize, &[f64]),
+    ) -> Result<()> {
         match &mut self.padded {
-            Some(p) => p.apply(false, x, y),
-            None => self.op.apply(x, y),
+            Some(p) => p.apply_rows(true, fill, emit),
+            None => self.op.apply_stiffness_rows(fill, emit),
+        }
+    }
+
+    /// y = 𝒢x row by row (the compliance; C on the padded grid).
+    fn compliance_rows(
+        &mut self,
+        fill: &mut dyn FnMut(usize, &mut [f64]),
+        emit: &mut dyn FnMut(usize, &[f64]),
+    ) -> Result<()> {
+        match &mut self.padded {
+            Some(p) => p.apply_rows(false, fill, emit),
+            None => self.op.apply_rows(fill, emit),
         }
     }
 }
@@ -419,6 +460,17 @@ enum Phase {
     Done(f64, usize, f64),
     /// Stalled after this many iterations, at this ε: the plain loop goes on.
     Stalled(Fallback),
+}
+
+/// The sums of one pass of [`AdhesiveSolver::measure`].
+#[derive(Debug, Clone, Copy)]
+struct Sums {
+    /// p̄'s negative: the mean of r over the free set (periodic; 0 free).
+    mean: f64,
+    /// ε's denominator squared (module docs, "Stopping rule").
+    scale: f64,
+    /// The round-off floor of ε's numerator squared.
+    floor: f64,
 }
 
 /// The adhesive solver: an operator and the buffers of one surface.
@@ -738,6 +790,14 @@ impl AdhesiveSolver {
 
     /// The preconditioned iteration (module docs, "Preconditioned
     /// iteration"); `Stalled` hands the current gap to [`Self::plain`].
+    ///
+    /// The element-wise passes ride on the two transforms' row callbacks:
+    /// centring r on F and the sums of ε in the fill of 𝒢r, the truncation of
+    /// z to F and ⟨r, z⟩ in its emit; the centring of t, the contact nodes
+    /// that stay put and ⟨r, t⟩ in the fill of 𝒦t, ⟨t, 𝒦t⟩ in its emit. The
+    /// gap step and its mean are one pass, the scaling to ḡ, the update of
+    /// 𝒦(g + h) and the new r another ([`Self::measure`]). Four passes over
+    /// the fields per iteration besides the transforms (twelve before).
     fn preconditioned(
         &mut self,
         heights: &[f64],
@@ -747,21 +807,46 @@ impl AdhesiveSolver {
         stall_iterations: usize,
     ) -> Result<Phase> {
         let layout = self.layout;
+        let (m, periodic) = (layout.m, layout.periodic());
+        let jumps = matches!(law, CohesiveLaw::Maugis { .. });
         let h_mean = height_stats(heights).1;
         let mut stall = Stall::new(stall_iterations);
         self.search.iter_mut().for_each(|t| *t = 0.0);
         let (mut rz_old, mut restart) = (0.0, true);
         let mut k = 0;
         self.stiffness_of_gap(heights, false)?;
-        let (mut mean, mut eps) = self.gradient(heights, law)?;
+        self.stiffness_of_gap(heights, true)?;
+        let mut sums = self.measure(heights, law, None)?;
         let mut stale = 0usize;
         loop {
+            // r centred on F = {g > 0} ∪ {g = 0, r < p̄} (contact nodes that
+            // pull), and ε's numerator
+            let mean = sums.mean;
+            let mut res = 0.0;
+            for (kk, (r, g)) in self.grad.iter_mut().zip(&self.gap).enumerate() {
+                let d = *r - mean;
+                let contact = *g <= 0.0 && (periodic || layout.window(kk).is_some());
+                // free nodes: r = 0; contact nodes: r ≥ 0
+                *r = if !contact || d < 0.0 {
+                    res += d * d;
+                    d
+                } else {
+                    0.0
+                };
+            }
+            let eps = if sums.scale > 0.0 {
+                (res / sums.scale).sqrt()
+            } else {
+                0.0
+            };
+            self.round_off = res <= sums.floor;
             if eps <= opts.tolerance || self.round_off {
                 if stale == 0 {
                     return Ok(Phase::Done(-mean, k, eps));
                 }
                 // converged on the updated 𝒦(g + h): confirm on a fresh one
-                (mean, eps) = self.gradient(heights, law)?;
+                self.stiffness_of_gap(heights, true)?;
+                sums = self.measure(heights, law, None)?;
                 stale = 0;
                 continue;
             }
@@ -775,32 +860,64 @@ impl AdhesiveSolver {
             if k >= opts.max_iterations || stall.stalled(k, eps) {
                 return Ok(stalled);
             }
-            // r on F = {g > 0} ∪ {g = 0, r < 0} (contact nodes that pull), centred
-            for (kk, (r, g)) in self.grad.iter_mut().zip(&self.gap).enumerate() {
-                let d = *r - mean;
-                let contact = *g <= 0.0 && layout.window(kk).is_some();
-                *r = if !contact || d < 0.0 { d } else { 0.0 };
+            // z = [F] 𝒢 r (𝒢 = C on the padded grid) and, on the way, ⟨r, z⟩
+            // and the sums over F of z and of the last direction
+            let in_f = |kk: usize, r: f64, g: f64| {
+                r != 0.0 || g > 0.0 || (!periodic && layout.window(kk).is_none())
+            };
+            let (mut r_z, mut z_sum, mut t_sum, mut count) = (0.0, 0.0, 0.0, 0usize);
+            {
+                let Self {
+                    ops,
+                    grad,
+                    gap,
+                    search,
+                    projected,
+                    ..
+                } = &mut *self;
+                let (grad, gap, search) = (&grad[..], &gap[..], &search[..]);
+                ops.compliance_rows(
+                    &mut |i, row| row.copy_from_slice(&grad[i * m..(i + 1) * m]),
+                    &mut |i, row| {
+                        let (lo, hi) = (i * m, (i + 1) * m);
+                        for (j, (z, (y, (t, (r, g))))) in row
+                            .iter()
+                            .zip(
+                                projected[lo..hi].iter_mut().zip(
+                                    search[lo..hi]
+                                        .iter()
+                                        .zip(grad[lo..hi].iter().zip(&gap[lo..hi])),
+                                ),
+                            )
+                            .enumerate()
+                        {
+                            if in_f(lo + j, *r, *g) {
+                                *y = *z;
+                                r_z += r * z;
+                                z_sum += z;
+                                t_sum += t;
+                                count += 1;
+                            } else {
+                                *y = 0.0;
+                            }
+                        }
+                    },
+                )?;
             }
-            // z = [F] 𝒢 r (𝒢 = C on the padded grid)
-            self.ops.compliance(&self.grad, &mut self.projected)?;
-            let mut r_z = 0.0;
-            for ((z, r), g) in self.projected.iter_mut().zip(&self.grad).zip(&self.gap) {
-                // F: a node with r ≠ 0, or a free node (g > 0, or padding)
-                if *r == 0.0 && *g <= 0.0 {
-                    *z = 0.0;
-                }
-                r_z += r * *z;
-            }
-            let in_f =
-                |kk: usize, r: f64, g: f64| r != 0.0 || g > 0.0 || layout.window(kk).is_none();
             let mut beta = if restart || rz_old <= 0.0 {
                 0.0
             } else {
                 r_z / rz_old
             };
-            let mut descent = 0.0;
+            let (mut descent, mut den) = (0.0, 0.0);
             for attempt in 0..2 {
-                let (mut sum, mut count) = (0.0, 0usize);
+                // t = z + β t_old − μ on F, μ its mean there (Σ t = 0 keeps ḡ)
+                let mu = if layout.periodic() {
+                    (z_sum + beta * t_sum) / count.max(1) as f64
+                } else {
+                    0.0
+                };
+                let mut down = 0.0;
                 for (kk, ((t, z), (r, g))) in self
                     .search
                     .iter_mut()
@@ -809,92 +926,228 @@ impl AdhesiveSolver {
                     .enumerate()
                 {
                     if in_f(kk, *r, *g) {
-                        *t = *z + beta * *t;
-                        sum += *t;
-                        count += 1;
+                        *t = *z + beta * *t - mu;
+                        // a contact node that the step would push in stays put
+                        if *g <= 0.0 && *t > 0.0 && (periodic || layout.window(kk).is_some()) {
+                            *t = 0.0;
+                        }
+                        down += r * *t;
                     } else {
                         *t = 0.0;
                     }
                 }
-                let mu = if layout.periodic() {
-                    sum / count.max(1) as f64
-                } else {
-                    0.0
-                };
-                descent = 0.0;
-                for (kk, ((t, r), g)) in self
-                    .search
-                    .iter_mut()
-                    .zip(&self.grad)
-                    .zip(&self.gap)
-                    .enumerate()
+                descent = down;
+                if !(descent > 0.0 || attempt == 1 || beta == 0.0) {
+                    // not a descent direction: restart the conjugacy (β = 0)
+                    // from z, kept in `projected`
+                    beta = 0.0;
+                    continue;
+                }
+                // 𝒦t into `projected`, ⟨t, 𝒦t⟩ on the way
+                let mut tq = 0.0;
                 {
-                    if in_f(kk, *r, *g) {
-                        *t -= mu;
-                        // a contact node that the step would push in stays put
-                        if *g <= 0.0 && *t > 0.0 && layout.window(kk).is_some() {
-                            *t = 0.0;
-                        }
-                        descent += r * *t;
-                    }
+                    let Self {
+                        ops,
+                        search,
+                        projected,
+                        ..
+                    } = &mut *self;
+                    let search = &search[..];
+                    ops.stiffness_rows(
+                        &mut |i, row| row.copy_from_slice(&search[i * m..(i + 1) * m]),
+                        &mut |i, row| {
+                            let (lo, hi) = (i * m, (i + 1) * m);
+                            projected[lo..hi].copy_from_slice(row);
+                            tq += row
+                                .iter()
+                                .zip(&search[lo..hi])
+                                .map(|(q, t)| q * t)
+                                .sum::<f64>();
+                        },
+                    )?;
                 }
-                if descent > 0.0 || attempt == 1 || beta == 0.0 {
-                    break;
-                }
-                // not a descent direction: restart the conjugacy (β = 0)
-                // from z, rebuilt from `projected`
-                beta = 0.0;
-                self.search.iter_mut().for_each(|t| *t = 0.0);
+                den = tq;
+                break;
             }
             if descent.is_nan() || descent <= 0.0 {
                 return Ok(stalled);
             }
             rz_old = r_z;
-            self.ops.stiffness(&self.search, &mut self.projected)?;
-            let den: f64 = self
-                .search
-                .iter()
-                .zip(&self.projected)
-                .map(|(t, q)| t * q)
-                .sum();
             let tau = descent / den;
             if !(tau > 0.0 && tau.is_finite()) {
                 return Ok(stalled);
             }
             restart = false;
             let mut clamped = false;
+            let mut total = 0.0;
             for (kk, (g, t)) in self.gap.iter_mut().zip(&self.search).enumerate() {
-                if layout.window(kk).is_some() {
+                if periodic || layout.window(kk).is_some() {
                     let step = *g - tau * t;
                     clamped |= step < 0.0;
                     let new = step.max(0.0);
-                    restart |= law.jumps_between(*g, new);
+                    restart |= jumps && law.jumps_between(*g, new);
                     *g = new;
                 } else {
                     *g -= tau * t;
                 }
+                total += *g;
             }
             k += 1;
             let mut scale = 1.0;
             if let Target::MeanGap(mean_gap) = target {
-                if self.mean_of_gap() <= 0.0 {
+                let mean_of_gap = total / self.gap.len() as f64;
+                if mean_of_gap <= 0.0 {
                     return Ok(stalled);
                 }
-                scale = self.scale_to(mean_gap);
+                scale = mean_gap / mean_of_gap;
             }
             // 𝒦(s(g − τt) + h) = s(𝒦(g + h) − τ𝒦t − 𝒦h) + 𝒦h when no node
             // was clamped (a clamp, or every REFRESH steps: a transform)
-            if clamped || stale >= REFRESH || !scale.is_finite() {
+            if clamped || stale >= REFRESH {
+                if scale != 1.0 {
+                    self.gap.iter_mut().for_each(|g| *g *= scale);
+                }
                 self.stiffness_of_gap(heights, true)?;
+                sums = self.measure(heights, law, None)?;
                 stale = 0;
             } else {
-                for ((w, q), h) in self.work.iter_mut().zip(&self.projected).zip(&self.kh) {
-                    *w = scale * (*w - tau * q - h) + h;
-                }
+                sums = self.measure(heights, law, Some((scale, tau)))?;
                 stale += 1;
             }
-            (mean, eps) = self.residual(heights, law)?;
         }
+    }
+
+    /// One pass over the fields: with `update` = (s, τ) first g ← s g and
+    /// `work` ← s(`work` − τ𝒦t − 𝒦h) + 𝒦h (𝒦t in `projected`, 𝒦h in
+    /// `kh`); then grad = work + W′(g) (work on the padding) and the sums
+    /// of the stopping rule (module docs): the multiplier p̄ (periodic),
+    /// ε's denominator and the round-off floor — [`Self::residual`]'s, in
+    /// one pass.
+    fn measure(
+        &mut self,
+        heights: &[f64],
+        law: &CohesiveLaw,
+        update: Option<(f64, f64)>,
+    ) -> Result<Sums> {
+        // the law's match out of the loop, W′ as `CohesiveLaw::attraction`
+        // bit for bit but for the exponential law beyond g = 42ρ: there W′
+        // is below 2⁻⁶⁰ (e⁻⁴² = 5.7e-19) of the contact attraction Δγ/ρ, far
+        // under the round-off of the pressures it is added to (ε_mach times
+        // the largest symbol of 𝒦 times g + h), and is taken as 0 (55 % of
+        // the nodes of the 512² surface of examples/adhesive_tamaas.rs skip
+        // the exponential)
+        match *law {
+            CohesiveLaw::Maugis {
+                work_of_adhesion,
+                adhesion_range,
+            } => {
+                let c = work_of_adhesion / adhesion_range;
+                self.sweep(
+                    heights,
+                    update,
+                    |g| if g < adhesion_range { c } else { 0.0 },
+                )
+            }
+            CohesiveLaw::Exponential {
+                work_of_adhesion,
+                adhesion_range,
+            } => {
+                let (c, cut) = (work_of_adhesion / adhesion_range, 42.0 * adhesion_range);
+                self.sweep(heights, update, |g| {
+                    if g > cut {
+                        0.0
+                    } else {
+                        c * (-g / adhesion_range).exp()
+                    }
+                })
+            }
+        }
+    }
+
+    /// [`Self::measure`] with W′ = `attraction`.
+    #[inline(always)]
+    fn sweep(
+        &mut self,
+        heights: &[f64],
+        update: Option<(f64, f64)>,
+        attraction: impl Fn(f64) -> f64,
+    ) -> Result<Sums> {
+        let layout = self.layout;
+        let (s, tau) = update.unwrap_or((1.0, 0.0));
+        let (mut sum, mut free, mut input, mut scale) = (0.0, 0usize, 0.0, 0.0);
+        let fields = self.gap.iter_mut().zip(self.work.iter_mut()).zip(
+            self.grad
+                .iter_mut()
+                .zip(self.projected.iter().zip(&self.kh)),
+        );
+        if layout.periodic() {
+            for (((g, w), (r, (q, kh))), h) in fields.zip(heights) {
+                if update.is_some() {
+                    *g *= s;
+                    *w = s * (*w - tau * q - kh) + kh;
+                }
+                let a = attraction(*g);
+                *r = *w + a;
+                if *g > 0.0 {
+                    sum += *r;
+                    free += 1;
+                }
+                input += (*g + h) * (*g + h);
+                scale += *w * *w + a * a;
+            }
+        } else {
+            let offset = self.offset;
+            for (k, ((g, w), (r, (q, kh)))) in fields.enumerate() {
+                if update.is_some() {
+                    *g *= s;
+                    *w = s * (*w - tau * q - kh) + kh;
+                }
+                match layout.window(k) {
+                    Some(i) => {
+                        let a = attraction(*g);
+                        *r = *w + a;
+                        input += (*g + (heights[i] - offset)).powi(2);
+                        scale += *w * *w + a * a;
+                    }
+                    None => {
+                        *r = *w;
+                        input += *g * *g;
+                        scale += *w * *w;
+                    }
+                }
+            }
+        }
+        if free == 0 && layout.periodic() {
+            return Err(Error::NotConverged {
+                what: "adhesive BEM: every node closed (full contact)".into(),
+                iterations: 0,
+                residual: f64::NAN,
+                tolerance: 0.0,
+            });
+        }
+        let mean = if layout.periodic() {
+            sum / free as f64
+        } else {
+            0.0
+        };
+        scale += self.gap.len() as f64 * mean * mean;
+        Ok(Sums {
+            mean,
+            scale,
+            floor: self.round_off_floor(input),
+        })
+    }
+
+    /// The round-off of computing 𝒦(g + h) for an input of squared norm
+    /// `input`: (ε_mach times the largest symbol E*π√2 N/L times log₂ of the
+    /// grid's nodes)² times `input` (module docs, "Stopping rule").
+    fn round_off_floor(&self, input: f64) -> f64 {
+        let op = &self.ops.op;
+        let k_max =
+            op.e_star() * std::f64::consts::PI * std::f64::consts::SQRT_2 * self.layout.n as f64
+                / op.size();
+        let nodes = self.gap.len() as f64;
+        (f64::EPSILON * k_max * nodes.log2()).powi(2) * input
     }
 
     /// Rey, Anciaux & Molinari's conjugate gradient (module docs,
