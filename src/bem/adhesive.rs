@@ -39,10 +39,22 @@
 //! a gap primal:
 //! ```text
 //! F  = {g > 0} ∪ {g = 0, r < 0}                      (contact nodes that pull are free)
-//! z  = [F] 𝒢 [F] r,   t = [F](z + β t_old − μ),   β = ⟨r, z⟩/⟨r_old, z_old⟩ (Fletcher–Reeves)
+//! z  = [F] 𝒢 [F] r,   t = [F](z + β t_old − μ),   β = max(⟨r − r_old, z⟩/⟨r_old, z_old⟩, 0)
 //! μ  = mean of z + β t_old over F  (Σ t = 0 keeps ḡ);  t = 0 at a contact node where t > 0
-//! τ  = ⟨r, t⟩ / ⟨t, 𝒦t⟩,   g ← max(g − τ t, 0),   g scaled to ḡ
+//! τ  = ⟨r, t⟩ / max(⟨t, 𝒦t⟩ + Σ_{g>0} W″(g) t², ⟨t, 𝒦t⟩/4),   g ← max(g − τ t, 0),   g scaled to ḡ
 //! ```
+//! β is Polak–Ribière's (Polak & Ribière 1969), kept ≥ 0, the nonlinear
+//! conjugate gradient's choice for a non-quadratic energy: it equals
+//! Fletcher–Reeves' on a quadratic with exact steps and restarts by itself
+//! where the gradient turns. The step is the quadratic model's with the
+//! law's curvature W″ (exponential: −W′/ρ, taken from r + p̄ − 𝒦(g + h)
+//! without a second exponential; Maugis–Dugdale: 0), capped at 4× the
+//! step of 𝒦 alone; it is used only where the cohesive zone is resolved,
+//! Δγ/ρ² below a node's stiffness E*πN/(2L) (else the longer steps reach
+//! other stationary points: the λ = 3 sphere at N = 64). Measured on the
+//! 256² and 512² surfaces of examples/adhesive_tamaas.rs (issue 24): 83 and
+//! 153 iterations with Fletcher–Reeves and the step of 𝒦, 60 and 37 with
+//! Polak–Ribière, 28 and 25 with both; the answers equal to 1e-14.
 //! The conjugacy restarts (β = 0) when a node crosses g = ρ (Maugis–Dugdale)
 //! or the direction does not descend. Two convolutions per iteration (𝒢r,
 //! 𝒦t): 𝒦(g + h) is updated as s(𝒦(g + h) − τ𝒦t − 𝒦h) + 𝒦h (s the
@@ -53,14 +65,17 @@
 //! with ⟨r, t⟩ (⟨r, z⟩ and the sums for μ ride on the emit of 𝒢r, ⟨t, 𝒦t⟩
 //! on the emit of 𝒦t); the gap step with its mean; the scaling, the update
 //! of 𝒦(g + h) and the new r with ε's denominator and p̄ (issue 24: 9–10
-//! passes before, 9 % fewer instructions per solve at 256²). Measured (exponential law, N = 64, tests/bem_adhesive.rs): 3.4–6.5×
-//! fewer iterations along loading–unloading paths; on the 256² and 512²
+//! passes before, 9 % fewer instructions per solve at 256²). Measured (exponential law, N = 64, tests/bem_adhesive.rs): 5.5–40×
+//! fewer iterations along loading–unloading paths (3.4–6.5× before
+//! Polak–Ribière and the curvature); on the 256² and 512²
 //! self-affine surfaces of examples/adhesive_tamaas.rs see docs/adhesion.md.
 //!
-//! **Stall and fallback.** The curvature of W is not in the step: where the
-//! cohesive zone is not resolved by the grid (|W″| = Δγ/ρ² above a node's
-//! stiffness ~E*πN/(2L), e.g. the sphere at Maugis parameter λ = 3 on 64²)
-//! the long preconditioned steps overshoot and ε stops falling. When the best
+//! **Stall and fallback.** Where the cohesive zone is not resolved by the
+//! grid (|W″| = Δγ/ρ² above a node's stiffness ~E*πN/(2L), e.g. the sphere
+//! at Maugis parameter λ = 3 on 64²) the curvature is left out of the step
+//! and the long preconditioned steps may overshoot so that ε stops falling
+//! (11 of that path's 62 points did with Fletcher–Reeves' β, none with
+//! Polak–Ribière's). When the best
 //! ε has not halved within `stall_iterations` iterations (the stall test of
 //! [`super::preconditioned`]), or no descent direction or step is found, the
 //! plain iteration goes on from the current gap to the same tolerance, and
@@ -129,6 +144,8 @@
 //!   Mech. 60, 69 (2017), doi:10.1007/s00466-017-1392-5.
 //! - I. A. Polonsky, L. M. Keer, Wear 231, 206 (1999), doi:10.1016/S0043-1648(99)00113-1.
 //! - D. Maugis, J. Colloid Interface Sci. 150, 243 (1992), doi:10.1016/0021-9797(92)90285-T.
+//! - E. Polak, G. Ribière, Rev. Fr. Inform. Rech. Opér. 3(16), 35 (1969),
+//!   doi:10.1051/m2an/196903R100351.
 
 use super::fft::Fft2;
 use super::kernel::{love_cell, signed, Boundary, Operator};
@@ -490,6 +507,8 @@ pub struct AdhesiveSolver {
     /// 𝒦h (free: C⁻¹ of h − o on the surface), for the preconditioned
     /// iteration's update of 𝒦(g + h) without a transform.
     kh: Vec<f64>,
+    /// The last iteration's r, centred on F (Polak–Ribière's β).
+    previous: Vec<f64>,
     /// The surface's gap (free boundary; periodic: `gap` itself).
     window: Vec<f64>,
     /// The gap offset o of the last free-boundary solve.
@@ -524,6 +543,7 @@ impl AdhesiveSolver {
             projected: vec![0.0; m2],
             work: vec![0.0; m2],
             kh: vec![0.0; m2],
+            previous: vec![0.0; m2],
             window: if m == n { Vec::new() } else { vec![0.0; n * n] },
             offset: 0.0,
             round_off: false,
@@ -809,6 +829,21 @@ impl AdhesiveSolver {
         let layout = self.layout;
         let (m, periodic) = (layout.m, layout.periodic());
         let jumps = matches!(law, CohesiveLaw::Maugis { .. });
+        // W″/W′ of the law away from its jumps, where the cohesive zone is
+        // resolved: |W″| ≤ Δγ/ρ² below a node's stiffness E*πN/(2L) (else
+        // the longer steps jump to another stationary point: the λ = 3
+        // sphere at N = 64 of tests/bem_adhesive.rs)
+        let op = &self.ops.op;
+        let node = op.e_star() * std::f64::consts::PI * layout.n as f64 / (2.0 * op.size());
+        let curvature_per_attraction = match *law {
+            CohesiveLaw::Exponential {
+                work_of_adhesion,
+                adhesion_range,
+            } if work_of_adhesion / (adhesion_range * adhesion_range) < node => {
+                1.0 / adhesion_range
+            }
+            _ => 0.0,
+        };
         let h_mean = height_stats(heights).1;
         let mut stall = Stall::new(stall_iterations);
         self.search.iter_mut().for_each(|t| *t = 0.0);
@@ -866,6 +901,7 @@ impl AdhesiveSolver {
                 r != 0.0 || g > 0.0 || (!periodic && layout.window(kk).is_none())
             };
             let (mut r_z, mut z_sum, mut t_sum, mut count) = (0.0, 0.0, 0.0, 0usize);
+            let mut rp_z = 0.0;
             {
                 let Self {
                     ops,
@@ -873,15 +909,18 @@ impl AdhesiveSolver {
                     gap,
                     search,
                     projected,
+                    previous,
                     ..
                 } = &mut *self;
                 let (grad, gap, search) = (&grad[..], &gap[..], &search[..]);
+                let previous = &previous[..];
                 ops.compliance_rows(
                     &mut |i, row| row.copy_from_slice(&grad[i * m..(i + 1) * m]),
                     &mut |i, row| {
                         let (lo, hi) = (i * m, (i + 1) * m);
-                        for (j, (z, (y, (t, (r, g))))) in row
+                        for (j, ((z, p), (y, (t, (r, g))))) in row
                             .iter()
+                            .zip(&previous[lo..hi])
                             .zip(
                                 projected[lo..hi].iter_mut().zip(
                                     search[lo..hi]
@@ -894,6 +933,7 @@ impl AdhesiveSolver {
                             if in_f(lo + j, *r, *g) {
                                 *y = *z;
                                 r_z += r * z;
+                                rp_z += p * z;
                                 z_sum += z;
                                 t_sum += t;
                                 count += 1;
@@ -904,12 +944,13 @@ impl AdhesiveSolver {
                     },
                 )?;
             }
+            // Polak–Ribière β, kept ≥ 0 (a restart where the gradient turned)
             let mut beta = if restart || rz_old <= 0.0 {
                 0.0
             } else {
-                r_z / rz_old
+                ((r_z - rp_z) / rz_old).max(0.0)
             };
-            let (mut descent, mut den) = (0.0, 0.0);
+            let (mut descent, mut den, mut curvature) = (0.0, 0.0, 0.0);
             for attempt in 0..2 {
                 // t = z + β t_old − μ on F, μ its mean there (Σ t = 0 keeps ḡ)
                 let mu = if layout.periodic() {
@@ -917,14 +958,23 @@ impl AdhesiveSolver {
                 } else {
                     0.0
                 };
-                let mut down = 0.0;
-                for (kk, ((t, z), (r, g))) in self
+                // ⟨r, t⟩ and Σ W″(g) t² over the open nodes, W″ = −W′/ρ for
+                // the exponential law with W′ = r + p̄ − 𝒦(g + h) (no second
+                // exponential), 0 for Maugis–Dugdale; r kept for the next β
+                let (mut down, mut bend) = (0.0, 0.0);
+                for (kk, ((t, z), ((r, g), (w, p)))) in self
                     .search
                     .iter_mut()
                     .zip(&self.projected)
-                    .zip(self.grad.iter().zip(&self.gap))
+                    .zip(
+                        self.grad
+                            .iter()
+                            .zip(&self.gap)
+                            .zip(self.work.iter().zip(self.previous.iter_mut())),
+                    )
                     .enumerate()
                 {
+                    *p = *r;
                     if in_f(kk, *r, *g) {
                         *t = *z + beta * *t - mu;
                         // a contact node that the step would push in stays put
@@ -932,11 +982,15 @@ impl AdhesiveSolver {
                             *t = 0.0;
                         }
                         down += r * *t;
+                        if *g > 0.0 && (periodic || layout.window(kk).is_some()) {
+                            bend += (*r + mean - w) * *t * *t;
+                        }
                     } else {
                         *t = 0.0;
                     }
                 }
                 descent = down;
+                curvature = -bend * curvature_per_attraction;
                 if !(descent > 0.0 || attempt == 1 || beta == 0.0) {
                     // not a descent direction: restart the conjugacy (β = 0)
                     // from z, kept in `projected`
@@ -973,7 +1027,10 @@ impl AdhesiveSolver {
                 return Ok(stalled);
             }
             rz_old = r_z;
-            let tau = descent / den;
+            // the step of the quadratic model with the law's curvature,
+            // ⟨t, (𝒦 + W″)t⟩; at most 4× the step of 𝒦 alone where W″ < 0
+            // nearly cancels 𝒦 along t
+            let tau = descent / (den + curvature).max(0.25 * den);
             if !(tau > 0.0 && tau.is_finite()) {
                 return Ok(stalled);
             }
