@@ -109,7 +109,8 @@
 //! ([`AdhesiveSolver::solve_approach`]): the half-space far away is at rest,
 //! so the rigid shift is resisted and δ is the natural control; it reaches
 //! the tensile branch as mean-gap control does. The preconditioner is C.
-//! Memory: five fields of 4N² values and the padded transform.
+//! Memory: seven fields of 4N² values (the gap, r, t, z or 𝒦t, 𝒦(g + h), 𝒦h and
+//! the last r) and the padded transform.
 //!
 //! # Stopping rule
 //! ```text
