@@ -3,11 +3,12 @@
 heights, mean gap, law and tolerance (1e-10), at 256² and 512².
 
 Run from the workspace root (builds and runs examples/adhesive_tamaas.rs):
-    /work/peers/bin/python examples/adhesive_tamaas.py [N ...] [--law exponential] [--plain]
+    /work/peers/bin/python examples/adhesive_tamaas.py [N ...] [--law exponential] [--plain] [--preconditioned]
 Prints both answers, their relative differences and the wall time per solve of
 each (one solve each, cold start), with the load average (`uptime`). Ours uses
 the solver's iteration for the law (preconditioned for the exponential law,
-plain for Maugis-Dugdale); `--plain` also runs the plain iteration.
+plain for Maugis-Dugdale); `--plain` also runs the plain iteration;
+`--preconditioned` uses the preconditioned iteration whatever the law.
 """
 import json
 import os
@@ -90,7 +91,8 @@ def main():
     tm.set_log_level(tm.LogLevel.error)
     for n in grids:
         plain = persson(n, out, law, "plain") if "--plain" in sys.argv else None
-        ours = persson(n, out, law)
+        ours = persson(n, out, law,
+                       "preconditioned" if "--preconditioned" in sys.argv else "auto")
         heights = np.load(os.path.join(out, f"surface_{n}.npy"))
         theirs = tamaas(heights, ours, law)
         load = os.getloadavg()

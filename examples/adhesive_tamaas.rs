@@ -1,8 +1,12 @@
 //! One adhesive solve on a synthesised self-affine surface, for the side-by-side
 //! with Tamaas 2.9 (`examples/adhesive_tamaas.py` runs this and Tamaas on the same
 //! heights, mean gap and tolerance). Run:
-//! `cargo run --release --example adhesive_tamaas N OUT_DIR [maugis|exponential] [auto|plain|preconditioned]`
+//! `cargo run --release --example adhesive_tamaas N OUT_DIR [maugis|exponential] [auto|plain|preconditioned|starts]`
 //! (the iteration: `auto` is the solver's choice by the law, `AdhesiveSolver::method_for`).
+//! `starts` (Maugis–Dugdale, issue 24) solves the same mean gap from several starts with
+//! both iterations — cold (the rigid gap), from the exponential law's solution, from the
+//! Δγ = 0 solution, a ramp of Δγ (¼, ½, ¾, 1) and an approach from 1.3 ḡ — and prints per
+//! start p̄, A/A0, the iterations, the energy Π/A and the time (text, not JSON).
 //!
 //! Surface: L = 1, self-affine H = 0.8, q_l = q_r = 2π, q_s = 2π·32, rms slope 0.1,
 //! seed 1, E* = 1. Law: ρ = h_rms/20, Δγ = 0.02 ρ (cohesive stress Δγ/ρ = 0.02 E*);
@@ -23,9 +27,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let method = match method_name.as_str() {
         "auto" => None,
         "plain" => Some(Method::Plain),
-        "preconditioned" => Some(Method::PRECONDITIONED),
+        "preconditioned" | "starts" => Some(Method::PRECONDITIONED),
         other => {
-            return Err(format!("method {other:?}: one of auto, plain, preconditioned").into())
+            return Err(
+                format!("method {other:?}: one of auto, plain, preconditioned, starts").into(),
+            )
         }
     };
     let tau = std::f64::consts::TAU;
@@ -47,6 +53,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         tolerance: 1e-10,
         max_iterations: 20_000,
     };
+    if method_name == "starts" {
+        return starts(n, h, dg, rho, mean_gap, &opts);
+    }
     let t = std::time::Instant::now();
     let mut solver = AdhesiveSolver::new(Operator::new(Boundary::Periodic, n, 1.0, 1.0)?)?;
     solver.set_method(method);
@@ -62,5 +71,96 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         p.mean_pressure, p.contact_fraction, p.cohesive_fraction, p.iterations, p.residual, p.converged,
         p.fallback.is_some()
     );
+    Ok(())
+}
+
+/// Π/A = ½ mean((g + h) 𝒦(g + h)) + mean W(g) of the Maugis–Dugdale law.
+fn energy(
+    h: &[f64],
+    g: &[f64],
+    op: &mut Operator,
+    dg: f64,
+    rho: f64,
+) -> Result<f64, Box<dyn std::error::Error>> {
+    let u: Vec<f64> = g.iter().zip(h).map(|(a, b)| a + b).collect();
+    let mut p = vec![0.0; u.len()];
+    op.apply_stiffness(&u, &mut p)?;
+    let n2 = u.len() as f64;
+    let elastic = 0.5 * u.iter().zip(&p).map(|(a, b)| a * b).sum::<f64>() / n2;
+    let adhesion = g
+        .iter()
+        .map(|&x| if x < rho { -dg * (1.0 - x / rho) } else { 0.0 })
+        .sum::<f64>()
+        / n2;
+    Ok(elastic + adhesion)
+}
+
+/// The Maugis–Dugdale solve at ḡ from several starts, both iterations (see the header).
+fn starts(
+    n: usize,
+    h: &[f64],
+    dg: f64,
+    rho: f64,
+    mean_gap: f64,
+    opts: &AdhesiveOptions,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let md = CohesiveLaw::maugis(dg, rho)?;
+    let mut op = Operator::new(Boundary::Periodic, n, 1.0, 1.0)?;
+    for method in [Method::Plain, Method::PRECONDITIONED] {
+        let name = match method {
+            Method::Plain => "plain",
+            _ => "preconditioned",
+        };
+        // (start, the laws and mean gaps solved in order, the last is the answer)
+        let plans: Vec<(&str, Vec<(CohesiveLaw, f64)>)> = vec![
+            ("cold", vec![(md, mean_gap)]),
+            (
+                "from the exponential law",
+                vec![
+                    (CohesiveLaw::exponential(dg, rho)?, mean_gap),
+                    (md, mean_gap),
+                ],
+            ),
+            (
+                "from dg = 0",
+                vec![(CohesiveLaw::maugis(0.0, rho)?, mean_gap), (md, mean_gap)],
+            ),
+            (
+                "dg ramp 1/4 .. 1",
+                [0.25, 0.5, 0.75, 1.0]
+                    .iter()
+                    .map(|f| Ok((CohesiveLaw::maugis(f * dg, rho)?, mean_gap)))
+                    .collect::<Result<_, persson::Error>>()?,
+            ),
+            (
+                "approach from 1.3 mean gap",
+                [1.3, 1.2, 1.1, 1.0]
+                    .iter()
+                    .map(|f| (md, f * mean_gap))
+                    .collect(),
+            ),
+        ];
+        for (start, plan) in plans {
+            let t = std::time::Instant::now();
+            let mut solver = AdhesiveSolver::new(Operator::new(Boundary::Periodic, n, 1.0, 1.0)?)?
+                .with_method(method);
+            let mut iterations = 0;
+            let mut last = None;
+            for (law, g) in plan {
+                let p = solver.solve(h, &law, g, opts)?;
+                iterations += p.iterations;
+                last = Some(p);
+            }
+            let seconds = t.elapsed().as_secs_f64();
+            let p = last.ok_or("empty plan")?;
+            println!(
+                "N = {n} {name:14} {start:28} mean pressure {:.8e} contact fraction {:.8e} iterations {iterations:4} energy/A {:.10e} converged {} {seconds:.3} s",
+                p.mean_pressure,
+                p.contact_fraction,
+                energy(h, solver.gap(), &mut op, dg, rho)?,
+                p.converged
+            );
+        }
+    }
     Ok(())
 }
