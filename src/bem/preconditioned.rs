@@ -342,6 +342,9 @@ struct State {
     ///
     /// [`Operator::fundamental_stiffness`]: super::kernel::Operator
     mean_stiffness: f64,
+    /// The edge correction of the preconditioner (`None` on grids smaller
+    /// than its stencil).
+    edge: Option<Edge>,
     k: usize,
 }
 
@@ -360,12 +363,15 @@ pub(crate) struct Precond {
 
 impl State {
     fn new(problem: &Problem, ws: &mut Workspace) -> Result<Self> {
+        let mean_stiffness = ws.fields().op.fundamental_stiffness();
+        let edge = Edge::new(ws, mean_stiffness)?;
         let gap = LazyGap::start(problem, ws)?;
         Ok(State {
             load: problem.target_total().is_some(),
             gap,
             conjugacy: Conjugacy::default(),
-            mean_stiffness: ws.fields().op.fundamental_stiffness(),
+            mean_stiffness,
+            edge,
             k: 0,
         })
     }
@@ -377,7 +383,10 @@ impl State {
             0.0
         };
         self.gap.g_ref = g_bar;
-        let pc = precondition(ws, g_bar, f64::INFINITY, self.mean_stiffness)?;
+        let pc = match self.edge.as_mut() {
+            Some(edge) => edge.precondition(ws, g_bar, f64::INFINITY, self.mean_stiffness)?,
+            None => precondition(ws, g_bar, f64::INFINITY, self.mean_stiffness)?,
+        };
         let Some((beta, mu)) = self.conjugacy.next(&pc, self.load) else {
             return Ok(false);
         };
@@ -617,4 +626,233 @@ fn direction_row(
         }
     }
     acc.iter().sum()
+}
+
+/// Half-width R of the edge correction's stencil (a (2R+1)² window).
+const EDGE_RADIUS: usize = 3;
+
+/// Weight ω of the edge correction (`X = ω D⁻¹ ≈ 𝒦_NN⁻¹`).
+const EDGE_WEIGHT: f64 = 1.5;
+
+/// Rows in the edge correction's window.
+const EDGE_ROWS: usize = 2 * EDGE_RADIUS + 1;
+
+/// The edge correction of the preconditioner: `z = [F](𝒦r − 𝒦_loc w)`,
+/// `w = ω [N] 𝒦r / d` (module docs), row by row with a ring of the
+/// 2R + 1 rows of w that a row of z needs.
+pub(crate) struct Edge {
+    n: usize,
+    periodic: bool,
+    /// `ω k(dy, dx) / d` for |dy|, |dx| ≤ R (0 at the centre).
+    coeff: [[f64; EDGE_ROWS]; EDGE_ROWS],
+    /// Rows of w, each padded by R on both sides (wrapped periodic, zero free).
+    ring: Vec<f64>,
+    /// Whether a ring row has a non-zero entry.
+    live: [bool; EDGE_ROWS],
+    /// w of rows 0 … R − 1, kept for the periodic wrap at the last rows.
+    head: Vec<f64>,
+    head_live: [bool; EDGE_RADIUS],
+    /// The correction of one row.
+    acc: Vec<f64>,
+}
+
+impl Edge {
+    /// The stencil of 𝒦 (with `mean_stiffness` for the mean mode, as the
+    /// preconditioner) from one application to a unit pressure at the
+    /// grid's centre; `None` on grids with fewer than 2R + 2 rows.
+    pub fn new(ws: &mut Workspace, mean_stiffness: f64) -> Result<Option<Self>> {
+        let f = ws.fields();
+        let n = f.op.n();
+        if n < EDGE_ROWS + 1 {
+            return Ok(None);
+        }
+        let c = n / 2;
+        let mut k = [[0.0f64; EDGE_ROWS]; EDGE_ROWS];
+        f.op.apply_stiffness_rows_with_mean(
+            mean_stiffness,
+            &mut |i, row| {
+                row.fill(0.0);
+                if i == c {
+                    row[c] = 1.0;
+                }
+            },
+            &mut |i, row| {
+                if i + EDGE_RADIUS >= c && i <= c + EDGE_RADIUS {
+                    let dy = i + EDGE_RADIUS - c;
+                    k[dy].copy_from_slice(&row[c - EDGE_RADIUS..=c + EDGE_RADIUS]);
+                }
+            },
+        )?;
+        let d = k[EDGE_RADIUS][EDGE_RADIUS];
+        if !(d > 0.0) {
+            return Ok(None);
+        }
+        let mut coeff = k.map(|r| r.map(|v| EDGE_WEIGHT * v / d));
+        coeff[EDGE_RADIUS][EDGE_RADIUS] = 0.0;
+        let width = n + 2 * EDGE_RADIUS;
+        Ok(Some(Edge {
+            n,
+            periodic: f.op.boundary() == super::Boundary::Periodic,
+            coeff,
+            ring: vec![0.0; EDGE_ROWS * width],
+            live: [false; EDGE_ROWS],
+            head: vec![0.0; EDGE_RADIUS * width],
+            head_live: [false; EDGE_RADIUS],
+            acc: vec![0.0; n],
+        }))
+    }
+
+    /// `out = ω [N] 𝒦r` of row `i` (padded), from `kr` (that row of 𝒦r);
+    /// true if any entry is non-zero.
+    fn w_row(&self, p: &[f64], g: &[f64], kr: &[f64], g_bar: f64, y: f64, out: &mut [f64]) -> bool {
+        let (n, r) = (self.n, EDGE_RADIUS);
+        let mut any = 0.0f64;
+        for (((o, &pv), &gv), &kv) in out[r..r + n].iter_mut().zip(p).zip(g).zip(kr) {
+            let v = (1.0 - free(pv, gv, g_bar, y)) * kv;
+            *o = v;
+            any += v.abs();
+        }
+        if self.periodic {
+            out.copy_within(n..n + r, 0);
+            out.copy_within(r..2 * r, n + r);
+        } else {
+            out[..r].fill(0.0);
+            out[n + r..].fill(0.0);
+        }
+        any > 0.0
+    }
+
+    /// The preconditioner pass with the edge correction (as [`precondition`]:
+    /// z into `response`, with its sums).
+    pub fn precondition(
+        &mut self,
+        ws: &mut Workspace,
+        g_bar: f64,
+        y: f64,
+        mean_stiffness: f64,
+    ) -> Result<Precond> {
+        let f = ws.fields();
+        let n = self.n;
+        let (p, g, t) = (&*f.pressure, &*f.gap, &*f.direction);
+        let z = &mut *f.response;
+        let mut acc = Precond::default();
+        let mut fill_sums = [0.0f64; 4];
+        f.op.apply_stiffness_rows_with_mean(
+            mean_stiffness,
+            &mut |i, row| {
+                let k = i * n..(i + 1) * n;
+                let s = residual_row(&p[k.clone()], &g[k.clone()], &t[k], g_bar, y, row);
+                for (a, b) in fill_sums.iter_mut().zip(s) {
+                    *a += b;
+                }
+            },
+            &mut |i, row| z[i * n..(i + 1) * n].copy_from_slice(row),
+        )?;
+        [acc.free, acc.sum_r, acc.r_t, acc.sum_t] = fill_sums;
+        // z holds 𝒦r; w is read from it off F, where z is never written
+        // before it is read (rows 0 … R − 1 are kept for the wrap).
+        let width = n + 2 * EDGE_RADIUS;
+        let row_of = |i: usize| i * n..(i + 1) * n;
+        let mut head = std::mem::take(&mut self.head);
+        let mut ring = std::mem::take(&mut self.ring);
+        for i in 0..EDGE_RADIUS {
+            let k = row_of(i);
+            let live = self.w_row(
+                &p[k.clone()],
+                &g[k.clone()],
+                &z[k],
+                g_bar,
+                y,
+                &mut head[i * width..(i + 1) * width],
+            );
+            self.head_live[i] = live && self.periodic;
+        }
+        // Ring slot of row i (−R ≤ i < n + R): (i + R) mod (2R + 1).
+        let slot = |i: isize| (i + EDGE_RADIUS as isize).rem_euclid(EDGE_ROWS as isize) as usize;
+        let load_row = |this: &mut Self, ring: &mut [f64], z: &[f64], i: isize| {
+            let s = slot(i);
+            let out = &mut ring[s * width..(s + 1) * width];
+            let ni = n as isize;
+            this.live[s] = if (0..ni).contains(&i) && (i as usize) < EDGE_RADIUS {
+                out.copy_from_slice(&head[i as usize * width..(i as usize + 1) * width]);
+                this.head_live[i as usize] || !this.periodic && out.iter().any(|v| *v != 0.0)
+            } else if (0..ni).contains(&i) {
+                let k = row_of(i as usize);
+                this.w_row(&p[k.clone()], &g[k.clone()], &z[k], g_bar, y, out)
+            } else if this.periodic {
+                let w = i.rem_euclid(ni) as usize;
+                if w < EDGE_RADIUS {
+                    out.copy_from_slice(&head[w * width..(w + 1) * width]);
+                    this.head_live[w]
+                } else {
+                    let k = row_of(w);
+                    this.w_row(&p[k.clone()], &g[k.clone()], &z[k], g_bar, y, out)
+                }
+            } else {
+                out.fill(0.0);
+                false
+            };
+        };
+        let r = EDGE_RADIUS as isize;
+        for i in -r..r {
+            load_row(self, &mut ring, z, i);
+        }
+        let (mut r_z, mut sum_z) = (0.0, 0.0);
+        for i in 0..n {
+            load_row(self, &mut ring, z, i as isize + r);
+            let accr = &mut self.acc;
+            accr.fill(0.0);
+            for dy in 0..EDGE_ROWS {
+                let s = slot(i as isize + dy as isize - r);
+                if !self.live[s] {
+                    continue;
+                }
+                let w = &ring[s * width..(s + 1) * width];
+                for (dx, &c) in self.coeff[dy].iter().enumerate() {
+                    if c == 0.0 {
+                        continue;
+                    }
+                    for (a, &v) in accr.iter_mut().zip(&w[dx..dx + n]) {
+                        *a += c * v;
+                    }
+                }
+            }
+            let k = row_of(i);
+            let s = restrict_corrected(&p[k.clone()], &g[k.clone()], g_bar, y, accr, &mut z[k]);
+            r_z += s[0];
+            sum_z += s[1];
+        }
+        self.head = head;
+        self.ring = ring;
+        acc.r_z = r_z;
+        acc.sum_z = sum_z;
+        Ok(acc)
+    }
+}
+
+/// One row of `z = [F](𝒦r − c)` in place (z holds 𝒦r); returns `[Σ r z, Σ z]`.
+fn restrict_corrected(
+    p: &[f64],
+    g: &[f64],
+    g_bar: f64,
+    y: f64,
+    c: &[f64],
+    z: &mut [f64],
+) -> [f64; 2] {
+    let mut acc = [[0.0f64; LANES]; 2];
+    let chunks = p
+        .chunks(LANES)
+        .zip(g.chunks(LANES))
+        .zip(c.chunks(LANES))
+        .zip(z.chunks_mut(LANES));
+    for (((pc, gc), cc), zc) in chunks {
+        for l in 0..pc.len() {
+            let m = free(pc[l], gc[l], g_bar, y);
+            let v = m * (zc[l] - cc[l]);
+            zc[l] = v;
+            acc[0][l] += m * (gc[l] - g_bar) * v;
+            acc[1][l] += v;
+        }
+    }
+    acc.map(|a| a.iter().sum())
 }
