@@ -364,7 +364,11 @@ pub(crate) struct Precond {
 impl State {
     fn new(problem: &Problem, ws: &mut Workspace) -> Result<Self> {
         let mean_stiffness = ws.fields().op.fundamental_stiffness();
-        let edge = Edge::new(ws, mean_stiffness)?;
+        let edge = if std::env::var_os("PERSSON_EDGE_OFF").is_some() {
+            None
+        } else {
+            Edge::new(ws, mean_stiffness)?
+        };
         let gap = LazyGap::start(problem, ws)?;
         Ok(State {
             load: problem.target_total().is_some(),
@@ -645,13 +649,13 @@ pub(crate) struct Edge {
     periodic: bool,
     /// `ω k(dy, dx) / d` for |dy|, |dx| ≤ R (0 at the centre).
     coeff: [[f64; EDGE_ROWS]; EDGE_ROWS],
-    /// Rows of w, each padded by R on both sides (wrapped periodic, zero free).
-    ring: Vec<f64>,
-    /// Whether a ring row has a non-zero entry.
-    live: [bool; EDGE_ROWS],
-    /// w of rows 0 … R − 1, kept for the periodic wrap at the last rows.
-    head: Vec<f64>,
-    head_live: [bool; EDGE_RADIUS],
+    /// Rows of w, each padded by R on both sides (wrapped periodic, zero
+    /// free), in ring slots; then rows 0 … R − 1 again (kept for the
+    /// periodic wrap at the last rows, whose 𝒦r has been overwritten by z).
+    rows: Vec<f64>,
+    /// Per row of `rows`: whether block b (of [`BLOCK`] columns) of w has a
+    /// non-zero entry.
+    nonzero: Vec<bool>,
     /// The correction of one row.
     acc: Vec<f64>,
 }
@@ -687,39 +691,84 @@ impl Edge {
         if !(d > 0.0) {
             return Ok(None);
         }
-        let mut coeff = k.map(|r| r.map(|v| EDGE_WEIGHT * v / d));
+        // 𝒦's kernel is even in x and y and symmetric under x ↔ y: the
+        // mean of the eight images (exactly symmetric, as the correction's
+        // sums by pairs assume).
+        let mut coeff = [[0.0f64; EDGE_ROWS]; EDGE_ROWS];
+        for (dy, row) in coeff.iter_mut().enumerate() {
+            for (dx, c) in row.iter_mut().enumerate() {
+                let (ry, rx) = (EDGE_ROWS - 1 - dy, EDGE_ROWS - 1 - dx);
+                let images = [
+                    k[dy][dx], k[ry][dx], k[dy][rx], k[ry][rx], k[dx][dy], k[rx][dy], k[dx][ry],
+                    k[rx][ry],
+                ];
+                *c = EDGE_WEIGHT * images.iter().sum::<f64>() / (8.0 * d);
+            }
+        }
         coeff[EDGE_RADIUS][EDGE_RADIUS] = 0.0;
-        let width = n + 2 * EDGE_RADIUS;
+        let slots = EDGE_ROWS + EDGE_RADIUS;
         Ok(Some(Edge {
             n,
             periodic: f.op.boundary() == super::Boundary::Periodic,
             coeff,
-            ring: vec![0.0; EDGE_ROWS * width],
-            live: [false; EDGE_ROWS],
-            head: vec![0.0; EDGE_RADIUS * width],
-            head_live: [false; EDGE_RADIUS],
+            rows: vec![0.0; slots * (n + 2 * EDGE_RADIUS)],
+            nonzero: vec![false; slots * n.div_ceil(BLOCK)],
             acc: vec![0.0; n],
         }))
     }
 
-    /// `out = ω [N] 𝒦r` of row `i` (padded), from `kr` (that row of 𝒦r);
-    /// true if any entry is non-zero.
-    fn w_row(&self, p: &[f64], g: &[f64], kr: &[f64], g_bar: f64, y: f64, out: &mut [f64]) -> bool {
+    /// Write w of grid row `i` (−R ≤ i < n + R; outside the grid: the
+    /// periodic image, or zero) into slot `slot`, from z = 𝒦r off F.
+    #[allow(clippy::too_many_arguments)]
+    fn load(&mut self, slot: usize, i: isize, p: &[f64], g: &[f64], z: &[f64], g_bar: f64, y: f64) {
         let (n, r) = (self.n, EDGE_RADIUS);
-        let mut any = 0.0f64;
-        for (((o, &pv), &gv), &kv) in out[r..r + n].iter_mut().zip(p).zip(g).zip(kr) {
-            let v = (1.0 - free(pv, gv, g_bar, y)) * kv;
-            *o = v;
-            any += v.abs();
+        let (width, nb) = (n + 2 * r, n.div_ceil(BLOCK));
+        let ni = n as isize;
+        let src = if (0..ni).contains(&i) {
+            Some(i as usize)
+        } else if self.periodic {
+            Some(i.rem_euclid(ni) as usize)
+        } else {
+            None
+        };
+        let (rows, nonzero) = (&mut self.rows, &mut self.nonzero);
+        let (out, flags) = match src {
+            // Rows 0 … R − 1 past the last row: the copies made first.
+            Some(w) if w < r && i >= ni => {
+                let kept = EDGE_ROWS + w;
+                rows.copy_within(kept * width..(kept + 1) * width, slot * width);
+                nonzero.copy_within(kept * nb..(kept + 1) * nb, slot * nb);
+                return;
+            }
+            Some(w) => (w, true),
+            None => (0, false),
+        };
+        let row = &mut rows[slot * width..(slot + 1) * width];
+        let flag = &mut nonzero[slot * nb..(slot + 1) * nb];
+        if !flags {
+            row.fill(0.0);
+            flag.fill(false);
+            return;
+        }
+        let k = out * n..(out + 1) * n;
+        let (p, g, z) = (&p[k.clone()], &g[k.clone()], &z[k]);
+        for (b, fl) in flag.iter_mut().enumerate() {
+            let cols = b * BLOCK..((b + 1) * BLOCK).min(n);
+            let mut any = false;
+            for j in cols {
+                let v = (1.0 - free(p[j], g[j], g_bar, y)) * z[j];
+                row[r + j] = v;
+                any |= v != 0.0;
+            }
+            *fl = any;
         }
         if self.periodic {
-            out.copy_within(n..n + r, 0);
-            out.copy_within(r..2 * r, n + r);
+            row.copy_within(n..n + r, 0);
+            row.copy_within(r..2 * r, n + r);
         } else {
-            out[..r].fill(0.0);
-            out[n + r..].fill(0.0);
+            row[..r].fill(0.0);
+            row[n + r..].fill(0.0);
         }
-        any > 0.0
     }
 
     /// The preconditioner pass with the edge correction (as [`precondition`]:
@@ -749,81 +798,42 @@ impl Edge {
             &mut |i, row| z[i * n..(i + 1) * n].copy_from_slice(row),
         )?;
         [acc.free, acc.sum_r, acc.r_t, acc.sum_t] = fill_sums;
-        // z holds 𝒦r; w is read from it off F, where z is never written
-        // before it is read (rows 0 … R − 1 are kept for the wrap).
-        let width = n + 2 * EDGE_RADIUS;
-        let row_of = |i: usize| i * n..(i + 1) * n;
-        let mut head = std::mem::take(&mut self.head);
-        let mut ring = std::mem::take(&mut self.ring);
-        for i in 0..EDGE_RADIUS {
-            let k = row_of(i);
-            let live = self.w_row(
-                &p[k.clone()],
-                &g[k.clone()],
-                &z[k],
-                g_bar,
-                y,
-                &mut head[i * width..(i + 1) * width],
-            );
-            self.head_live[i] = live && self.periodic;
-        }
-        // Ring slot of row i (−R ≤ i < n + R): (i + R) mod (2R + 1).
-        let slot = |i: isize| (i + EDGE_RADIUS as isize).rem_euclid(EDGE_ROWS as isize) as usize;
-        let load_row = |this: &mut Self, ring: &mut [f64], z: &[f64], i: isize| {
-            let s = slot(i);
-            let out = &mut ring[s * width..(s + 1) * width];
-            let ni = n as isize;
-            this.live[s] = if (0..ni).contains(&i) && (i as usize) < EDGE_RADIUS {
-                out.copy_from_slice(&head[i as usize * width..(i as usize + 1) * width]);
-                this.head_live[i as usize] || !this.periodic && out.iter().any(|v| *v != 0.0)
-            } else if (0..ni).contains(&i) {
-                let k = row_of(i as usize);
-                this.w_row(&p[k.clone()], &g[k.clone()], &z[k], g_bar, y, out)
-            } else if this.periodic {
-                let w = i.rem_euclid(ni) as usize;
-                if w < EDGE_RADIUS {
-                    out.copy_from_slice(&head[w * width..(w + 1) * width]);
-                    this.head_live[w]
-                } else {
-                    let k = row_of(w);
-                    this.w_row(&p[k.clone()], &g[k.clone()], &z[k], g_bar, y, out)
-                }
-            } else {
-                out.fill(0.0);
-                false
-            };
-        };
+        // z holds 𝒦r; w is read from it off F, where z is written only
+        // after its row has been loaded (rows 0 … R − 1 are kept first).
+        let (width, nb) = (n + 2 * EDGE_RADIUS, n.div_ceil(BLOCK));
         let r = EDGE_RADIUS as isize;
+        for i in 0..EDGE_RADIUS {
+            self.load(EDGE_ROWS + i, i as isize, p, g, z, g_bar, y);
+        }
+        // Ring slot of grid row i (−R ≤ i < n + R).
+        let slot = |i: isize| (i + r).rem_euclid(EDGE_ROWS as isize) as usize;
         for i in -r..r {
-            load_row(self, &mut ring, z, i);
+            self.load(slot(i), i, p, g, z, g_bar, y);
         }
         let (mut r_z, mut sum_z) = (0.0, 0.0);
         for i in 0..n {
-            load_row(self, &mut ring, z, i as isize + r);
-            let accr = &mut self.acc;
-            accr.fill(0.0);
-            for dy in 0..EDGE_ROWS {
+            let next = i as isize + r;
+            self.load(slot(next), next, p, g, z, g_bar, y);
+            let k = i * n..(i + 1) * n;
+            let window: [(&[f64], &[bool]); EDGE_ROWS] = std::array::from_fn(|dy| {
                 let s = slot(i as isize + dy as isize - r);
-                if !self.live[s] {
-                    continue;
-                }
-                let w = &ring[s * width..(s + 1) * width];
-                for (dx, &c) in self.coeff[dy].iter().enumerate() {
-                    if c == 0.0 {
-                        continue;
-                    }
-                    for (a, &v) in accr.iter_mut().zip(&w[dx..dx + n]) {
-                        *a += c * v;
-                    }
-                }
-            }
-            let k = row_of(i);
-            let s = restrict_corrected(&p[k.clone()], &g[k.clone()], g_bar, y, accr, &mut z[k]);
+                (
+                    &self.rows[s * width..(s + 1) * width],
+                    &self.nonzero[s * nb..(s + 1) * nb],
+                )
+            });
+            stencil_row(
+                &self.coeff,
+                &window,
+                self.periodic,
+                (&p[k.clone()], &g[k.clone()], g_bar, y),
+                &mut self.acc,
+            );
+            let s =
+                restrict_corrected(&p[k.clone()], &g[k.clone()], g_bar, y, &self.acc, &mut z[k]);
             r_z += s[0];
             sum_z += s[1];
         }
-        self.head = head;
-        self.ring = ring;
         acc.r_z = r_z;
         acc.sum_z = sum_z;
         Ok(acc)
@@ -855,4 +865,182 @@ fn restrict_corrected(
         }
     }
     acc.map(|a| a.iter().sum())
+}
+
+/// Nodes per block of [`stencil_row`] (the block's sums stay in registers).
+const BLOCK: usize = 8;
+
+/// `acc = Σ c(dy, dx) w(i + dy, j + dx)` of one row over the window of
+/// 2R + 1 rows of w (padded by R, with their blocks' non-zero flags);
+/// blocks without a free node (`p`, `g`) or without a non-zero w within
+/// reach are left at 0 (z is restricted to F, and the sum would be 0).
+fn stencil_row(
+    coeff: &[[f64; EDGE_ROWS]; EDGE_ROWS],
+    window: &[(&[f64], &[bool]); EDGE_ROWS],
+    periodic: bool,
+    (p, g, g_bar, y): (&[f64], &[f64], f64, f64),
+    acc: &mut [f64],
+) {
+    let n = acc.len();
+    let nb = n.div_ceil(BLOCK);
+    for b in 0..nb {
+        let j0 = b * BLOCK;
+        let len = BLOCK.min(n - j0);
+        let mut a = [0.0f64; BLOCK];
+        let any_free = (j0..j0 + len).any(|j| free(p[j], g[j], g_bar, y) > 0.0);
+        // R < BLOCK: the window's columns lie in blocks b − 1 … b + 1.
+        let near = |f: &[bool]| {
+            let left = if b > 0 {
+                f[b - 1]
+            } else {
+                periodic && f[nb - 1]
+            };
+            let right = if b + 1 < nb {
+                f[b + 1]
+            } else {
+                periodic && f[0]
+            };
+            left | f[b] | right
+        };
+        if any_free && window.iter().any(|(_, f)| near(f)) {
+            // The stencil is symmetric: sum the rows i ± dy first (v), then
+            // the columns j ± dx.
+            const W: usize = BLOCK + 2 * EDGE_RADIUS;
+            let mut v = [[0.0f64; W]; EDGE_RADIUS + 1];
+            let cols = j0..j0 + len + 2 * EDGE_RADIUS;
+            v[0][..cols.len()].copy_from_slice(&window[EDGE_RADIUS].0[cols.clone()]);
+            for (dy, vk) in v.iter_mut().enumerate().skip(1) {
+                let (up, down) = (window[EDGE_RADIUS - dy].0, window[EDGE_RADIUS + dy].0);
+                for ((o, &a), &b) in vk
+                    .iter_mut()
+                    .zip(&up[cols.clone()])
+                    .zip(&down[cols.clone()])
+                {
+                    *o = a + b;
+                }
+            }
+            for (vk, c) in v.iter().zip(&coeff[EDGE_RADIUS..]) {
+                let c = &c[EDGE_RADIUS..];
+                for l in 0..BLOCK {
+                    let m = l + EDGE_RADIUS;
+                    let mut s = c[0] * vk[m];
+                    for dx in 1..=EDGE_RADIUS {
+                        s += c[dx] * (vk[m + dx] + vk[m - dx]);
+                    }
+                    a[l] += s;
+                }
+            }
+        }
+        acc[j0..j0 + len].copy_from_slice(&a[..len]);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::bem::{Boundary, Operator};
+
+    /// `x = 𝒦 u` (with the preconditioner's mean stiffness).
+    fn stiffness(op: &mut Operator, mean: f64, u: &[f64]) -> Vec<f64> {
+        let n = op.n();
+        let mut x = vec![0.0; n * n];
+        op.apply_stiffness_rows_with_mean(
+            mean,
+            &mut |i, row| row.copy_from_slice(&u[i * n..(i + 1) * n]),
+            &mut |i, row| x[i * n..(i + 1) * n].copy_from_slice(row),
+        )
+        .unwrap();
+        x
+    }
+
+    /// The edge-corrected preconditioner against direct sums with the
+    /// operator's own entries: `z = [F](𝒦r − ω Σ_j 𝒦(x, j) [N]𝒦r(j) / d)`
+    /// over the nodes j within R of x (each column 𝒦(·, j) from 𝒦 of a unit
+    /// pressure at j, so neither the stencil nor the row ring is reused),
+    /// periodic (wrapping) and free (no wrap), on a grid whose rows are not
+    /// a whole number of blocks.
+    #[test]
+    fn edge_correction_equals_direct_sums() {
+        for boundary in [Boundary::Periodic, Boundary::Free] {
+            for n in [16usize, 21] {
+                let mut ws = Workspace::new(Operator::new(boundary, n, 1.0, 1.0).unwrap());
+                let mean = ws.fields().op.fundamental_stiffness();
+                let mut seed = 7u64;
+                let mut rand = move || {
+                    seed = seed
+                        .wrapping_mul(6364136223846793005)
+                        .wrapping_add(1442695040888963407);
+                    (seed >> 11) as f64 / (1u64 << 53) as f64
+                };
+                let (g_bar, y) = (0.5, f64::INFINITY);
+                {
+                    let f = ws.fields();
+                    for k in 0..n * n {
+                        let u = rand();
+                        f.pressure[k] = if u < 0.4 { 0.0 } else { u };
+                        f.gap[k] = rand();
+                        f.direction[k] = rand() - 0.5;
+                    }
+                }
+                let f = ws.fields();
+                let (p, g) = (f.pressure.to_vec(), f.gap.to_vec());
+                let m: Vec<f64> = (0..n * n).map(|k| free(p[k], g[k], g_bar, y)).collect();
+                let r: Vec<f64> = (0..n * n).map(|k| m[k] * (g[k] - g_bar)).collect();
+                let kr = stiffness(f.op, mean, &r);
+                let mut unit = vec![0.0; n * n];
+                unit[(n / 2) * n + n / 2] = 1.0;
+                let d = stiffness(f.op, mean, &unit)[(n / 2) * n + n / 2];
+                let mut z_ref: Vec<f64> = (0..n * n).map(|k| m[k] * kr[k]).collect();
+                let reach = EDGE_RADIUS as i64;
+                for j in 0..n * n {
+                    if m[j] > 0.0 {
+                        continue;
+                    }
+                    unit.fill(0.0);
+                    unit[j] = 1.0;
+                    let column = stiffness(f.op, mean, &unit);
+                    let w = EDGE_WEIGHT * kr[j] / d;
+                    for x in 0..n * n {
+                        let (dy, dx) = (
+                            (x / n) as i64 - (j / n) as i64,
+                            (x % n) as i64 - (j % n) as i64,
+                        );
+                        let near = |v: i64| match boundary {
+                            Boundary::Periodic => {
+                                v.rem_euclid(n as i64).min((-v).rem_euclid(n as i64)) <= reach
+                            }
+                            Boundary::Free => v.abs() <= reach,
+                        };
+                        if x != j && near(dy) && near(dx) {
+                            z_ref[x] -= m[x] * column[x] * w;
+                        }
+                    }
+                }
+                let mut edge = Edge::new(&mut ws, mean).unwrap().expect("grid ≥ 8");
+                let pc = edge.precondition(&mut ws, g_bar, y, mean).unwrap();
+                let z = ws.fields().response.to_vec();
+                let scale = z_ref.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+                let err = z
+                    .iter()
+                    .zip(&z_ref)
+                    .fold(0.0f64, |a, (u, v)| a.max((u - v).abs()));
+                assert!(
+                    err <= 1e-12 * scale,
+                    "{boundary:?} N = {n}: {err:e} of {scale:e}"
+                );
+                let change = (0..n * n).fold(0.0f64, |a, k| a.max((m[k] * kr[k] - z_ref[k]).abs()));
+                assert!(
+                    change > 0.01 * scale,
+                    "{boundary:?} N = {n}: correction {change:e}"
+                );
+                let r_z: f64 = r.iter().zip(&z_ref).map(|(a, b)| a * b).sum();
+                let sum_z: f64 = z_ref.iter().sum();
+                assert!(
+                    (pc.r_z - r_z).abs() <= 1e-12 * r_z.abs(),
+                    "{boundary:?} N = {n}"
+                );
+                assert!((pc.sum_z - sum_z).abs() <= 1e-10 * scale * (n * n) as f64);
+            }
+        }
+    }
 }
