@@ -6,7 +6,11 @@
 //! A/A0 of both and the largest pressure difference relative to the peak.
 //!
 //! `cargo run --release --example bem_iterations -- [--grids 256 512 1024 2048]
-//!  [--loads 0.005 0.05] [--cases periodic free saturated] [--tolerance 1e-10]`
+//!  [--loads 0.005 0.05] [--cases periodic free saturated] [--tolerance 1e-10]
+//!  [--methods plain preconditioned] [--repeat 1]`
+//!
+//! `--repeat k` solves each case k times (each cold) and reports the
+//! shortest time: on a shared machine the least disturbed run.
 //!
 //! Run it on one thread (the solver is single-threaded; nothing else should
 //! run on the core). The surface is synthesised once per grid.
@@ -49,6 +53,9 @@ fn main() -> persson::Result<()> {
         .next()
         .unwrap_or(1e-10);
     let methods = list("--methods", &["plain", "preconditioned"]);
+    let repeat: usize = list("--repeat", &["1"])
+        .first()
+        .map_or(1, |s| s.parse().expect("a count"));
 
     println!(
         "| case | N | σ0/E* | iterations plain | iterations precond. | s plain | s precond. | A/A0 plain | A/A0 precond. | max|Δp|/p_max | fallback |"
@@ -83,9 +90,16 @@ fn main() -> persson::Result<()> {
                         "plain" => Method::Plain,
                         _ => Method::default(),
                     };
-                    let op = Operator::new(boundary, n, 1.0, 1.0)?;
-                    let mut solver = Solver::with_method(op, method);
-                    sols.push(solver.solve(&surf.heights, Control::MeanPressure(load), &opts)?);
+                    let mut best: Option<persson::bem::Solution> = None;
+                    for _ in 0..repeat.max(1) {
+                        let op = Operator::new(boundary, n, 1.0, 1.0)?;
+                        let mut solver = Solver::with_method(op, method);
+                        let s = solver.solve(&surf.heights, Control::MeanPressure(load), &opts)?;
+                        if best.as_ref().is_none_or(|b| s.seconds < b.seconds) {
+                            best = Some(s);
+                        }
+                    }
+                    sols.extend(best);
                 }
                 let (a, b) = (&sols[0], &sols[sols.len() - 1]);
                 let p_max = a.pressure.iter().copied().fold(0.0, f64::max);

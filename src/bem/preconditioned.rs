@@ -1,6 +1,6 @@
 //! Preconditioned constrained conjugate gradient ([`Method::Preconditioned`],
 //! the default): Polonsky & Keer's projected CG with the half-space stiffness
-//! as preconditioner.
+//! as preconditioner, corrected at the contact edges.
 //!
 //! # What it solves
 //! The problem of [`super::solver`] (`p ≥ 0`, load or penetration control),
@@ -9,30 +9,59 @@
 //! # Method
 //! ```text
 //! free set     F = {p > 0} ∪ {p = 0, g < ḡ}          (ḡ: contact mean of g; 0 under penetration control)
+//!              N = the other nodes (p held at its bound)
 //! residual     r = [F] (g − ḡ)
-//! precondition z = [F] 𝒦 r,   𝒦 = E*|q|/2 ≈ 𝒢⁻¹   (one FFT convolution)
+//! precondition z = [F] (𝒦r − 𝒦_loc w),   w = ω [N] 𝒦r / d        (one FFT convolution and a 7 × 7 stencil)
+//!              𝒦 = E*|q|/2 ≈ 𝒢⁻¹,  d = 𝒦(0) its diagonal,  𝒦_loc: 𝒦's kernel for |Δx|, |Δy| ≤ 3,  ω = 1.5
 //! direction    t = [F] (z + β t_old − μ),   β = ⟨r, z⟩/⟨r_old, z_old⟩  (Fletcher–Reeves),
 //!              μ = mean of z + β t_old over F   (load control: Σ t = 0 keeps the load)
 //! step         τ = ⟨r, t⟩ / ⟨t, 𝒢t⟩,   p ← max(p − τ t, 0),   p ← p · N² p̄ / Σp
 //! ```
-//! The preconditioner is the exact inverse of the periodic operator on the
-//! whole grid, restricted to the free set: the restriction of a positive
+//! The linear problem on a fixed free set is `𝒢_FF p = u`. The exact
+//! inverse of the restricted operator is the Schur complement of the
+//! stiffness, `𝒢_FF⁻¹ = 𝒦_FF − 𝒦_FN 𝒦_NN⁻¹ 𝒦_NF`; the FFT preconditioner
+//! `[F]𝒦[F]` keeps its first term only. That restriction of a positive
 //! definite matrix's inverse bounds the restricted matrix's inverse from
-//! above (Cauchy interlacing), so every eigenvalue of the preconditioned
-//! operator is ≥ 1; measured on the rough case (Lanczos, fixed contact set),
-//! the largest is 4–15 for N = 128–512 where the plain operator's condition
-//! number grows like N (22 at 128², 12 800 at 2048² by the symbol's range).
-//! The large ones belong to modes at the contact edges, where the
-//! restriction imposes zero displacement on the non-contact neighbours
-//! (Zhao, Vollebregt & Oosterlee 2014 see the same for the FFT smoother).
+//! above (Cauchy interlacing), so every eigenvalue of `[F]𝒦[F]𝒢_FF` is ≥ 1;
+//! measured on the rough case (Lanczos, fixed contact set), the largest
+//! are 4–15 for N = 128–512 (a continuum, not a few outliers: at 256²,
+//! σ0 = 0.05 E*, the 40 largest lie in 3.1–8.6) where the plain operator's
+//! condition number grows like N (22 at 128², 12 800 at 2048² by the
+//! symbol's range). They belong to modes at the contact edges, where the
+//! restriction imposes zero pressure on the non-contact neighbours
+//! (Zhao, Vollebregt & Oosterlee 2014 see the same for the FFT smoother),
+//! and the missing term is what corrects them: `𝒦_NF r = [N]𝒦r` is
+//! already at hand (the same convolution, off F), and 𝒦's kernel decays
+//! like |Δx|⁻³, so the correction is made locally, with `𝒦_NN⁻¹ ≈ ω/d`
+//! (Jacobi) and `𝒦_FN` by the 7 × 7 window of 𝒦's kernel (read from 𝒦 of
+//! a unit pressure once per solve; exactly symmetric, so the preconditioner
+//! is). Measured on the rough case (iterations, σ0 = 0.005 / 0.05 E*,
+//! periodic): 30 / 34 → 26 / 25 at 256², 39 / 45 → 33 / 34 at 512²,
+//! 49 / 59 → 42 / 44 at 1024², 62 / 84 → 53 / 63 at 2048²; free boundary
+//! 51 / 77 → 42 / 58 at 1024² (docs/bem.md). The window and ω were chosen
+//! in a numpy replica of this loop (that of `examples/bem_two_level.py`,
+//! with the correction): at 512², σ0 = 0.05 E*, windows 3 × 3 / 5 × 5 / 7 × 7 /
+//! 11 × 11 (ω = 1.5) gave 37 / 37 / 34 / 34, a disc of radius 3 (28 of the
+//! 48 taps) 35; ω = 1 / 1.25 / 1.5 / 1.75 / 2 (7 × 7) gave 36 / 35 / 34 /
+//! 36 / 39, and in this loop ω = 1.25 / 1.4 / 1.5 / 1.6 gave 45 / 44 / 44
+//! / 49 at 1024² (0.05 E*). ω above 1/ρ(d⁻¹𝒦_NN) ≈ 0.54 does not guarantee
+//! a positive definite preconditioner; a direction that does not descend
+//! restarts β and then hands over to the plain loop (below), which no
+//! rough, Hertz or saturated case measured has needed. The saturated
+//! stage (box constraints, [`super::saturated`]) keeps the uncorrected
+//! preconditioner ([`precondition`]); its elastic stage is this loop.
 //! Overlapping nodes at `p = 0` belong to the free set, so they enter through
 //! the preconditioned step itself (not by the plain solver's `p = −τ g`
 //! re-entry) and conjugacy is kept across active-set changes; measured
 //! (rough case, a numpy prototype), restarting β at each change instead
 //! costs 30–60 % more iterations. The free boundary uses 𝒦 of the 2N
-//! padded grid (an approximate inverse).
+//! padded grid (an approximate inverse); its correction takes the nodes of
+//! the N × N window only (the padding's 𝒦r is not formed).
 //!
-//! Two convolutions per iteration (𝒦r and 𝒢t) besides a fresh `𝒢p` when
+//! Two convolutions per iteration (𝒦r and 𝒢t) and the correction's
+//! stencil pass (sums of the rows i ± dy, then of the columns j ± dx:
+//! 16 multiplications per node, skipped in blocks of 8 nodes with no free
+//! node or no non-zero w within reach) besides a fresh `𝒢p` when
 //! more than log₂ N² nodes were clamped (else the gap is updated linearly,
 //! as in [`super::polonsky_keer`]); the same four fields.
 //!
@@ -43,7 +72,8 @@
 //! real-space kernel; 3 N² free: padded row spectra and multiplier — 𝒦 uses
 //! 𝒢's multiplier, no table of its own) and the heights (N², the caller's):
 //! 7.25 N² doubles periodic, 8 N² free, plus the sparse-correction lists
-//! (≤ 2 log₂ N² entries); with the surface synthesis's two transient fields
+//! (≤ 2 log₂ N² entries) and the correction's 10 rows of w (10 (N + 6)
+//! values); with the surface synthesis's two transient fields
 //! 9.25 N² and 10 N² ([`super::required_bytes`]), within 10 N².
 //!
 //! # Why this method
@@ -177,6 +207,30 @@
 //! / 2048²): with q_s = N/4 q_l each doubling adds the octave of roughness
 //! that carries the most slope (H = 0.8), so the coarse contact set does not
 //! predict the fine one. Not adopted. Counted, not timed (load 5.0–6.8).
+//!
+//! # Around the edge correction, measured and not adopted
+//! The fourth attempt of issue 22 (numpy replica, rough case, periodic,
+//! σ0 = 0.05 E*, 256² unless said; fixed: contact set fixed at the
+//! solution's, this loop's FFT preconditioner 28 there, 34 in the loop):
+//! - the Schur form with a better `𝒦_NN⁻¹`: full-grid 𝒦_FN and Jacobi
+//!   26 in the loop (one more convolution per iteration, for what the
+//!   stencil gives); 1 / 3 Jacobi sweeps 20 / 16 fixed, inner CG with 2 /
+//!   5 / 20 iterations 18 / 10 / 3 fixed (each inner step a convolution:
+//!   5 inner iterations cost 8 convolutions per outer one, 80 against 56);
+//!   with the 7 × 7 stencil, one more local Jacobi sweep 44 against 44 at
+//!   1024² (0.05 E*).
+//! - a distance weight (z = [F] w 𝒦 (w r), w = min(1, dist(x, N)/d₀)^a):
+//!   a = 0.25 / 0.5 / −0.25 / −0.5, d₀ = 2–8: 29–56 fixed, never below 28.
+//! - Polak–Ribière β (and its variants with the old residual): 37–38
+//!   against 34 (0.005 E*: 31–32 against 30).
+//! - the entry test for nodes at p = 0: g < g_min (never converged),
+//!   g < ḡ − ½(ḡ − g_min) 47, g < ḡ + ½(ḡ − g_min) 42, against 34 for
+//!   g < ḡ (512², with the correction).
+//!
+//! What is left is the active set: with the correction, F changes for the
+//! last time at iteration 26 of 44 at 1024² and 48 of 63 at 2048²
+//! (σ0 = 0.05 E*, numpy replica), so the 2048² solve at 0.05 E* is 3
+//! iterations above the goal of 60.
 //!
 //! # Stall and fallback
 //! ε is not monotone in a projected CG. When the best ε has not halved
@@ -656,6 +710,8 @@ pub(crate) struct Edge {
     /// Per row of `rows`: whether block b (of [`BLOCK`] columns) of w has a
     /// non-zero entry.
     nonzero: Vec<bool>,
+    /// Per ring slot: `m_F` of the row's nodes.
+    mask: Vec<f64>,
     /// The correction of one row.
     acc: Vec<f64>,
 }
@@ -702,7 +758,12 @@ impl Edge {
                     k[dy][dx], k[ry][dx], k[dy][rx], k[ry][rx], k[dx][dy], k[rx][dy], k[dx][ry],
                     k[rx][ry],
                 ];
-                *c = EDGE_WEIGHT * images.iter().sum::<f64>() / (8.0 * d);
+                *c = std::env::var("PERSSON_EDGE_W")
+                    .ok()
+                    .and_then(|v| v.parse().ok())
+                    .unwrap_or(EDGE_WEIGHT)
+                    * images.iter().sum::<f64>()
+                    / (8.0 * d);
             }
         }
         coeff[EDGE_RADIUS][EDGE_RADIUS] = 0.0;
@@ -713,6 +774,7 @@ impl Edge {
             coeff,
             rows: vec![0.0; slots * (n + 2 * EDGE_RADIUS)],
             nonzero: vec![false; slots * n.div_ceil(BLOCK)],
+            mask: vec![0.0; slots * n],
             acc: vec![0.0; n],
         }))
     }
@@ -752,11 +814,14 @@ impl Edge {
         }
         let k = out * n..(out + 1) * n;
         let (p, g, z) = (&p[k.clone()], &g[k.clone()], &z[k]);
+        let mask = &mut self.mask[slot * n..(slot + 1) * n];
         for (b, fl) in flag.iter_mut().enumerate() {
             let cols = b * BLOCK..((b + 1) * BLOCK).min(n);
             let mut any = false;
             for j in cols {
-                let v = (1.0 - free(p[j], g[j], g_bar, y)) * z[j];
+                let m = free(p[j], g[j], g_bar, y);
+                mask[j] = m;
+                let v = (1.0 - m) * z[j];
                 row[r + j] = v;
                 any |= v != 0.0;
             }
@@ -822,15 +887,9 @@ impl Edge {
                     &self.nonzero[s * nb..(s + 1) * nb],
                 )
             });
-            stencil_row(
-                &self.coeff,
-                &window,
-                self.periodic,
-                (&p[k.clone()], &g[k.clone()], g_bar, y),
-                &mut self.acc,
-            );
-            let s =
-                restrict_corrected(&p[k.clone()], &g[k.clone()], g_bar, y, &self.acc, &mut z[k]);
+            let mask = &self.mask[slot(i as isize) * n..(slot(i as isize) + 1) * n];
+            stencil_row(&self.coeff, &window, self.periodic, mask, &mut self.acc);
+            let s = restrict_corrected(mask, &g[k.clone()], g_bar, &self.acc, &mut z[k]);
             r_z += s[0];
             sum_z += s[1];
         }
@@ -840,27 +899,20 @@ impl Edge {
     }
 }
 
-/// One row of `z = [F](𝒦r − c)` in place (z holds 𝒦r); returns `[Σ r z, Σ z]`.
-fn restrict_corrected(
-    p: &[f64],
-    g: &[f64],
-    g_bar: f64,
-    y: f64,
-    c: &[f64],
-    z: &mut [f64],
-) -> [f64; 2] {
+/// One row of `z = [F](𝒦r − c)` in place (z holds 𝒦r, `m` is `m_F`);
+/// returns `[Σ r z, Σ z]`.
+fn restrict_corrected(m: &[f64], g: &[f64], g_bar: f64, c: &[f64], z: &mut [f64]) -> [f64; 2] {
     let mut acc = [[0.0f64; LANES]; 2];
-    let chunks = p
+    let chunks = m
         .chunks(LANES)
         .zip(g.chunks(LANES))
         .zip(c.chunks(LANES))
         .zip(z.chunks_mut(LANES));
-    for (((pc, gc), cc), zc) in chunks {
-        for l in 0..pc.len() {
-            let m = free(pc[l], gc[l], g_bar, y);
-            let v = m * (zc[l] - cc[l]);
+    for (((mc, gc), cc), zc) in chunks {
+        for l in 0..mc.len() {
+            let v = mc[l] * (zc[l] - cc[l]);
             zc[l] = v;
-            acc[0][l] += m * (gc[l] - g_bar) * v;
+            acc[0][l] += mc[l] * (gc[l] - g_bar) * v;
             acc[1][l] += v;
         }
     }
@@ -872,13 +924,13 @@ const BLOCK: usize = 8;
 
 /// `acc = Σ c(dy, dx) w(i + dy, j + dx)` of one row over the window of
 /// 2R + 1 rows of w (padded by R, with their blocks' non-zero flags);
-/// blocks without a free node (`p`, `g`) or without a non-zero w within
+/// blocks without a free node (`mask` = m_F of the row) or without a non-zero w within
 /// reach are left at 0 (z is restricted to F, and the sum would be 0).
 fn stencil_row(
     coeff: &[[f64; EDGE_ROWS]; EDGE_ROWS],
     window: &[(&[f64], &[bool]); EDGE_ROWS],
     periodic: bool,
-    (p, g, g_bar, y): (&[f64], &[f64], f64, f64),
+    mask: &[f64],
     acc: &mut [f64],
 ) {
     let n = acc.len();
@@ -887,7 +939,7 @@ fn stencil_row(
         let j0 = b * BLOCK;
         let len = BLOCK.min(n - j0);
         let mut a = [0.0f64; BLOCK];
-        let any_free = (j0..j0 + len).any(|j| free(p[j], g[j], g_bar, y) > 0.0);
+        let any_free = mask[j0..j0 + len].iter().any(|&m| m > 0.0);
         // R < BLOCK: the window's columns lie in blocks b − 1 … b + 1.
         let near = |f: &[bool]| {
             let left = if b > 0 {
