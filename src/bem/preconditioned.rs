@@ -418,11 +418,7 @@ pub(crate) struct Precond {
 impl State {
     fn new(problem: &Problem, ws: &mut Workspace) -> Result<Self> {
         let mean_stiffness = ws.fields().op.fundamental_stiffness();
-        let edge = if std::env::var_os("PERSSON_EDGE_OFF").is_some() {
-            None
-        } else {
-            Edge::new(ws, mean_stiffness)?
-        };
+        let edge = Edge::new(ws, mean_stiffness)?;
         let gap = LazyGap::start(problem, ws)?;
         Ok(State {
             load: problem.target_total().is_some(),
@@ -758,12 +754,7 @@ impl Edge {
                     k[dy][dx], k[ry][dx], k[dy][rx], k[ry][rx], k[dx][dy], k[rx][dy], k[dx][ry],
                     k[rx][ry],
                 ];
-                *c = std::env::var("PERSSON_EDGE_W")
-                    .ok()
-                    .and_then(|v| v.parse().ok())
-                    .unwrap_or(EDGE_WEIGHT)
-                    * images.iter().sum::<f64>()
-                    / (8.0 * d);
+                *c = EDGE_WEIGHT * images.iter().sum::<f64>() / (8.0 * d);
             }
         }
         coeff[EDGE_RADIUS][EDGE_RADIUS] = 0.0;
