@@ -49,7 +49,7 @@
 //! restarts β and then hands over to the plain loop (below), which no
 //! rough, Hertz or saturated case measured has needed. The saturated
 //! stage (box constraints, [`super::saturated`]) keeps the uncorrected
-//! preconditioner ([`precondition`]); its elastic stage is this loop.
+//! preconditioner (`precondition`); its elastic stage is this loop.
 //! Overlapping nodes at `p = 0` belong to the free set, so they enter through
 //! the preconditioned step itself (not by the plain solver's `p = −τ g`
 //! re-entry) and conjugacy is kept across active-set changes; measured
@@ -219,7 +219,7 @@
 //!   5 inner iterations cost 8 convolutions per outer one, 80 against 56);
 //!   with the 7 × 7 stencil, one more local Jacobi sweep 44 against 44 at
 //!   1024² (0.05 E*).
-//! - a distance weight (z = [F] w 𝒦 (w r), w = min(1, dist(x, N)/d₀)^a):
+//! - a distance weight (z = \[F\] w 𝒦 (w r), w = min(1, dist(x, N)/d₀)^a):
 //!   a = 0.25 / 0.5 / −0.25 / −0.5, d₀ = 2–8: 29–56 fixed, never below 28.
 //! - Polak–Ribière β (and its variants with the old residual): 37–38
 //!   against 34 (0.005 E*: 31–32 against 30).
@@ -740,7 +740,7 @@ impl Edge {
             },
         )?;
         let d = k[EDGE_RADIUS][EDGE_RADIUS];
-        if !(d > 0.0) {
+        if d.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
             return Ok(None);
         }
         // 𝒦's kernel is even in x and y and symmetric under x ↔ y: the
@@ -964,13 +964,13 @@ fn stencil_row(
             }
             for (vk, c) in v.iter().zip(&coeff[EDGE_RADIUS..]) {
                 let c = &c[EDGE_RADIUS..];
-                for l in 0..BLOCK {
+                for (l, al) in a.iter_mut().enumerate() {
                     let m = l + EDGE_RADIUS;
                     let mut s = c[0] * vk[m];
                     for dx in 1..=EDGE_RADIUS {
                         s += c[dx] * (vk[m + dx] + vk[m - dx]);
                     }
-                    a[l] += s;
+                    *al += s;
                 }
             }
         }
