@@ -42,12 +42,13 @@
 //! in a numpy replica of this loop (that of `examples/bem_two_level.py`,
 //! with the correction): at 512², σ0 = 0.05 E*, windows 3 × 3 / 5 × 5 / 7 × 7 /
 //! 11 × 11 (ω = 1.5) gave 37 / 37 / 34 / 34, a disc of radius 3 (28 of the
-//! 48 taps) 35; ω = 1 / 1.25 / 1.5 / 1.75 / 2 (7 × 7) gave 36 / 35 / 34 /
-//! 36 / 39, and in this loop ω = 1.25 / 1.4 / 1.5 / 1.6 gave 45 / 44 / 44
-//! / 49 at 1024² (0.05 E*). ω above 1/ρ(d⁻¹𝒦_NN) ≈ 0.54 does not guarantee
-//! a positive definite preconditioner; a direction that does not descend
-//! restarts β and then hands over to the plain loop (below), which no
-//! rough, Hertz or saturated case measured has needed. The saturated
+//! 48 taps) 35; ω = 1.25 / 1.5 / 1.75 / 2 (7 × 7) gave 35 / 34 / 36 / 39,
+//! and in this loop ω = 1.25 / 1.4 / 1.5 / 1.6 gave 45 / 44 / 44 / 49 at
+//! 1024² (0.05 E*). Only ω ≤ d/λ_max(𝒦) ≈ 0.54 (the mean of |q| over the
+//! grid's square of wavevectors against its corner) guarantees a positive
+//! definite preconditioner; a direction that does not descend restarts β
+//! and then hands over to the plain loop (below), which none of the rough
+//! cases measured (docs/bem.md) needed. The saturated
 //! stage (box constraints, [`super::saturated`]) keeps the uncorrected
 //! preconditioner (`precondition`); its elastic stage is this loop.
 //! Overlapping nodes at `p = 0` belong to the free set, so they enter through
@@ -72,8 +73,8 @@
 //! real-space kernel; 3 N² free: padded row spectra and multiplier — 𝒦 uses
 //! 𝒢's multiplier, no table of its own) and the heights (N², the caller's):
 //! 7.25 N² doubles periodic, 8 N² free, plus the sparse-correction lists
-//! (≤ 2 log₂ N² entries) and the correction's 10 rows of w (10 (N + 6)
-//! values); with the surface synthesis's two transient fields
+//! (≤ 2 log₂ N² entries) and the correction's ring (10 rows of w and of
+//! m_F and one row of sums: about 21 N values); with the surface synthesis's two transient fields
 //! 9.25 N² and 10 N² ([`super::required_bytes`]), within 10 N².
 //!
 //! # Why this method
