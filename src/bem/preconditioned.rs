@@ -1,6 +1,6 @@
 //! Preconditioned constrained conjugate gradient ([`Method::Preconditioned`],
 //! the default): Polonsky & Keer's projected CG with the half-space stiffness
-//! as preconditioner.
+//! as preconditioner, corrected at the contact edges.
 //!
 //! # What it solves
 //! The problem of [`super::solver`] (`p ≥ 0`, load or penetration control),
@@ -9,30 +9,60 @@
 //! # Method
 //! ```text
 //! free set     F = {p > 0} ∪ {p = 0, g < ḡ}          (ḡ: contact mean of g; 0 under penetration control)
+//!              N = the other nodes (p held at its bound)
 //! residual     r = [F] (g − ḡ)
-//! precondition z = [F] 𝒦 r,   𝒦 = E*|q|/2 ≈ 𝒢⁻¹   (one FFT convolution)
+//! precondition z = [F] (𝒦r − 𝒦_loc w),   w = ω [N] 𝒦r / d        (one FFT convolution and a 7 × 7 stencil)
+//!              𝒦 = E*|q|/2 ≈ 𝒢⁻¹,  d = 𝒦(0) its diagonal,  𝒦_loc: 𝒦's kernel for |Δx|, |Δy| ≤ 3,  ω = 1.5
 //! direction    t = [F] (z + β t_old − μ),   β = ⟨r, z⟩/⟨r_old, z_old⟩  (Fletcher–Reeves),
 //!              μ = mean of z + β t_old over F   (load control: Σ t = 0 keeps the load)
 //! step         τ = ⟨r, t⟩ / ⟨t, 𝒢t⟩,   p ← max(p − τ t, 0),   p ← p · N² p̄ / Σp
 //! ```
-//! The preconditioner is the exact inverse of the periodic operator on the
-//! whole grid, restricted to the free set: the restriction of a positive
+//! The linear problem on a fixed free set is `𝒢_FF p = u`. The exact
+//! inverse of the restricted operator is the Schur complement of the
+//! stiffness, `𝒢_FF⁻¹ = 𝒦_FF − 𝒦_FN 𝒦_NN⁻¹ 𝒦_NF`; the FFT preconditioner
+//! `[F]𝒦[F]` keeps its first term only. That restriction of a positive
 //! definite matrix's inverse bounds the restricted matrix's inverse from
-//! above (Cauchy interlacing), so every eigenvalue of the preconditioned
-//! operator is ≥ 1; measured on the rough case (Lanczos, fixed contact set),
-//! the largest is 4–15 for N = 128–512 where the plain operator's condition
-//! number grows like N (22 at 128², 12 800 at 2048² by the symbol's range).
-//! The large ones belong to modes at the contact edges, where the
-//! restriction imposes zero displacement on the non-contact neighbours
-//! (Zhao, Vollebregt & Oosterlee 2014 see the same for the FFT smoother).
+//! above (Cauchy interlacing), so every eigenvalue of `[F]𝒦[F]𝒢_FF` is ≥ 1;
+//! measured on the rough case (Lanczos, fixed contact set), the largest
+//! are 4–15 for N = 128–512 (a continuum, not a few outliers: at 256²,
+//! σ0 = 0.05 E*, the 40 largest lie in 3.1–8.6) where the plain operator's
+//! condition number grows like N (22 at 128², 12 800 at 2048² by the
+//! symbol's range). They belong to modes at the contact edges, where the
+//! restriction imposes zero pressure on the non-contact neighbours
+//! (Zhao, Vollebregt & Oosterlee 2014 see the same for the FFT smoother),
+//! and the missing term is what corrects them: `𝒦_NF r = [N]𝒦r` is
+//! already at hand (the same convolution, off F), and 𝒦's kernel decays
+//! like |Δx|⁻³, so the correction is made locally, with `𝒦_NN⁻¹ ≈ ω/d`
+//! (Jacobi) and `𝒦_FN` by the 7 × 7 window of 𝒦's kernel (read from 𝒦 of
+//! a unit pressure once per solve; exactly symmetric, so the preconditioner
+//! is). Measured on the rough case (iterations, σ0 = 0.005 / 0.05 E*,
+//! periodic): 30 / 34 → 26 / 25 at 256², 39 / 45 → 33 / 34 at 512²,
+//! 49 / 59 → 42 / 44 at 1024², 62 / 84 → 53 / 63 at 2048²; free boundary
+//! 51 / 77 → 42 / 58 at 1024² (docs/bem.md). The window and ω were chosen
+//! in a numpy replica of this loop (that of `examples/bem_two_level.py`,
+//! with the correction): at 512², σ0 = 0.05 E*, windows 3 × 3 / 5 × 5 / 7 × 7 /
+//! 11 × 11 (ω = 1.5) gave 37 / 37 / 34 / 34, a disc of radius 3 (28 of the
+//! 48 taps) 35; ω = 1.25 / 1.5 / 1.75 / 2 (7 × 7) gave 35 / 34 / 36 / 39,
+//! and in this loop ω = 1.25 / 1.4 / 1.5 / 1.6 gave 45 / 44 / 44 / 49 at
+//! 1024² (0.05 E*). Only ω ≤ d/λ_max(𝒦) ≈ 0.54 (the mean of |q| over the
+//! grid's square of wavevectors against its corner) guarantees a positive
+//! definite preconditioner; a direction that does not descend restarts β
+//! and then hands over to the plain loop (below), which none of the rough
+//! cases measured (docs/bem.md) needed. The saturated
+//! stage (box constraints, [`super::saturated`]) keeps the uncorrected
+//! preconditioner (`precondition`); its elastic stage is this loop.
 //! Overlapping nodes at `p = 0` belong to the free set, so they enter through
 //! the preconditioned step itself (not by the plain solver's `p = −τ g`
 //! re-entry) and conjugacy is kept across active-set changes; measured
 //! (rough case, a numpy prototype), restarting β at each change instead
 //! costs 30–60 % more iterations. The free boundary uses 𝒦 of the 2N
-//! padded grid (an approximate inverse).
+//! padded grid (an approximate inverse); its correction takes the nodes of
+//! the N × N window only (the padding's 𝒦r is not formed).
 //!
-//! Two convolutions per iteration (𝒦r and 𝒢t) besides a fresh `𝒢p` when
+//! Two convolutions per iteration (𝒦r and 𝒢t) and the correction's
+//! stencil pass (sums of the rows i ± dy, then of the columns j ± dx:
+//! 16 multiplications per node, skipped in blocks of 8 nodes with no free
+//! node or no non-zero w within reach) besides a fresh `𝒢p` when
 //! more than log₂ N² nodes were clamped (else the gap is updated linearly,
 //! as in [`super::polonsky_keer`]); the same four fields.
 //!
@@ -43,7 +73,8 @@
 //! real-space kernel; 3 N² free: padded row spectra and multiplier — 𝒦 uses
 //! 𝒢's multiplier, no table of its own) and the heights (N², the caller's):
 //! 7.25 N² doubles periodic, 8 N² free, plus the sparse-correction lists
-//! (≤ 2 log₂ N² entries); with the surface synthesis's two transient fields
+//! (≤ 2 log₂ N² entries) and the correction's ring (10 rows of w and of
+//! m_F and one row of sums: about 21 N values); with the surface synthesis's two transient fields
 //! 9.25 N² and 10 N² ([`super::required_bytes`]), within 10 N².
 //!
 //! # Why this method
@@ -177,6 +208,30 @@
 //! / 2048²): with q_s = N/4 q_l each doubling adds the octave of roughness
 //! that carries the most slope (H = 0.8), so the coarse contact set does not
 //! predict the fine one. Not adopted. Counted, not timed (load 5.0–6.8).
+//!
+//! # Around the edge correction, measured and not adopted
+//! The fourth attempt of issue 22 (numpy replica, rough case, periodic,
+//! σ0 = 0.05 E*, 256² unless said; fixed: contact set fixed at the
+//! solution's, this loop's FFT preconditioner 28 there, 34 in the loop):
+//! - the Schur form with a better `𝒦_NN⁻¹`: full-grid 𝒦_FN and Jacobi
+//!   26 in the loop (one more convolution per iteration, for what the
+//!   stencil gives); 1 / 3 Jacobi sweeps 20 / 16 fixed, inner CG with 2 /
+//!   5 / 20 iterations 18 / 10 / 3 fixed (each inner step a convolution:
+//!   5 inner iterations cost 8 convolutions per outer one, 80 against 56);
+//!   with the 7 × 7 stencil, one more local Jacobi sweep 44 against 44 at
+//!   1024² (0.05 E*).
+//! - a distance weight (z = \[F\] w 𝒦 (w r), w = min(1, dist(x, N)/d₀)^a):
+//!   a = 0.25 / 0.5 / −0.25 / −0.5, d₀ = 2–8: 29–56 fixed, never below 28.
+//! - Polak–Ribière β (and its variants with the old residual): 37–38
+//!   against 34 (0.005 E*: 31–32 against 30).
+//! - the entry test for nodes at p = 0: g < g_min (never converged),
+//!   g < ḡ − ½(ḡ − g_min) 47, g < ḡ + ½(ḡ − g_min) 42, against 34 for
+//!   g < ḡ (512², with the correction).
+//!
+//! What is left is the active set: with the correction, F changes for the
+//! last time at iteration 26 of 44 at 1024² and 48 of 63 at 2048²
+//! (σ0 = 0.05 E*, numpy replica), so the 2048² solve at 0.05 E* is 3
+//! iterations above the goal of 60.
 //!
 //! # Stall and fallback
 //! ε is not monotone in a projected CG. When the best ε has not halved
@@ -342,6 +397,9 @@ struct State {
     ///
     /// [`Operator::fundamental_stiffness`]: super::kernel::Operator
     mean_stiffness: f64,
+    /// The edge correction of the preconditioner (`None` on grids smaller
+    /// than its stencil).
+    edge: Option<Edge>,
     k: usize,
 }
 
@@ -360,12 +418,15 @@ pub(crate) struct Precond {
 
 impl State {
     fn new(problem: &Problem, ws: &mut Workspace) -> Result<Self> {
+        let mean_stiffness = ws.fields().op.fundamental_stiffness();
+        let edge = Edge::new(ws, mean_stiffness)?;
         let gap = LazyGap::start(problem, ws)?;
         Ok(State {
             load: problem.target_total().is_some(),
             gap,
             conjugacy: Conjugacy::default(),
-            mean_stiffness: ws.fields().op.fundamental_stiffness(),
+            mean_stiffness,
+            edge,
             k: 0,
         })
     }
@@ -377,7 +438,10 @@ impl State {
             0.0
         };
         self.gap.g_ref = g_bar;
-        let pc = precondition(ws, g_bar, f64::INFINITY, self.mean_stiffness)?;
+        let pc = match self.edge.as_mut() {
+            Some(edge) => edge.precondition(ws, g_bar, f64::INFINITY, self.mean_stiffness)?,
+            None => precondition(ws, g_bar, f64::INFINITY, self.mean_stiffness)?,
+        };
         let Some((beta, mu)) = self.conjugacy.next(&pc, self.load) else {
             return Ok(false);
         };
@@ -617,4 +681,410 @@ fn direction_row(
         }
     }
     acc.iter().sum()
+}
+
+/// Half-width R of the edge correction's stencil (a (2R+1)² window).
+const EDGE_RADIUS: usize = 3;
+
+/// Weight ω of the edge correction (`X = ω D⁻¹ ≈ 𝒦_NN⁻¹`).
+const EDGE_WEIGHT: f64 = 1.5;
+
+/// Rows in the edge correction's window.
+const EDGE_ROWS: usize = 2 * EDGE_RADIUS + 1;
+
+/// The edge correction of the preconditioner: `z = [F](𝒦r − 𝒦_loc w)`,
+/// `w = ω [N] 𝒦r / d` (module docs), row by row with a ring of the
+/// 2R + 1 rows of w that a row of z needs.
+pub(crate) struct Edge {
+    n: usize,
+    periodic: bool,
+    /// `ω k(dy, dx) / d` for |dy|, |dx| ≤ R (0 at the centre).
+    coeff: [[f64; EDGE_ROWS]; EDGE_ROWS],
+    /// Rows of w, each padded by R on both sides (wrapped periodic, zero
+    /// free), in ring slots; then rows 0 … R − 1 again (kept for the
+    /// periodic wrap at the last rows, whose 𝒦r has been overwritten by z).
+    rows: Vec<f64>,
+    /// Per row of `rows`: whether block b (of [`BLOCK`] columns) of w has a
+    /// non-zero entry.
+    nonzero: Vec<bool>,
+    /// Per ring slot: `m_F` of the row's nodes.
+    mask: Vec<f64>,
+    /// The correction of one row.
+    acc: Vec<f64>,
+}
+
+impl Edge {
+    /// The stencil of 𝒦 (with `mean_stiffness` for the mean mode, as the
+    /// preconditioner) from one application to a unit pressure at the
+    /// grid's centre; `None` on grids with fewer than 2R + 2 rows.
+    pub fn new(ws: &mut Workspace, mean_stiffness: f64) -> Result<Option<Self>> {
+        let f = ws.fields();
+        let n = f.op.n();
+        if n < EDGE_ROWS + 1 {
+            return Ok(None);
+        }
+        let c = n / 2;
+        let mut k = [[0.0f64; EDGE_ROWS]; EDGE_ROWS];
+        f.op.apply_stiffness_rows_with_mean(
+            mean_stiffness,
+            &mut |i, row| {
+                row.fill(0.0);
+                if i == c {
+                    row[c] = 1.0;
+                }
+            },
+            &mut |i, row| {
+                if i + EDGE_RADIUS >= c && i <= c + EDGE_RADIUS {
+                    let dy = i + EDGE_RADIUS - c;
+                    k[dy].copy_from_slice(&row[c - EDGE_RADIUS..=c + EDGE_RADIUS]);
+                }
+            },
+        )?;
+        let d = k[EDGE_RADIUS][EDGE_RADIUS];
+        if d.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
+            return Ok(None);
+        }
+        // 𝒦's kernel is even in x and y and symmetric under x ↔ y: the
+        // mean of the eight images (exactly symmetric, as the correction's
+        // sums by pairs assume).
+        let mut coeff = [[0.0f64; EDGE_ROWS]; EDGE_ROWS];
+        for (dy, row) in coeff.iter_mut().enumerate() {
+            for (dx, c) in row.iter_mut().enumerate() {
+                let (ry, rx) = (EDGE_ROWS - 1 - dy, EDGE_ROWS - 1 - dx);
+                let images = [
+                    k[dy][dx], k[ry][dx], k[dy][rx], k[ry][rx], k[dx][dy], k[rx][dy], k[dx][ry],
+                    k[rx][ry],
+                ];
+                *c = EDGE_WEIGHT * images.iter().sum::<f64>() / (8.0 * d);
+            }
+        }
+        coeff[EDGE_RADIUS][EDGE_RADIUS] = 0.0;
+        let slots = EDGE_ROWS + EDGE_RADIUS;
+        Ok(Some(Edge {
+            n,
+            periodic: f.op.boundary() == super::Boundary::Periodic,
+            coeff,
+            rows: vec![0.0; slots * (n + 2 * EDGE_RADIUS)],
+            nonzero: vec![false; slots * n.div_ceil(BLOCK)],
+            mask: vec![0.0; slots * n],
+            acc: vec![0.0; n],
+        }))
+    }
+
+    /// Write w of grid row `i` (−R ≤ i < n + R; outside the grid: the
+    /// periodic image, or zero) into slot `slot`, from z = 𝒦r off F.
+    #[allow(clippy::too_many_arguments)]
+    fn load(&mut self, slot: usize, i: isize, p: &[f64], g: &[f64], z: &[f64], g_bar: f64, y: f64) {
+        let (n, r) = (self.n, EDGE_RADIUS);
+        let (width, nb) = (n + 2 * r, n.div_ceil(BLOCK));
+        let ni = n as isize;
+        let src = if (0..ni).contains(&i) {
+            Some(i as usize)
+        } else if self.periodic {
+            Some(i.rem_euclid(ni) as usize)
+        } else {
+            None
+        };
+        let (rows, nonzero) = (&mut self.rows, &mut self.nonzero);
+        let (out, flags) = match src {
+            // Rows 0 … R − 1 past the last row: the copies made first.
+            Some(w) if w < r && i >= ni => {
+                let kept = EDGE_ROWS + w;
+                rows.copy_within(kept * width..(kept + 1) * width, slot * width);
+                nonzero.copy_within(kept * nb..(kept + 1) * nb, slot * nb);
+                return;
+            }
+            Some(w) => (w, true),
+            None => (0, false),
+        };
+        let row = &mut rows[slot * width..(slot + 1) * width];
+        let flag = &mut nonzero[slot * nb..(slot + 1) * nb];
+        if !flags {
+            row.fill(0.0);
+            flag.fill(false);
+            return;
+        }
+        let k = out * n..(out + 1) * n;
+        let (p, g, z) = (&p[k.clone()], &g[k.clone()], &z[k]);
+        let mask = &mut self.mask[slot * n..(slot + 1) * n];
+        for (b, fl) in flag.iter_mut().enumerate() {
+            let cols = b * BLOCK..((b + 1) * BLOCK).min(n);
+            let mut any = false;
+            for j in cols {
+                let m = free(p[j], g[j], g_bar, y);
+                mask[j] = m;
+                let v = (1.0 - m) * z[j];
+                row[r + j] = v;
+                any |= v != 0.0;
+            }
+            *fl = any;
+        }
+        if self.periodic {
+            row.copy_within(n..n + r, 0);
+            row.copy_within(r..2 * r, n + r);
+        } else {
+            row[..r].fill(0.0);
+            row[n + r..].fill(0.0);
+        }
+    }
+
+    /// The preconditioner pass with the edge correction (as [`precondition`]:
+    /// z into `response`, with its sums).
+    pub fn precondition(
+        &mut self,
+        ws: &mut Workspace,
+        g_bar: f64,
+        y: f64,
+        mean_stiffness: f64,
+    ) -> Result<Precond> {
+        let f = ws.fields();
+        let n = self.n;
+        let (p, g, t) = (&*f.pressure, &*f.gap, &*f.direction);
+        let z = &mut *f.response;
+        let mut acc = Precond::default();
+        let mut fill_sums = [0.0f64; 4];
+        f.op.apply_stiffness_rows_with_mean(
+            mean_stiffness,
+            &mut |i, row| {
+                let k = i * n..(i + 1) * n;
+                let s = residual_row(&p[k.clone()], &g[k.clone()], &t[k], g_bar, y, row);
+                for (a, b) in fill_sums.iter_mut().zip(s) {
+                    *a += b;
+                }
+            },
+            &mut |i, row| z[i * n..(i + 1) * n].copy_from_slice(row),
+        )?;
+        [acc.free, acc.sum_r, acc.r_t, acc.sum_t] = fill_sums;
+        // z holds 𝒦r; w is read from it off F, where z is written only
+        // after its row has been loaded (rows 0 … R − 1 are kept first).
+        let (width, nb) = (n + 2 * EDGE_RADIUS, n.div_ceil(BLOCK));
+        let r = EDGE_RADIUS as isize;
+        for i in 0..EDGE_RADIUS {
+            self.load(EDGE_ROWS + i, i as isize, p, g, z, g_bar, y);
+        }
+        // Ring slot of grid row i (−R ≤ i < n + R).
+        let slot = |i: isize| (i + r).rem_euclid(EDGE_ROWS as isize) as usize;
+        for i in -r..r {
+            self.load(slot(i), i, p, g, z, g_bar, y);
+        }
+        let (mut r_z, mut sum_z) = (0.0, 0.0);
+        for i in 0..n {
+            let next = i as isize + r;
+            self.load(slot(next), next, p, g, z, g_bar, y);
+            let k = i * n..(i + 1) * n;
+            let window: [(&[f64], &[bool]); EDGE_ROWS] = std::array::from_fn(|dy| {
+                let s = slot(i as isize + dy as isize - r);
+                (
+                    &self.rows[s * width..(s + 1) * width],
+                    &self.nonzero[s * nb..(s + 1) * nb],
+                )
+            });
+            let mask = &self.mask[slot(i as isize) * n..(slot(i as isize) + 1) * n];
+            stencil_row(&self.coeff, &window, self.periodic, mask, &mut self.acc);
+            let s = restrict_corrected(mask, &g[k.clone()], g_bar, &self.acc, &mut z[k]);
+            r_z += s[0];
+            sum_z += s[1];
+        }
+        acc.r_z = r_z;
+        acc.sum_z = sum_z;
+        Ok(acc)
+    }
+}
+
+/// One row of `z = [F](𝒦r − c)` in place (z holds 𝒦r, `m` is `m_F`);
+/// returns `[Σ r z, Σ z]`.
+fn restrict_corrected(m: &[f64], g: &[f64], g_bar: f64, c: &[f64], z: &mut [f64]) -> [f64; 2] {
+    let mut acc = [[0.0f64; LANES]; 2];
+    let chunks = m
+        .chunks(LANES)
+        .zip(g.chunks(LANES))
+        .zip(c.chunks(LANES))
+        .zip(z.chunks_mut(LANES));
+    for (((mc, gc), cc), zc) in chunks {
+        for l in 0..mc.len() {
+            let v = mc[l] * (zc[l] - cc[l]);
+            zc[l] = v;
+            acc[0][l] += mc[l] * (gc[l] - g_bar) * v;
+            acc[1][l] += v;
+        }
+    }
+    acc.map(|a| a.iter().sum())
+}
+
+/// Nodes per block of [`stencil_row`] (the block's sums stay in registers).
+const BLOCK: usize = 8;
+
+/// `acc = Σ c(dy, dx) w(i + dy, j + dx)` of one row over the window of
+/// 2R + 1 rows of w (padded by R, with their blocks' non-zero flags);
+/// blocks without a free node (`mask` = m_F of the row) or without a non-zero w within
+/// reach are left at 0 (z is restricted to F, and the sum would be 0).
+fn stencil_row(
+    coeff: &[[f64; EDGE_ROWS]; EDGE_ROWS],
+    window: &[(&[f64], &[bool]); EDGE_ROWS],
+    periodic: bool,
+    mask: &[f64],
+    acc: &mut [f64],
+) {
+    let n = acc.len();
+    let nb = n.div_ceil(BLOCK);
+    for b in 0..nb {
+        let j0 = b * BLOCK;
+        let len = BLOCK.min(n - j0);
+        let mut a = [0.0f64; BLOCK];
+        let any_free = mask[j0..j0 + len].iter().any(|&m| m > 0.0);
+        // R < BLOCK: the window's columns lie in blocks b − 1 … b + 1.
+        let near = |f: &[bool]| {
+            let left = if b > 0 {
+                f[b - 1]
+            } else {
+                periodic && f[nb - 1]
+            };
+            let right = if b + 1 < nb {
+                f[b + 1]
+            } else {
+                periodic && f[0]
+            };
+            left | f[b] | right
+        };
+        if any_free && window.iter().any(|(_, f)| near(f)) {
+            // The stencil is symmetric: sum the rows i ± dy first (v), then
+            // the columns j ± dx.
+            const W: usize = BLOCK + 2 * EDGE_RADIUS;
+            let mut v = [[0.0f64; W]; EDGE_RADIUS + 1];
+            let cols = j0..j0 + len + 2 * EDGE_RADIUS;
+            v[0][..cols.len()].copy_from_slice(&window[EDGE_RADIUS].0[cols.clone()]);
+            for (dy, vk) in v.iter_mut().enumerate().skip(1) {
+                let (up, down) = (window[EDGE_RADIUS - dy].0, window[EDGE_RADIUS + dy].0);
+                for ((o, &a), &b) in vk
+                    .iter_mut()
+                    .zip(&up[cols.clone()])
+                    .zip(&down[cols.clone()])
+                {
+                    *o = a + b;
+                }
+            }
+            for (vk, c) in v.iter().zip(&coeff[EDGE_RADIUS..]) {
+                let c = &c[EDGE_RADIUS..];
+                for (l, al) in a.iter_mut().enumerate() {
+                    let m = l + EDGE_RADIUS;
+                    let mut s = c[0] * vk[m];
+                    for dx in 1..=EDGE_RADIUS {
+                        s += c[dx] * (vk[m + dx] + vk[m - dx]);
+                    }
+                    *al += s;
+                }
+            }
+        }
+        acc[j0..j0 + len].copy_from_slice(&a[..len]);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::bem::{Boundary, Operator};
+
+    /// `x = 𝒦 u` (with the preconditioner's mean stiffness).
+    fn stiffness(op: &mut Operator, mean: f64, u: &[f64]) -> Vec<f64> {
+        let n = op.n();
+        let mut x = vec![0.0; n * n];
+        op.apply_stiffness_rows_with_mean(
+            mean,
+            &mut |i, row| row.copy_from_slice(&u[i * n..(i + 1) * n]),
+            &mut |i, row| x[i * n..(i + 1) * n].copy_from_slice(row),
+        )
+        .unwrap();
+        x
+    }
+
+    /// The edge-corrected preconditioner against direct sums with the
+    /// operator's own entries: `z = [F](𝒦r − ω Σ_j 𝒦(x, j) [N]𝒦r(j) / d)`
+    /// over the nodes j within R of x (each column 𝒦(·, j) from 𝒦 of a unit
+    /// pressure at j, so neither the stencil nor the row ring is reused),
+    /// periodic (wrapping) and free (no wrap), on a grid whose rows are not
+    /// a whole number of blocks.
+    #[test]
+    fn edge_correction_equals_direct_sums() {
+        for boundary in [Boundary::Periodic, Boundary::Free] {
+            for n in [16usize, 21] {
+                let mut ws = Workspace::new(Operator::new(boundary, n, 1.0, 1.0).unwrap());
+                let mean = ws.fields().op.fundamental_stiffness();
+                let mut seed = 7u64;
+                let mut rand = move || {
+                    seed = seed
+                        .wrapping_mul(6364136223846793005)
+                        .wrapping_add(1442695040888963407);
+                    (seed >> 11) as f64 / (1u64 << 53) as f64
+                };
+                let (g_bar, y) = (0.5, f64::INFINITY);
+                {
+                    let f = ws.fields();
+                    for k in 0..n * n {
+                        let u = rand();
+                        f.pressure[k] = if u < 0.4 { 0.0 } else { u };
+                        f.gap[k] = rand();
+                        f.direction[k] = rand() - 0.5;
+                    }
+                }
+                let f = ws.fields();
+                let (p, g) = (f.pressure.to_vec(), f.gap.to_vec());
+                let m: Vec<f64> = (0..n * n).map(|k| free(p[k], g[k], g_bar, y)).collect();
+                let r: Vec<f64> = (0..n * n).map(|k| m[k] * (g[k] - g_bar)).collect();
+                let kr = stiffness(f.op, mean, &r);
+                let mut unit = vec![0.0; n * n];
+                unit[(n / 2) * n + n / 2] = 1.0;
+                let d = stiffness(f.op, mean, &unit)[(n / 2) * n + n / 2];
+                let mut z_ref: Vec<f64> = (0..n * n).map(|k| m[k] * kr[k]).collect();
+                let reach = EDGE_RADIUS as i64;
+                for j in 0..n * n {
+                    if m[j] > 0.0 {
+                        continue;
+                    }
+                    unit.fill(0.0);
+                    unit[j] = 1.0;
+                    let column = stiffness(f.op, mean, &unit);
+                    let w = EDGE_WEIGHT * kr[j] / d;
+                    for x in 0..n * n {
+                        let (dy, dx) = (
+                            (x / n) as i64 - (j / n) as i64,
+                            (x % n) as i64 - (j % n) as i64,
+                        );
+                        let near = |v: i64| match boundary {
+                            Boundary::Periodic => {
+                                v.rem_euclid(n as i64).min((-v).rem_euclid(n as i64)) <= reach
+                            }
+                            Boundary::Free => v.abs() <= reach,
+                        };
+                        if x != j && near(dy) && near(dx) {
+                            z_ref[x] -= m[x] * column[x] * w;
+                        }
+                    }
+                }
+                let mut edge = Edge::new(&mut ws, mean).unwrap().expect("grid ≥ 8");
+                let pc = edge.precondition(&mut ws, g_bar, y, mean).unwrap();
+                let z = ws.fields().response.to_vec();
+                let scale = z_ref.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+                let err = z
+                    .iter()
+                    .zip(&z_ref)
+                    .fold(0.0f64, |a, (u, v)| a.max((u - v).abs()));
+                assert!(
+                    err <= 1e-12 * scale,
+                    "{boundary:?} N = {n}: {err:e} of {scale:e}"
+                );
+                let change = (0..n * n).fold(0.0f64, |a, k| a.max((m[k] * kr[k] - z_ref[k]).abs()));
+                assert!(
+                    change > 0.01 * scale,
+                    "{boundary:?} N = {n}: correction {change:e}"
+                );
+                let r_z: f64 = r.iter().zip(&z_ref).map(|(a, b)| a * b).sum();
+                let sum_z: f64 = z_ref.iter().sum();
+                assert!(
+                    (pc.r_z - r_z).abs() <= 1e-12 * r_z.abs(),
+                    "{boundary:?} N = {n}"
+                );
+                assert!((pc.sum_z - sum_z).abs() <= 1e-10 * scale * (n * n) as f64);
+            }
+        }
+    }
 }
