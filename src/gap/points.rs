@@ -12,7 +12,7 @@
 //! Gaussian's unit mass on its window (a 1e−8 correction), so that a
 //! constant f is integrated exactly.
 
-use super::{folded, SeparationDensity, NARROW, WG, WGK, WINDOW, XGK};
+use super::{SeparationDensity, NARROW, WG, WGK, WINDOW, XGK};
 use crate::quad::Estimate;
 
 /// Point weight below which a point does not set the largest separation.
@@ -54,6 +54,55 @@ fn rule() -> impl Iterator<Item = (f64, f64, f64)> {
     })
 }
 
+/// The points of a window clipped at 0 (u1 ≤ 10h): [0, u1] and
+/// [u1, u1 + 10h], one G7/K15 panel each, pushed as (u, Kronrod weight,
+/// Gauss weight) with the folded density times the half-width as the
+/// weight factor.
+///
+/// # Method
+/// With μ = u1/h and the rule's nodes ±x, the density's two terms need a
+/// few exponentials per pair instead of two per point:
+/// ```text
+/// [0, u1]:        u = (u1/2)(1 + x), a = (μ/2)(x − 1),
+///                 e^{−a²/2} = e^{−(μ²/8)(x² + 1)} · P^{±1},  P = e^{(μ²/4)x},
+///                 image/direct = e^{−b²/2}/e^{−a²/2} = e^{−μ²} P^{∓4}
+/// [u1, u1 + 10h]: u = u1 + 5h(1 + x), a = 5(1 + x) (fixed: `upper`),
+///                 image/direct = e^{−2μ² − 10μ} Q^{±1},  Q = e^{−10μx}
+/// ```
+/// For μ ≤ 10 every factor stays within e^{±100}: no overflow or underflow.
+fn clipped(u1: f64, h: f64, upper: &[(f64, f64); 8], push: &mut impl FnMut(f64, f64, f64)) {
+    let mu = u1 / h;
+    if mu > 0.0 {
+        let scale = 0.5 * mu / std::f64::consts::TAU.sqrt();
+        let image = (-mu * mu).exp();
+        for (j, &x) in XGK.iter().enumerate() {
+            let gauss = if j % 2 == 1 { WG[j / 2] } else { 0.0 };
+            let e0 = (-0.125 * mu * mu * (x * x + 1.0)).exp();
+            let p = (0.25 * mu * mu * x).exp();
+            let p4 = (p * p) * (p * p);
+            let plus = scale * e0 * p * (1.0 + image / p4);
+            push(0.5 * u1 * (1.0 + x), WGK[j] * plus, gauss * plus);
+            if x != 0.0 {
+                let minus = scale * e0 / p * (1.0 + image * p4);
+                push(0.5 * u1 * (1.0 - x), WGK[j] * minus, gauss * minus);
+            }
+        }
+    }
+    let c = (-2.0 * mu * mu - WINDOW * mu).exp();
+    let half = 0.5 * WINDOW * h;
+    for (j, &x) in XGK.iter().enumerate() {
+        let gauss = if j % 2 == 1 { WG[j / 2] } else { 0.0 };
+        let q = (-WINDOW * mu * x).exp();
+        let (dp, dm) = upper[j];
+        let plus = dp * (1.0 + c * q);
+        push(u1 + half * (1.0 + x), WGK[j] * plus, gauss * plus);
+        if x != 0.0 {
+            let minus = dm * (1.0 + c / q);
+            push(u1 + half * (1.0 - x), WGK[j] * minus, gauss * minus);
+        }
+    }
+}
+
 /// P_nc(u) as weighted points (module docs).
 #[derive(Debug, Clone)]
 pub struct PointSet {
@@ -84,6 +133,15 @@ impl PointSet {
                 })
             })
             .collect();
+        // e^{−a²/2} × half-width/h at a = 5(1 ± x_j), the upper half of a
+        // clipped window (see `clipped`)
+        let upper: [(f64, f64); 8] = std::array::from_fn(|j| {
+            let (p, m) = (0.5 * WINDOW * (1.0 + XGK[j]), 0.5 * WINDOW * (1.0 - XGK[j]));
+            (
+                (-0.5 * p * p).exp() * half_width,
+                (-0.5 * m * m).exp() * half_width,
+            )
+        });
         let mut points = Vec::new();
         let mut node_id = 0u32;
         for (panel_id, panel) in density.panels.iter().enumerate() {
@@ -109,7 +167,6 @@ impl PointSet {
                     continue;
                 }
                 let lo = (n.u1 - WINDOW * n.h).max(0.0);
-                let hi = n.u1 + WINDOW * n.h;
                 // the image term φ_h(u + u1) underflows everywhere on the
                 // window when (u1 − 10h + u1)/h > MIRROR_CUT
                 let image = 2.0 * n.u1 / n.h - WINDOW <= MIRROR_CUT;
@@ -126,17 +183,7 @@ impl PointSet {
                         push(u, s.kronrod * d, s.gauss * d);
                     }
                 } else {
-                    for (a, b) in [(lo, n.u1), (n.u1, hi)] {
-                        if b <= a {
-                            continue;
-                        }
-                        let (half, mid) = (0.5 * (b - a), 0.5 * (a + b));
-                        for (x, wk, wg) in rule() {
-                            let u = mid + half * x;
-                            let d = folded(u, n.u1, n.h) * half;
-                            push(u, wk * d, wg * d);
-                        }
-                    }
+                    clipped(n.u1, n.h, &upper, &mut push);
                 }
                 // the folded Gaussian has unit mass on its window (to 1e−22):
                 // scale the Kronrod u-rule to it, so a constant f is exact
@@ -198,5 +245,47 @@ impl PointSet {
             .filter(|p| p.kronrod > NEGLIGIBLE_POINT)
             .map(|p| p.u)
             .fold(0.0, f64::max)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `clipped`'s weights against the folded density at the same points
+    /// (φ_h(u − u1) + φ_h(u + u1) times the half-width), across μ = u1/h.
+    #[test]
+    fn clipped_weights_are_the_folded_density() {
+        let half_width = 0.5 * WINDOW / std::f64::consts::TAU.sqrt();
+        let upper: [(f64, f64); 8] = std::array::from_fn(|j| {
+            let (p, m) = (0.5 * WINDOW * (1.0 + XGK[j]), 0.5 * WINDOW * (1.0 - XGK[j]));
+            (
+                (-0.5 * p * p).exp() * half_width,
+                (-0.5 * m * m).exp() * half_width,
+            )
+        });
+        let h = 3e-7;
+        for mu in [0.0, 1e-3, 0.3, 1.0, 4.0, 9.9] {
+            let u1 = mu * h;
+            let mut worst: f64 = 0.0;
+            let mut count = 0;
+            clipped(u1, h, &upper, &mut |u: f64, wk: f64, _wg: f64| {
+                // the panel's half-width: u1/2 below u1, 5h above
+                let half = if u < u1 { 0.5 * u1 } else { 0.5 * WINDOW * h };
+                let c = 1.0 / (std::f64::consts::TAU.sqrt() * h);
+                let (a, b) = ((u - u1) / h, (u + u1) / h);
+                let direct = c * ((-0.5 * a * a).exp() + (-0.5 * b * b).exp()) * half;
+                let j = (0..8)
+                    .find(|&j| {
+                        let x = ((u - if u < u1 { 0.5 * u1 } else { u1 + half }) / half).abs();
+                        (x - XGK[j]).abs() < 1e-9
+                    })
+                    .unwrap_or(7);
+                worst = worst.max((wk / WGK[j] / direct - 1.0).abs());
+                count += 1;
+            });
+            assert_eq!(count, if mu > 0.0 { 30 } else { 15 }, "μ = {mu}");
+            assert!(worst < 1e-13, "μ = {mu}: {worst:e}");
+        }
     }
 }

@@ -302,7 +302,12 @@ impl SeparationTable {
                     n.gauss *= jac;
                     nodes.push(n);
                 }
-                let edge = node(zeta_of_m3(spectrum, start.exp())?, 0.0, 0.0, options.q_panels)?;
+                let edge = node(
+                    zeta_of_m3(spectrum, start.exp())?,
+                    0.0,
+                    0.0,
+                    options.q_panels,
+                )?;
                 panels.push(ZetaPanel {
                     start,
                     end,
