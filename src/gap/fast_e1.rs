@@ -106,19 +106,80 @@ fn pieces() -> &'static Pieces {
     static PIECES: OnceLock<Pieces> = OnceLock::new();
     PIECES.get_or_init(|| Pieces {
         small: Piece::fit(0.0, 1.0, |x| e1(x) + x.ln()),
-        octaves: (0..OCTAVES * PER_OCTAVE)
-            .map(|k| {
-                let a = (1u64 << (k / PER_OCTAVE)) as f64;
-                let i = (k % PER_OCTAVE) as f64 / PER_OCTAVE as f64;
-                let b = if k % PER_OCTAVE == PER_OCTAVE - 1 {
-                    2.0 * a
-                } else {
-                    a * (i + 1.0 / PER_OCTAVE as f64).exp2()
-                };
-                Piece::fit(a * i.exp2(), b, e1_scaled)
-            })
-            .collect(),
+        octaves: padded(
+            (0..OCTAVES * PER_OCTAVE)
+                .map(|k| {
+                    let a = (1u64 << (k / PER_OCTAVE)) as f64;
+                    let i = (k % PER_OCTAVE) as f64 / PER_OCTAVE as f64;
+                    let b = if k % PER_OCTAVE == PER_OCTAVE - 1 {
+                        2.0 * a
+                    } else {
+                        a * (i + 1.0 / PER_OCTAVE as f64).exp2()
+                    };
+                    Piece::fit(a * i.exp2(), b, e1_scaled)
+                })
+                .collect(),
+        ),
     })
+}
+
+/// The pieces with their coefficient lists padded by zeros to one length
+/// (a zero high-order coefficient leaves Clenshaw's sum bit for bit
+/// unchanged), so that [`e1_fast_pair`] runs two sums in one fixed loop.
+fn padded(mut pieces: Vec<Piece>) -> Vec<Piece> {
+    let width = pieces
+        .iter()
+        .map(|p| p.coefficients.len())
+        .max()
+        .unwrap_or(1);
+    for p in &mut pieces {
+        p.coefficients.resize(width, 0.0);
+    }
+    pieces
+}
+
+/// The octave piece of x > 1 (module docs), if x is within the octaves.
+#[inline]
+fn octave_piece(p: &Pieces, x: f64) -> Option<&Piece> {
+    // octave j = ⌊log2 x⌋ from the exponent bits (x > 1, finite: j ≥ 0),
+    // then the quarter from the top mantissa bits; a piece's interpolant
+    // is good slightly past its ends, so piece ends rounded either way are harmless
+    let bits = x.to_bits();
+    let j = ((bits >> 52) & 0x7ff) as usize - 1023;
+    let mantissa = f64::from_bits((bits & ((1u64 << 52) - 1)) | (1023u64 << 52)); // in [1, 2)
+    let quarter = QUARTERS.iter().filter(|&&t| mantissa >= t).count();
+    p.octaves.get(j * PER_OCTAVE + quarter)
+}
+
+/// [`e1_fast`] at two points: for two points past 1 in the octaves, the two
+/// Clenshaw sums run in one loop, so that their latency chains overlap
+/// (the sums are the table's hot loop; the values are bit for bit those of
+/// [`e1_fast`]).
+#[inline]
+pub(crate) fn e1_fast_pair(x: [f64; 2], exp_minus_x: [f64; 2]) -> [f64; 2] {
+    let p = pieces();
+    let (Some(a), Some(b)) = (
+        (x[0] > 1.0).then(|| octave_piece(p, x[0])).flatten(),
+        (x[1] > 1.0).then(|| octave_piece(p, x[1])).flatten(),
+    ) else {
+        return [e1_fast(x[0], exp_minus_x[0]), e1_fast(x[1], exp_minus_x[1])];
+    };
+    let ta = (x[0] - a.centre) * a.inv_half;
+    let tb = (x[1] - b.centre) * b.inv_half;
+    let (two_ta, two_tb) = (2.0 * ta, 2.0 * tb);
+    let (mut a1, mut a2, mut b1, mut b2) = (0.0, 0.0, 0.0, 0.0);
+    for (&ca, &cb) in a.coefficients[1..].iter().zip(&b.coefficients[1..]).rev() {
+        let a0 = two_ta * a1 + (ca - a2);
+        let b0 = two_tb * b1 + (cb - b2);
+        a2 = a1;
+        a1 = a0;
+        b2 = b1;
+        b1 = b0;
+    }
+    [
+        (ta * a1 + (a.coefficients[0] - a2)) * exp_minus_x[0],
+        (tb * b1 + (b.coefficients[0] - b2)) * exp_minus_x[1],
+    ]
 }
 
 /// E1(x) for x > 0 given e^{−x} (module docs); past the last octave
@@ -129,14 +190,7 @@ pub(crate) fn e1_fast(x: f64, exp_minus_x: f64) -> f64 {
     if x <= 1.0 {
         return p.small.eval(x) - x.ln();
     }
-    // octave j = ⌊log2 x⌋ from the exponent bits (x > 1, finite: j ≥ 0),
-    // then the quarter from the top mantissa bits; a piece's interpolant
-    // is good slightly past its ends, so piece ends rounded either way are harmless
-    let bits = x.to_bits();
-    let j = ((bits >> 52) & 0x7ff) as usize - 1023;
-    let mantissa = f64::from_bits((bits & ((1u64 << 52) - 1)) | (1023u64 << 52)); // in [1, 2)
-    let quarter = QUARTERS.iter().filter(|&&t| mantissa >= t).count();
-    match p.octaves.get(j * PER_OCTAVE + quarter) {
+    match octave_piece(p, x) {
         Some(piece) => piece.eval(x) * exp_minus_x,
         None => e1_scaled(x) * exp_minus_x,
     }
@@ -167,5 +221,22 @@ mod tests {
             worst = worst.max(rel);
         }
         assert!(worst < 1e-14, "worst relative difference {worst:e}");
+    }
+
+    /// The paired evaluation is [`e1_fast`] bit for bit, for pairs in the
+    /// octaves, across piece ends, and with a point at or below 1 or past
+    /// the last octave (the fallback).
+    #[test]
+    fn pair_equals_single() {
+        let xs: Vec<f64> = (0..=600)
+            .map(|i| 10f64.powf(-0.5 + 3.6 * f64::from(i) / 600.0))
+            .collect();
+        for w in xs.windows(7) {
+            let x = [w[0], w[6]];
+            let ex = [(-x[0]).exp(), (-x[1]).exp()];
+            let pair = e1_fast_pair(x, ex);
+            assert_eq!(pair[0].to_bits(), e1_fast(x[0], ex[0]).to_bits(), "{x:?}");
+            assert_eq!(pair[1].to_bits(), e1_fast(x[1], ex[1]).to_bits(), "{x:?}");
+        }
     }
 }

@@ -356,6 +356,9 @@ fn bruggeman_points(
     };
     let mut step = b - a;
     let mut slope = 0.0;
+    // the last Newton step, while the steps are Newton's (for the
+    // quadratic-convergence prediction below)
+    let mut last_newton: Option<f64> = None;
     for _ in 0..300 {
         let (r, d) = residual(t);
         slope = d;
@@ -369,16 +372,24 @@ fn bruggeman_points(
             break;
         }
         let newton = if d < 0.0 { t - r / d } else { f64::NAN };
-        if (newton - t).abs() <= ROOT_TOLERANCE {
-            // converged: the step may round onto the bracket's end (t
-            // itself), which must not send the search to bisection
-            step = (newton - t).abs();
+        let this = (newton - t).abs();
+        // converged: this step is below the tolerance, or (quadratic
+        // convergence, the step ratio measured on the last two) the next
+        // one would be: C = |Δt_k|/|Δt_{k−1}|², next ≈ C |Δt_k|² (counted
+        // in the error). The step may round onto the bracket's end (t
+        // itself), which must not send the search to bisection.
+        let next_step =
+            last_newton.map_or(f64::INFINITY, |prev| this * (this / prev) * (this / prev));
+        if this <= ROOT_TOLERANCE || (next_step <= ROOT_TOLERANCE && this < 1e-3) {
+            step = this + next_step.min(this);
             t = newton.clamp(a, b);
             break;
         }
         let next = if newton > a && newton < b {
+            last_newton = Some(this);
             newton
         } else {
+            last_newton = None;
             0.5 * (a + b)
         };
         step = (next - t).abs();
