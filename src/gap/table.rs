@@ -18,14 +18,19 @@
 //! for each ζ-node in v = √(ln(q/(ζq_l))) (v = t² on the first segment, as
 //! [`super::magnified`]) with `q_panels` panels per segment between breaks.
 //! s_lo is set by the lowest load: there x = 6.5, so the weight below it,
-//! erfc(6.5) < 4e−20, is left out (and added to the error bounds). A load then
-//! costs one sum over the stored nodes (E1 and e^{−x²} per node): no
-//! adaptive integral, no root of m3. The bounds are the summed |Kronrod −
-//! Gauss| of both rules, as in the adaptive route; the tests check the
-//! table against [`super::SeparationDensity::new`] (adaptive, 1e-9).
+//! erfc(6.5) < 4e−20, is left out (and added to the error bounds); a higher
+//! load likewise skips the panels lying wholly below its own x = 6.5. A load
+//! then costs one sum over the stored nodes of the panels it keeps
+//! (module `gap::band`: E1 and e^{−x²} at the nodes with x ≥ 1, stored power
+//! series for the rest): no adaptive integral, no root of m3. The bounds are
+//! the summed |Kronrod − Gauss| of both rules, as in the adaptive route; the
+//! tests check the table against [`super::SeparationDensity::new`]
+//! (adaptive, 1e-9).
 //!
-//! The first moment below s_lo telescopes: ∫_1^{ζ_lo} (−(Aū)′) dζ =
-//! ū(σ0) − A(ζ_lo) ū(ζ_lo), computed from two extra nodes (ζ = 1 and ζ_lo).
+//! The first moment below the first panel kept telescopes: ∫_1^{ζ_b}
+//! (−(Aū)′) dζ = ū(σ0) − A(ζ_b) ū(ζ_b), from the full band (ζ = 1, with
+//! 8× the q-panels; it also gives the stiffness,
+//! [`SeparationTable::stiffness`]) and a band stored at each panel's start.
 
 use super::band::{Band, QNode};
 use super::{Node, Panel, SeparationDensity, WG, WGK, XGK};
