@@ -33,7 +33,10 @@ fn time<T>(mut f: impl FnMut() -> T) -> (T, Duration, Duration) {
 }
 
 /// The two models with the knob at `per_unit` ζ-panels per unit of ln m3.
-fn models(s: &SelfAffine, per_unit: f64) -> persson::Result<(EffectiveMedium<'_>, Conductance<'_>)> {
+fn models(
+    s: &SelfAffine,
+    per_unit: f64,
+) -> persson::Result<(EffectiveMedium<'_>, Conductance<'_>)> {
     let density = DensityOptions {
         breaks: vec![4e4],
         table_panels_per_unit: per_unit,
@@ -82,7 +85,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         for &p in &loads {
             let e = em.point(p)?;
             if e.contact_fraction <= 0.4 {
-                reference.push((p, e.leak_rate, gap.point(p)?.gap_conductance.unwrap_or(f64::NAN)));
+                reference.push((
+                    p,
+                    e.leak_rate,
+                    gap.point(p)?.gap_conductance.unwrap_or(f64::NAN),
+                ));
             }
         }
         println!("| table_panels_per_unit | effective medium: fastest / median | error | gap conductance: fastest / median | error |");

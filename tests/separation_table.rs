@@ -174,7 +174,10 @@ fn table_stiffness_agrees_with_the_adaptive_stiffness() {
     for i in 0..=20 {
         let p = 1e9 * 10f64.powf(-4.0 + 3.5 * f64::from(i) / 20.0);
         let (a, b) = (sep.stiffness(p).unwrap(), t.stiffness(p).unwrap());
-        assert!((a.value - b.value).abs() <= 2e-12 * a.value, "{p}: {a:?} vs {b:?}");
+        assert!(
+            (a.value - b.value).abs() <= 2e-12 * a.value,
+            "{p}: {a:?} vs {b:?}"
+        );
         assert!((a.value - b.value).abs() <= a.error + b.error, "{p}");
     }
     let opts = ConductanceOptions {
@@ -193,7 +196,10 @@ fn table_stiffness_agrees_with_the_adaptive_stiffness() {
     let pressures = [1e6, 1e8];
     for (c, &p) in model.load_curve(&pressures).unwrap().iter().zip(&pressures) {
         let one = model.point(p).unwrap();
-        let (a, b) = (one.thermal_conductance.unwrap(), c.thermal_conductance.unwrap());
+        let (a, b) = (
+            one.thermal_conductance.unwrap(),
+            c.thermal_conductance.unwrap(),
+        );
         assert!((a - b).abs() <= 1e-9 * a, "{p}: {a} vs {b}");
     }
 }
