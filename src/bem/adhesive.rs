@@ -1175,19 +1175,7 @@ impl AdhesiveSolver {
                 }
             }
         }
-        if free == 0 && layout.periodic() {
-            return Err(Error::NotConverged {
-                what: "adhesive BEM: every node closed (full contact)".into(),
-                iterations: 0,
-                residual: f64::NAN,
-                tolerance: 0.0,
-            });
-        }
-        let mean = if layout.periodic() {
-            sum / free as f64
-        } else {
-            0.0
-        };
+        let mean = free_mean(sum, free, layout.periodic())?;
         scale += self.gap.len() as f64 * mean * mean;
         Ok(Sums {
             mean,
@@ -1430,19 +1418,7 @@ impl AdhesiveSolver {
                 *r = *w;
             }
         }
-        if free == 0 && layout.periodic() {
-            return Err(Error::NotConverged {
-                what: "adhesive BEM: every node closed (full contact)".into(),
-                iterations: 0,
-                residual: f64::NAN,
-                tolerance: 0.0,
-            });
-        }
-        let mean = if layout.periodic() {
-            sum / free as f64
-        } else {
-            0.0
-        };
+        let mean = free_mean(sum, free, layout.periodic())?;
         // the round-off of 𝒦(g + h): ε_mach times the largest symbol E*π√2 N/L
         // times the input's norm, times log₂ of the grid's nodes
         let input: f64 = self
@@ -1582,4 +1558,22 @@ impl AdhesiveSequence {
             fallbacks,
         }
     }
+}
+
+/// The mean of the residual over the free (open) nodes, Σ r / |F|,
+/// periodic; 0 on the free boundary (no mean to remove). A periodic grid
+/// with every node closed is an error (full contact).
+fn free_mean(sum: f64, free: usize, periodic: bool) -> Result<f64> {
+    if !periodic {
+        return Ok(0.0);
+    }
+    if free == 0 {
+        return Err(Error::NotConverged {
+            what: "adhesive BEM: every node closed (full contact)".into(),
+            iterations: 0,
+            residual: f64::NAN,
+            tolerance: 0.0,
+        });
+    }
+    Ok(sum / free as f64)
 }
