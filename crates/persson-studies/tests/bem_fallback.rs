@@ -14,8 +14,10 @@ use persson_studies::warning::{of_rough, Warning};
 /// ε of the solves.
 const TOL: f64 = 1e-10;
 
-/// The pressures of the load path, unit of E*.
-const PRESSURES: [f64; 2] = [0.004, 0.02];
+/// The pressures of the load path, unit of E*: two where ε does not halve
+/// at every iteration (at 0.02 E* the edge-corrected preconditioner of
+/// issue 22 halves it every time, so a window of one no longer stalls there).
+const PRESSURES: [f64; 2] = [0.004, 0.008];
 
 fn report(method: Method) -> RoughReport {
     let (n, ql) = (64, std::f64::consts::TAU);
@@ -65,7 +67,7 @@ fn a_forced_stall_falls_back_and_warns() {
     assert_eq!(iterations.len(), PRESSURES.len());
     let json = serde_json::to_value(w).unwrap();
     assert_eq!(json["kind"], "preconditioner_fallback");
-    assert!(w.to_string().contains("σ0 = 0.004, 0.02"), "{w}");
+    assert!(w.to_string().contains("σ0 = 0.004, 0.008"), "{w}");
     // Same answer as the plain solver: the contact sets are equal.
     for (a, b) in forced.points.iter().zip(&plain.points) {
         assert!(a.fallback.is_some() && b.fallback.is_none());
