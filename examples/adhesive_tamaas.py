@@ -1,9 +1,13 @@
 """Side by side: persson's adhesive FFT-BEM and Tamaas 2.9's PolonskyKeerRey
 (gap primal and gap constraint) with MaugisAdhesionFunctional, on the same
 heights, mean gap, law and tolerance (1e-10), at 256² and 512².
+`--cohesive-stress S` sets Δγ/ρ = S E* (default 0.02; ρ = h_rms/20): the
+cohesive length E*ρ²/Δγ is 2.3 grid spacings at 256² for 0.02, 9.4 for 0.005
+(docs/adhesion.md: below about 8 the discrete Maugis-Dugdale energy has
+stationary points far enough apart that two solvers need not agree).
 
 Run from the workspace root (builds and runs examples/adhesive_tamaas.rs):
-    /work/peers/bin/python examples/adhesive_tamaas.py [N ...] [--law exponential] [--plain] [--preconditioned]
+    /work/peers/bin/python examples/adhesive_tamaas.py [N ...] [--law exponential] [--plain] [--preconditioned] [--cohesive-stress S]
 Prints both answers, their relative differences and the wall time per solve of
 each (one solve each, cold start), with the load average (`uptime`). Ours uses
 the solver's iteration for the law (preconditioned for the exponential law,
@@ -22,9 +26,9 @@ import tamaas as tm
 TOLERANCE = 1e-10
 
 
-def persson(n, out, law, method="auto"):
+def persson(n, out, law, method="auto", cohesive_stress=0.02):
     cmd = ["cargo", "run", "--quiet", "--release", "--example", "adhesive_tamaas",
-           "--", str(n), out, law, method]
+           "--", str(n), out, law, method, repr(cohesive_stress)]
     return json.loads(subprocess.run(cmd, check=True, capture_output=True,
                                      text=True).stdout)
 
@@ -85,18 +89,22 @@ def tamaas(heights, ours, law):
 
 def main():
     law = "exponential" if "--law" in sys.argv and "exponential" in sys.argv else "maugis"
+    cs = 0.02
+    if "--cohesive-stress" in sys.argv:
+        cs = float(sys.argv[sys.argv.index("--cohesive-stress") + 1])
     grids = [int(a) for a in sys.argv[1:] if a.isdigit()] or [256, 512]
     out = os.path.join("target", "adhesive_tamaas")
     os.makedirs(out, exist_ok=True)
     tm.set_log_level(tm.LogLevel.error)
     for n in grids:
-        plain = persson(n, out, law, "plain") if "--plain" in sys.argv else None
+        plain = persson(n, out, law, "plain", cs) if "--plain" in sys.argv else None
         ours = persson(n, out, law,
-                       "preconditioned" if "--preconditioned" in sys.argv else "auto")
+                       "preconditioned" if "--preconditioned" in sys.argv else "auto", cs)
         heights = np.load(os.path.join(out, f"surface_{n}.npy"))
         theirs = tamaas(heights, ours, law)
         load = os.getloadavg()
-        print(f"N = {n}, law {law}, mean gap {ours['mean_gap']:.6e}, "
+        print(f"N = {n}, law {law}, cohesive stress {cs} E*, "
+              f"cohesive length {ours['zone_nodes']:.2f} grid spacings, mean gap {ours['mean_gap']:.6e}, "
               f"load average {load[0]:.1f}")
         for key in ("mean_pressure", "contact_fraction", "cohesive_fraction"):
             a, b = ours[key], theirs[key]

@@ -177,6 +177,45 @@ fn unresolved_cohesive_zone_is_warned_of() {
     assert_eq!(a["adhesion"], "exponential");
 }
 
+/// A range above the grid spacing (1/64) is not enough: the cohesive length
+/// E*ρ²/Δγ must span 8 spacings (0.125 here). ρ = 0.02 with Δγ = 1e-4 gives
+/// ℓ = 4 (resolved, no warning); with Δγ = 4e-3, ℓ = 0.1 (warned, the length
+/// reported).
+#[test]
+fn short_cohesive_length_is_warned_of() {
+    let warnings = |dg: &str| -> Vec<Value> {
+        let a = run(&[
+            "--work-of-adhesion",
+            dg,
+            "--adhesion-range",
+            "0.02",
+            "--mean-gap",
+            "4e-3",
+            "--json",
+        ]);
+        a["warnings"].as_array().expect("warnings").clone()
+    };
+    let unresolved = |w: &Vec<Value>| -> Vec<Value> {
+        w.iter()
+            .filter(|w| w["kind"] == "cohesive_zone_unresolved")
+            .cloned()
+            .collect()
+    };
+    assert!(unresolved(&warnings("1e-4")).is_empty());
+    let w = unresolved(&warnings("4e-3"));
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert!(
+        (f(&w[0], "cohesive_length") / 0.1 - 1.0).abs() < 1e-12,
+        "{w:?}"
+    );
+    assert!(
+        (f(&w[0], "grid_spacing") - 1.0 / 64.0).abs() < 1e-15,
+        "{w:?}"
+    );
+    let message = w[0]["message"].as_str().expect("message");
+    assert!(message.contains("cohesive length"), "{message}");
+}
+
 /// Bad input names its flag and never panics.
 #[test]
 fn bad_adhesion_input_names_the_flag() {

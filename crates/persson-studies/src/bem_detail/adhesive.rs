@@ -18,6 +18,7 @@ use crate::Warning;
 use persson::adhesion::MaugisDugdale;
 use persson::bem::adhesive::{
     AdhesiveOptions, AdhesivePoint, AdhesiveSequence, AdhesiveSolver, CohesiveLaw,
+    RESOLVED_COHESIVE_LENGTH,
 };
 use persson::bem::{Boundary, Operator};
 use persson::error::{Error, Result};
@@ -161,30 +162,39 @@ pub fn adhesive_controlled_path(
     })
 }
 
-/// The warnings of an adhesive path: a cohesive zone shorter than the grid
-/// spacing, solves the plain iteration finished, solves short of the tolerance.
+/// The warnings of an adhesive path: a cohesive zone the grid does not
+/// resolve, solves the plain iteration finished, solves short of the tolerance.
 pub fn adhesive_warnings(r: &AdhesiveBemReport) -> Vec<Warning> {
     path_warnings(
         r.size / r.grid as f64,
-        r.adhesion_range,
+        r.adhesion.law(r.work_of_adhesion, r.adhesion_range),
+        r.contact_modulus,
         r.tolerance,
         &r.points,
     )
 }
 
-/// [`adhesive_warnings`] of one path: grid spacing L/N, range ρ, tolerance ε.
+/// [`adhesive_warnings`] of one path: grid spacing L/N, the law, E*, tolerance ε.
 fn path_warnings(
     spacing: f64,
-    adhesion_range: f64,
+    law: Result<CohesiveLaw>,
+    contact_modulus: f64,
     tolerance: f64,
     points: &[AdhesivePoint],
 ) -> Vec<Warning> {
     let mut out = Vec::new();
-    if adhesion_range < spacing {
-        out.push(Warning::CohesiveZoneUnresolved {
-            adhesion_range,
-            grid_spacing: spacing,
-        });
+    // The law was built from the same values before the solve: an error
+    // here cannot happen, and then there is nothing to resolve.
+    if let Ok(law) = law {
+        let (_, adhesion_range) = law.parameters();
+        let cohesive_length = law.cohesive_length(contact_modulus);
+        if adhesion_range < spacing || cohesive_length < RESOLVED_COHESIVE_LENGTH * spacing {
+            out.push(Warning::CohesiveZoneUnresolved {
+                adhesion_range,
+                cohesive_length,
+                grid_spacing: spacing,
+            });
+        }
     }
     let gaps = |f: &dyn Fn(&AdhesivePoint) -> bool| -> Vec<f64> {
         points.iter().filter(|p| f(p)).map(|p| p.mean_gap).collect()
@@ -431,7 +441,8 @@ pub fn sphere_warnings(r: &AdhesiveSphereReport) -> Vec<Warning> {
     let mut out: Vec<Warning> = Vec::new();
     for g in &r.per_grid {
         let spacing = r.size / g.grid as f64;
-        for w in path_warnings(spacing, r.adhesion_range, r.tolerance, &g.points) {
+        let law = r.adhesion.law(r.work_of_adhesion, r.adhesion_range);
+        for w in path_warnings(spacing, law, r.contact_modulus, r.tolerance, &g.points) {
             if !out.contains(&w) {
                 out.push(w);
             }

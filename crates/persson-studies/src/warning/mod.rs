@@ -207,11 +207,16 @@ pub enum Warning {
         /// Iterations of the preconditioned loop before it was abandoned (per solve).
         iterations: Vec<usize>,
     },
-    /// The adhesive BEM's cohesive range ρ is below one grid spacing L/N: the
-    /// cohesive zone is not resolved and the answer depends on the grid.
+    /// The adhesive BEM's grid does not resolve the cohesive zone: the range
+    /// ρ is below one grid spacing L/N, or the cohesive length ℓ = E*Δγ/σ_c²
+    /// below [`persson::bem::adhesive::RESOLVED_COHESIVE_LENGTH`] spacings. The
+    /// answer depends on the grid and, for Maugis–Dugdale, on the iteration's
+    /// path (the discrete energy has several stationary points).
     CohesiveZoneUnresolved {
         /// ρ, m.
         adhesion_range: f64,
+        /// ℓ = E*Δγ/σ_c² = E*ρ²/Δγ, m.
+        cohesive_length: f64,
         /// L/N, m.
         grid_spacing: f64,
     },

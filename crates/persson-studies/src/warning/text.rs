@@ -213,15 +213,33 @@ impl fmt::Display for Warning {
             }
             Warning::CohesiveZoneUnresolved {
                 adhesion_range,
+                cohesive_length,
                 grid_spacing,
-            } => write!(
-                f,
-                "the adhesion range ρ = {} is below the grid spacing L/N = {}: the cohesive \
-                 zone is not resolved and the pull-off depends on the grid (refine the grid \
-                 or lengthen the range)",
-                n(*adhesion_range),
-                n(*grid_spacing)
-            ),
+            } => {
+                if adhesion_range < grid_spacing {
+                    write!(
+                        f,
+                        "the adhesion range ρ = {} is below the grid spacing L/N = {}",
+                        n(*adhesion_range),
+                        n(*grid_spacing)
+                    )?;
+                } else {
+                    write!(
+                        f,
+                        "the cohesive length E*Δγ/σ_c² = E*ρ²/Δγ = {} is below {} grid \
+                         spacings L/N = {}",
+                        n(*cohesive_length),
+                        persson::bem::adhesive::RESOLVED_COHESIVE_LENGTH,
+                        n(*grid_spacing)
+                    )?;
+                }
+                write!(
+                    f,
+                    ": the cohesive zone is not resolved and the pull-off depends on the grid \
+                     (and, for Maugis–Dugdale, on the solver's path: several solutions are \
+                     stationary); refine the grid or lengthen the range"
+                )
+            }
             Warning::AdhesiveFallback { mean_gap } => write!(
                 f,
                 "the preconditioned adhesive solver stalled at mean gap ḡ = {} and the plain \
