@@ -161,7 +161,7 @@ use crate::error::{check, Error, Result};
 /// a rough surface (docs/adhesion.md, "Which stationary point"): at 4.7 L/N
 /// the plain and the preconditioned iteration from one start reach
 /// Maugis–Dugdale solutions 0.8 % apart in A/A0, at 6.7 L/N 0.47 %, from
-/// 9.4 L/N on at most 0.18 %.
+/// 9.3 L/N on at most 0.18 %.
 pub const RESOLVED_COHESIVE_LENGTH: f64 = 8.0;
 
 /// The cohesive law of the gap.
