@@ -343,10 +343,12 @@ def bem_rough(
     adhesion: Literal["maugis", "exponential"] = "maugis",
     mean_gap: Optional[ArrayLike] = None,
     approach: Optional[ArrayLike] = None,
+    adhesive_iteration: Literal["auto", "plain", "preconditioned"] = "auto",
 ) -> Report:
     """`persson bem rough --json`; with `work_of_adhesion`, `adhesion_range` and
     `mean_gap` (or `approach`, periodic or free) instead of `pressure`,
-    `persson bem rough --work-of-adhesion --json`."""
+    `persson bem rough --work-of-adhesion --json` (`adhesive_iteration` is
+    `--adhesive-iteration`)."""
 def bem_hertz(
     *,
     grid: int = 256,

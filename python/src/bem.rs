@@ -10,8 +10,8 @@ use persson::bem::surface::{synthesize as synth, GridSurface};
 use persson::bem::{check_memory, Boundary, Control, Operator, Options, Solver};
 use persson::error::check;
 use persson_studies::bem_detail::{
-    adhesive_controlled_path, adhesive_sphere, adhesive_warnings, sphere_warnings, LawKind,
-    PathControl,
+    adhesive_controlled_path, adhesive_sphere, adhesive_warnings, sphere_warnings,
+    AdhesiveIteration, LawKind, PathControl,
 };
 use persson_studies::scene::BoundaryName;
 use persson_studies::validation::{self, ComparisonConfig, SweepSettings, UserData, UserHistogram};
@@ -167,11 +167,12 @@ fn bem_solve<'py>(
 /// --json`, the adhesive BEM (`adhesion` "maugis" or "exponential") along
 /// the mean-gap path, periodic; or with `approach` (a list of rigid-body
 /// approaches from first touch) instead of `mean_gap`, periodic or
-/// `boundary="free"`: `--approach`.
+/// `boundary="free"`: `--approach`. `adhesive_iteration` ("auto", "plain",
+/// "preconditioned") is `--adhesive-iteration`.
 #[pyfunction]
 #[pyo3(
-    signature = (contact_modulus, pressure=None, *, heights=None, size=None, spectrum=None, grid=None, seed=Seed(1), boundary="periodic", yield_stress=None, bins=None, tolerance=1e-10, max_iterations=10_000, work_of_adhesion=None, adhesion_range=None, adhesion="maugis", mean_gap=None, approach=None),
-    text_signature = "(contact_modulus, pressure=None, *, heights=None, size=None, spectrum=None, grid=None, seed=1, boundary='periodic', yield_stress=None, bins=None, tolerance=1e-10, max_iterations=10000, work_of_adhesion=None, adhesion_range=None, adhesion='maugis', mean_gap=None, approach=None)"
+    signature = (contact_modulus, pressure=None, *, heights=None, size=None, spectrum=None, grid=None, seed=Seed(1), boundary="periodic", yield_stress=None, bins=None, tolerance=1e-10, max_iterations=10_000, work_of_adhesion=None, adhesion_range=None, adhesion="maugis", mean_gap=None, approach=None, adhesive_iteration="auto"),
+    text_signature = "(contact_modulus, pressure=None, *, heights=None, size=None, spectrum=None, grid=None, seed=1, boundary='periodic', yield_stress=None, bins=None, tolerance=1e-10, max_iterations=10000, work_of_adhesion=None, adhesion_range=None, adhesion='maugis', mean_gap=None, approach=None, adhesive_iteration='auto')"
 )]
 #[allow(clippy::too_many_arguments)]
 fn bem_rough<'py>(
@@ -193,6 +194,7 @@ fn bem_rough<'py>(
     adhesion: &str,
     mean_gap: Option<&Bound<'py, PyAny>>,
     approach: Option<&Bound<'py, PyAny>>,
+    adhesive_iteration: &str,
 ) -> PyResult<Bound<'py, PyAny>> {
     let Seed(seed) = seed;
     let b = self::boundary(boundary)?;
@@ -223,6 +225,7 @@ fn bem_rough<'py>(
             }
         };
         let kind = law_kind(adhesion)?;
+        let iteration = AdhesiveIteration::parse(adhesive_iteration).map_err(err)?;
         let opts = persson::bem::adhesive::AdhesiveOptions {
             tolerance: check::tolerance("tolerance", tolerance).map_err(err)?,
             max_iterations,
@@ -242,6 +245,7 @@ fn bem_rough<'py>(
                     (kind, dg, range),
                     control,
                     &opts,
+                    iteration,
                 )
             })
             .map_err(err)?;

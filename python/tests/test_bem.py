@@ -162,6 +162,21 @@ def test_adhesive_rough_matches_cli():
                           adhesion_range=1e-2)
 
 
+def test_adhesive_iteration_matches_cli():
+    """`bem_rough(adhesive_iteration="preconditioned")` is `--adhesive-iteration
+    preconditioned`; another name is refused, naming the argument."""
+    cli = run_cli("bem", "rough", *SPEC, "--contact-modulus", 1, "--grid", 32, "--seed", 3,
+                  "--work-of-adhesion", 2e-4, "--adhesion-range", 0.05,
+                  "--mean-gap", "4e-3,8e-3", "--adhesive-iteration", "preconditioned")
+    r = persson.bem_rough(1.0, spectrum=spectrum(), grid=32, seed=3, work_of_adhesion=2e-4,
+                          adhesion_range=0.05, mean_gap=[4e-3, 8e-3],
+                          adhesive_iteration="preconditioned")
+    same(r, cli)
+    with pytest.raises(ValueError, match="adhesive_iteration"):
+        persson.bem_rough(1.0, spectrum=spectrum(), grid=32, work_of_adhesion=2e-4,
+                          adhesion_range=0.05, mean_gap=[4e-3], adhesive_iteration="fast")
+
+
 def test_adhesive_free_boundary_matches_cli():
     """`bem_rough(boundary="free", approach=[…])` is `bem rough --boundary free --approach`;
     mean_gap on the free boundary is refused, naming it."""

@@ -216,6 +216,36 @@ fn short_cohesive_length_is_warned_of() {
     assert!(message.contains("cohesive length"), "{message}");
 }
 
+/// `--adhesive-iteration preconditioned` on a Maugis–Dugdale path whose
+/// cohesive zone the grid resolves (ℓ = E*ρ²/Δγ = 2 = 128 spacings): the
+/// default (plain) iteration's answer (measured: p̄ within 2e-11 relative,
+/// the same contact nodes) in fewer iterations (measured 66 against 251).
+#[test]
+fn preconditioned_iteration_is_the_plain_answer_where_the_zone_is_resolved() {
+    let path = |iteration: &str| {
+        run(&[
+            "--work-of-adhesion",
+            "2e-4",
+            "--adhesion-range",
+            "0.02",
+            "--mean-gap",
+            "4e-3,2e-3,8e-3",
+            "--adhesive-iteration",
+            iteration,
+            "--json",
+        ])
+    };
+    let (plain, pre) = (path("auto"), path("preconditioned"));
+    let points = |r: &Value| r["points"].as_array().expect("points").clone();
+    let iterations = |r: &Value| -> f64 { points(r).iter().map(|p| f(p, "iterations")).sum() };
+    for (a, b) in points(&plain).iter().zip(&points(&pre)) {
+        let (pa, pb) = (f(a, "nominal_pressure"), f(b, "nominal_pressure"));
+        assert!((pa - pb).abs() <= 1e-8 * pa.abs(), "{a} {b}");
+        assert_eq!(a["contact_fraction"], b["contact_fraction"]);
+    }
+    assert!(2.0 * iterations(&pre) < iterations(&plain));
+}
+
 /// Bad input names its flag and never panics.
 #[test]
 fn bad_adhesion_input_names_the_flag() {

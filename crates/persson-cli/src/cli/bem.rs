@@ -303,7 +303,9 @@ fn rough_surface(
 
 /// `bem rough --work-of-adhesion`: the adhesive BEM along the --mean-gap path.
 fn adhesive_rough(a: &RoughArgs, work_of_adhesion: f64) -> anyhow::Result<()> {
-    use persson_studies::bem_detail::{adhesive_controlled_path, adhesive_warnings, PathControl};
+    use persson_studies::bem_detail::{
+        adhesive_controlled_path, adhesive_warnings, AdhesiveIteration, PathControl,
+    };
     let ad = &a.adhesion;
     if !(work_of_adhesion.is_finite() && work_of_adhesion > 0.0) {
         anyhow::bail!("--work-of-adhesion {work_of_adhesion}: must be finite and > 0 (J/m²)");
@@ -352,6 +354,7 @@ fn adhesive_rough(a: &RoughArgs, work_of_adhesion: f64) -> anyhow::Result<()> {
         (kind, work_of_adhesion, range),
         control,
         &options,
+        AdhesiveIteration::parse(&ad.adhesive_iteration)?,
     )
     .map_err(|e| match super::args::flag_of(&e, ADHESION_FLAGS) {
         Some(flag) => anyhow::anyhow!("{flag}: {e}"),

@@ -37,7 +37,8 @@ use serde::Serialize;
 
 pub use adhesive::{
     adhesive_controlled_path, adhesive_path, adhesive_sphere, adhesive_warnings, sphere_warnings,
-    AdhesiveBemReport, AdhesiveSphereReport, LawKind, PathControl, SpherePullOff,
+    AdhesiveBemReport, AdhesiveIteration, AdhesiveSphereReport, LawKind, PathControl,
+    SpherePullOff,
 };
 pub use section::{hertz_section, VerticalSection};
 pub use solves::{indexed, Details, StressMap, SubsurfaceOptions, DEFAULT_POISSON};

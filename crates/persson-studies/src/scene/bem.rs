@@ -253,6 +253,7 @@ pub fn bem_adhesion(
         ),
         control,
         &options,
+        crate::bem_detail::AdhesiveIteration::Auto,
     )
     .map_err(named)
 }
