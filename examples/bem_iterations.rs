@@ -13,7 +13,8 @@
 //! shortest time: on a shared machine the least disturbed run. `--cpu`
 //! reports the process's CPU time of each solve (user + system, from
 //! /proc/self/stat, Linux; 10 ms ticks) instead of the solve's wall time:
-//! it does not count the time the process waits for a core.
+//! it does not count the time the process waits for a core. `--trace`
+//! prints ε and A/A0 of every iteration to stderr.
 //!
 //! Run it on one thread (the solver is single-threaded; nothing else should
 //! run on the core). The surface is synthesised once per grid.
@@ -57,6 +58,7 @@ fn main() -> persson::Result<()> {
         .unwrap_or(1e-10);
     let methods = list("--methods", &["plain", "preconditioned"]);
     let cpu = args.iter().any(|a| a == "--cpu");
+    let trace = args.iter().any(|a| a == "--trace");
     // Process CPU seconds (utime + stime of /proc/self/stat, in ticks of 10 ms).
     let cpu_seconds = || -> f64 {
         let stat = std::fs::read_to_string("/proc/self/stat").unwrap_or_default();
@@ -112,8 +114,19 @@ fn main() -> persson::Result<()> {
                         let op = Operator::new(boundary, n, 1.0, 1.0)?;
                         let mut solver = Solver::with_method(op, method);
                         let before = cpu_seconds();
-                        let mut s =
-                            solver.solve(&surf.heights, Control::MeanPressure(load), &opts)?;
+                        let mut s = solver.solve_observed(
+                            &surf.heights,
+                            Control::MeanPressure(load),
+                            &opts,
+                            &mut |it| {
+                                if trace {
+                                    eprintln!(
+                                        "{case} {n} {load} {m}: iteration {} ε {:.3e} A/A0 {:.6}",
+                                        it.iteration, it.residual, it.contact_fraction
+                                    );
+                                }
+                            },
+                        )?;
                         if cpu {
                             s.seconds = cpu_seconds() - before;
                         }

@@ -231,7 +231,15 @@
 //! What is left is the active set: with the correction, F changes for the
 //! last time at iteration 26 of 44 at 1024² and 48 of 63 at 2048²
 //! (σ0 = 0.05 E*, numpy replica), so the 2048² solve at 0.05 E* is 3
-//! iterations above the goal of 60.
+//! iterations above the goal of 60. At 2048² the free boundary takes 117
+//! and the saturated solve 74 at 0.05 E* (57 and 42 at 0.005 E*): the free
+//! solve's set is fixed from iteration 69 and ε then falls by only 0.82
+//! per iteration; its preconditioner (𝒦 of the padded grid on the window)
+//! lacks the Schur term of the padding, held at p = 0 like the non-contact
+//! nodes, which the edge correction does not cover (docs/bem.md). A cold
+//! start from the clipped full-contact pressure max(c + 𝒦h, 0) saved 1–4
+//! iterations periodic and saturated but cost 4–13 on the free boundary at
+//! 0.05 E* (256²–1024²); not adopted.
 //!
 //! # Stall and fallback
 //! ε is not monotone in a projected CG. When the best ε has not halved
