@@ -209,7 +209,7 @@ pub enum Warning {
     },
     /// The adhesive BEM's grid does not resolve the cohesive zone: the range
     /// ρ is below one grid spacing L/N, or the cohesive length ℓ = E*Δγ/σ_c²
-    /// below [`persson::bem::adhesive::RESOLVED_COHESIVE_LENGTH`] spacings. The
+    /// below 8 spacings (`persson::bem::adhesive::RESOLVED_COHESIVE_LENGTH`). The
     /// answer depends on the grid and, for Maugis–Dugdale, on the iteration's
     /// path (the discrete energy has several stationary points).
     CohesiveZoneUnresolved {

@@ -226,10 +226,10 @@ impl fmt::Display for Warning {
                 } else {
                     write!(
                         f,
-                        "the cohesive length E*Δγ/σ_c² = E*ρ²/Δγ = {} is below {} grid \
+                        "the cohesive length E*Δγ/σ_c² = E*ρ²/Δγ = {} spans only {:.1} grid \
                          spacings L/N = {}",
                         n(*cohesive_length),
-                        persson::bem::adhesive::RESOLVED_COHESIVE_LENGTH,
+                        cohesive_length / grid_spacing,
                         n(*grid_spacing)
                     )?;
                 }
