@@ -236,7 +236,11 @@
 //! solve's set is fixed from iteration 69 and ε then falls by only 0.82
 //! per iteration; its preconditioner (𝒦 of the padded grid on the window)
 //! lacks the Schur term of the padding, held at p = 0 like the non-contact
-//! nodes, which the edge correction does not cover (docs/bem.md). A cold
+//! nodes, which the edge correction does not cover: in a numpy replica
+//! that gives this loop's free counts exactly (`examples/bem_free_padding.py`),
+//! w also on the padding within R of the window takes the 2048² solve from
+//! 117 to 81 iterations (1024²: 58 to 57); not yet here, since the padded
+//! convolution keeps only the window's rows (docs/bem.md). A cold
 //! start from the clipped full-contact pressure max(c + 𝒦h, 0) saved 1–4
 //! iterations periodic and saturated but cost 4–13 on the free boundary at
 //! 0.05 E* (256²–1024²); not adopted.
