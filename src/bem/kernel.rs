@@ -86,7 +86,17 @@ pub struct Operator {
     /// Real-space periodic kernel `k[(i − i')·N + (j − j')]` (periodic only;
     /// empty for the free operator), for sparse updates.
     spatial: Vec<f64>,
+    /// Rows and columns of the padding kept on each side of the window in
+    /// the transform ([`FREE_MARGIN`] free, 0 periodic): the window sits at
+    /// offset `(margin, margin)` of the padded grid.
+    margin: usize,
 }
+
+/// Nodes of the padding on each side of the window whose stiffness response
+/// the free operator returns ([`Operator::apply_stiffness_rows_with_margin`]):
+/// the reach of the preconditioner's edge correction
+/// ([`super::preconditioned`]).
+pub(crate) const FREE_MARGIN: usize = 3;
 
 impl Operator {
     /// Plan the operator for an `n × n` grid of side `size` and modulus `e_star`.
@@ -99,11 +109,13 @@ impl Operator {
         if n < 2 {
             return Err(Error::invalid("grid", n as f64, ">= 2"));
         }
-        let nf = match boundary {
-            Boundary::Periodic => n,
-            Boundary::Free => 2 * n,
+        let (nf, margin) = match boundary {
+            Boundary::Periodic => (n, 0),
+            Boundary::Free => (2 * n, FREE_MARGIN.min(n / 2)),
         };
-        let mut fft = Fft2::new(nf, n)?;
+        // Free: the window's N rows and `margin` rows of padding each side
+        // (their response is returned; they are zero on input).
+        let mut fft = Fft2::new(nf, n + 2 * margin)?;
         let multiplier = match boundary {
             Boundary::Periodic => periodic_multiplier(n, size, e_star),
             Boundary::Free => free_multiplier(&mut fft, size, e_star)?,
@@ -116,6 +128,7 @@ impl Operator {
             fft,
             multiplier,
             spatial: Vec::new(),
+            margin,
         };
         if boundary == Boundary::Periodic {
             // The kernel is the response to a unit pressure at node (0, 0).
@@ -253,7 +266,43 @@ impl Operator {
         fill: &mut dyn FnMut(usize, &mut [f64]),
         emit: &mut dyn FnMut(usize, &[f64]),
     ) -> Result<()> {
-        let n = self.n;
+        let (n, r) = (self.n, self.margin);
+        self.apply_symbol_rows_with_margin(symbol, fill, &mut |i, row| {
+            if let Ok(i) = usize::try_from(i) {
+                if i < n {
+                    emit(i, &row[r..r + n]);
+                }
+            }
+        })
+    }
+
+    /// `p = 𝒦 u` (with `mean` for the q = 0 mode, as
+    /// [`Operator::apply_stiffness_rows_with_mean`]), returning besides the
+    /// window the response on the margin of the padding: `emit(i, row)`
+    /// receives grid rows `i = −m … N + m − 1` (m = [`FREE_MARGIN`] free, 0
+    /// periodic), each with the `N + 2m` columns `−m … N + m − 1`. Inputs
+    /// are zero on the padding, as in every free application.
+    pub(crate) fn apply_stiffness_rows_with_margin(
+        &mut self,
+        mean: f64,
+        fill: &mut dyn FnMut(usize, &mut [f64]),
+        emit: &mut dyn FnMut(isize, &[f64]),
+    ) -> Result<()> {
+        self.apply_symbol_rows_with_margin(Symbol::Stiffness { mean }, fill, emit)
+    }
+
+    /// Rows of padding kept on each side of the window (0 periodic).
+    pub(crate) fn margin(&self) -> usize {
+        self.margin
+    }
+
+    fn apply_symbol_rows_with_margin(
+        &mut self,
+        symbol: Symbol,
+        fill: &mut dyn FnMut(usize, &mut [f64]),
+        emit: &mut dyn FnMut(isize, &[f64]),
+    ) -> Result<()> {
+        let (n, r) = (self.n, self.margin);
         let nf = self.fft.n();
         let half = nf / 2 + 1;
         let multiplier = &self.multiplier;
@@ -262,8 +311,13 @@ impl Operator {
         let (e_star, boundary) = (self.e_star, self.boundary);
         self.fft.convolve(
             &mut |i, row| {
-                fill(i, &mut row[..n]);
-                row[n..].fill(0.0);
+                if (r..r + n).contains(&i) {
+                    row[..r].fill(0.0);
+                    fill(i - r, &mut row[r..r + n]);
+                    row[r + n..].fill(0.0);
+                } else {
+                    row.fill(0.0);
+                }
             },
             &mut |kj, col| {
                 let m = &multiplier[kj * half..(kj + 1) * half];
@@ -295,7 +349,7 @@ impl Operator {
                     }
                 }
             },
-            Some(&mut |i, row| emit(i, &row[..n])),
+            Some(&mut |i, row| emit(i as isize - r as isize, &row[..n + 2 * r])),
         )
     }
 
@@ -395,6 +449,11 @@ fn free_multiplier(fft: &mut Fft2, size: f64, e_star: f64) -> Result<Vec<f64>> {
     for part in 0..2 {
         fft.convolve(
             &mut |i, row| {
+                // Rows past N (the operator's margin) are zero.
+                if i >= n {
+                    row.fill(0.0);
+                    return;
+                }
                 let si = signed(i + part * n, nf) as f64;
                 for (j, v) in row.iter_mut().enumerate() {
                     *v = c * love_cell(si, signed(j, nf) as f64);

@@ -698,6 +698,9 @@ fn direction_row(
 /// Half-width R of the edge correction's stencil (a (2R+1)² window).
 const EDGE_RADIUS: usize = 3;
 
+// The free operator returns 𝒦r on a margin as wide as the stencil's reach.
+const _: () = assert!(super::kernel::FREE_MARGIN == EDGE_RADIUS);
+
 /// Weight ω of the edge correction (`X = ω D⁻¹ ≈ 𝒦_NN⁻¹`).
 const EDGE_WEIGHT: f64 = 1.5;
 
@@ -706,10 +709,18 @@ const EDGE_ROWS: usize = 2 * EDGE_RADIUS + 1;
 
 /// The edge correction of the preconditioner: `z = [F](𝒦r − 𝒦_loc w)`,
 /// `w = ω [N] 𝒦r / d` (module docs), row by row with a ring of the
-/// 2R + 1 rows of w that a row of z needs.
+/// 2R + 1 rows of w that a row of z needs. With the free boundary the
+/// padding is held at p = 0 like the nodes of N: w there is its 𝒦r, which
+/// the operator returns on a margin of R nodes around the window.
 pub(crate) struct Edge {
     n: usize,
-    periodic: bool,
+    sides: Sides,
+    /// Free: 𝒦r on the margin's rows −R … −1 and N … N + R − 1 (each
+    /// `N + 2R` wide, columns −R … N + R − 1).
+    band: Vec<f64>,
+    /// Free: 𝒦r on the margin's columns of rows 0 … N − 1 (R left, then R
+    /// right, per row).
+    flank: Vec<f64>,
     /// `ω k(dy, dx) / d` for |dy|, |dx| ≤ R (0 at the centre).
     coeff: [[f64; EDGE_ROWS]; EDGE_ROWS],
     /// Rows of w, each padded by R on both sides (wrapped periodic, zero
@@ -772,9 +783,21 @@ impl Edge {
         }
         coeff[EDGE_RADIUS][EDGE_RADIUS] = 0.0;
         let slots = EDGE_ROWS + EDGE_RADIUS;
+        let sides = match (f.op.boundary(), f.op.margin()) {
+            (super::Boundary::Periodic, _) => Sides::Periodic,
+            (super::Boundary::Free, EDGE_RADIUS) => Sides::Padding,
+            (super::Boundary::Free, _) => Sides::Zero,
+        };
+        let margin = if sides == Sides::Padding {
+            EDGE_RADIUS
+        } else {
+            0
+        };
         Ok(Some(Edge {
             n,
-            periodic: f.op.boundary() == super::Boundary::Periodic,
+            sides,
+            band: vec![0.0; 2 * margin * (n + 2 * margin)],
+            flank: vec![0.0; 2 * margin * n],
             coeff,
             rows: vec![0.0; slots * (n + 2 * EDGE_RADIUS)],
             nonzero: vec![false; slots * n.div_ceil(BLOCK)],
@@ -784,7 +807,8 @@ impl Edge {
     }
 
     /// Write w of grid row `i` (−R ≤ i < n + R; outside the grid: the
-    /// periodic image, or zero) into slot `slot`, from z = 𝒦r off F.
+    /// periodic image, the padding's 𝒦r, or zero) into slot `slot`, from
+    /// z = 𝒦r off F.
     #[allow(clippy::too_many_arguments)]
     fn load(&mut self, slot: usize, i: isize, p: &[f64], g: &[f64], z: &[f64], g_bar: f64, y: f64) {
         let (n, r) = (self.n, EDGE_RADIUS);
@@ -792,7 +816,7 @@ impl Edge {
         let ni = n as isize;
         let src = if (0..ni).contains(&i) {
             Some(i as usize)
-        } else if self.periodic {
+        } else if self.sides == Sides::Periodic {
             Some(i.rem_euclid(ni) as usize)
         } else {
             None
@@ -812,8 +836,19 @@ impl Edge {
         let row = &mut rows[slot * width..(slot + 1) * width];
         let flag = &mut nonzero[slot * nb..(slot + 1) * nb];
         if !flags {
-            row.fill(0.0);
-            flag.fill(false);
+            if self.sides == Sides::Padding {
+                // A row of the padding: all of it is held at p = 0.
+                let b = if i < 0 {
+                    i + r as isize
+                } else {
+                    i - ni + r as isize
+                } as usize;
+                row.copy_from_slice(&self.band[b * width..(b + 1) * width]);
+                flag.fill(true);
+            } else {
+                row.fill(0.0);
+                flag.fill(false);
+            }
             return;
         }
         let k = out * n..(out + 1) * n;
@@ -831,12 +866,20 @@ impl Edge {
             }
             *fl = any;
         }
-        if self.periodic {
-            row.copy_within(n..n + r, 0);
-            row.copy_within(r..2 * r, n + r);
-        } else {
-            row[..r].fill(0.0);
-            row[n + r..].fill(0.0);
+        match self.sides {
+            Sides::Periodic => {
+                row.copy_within(n..n + r, 0);
+                row.copy_within(r..2 * r, n + r);
+            }
+            Sides::Padding => {
+                let flank = &self.flank[out * 2 * r..(out + 1) * 2 * r];
+                row[..r].copy_from_slice(&flank[..r]);
+                row[n + r..].copy_from_slice(&flank[r..]);
+            }
+            Sides::Zero => {
+                row[..r].fill(0.0);
+                row[n + r..].fill(0.0);
+            }
         }
     }
 
@@ -855,7 +898,9 @@ impl Edge {
         let z = &mut *f.response;
         let mut acc = Precond::default();
         let mut fill_sums = [0.0f64; 4];
-        f.op.apply_stiffness_rows_with_mean(
+        let r = f.op.margin();
+        let (band, flank) = (&mut self.band, &mut self.flank);
+        f.op.apply_stiffness_rows_with_margin(
             mean_stiffness,
             &mut |i, row| {
                 let k = i * n..(i + 1) * n;
@@ -864,7 +909,27 @@ impl Edge {
                     *a += b;
                 }
             },
-            &mut |i, row| z[i * n..(i + 1) * n].copy_from_slice(row),
+            &mut |i, row| match usize::try_from(i) {
+                Ok(i) if i < n => {
+                    z[i * n..(i + 1) * n].copy_from_slice(&row[r..r + n]);
+                    if !flank.is_empty() {
+                        let out = &mut flank[i * 2 * r..(i + 1) * 2 * r];
+                        out[..r].copy_from_slice(&row[..r]);
+                        out[r..].copy_from_slice(&row[n + r..]);
+                    }
+                }
+                // The margin's rows (free only): −R … −1, then N … N + R − 1.
+                _ if !band.is_empty() => {
+                    let b = if i < 0 {
+                        i + r as isize
+                    } else {
+                        i - n as isize + r as isize
+                    };
+                    let width = n + 2 * r;
+                    band[b as usize * width..(b as usize + 1) * width].copy_from_slice(row);
+                }
+                _ => {}
+            },
         )?;
         [acc.free, acc.sum_r, acc.r_t, acc.sum_t] = fill_sums;
         // z holds 𝒦r; w is read from it off F, where z is written only
@@ -892,7 +957,7 @@ impl Edge {
                 )
             });
             let mask = &self.mask[slot(i as isize) * n..(slot(i as isize) + 1) * n];
-            stencil_row(&self.coeff, &window, self.periodic, mask, &mut self.acc);
+            stencil_row(&self.coeff, &window, self.sides, mask, &mut self.acc);
             let s = restrict_corrected(mask, &g[k.clone()], g_bar, &self.acc, &mut z[k]);
             r_z += s[0];
             sum_z += s[1];
@@ -926,6 +991,17 @@ fn restrict_corrected(m: &[f64], g: &[f64], g_bar: f64, c: &[f64], z: &mut [f64]
 /// Nodes per block of [`stencil_row`] (the block's sums stay in registers).
 const BLOCK: usize = 8;
 
+/// What lies beyond the grid's sides in the edge correction.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Sides {
+    /// The periodic images of the grid.
+    Periodic,
+    /// The free boundary's padding, with its 𝒦r on a margin of R nodes.
+    Padding,
+    /// Nothing (free, on an operator without a margin).
+    Zero,
+}
+
 /// `acc = Σ c(dy, dx) w(i + dy, j + dx)` of one row over the window of
 /// 2R + 1 rows of w (padded by R, with their blocks' non-zero flags);
 /// blocks without a free node (`mask` = m_F of the row) or without a non-zero w within
@@ -933,7 +1009,7 @@ const BLOCK: usize = 8;
 fn stencil_row(
     coeff: &[[f64; EDGE_ROWS]; EDGE_ROWS],
     window: &[(&[f64], &[bool]); EDGE_ROWS],
-    periodic: bool,
+    sides: Sides,
     mask: &[f64],
     acc: &mut [f64],
 ) {
@@ -945,17 +1021,14 @@ fn stencil_row(
         let mut a = [0.0f64; BLOCK];
         let any_free = mask[j0..j0 + len].iter().any(|&m| m > 0.0);
         // R < BLOCK: the window's columns lie in blocks b − 1 … b + 1.
+        let beyond = |f: bool| match sides {
+            Sides::Periodic => f,
+            Sides::Padding => true,
+            Sides::Zero => false,
+        };
         let near = |f: &[bool]| {
-            let left = if b > 0 {
-                f[b - 1]
-            } else {
-                periodic && f[nb - 1]
-            };
-            let right = if b + 1 < nb {
-                f[b + 1]
-            } else {
-                periodic && f[0]
-            };
+            let left = if b > 0 { f[b - 1] } else { beyond(f[nb - 1]) };
+            let right = if b + 1 < nb { f[b + 1] } else { beyond(f[0]) };
             left | f[b] | right
         };
         if any_free && window.iter().any(|(_, f)| near(f)) {
@@ -1009,12 +1082,31 @@ mod tests {
         x
     }
 
+    /// `𝒦 u` on the window and its margin: rows and columns −m … N + m − 1.
+    fn stiffness_with_margin(op: &mut Operator, mean: f64, u: &[f64]) -> Vec<f64> {
+        let (n, m) = (op.n(), op.margin());
+        let w = n + 2 * m;
+        let mut x = vec![0.0; w * w];
+        op.apply_stiffness_rows_with_margin(
+            mean,
+            &mut |i, row| row.copy_from_slice(&u[i * n..(i + 1) * n]),
+            &mut |i, row| {
+                let i = (i + m as isize) as usize;
+                x[i * w..(i + 1) * w].copy_from_slice(row)
+            },
+        )
+        .unwrap();
+        x
+    }
+
     /// The edge-corrected preconditioner against direct sums with the
     /// operator's own entries: `z = [F](𝒦r − ω Σ_j 𝒦(x, j) [N]𝒦r(j) / d)`
     /// over the nodes j within R of x (each column 𝒦(·, j) from 𝒦 of a unit
     /// pressure at j, so neither the stencil nor the row ring is reused),
-    /// periodic (wrapping) and free (no wrap), on a grid whose rows are not
-    /// a whole number of blocks.
+    /// periodic (wrapping) and free (no wrap; j also on the padding, where
+    /// every node is held at p = 0: 𝒦(x, j) = 𝒦(j, x) from 𝒦 of a unit
+    /// pressure at x, read on the margin), on a grid whose rows are not a
+    /// whole number of blocks.
     #[test]
     fn edge_correction_equals_direct_sums() {
         for boundary in [Boundary::Periodic, Boundary::Free] {
@@ -1071,6 +1163,31 @@ mod tests {
                             z_ref[x] -= m[x] * column[x] * w;
                         }
                     }
+                }
+                if boundary == Boundary::Free {
+                    let mg = f.op.margin();
+                    assert_eq!(mg, EDGE_RADIUS);
+                    let wd = n + 2 * mg;
+                    let kr_margin = stiffness_with_margin(f.op, mean, &r);
+                    let mut padding_terms = 0;
+                    for x in 0..n * n {
+                        let (xi, xj) = ((x / n + mg) as i64, (x % n + mg) as i64);
+                        unit.fill(0.0);
+                        unit[x] = 1.0;
+                        let row = stiffness_with_margin(f.op, mean, &unit);
+                        for a in (xi - reach).max(0)..=(xi + reach).min(wd as i64 - 1) {
+                            for b in (xj - reach).max(0)..=(xj + reach).min(wd as i64 - 1) {
+                                let inside = |v: i64| (mg as i64..(n + mg) as i64).contains(&v);
+                                if inside(a) && inside(b) {
+                                    continue;
+                                }
+                                let j = a as usize * wd + b as usize;
+                                z_ref[x] -= m[x] * row[j] * EDGE_WEIGHT * kr_margin[j] / d;
+                                padding_terms += 1;
+                            }
+                        }
+                    }
+                    assert!(padding_terms > 0);
                 }
                 let mut edge = Edge::new(&mut ws, mean).unwrap().expect("grid ≥ 8");
                 let pc = edge.precondition(&mut ws, g_bar, y, mean).unwrap();
