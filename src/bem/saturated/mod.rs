@@ -80,7 +80,7 @@ use projection::{fill_nearest, project_load};
 
 use super::elastic::{self, Stage};
 use super::kernel::Operator;
-use super::preconditioned::{direction_and_response, precondition, Cap, Conjugacy, Stall};
+use super::preconditioned::{direction_and_response, precondition, Cap, Conjugacy, Edge, Stall};
 use super::problem::{Control, Method, Options, Problem};
 use super::solution::{Fallback, Iteration, Solution};
 use super::workspace::{Displacement, Finish, Workspace};
@@ -130,7 +130,7 @@ pub(crate) fn solve(
             }
             Stage::Capped(k) => (k, None),
         };
-    let mut run = Run::new(problem, ws, y, k0, method);
+    let mut run = Run::new(problem, ws, y, k0, method)?;
     run.fallback = fallback;
     let (residual, g_bar) = loop {
         run.gap(problem, ws)?;
@@ -194,6 +194,9 @@ struct Run {
     k: usize,
     /// The preconditioned steps' state while they run (`None`: plain steps).
     preconditioned: Option<Preconditioned>,
+    /// The preconditioner's edge correction (`None`: plain steps, or a grid
+    /// too small for its stencil).
+    edge: Option<Edge>,
     fallback: Option<Fallback>,
     conjugate: bool,
     g_old: f64,
@@ -212,7 +215,16 @@ struct Preconditioned {
 impl Run {
     /// Start from the elastic pressure in the workspace, clipped at σY and
     /// put back on the load.
-    fn new(problem: &Problem, ws: &mut Workspace, y: f64, k0: usize, method: Method) -> Self {
+    ///
+    /// # Errors
+    /// Internal FFT errors only.
+    fn new(
+        problem: &Problem,
+        ws: &mut Workspace,
+        y: f64,
+        k0: usize,
+        method: Method,
+    ) -> Result<Self> {
         let target = problem.target_total();
         let preconditioned = match method {
             Method::Preconditioned { stall_iterations } => Some(Preconditioned {
@@ -222,23 +234,28 @@ impl Run {
             }),
             Method::Plain => None,
         };
+        let edge = match &preconditioned {
+            Some(pre) => Edge::new(ws, pre.mean_stiffness)?,
+            None => None,
+        };
         let f = ws.fields();
         f.pressure.iter_mut().for_each(|v| *v = v.min(y));
         if let Some(total) = target {
             project_load(f.pressure, y, total);
         }
         f.direction.fill(0.0);
-        Run {
+        Ok(Run {
             y,
             target,
             k: k0,
             preconditioned,
+            edge,
             fallback: None,
             conjugate: false,
             g_old: 1.0,
             best: f64::INFINITY,
             stalled: 0,
-        }
+        })
     }
 
     /// `r = 𝒢p` and the gap `g = r − (h − o)`, fresh every iteration.
@@ -308,7 +325,10 @@ impl Run {
             return Ok(true);
         }
         let (y, g_bar) = (self.y, m.g_bar);
-        let pc = precondition(ws, g_bar, y, pre.mean_stiffness)?;
+        let pc = match self.edge.as_mut() {
+            Some(edge) => edge.precondition(ws, g_bar, y, pre.mean_stiffness)?,
+            None => precondition(ws, g_bar, y, pre.mean_stiffness)?,
+        };
         let Some((beta, mu)) = pre.conjugacy.next(&pc, self.target.is_some()) else {
             return Ok(false);
         };
