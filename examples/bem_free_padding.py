@@ -1,17 +1,20 @@
-"""Prototype of issue 22's next step for the free boundary: the edge correction
-of the preconditioner extended over a band of the padding (measured, not yet in
-the solver; see docs/bem.md and the module docs of `persson::bem::preconditioned`).
+"""Prototype of issue 22's step for the free boundary: the edge correction of
+the preconditioner extended over a band of the padding (measured here first, now
+in the solver, whose counts mode "pad" reproduces; see docs/bem.md and the module
+docs of `persson::bem::preconditioned`).
 
 numpy replica of `src/bem/preconditioned.rs` on the free boundary (load control,
 E* = L = 1): the compliance is Love's cell kernel on the zero-padded 2N grid,
 restricted to the N x N window; the preconditioner is the inverse of that 2N
 circulant restricted to the window, corrected at the edges of the free set F by
 z = [F](Kr - K_loc w), w = [N] Kr (K_loc: omega/d times K's 7 x 7 kernel, 0 at
-the centre). It gives the solver's iteration counts exactly (31 / 42 / 58 / 117
-at 256 / 512 / 1024 / 2048, sigma0 = 0.05 E*). Modes:
+the centre). It gave the solver's iteration counts exactly before the padding was
+corrected (31 / 42 / 58 / 117 at 256 / 512 / 1024 / 2048, sigma0 = 0.05 E*,
+mode "edge") and gives them now (31 / 42 / 57 / 81, mode "pad"). Modes:
 
     none   the uncorrected preconditioner z = [F] K r
-    edge   the solver's edge correction (w on the window's nodes held at p = 0)
+    edge   the solver's correction up to commit c63322d (w on the window's
+           nodes held at p = 0 only)
     pad    the same, with w also on the padding within 3 nodes of the window:
            the padding is held at p = 0 like the non-contact nodes, and the exact
            inverse of the window's compliance lacks its Schur term too

@@ -49,15 +49,19 @@
 //! definite preconditioner; a direction that does not descend restarts β
 //! and then hands over to the plain loop (below), which none of the rough
 //! cases measured (docs/bem.md) needed. The saturated
-//! stage (box constraints, [`super::saturated`]) keeps the uncorrected
-//! preconditioner (`precondition`); its elastic stage is this loop.
+//! stage (box constraints, [`super::saturated`]) takes the same corrected
+//! preconditioner, with the nodes held at σY in N beside those held at 0
+//! (the Schur term is the same); its elastic stage is this loop.
 //! Overlapping nodes at `p = 0` belong to the free set, so they enter through
 //! the preconditioned step itself (not by the plain solver's `p = −τ g`
 //! re-entry) and conjugacy is kept across active-set changes; measured
 //! (rough case, a numpy prototype), restarting β at each change instead
 //! costs 30–60 % more iterations. The free boundary uses 𝒦 of the 2N
-//! padded grid (an approximate inverse); its correction takes the nodes of
-//! the N × N window only (the padding's 𝒦r is not formed).
+//! padded grid (an approximate inverse of the window's compliance); the
+//! padding is held at p = 0 just as the non-contact nodes are, so its nodes
+//! within R of the window belong to N too: the operator returns 𝒦r on that
+//! margin ([`super::kernel::FREE_MARGIN`]; the pruned transform keeps N + 2R
+//! of the 2N rows) and w there is that 𝒦r.
 //!
 //! Two convolutions per iteration (𝒦r and 𝒢t) and the correction's
 //! stencil pass (sums of the rows i ± dy, then of the columns j ± dx:
@@ -70,7 +74,8 @@
 //! Nothing beyond the plain loop's: per solve, the four N² fields of the
 //! [`Workspace`] (pressure p, gap g, direction t, response — 𝒦r, then 𝒢t),
 //! the operator's buffers (2.25 N² values periodic: row spectra, multiplier,
-//! real-space kernel; 3 N² free: padded row spectra and multiplier — 𝒦 uses
+//! real-space kernel; 3 N² free: padded row spectra (N + 2R rows) and
+//! multiplier, plus 2R rows and columns of the margin's 𝒦r — 𝒦 uses
 //! 𝒢's multiplier, no table of its own) and the heights (N², the caller's):
 //! 7.25 N² doubles periodic, 8 N² free, plus the sparse-correction lists
 //! (≤ 2 log₂ N² entries) and the correction's ring (10 rows of w and of
@@ -231,19 +236,16 @@
 //! What is left is the active set: with the correction, F changes for the
 //! last time at iteration 26 of 44 at 1024² and 48 of 63 at 2048²
 //! (σ0 = 0.05 E*, numpy replica), so the 2048² solve at 0.05 E* is 3
-//! iterations above the goal of 60. At 2048² the free boundary takes 117
-//! and the saturated solve 74 at 0.05 E* (57 and 42 at 0.005 E*): the free
-//! solve's set is fixed from iteration 69 and ε then falls by only 0.82
-//! per iteration; its preconditioner (𝒦 of the padded grid on the window)
-//! lacks the Schur term of the padding, held at p = 0 like the non-contact
-//! nodes, which the edge correction does not cover: in a numpy replica
-//! that gives this loop's free counts exactly (`examples/bem_free_padding.py`),
-//! w also on the padding within R of the window takes the 2048² solve from
-//! 117 to 81 iterations (1024²: 58 to 57); not yet here, since the padded
-//! convolution keeps only the window's rows (docs/bem.md). A cold
+//! iterations above the goal of 60. ω = 1.3 / 1.4 / 1.6 gave 64 / 64 / 63
+//! there, and a single restart of β once ε ≤ 0.1 / 0.01 / 1e-3 62 / 62 / 63.
+//! The free boundary took 117 at 2048², σ0 = 0.05 E*, before the correction
+//! reached into the padding: its contact set was fixed from iteration 69 and
+//! ε then fell by only 0.82 per iteration, the padding's Schur term missing
+//! (found in the numpy replica `examples/bem_free_padding.py`, which gives
+//! this loop's free counts exactly). With the padding's margin: 81. A cold
 //! start from the clipped full-contact pressure max(c + 𝒦h, 0) saved 1–4
 //! iterations periodic and saturated but cost 4–13 on the free boundary at
-//! 0.05 E* (256²–1024²); not adopted.
+//! 0.05 E* (256²–1024², before the margin); not adopted.
 //!
 //! # Stall and fallback
 //! ε is not monotone in a projected CG. When the best ε has not halved
