@@ -60,7 +60,7 @@
 //! padded grid (an approximate inverse of the window's compliance); the
 //! padding is held at p = 0 just as the non-contact nodes are, so its nodes
 //! within R of the window belong to N too: the operator returns 𝒦r on that
-//! margin ([`super::kernel::FREE_MARGIN`]; the pruned transform keeps N + 2R
+//! margin (R nodes wide; the pruned transform keeps N + 2R
 //! of the 2N rows) and w there is that 𝒦r.
 //!
 //! Two convolutions per iteration (𝒦r and 𝒢t) and the correction's
