@@ -242,7 +242,9 @@
 //! reached into the padding: its contact set was fixed from iteration 69 and
 //! ε then fell by only 0.82 per iteration, the padding's Schur term missing
 //! (found in the numpy replica `examples/bem_free_padding.py`, which gives
-//! this loop's free counts exactly). With the padding's margin: 81. A cold
+//! this loop's free counts exactly). With the padding's margin: 81; a
+//! weight of its own on the margin (0.67 / 1.33 / 2 × ω) gave 85 / 87 / 79,
+//! no consistent gain, so the margin takes ω like the window. A cold
 //! start from the clipped full-contact pressure max(c + 𝒦h, 0) saved 1–4
 //! iterations periodic and saturated but cost 4–13 on the free boundary at
 //! 0.05 E* (256²–1024², before the margin); not adopted.
