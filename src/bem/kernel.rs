@@ -612,6 +612,72 @@ mod tests {
         }
     }
 
+    /// The free stiffness on the window and its margin against the inverse
+    /// of the 2N circulant computed by direct DFTs (no pruned transform, no
+    /// shift): every node of the window and margin, for unit pressures at
+    /// corners and edges of the window, where the margin's values wrap.
+    #[test]
+    fn free_stiffness_margin_equals_the_circulant_inverse() {
+        use std::f64::consts::TAU;
+        let (n, l, e) = (8usize, 1.5, 2.0);
+        let m2 = 2 * n;
+        let c = l / n as f64 / (std::f64::consts::PI * e);
+        // K̂(q) = Σ_d K(d) cos(2π q·d / 2N) (the kernel is even: real).
+        let kernel = |a: usize, b: usize| c * love_cell(signed(a, m2) as f64, signed(b, m2) as f64);
+        let mut symbol = vec![0.0; m2 * m2];
+        for (q, v) in symbol.iter_mut().enumerate() {
+            let (qa, qb) = (q / m2, q % m2);
+            for d in 0..m2 * m2 {
+                let (da, db) = (d / m2, d % m2);
+                let phase = TAU * ((qa * da + qb * db) % m2) as f64 / m2 as f64;
+                *v += kernel(da, db) * phase.cos();
+            }
+        }
+        // s(d) = (1/(2N)²) Σ_q cos(2π q·d / 2N) / K̂(q).
+        let stiffness = |da: usize, db: usize| {
+            let mut acc = 0.0;
+            for (q, v) in symbol.iter().enumerate() {
+                let (qa, qb) = (q / m2, q % m2);
+                let phase = TAU * ((qa * da + qb * db) % m2) as f64 / m2 as f64;
+                acc += phase.cos() / v;
+            }
+            acc / (m2 * m2) as f64
+        };
+        let mut op = Operator::new(Boundary::Free, n, l, e).unwrap();
+        let r = op.margin();
+        assert_eq!(r, FREE_MARGIN);
+        let w = n + 2 * r;
+        let diagonal = stiffness(0, 0);
+        for (i0, j0) in [(0, 0), (0, n - 1), (n - 1, 3), (4, 4)] {
+            let mut x = vec![f64::NAN; w * w];
+            op.apply_stiffness_rows_with_margin(
+                0.0,
+                &mut |i, row| {
+                    row.fill(0.0);
+                    if i == i0 {
+                        row[j0] = 1.0;
+                    }
+                },
+                &mut |i, row| {
+                    let i = usize::try_from(i + r as isize).unwrap();
+                    x[i * w..(i + 1) * w].copy_from_slice(row);
+                },
+            )
+            .unwrap();
+            for (k, &v) in x.iter().enumerate() {
+                // Grid offsets from the unit pressure, on the 2N torus.
+                let (a, b) = ((k / w) as isize - r as isize, (k % w) as isize - r as isize);
+                let da = (a - i0 as isize).rem_euclid(m2 as isize) as usize;
+                let db = (b - j0 as isize).rem_euclid(m2 as isize) as usize;
+                let s = stiffness(da, db);
+                assert!(
+                    (v - s).abs() <= FFT_TOL * diagonal,
+                    "unit at ({i0}, {j0}), node ({a}, {b}): {v} vs {s}"
+                );
+            }
+        }
+    }
+
     #[test]
     fn stiffness_is_symmetric_positive_definite() {
         // ⟨x, 𝒦y⟩ = ⟨𝒦x, y⟩ and ⟨x, 𝒦x⟩ > 0 for fields of the N × N window

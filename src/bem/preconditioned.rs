@@ -244,10 +244,12 @@
 //! (found in the numpy replica `examples/bem_free_padding.py`, which gives
 //! this loop's free counts exactly). With the padding's margin: 81; a
 //! weight of its own on the margin (0.67 / 1.33 / 2 × ω) gave 85 / 87 / 79,
-//! no consistent gain, so the margin takes ω like the window. A cold
-//! start from the clipped full-contact pressure max(c + 𝒦h, 0) saved 1–4
-//! iterations periodic and saturated but cost 4–13 on the free boundary at
-//! 0.05 E* (256²–1024², before the margin); not adopted.
+//! no consistent gain, so the margin takes ω like the window; in the numpy
+//! replica, margins of 1 / 2 / 3 nodes gave 80 / 81 / 81 (and 57 / 57 / 57
+//! at 1024²). A cold start from the clipped full-contact pressure
+//! max(c + 𝒦h, 0) saved 1–4 iterations periodic and saturated but cost 4–13
+//! on the free boundary at 0.05 E* (256²–1024², before the margin; with it,
+//! 42 → 61 at 512² and 57 → 65 at 1024²); not adopted.
 //!
 //! # Stall and fallback
 //! ε is not monotone in a projected CG. When the best ε has not halved
