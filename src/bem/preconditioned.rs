@@ -729,8 +729,8 @@ pub(crate) struct Edge {
     flank: Vec<f64>,
     /// `ω k(dy, dx) / d` for |dy|, |dx| ≤ R (0 at the centre).
     coeff: [[f64; EDGE_ROWS]; EDGE_ROWS],
-    /// Rows of w, each padded by R on both sides (wrapped periodic, zero
-    /// free), in ring slots; then rows 0 … R − 1 again (kept for the
+    /// Rows of w, each padded by R on both sides (wrapped periodic, the
+    /// padding's 𝒦r free), in ring slots; then rows 0 … R − 1 again (kept for the
     /// periodic wrap at the last rows, whose 𝒦r has been overwritten by z).
     rows: Vec<f64>,
     /// Per row of `rows`: whether block b (of [`BLOCK`] columns) of w has a
@@ -789,16 +789,15 @@ impl Edge {
         }
         coeff[EDGE_RADIUS][EDGE_RADIUS] = 0.0;
         let slots = EDGE_ROWS + EDGE_RADIUS;
-        let sides = match (f.op.boundary(), f.op.margin()) {
-            (super::Boundary::Periodic, _) => Sides::Periodic,
-            (super::Boundary::Free, EDGE_RADIUS) => Sides::Padding,
-            (super::Boundary::Free, _) => Sides::Zero,
+        // The free operator keeps a margin of R nodes on grids of 2R or
+        // more (all those with a stencil).
+        let (sides, margin) = match f.op.boundary() {
+            super::Boundary::Periodic => (Sides::Periodic, 0),
+            super::Boundary::Free => (Sides::Padding, f.op.margin()),
         };
-        let margin = if sides == Sides::Padding {
-            EDGE_RADIUS
-        } else {
-            0
-        };
+        if sides == Sides::Padding && margin != EDGE_RADIUS {
+            return Ok(None);
+        }
         Ok(Some(Edge {
             n,
             sides,
@@ -813,7 +812,7 @@ impl Edge {
     }
 
     /// Write w of grid row `i` (−R ≤ i < n + R; outside the grid: the
-    /// periodic image, the padding's 𝒦r, or zero) into slot `slot`, from
+    /// periodic image or the padding's 𝒦r) into slot `slot`, from
     /// z = 𝒦r off F.
     #[allow(clippy::too_many_arguments)]
     fn load(&mut self, slot: usize, i: isize, p: &[f64], g: &[f64], z: &[f64], g_bar: f64, y: f64) {
@@ -842,19 +841,15 @@ impl Edge {
         let row = &mut rows[slot * width..(slot + 1) * width];
         let flag = &mut nonzero[slot * nb..(slot + 1) * nb];
         if !flags {
-            if self.sides == Sides::Padding {
-                // A row of the padding: all of it is held at p = 0.
-                let b = if i < 0 {
-                    i + r as isize
-                } else {
-                    i - ni + r as isize
-                } as usize;
-                row.copy_from_slice(&self.band[b * width..(b + 1) * width]);
-                flag.fill(true);
+            // Not a grid row and not periodic: a row of the padding, all of
+            // it held at p = 0.
+            let b = if i < 0 {
+                i + r as isize
             } else {
-                row.fill(0.0);
-                flag.fill(false);
-            }
+                i - ni + r as isize
+            } as usize;
+            row.copy_from_slice(&self.band[b * width..(b + 1) * width]);
+            flag.fill(true);
             return;
         }
         let k = out * n..(out + 1) * n;
@@ -881,10 +876,6 @@ impl Edge {
                 let flank = &self.flank[out * 2 * r..(out + 1) * 2 * r];
                 row[..r].copy_from_slice(&flank[..r]);
                 row[n + r..].copy_from_slice(&flank[r..]);
-            }
-            Sides::Zero => {
-                row[..r].fill(0.0);
-                row[n + r..].fill(0.0);
             }
         }
     }
@@ -1004,8 +995,6 @@ enum Sides {
     Periodic,
     /// The free boundary's padding, with its 𝒦r on a margin of R nodes.
     Padding,
-    /// Nothing (free, on an operator without a margin).
-    Zero,
 }
 
 /// `acc = Σ c(dy, dx) w(i + dy, j + dx)` of one row over the window of
@@ -1030,7 +1019,6 @@ fn stencil_row(
         let beyond = |f: bool| match sides {
             Sides::Periodic => f,
             Sides::Padding => true,
-            Sides::Zero => false,
         };
         let near = |f: &[bool]| {
             let left = if b > 0 { f[b - 1] } else { beyond(f[nb - 1]) };
