@@ -12,7 +12,8 @@
 //!              N = the other nodes (p held at its bound)
 //! residual     r = [F] (g − ḡ)
 //! precondition z = [F] (𝒦r − 𝒦_loc w),   w = ω [N] 𝒦r / d        (one FFT convolution and a 7 × 7 stencil)
-//!              𝒦 = E*|q|/2 ≈ 𝒢⁻¹,  d = 𝒦(0) its diagonal,  𝒦_loc: 𝒦's kernel for |Δx|, |Δy| ≤ 3,  ω = 1.5
+//!              𝒦 = E*|q|/2 ≈ 𝒢⁻¹,  d = 𝒦(0) its diagonal,  𝒦_loc: 𝒦's kernel for |Δx|, |Δy| ≤ 3,
+//!              ω = 1.25 + n_N/8 per node, n_N of its 8 neighbours in N (the padding: 2.25)
 //! direction    t = [F] (z + β t_old − μ),   β = ⟨r, z⟩/⟨r_old, z_old⟩  (Fletcher–Reeves),
 //!              μ = mean of z + β t_old over F   (load control: Σ t = 0 keeps the load)
 //! step         τ = ⟨r, t⟩ / ⟨t, 𝒢t⟩,   p ← max(p − τ t, 0),   p ← p · N² p̄ / Σp
@@ -33,7 +34,7 @@
 //! and the missing term is what corrects them: `𝒦_NF r = [N]𝒦r` is
 //! already at hand (the same convolution, off F), and 𝒦's kernel decays
 //! like |Δx|⁻³, so the correction is made locally, with `𝒦_NN⁻¹ ≈ ω/d`
-//! (Jacobi) and `𝒦_FN` by the 7 × 7 window of 𝒦's kernel (read from 𝒦 of
+//! (a weighted Jacobi; ω per node, below) and `𝒦_FN` by the 7 × 7 window of 𝒦's kernel (read from 𝒦 of
 //! a unit pressure once per solve; exactly symmetric, so the preconditioner
 //! is). Measured on the rough case (iterations, σ0 = 0.005 / 0.05 E*,
 //! periodic): 30 / 34 → 26 / 25 at 256², 39 / 45 → 33 / 34 at 512²,
@@ -44,7 +45,24 @@
 //! 11 × 11 (ω = 1.5) gave 37 / 37 / 34 / 34, a disc of radius 3 (28 of the
 //! 48 taps) 35; ω = 1.25 / 1.5 / 1.75 / 2 (7 × 7) gave 35 / 34 / 36 / 39,
 //! and in this loop ω = 1.25 / 1.4 / 1.5 / 1.6 gave 45 / 44 / 44 / 49 at
-//! 1024² (0.05 E*). Only ω ≤ d/λ_max(𝒦) ≈ 0.54 (the mean of |q| over the
+//! 1024² (0.05 E*). Those were with one ω for every node. The diagonal of
+//! the exact `𝒦_NN⁻¹` is not one number: it is 1/d at a held node whose
+//! neighbours are all free and grows inside a held cluster (on a wholly
+//! held grid it is the diagonal of 𝒢, ~log N times 1/d). The weight now
+//! follows the node's 3 × 3 neighbourhood, `ω = ω₀ + ω₁ n_N/8` with n_N its
+//! held neighbours (the padding counts as held; its own nodes take
+//! ω₀ + ω₁), ω₀ = 1.25, ω₁ = 1 (issue 22's fifth step; chosen in the numpy
+//! replica at 512² and 1024², then confirmed at 2048²: periodic (ω₀, ω₁) =
+//! (1.5, 0) / (1.25, 1) / (1.25, 0.75) / (1.5, 1) / (1, 2) gave 34 / 31 / 32 /
+//! 31 / 33 at 512² and 44 / 42 / 42 / 48 / 49 at 1024², σ0 = 0.05 E*; 5 × 5
+//! and 7 × 7 neighbourhoods 33–35 at 512²; a padding weight of 1.5 / 3 / 4
+//! instead of 2.25, in this loop, 89 / 84 / 81 against 76 at free 2048²).
+//! Measured in this loop against the constant ω = 1.5 (σ0 = 0.005 / 0.05 E*):
+//! periodic 26 / 25 → 24 / 23, 33 / 34 → 32 / 31, 42 / 44 → 39 / 42,
+//! 53 / 63 → 50 / **59** at 256²–2048²; free 27 / 31 → 26 / 29 … 56 / 81 →
+//! 54 / 76 at 2048² (docs/bem.md). The counts cost one evaluation of the
+//! free-set test per node and row of a three-row cache, about what the
+//! fewer iterations save at equal time. Only ω ≤ d/λ_max(𝒦) ≈ 0.54 (the mean of |q| over the
 //! grid's square of wavevectors against its corner) guarantees a positive
 //! definite preconditioner; a direction that does not descend restarts β
 //! and then hands over to the plain loop (below), which none of the rough
@@ -79,7 +97,7 @@
 //! 𝒢's multiplier, no table of its own) and the heights (N², the caller's):
 //! 7.25 N² doubles periodic, 8 N² free, plus the sparse-correction lists
 //! (≤ 2 log₂ N² entries) and the correction's ring (10 rows of w and of
-//! m_F and one row of sums: about 21 N values); with the surface synthesis's two transient fields
+//! m_F, one row of sums, and three rows of the held nodes with their column sums for the weights: about 25 N values); with the surface synthesis's two transient fields
 //! 9.25 N² and 10 N² ([`super::required_bytes`]), within 10 N².
 //!
 //! # Why this method
@@ -233,18 +251,21 @@
 //!   g < ḡ − ½(ḡ − g_min) 47, g < ḡ + ½(ḡ − g_min) 42, against 34 for
 //!   g < ḡ (512², with the correction).
 //!
-//! What is left is the active set: with the correction, F changes for the
-//! last time at iteration 26 of 44 at 1024² and 48 of 63 at 2048²
-//! (σ0 = 0.05 E*, numpy replica), so the 2048² solve at 0.05 E* is 3
-//! iterations above the goal of 60. ω = 1.3 / 1.4 / 1.6 gave 64 / 64 / 63
-//! there, and a single restart of β once ε ≤ 0.1 / 0.01 / 1e-3 62 / 62 / 63.
+//! With one ω, F changed for the last time at iteration 26 of 44 at 1024²
+//! and 48 of 63 at 2048² (σ0 = 0.05 E*, numpy replica), and ε fell by a
+//! decade per 6–7 iterations from 1e-7 on (a node entering and leaving at
+//! iterations 45–48): the 2048² solve at 0.05 E* was 3 iterations above the
+//! goal of 60. ω = 1.3 / 1.4 / 1.6 gave 64 / 64 / 63 there, and a single
+//! restart of β once ε ≤ 0.1 / 0.01 / 1e-3 62 / 62 / 63; the weight per
+//! node (above) gives 59.
 //! The free boundary took 117 at 2048², σ0 = 0.05 E*, before the correction
 //! reached into the padding: its contact set was fixed from iteration 69 and
 //! ε then fell by only 0.82 per iteration, the padding's Schur term missing
 //! (found in the numpy replica `examples/bem_free_padding.py`, which gives
-//! this loop's free counts exactly). With the padding's margin: 81; a
-//! weight of its own on the margin (0.67 / 1.33 / 2 × ω) gave 85 / 87 / 79,
-//! no consistent gain, so the margin takes ω like the window; in the numpy
+//! this loop's free counts exactly). With the padding's margin: 81 (76
+//! with the weight per node, the one row above 60); a
+//! weight of its own on the margin (0.67 / 1.33 / 2 × ω, one ω) gave 85 / 87 / 79,
+//! no consistent gain; in the numpy
 //! replica, margins of 1 / 2 / 3 nodes gave 80 / 81 / 81 (and 57 / 57 / 57
 //! at 1024²). A cold start from the clipped full-contact pressure
 //! max(c + 𝒦h, 0) saved 1–4 iterations periodic and saturated but cost 4–13
@@ -707,8 +728,25 @@ const EDGE_RADIUS: usize = 3;
 // The free operator returns 𝒦r on a margin as wide as the stencil's reach.
 const _: () = assert!(super::kernel::FREE_MARGIN == EDGE_RADIUS);
 
-/// Weight ω of the edge correction (`X = ω D⁻¹ ≈ 𝒦_NN⁻¹`).
-const EDGE_WEIGHT: f64 = 1.5;
+/// Weight ω₀ of the edge correction (`X = diag(ω) D⁻¹ ≈ 𝒦_NN⁻¹`) at a held
+/// node whose eight neighbours are all free (see [`held_weight`]).
+const EDGE_WEIGHT: f64 = 1.25;
+
+/// Rise ω₁ of the weight from a held node with no held neighbour to one
+/// with eight (see [`held_weight`]).
+const EDGE_WEIGHT_RISE: f64 = 1.0;
+
+/// ω of a held node with `held` of its eight neighbours held too:
+/// `ω = ω₀ + ω₁ · held / 8`.
+///
+/// The exact `𝒦_NN⁻¹` has the diagonal 1/d at a held node among free ones
+/// and a larger one inside a held cluster (on the whole grid it is 𝒢, whose
+/// diagonal is ~log N times 1/d), so a weight that grows with the held
+/// neighbours follows it where one constant cannot (module docs).
+#[inline]
+fn held_weight(held: f64) -> f64 {
+    EDGE_WEIGHT + EDGE_WEIGHT_RISE * held / 8.0
+}
 
 /// Rows in the edge correction's window.
 const EDGE_ROWS: usize = 2 * EDGE_RADIUS + 1;
@@ -727,7 +765,7 @@ pub(crate) struct Edge {
     /// Free: 𝒦r on the margin's columns of rows 0 … N − 1 (R left, then R
     /// right, per row).
     flank: Vec<f64>,
-    /// `ω k(dy, dx) / d` for |dy|, |dx| ≤ R (0 at the centre).
+    /// `k(dy, dx) / d` for |dy|, |dx| ≤ R (0 at the centre); ω is in w.
     coeff: [[f64; EDGE_ROWS]; EDGE_ROWS],
     /// Rows of w, each padded by R on both sides (wrapped periodic, the
     /// padding's 𝒦r free), in ring slots; then rows 0 … R − 1 again (kept for the
@@ -740,6 +778,8 @@ pub(crate) struct Edge {
     mask: Vec<f64>,
     /// The correction of one row.
     acc: Vec<f64>,
+    /// Held nodes around the row being loaded.
+    held: HeldRows,
 }
 
 impl Edge {
@@ -784,7 +824,7 @@ impl Edge {
                     k[dy][dx], k[ry][dx], k[dy][rx], k[ry][rx], k[dx][dy], k[rx][dy], k[dx][ry],
                     k[rx][ry],
                 ];
-                *c = EDGE_WEIGHT * images.iter().sum::<f64>() / (8.0 * d);
+                *c = images.iter().sum::<f64>() / (8.0 * d);
             }
         }
         coeff[EDGE_RADIUS][EDGE_RADIUS] = 0.0;
@@ -808,6 +848,7 @@ impl Edge {
             nonzero: vec![false; slots * n.div_ceil(BLOCK)],
             mask: vec![0.0; slots * n],
             acc: vec![0.0; n],
+            held: HeldRows::new(n),
         }))
     }
 
@@ -848,10 +889,15 @@ impl Edge {
             } else {
                 i - ni + r as isize
             } as usize;
-            row.copy_from_slice(&self.band[b * width..(b + 1) * width]);
+            let padding = held_weight(8.0);
+            for (w, k) in row.iter_mut().zip(&self.band[b * width..(b + 1) * width]) {
+                *w = padding * k;
+            }
             flag.fill(true);
             return;
         }
+        let sides = self.sides;
+        let columns = self.held.columns(sides, out, (p, g), (g_bar, y));
         let k = out * n..(out + 1) * n;
         let (p, g, z) = (&p[k.clone()], &g[k.clone()], &z[k]);
         let mask = &mut self.mask[slot * n..(slot + 1) * n];
@@ -861,21 +907,28 @@ impl Edge {
             for j in cols {
                 let m = free(p[j], g[j], g_bar, y);
                 mask[j] = m;
-                let v = (1.0 - m) * z[j];
+                // Held neighbours: the 3 × 3 block's held nodes less this one.
+                let held = columns[j] + columns[j + 1] + columns[j + 2] - 1.0;
+                let v = (1.0 - m) * held_weight(held) * z[j];
                 row[r + j] = v;
                 any |= v != 0.0;
             }
             *fl = any;
         }
-        match self.sides {
+        match sides {
             Sides::Periodic => {
                 row.copy_within(n..n + r, 0);
                 row.copy_within(r..2 * r, n + r);
             }
             Sides::Padding => {
+                let padding = held_weight(8.0);
                 let flank = &self.flank[out * 2 * r..(out + 1) * 2 * r];
-                row[..r].copy_from_slice(&flank[..r]);
-                row[n + r..].copy_from_slice(&flank[r..]);
+                for (w, k) in row[..r].iter_mut().zip(&flank[..r]) {
+                    *w = padding * k;
+                }
+                for (w, k) in row[n + r..].iter_mut().zip(&flank[r..]) {
+                    *w = padding * k;
+                }
             }
         }
     }
@@ -933,6 +986,7 @@ impl Edge {
         // after its row has been loaded (rows 0 … R − 1 are kept first).
         let (width, nb) = (n + 2 * EDGE_RADIUS, n.div_ceil(BLOCK));
         let r = EDGE_RADIUS as isize;
+        self.held.clear();
         for i in 0..EDGE_RADIUS {
             self.load(EDGE_ROWS + i, i as isize, p, g, z, g_bar, y);
         }
@@ -983,6 +1037,87 @@ fn restrict_corrected(m: &[f64], g: &[f64], g_bar: f64, c: &[f64], z: &mut [f64]
         }
     }
     acc.map(|a| a.iter().sum())
+}
+
+/// The held nodes (`1 − m_F`) of three grid rows at a time, kept across
+/// the loads of one preconditioner pass (rows come in order, so each is
+/// evaluated about once), and their sums over the rows `i − 1 … i + 1`.
+struct HeldRows {
+    /// The grid row in each slot (`usize::MAX`: none).
+    which: [usize; 3],
+    /// Three rows of `1 − m_F`.
+    rows: Vec<f64>,
+    /// Held nodes of rows `i − 1 … i + 1` per column `−1 … N`.
+    columns: Vec<f64>,
+}
+
+impl HeldRows {
+    fn new(n: usize) -> Self {
+        HeldRows {
+            which: [usize::MAX; 3],
+            rows: vec![0.0; 3 * n],
+            columns: vec![0.0; n + 2],
+        }
+    }
+
+    /// Forget the rows (p or g changed).
+    fn clear(&mut self) {
+        self.which = [usize::MAX; 3];
+    }
+
+    /// Held nodes (1 each) of grid rows `i − 1 … i + 1` in each column
+    /// `−1 … N` (N + 2 values): periodic images beyond the sides, or the
+    /// padding, all of it held.
+    fn columns(
+        &mut self,
+        sides: Sides,
+        i: usize,
+        (p, g): (&[f64], &[f64]),
+        (g_bar, y): (f64, f64),
+    ) -> &[f64] {
+        let n = self.columns.len() - 2;
+        let wanted = [-1isize, 0, 1].map(|di| {
+            let row = i as isize + di;
+            match sides {
+                Sides::Periodic => Some(row.rem_euclid(n as isize) as usize),
+                Sides::Padding => usize::try_from(row).ok().filter(|&r| r < n),
+            }
+        });
+        let out = &mut self.columns;
+        out.fill(0.0);
+        for row in wanted {
+            let Some(row) = row else {
+                out[1..=n].iter_mut().for_each(|o| *o += 1.0);
+                continue;
+            };
+            let slot = match self.which.iter().position(|&w| w == row) {
+                Some(slot) => slot,
+                None => {
+                    let slot = (0..3)
+                        .find(|&s| !wanted.contains(&Some(self.which[s])))
+                        .expect("three slots, at most two other rows wanted");
+                    let k = row * n..(row + 1) * n;
+                    let held = &mut self.rows[slot * n..(slot + 1) * n];
+                    for ((h, &p), &g) in held.iter_mut().zip(&p[k.clone()]).zip(&g[k]) {
+                        *h = 1.0 - free(p, g, g_bar, y);
+                    }
+                    self.which[slot] = row;
+                    slot
+                }
+            };
+            for (o, h) in out[1..=n]
+                .iter_mut()
+                .zip(&self.rows[slot * n..(slot + 1) * n])
+            {
+                *o += h;
+            }
+        }
+        (out[0], out[n + 1]) = match sides {
+            Sides::Periodic => (out[n], out[1]),
+            Sides::Padding => (3.0, 3.0),
+        };
+        out
+    }
 }
 
 /// Nodes per block of [`stencil_row`] (the block's sums stay in registers).
@@ -1141,7 +1276,27 @@ mod tests {
                     unit.fill(0.0);
                     unit[j] = 1.0;
                     let column = stiffness(f.op, mean, &unit);
-                    let w = EDGE_WEIGHT * kr[j] / d;
+                    // ω₀ + ω₁ · (held neighbours) / 8, counted here by
+                    // coordinates (the padding is held).
+                    let (ji, jj) = ((j / n) as i64, (j % n) as i64);
+                    let mut held = 0;
+                    for a in ji - 1..=ji + 1 {
+                        for b in jj - 1..=jj + 1 {
+                            if (a, b) == (ji, jj) {
+                                continue;
+                            }
+                            let wrap = |v: i64| v.rem_euclid(n as i64) as usize;
+                            let inside = |v: i64| (0..n as i64).contains(&v);
+                            held += match boundary {
+                                Boundary::Periodic => (m[wrap(a) * n + wrap(b)] == 0.0) as i32,
+                                Boundary::Free if inside(a) && inside(b) => {
+                                    (m[a as usize * n + b as usize] == 0.0) as i32
+                                }
+                                Boundary::Free => 1,
+                            };
+                        }
+                    }
+                    let w = (EDGE_WEIGHT + EDGE_WEIGHT_RISE * f64::from(held) / 8.0) * kr[j] / d;
                     for x in 0..n * n {
                         let (dy, dx) = (
                             (x / n) as i64 - (j / n) as i64,
@@ -1176,7 +1331,8 @@ mod tests {
                                     continue;
                                 }
                                 let j = a as usize * wd + b as usize;
-                                z_ref[x] -= m[x] * row[j] * EDGE_WEIGHT * kr_margin[j] / d;
+                                let w = (EDGE_WEIGHT + EDGE_WEIGHT_RISE) * kr_margin[j] / d;
+                                z_ref[x] -= m[x] * row[j] * w;
                                 padding_terms += 1;
                             }
                         }
