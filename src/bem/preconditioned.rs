@@ -54,8 +54,8 @@
 //! ω₀ + ω₁), ω₀ = 1.25, ω₁ = 1 (issue 22's fifth step; chosen in the numpy
 //! replica at 512² and 1024², then confirmed at 2048²: periodic (ω₀, ω₁) =
 //! (1.5, 0) / (1.25, 1) / (1.25, 0.75) / (1.5, 1) / (1, 2) gave 34 / 31 / 32 /
-//! 31 / 33 at 512² and 44 / 42 / 42 / 48 / 49 at 1024², σ0 = 0.05 E*; 5 × 5
-//! and 7 × 7 neighbourhoods 33–35 at 512²; a padding weight of 1.5 / 3 / 4
+//! 31 / 33 at 512² and 44 / 42 / 42 / 48 / 49 at 1024², σ0 = 0.05 E*; the
+//! 7 × 7 neighbourhood, with seven pairs, 32–40 at 512²; a padding weight of 1.5 / 3 / 4
 //! instead of 2.25, in this loop, 89 / 84 / 81 against 76 at free 2048²).
 //! Measured in this loop against the constant ω = 1.5 (σ0 = 0.005 / 0.05 E*):
 //! periodic 26 / 25 → 24 / 23, 33 / 34 → 32 / 31, 42 / 44 → 39 / 42,
