@@ -34,9 +34,9 @@
 //! and the missing term is what corrects them: `𝒦_NF r = [N]𝒦r` is
 //! already at hand (the same convolution, off F), and 𝒦's kernel decays
 //! like |Δx|⁻³, so the correction is made locally, with `𝒦_NN⁻¹ ≈ ω/d`
-//! (a weighted Jacobi; ω per node, below) and `𝒦_FN` by the 7 × 7 window of 𝒦's kernel (read from 𝒦 of
-//! a unit pressure once per solve; exactly symmetric, so the preconditioner
-//! is). Measured on the rough case (iterations, σ0 = 0.005 / 0.05 E*,
+//! (a weighted Jacobi; ω per node, below) and `𝒦_FN` by the 7 × 7 window
+//! of 𝒦's kernel (read from 𝒦 of a unit pressure once per solve; exactly
+//! symmetric, so the preconditioner is). Measured on the rough case (iterations, σ0 = 0.005 / 0.05 E*,
 //! periodic): 30 / 34 → 26 / 25 at 256², 39 / 45 → 33 / 34 at 512²,
 //! 49 / 59 → 42 / 44 at 1024², 62 / 84 → 53 / 63 at 2048²; free boundary
 //! 51 / 77 → 42 / 58 at 1024² (docs/bem.md). The window and ω were chosen
@@ -55,14 +55,16 @@
 //! replica at 512² and 1024², then confirmed at 2048²: periodic (ω₀, ω₁) =
 //! (1.5, 0) / (1.25, 1) / (1.25, 0.75) / (1.5, 1) / (1, 2) gave 34 / 31 / 32 /
 //! 31 / 33 at 512² and 44 / 42 / 42 / 48 / 49 at 1024², σ0 = 0.05 E*; the
-//! 7 × 7 neighbourhood, with seven pairs, 32–40 at 512²; a padding weight of 1.5 / 3 / 4
-//! instead of 2.25, in this loop, 89 / 84 / 81 against 76 at free 2048²).
-//! Measured in this loop against the constant ω = 1.5 (σ0 = 0.005 / 0.05 E*):
-//! periodic 26 / 25 → 24 / 23, 33 / 34 → 32 / 31, 42 / 44 → 39 / 42,
-//! 53 / 63 → 50 / **59** at 256²–2048²; free 27 / 31 → 26 / 29 … 56 / 81 →
-//! 54 / 76 at 2048² (docs/bem.md). The counts cost one evaluation of the
-//! free-set test per node and row of a three-row cache, about what the
-//! fewer iterations save at equal time. Only ω ≤ d/λ_max(𝒦) ≈ 0.54 (the mean of |q| over the
+//! 7 × 7 neighbourhood, with seven pairs, 32–40 at 512²; a padding weight
+//! of 1.5 / 3 / 4 instead of 2.25, in this loop, 89 / 84 / 81 against 76 at
+//! free 2048²). Measured in this loop against the constant ω = 1.5
+//! (σ0 = 0.005 / 0.05 E*): periodic 26 / 25 → 24 / 23, 33 / 34 → 32 / 31,
+//! 42 / 44 → 39 / 42, 53 / 63 → 50 / **59** at 256²–2048²; free
+//! 27 / 31 → 26 / 29 … 56 / 81 → 54 / 76 at 2048² (docs/bem.md). The free-set
+//! test of each node is evaluated once per pass, into a cache of three rows
+//! that gives both the mask and the counts; the counts cost a few additions
+//! per node, and the times are equal within their scatter.
+//! Only ω ≤ d/λ_max(𝒦) ≈ 0.54 (the mean of |q| over the
 //! grid's square of wavevectors against its corner) guarantees a positive
 //! definite preconditioner; a direction that does not descend restarts β
 //! and then hands over to the plain loop (below), which none of the rough
@@ -97,8 +99,9 @@
 //! 𝒢's multiplier, no table of its own) and the heights (N², the caller's):
 //! 7.25 N² doubles periodic, 8 N² free, plus the sparse-correction lists
 //! (≤ 2 log₂ N² entries) and the correction's ring (10 rows of w and of
-//! m_F, one row of sums, and three rows of the held nodes with their column sums for the weights: about 25 N values); with the surface synthesis's two transient fields
-//! 9.25 N² and 10 N² ([`super::required_bytes`]), within 10 N².
+//! m_F, one row of sums, three rows of the held nodes and their column
+//! sums: about 25 N values); with the surface synthesis's two transient
+//! fields 9.25 N² and 10 N² ([`super::required_bytes`]), within 10 N².
 //!
 //! # Why this method
 //! Vollebregt (2014) compared CG variants for the elastic normal contact
@@ -263,9 +266,9 @@
 //! ε then fell by only 0.82 per iteration, the padding's Schur term missing
 //! (found in the numpy replica `examples/bem_free_padding.py`, which gives
 //! this loop's free counts exactly). With the padding's margin: 81 (76
-//! with the weight per node, the one row above 60); a
-//! weight of its own on the margin (0.67 / 1.33 / 2 × ω, one ω) gave 85 / 87 / 79,
-//! no consistent gain; in the numpy
+//! with the weight per node, the one row above 60); a weight of its own on
+//! the margin (0.67 / 1.33 / 2 × ω, one ω) gave 85 / 87 / 79, no
+//! consistent gain; in the numpy
 //! replica, margins of 1 / 2 / 3 nodes gave 80 / 81 / 81 (and 57 / 57 / 57
 //! at 1024²). A cold start from the clipped full-contact pressure
 //! max(c + 𝒦h, 0) saved 1–4 iterations periodic and saturated but cost 4–13
@@ -897,19 +900,17 @@ impl Edge {
             return;
         }
         let sides = self.sides;
-        let columns = self.held.columns(sides, out, (p, g), (g_bar, y));
-        let k = out * n..(out + 1) * n;
-        let (p, g, z) = (&p[k.clone()], &g[k.clone()], &z[k]);
+        let (columns, own) = self.held.columns(sides, out, (p, g), (g_bar, y));
+        let z = &z[out * n..(out + 1) * n];
         let mask = &mut self.mask[slot * n..(slot + 1) * n];
         for (b, fl) in flag.iter_mut().enumerate() {
             let cols = b * BLOCK..((b + 1) * BLOCK).min(n);
             let mut any = false;
             for j in cols {
-                let m = free(p[j], g[j], g_bar, y);
-                mask[j] = m;
+                mask[j] = 1.0 - own[j];
                 // Held neighbours: the 3 × 3 block's held nodes less this one.
-                let held = columns[j] + columns[j + 1] + columns[j + 2] - 1.0;
-                let v = (1.0 - m) * held_weight(held) * z[j];
+                let held = columns[j] + columns[j + 1] + columns[j + 2] - own[j];
+                let v = own[j] * held_weight(held) * z[j];
                 row[r + j] = v;
                 any |= v != 0.0;
             }
@@ -1067,14 +1068,14 @@ impl HeldRows {
 
     /// Held nodes (1 each) of grid rows `i − 1 … i + 1` in each column
     /// `−1 … N` (N + 2 values): periodic images beyond the sides, or the
-    /// padding, all of it held.
+    /// padding, all of it held; and row i's own `1 − m_F`.
     fn columns(
         &mut self,
         sides: Sides,
         i: usize,
         (p, g): (&[f64], &[f64]),
         (g_bar, y): (f64, f64),
-    ) -> &[f64] {
+    ) -> (&[f64], &[f64]) {
         let n = self.columns.len() - 2;
         let wanted = [-1isize, 0, 1].map(|di| {
             let row = i as isize + di;
@@ -1085,6 +1086,7 @@ impl HeldRows {
         });
         let out = &mut self.columns;
         out.fill(0.0);
+        let mut own = 0;
         for row in wanted {
             let Some(row) = row else {
                 out[1..=n].iter_mut().for_each(|o| *o += 1.0);
@@ -1105,6 +1107,9 @@ impl HeldRows {
                     slot
                 }
             };
+            if row == i {
+                own = slot;
+            }
             for (o, h) in out[1..=n]
                 .iter_mut()
                 .zip(&self.rows[slot * n..(slot + 1) * n])
@@ -1116,7 +1121,7 @@ impl HeldRows {
             Sides::Periodic => (out[n], out[1]),
             Sides::Padding => (3.0, 3.0),
         };
-        out
+        (out, &self.rows[own * n..(own + 1) * n])
     }
 }
 
