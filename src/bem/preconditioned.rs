@@ -45,10 +45,14 @@
 //! 11 × 11 (ω = 1.5) gave 37 / 37 / 34 / 34, a disc of radius 3 (28 of the
 //! 48 taps) 35; ω = 1.25 / 1.5 / 1.75 / 2 (7 × 7) gave 35 / 34 / 36 / 39,
 //! and in this loop ω = 1.25 / 1.4 / 1.5 / 1.6 gave 45 / 44 / 44 / 49 at
-//! 1024² (0.05 E*). Those were with one ω for every node. The diagonal of
-//! the exact `𝒦_NN⁻¹` is not one number: it is 1/d at a held node whose
-//! neighbours are all free and grows inside a held cluster (on a wholly
-//! held grid it is the diagonal of 𝒢, ~log N times 1/d). The weight now
+//! 1024² (0.05 E*). Those were with one ω for every node. But the exact
+//! `𝒦_NN⁻¹` is 1/d only at a held node whose neighbours are all free;
+//! inside a held cluster its diagonal rises a little and its row sums a lot
+//! (numpy, 32² periodic, the centre of an s × s held block: diagonal 1,
+//! 1.23, 1.26, 1.31 × 1/d and row sums 1, 2.9, 4.5, 11.6 × 1/d for
+//! s = 1, 3, 5, 15; on a wholly held grid the diagonal is that of 𝒢,
+//! mean(2/|q|) · mean(|q|/2) = 1.35/d at 1024² and 2048²), and a diagonal X
+//! stands in for the whole row where 𝒦_NF r varies slowly. The weight now
 //! follows the node's 3 × 3 neighbourhood, `ω = ω₀ + ω₁ n_N/8` with n_N its
 //! held neighbours (the padding counts as held; its own nodes take
 //! ω₀ + ω₁), ω₀ = 1.25, ω₁ = 1 (issue 22's fifth step; chosen in the numpy
@@ -742,10 +746,10 @@ const EDGE_WEIGHT_RISE: f64 = 1.0;
 /// ω of a held node with `held` of its eight neighbours held too:
 /// `ω = ω₀ + ω₁ · held / 8`.
 ///
-/// The exact `𝒦_NN⁻¹` has the diagonal 1/d at a held node among free ones
-/// and a larger one inside a held cluster (on the whole grid it is 𝒢, whose
-/// diagonal is ~log N times 1/d), so a weight that grows with the held
-/// neighbours follows it where one constant cannot (module docs).
+/// The exact `𝒦_NN⁻¹` is 1/d at a held node among free ones; inside a held
+/// cluster its row sums grow (11.6/d at the centre of a 15 × 15 block), so
+/// a weight that grows with the held neighbours follows it where one
+/// constant cannot (module docs).
 #[inline]
 fn held_weight(held: f64) -> f64 {
     EDGE_WEIGHT + EDGE_WEIGHT_RISE * held / 8.0
