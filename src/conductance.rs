@@ -217,8 +217,9 @@ impl GapLaw {
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] naming `gas_conductivity`,
-    /// `mean_free_path` (gas) or `gap_table` (fewer than 2 points, u not
-    /// strictly ascending from ≥ 0, α negative or not finite).
+    /// `mean_free_path` (gas), `gap_table` (fewer than 2 points) or
+    /// `gap_table[i]` (the i-th point, from 0: u negative, not finite or not
+    /// above the previous one; α negative or not finite).
     pub fn validate(&self) -> Result<()> {
         match self {
             GapLaw::Gas {
@@ -237,13 +238,29 @@ impl GapLaw {
                     ));
                 }
                 for (i, &(u, a)) in points.iter().enumerate() {
-                    check::non_negative("gap_table", u)?;
-                    check::non_negative("gap_table", a)?;
+                    let name = format!("gap_table[{i}]");
+                    if !(u.is_finite() && u >= 0.0) {
+                        return Err(Error::invalid(
+                            name,
+                            u,
+                            "a separation u finite and >= 0 (m)",
+                        ));
+                    }
+                    if !(a.is_finite() && a >= 0.0) {
+                        return Err(Error::invalid(
+                            name,
+                            a,
+                            "a conductance α finite and >= 0 (W/(m² K))",
+                        ));
+                    }
                     if i > 0 && u <= points[i - 1].0 {
                         return Err(Error::invalid(
-                            "gap_table",
+                            name,
                             u,
-                            "separations strictly ascending",
+                            format!(
+                                "a separation above the previous one ({}): separations strictly ascending",
+                                points[i - 1].0
+                            ),
                         ));
                     }
                 }

@@ -224,13 +224,13 @@ fn bad_input_names_the_field() {
             GapLaw::Table {
                 points: vec![(1.0, 1.0), (0.5, 1.0)],
             },
-            "gap_table",
+            "gap_table[1]",
         ),
         (
             GapLaw::Table {
                 points: vec![(0.0, 1.0), (1.0, f64::NAN)],
             },
-            "gap_table",
+            "gap_table[1]",
         ),
     ] {
         assert_eq!(invalid_name(law.validate().unwrap_err()), name);

@@ -111,6 +111,11 @@ impl TempFile {
         &self.tmp
     }
 
+    /// The file it will be renamed over.
+    pub fn target(&self) -> &Path {
+        &self.target
+    }
+
     /// Renames the temporary file over the target.
     pub fn persist(mut self) -> Result<()> {
         std::fs::rename(&self.tmp, &self.target).map_err(|source| Error::Io {

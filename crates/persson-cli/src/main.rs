@@ -3,14 +3,17 @@
 use std::process::ExitCode;
 
 use clap::error::ErrorKind;
-use clap::Parser;
+use clap::{CommandFactory, FromArgMatches};
 
 fn main() -> ExitCode {
-    let cli = match persson_cli::Cli::try_parse() {
-        Ok(cli) => cli,
+    let parsed = persson_cli::Cli::command()
+        .try_get_matches()
+        .and_then(|m| persson_cli::Cli::from_arg_matches(&m).map(|cli| (cli, m)));
+    let (cli, matches) = match parsed {
+        Ok(parsed) => parsed,
         Err(e) => return usage_error(&e),
     };
-    match persson_cli::run(cli) {
+    match persson_cli::run(cli, &matches) {
         Ok(()) => ExitCode::SUCCESS,
         // A closed pipe (`persson … | head`) is not an error of ours.
         Err(e)

@@ -176,7 +176,7 @@ fn cases() -> Vec<(String, String)> {
         (format!("conductance {SA} --contact-modulus 1e9 --pressure 1e6 --resistivity -1e-8"), "resistivity"),
         (format!("conductance {SA} --contact-modulus 1e9 --pressure 1e6 --gas-conductivity 0.02 --mean-free-path 0"), "mean_free_path"),
         (format!("conductance {SA} --contact-modulus 1e9 --pressure 1e6 --gas-conductivity -1 --mean-free-path 1e-7"), "gas_conductivity"),
-        (format!("conductance {SA} --contact-modulus 1e9 --pressure 1e6 --gap-table {}", file("gap.txt", b"0 1\n0 2\n")), "gap_table"),
+        (format!("conductance {SA} --contact-modulus 1e9 --pressure 1e6 --gap-table {}", file("gap.txt", b"0 1\n0 2\n")), "gap.txt:2: --gap-table"),
         (format!("conductance {SA} --contact-modulus 1e9 --pressure -1 --conductivity 1"), "pressure"),
         (format!("leakage {SA} --contact-modulus 1e9 --pressure 1e6 --viscosity 0 --pressure-drop 1e5"), "viscosity"),
         (format!("leakage {SA} --contact-modulus 1e9 --pressure 1e6 --viscosity -1e-3 --pressure-drop 1e5"), "viscosity"),

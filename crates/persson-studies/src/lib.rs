@@ -11,6 +11,7 @@
 //! | [`validation`] | validation of numerical codes: continuum extrapolation, κ fits, scoring a user's data against the theories, and (feature `bem`) the theories against the BEM at several resolutions of one surface |
 //! | [`report`] | error against run time of every method, and the stability sweep over extreme inputs |
 //! | [`table`] | the one table type every report renders to, as aligned text or CSV, and the tables of the numerics' results |
+//! | [`output`] | the one output layer: every file a run writes is checked against its inputs and other outputs before computing, and written only when the whole run has succeeded |
 //! | [`warning`] | [`Warning`]: a remark on the input (a pressure near E*, a slope above 1, ζ beyond the band, a spectrum file's convention) that never changes a number, carried by the reports |
 //! | `plot` | (feature `plot`) figures as SVG or PNG from the typed reports |
 //!
@@ -31,6 +32,7 @@ mod guide;
 pub mod asperity;
 #[cfg(feature = "bem")]
 pub mod bem_detail;
+pub mod output;
 #[cfg(feature = "plot")]
 pub mod plot;
 pub mod report;

@@ -8,9 +8,7 @@ use persson::bem::rough::{
 use persson::bem::surface::synthesize;
 use persson::bem::Options;
 use persson::spectrum::{Amplitude, SelfAffine};
-use persson_studies::plot::map::{
-    render_map, render_map_svg_string, rough_map, MAP_SIZE, PRESSURE_LABEL,
-};
+use persson_studies::plot::map::{render_map_svg_string, rough_map, MAP_SIZE, PRESSURE_LABEL};
 use persson_studies::table::number;
 
 /// The eight bytes every PNG file starts with (PNG spec §5.2).
@@ -93,7 +91,7 @@ fn elastic_map_has_no_plastic_marks_and_writes_png() {
     let dir = std::env::temp_dir().join(format!("persson-bem-plot-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("map.png");
-    render_map(&rough_map(&r).unwrap(), &path).unwrap();
+    persson_studies::plot::render(&rough_map(&r).unwrap(), &path).unwrap();
     let bytes = std::fs::read(&path).unwrap();
     assert_eq!(bytes[..8], PNG_SIGNATURE);
     let w = u32::from_be_bytes(bytes[16..20].try_into().unwrap());

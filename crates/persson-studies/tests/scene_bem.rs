@@ -132,7 +132,10 @@ mod bem {
             r#"{"bem": {"grid": 32, "histogram": "h.csv", "bins": 20, "boundary": "free"}}"#,
         ))
         .unwrap();
-        assert!(s.output_paths(&dir).contains(&dir.join("h.csv")));
+        assert!(s
+            .output_files(&dir)
+            .iter()
+            .any(|(field, p, _)| *field == "outputs.bem.histogram" && *p == dir.join("h.csv")));
         let r = s.run().unwrap();
         let b = r.bem.as_ref().unwrap();
         assert_eq!(b.boundary.name(), "free");
@@ -146,7 +149,9 @@ mod bem {
                 .sum();
             assert!((total - pt.contact_fraction).abs() < 1e-14, "{total}");
         }
-        let written = persson_studies::scene::write_data(&s, &r, &dir).unwrap();
+        let mut files = persson_studies::output::Files::new();
+        persson_studies::scene::write_outputs(&s, &r, &dir, &mut files).unwrap();
+        let written = files.commit().unwrap();
         assert_eq!(written, vec![dir.join("h.csv")]);
         let text = std::fs::read_to_string(dir.join("h.csv")).unwrap();
         assert_eq!(text.lines().count(), 1 + 3 * 20);
@@ -249,8 +254,14 @@ mod bem {
         }
         let dir = tmp("details");
         std::fs::create_dir_all(&dir).unwrap();
-        let written = persson_studies::scene::write_data(&scene, &r, &dir).unwrap();
-        assert_eq!(written.len(), 3 * 2);
+        let mut files = persson_studies::output::Files::new();
+        persson_studies::scene::write_outputs(&scene, &r, &dir, &mut files).unwrap();
+        let written = files.commit().unwrap();
+        let npy: Vec<_> = written
+            .iter()
+            .filter(|p| p.extension().is_some_and(|e| e == "npy"))
+            .collect();
+        assert_eq!(npy.len(), 3 * 2);
         // the .npy map of pressure 2, depth 0 holds the plane's maximum
         let path = dir.join("vm_2_0.npy");
         let map = npy::parse(&path, &std::fs::read(&path).unwrap()).unwrap();
@@ -259,7 +270,11 @@ mod bem {
         assert_eq!(max, sub.points[2].report.planes[0].von_mises_stress.value);
         #[cfg(feature = "plot")]
         {
-            let plots = persson_studies::scene::render_plots(&scene, &r, &dir).unwrap();
+            let plots: Vec<_> = written
+                .iter()
+                .filter(|p| p.extension().is_some_and(|e| e == "svg"))
+                .cloned()
+                .collect();
             assert!(plots.contains(&dir.join("patches.svg")), "{plots:?}");
             assert!(plots.contains(&dir.join("depth.svg")), "{plots:?}");
             // each plane's von Mises map beside it: 3 pressures × 2 depths

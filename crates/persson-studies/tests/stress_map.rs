@@ -5,9 +5,8 @@
 use persson::bem::hertz::HertzCase;
 use persson::bem::{Boundary, Options};
 use persson_studies::bem_detail::{hertz_section, hertz_subsurface};
-use persson_studies::plot::stress_map::{
-    hertz_section_figure, render_field, von_mises_plane, FieldFigure,
-};
+use persson_studies::plot::render;
+use persson_studies::plot::stress_map::{hertz_section_figure, von_mises_plane, FieldFigure};
 
 /// Johnson (1985) §3.4 for ν = 0.3: on the axis σ_vM = σ_r − σ_z = 2τ,
 /// largest 2 · 0.3107 p0 at z = 0.4807 a (golden section on the closed
@@ -52,7 +51,7 @@ fn field_figures_are_drawn_and_bad_ones_refused() {
     let fig = von_mises_plane(&vm, n, 1.0, 0.01, 0.02, "E*");
     for name in ["plane.svg", "plane.png"] {
         let p = dir.join(name);
-        render_field(&fig, &p).unwrap();
+        render(&fig, &p).unwrap();
         assert!(std::fs::metadata(&p).unwrap().len() > 1000, "{name}");
     }
     let svg = std::fs::read_to_string(dir.join("plane.svg")).unwrap();
@@ -62,14 +61,14 @@ fn field_figures_are_drawn_and_bad_ones_refused() {
         values: vec![0.0; 3],
         ..fig.clone()
     };
-    let e = render_field(&short, &dir.join("short.svg")).unwrap_err();
+    let e = render(&short, &dir.join("short.svg")).unwrap_err();
     assert!(e.to_string().contains("stress map"), "{e}");
-    assert!(render_field(&fig, &dir.join("plane.pdf")).is_err());
+    assert!(render(&fig, &dir.join("plane.pdf")).is_err());
     let case = HertzCase::new(32, Boundary::Periodic);
     let r = hertz_subsurface(&case, &Options::default(), 0.3, &mut |_| {}).unwrap();
     let s = hertz_section(&r).unwrap();
     let p = dir.join("section.svg");
-    render_field(&hertz_section_figure(&r, &s), &p).unwrap();
+    render(&hertz_section_figure(&r, &s), &p).unwrap();
     let svg = std::fs::read_to_string(&p).unwrap();
     assert!(svg.contains("depth z / a") && svg.contains("σ_vM / p0"));
     std::fs::remove_dir_all(&dir).ok();

@@ -3,8 +3,6 @@
 //! ([`persson::topography::anisotropy`]); `--plot` draws its 2-D spectrum,
 //! `--spectrum-2d` writes it as CSV or `.npy`.
 
-use std::path::PathBuf;
-
 use super::measured_args::MeasuredArgs;
 use super::output::Format;
 
@@ -15,67 +13,25 @@ pub struct Args {
     measured: MeasuredArgs,
     /// Draw log10 C(q_x, q_y), the 2-D spectrum, with the lay (the principal
     /// direction) into this file (.svg or .png).
-    #[arg(long, value_name = "FILE.svg|png")]
-    plot: Option<PathBuf>,
+    #[arg(long, value_name = "FILE.svg|png", value_parser = super::files::out_file)]
+    plot: Option<super::files::OutFile>,
     /// Write the 2-D spectrum: .csv as columns q_x, q_y, C (1/m, 1/m, m⁴), or
     /// .npy as the ny × nx array C with q = 0 at (ny/2, nx/2) and
     /// q = (index − n/2)·2π/L (numpy's fftshift order).
-    #[arg(long = "spectrum-2d", value_name = "FILE.csv|npy")]
-    spectrum_2d: Option<PathBuf>,
+    #[arg(long = "spectrum-2d", value_name = "FILE.csv|npy", value_parser = super::files::out_file)]
+    spectrum_2d: Option<super::files::OutFile>,
     #[command(flatten)]
     format: Format,
 }
 
-/// The `--spectrum-2d` file's format by extension.
-#[cfg(feature = "topography")]
-#[derive(Clone, Copy, PartialEq, Debug)]
-enum Table2d {
-    Csv,
-    Npy,
-}
-
-#[cfg(feature = "topography")]
-fn table_format(path: &std::path::Path) -> anyhow::Result<Table2d> {
-    match path
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase)
-        .as_deref()
-    {
-        Some("csv") => Ok(Table2d::Csv),
-        Some("npy") => Ok(Table2d::Npy),
-        _ => anyhow::bail!(
-            "--spectrum-2d {}: the file must end in .csv or .npy",
-            path.display()
-        ),
-    }
-}
-
 /// Run `persson anisotropy`.
 #[cfg(feature = "topography")]
-pub fn run(a: Args) -> anyhow::Result<()> {
+pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
     use super::output::print;
     use persson::topography::{anisotropy, Conditioning};
     let Some(map) = a.measured.spec(None)? else {
         anyhow::bail!("persson anisotropy needs a height map: --surface FILE");
     };
-    // Before any computation: the output files' formats and directories.
-    let table = a.spectrum_2d.as_deref().map(table_format).transpose()?;
-    if let Some(p) = &a.spectrum_2d {
-        persson::io::check_writable(p)?;
-    }
-    if let Some(p) = &a.plot {
-        #[cfg(not(feature = "plot"))]
-        anyhow::bail!(
-            "--plot {}: this persson was built without the `plot` feature",
-            p.display()
-        );
-        #[cfg(feature = "plot")]
-        {
-            persson_studies::plot::Format::from_path(p)?;
-            persson::io::check_writable(p)?;
-        }
-    }
     let t = map.read()?;
     let defaults = Conditioning::for_topography(&t);
     let conditioning = Conditioning {
@@ -84,14 +40,13 @@ pub fn run(a: Args) -> anyhow::Result<()> {
     };
     let report =
         anisotropy(&t, conditioning).map_err(|e| anyhow::anyhow!("{}: {e}", map.file.display()))?;
-    if let (Some(path), Some(kind)) = (&a.spectrum_2d, table) {
-        write_spectrum(path, kind, &report.spectrum)?;
+    if let Some(path) = &a.spectrum_2d {
+        files.write(path, &spectrum_bytes(path, &report.spectrum)?)?;
     }
     #[cfg(feature = "plot")]
     if let Some(path) = &a.plot {
-        use persson_studies::plot::spectrum_map::{
-            render_spectrum_map, SpectrumMapFigure, SPECTRUM_MAP_SIZE,
-        };
+        use persson_studies::plot::spectrum_map::{SpectrumMapFigure, SPECTRUM_MAP_SIZE};
+        use persson_studies::plot::Encode;
         let number = |v: f64| persson_studies::table::number(v, 4);
         let fig = SpectrumMapFigure {
             title: format!(
@@ -109,22 +64,25 @@ pub fn run(a: Args) -> anyhow::Result<()> {
             lay: Some(report.principal_direction),
             size: SPECTRUM_MAP_SIZE,
         };
-        render_spectrum_map(&fig, path)?;
+        files.write(path, &fig.encode(path)?)?;
     }
     print(&report, &a.format)
 }
 
-/// Write the 2-D spectrum as CSV (q_x, q_y, C per mode) or `.npy` (C).
+/// The 2-D spectrum as the bytes of `path`: `.npy` (C), else CSV (q_x,
+/// q_y, C per mode; the extension was checked before computing).
 #[cfg(feature = "topography")]
-fn write_spectrum(
+fn spectrum_bytes(
     path: &std::path::Path,
-    kind: Table2d,
     s: &persson::topography::Spectrum2dMap,
-) -> anyhow::Result<()> {
+) -> anyhow::Result<Vec<u8>> {
     let (nx, ny) = (s.qx.len(), s.qy.len());
-    match kind {
-        Table2d::Npy => persson::io::npy::write(path, ny, nx, &s.c)?,
-        Table2d::Csv => {
+    let npy = path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("npy"));
+    match npy {
+        true => Ok(persson::io::npy::encode(ny, nx, &s.c)?),
+        false => {
             use std::fmt::Write as _;
             let mut out = String::with_capacity(40 * nx * ny + 16);
             out.push_str("q_x,q_y,C\n");
@@ -133,14 +91,13 @@ fn write_spectrum(
                     let _ = writeln!(out, "{qx:e},{qy:e},{:e}", s.c[j * nx + i]);
                 }
             }
-            persson::io::write_atomic(path, out.as_bytes())?;
+            Ok(out.into_bytes())
         }
     }
-    Ok(())
 }
 
 /// Without the feature `topography`, an error.
 #[cfg(not(feature = "topography"))]
-pub fn run(_: Args) -> anyhow::Result<()> {
+pub fn run(_: Args, _: &mut persson_studies::output::Files) -> anyhow::Result<()> {
     anyhow::bail!("this persson was built without the `topography` feature")
 }

@@ -57,8 +57,7 @@ pub struct TheoryArgs {
 }
 
 /// Run `persson area`.
-pub fn run(a: Args) -> anyhow::Result<()> {
-    a.plot.check()?;
+pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
     let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
     let pressures = pressures(&a.pressure, a.spectrum.example)?;
     let out = AreaOutput {
@@ -72,6 +71,6 @@ pub fn run(a: Args) -> anyhow::Result<()> {
     let report = run::area(&surface, &pressures, &out)?;
     #[cfg(feature = "plot")]
     a.plot
-        .draw(|| persson_studies::scene::plot::area(&report))?;
+        .draw(files, || persson_studies::scene::plot::area(&report))?;
     print_warned(&report, &report.warnings, &a.format)
 }

@@ -2,11 +2,10 @@
 //! build the scene file's [`SpectrumSpec`] and [`MaterialSpec`], whose one
 //! `build()` serves flags and scenes alike.
 
-use std::path::PathBuf;
-
 use anyhow::bail;
 use persson_studies::scene::{ConventionName, MaterialSpec, RoughContact, SpectrumSpec, EXAMPLE};
 
+use super::files::{in_file, InFile};
 pub use super::measured_args::MeasuredArgs;
 use super::number::number;
 #[cfg(feature = "bem")]
@@ -62,8 +61,8 @@ pub struct SpectrumArgs {
     pub c_r: Option<f64>,
     /// Tabulated spectrum: CSV with columns q (1/m) and C (m^4, Persson's normalisation
     /// unless --psd-convention says otherwise).
-    #[arg(long, conflicts_with_all = ["hurst", "q_l", "q_r", "q_s", "amplitude"])]
-    pub psd: Option<PathBuf>,
+    #[arg(long, conflicts_with_all = ["hurst", "q_l", "q_r", "q_s", "amplitude"], value_parser = in_file)]
+    pub psd: Option<InFile>,
     /// Convention of the --psd file.
     #[arg(long, value_enum, default_value_t = ConventionName::Persson, requires = "psd")]
     pub psd_convention: ConventionName,
@@ -87,15 +86,15 @@ pub struct SpectrumArgs {
 pub struct SecondBodyArgs {
     /// Spectrum of the second rough body (CSV q, C as --psd): the contact's
     /// roughness is the sum C = C1 + C2.
-    #[arg(long, conflicts_with = "surface2")]
-    pub psd2: Option<PathBuf>,
+    #[arg(long, conflicts_with = "surface2", value_parser = in_file)]
+    pub psd2: Option<InFile>,
     /// Convention of the --psd2 file.
     #[arg(long, value_enum, default_value_t = ConventionName::Persson, requires = "psd2")]
     pub psd2_convention: ConventionName,
     /// Measured surface of the second rough body (its isotropic spectrum, the
     /// default conditioning): the contact's roughness is the sum C = C1 + C2.
-    #[arg(long)]
-    pub surface2: Option<PathBuf>,
+    #[arg(long, value_parser = in_file)]
+    pub surface2: Option<InFile>,
     /// Pixel size Δ of the --surface2 map (files that store their size need none), m.
     #[arg(long, requires = "surface2", allow_hyphen_values = true, value_parser = number)]
     pub pixel_size2: Option<f64>,
@@ -109,12 +108,12 @@ impl SecondBodyArgs {
                 bail!("--psd2-convention grid is not supported: convert the file to persson");
             }
             SpectrumSpec::Tabulated {
-                file: file.clone(),
+                file: file.to_path_buf(),
                 convention: self.psd2_convention,
                 size: None,
             }
         } else if let Some(file) = &self.surface2 {
-            let mut m = persson_studies::scene::HeightMapSpec::new(file.clone());
+            let mut m = persson_studies::scene::HeightMapSpec::new(file.to_path_buf());
             m.pixel_size = self.pixel_size2;
             SpectrumSpec::HeightMap(m)
         } else {
@@ -158,7 +157,7 @@ impl SpectrumArgs {
                 bail!("--psd-convention grid needs --psd-size L (m)");
             }
             return Ok(SpectrumSpec::Tabulated {
-                file: path.clone(),
+                file: path.to_path_buf(),
                 convention: self.psd_convention,
                 size: self.psd_size,
             });
@@ -242,7 +241,7 @@ impl SpectrumArgs {
         self.psd
             .iter()
             .map(|file| persson_studies::Warning::PsdConvention {
-                file: file.clone(),
+                file: file.to_path_buf(),
                 convention: self.psd_convention,
             })
             .collect()

@@ -18,11 +18,12 @@ use super::bem_detail::{details, RoughWithDetails};
 use super::output::{print, print_narrowed};
 use super::progress::Progress;
 use persson_studies::bem_detail::Details;
+use persson_studies::output::Files;
 
 /// Run `persson bem`.
-pub fn run(a: Args) -> anyhow::Result<()> {
+pub fn run(a: Args, files: &mut Files) -> anyhow::Result<()> {
     match a.cmd {
-        Cmd::Hertz(h) if h.subsurface => hertz_subsurface(&h),
+        Cmd::Hertz(h) if h.subsurface => hertz_subsurface(&h, files),
         Cmd::Hertz(h) if h.work_of_adhesion.is_some() => adhesive_hertz(&h),
         Cmd::Hertz(h) => {
             let grid = match (h.grid.as_slice(), h.yield_stress) {
@@ -41,7 +42,7 @@ pub fn run(a: Args) -> anyhow::Result<()> {
             bar.finish();
             print(&r?, &h.format)
         }
-        Cmd::Rough(r) => rough_contact(&r),
+        Cmd::Rough(r) => rough_contact(&r, files),
     }
 }
 
@@ -58,7 +59,7 @@ fn plastic_disc(h: &HertzArgs, y: f64) -> anyhow::Result<()> {
 }
 
 /// `persson bem hertz --subsurface`: the stress on the contact's axis.
-fn hertz_subsurface(h: &HertzArgs) -> anyhow::Result<()> {
+fn hertz_subsurface(h: &HertzArgs, files: &mut Files) -> anyhow::Result<()> {
     let grid = match h.grid.as_slice() {
         [n] => *n,
         _ => anyhow::bail!("--grid: one grid side with --subsurface"),
@@ -74,19 +75,15 @@ fn hertz_subsurface(h: &HertzArgs) -> anyhow::Result<()> {
     );
     bar.finish();
     let r = r?;
-    if let Some(path) = &h.stress_plot {
-        #[cfg(feature = "plot")]
-        {
-            use persson_studies::plot::stress_map::{hertz_section_figure, render_field};
-            let section = persson_studies::bem_detail::hertz_section(&r)?;
-            render_field(&hertz_section_figure(&r, &section), path)?;
-        }
-        #[cfg(not(feature = "plot"))]
-        anyhow::bail!(
-            "--stress-plot {}: this persson was built without the `plot` feature",
-            path.display()
-        );
-    }
+    #[cfg(feature = "plot")]
+    super::plot::draw(files, h.stress_plot.as_deref(), || {
+        let section = persson_studies::bem_detail::hertz_section(&r)?;
+        Ok(persson_studies::plot::stress_map::hertz_section_figure(
+            &r, &section,
+        ))
+    })?;
+    #[cfg(not(feature = "plot"))]
+    let _ = files;
     print(&r, &h.format)
 }
 
@@ -101,11 +98,13 @@ fn hertz_case(h: &HertzArgs, grid: usize) -> HertzCase {
     }
 }
 
-/// The CLI's view of the solves: progress, and the pressure and gap fields to write.
+/// The CLI's view of the solves: progress, and the pressure and gap fields
+/// to write (staged as they arrive, written when the whole run succeeded).
 struct Solves<'a> {
     bar: Progress,
     fields: Option<&'a Path>,
     gaps: Option<&'a Path>,
+    files: &'a mut Files,
     several: bool,
     n: usize,
     details: Details,
@@ -120,7 +119,8 @@ impl Observer for Solves<'_> {
         self.details.solution(k, s)?;
         if let Some(path) = self.fields {
             let p = indexed(path, self.several.then_some(k));
-            npy::write(&p, self.n, self.n, &s.pressure)?;
+            self.files
+                .write(&p, &npy::encode(self.n, self.n, &s.pressure)?)?;
         }
         if let Some(path) = self.gaps {
             // The gap the flow is solved on: 0 in contact (p > 0), max(g, 0) elsewhere.
@@ -131,30 +131,23 @@ impl Observer for Solves<'_> {
                 .map(|(&g, &p)| if p > 0.0 { 0.0 } else { g.max(0.0) })
                 .collect();
             let p = indexed(path, self.several.then_some(k));
-            npy::write(&p, self.n, self.n, &gap)?;
+            self.files.write(&p, &npy::encode(self.n, self.n, &gap)?)?;
         }
         Ok(())
     }
 }
 
-fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
+fn rough_contact(a: &RoughArgs, files: &mut Files) -> anyhow::Result<()> {
     if let Some(dg) = a.adhesion.work_of_adhesion {
-        return adhesive_rough(a, dg);
+        return adhesive_rough(a, dg, files);
     }
     if a.spectrum.example {
         // Say what the example is (stdout stays the report alone).
         eprintln!("persson: {}", persson_studies::scene::EXAMPLE);
     }
     let pressures = super::args::pressures(&a.pressure, a.spectrum.example)?;
-    let plot = super::plot::PlotArg {
-        plot: a.plot.clone(),
-    };
-    plot.check()?;
-    // Before any computation: the transport flags, and the gap files' paths.
+    // Before any computation: the transport flags.
     let request = super::bem_transport::request(a)?;
-    if let Some(path) = &a.transport.gap_field {
-        super::bem_transport::check_output(path, a.surface.as_deref(), pressures.len())?;
-    }
     let options = RoughOptions {
         boundary: a.boundary,
         solver: Options {
@@ -166,22 +159,24 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
     };
     let e_star = a.material.build(a.spectrum.example)?.contact_modulus();
     let (surface, source) = rough_surface(a)?;
+    let details = details(
+        &a.detail,
+        (surface.n, surface.size, a.boundary),
+        a.material.poisson,
+        &pressures,
+    )?;
     if let Some(path) = &a.surface_out {
-        npy::write(path, surface.n, surface.n, &surface.heights)?;
+        files.write(path, &npy::encode(surface.n, surface.n, &surface.heights)?)?;
     }
     let several = pressures.len() > 1;
     let mut solves = Solves {
         bar: Progress::solves(pressures.len(), None),
         fields: a.pressure_field.as_deref(),
         gaps: a.transport.gap_field.as_deref(),
+        files,
         several,
         n: surface.n,
-        details: details(
-            &a.detail,
-            (surface.n, surface.size, a.boundary),
-            a.material.poisson,
-            &pressures,
-        )?,
+        details,
     };
     let mut observer = super::bem_transport::Observed::new(
         &mut solves,
@@ -211,19 +206,12 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
     };
     let transport = observer.finish();
     solves.bar.finish();
+    let (files, details) = (solves.files, solves.details);
     let report = report?;
-    if let Some(path) = &a.plot {
-        #[cfg(feature = "plot")]
-        persson_studies::plot::map::render_map(
-            &persson_studies::plot::map::rough_map(&report)?,
-            path,
-        )?;
-        #[cfg(not(feature = "plot"))]
-        anyhow::bail!(
-            "--plot {}: this persson was built without the `plot` feature",
-            path.display()
-        );
-    }
+    #[cfg(feature = "plot")]
+    super::plot::draw(files, a.plot.as_deref(), || {
+        persson_studies::plot::map::rough_map(&report)
+    })?;
     if let Some(path) = &a.histogram {
         // The report's own histogram table: every pressure in one CSV.
         if let Some(t) = report
@@ -231,28 +219,19 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
             .into_iter()
             .find(|t| t.name == "bem_histogram")
         {
-            persson::io::write_atomic(path, t.to_csv().as_bytes())?;
+            files.write(path, t.to_csv().as_bytes())?;
         }
     }
     let mut warnings = a.spectrum.file_warnings();
     warnings.extend(persson_studies::warning::of_rough(&report));
-    if let Some(path) = &a.detail.stress_plot {
-        #[cfg(feature = "plot")]
-        persson_studies::plot::stress_map::render_planes(
-            &solves.details.maps,
-            (surface.n, surface.size),
-            &a.detail.depth,
-            &pressures,
-            if e_star == 1.0 { "E*" } else { "Pa" },
-            path,
-        )?;
-        #[cfg(not(feature = "plot"))]
-        anyhow::bail!(
-            "--stress-plot {}: this persson was built without the `plot` feature",
-            path.display()
-        );
-    }
-    let (patches, subsurface) = (solves.details.patches, solves.details.subsurface);
+    write_planes(
+        a,
+        &details,
+        (surface.n, surface.size, e_star),
+        &pressures,
+        files,
+    )?;
+    let (patches, subsurface) = (details.patches, details.subsurface);
     match transport {
         Some(points) => {
             let report = persson_studies::scene::RoughTransportReport::new(report, points);
@@ -275,12 +254,50 @@ fn rough_contact(a: &RoughArgs) -> anyhow::Result<()> {
     }
 }
 
-/// The rigid surface of `bem rough`: a height map read, or a spectrum synthesised.
+/// The von Mises map of every plane below every solve: `--stress-field`
+/// (.npy) and `--stress-plot` (a colour map), `_k_j` added to each name.
+fn write_planes(
+    a: &RoughArgs,
+    details: &Details,
+    (n, size, e_star): (usize, f64, f64),
+    pressures: &[f64],
+    files: &mut Files,
+) -> anyhow::Result<()> {
+    if let Some(path) = &a.detail.stress_field {
+        for m in &details.maps {
+            let p = persson_studies::bem_detail::indexed(path, m.index, m.depth_index);
+            files.write(&p, &npy::encode(n, n, &m.von_mises_stress)?)?;
+        }
+    }
+    #[cfg(feature = "plot")]
+    if let Some(path) = &a.detail.stress_plot {
+        use persson_studies::plot::Encode;
+        let unit = if e_star == 1.0 { "E*" } else { "Pa" };
+        let planes = persson_studies::plot::stress_map::planes(
+            &details.maps,
+            (n, size),
+            &a.detail.depth,
+            pressures,
+            unit,
+            path,
+        );
+        for (p, fig) in planes {
+            files.write(&p, &fig.encode(&p)?)?;
+        }
+    }
+    #[cfg(not(feature = "plot"))]
+    let _ = (size, e_star, pressures);
+    Ok(())
+}
+
+/// The rigid surface of `bem rough`: a height map read (through the one
+/// reader every command uses, [`persson_studies::scene::HeightMapSpec`]),
+/// or a spectrum synthesised.
 fn rough_surface(
     a: &RoughArgs,
 ) -> anyhow::Result<(persson::bem::surface::GridSurface, SurfaceOrigin)> {
     Ok(if let Some(path) = &a.surface {
-        let mut map = persson_studies::scene::HeightMapSpec::new(path.clone());
+        let mut map = a.read.spec(path, 0);
         map.size = a.size.map(persson_studies::scene::Sides::One);
         (
             map.bem_surface(a.boundary)?,
@@ -289,7 +306,7 @@ fn rough_surface(
     } else {
         let n = a
             .grid
-            .context("no surface: give --surface FILE --size L, or spectrum flags with --grid N")?;
+            .context("no surface: give --surface FILE, or spectrum flags with --grid N")?;
         check_memory(n, a.boundary)?;
         let spectrum = a.spectrum.build()?;
         let size = check::positive(
@@ -302,7 +319,7 @@ fn rough_surface(
 }
 
 /// `bem rough --work-of-adhesion`: the adhesive BEM along the --mean-gap path.
-fn adhesive_rough(a: &RoughArgs, work_of_adhesion: f64) -> anyhow::Result<()> {
+fn adhesive_rough(a: &RoughArgs, work_of_adhesion: f64, files: &mut Files) -> anyhow::Result<()> {
     use persson_studies::bem_detail::{
         adhesive_controlled_path, adhesive_warnings, AdhesiveIteration, PathControl,
     };
@@ -339,7 +356,7 @@ fn adhesive_rough(a: &RoughArgs, work_of_adhesion: f64) -> anyhow::Result<()> {
     let e_star = a.material.build(a.spectrum.example)?.contact_modulus();
     let (surface, _) = rough_surface(a)?;
     if let Some(path) = &a.surface_out {
-        npy::write(path, surface.n, surface.n, &surface.heights)?;
+        files.write(path, &npy::encode(surface.n, surface.n, &surface.heights)?)?;
     }
     let kind = law_kind(&ad.adhesion);
     let options = persson::bem::adhesive::AdhesiveOptions {

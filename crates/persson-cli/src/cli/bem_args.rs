@@ -1,11 +1,11 @@
 //! The flags of `persson bem` (and the solver flags `persson compare` shares).
 
-use std::path::PathBuf;
-
 use persson::bem::{Boundary, Options};
 use persson::error::check;
 
 use super::args::{MaterialArgs, SpectrumArgs};
+use super::files::{in_file, out_file, InFile, OutFile};
+use super::measured_args::MapReadArgs;
 use super::output::Format;
 
 /// Arguments of `persson bem`.
@@ -85,8 +85,8 @@ pub struct HertzArgs {
     pub poisson: f64,
     /// With --subsurface, also draw the von Mises stress σ_vM/p0 on the
     /// vertical section through the axis (z/a ≤ 2, |r|/a ≤ 3) as a colour map.
-    #[arg(long, requires = "subsurface", value_name = "FILE.svg|png")]
-    pub stress_plot: Option<PathBuf>,
+    #[arg(long, requires = "subsurface", value_name = "FILE.svg|png", value_parser = out_file)]
+    pub stress_plot: Option<OutFile>,
     /// Work of adhesion Δγ (unit of E* L): the adhesive sphere instead, its
     /// pull-off force on each --grid against JKR (1.5πRΔγ) and DMT (2πRΔγ),
     /// on a periodic cell under mean-gap control.
@@ -141,22 +141,28 @@ pub struct DetailArgs {
     pub tensile_yield_stress: Option<f64>,
     /// Write the von Mises stress of each plane as .npy (N×N float64); `_k_j`
     /// (pressure k, depth j) is added before the extension.
-    #[arg(long, requires = "subsurface")]
-    pub stress_field: Option<PathBuf>,
+    #[arg(long, requires = "subsurface", value_parser = out_file)]
+    pub stress_field: Option<OutFile>,
     /// Draw the von Mises stress of each plane as a colour map (.svg or
     /// .png); `_k_j` (pressure k, depth j) is added before the extension.
-    #[arg(long, requires = "subsurface", value_name = "FILE.svg|png")]
-    pub stress_plot: Option<PathBuf>,
+    #[arg(long, requires = "subsurface", value_name = "FILE.svg|png", value_parser = out_file)]
+    pub stress_plot: Option<OutFile>,
 }
 
 #[derive(clap::Args, Debug)]
 pub struct RoughArgs {
-    /// Height map of the rigid surface: .npy (float64/float32, 2-D square) or a text matrix.
-    #[arg(long, requires = "size")]
-    pub surface: Option<PathBuf>,
-    /// Physical side L of the surface (default with a spectrum: 2π/q_l).
+    /// Height map of the rigid surface, square N × N: any format `spectrum
+    /// --surface` reads (.npy, text matrix, instrument files), read the same
+    /// way, with the file's own size and units.
+    #[arg(long, value_parser = in_file)]
+    pub surface: Option<InFile>,
+    /// Physical side L of the surface (default with a spectrum: 2π/q_l; a
+    /// --surface file that states its size needs none, a given one is
+    /// checked against the file's).
     #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
     pub size: Option<f64>,
+    #[command(flatten)]
+    pub read: MapReadArgs,
     /// Grid side N for a synthesised surface.
     #[arg(long, conflicts_with = "surface", allow_hyphen_values = true, value_parser = super::number::count)]
     pub grid: Option<usize>,
@@ -179,21 +185,21 @@ pub struct RoughArgs {
     pub boundary: Boundary,
     /// Write each pressure field as .npy (N×N float64); `_k` is added before
     /// the extension when several pressures are given.
-    #[arg(long)]
-    pub pressure_field: Option<PathBuf>,
+    #[arg(long, value_parser = out_file)]
+    pub pressure_field: Option<OutFile>,
     /// Write the histograms P(σ) of every solve into one CSV (nominal_pressure,
     /// sigma_low, sigma_high, density; each pressure's bins integrate to its
     /// A/A0). With --yield-stress the bins stop at σY and integrate to A_el/A0;
     /// the δ-peak at σY is one more row per pressure (sigma_low = sigma_high = σY,
     /// empty density) with its weight A_pl/A0 in the column plastic_fraction.
-    #[arg(long)]
-    pub histogram: Option<PathBuf>,
+    #[arg(long, value_parser = out_file)]
+    pub histogram: Option<OutFile>,
     /// Number of histogram bins.
     #[arg(long, default_value_t = persson_studies::validation::DEFAULT_BINS, allow_hyphen_values = true, value_parser = super::number::count)]
     pub bins: usize,
     /// Write the (synthesised or read) surface heights as .npy.
-    #[arg(long)]
-    pub surface_out: Option<PathBuf>,
+    #[arg(long, value_parser = out_file)]
+    pub surface_out: Option<OutFile>,
     /// Yield stress σY (hardness, unit of the pressure): pressures are bounded by
     /// 0 ≤ p ≤ σY and each point reports the elastic and plastic fractions.
     #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
@@ -207,8 +213,8 @@ pub struct RoughArgs {
     /// Also draw the pressure map of the load in partial contact whose A/A0 is
     /// nearest 0.1 (plastic nodes in red with --yield-stress) and its histogram
     /// P(σ) (the plastic δ-peak at σY as a labelled bar) into this file (.svg or .png).
-    #[arg(long, value_name = "FILE.svg|png")]
-    pub plot: Option<PathBuf>,
+    #[arg(long, value_name = "FILE.svg|png", value_parser = out_file)]
+    pub plot: Option<OutFile>,
     #[command(flatten)]
     pub transport: TransportArgs,
     #[command(flatten)]
@@ -244,8 +250,8 @@ pub struct TransportArgs {
     /// Write the gap field each leak rate was computed on as .npy (N×N
     /// float64, 0 in contact); `_k` is added before the extension when several
     /// pressures are given.
-    #[arg(long, value_name = "FILE.npy")]
-    pub gap_field: Option<PathBuf>,
+    #[arg(long, value_name = "FILE.npy", value_parser = out_file)]
+    pub gap_field: Option<OutFile>,
 }
 
 /// The adhesive BEM along a path of mean gaps (`bem rough --work-of-adhesion`).

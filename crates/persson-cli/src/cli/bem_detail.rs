@@ -34,8 +34,7 @@ pub fn details(
         depth: args.depth.clone(),
         poisson: poisson.unwrap_or(DEFAULT_POISSON),
         tensile_yield_stress: args.tensile_yield_stress,
-        stress_field: args.stress_field.clone(),
-        keep_maps: args.stress_plot.is_some(),
+        keep_maps: args.stress_plot.is_some() || args.stress_field.is_some(),
     });
     Details::new((n, size, boundary), pressures, patches, subsurface)
         .map_err(|e| anyhow::anyhow!("--depth: {e}"))

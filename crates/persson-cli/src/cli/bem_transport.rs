@@ -2,8 +2,6 @@
 //! the conductance and leak rate of each solve (feature `flow`), computed by
 //! the studies' observer beside the CLI's own (progress, fields to write).
 
-use std::path::Path;
-
 use anyhow::bail;
 use persson::bem::rough::Observer;
 use persson::bem::Boundary;
@@ -56,27 +54,6 @@ pub fn request(a: &RoughArgs) -> anyhow::Result<Option<TransportRequest>> {
         bail!("--leakage / --conductivity / --resistivity / --gas-conductivity: this persson was built without the `flow` feature");
     }
     Ok(Some(request))
-}
-
-/// The `--gap-field` file(s) may not overwrite the `--surface` input, and
-/// their directory must accept them.
-pub fn check_output(path: &Path, input: Option<&Path>, count: usize) -> anyhow::Result<()> {
-    let several = count > 1;
-    for k in 0..count.max(1) {
-        let p = super::bem::indexed(path, several.then_some(k));
-        if let Some(i) = input {
-            if let (Ok(x), Ok(y)) = (p.canonicalize(), i.canonicalize()) {
-                if x == y {
-                    bail!(
-                        "--gap-field {}: would overwrite the input file --surface",
-                        p.display()
-                    );
-                }
-            }
-        }
-        persson::io::check_writable(&p)?;
-    }
-    Ok(())
 }
 
 /// The CLI's observer, wrapped in the studies' transport observer when asked.

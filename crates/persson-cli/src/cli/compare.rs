@@ -5,6 +5,7 @@
 //! are in `compare_args.rs`, the figures in `compare_plot.rs`.
 
 use persson::bem::Boundary;
+use persson_studies::output::Files;
 use persson_studies::scene::SpectrumSpec;
 use persson_studies::validation::{
     self, ComparisonConfig, KappaStudyConfig, SweepProgress, UserData, UserHistogram,
@@ -17,11 +18,11 @@ use super::progress::Progress;
 use persson_studies::Warning;
 
 /// Run `persson compare`.
-pub fn run(a: Args) -> anyhow::Result<()> {
+pub fn run(a: Args, files: &mut Files) -> anyhow::Result<()> {
     match a.study {
-        Some(Study::Kappa(k)) => kappa_study(&k),
+        Some(Study::Kappa(k)) => kappa_study(&k, files),
         Some(Study::Ensemble(e)) => ensemble(&e),
-        None => compare(&a.main),
+        None => compare(&a.main, files),
     }
 }
 
@@ -59,12 +60,11 @@ fn with_progress<T>(run: impl FnOnce(&mut dyn FnMut(SweepProgress)) -> T) -> T {
     out
 }
 
-fn compare(a: &MainArgs) -> anyhow::Result<()> {
+fn compare(a: &MainArgs, files: &mut Files) -> anyhow::Result<()> {
     if a.spectrum.example {
         // Say what the example is (stdout stays the report alone).
         eprintln!("persson: {}", persson_studies::scene::EXAMPLE);
     }
-    super::compare_plot::check(a)?;
     let map = a.measured.spec(a.spectrum.q_s)?;
     if let (Some(_), Some(flag)) = (&map, a.bem.unused_with_surface()) {
         anyhow::bail!("{flag} is not used with --surface: the map sets the grid");
@@ -119,12 +119,11 @@ fn compare(a: &MainArgs) -> anyhow::Result<()> {
         None => with_progress(|p| validation::compare(spectrum.as_ref(), &config, p))?,
     };
     warnings.extend(report.warnings.iter().cloned());
-    super::compare_plot::comparison(a, &report)?;
+    super::compare_plot::comparison(a, &report, files)?;
     print_narrowed(&report, &warnings, &a.format, a.wide)
 }
 
-fn kappa_study(a: &KappaArgs) -> anyhow::Result<()> {
-    a.plot.check()?;
+fn kappa_study(a: &KappaArgs, files: &mut Files) -> anyhow::Result<()> {
     let config = KappaStudyConfig {
         hurst: a.hurst.clone(),
         q_l: a.q_l,
@@ -144,7 +143,7 @@ fn kappa_study(a: &KappaArgs) -> anyhow::Result<()> {
     .into_iter()
     .collect();
     let report = with_progress(|p| validation::kappa_study(&config, p))?;
-    super::compare_plot::kappa(a, &report)?;
+    super::compare_plot::kappa(a, &report, files)?;
     print_warned(&report, &warnings, &a.format)
 }
 

@@ -1,13 +1,12 @@
 //! The flags of `persson compare` and `persson compare kappa`.
 
-use std::path::PathBuf;
-
 use persson_studies::validation::{
     SweepSettings, DEFAULT_ALPHA, DEFAULT_LEVELS, DEFAULT_PIXELS_PER_WAVELENGTH,
 };
 
 use super::args::{MaterialArgs, MeasuredArgs, SpectrumArgs};
 use super::bem::SolverArgs;
+use super::files::{in_file, out_file, InFile, OutFile};
 use super::output::Format;
 
 /// Arguments of `persson compare`.
@@ -108,12 +107,12 @@ pub struct MainArgs {
     #[arg(long, value_name = "Y", allow_hyphen_values = true, value_parser = super::number::number)]
     pub yield_stress: Option<f64>,
     /// Your own results: CSV with columns nominal_pressure, contact_fraction (header and # comments allowed).
-    #[arg(long, value_name = "FILE.csv")]
-    pub data: Option<PathBuf>,
+    #[arg(long, value_name = "FILE.csv", value_parser = in_file)]
+    pub data: Option<InFile>,
     /// Your own pressure histogram at --histogram-pressure: CSV with columns sigma, density
     /// (normalised so that ∫ density dσ = A/A0).
-    #[arg(long, value_name = "FILE.csv")]
-    pub data_histogram: Option<PathBuf>,
+    #[arg(long, value_name = "FILE.csv", value_parser = in_file)]
+    pub data_histogram: Option<InFile>,
     /// Nominal pressure of the shown pressure distribution (nearest computed one; default:
     /// the one whose finest-grid A/A0 is nearest 0.1).
     #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
@@ -134,11 +133,11 @@ pub struct MainArgs {
     #[command(flatten)]
     pub plot: super::plot::PlotArg,
     /// Draw the pressure distribution (BEM histogram, Persson's P(σ), your histogram) on linear axes.
-    #[arg(long, value_name = "FILE.svg|png")]
-    pub plot_histogram: Option<PathBuf>,
+    #[arg(long, value_name = "FILE.svg|png", value_parser = out_file)]
+    pub plot_histogram: Option<OutFile>,
     /// The same with a logarithmic P(σ) axis, to compare the tails.
-    #[arg(long, value_name = "FILE.svg|png")]
-    pub plot_histogram_log: Option<PathBuf>,
+    #[arg(long, value_name = "FILE.svg|png", value_parser = out_file)]
+    pub plot_histogram_log: Option<OutFile>,
 }
 
 #[derive(clap::Args, Debug)]

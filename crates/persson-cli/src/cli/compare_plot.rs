@@ -1,39 +1,18 @@
 //! The figures of `persson compare`, drawn from its typed reports.
 
+use persson_studies::output::Files;
 use persson_studies::validation::{Comparison, KappaStudy};
 
 use super::compare_args::{KappaArgs, MainArgs};
 
-/// Before computing: every plot file has a supported extension and a
-/// writable directory.
-pub fn check(a: &MainArgs) -> anyhow::Result<()> {
-    a.plot.check()?;
-    for p in [&a.plot_histogram, &a.plot_histogram_log]
-        .into_iter()
-        .flatten()
-    {
-        #[cfg(feature = "plot")]
-        {
-            persson_studies::plot::Format::from_path(p)?;
-            persson::io::check_writable(p)?;
-        }
-        #[cfg(not(feature = "plot"))]
-        anyhow::bail!(
-            "{}: this persson was built without the `plot` feature",
-            p.display()
-        );
-    }
+#[cfg(not(feature = "plot"))]
+pub fn comparison(_: &MainArgs, _: &Comparison, _: &mut Files) -> anyhow::Result<()> {
     Ok(())
 }
 
 #[cfg(not(feature = "plot"))]
-pub fn comparison(_: &MainArgs, _: &Comparison) -> anyhow::Result<()> {
+pub fn kappa(_: &KappaArgs, _: &KappaStudy, _: &mut Files) -> anyhow::Result<()> {
     Ok(())
-}
-
-#[cfg(not(feature = "plot"))]
-pub fn kappa(a: &KappaArgs, _: &KappaStudy) -> anyhow::Result<()> {
-    a.plot.unavailable()
 }
 
 #[cfg(feature = "plot")]
@@ -43,12 +22,12 @@ fn xy(x: &[f64], y: &[f64]) -> Vec<(f64, f64)> {
 
 /// A/A0 against σ0 (`--plot`) and the pressure distribution (`--plot-histogram[-log]`).
 #[cfg(feature = "plot")]
-pub fn comparison(a: &MainArgs, r: &Comparison) -> anyhow::Result<()> {
-    use persson_studies::plot::{Axis, Figure, Series, Style};
+pub fn comparison(a: &MainArgs, r: &Comparison, files: &mut Files) -> anyhow::Result<()> {
+    use persson_studies::plot::{Axis, Encode, Figure, Series, Style};
     use persson_studies::validation::asperity;
     use persson_studies::validation::report::AreaTheory;
     let p = &r.nominal_pressure;
-    a.plot.draw(|| {
+    a.plot.draw(files, || {
         let mut curves: Vec<(&str, &[f64])> = r
             .theories
             .iter()
@@ -107,7 +86,7 @@ pub fn comparison(a: &MainArgs, r: &Comparison) -> anyhow::Result<()> {
         Ok(fig)
     })?;
     // --leakage / --conductance: Q(σ0) and h(σ0) beside the --plot file.
-    super::compare_transport::plot(a.plot.plot.as_deref(), r)?;
+    super::compare_transport::plot(a.plot.plot.as_deref(), r, files)?;
     let Some(d) = r.shown_distribution() else {
         return Ok(());
     };
@@ -137,7 +116,7 @@ pub fn comparison(a: &MainArgs, r: &Comparison) -> anyhow::Result<()> {
         if let Some(y) = r.yield_stress {
             plastic_peaks(&mut fig, d, y);
         }
-        persson_studies::plot::render(&fig, path)?;
+        files.write(path, &fig.encode(path)?)?;
     }
     Ok(())
 }
@@ -190,9 +169,9 @@ fn plastic_peaks(
 
 /// κ against H with error bars, next to Persson's and Bush's κ (`--plot`).
 #[cfg(feature = "plot")]
-pub fn kappa(a: &KappaArgs, r: &KappaStudy) -> anyhow::Result<()> {
+pub fn kappa(a: &KappaArgs, r: &KappaStudy, files: &mut Files) -> anyhow::Result<()> {
     use persson_studies::plot::{Axis, Figure, Series, Style, PALETTE};
-    a.plot.draw(|| {
+    a.plot.draw(files, || {
         let mut fig = Figure::new(
             "κ against the Hurst exponent (BEM, N → ∞)",
             Axis::linear("Hurst exponent H"),

@@ -143,8 +143,9 @@ fn sibling(path: &std::path::Path, what: &str) -> std::path::PathBuf {
 pub fn plot(
     path: Option<&std::path::Path>,
     r: &persson_studies::validation::Comparison,
+    files: &mut persson_studies::output::Files,
 ) -> anyhow::Result<()> {
-    use persson_studies::plot::{render, Axis, Figure, Series};
+    use persson_studies::plot::{Axis, Encode, Figure, Series};
     let (Some(path), Some(t)) = (path, &r.transport) else {
         return Ok(());
     };
@@ -186,7 +187,8 @@ pub fn plot(
             format!("BEM {finest}², Reynolds flow (mean of x and y)"),
             series(|l| l.bem_leak_rate),
         ));
-        render(&fig, &sibling(path, "leakage"))?;
+        let p = sibling(path, "leakage");
+        files.write(&p, &fig.encode(&p)?)?;
     }
     let cond: Vec<_> = t
         .points
@@ -229,7 +231,8 @@ pub fn plot(
                 positive(cond.iter().map(|(p, c)| (*p, bem(c))).collect()),
             ));
         }
-        render(&fig, &sibling(path, "conductance"))?;
+        let p = sibling(path, "conductance");
+        files.write(&p, &fig.encode(&p)?)?;
     }
     Ok(())
 }

@@ -2,8 +2,6 @@
 //! load, through the contact spots (Barber's identity on Persson's stiffness)
 //! and through the gap (over P(u)); the scene output `conductance`.
 
-use std::path::PathBuf;
-
 use persson_studies::scene::{transport, ConductanceOutput};
 
 use super::args::{measured_contact, pressures, MaterialArgs, MeasuredArgs, SpectrumArgs};
@@ -36,8 +34,8 @@ pub struct Args {
     mean_free_path: Option<f64>,
     /// Gap conductance from a table α(u): a text file of two columns, u (m)
     /// ascending and α (W/(m² K)); `#` starts a comment.
-    #[arg(long, conflicts_with = "gas_conductivity", value_name = "FILE")]
-    gap_table: Option<PathBuf>,
+    #[arg(long, conflicts_with = "gas_conductivity", value_name = "FILE", value_parser = super::files::in_file)]
+    gap_table: Option<super::files::InFile>,
     /// Relative tolerance of the wavevector integrals.
     #[arg(long, default_value = "1e-9", allow_hyphen_values = true, value_parser = number)]
     tolerance: f64,
@@ -49,8 +47,7 @@ pub struct Args {
 }
 
 /// Run `persson conductance`.
-pub fn run(a: Args) -> anyhow::Result<()> {
-    a.plot.check()?;
+pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
     let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
     let pressures = pressures(&a.pressure, a.spectrum.example)?;
     let gap_table = match &a.gap_table {
@@ -70,20 +67,53 @@ pub fn run(a: Args) -> anyhow::Result<()> {
     let report = transport::conductance(&surface, &pressures, &out)?;
     #[cfg(feature = "plot")]
     a.plot
-        .draw(|| persson_studies::scene::plot::conductance(&report))?;
+        .draw(files, || persson_studies::scene::plot::conductance(&report))?;
     print_warned(&report, &report.warnings, &a.format)
 }
 
-/// The (u, α) pairs of a `--gap-table` file.
+/// The (u, α) pairs of a `--gap-table` file, checked by the gap law's own
+/// validation ([`persson::conductance::GapLaw::validate`]); an error names
+/// the file and the line of the point at fault.
 fn read_gap_table(path: &std::path::Path) -> anyhow::Result<Vec<(f64, f64)>> {
     let bytes = persson::io::read(path)?;
-    let m = persson::io::text::matrix(path, &bytes)?;
-    if m.cols != 2 {
-        anyhow::bail!(
-            "--gap-table {}: {} columns, need 2 (u in m, α in W/(m² K))",
-            path.display(),
-            m.cols
-        );
+    let rows = persson::io::text::rows(path, &bytes)?;
+    let in_file = |line: usize, what: String| {
+        anyhow::Error::from(persson::Error::parse(
+            path,
+            line,
+            0,
+            format!("--gap-table: {what}"),
+        ))
+    };
+    let mut points = Vec::with_capacity(rows.rows.len());
+    for r in &rows.rows {
+        let &[u, alpha] = r.values.as_slice() else {
+            let n = r.values.len();
+            return Err(in_file(
+                r.line,
+                format!("{n} columns, need 2 (u in m, α in W/(m² K))"),
+            ));
+        };
+        points.push((u, alpha));
     }
-    Ok(m.values.chunks(2).map(|r| (r[0], r[1])).collect())
+    let law = persson::conductance::GapLaw::Table {
+        points: points.clone(),
+    };
+    match law.validate() {
+        Ok(()) => Ok(points),
+        Err(persson::Error::InvalidParameter {
+            name,
+            value,
+            requirement,
+        }) => {
+            let row = name
+                .strip_prefix("gap_table[")
+                .and_then(|i| i.strip_suffix(']'))
+                .and_then(|i| i.parse::<usize>().ok());
+            let line = row.and_then(|i| rows.rows.get(i)).map_or(0, |r| r.line);
+            let value = persson_studies::table::number(value, 6);
+            Err(in_file(line, format!("{value} must be {requirement}")))
+        }
+        Err(e) => Err(e.into()),
+    }
 }

@@ -2,8 +2,6 @@
 //! measured master curve (the scene output `friction`; Persson, J. Chem.
 //! Phys. 115, 3840 (2001); J. Phys.: Condens. Matter 18, 7789 (2006)).
 
-use std::path::PathBuf;
-
 use anyhow::bail;
 use persson_studies::scene::{
     friction, FrequencyUnitName, FrictionOutput, RubberSpec, StandardLinearSolidSpec,
@@ -11,6 +9,7 @@ use persson_studies::scene::{
 };
 
 use super::args::{flag_of, spectrum_spec, MeasuredArgs, SpectrumArgs};
+use super::files::{in_file, InFile};
 use super::number::number;
 use super::output::{print_warned, Format};
 
@@ -18,14 +17,14 @@ use super::output::{print_warned, Format};
 #[derive(clap::Args, Debug)]
 pub struct RubberArgs {
     /// Viscoelastic master curve at T_ref: columns ω (or f), E′, E″ in Pa; `#` comments.
-    #[arg(long, value_name = "FILE", group = "modulus")]
-    master_curve: Option<PathBuf>,
+    #[arg(long, value_name = "FILE", group = "modulus", value_parser = in_file)]
+    master_curve: Option<InFile>,
     /// Unit of the --master-curve frequency column.
     #[arg(long, value_enum, requires = "master_curve")]
     frequency_unit: Option<FrequencyUnitName>,
     /// Prony series (generalised Maxwell): rows E_k (Pa), τ_k (s); a row with τ = inf is E∞.
-    #[arg(long, value_name = "FILE", group = "modulus")]
-    prony: Option<PathBuf>,
+    #[arg(long, value_name = "FILE", group = "modulus", value_parser = in_file)]
+    prony: Option<InFile>,
     /// Standard linear solid E0,Einf,tau: instantaneous and relaxed modulus (Pa), τ (s).
     #[arg(long, value_name = "E0,EINF,TAU", group = "modulus", value_delimiter = ',',
           allow_hyphen_values = true, value_parser = number)]
@@ -35,8 +34,8 @@ pub struct RubberArgs {
           allow_hyphen_values = true, value_parser = number)]
     wlf: Vec<f64>,
     /// Shift table: rows T (K), a_T[, b_T]; `#` comments.
-    #[arg(long, value_name = "FILE")]
-    shift_table: Option<PathBuf>,
+    #[arg(long, value_name = "FILE", value_parser = in_file)]
+    shift_table: Option<InFile>,
     /// T_ref of a --shift-table (default: where its a_T = 1) or of an unshifted rubber, K.
     #[arg(long, allow_hyphen_values = true, value_parser = number)]
     reference_temperature: Option<f64>,
@@ -136,12 +135,12 @@ impl RubberArgs {
             bail!("--master-curve needs --frequency-unit rad/s or Hz");
         }
         Ok(RubberSpec {
-            master_curve: self.master_curve.clone(),
+            master_curve: self.master_curve.clone().map(Into::into),
             frequency_unit: self.frequency_unit,
-            prony: self.prony.clone(),
+            prony: self.prony.clone().map(Into::into),
             standard_linear_solid: sls,
             wlf,
-            shift_table: self.shift_table.clone(),
+            shift_table: self.shift_table.clone().map(Into::into),
             reference_temperature: self.reference_temperature,
             vertical_shift: self.vertical_shift,
             poisson: Some(self.poisson),
@@ -174,8 +173,7 @@ const FLAGS: &[(&str, &str)] = &[
 ];
 
 /// Run `persson friction`.
-pub fn run(a: Args) -> anyhow::Result<()> {
-    a.plot.check()?;
+pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
     let thermal = [
         a.rubber.thermal_conductivity,
         a.rubber.density,
@@ -227,9 +225,7 @@ pub fn run(a: Args) -> anyhow::Result<()> {
             None => a.spectrum.psd_hint(e),
         })?;
     #[cfg(feature = "plot")]
-    if let Some(path) = &a.plot.plot {
-        use persson_studies::scene::plot;
-        persson_studies::plot::render_stacked(&plot::friction(&report)?, path)?;
-    }
+    a.plot
+        .draw(files, || persson_studies::scene::plot::friction(&report))?;
     print_warned(&report, &report.warnings, &a.format)
 }

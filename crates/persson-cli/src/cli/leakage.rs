@@ -89,14 +89,13 @@ impl SealArgs {
 }
 
 /// Run `persson leakage`.
-pub fn run(a: Args) -> anyhow::Result<()> {
-    a.plot.check()?;
+pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
     let out = a.seal.output(a.percolation_threshold, a.tolerance)?;
     let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
     let pressures = pressures(&a.pressure, a.spectrum.example)?;
     let report = transport::leakage(&surface, &pressures, &out)?;
     #[cfg(feature = "plot")]
     a.plot
-        .draw(|| persson_studies::scene::plot::leakage(&report))?;
+        .draw(files, || persson_studies::scene::plot::leakage(&report))?;
     print_warned(&report, &report.warnings, &a.format)
 }

@@ -29,17 +29,12 @@ pub struct Args {
     #[command(flatten)]
     plot: super::plot::PlotArg,
     /// Also draw G(ζ) into this file (.svg or .png).
-    #[arg(long, value_name = "FILE.svg|png")]
-    plot_g: Option<std::path::PathBuf>,
+    #[arg(long, value_name = "FILE.svg|png", value_parser = super::files::out_file)]
+    plot_g: Option<super::files::OutFile>,
 }
 
 /// Run `persson magnification`.
-pub fn run(a: Args) -> anyhow::Result<()> {
-    a.plot.check()?;
-    let plot_g = super::plot::PlotArg {
-        plot: a.plot_g.clone(),
-    };
-    plot_g.check()?;
+pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
     let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
     let nominal_pressure = match (a.pressure, a.spectrum.example) {
         (Some(p), _) => p,
@@ -57,8 +52,10 @@ pub fn run(a: Args) -> anyhow::Result<()> {
     #[cfg(feature = "plot")]
     {
         use persson_studies::scene::plot;
-        a.plot.draw(|| plot::magnification_area(&report))?;
-        plot_g.draw(|| plot::magnification_g(&report))?;
+        a.plot.draw(files, || plot::magnification_area(&report))?;
+        super::plot::draw(files, a.plot_g.as_deref(), || {
+            plot::magnification_g(&report)
+        })?;
     }
     print_warned(&report, &report.warnings, &a.format)
 }

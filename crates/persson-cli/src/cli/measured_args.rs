@@ -3,9 +3,9 @@
 //! (which has its own `--surface` and `--size`). They build the scene file's
 //! `height_map` spectrum, [`HeightMapSpec`].
 
-use std::path::PathBuf;
-
 use anyhow::bail;
+
+use super::files::{in_file, InFile};
 use persson_studies::scene::{
     DetrendName, HeightMapSpec, LengthUnitName, Sides, SpectrumSpec, WindowName,
 };
@@ -18,19 +18,8 @@ pub struct MeasuredArgs {
     /// .npy, text matrix, .xyz, Gwyddion .gsf, ISO 25178-72 .x3p, or two-column line scans.
     /// Repeat it for measurements of one surface at different scales: their spectra
     /// are combined (mode-weighted mean over the overlaps of their reliable bands).
-    #[arg(long, conflicts_with_all = ["hurst", "q_l", "q_r", "amplitude", "psd", "example"])]
-    pub surface: Vec<PathBuf>,
-    /// Pixel size Δ of the --surface map (square pixels), m; with several
-    /// --surface, one value for all or one per surface (comma-separated or repeated).
-    #[arg(
-        long,
-        requires = "surface",
-        conflicts_with = "size",
-        value_delimiter = ',',
-        allow_hyphen_values = true,
-        value_parser = super::number::number,
-    )]
-    pub pixel_size: Vec<f64>,
+    #[arg(long, conflicts_with_all = ["hurst", "q_l", "q_r", "amplitude", "psd", "example"], value_parser = in_file)]
+    pub surface: Vec<InFile>,
     /// Tip radius R of the scanning probe that measured the --surface, m: the band
     /// ends where the measured curvature is sharper than the tip (safety factor 1/2);
     /// with several --surface, one value for all or one per surface.
@@ -57,6 +46,26 @@ pub struct MeasuredArgs {
     /// The --surface map is periodic (no detrending or window by default).
     #[arg(long, requires = "surface")]
     pub periodic: bool,
+    #[command(flatten)]
+    pub read: MapReadArgs,
+}
+
+/// How a `--surface` file is read: the flags every command that takes a
+/// measured surface shares (the BEM's `bem rough --surface` too), so that
+/// one file is read the same way everywhere.
+#[derive(clap::Args, Debug, Clone, Default)]
+pub struct MapReadArgs {
+    /// Pixel size Δ of the --surface map (square pixels), m; with several
+    /// --surface, one value for all or one per surface (comma-separated or repeated).
+    #[arg(
+        long,
+        requires = "surface",
+        conflicts_with = "size",
+        value_delimiter = ',',
+        allow_hyphen_values = true,
+        value_parser = super::number::number,
+    )]
+    pub pixel_size: Vec<f64>,
     /// Fill undefined points (NaN, missing data) by harmonic interpolation.
     #[arg(long, requires = "surface")]
     pub fill_undefined: bool,
@@ -70,6 +79,26 @@ pub struct MeasuredArgs {
     /// column; for arrays saved from SurfaceTopography's heights(), indexed [ix, iy]).
     #[arg(long, requires = "surface")]
     pub transpose: bool,
+}
+
+impl MapReadArgs {
+    /// The height-map entry of `file` read as these flags say (`i`: which of
+    /// several surfaces, for a per-surface --pixel-size).
+    pub fn spec(&self, file: &InFile, i: usize) -> HeightMapSpec {
+        let pixel_size = match self.pixel_size[..] {
+            [] => None,
+            [d] => Some(d),
+            _ => self.pixel_size.get(i).copied(),
+        };
+        HeightMapSpec {
+            pixel_size,
+            fill_undefined: self.fill_undefined,
+            height_unit: self.height_unit,
+            lateral_unit: self.lateral_unit,
+            transpose: self.transpose,
+            ..HeightMapSpec::new(file.to_path_buf())
+        }
+    }
 }
 
 impl MeasuredArgs {
@@ -91,7 +120,7 @@ impl MeasuredArgs {
         }
         let n = self.surface.len();
         for (flag, given) in [
-            ("--pixel-size", self.pixel_size.len()),
+            ("--pixel-size", self.read.pixel_size.len()),
             ("--tip-radius", self.tip_radius.len()),
             ("--size", self.size.len()),
         ] {
@@ -114,7 +143,6 @@ impl MeasuredArgs {
 
     /// The `i`-th surface's entry.
     fn one(&self, i: usize, q_max: Option<f64>) -> anyhow::Result<HeightMapSpec> {
-        let file = self.surface[i].clone();
         let pick = |v: &[f64]| match v.len() {
             0 => None,
             1 => Some(v[0]),
@@ -133,17 +161,12 @@ impl MeasuredArgs {
         };
         Ok(HeightMapSpec {
             size,
-            pixel_size: pick(&self.pixel_size),
             tip_radius: pick(&self.tip_radius),
             periodic: self.periodic,
             detrend: self.detrend,
             window: self.window,
-            fill_undefined: self.fill_undefined,
             q_max,
-            height_unit: self.height_unit,
-            lateral_unit: self.lateral_unit,
-            transpose: self.transpose,
-            ..HeightMapSpec::new(file)
+            ..self.read.spec(&self.surface[i], i)
         })
     }
 }

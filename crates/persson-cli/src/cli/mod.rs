@@ -22,6 +22,7 @@ mod compare_plot;
 #[cfg(feature = "bem")]
 mod compare_transport;
 mod conductance;
+mod files;
 mod friction;
 mod kappa;
 mod leakage;
@@ -88,25 +89,33 @@ enum Cmd {
     Leakage(leakage::Args),
 }
 
-/// Run one parsed command line.
-pub fn run(cli: Cli) -> anyhow::Result<()> {
+/// Run one parsed command line (`matches` as clap parsed it): every file it
+/// names is checked before anything is computed, and its outputs are
+/// written only once the whole command has succeeded ([`files`]).
+pub fn run(cli: Cli, matches: &clap::ArgMatches) -> anyhow::Result<()> {
+    use clap::CommandFactory;
+    let mut out = persson_studies::output::Files::new();
+    files::plan(&Cli::command(), matches, &mut out)?;
+    let o = &mut out;
     match cli.cmd {
-        Cmd::Spectrum(a) => spectrum::run(a),
-        Cmd::Magnification(a) => magnification::run(a),
-        Cmd::Area(a) => area::run(a),
-        Cmd::Anisotropy(a) => anisotropy::run(a),
+        Cmd::Spectrum(a) => spectrum::run(a, o),
+        Cmd::Magnification(a) => magnification::run(a, o),
+        Cmd::Area(a) => area::run(a, o),
+        Cmd::Anisotropy(a) => anisotropy::run(a, o),
         Cmd::Kappa(a) => kappa::run(a),
-        Cmd::Run(a) => run::run(a),
-        Cmd::Report(a) => report::run(a),
-        Cmd::Stress(a) => stress::run(a),
-        Cmd::Separation(a) => separation::run(a),
+        Cmd::Run(a) => run::run(a, o),
+        Cmd::Report(a) => report::run(a, o),
+        Cmd::Stress(a) => stress::run(a, o),
+        Cmd::Separation(a) => separation::run(a, o),
         Cmd::Adhesion(a) => adhesion::run(a),
         #[cfg(feature = "bem")]
-        Cmd::Bem(a) => bem::run(a),
+        Cmd::Bem(a) => bem::run(a, o),
         #[cfg(feature = "bem")]
-        Cmd::Compare(a) => compare::run(a),
-        Cmd::Friction(a) => friction::run(a),
-        Cmd::Conductance(a) => conductance::run(a),
-        Cmd::Leakage(a) => leakage::run(a),
-    }
+        Cmd::Compare(a) => compare::run(a, o),
+        Cmd::Friction(a) => friction::run(a, o),
+        Cmd::Conductance(a) => conductance::run(a, o),
+        Cmd::Leakage(a) => leakage::run(a, o),
+    }?;
+    out.commit()?;
+    Ok(())
 }

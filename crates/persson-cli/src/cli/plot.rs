@@ -1,59 +1,60 @@
-//! `--plot FILE.svg|png`, flattened into every subcommand that has a curve.
+//! `--plot FILE.svg|png`, flattened into every subcommand that has a curve,
+//! and [`draw`], which stages a figure for any output flag.
 //!
-//! Pattern (see `area.rs`): add `#[command(flatten)] plot: super::plot::PlotArg`
-//! to the arguments, then after computing
+//! The file was checked before anything was computed ([`super::files`]);
+//! after computing, a subcommand draws its figure:
 //! ```text
 //! #[cfg(feature = "plot")]
-//! a.plot.draw(|| persson_studies::plot::area_vs_load(...))?;
-//! #[cfg(not(feature = "plot"))]
-//! a.plot.unavailable()?;
+//! a.plot.draw(files, || persson_studies::scene::plot::area(&report))?;
 //! ```
 
-use std::path::PathBuf;
+use std::path::Path;
+
+use persson_studies::output::Files;
+
+use super::files::{out_file, OutFile};
 
 /// The `--plot` flag.
 #[derive(clap::Args, Debug, Clone, Default)]
 pub struct PlotArg {
     /// Also draw the curve into this file (.svg or .png, 800×560).
-    #[arg(long, value_name = "FILE.svg|png")]
-    pub plot: Option<PathBuf>,
+    #[arg(long, value_name = "FILE.svg|png", value_parser = out_file)]
+    pub plot: Option<OutFile>,
 }
 
 impl PlotArg {
-    /// Before computing: the `--plot` file has a supported extension and its
-    /// directory accepts a new file.
-    pub fn check(&self) -> anyhow::Result<()> {
-        if let Some(path) = &self.plot {
-            #[cfg(feature = "plot")]
-            persson_studies::plot::Format::from_path(path)?;
-            #[cfg(not(feature = "plot"))]
-            self.unavailable()?;
-            persson::io::check_writable(path)?;
-        }
-        Ok(())
-    }
-
-    /// Renders the figure made by `build` into the `--plot` file, if given.
+    /// Stages the figure made by `build` for the `--plot` file, if given.
     #[cfg(feature = "plot")]
-    pub fn draw(
+    pub fn draw<F: persson_studies::plot::Encode>(
         &self,
-        build: impl FnOnce() -> persson::Result<persson_studies::plot::Figure>,
+        files: &mut Files,
+        build: impl FnOnce() -> persson::Result<F>,
     ) -> anyhow::Result<()> {
-        if let Some(path) = &self.plot {
-            persson_studies::plot::render(&build()?, path)?;
-        }
-        Ok(())
+        draw(files, self.plot.as_deref(), build)
     }
+}
 
-    /// In a build without the `plot` feature, `--plot` is an error.
-    #[cfg(not(feature = "plot"))]
-    pub fn unavailable(&self) -> anyhow::Result<()> {
-        match &self.plot {
-            Some(p) => anyhow::bail!(
-                "--plot {}: this persson was built without the `plot` feature",
-                p.display()
-            ),
-            None => Ok(()),
-        }
+/// Stages the figure made by `build` for `path`, if given (the format by
+/// its extension); written when the whole command has succeeded.
+#[cfg(feature = "plot")]
+pub fn draw<F: persson_studies::plot::Encode>(
+    files: &mut Files,
+    path: Option<&Path>,
+    build: impl FnOnce() -> persson::Result<F>,
+) -> anyhow::Result<()> {
+    if let Some(p) = path {
+        files.write(p, &build()?.encode(p)?)?;
     }
+    Ok(())
+}
+
+/// Without the feature `plot` no output flag names a plot (refused by
+/// [`super::files::plan`]): nothing to draw.
+#[cfg(not(feature = "plot"))]
+pub fn draw<F>(
+    _: &mut Files,
+    _: Option<&Path>,
+    _: impl FnOnce() -> persson::Result<F>,
+) -> anyhow::Result<()> {
+    Ok(())
 }

@@ -33,13 +33,12 @@ enum Which {
 }
 
 /// Run `persson report`.
-pub fn run(a: Args) -> anyhow::Result<()> {
+pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
     match a.which {
         Which::Accuracy { full, format, plot } => {
-            plot.check()?;
             let r = report::accuracy(if full { Extent::Full } else { Extent::Default })?;
             #[cfg(feature = "plot")]
-            plot.draw(|| {
+            plot.draw(files, || {
                 let methods: Vec<(&str, Vec<(f64, f64)>)> = r
                     .methods
                     .iter()

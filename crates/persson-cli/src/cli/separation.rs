@@ -28,8 +28,8 @@ pub struct Args {
     #[command(flatten)]
     plot: super::plot::PlotArg,
     /// Also draw A/A0 against load for all four theories (default γ) into this file.
-    #[arg(long, value_name = "FILE.svg|png")]
-    plot_area: Option<std::path::PathBuf>,
+    #[arg(long, value_name = "FILE.svg|png", value_parser = super::files::out_file)]
+    plot_area: Option<super::files::OutFile>,
     /// Number of log-spaced pressures in the plots, spanning the given pressures
     /// (a single pressure σ0: σ0/100 to 100 σ0).
     #[arg(long, default_value_t = 60, allow_hyphen_values = true, value_parser = super::number::count)]
@@ -47,12 +47,7 @@ pub struct Args {
 }
 
 /// Run `persson separation`.
-pub fn run(a: Args) -> anyhow::Result<()> {
-    a.plot.check()?;
-    let plot_area = super::plot::PlotArg {
-        plot: a.plot_area.clone(),
-    };
-    plot_area.check()?;
+pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
     let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
     let pressures = pressures(&a.pressure, a.spectrum.example)?;
     if a.separation_density {
@@ -71,7 +66,7 @@ pub fn run(a: Args) -> anyhow::Result<()> {
         })?;
         return print_warned(&report, &report.warnings, &a.format);
     }
-    let grid = if a.plot.plot.is_some() || plot_area.plot.is_some() {
+    let grid = if a.plot.plot.is_some() || a.plot_area.is_some() {
         plot_pressures(&pressures, a.plot_points)?
     } else {
         vec![]
@@ -88,10 +83,10 @@ pub fn run(a: Args) -> anyhow::Result<()> {
     #[cfg(feature = "plot")]
     {
         use persson_studies::scene::plot;
-        a.plot.draw(|| plot::separation(&report))?;
-        if plot_area.plot.is_some() {
+        a.plot.draw(files, || plot::separation(&report))?;
+        if a.plot_area.is_some() {
             let theories = run::theories(&surface, &grid, &TheoriesOutput::default())?;
-            plot_area.draw(|| plot::theories(&theories))?;
+            super::plot::draw(files, a.plot_area.as_deref(), || plot::theories(&theories))?;
         }
     }
     #[cfg(not(feature = "plot"))]

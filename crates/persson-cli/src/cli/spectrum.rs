@@ -2,8 +2,7 @@
 //! `--surface`, the measured surface's spectrum and statistics
 //! ([`persson::topography::analyse`]).
 
-use std::path::PathBuf;
-
+use persson_studies::output::Files;
 use persson_studies::scene::run;
 
 use super::args::{MeasuredArgs, SpectrumArgs};
@@ -27,8 +26,8 @@ pub struct Args {
     #[arg(long, default_value_t = 11, conflicts_with = "surface", allow_hyphen_values = true, value_parser = super::number::count)]
     points: usize,
     /// Write the --surface spectrum as CSV (q, c; Persson), which --psd reads back as is.
-    #[arg(long, value_name = "FILE.csv", requires = "surface")]
-    psd_out: Option<PathBuf>,
+    #[arg(long, value_name = "FILE.csv", requires = "surface", value_parser = super::files::out_file)]
+    psd_out: Option<super::files::OutFile>,
     #[command(flatten)]
     format: Format,
     #[command(flatten)]
@@ -36,13 +35,12 @@ pub struct Args {
 }
 
 /// Run `persson spectrum`.
-pub fn run(a: Args) -> anyhow::Result<()> {
-    a.plot.check()?;
+pub fn run(a: Args, files: &mut Files) -> anyhow::Result<()> {
     if a.measured.surface.len() > 1 {
-        return multi_scale(&a);
+        return multi_scale(&a, files);
     }
     if let Some(map) = a.measured.spec(a.q_max)? {
-        return measured(&a, &map);
+        return measured(&a, &map, files);
     }
     let spec = a.spectrum.spec()?;
     let s = spec.build().map_err(|e| a.spectrum.psd_hint(e))?;
@@ -62,30 +60,36 @@ pub fn run(a: Args) -> anyhow::Result<()> {
     }
     #[cfg(feature = "plot")]
     a.plot
-        .draw(|| persson_studies::scene::plot::spectrum(&report))?;
+        .draw(files, || persson_studies::scene::plot::spectrum(&report))?;
     print_warned(&report, &report.warnings, &a.format)
 }
 
 /// `--surface`: the analysis of the map, its CSV and plot.
 #[cfg(feature = "topography")]
-fn measured(a: &Args, map: &persson_studies::scene::HeightMapSpec) -> anyhow::Result<()> {
-    if let Some(path) = &a.psd_out {
-        persson::io::check_writable(path)?;
-    }
+fn measured(
+    a: &Args,
+    map: &persson_studies::scene::HeightMapSpec,
+    files: &mut Files,
+) -> anyhow::Result<()> {
     let report = map.analyse()?;
     if let Some(path) = &a.psd_out {
-        report.psd.write_csv(path)?;
+        files.write(path, report.psd.to_csv().as_bytes())?;
     }
     #[cfg(feature = "plot")]
-    a.plot
-        .draw(|| persson_studies::scene::plot::measured_spectrum(&report))?;
+    a.plot.draw(files, || {
+        persson_studies::scene::plot::measured_spectrum(&report)
+    })?;
     let warnings = persson_studies::warning::of_measured(&map.file, &report);
     print_warned(&report, &warnings, &a.format)
 }
 
 /// Without the feature `topography`, `--surface` is an error.
 #[cfg(not(feature = "topography"))]
-fn measured(_: &Args, map: &persson_studies::scene::HeightMapSpec) -> anyhow::Result<()> {
+fn measured(
+    _: &Args,
+    map: &persson_studies::scene::HeightMapSpec,
+    _: &mut Files,
+) -> anyhow::Result<()> {
     anyhow::bail!(
         "--surface {}: this persson was built without the `topography` feature",
         map.file.display()
@@ -93,18 +97,15 @@ fn measured(_: &Args, map: &persson_studies::scene::HeightMapSpec) -> anyhow::Re
 }
 
 /// Several `--surface`: each measurement's band and the combined spectrum.
-fn multi_scale(a: &Args) -> anyhow::Result<()> {
+fn multi_scale(a: &Args, files: &mut Files) -> anyhow::Result<()> {
     use persson_studies::scene::SpectrumSpec;
     let Some(SpectrumSpec::MultiScale { measurements }) = a.measured.spectrum_spec(a.q_max)? else {
         anyhow::bail!("several --surface files expected");
     };
-    if let Some(path) = &a.psd_out {
-        persson::io::check_writable(path)?;
-    }
     let report = persson_studies::scene::multiscale::multi_scale(&measurements)?;
     #[cfg(feature = "plot")]
     a.plot
-        .draw(|| persson_studies::scene::plot::multi_scale(&report))?;
+        .draw(files, || persson_studies::scene::plot::multi_scale(&report))?;
     if let Some(path) = &a.psd_out {
         use persson::io::csv_number as num;
         let mut text = String::from(
@@ -113,7 +114,7 @@ fn multi_scale(a: &Args) -> anyhow::Result<()> {
         for (q, c) in report.q.iter().zip(&report.c) {
             text.push_str(&format!("{},{}\n", num(*q), num(*c)));
         }
-        persson::io::write_atomic(path, text.as_bytes())?;
+        files.write(path, text.as_bytes())?;
     }
     print_warned(&report, &report.warnings, &a.format)
 }

@@ -37,8 +37,8 @@ pub struct Args {
     start: Option<StartName>,
     /// A tabulated start instead: a file of two columns σ/σH, σH P0 (comma or
     /// blank separated, `#` comments), piecewise linear, σH = the last σ.
-    #[arg(long, conflicts_with_all = PHYSICAL)]
-    table: Option<std::path::PathBuf>,
+    #[arg(long, conflicts_with_all = PHYSICAL, value_parser = super::files::in_file)]
+    table: Option<super::files::InFile>,
     /// How far ∫ P0 dσ of a --table may be from 1.
     #[arg(
         long,
@@ -138,11 +138,10 @@ pub struct Args {
 }
 
 /// Run `persson stress`.
-pub fn run(a: Args) -> anyhow::Result<()> {
-    a.plot.check()?;
+pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
     if a.ball_radius.is_some() || a.cylinder_radius.is_some() || a.flat || a.peak_pressure.is_some()
     {
-        return physical(&a);
+        return physical(&a, files);
     }
     if a.spectrum.is_given() || !a.measured.surface.is_empty() || !a.zeta.is_empty() {
         anyhow::bail!(
@@ -179,13 +178,13 @@ pub fn run(a: Args) -> anyhow::Result<()> {
     )?;
     #[cfg(feature = "plot")]
     a.plot
-        .draw(|| persson_studies::scene::plot::stress(&report))?;
+        .draw(files, || persson_studies::scene::plot::stress(&report))?;
     print_warned(&report, &report.warnings, &a.format)
 }
 
 /// The physical mode: the scene's `stress` output with `zeta`, on the surface
 /// of the spectrum (or `--surface`) and material flags.
-fn physical(a: &Args) -> anyhow::Result<()> {
+fn physical(a: &Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
     let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
     let (start, ball, cylinder, peak_pressure) =
         match (a.ball_radius, a.cylinder_radius, a.peak_pressure, a.start) {
@@ -228,7 +227,7 @@ fn physical(a: &Args) -> anyhow::Result<()> {
     let report = run::stress_physical(&surface, &out)?;
     #[cfg(feature = "plot")]
     a.plot
-        .draw(|| persson_studies::scene::plot::stress(&report))?;
+        .draw(files, || persson_studies::scene::plot::stress(&report))?;
     print_warned(&report, &report.warnings, &a.format)
 }
 

@@ -23,11 +23,8 @@ pub struct SubsurfaceOptions {
     pub poisson: f64,
     /// Uniaxial yield stress Y of the von Mises criterion (unit of p).
     pub tensile_yield_stress: Option<f64>,
-    /// Write each plane's von Mises map as .npy: `_k_j` (pressure k, depth j)
-    /// is added before the extension.
-    pub stress_field: Option<PathBuf>,
-    /// Keep each plane's von Mises map in [`Details::maps`] (a scene writes
-    /// them into its output directory afterwards).
+    /// Keep each plane's von Mises map in [`Details::maps`] (written or
+    /// drawn once the whole run has succeeded).
     pub keep_maps: bool,
 }
 
@@ -88,7 +85,7 @@ impl Details {
     /// Study solve `k`.
     ///
     /// # Errors
-    /// A map that cannot be written; the studies' own errors.
+    /// The studies' own errors.
     pub fn solution(&mut self, k: usize, s: &Solution) -> Result<()> {
         let sigma0 = self.pressures.get(k).copied().unwrap_or(s.mean_pressure);
         if let Some(p) = &mut self.patches {
@@ -113,10 +110,7 @@ impl Details {
                             von_mises_stress: map.to_vec(),
                         });
                     }
-                    match &o.stress_field {
-                        Some(path) => persson::io::npy::write(&indexed(path, k, j), n, n, map),
-                        None => Ok(()),
-                    }
+                    Ok(())
                 },
             )?;
             study.points.push(point);

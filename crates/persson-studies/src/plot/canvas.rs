@@ -4,8 +4,8 @@
 //! Line figures go through [`super::prepare`] first; these figures have no
 //! layout step, so each implements [`Canvas`] (validate, then draw at `k`
 //! times its size) and [`render_canvas`] does the rest: the format from the
-//! extension, the font check, PNG supersampling, and an atomic write (a
-//! temporary file renamed over `path` only when drawing succeeded).
+//! extension, the font check and PNG supersampling, into the file's bytes
+//! ([`super::Encode`]).
 
 use std::path::Path;
 
@@ -30,26 +30,22 @@ pub(crate) trait Canvas {
     fn draw_on<DB: DrawingBackend>(&self, root: DrawingArea<DB, Shift>, k: u32) -> DrawResult<DB>;
 }
 
-/// Draws `fig` into `path` (`.svg` or `.png` by extension), atomically.
+/// The bytes of `fig` as the `.svg` or `.png` file `path` (by extension).
 ///
 /// # Errors
-/// [`Error::Io`] for another extension, an unwritable directory or a
-/// backend failure; [`Error::InvalidParameter`] for a size outside
-/// [`super::SIZE_LIMITS`]; the figure's own [`Canvas::check`] errors.
-pub(crate) fn render_canvas<C: Canvas>(fig: &C, path: &Path) -> Result<()> {
+/// [`Error::Io`] for another extension or a backend failure;
+/// [`Error::InvalidParameter`] for a size outside [`super::SIZE_LIMITS`];
+/// the figure's own [`Canvas::check`] errors.
+pub(crate) fn encode_canvas<C: Canvas>(fig: &C, path: &Path) -> Result<Vec<u8>> {
     let format = Format::from_path(path)?;
     check_size(fig.size())?;
     fig.check()?;
     draw::ensure_font(path)?;
-    let io = |source| Error::Io {
-        path: path.to_path_buf(),
-        source,
-    };
     let size = fig.size();
-    let bytes = match format {
-        Format::Svg => svg_string(fig)
+    match format {
+        Format::Svg => Ok(svg_string(fig)
             .map_err(|e| backend_error(path, e))?
-            .into_bytes(),
+            .into_bytes()),
         Format::Png => {
             // Drawn at k× the size and averaged down: anti-aliased.
             let k = draw::supersampling(size);
@@ -61,14 +57,12 @@ pub(crate) fn render_canvas<C: Canvas>(fig: &C, path: &Path) -> Result<()> {
                     .map_err(|e| backend_error(path, e.to_string()))?;
             }
             let pixels = draw::downsample(&buf, big, k);
-            let tmp = persson::io::TempFile::create(path)?;
-            draw::write_png(tmp.path(), size, &pixels).map_err(io)?;
-            return tmp.persist();
+            draw::png_bytes(size, &pixels).map_err(|source| Error::Io {
+                path: path.to_path_buf(),
+                source,
+            })
         }
-    };
-    let tmp = persson::io::TempFile::create(path)?;
-    std::fs::write(tmp.path(), bytes).map_err(io)?;
-    tmp.persist()
+    }
 }
 
 /// Draws `fig` as an SVG document in memory.

@@ -107,10 +107,10 @@ pub(crate) fn downsample(rgb: &[u8], size: (u32, u32), k: u32) -> Vec<u8> {
     out
 }
 
-/// Writes 8-bit RGB rows of `size` pixels as a PNG file.
-pub(crate) fn write_png(path: &Path, size: (u32, u32), rgb: &[u8]) -> std::io::Result<()> {
-    let file = std::io::BufWriter::new(std::fs::File::create(path)?);
-    let mut encoder = png::Encoder::new(file, size.0, size.1);
+/// 8-bit RGB rows of `size` pixels encoded as a PNG file's bytes.
+pub(crate) fn png_bytes(size: (u32, u32), rgb: &[u8]) -> std::io::Result<Vec<u8>> {
+    let mut bytes = Vec::new();
+    let mut encoder = png::Encoder::new(&mut bytes, size.0, size.1);
     encoder.set_color(png::ColorType::Rgb);
     encoder.set_depth(png::BitDepth::Eight);
     // Adaptive row filters: about 7x smaller files than the default for
@@ -121,7 +121,8 @@ pub(crate) fn write_png(path: &Path, size: (u32, u32), rgb: &[u8]) -> std::io::R
     writer
         .write_image_data(rgb)
         .map_err(std::io::Error::other)?;
-    writer.finish().map_err(std::io::Error::other)
+    writer.finish().map_err(std::io::Error::other)?;
+    Ok(bytes)
 }
 
 fn rgb(c: Rgb) -> RGBColor {

@@ -3,8 +3,8 @@
 //! nodes at p = σY in red), and the histogram P(σ) with the plastic δ-peak
 //! at σY drawn as a red bar labelled with its weight A_pl/A0.
 //!
-//! Like [`super::Figure`] a [`MapFigure`] is plain data, drawn by
-//! [`render_map`] into an `.svg` or `.png` file (atomically) or by
+//! Like [`super::Figure`] a [`MapFigure`] is plain data, drawn
+//! into an `.svg` or `.png` file ([`super::Encode`]) or by
 //! [`render_map_svg_string`] into a string.
 //!
 //! Maps finer than [`MAP_CELLS`] per side are drawn in blocks of k × k
@@ -16,7 +16,7 @@ use std::path::Path;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::canvas::{render_canvas, render_canvas_svg_string, Canvas, DrawResult};
+use super::canvas::{render_canvas_svg_string, Canvas, DrawResult};
 use crate::{Error, Result};
 
 /// Most cells per side drawn in the map (finer maps are averaged in blocks).
@@ -350,20 +350,16 @@ fn draw_histogram<DB: DrawingBackend>(
     Ok(())
 }
 
-/// Draws `fig` into `path` (`.svg` or `.png` by extension), atomically.
-///
-/// # Errors
-/// [`Error::Io`] for another extension, an unwritable directory or a
-/// backend failure; [`Error::Inconsistent`] when the map is not N² values;
-/// [`Error::InvalidParameter`] for a size outside [`super::SIZE_LIMITS`].
-pub fn render_map(fig: &MapFigure, path: &Path) -> Result<()> {
-    render_canvas(fig, path)
+impl super::Encode for MapFigure {
+    fn encode(&self, path: &Path) -> Result<Vec<u8>> {
+        super::canvas::encode_canvas(self, path)
+    }
 }
 
 /// Draws `fig` as an SVG document in memory.
 ///
 /// # Errors
-/// As [`render_map`], except the file errors.
+/// As [`super::Encode::encode`], except the file errors.
 pub fn render_map_svg_string(fig: &MapFigure) -> Result<String> {
     render_canvas_svg_string(fig)
 }

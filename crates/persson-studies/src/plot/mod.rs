@@ -24,8 +24,9 @@
 //! - The text is laid out with a bundled DejaVu Sans (`assets/DejaVuSans.ttf`,
 //!   Bitstream Vera licence), so no system font library is needed. SVG files
 //!   name the font family `sans-serif` and the viewer draws the glyphs.
-//! - Files are written atomically: the figure is rendered to a temporary file
-//!   in the target directory and renamed over the target only on success.
+//! - Every figure implements [`Encode`]: the bytes of its `.svg` or `.png`
+//!   file, which the output layer writes only once the whole run has
+//!   succeeded; [`render`] writes them atomically to one file.
 //!
 //! # Examples
 //! ```
@@ -55,7 +56,6 @@ pub use figures::{
     area_vs_load, area_vs_zeta, error_vs_time, g_vs_zeta, spectrum, stress_family, LinearLaw,
     PowerLaw,
 };
-pub use stack::render_stacked;
 
 use crate::{Error, Result};
 use std::path::Path;
@@ -325,48 +325,60 @@ impl Format {
     }
 }
 
-/// Draws `fig` into `path` as SVG or PNG (by extension), atomically.
+/// A figure that encodes itself as the bytes of an `.svg` or `.png` file.
 ///
-/// The figure is rendered into a temporary file next to `path` that is
-/// renamed over `path` only when rendering succeeded, so a failure never
-/// leaves a half-written file and never touches an existing one.
-///
-/// # Errors
-/// - [`Error::Io`] (kind `InvalidInput`) for an extension other than `.svg`/`.png`;
-/// - [`Error::InvalidParameter`] for a fixed range that is not finite,
-///   not increasing, or not positive on a log axis, or a size outside
-///   [`SIZE_LIMITS`];
-/// - [`Error::Inconsistent`] when no series has a drawable point;
-/// - [`Error::Io`] naming `path` when the directory is not writable or the
-///   drawing backend fails.
-pub fn render(fig: &Figure, path: &Path) -> Result<()> {
-    let format = Format::from_path(path)?;
-    draw::ensure_font(path)?;
-    let io = |source| Error::Io {
-        path: path.to_path_buf(),
-        source,
-    };
-    match format {
-        Format::Svg => {
-            let prepared = prepare::prepare(fig, 1, &draw::measure)?;
-            let svg = draw::svg_string(&prepared).map_err(|e| backend_error(path, e))?;
-            let tmp = persson::io::TempFile::create(path)?;
-            std::fs::write(tmp.path(), svg).map_err(io)?;
-            tmp.persist()
-        }
-        Format::Png => {
-            // Drawn at k× the size (fonts and lines scale along) and
-            // averaged down: anti-aliased lines and text.
-            let k = draw::supersampling(fig.size);
-            let big = (fig.size.0 * k, fig.size.1 * k);
-            let prepared = prepare::prepare(fig, k, &draw::measure)?;
-            let pixels = draw::rgb_pixels(&prepared).map_err(|e| backend_error(path, e))?;
-            let pixels = draw::downsample(&pixels, big, k);
-            let tmp = persson::io::TempFile::create(path)?;
-            draw::write_png(tmp.path(), fig.size, &pixels).map_err(io)?;
-            tmp.persist()
+/// Every figure of this module implements it; the output layer
+/// ([`crate::output::Files`]) writes the bytes, [`render`] writes them
+/// straight to a file.
+pub trait Encode {
+    /// The bytes of the file `path`, whose extension (`.svg` or `.png`)
+    /// picks the format; errors name `path`.
+    ///
+    /// # Errors
+    /// - [`Error::Io`] (kind `InvalidInput`) for an extension other than `.svg`/`.png`,
+    ///   or a failure of the drawing backend;
+    /// - the figure's own checks ([`Error::InvalidParameter`] for a fixed range
+    ///   that is not finite, not increasing, or not positive on a log axis, or a
+    ///   size outside [`SIZE_LIMITS`]; [`Error::Inconsistent`] when nothing is drawable).
+    fn encode(&self, path: &Path) -> Result<Vec<u8>>;
+}
+
+impl Encode for Figure {
+    fn encode(&self, path: &Path) -> Result<Vec<u8>> {
+        let format = Format::from_path(path)?;
+        draw::ensure_font(path)?;
+        match format {
+            Format::Svg => {
+                let prepared = prepare::prepare(self, 1, &draw::measure)?;
+                let svg = draw::svg_string(&prepared).map_err(|e| backend_error(path, e))?;
+                Ok(svg.into_bytes())
+            }
+            Format::Png => {
+                // Drawn at k× the size (fonts and lines scale along) and
+                // averaged down: anti-aliased lines and text.
+                let k = draw::supersampling(self.size);
+                let big = (self.size.0 * k, self.size.1 * k);
+                let prepared = prepare::prepare(self, k, &draw::measure)?;
+                let pixels = draw::rgb_pixels(&prepared).map_err(|e| backend_error(path, e))?;
+                let pixels = draw::downsample(&pixels, big, k);
+                draw::png_bytes(self.size, &pixels).map_err(|source| Error::Io {
+                    path: path.to_path_buf(),
+                    source,
+                })
+            }
         }
     }
+}
+
+/// Draws `fig` into `path` as SVG or PNG (by extension), atomically
+/// ([`persson::io::write_atomic`]): a failure never leaves a half-written
+/// file and never touches an existing one.
+///
+/// # Errors
+/// As [`Encode::encode`]; [`Error::Io`] naming `path` when the directory is
+/// not writable.
+pub fn render<F: Encode + ?Sized>(fig: &F, path: &Path) -> Result<()> {
+    persson::io::write_atomic(path, &fig.encode(path)?)
 }
 
 /// Draws `fig` as an SVG document in memory (for embedding, or tests).

@@ -16,7 +16,7 @@ use std::path::Path;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::canvas::{render_canvas, render_canvas_svg_string, Canvas, DrawResult};
+use super::canvas::{render_canvas_svg_string, Canvas, DrawResult};
 use super::map::{colour_bar, font, tick, viridis, MAP_CELLS};
 use crate::{Error, Result};
 
@@ -200,20 +200,15 @@ fn draw_figure<DB: DrawingBackend>(
 /// Draws `fig` as an SVG document in memory.
 ///
 /// # Errors
-/// As [`render_spectrum_map`], except the file errors.
+/// As [`super::Encode::encode`], except the file errors.
 pub fn render_spectrum_map_svg_string(fig: &SpectrumMapFigure) -> Result<String> {
     render_canvas_svg_string(fig)
 }
 
-/// Draws `fig` into `path` (`.svg` or `.png` by extension), atomically.
-///
-/// # Errors
-/// [`Error::Io`] for another extension, an unwritable directory or a
-/// backend failure; [`Error::Inconsistent`] when `c` is not
-/// `qx.len() × qy.len()` values; [`Error::InvalidParameter`] for a size
-/// outside [`super::SIZE_LIMITS`].
-pub fn render_spectrum_map(fig: &SpectrumMapFigure, path: &Path) -> Result<()> {
-    render_canvas(fig, path)
+impl super::Encode for SpectrumMapFigure {
+    fn encode(&self, path: &Path) -> Result<Vec<u8>> {
+        super::canvas::encode_canvas(self, path)
+    }
 }
 
 impl Canvas for SpectrumMapFigure {

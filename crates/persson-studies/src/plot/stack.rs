@@ -3,16 +3,28 @@
 
 use std::path::Path;
 
-use super::{backend_error, draw, prepare, Figure, Format};
+use super::{backend_error, draw, prepare, Encode, Figure, Format};
 use crate::{Error, Result};
 
-/// Draws `figs` one above the other into `path` (SVG or PNG by extension),
-/// atomically; every figure must have the same width.
+/// Figures one above the other in one file (SVG or PNG by extension); every
+/// figure must have the same width.
 ///
 /// # Errors
-/// As [`super::render`]; [`Error::Inconsistent`] for no figure or figures
-/// of different widths.
-pub fn render_stacked(figs: &[Figure], path: &Path) -> Result<()> {
+/// As [`Figure`]'s [`Encode::encode`]; [`Error::Inconsistent`] for no
+/// figure or figures of different widths.
+impl Encode for [Figure] {
+    fn encode(&self, path: &Path) -> Result<Vec<u8>> {
+        stacked(self, path)
+    }
+}
+
+impl<const N: usize> Encode for [Figure; N] {
+    fn encode(&self, path: &Path) -> Result<Vec<u8>> {
+        stacked(self, path)
+    }
+}
+
+fn stacked(figs: &[Figure], path: &Path) -> Result<Vec<u8>> {
     let Some(first) = figs.first() else {
         return Err(Error::Inconsistent {
             name: "figures".into(),
@@ -28,12 +40,7 @@ pub fn render_stacked(figs: &[Figure], path: &Path) -> Result<()> {
     }
     let format = Format::from_path(path)?;
     draw::ensure_font(path)?;
-    let io = |source| Error::Io {
-        path: path.to_path_buf(),
-        source,
-    };
     let height: u32 = figs.iter().map(|f| f.size.1).sum();
-    let tmp = persson::io::TempFile::create(path)?;
     match format {
         Format::Svg => {
             let mut svg = format!(
@@ -50,7 +57,7 @@ pub fn render_stacked(figs: &[Figure], path: &Path) -> Result<()> {
                 y += f.size.1;
             }
             svg.push_str("</svg>\n");
-            std::fs::write(tmp.path(), svg).map_err(io)?;
+            Ok(svg.into_bytes())
         }
         Format::Png => {
             let mut rgb = Vec::with_capacity(width as usize * height as usize * 3);
@@ -61,8 +68,10 @@ pub fn render_stacked(figs: &[Figure], path: &Path) -> Result<()> {
                 let pixels = draw::rgb_pixels(&p).map_err(|e| backend_error(path, e))?;
                 rgb.extend(draw::downsample(&pixels, big, k));
             }
-            draw::write_png(tmp.path(), (width, height), &rgb).map_err(io)?;
+            draw::png_bytes((width, height), &rgb).map_err(|source| Error::Io {
+                path: path.to_path_buf(),
+                source,
+            })
         }
     }
-    tmp.persist()
 }

@@ -3,8 +3,8 @@
 //! `bem.subsurface.plot`) and of the vertical section through the axis of a
 //! Hertz contact (`bem hertz --subsurface --stress-plot`).
 //!
-//! Like [`super::map::MapFigure`] a [`FieldFigure`] is plain data, drawn by
-//! [`render_field`] into an `.svg` or `.png` file (atomically), with the same
+//! Like [`super::map::MapFigure`] a [`FieldFigure`] is plain data, drawn
+//! into an `.svg` or `.png` file ([`super::Encode`]), with the same
 //! viridis scale from 0 to the field's largest value and a colour bar. Fields
 //! finer than [`super::map::MAP_CELLS`] per side are drawn in blocks (the
 //! block's mean).
@@ -14,7 +14,7 @@ use std::path::Path;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::canvas::{render_canvas, Canvas, DrawResult};
+use super::canvas::{Canvas, DrawResult};
 use super::map::{colour_bar, font, tick, viridis, MAP_CELLS};
 use crate::{Error, Result};
 
@@ -155,15 +155,10 @@ pub fn vertical_section(
     }
 }
 
-/// Draws `fig` into `path` (`.svg` or `.png` by extension), atomically.
-///
-/// # Errors
-/// [`Error::Io`] for another extension, an unwritable directory or a
-/// backend failure; [`Error::Inconsistent`] when the values are not nx·ny;
-/// [`Error::InvalidParameter`] for an empty range or a size outside
-/// [`super::SIZE_LIMITS`].
-pub fn render_field(fig: &FieldFigure, path: &Path) -> Result<()> {
-    render_canvas(fig, path)
+impl super::Encode for FieldFigure {
+    fn encode(&self, path: &Path) -> Result<Vec<u8>> {
+        super::canvas::encode_canvas(self, path)
+    }
 }
 
 impl Canvas for FieldFigure {
@@ -239,32 +234,30 @@ fn draw_field<DB: DrawingBackend>(
     Ok(())
 }
 
-/// Draw every kept von Mises map (`maps`, from
-/// [`crate::bem_detail::Details::maps`]) into `path` with `_k_j` added
-/// before the extension (solve k, depth j, as the `.npy` of `stress_field`);
-/// `depths` and `pressures` are the study's. Returns the files written.
-///
-/// # Errors
-/// As [`render_field`].
+/// The figure of every kept von Mises map (`maps`, from
+/// [`crate::bem_detail::Details::maps`]), each with its file: `path` with
+/// `_k_j` added before the extension (solve k, depth j, as the `.npy` of
+/// `stress_field`); `depths` and `pressures` are the study's.
 #[cfg(feature = "bem")]
-pub fn render_planes(
+pub fn planes(
     maps: &[crate::bem_detail::StressMap],
     (n, size): (usize, f64),
     depths: &[f64],
     pressures: &[f64],
     pressure_unit: &str,
     path: &Path,
-) -> Result<Vec<std::path::PathBuf>> {
-    let mut written = Vec::with_capacity(maps.len());
-    for m in maps {
-        let depth = depths.get(m.depth_index).copied().unwrap_or(f64::NAN);
-        let sigma0 = pressures.get(m.index).copied().unwrap_or(f64::NAN);
-        let fig = von_mises_plane(&m.von_mises_stress, n, size, depth, sigma0, pressure_unit);
-        let p = crate::bem_detail::indexed(path, m.index, m.depth_index);
-        render_field(&fig, &p)?;
-        written.push(p);
-    }
-    Ok(written)
+) -> Vec<(std::path::PathBuf, FieldFigure)> {
+    maps.iter()
+        .map(|m| {
+            let depth = depths.get(m.depth_index).copied().unwrap_or(f64::NAN);
+            let sigma0 = pressures.get(m.index).copied().unwrap_or(f64::NAN);
+            let fig = von_mises_plane(&m.von_mises_stress, n, size, depth, sigma0, pressure_unit);
+            (
+                crate::bem_detail::indexed(path, m.index, m.depth_index),
+                fig,
+            )
+        })
+        .collect()
 }
 
 /// The figure of the vertical section through a Hertz contact's axis.

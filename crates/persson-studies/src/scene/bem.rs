@@ -188,7 +188,6 @@ fn details(
             .unwrap_or(DEFAULT_POISSON),
         tensile_yield_stress: s.tensile_yield_stress,
         // Written into the scene's output directory by `write_data`.
-        stress_field: None,
         // Kept for the .npy files and for the maps drawn beside the plot.
         keep_maps: s.stress_field.is_some() || s.plot.is_some(),
     });

@@ -181,46 +181,19 @@ fn in_file(file: &std::path::Path, e: Error) -> Error {
     }
 }
 
-/// Whether the BEM's own reader (a square `.npy` or text matrix of side L)
-/// reads this file, as it always has: the numbers of those maps stay the same.
-#[cfg(feature = "bem")]
-fn legacy_bem_format(file: &std::path::Path) -> bool {
-    let ext = file
-        .extension()
-        .map(|e| e.to_string_lossy().to_ascii_lowercase());
-    !matches!(ext.as_deref(), Some("gsf" | "x3p" | "xyz"))
-}
-
 #[cfg(feature = "bem")]
 impl HeightMapSpec {
-    /// The map as the BEM's rigid surface, heights as in the file (no
-    /// detrending: the BEM's mean gap is measured from the highest point).
-    /// A `.npy` or text matrix with `size: L` is read by
-    /// [`persson::bem::rough::read_surface`], as always; every other file (and
-    /// `pixel_size`) through [`persson::topography::read()`]. The BEM solves on
-    /// square N × N grids only: a non-square map is an error (cropping it
-    /// would change its spectrum, padding it would add a flat strip).
+    /// The map as the BEM's rigid surface, read by [`HeightMapSpec::read`]
+    /// like every other command's surface (the file's own size and units),
+    /// heights as in the file (no detrending: the BEM's mean gap is measured
+    /// from the highest point). The BEM solves on square N × N grids only: a
+    /// non-square map is an error (cropping it would change its spectrum,
+    /// padding it would add a flat strip).
     ///
     /// # Errors
-    /// As the readers; a non-square map, line scans, `Lx ≠ Ly`; a grid
-    /// whose solve would not fit in memory.
+    /// As [`HeightMapSpec::read`]; a non-square map, line scans, `Lx ≠ Ly`;
+    /// a grid whose solve would not fit in memory.
     pub fn bem_surface(
-        &self,
-        boundary: persson::bem::Boundary,
-    ) -> Result<persson::bem::surface::GridSurface> {
-        let plain = self.height_unit.is_none() && !self.transpose;
-        if let (Some(Sides::One(size)), None, true) = (
-            self.size,
-            self.pixel_size,
-            plain && legacy_bem_format(&self.file),
-        ) {
-            return persson::bem::rough::read_surface(&self.file, size, boundary);
-        }
-        self.bem_surface_read(boundary)
-    }
-
-    #[cfg(feature = "topography")]
-    fn bem_surface_read(
         &self,
         boundary: persson::bem::Boundary,
     ) -> Result<persson::bem::surface::GridSurface> {
@@ -246,18 +219,5 @@ impl HeightMapSpec {
         persson::bem::check_memory(nx, boundary)?;
         persson::bem::surface::GridSurface::new(nx, t.lx(), t.heights().to_vec())
             .map_err(|e| Error::parse(&self.file, 0, 0, e.to_string()))
-    }
-
-    #[cfg(not(feature = "topography"))]
-    fn bem_surface_read(
-        &self,
-        _: persson::bem::Boundary,
-    ) -> Result<persson::bem::surface::GridSurface> {
-        Err(Error::parse(
-            &self.file,
-            0,
-            0,
-            "without the feature `topography` the BEM reads only .npy and text matrices with size L",
-        ))
     }
 }

@@ -31,6 +31,8 @@ use persson::material::Material;
 use persson::spectrum::Spectrum;
 use persson::stress::Start;
 
+use crate::output::Files;
+
 mod adhesion;
 mod asperity;
 #[cfg(feature = "bem")]
@@ -312,43 +314,88 @@ impl Scene {
         Ok(())
     }
 
-    /// Every file the scene asks to write (plots and the histogram), relative to `dir`.
-    pub fn output_paths(&self, dir: &Path) -> Vec<PathBuf> {
+    /// Every file the scene asks to write, relative to `dir`: its field,
+    /// its path and the extensions that pick its format (empty: any).
+    pub fn output_files(
+        &self,
+        dir: &Path,
+    ) -> Vec<(&'static str, PathBuf, &'static [&'static str])> {
+        const PLOT: &[&str] = &["svg", "png"];
         let o = &self.outputs;
+        let bem = o.bem.as_ref();
+        let subsurface = bem.and_then(|b| b.subsurface.as_ref());
         [
-            o.spectrum.as_ref().and_then(|s| s.plot.clone()),
-            o.area.as_ref().and_then(|a| a.plot.clone()),
-            o.magnification.as_ref().and_then(|m| m.plot.clone()),
-            o.magnification.as_ref().and_then(|m| m.plot_g.clone()),
-            o.theories.as_ref().and_then(|t| t.plot.clone()),
-            o.stress.as_ref().and_then(|s| s.plot.clone()),
-            o.bem.as_ref().and_then(|b| b.plot.clone()),
-            o.bem.as_ref().and_then(|b| b.histogram.clone()),
-            o.bem
-                .as_ref()
-                .and_then(|b| b.patches.as_ref())
-                .and_then(|p| p.plot.clone()),
-            o.bem
-                .as_ref()
-                .and_then(|b| b.subsurface.as_ref())
-                .and_then(|s| s.plot.clone()),
-            o.friction.as_ref().and_then(|f| f.plot.clone()),
-            o.conductance.as_ref().and_then(|c| c.plot.clone()),
-            o.leakage.as_ref().and_then(|l| l.plot.clone()),
+            (
+                "outputs.spectrum.plot",
+                o.spectrum.as_ref().and_then(|s| s.plot.clone()),
+                PLOT,
+            ),
+            (
+                "outputs.area.plot",
+                o.area.as_ref().and_then(|a| a.plot.clone()),
+                PLOT,
+            ),
+            (
+                "outputs.magnification.plot",
+                o.magnification.as_ref().and_then(|m| m.plot.clone()),
+                PLOT,
+            ),
+            (
+                "outputs.magnification.plot_g",
+                o.magnification.as_ref().and_then(|m| m.plot_g.clone()),
+                PLOT,
+            ),
+            (
+                "outputs.theories.plot",
+                o.theories.as_ref().and_then(|t| t.plot.clone()),
+                PLOT,
+            ),
+            (
+                "outputs.stress.plot",
+                o.stress.as_ref().and_then(|s| s.plot.clone()),
+                PLOT,
+            ),
+            ("outputs.bem.plot", bem.and_then(|b| b.plot.clone()), PLOT),
+            (
+                "outputs.bem.patches.plot",
+                bem.and_then(|b| b.patches.as_ref())
+                    .and_then(|p| p.plot.clone()),
+                PLOT,
+            ),
+            (
+                "outputs.bem.subsurface.plot",
+                subsurface.and_then(|s| s.plot.clone()),
+                PLOT,
+            ),
+            (
+                "outputs.conductance.plot",
+                o.conductance.as_ref().and_then(|c| c.plot.clone()),
+                PLOT,
+            ),
+            (
+                "outputs.leakage.plot",
+                o.leakage.as_ref().and_then(|l| l.plot.clone()),
+                PLOT,
+            ),
+            (
+                "outputs.friction.plot",
+                o.friction.as_ref().and_then(|f| f.plot.clone()),
+                PLOT,
+            ),
+            (
+                "outputs.bem.histogram",
+                bem.and_then(|b| b.histogram.clone()),
+                &[],
+            ),
+            (
+                "outputs.bem.subsurface.stress_field",
+                subsurface.and_then(|s| s.stress_field.clone()),
+                &[],
+            ),
         ]
         .into_iter()
-        .flatten()
-        .map(|p| dir.join(p))
+        .filter_map(|(field, p, formats)| p.map(|p| (field, dir.join(p), formats)))
         .collect()
-    }
-
-    /// The plots the scene asks for, relative to `dir`.
-    pub fn plot_paths(&self, dir: &Path) -> Vec<PathBuf> {
-        let hist = self.outputs.bem.as_ref().and_then(|b| b.histogram.clone());
-        self.output_paths(dir)
-            .into_iter()
-            .filter(|p| hist.as_ref().is_none_or(|h| *p != dir.join(h)))
-            .collect()
     }
 
     /// The input files the scene reads.
@@ -363,115 +410,140 @@ impl Scene {
         }
         files
     }
+
+    /// Before anything is computed: declare the scene's inputs (the scene
+    /// file `path` among them) and reserve every file it writes into `dir`
+    /// ([`crate::output::Files`]), each named by its field.
+    ///
+    /// # Errors
+    /// An output onto an input or onto another output, of a format its
+    /// extension does not name, or in a folder that does not accept it; a
+    /// plot in a build without the feature `plot`.
+    pub fn plan(&self, path: &Path, dir: &Path, out: &mut Files) -> Result<()> {
+        out.input("the scene file", path)?;
+        for f in self.input_paths() {
+            out.input("an input file of the scene", &f)?;
+        }
+        for (field, p, formats) in self.output_files(dir) {
+            if cfg!(not(feature = "plot")) && !formats.is_empty() {
+                return Err(Error::Inconsistent {
+                    name: field.into(),
+                    requirement: "plots need persson built with the feature `plot`".into(),
+                });
+            }
+            out.reserve(field, &p, formats)?;
+        }
+        Ok(())
+    }
 }
 
-/// Write the scene's data files (the BEM pressure histograms) into `dir`.
+/// Stage every file the scene asks for into `out` (plots first, then the
+/// data files), as reserved by [`Scene::plan`]; the caller commits them
+/// once the whole run has succeeded.
 ///
 /// # Errors
-/// A file that cannot be written (written atomically).
-pub fn write_data(scene: &Scene, report: &SceneReport, dir: &Path) -> Result<Vec<PathBuf>> {
-    let mut written = Vec::new();
+/// A plot that cannot be drawn; a staged file that cannot be written.
+pub fn write_outputs(
+    scene: &Scene,
+    report: &SceneReport,
+    dir: &Path,
+    out: &mut Files,
+) -> Result<()> {
+    #[cfg(feature = "plot")]
+    write_plots(scene, report, dir, out)?;
     #[cfg(feature = "bem")]
-    if let (Some(out), Some(r)) = (&scene.outputs.bem, &report.bem) {
+    if let (Some(o), Some(r)) = (&scene.outputs.bem, &report.bem) {
         use crate::table::Tabulate;
-        if let Some(file) = &out.histogram {
+        if let Some(file) = &o.histogram {
             if let Some(t) = r.tables().into_iter().find(|t| t.name == "bem_histogram") {
-                let p = dir.join(file);
-                persson::io::write_atomic(&p, t.to_csv().as_bytes())?;
-                written.push(p);
+                out.write(&dir.join(file), t.to_csv().as_bytes())?;
             }
         }
-        let field = out
-            .subsurface
-            .as_ref()
-            .and_then(|s| s.stress_field.as_ref());
+        let field = o.subsurface.as_ref().and_then(|s| s.stress_field.as_ref());
         if let Some(file) = field {
             for m in &report.bem_stress_maps {
                 let p = crate::bem_detail::indexed(&dir.join(file), m.index, m.depth_index);
-                persson::io::npy::write(&p, r.grid, r.grid, &m.von_mises_stress)?;
-                written.push(p);
+                out.write(
+                    &p,
+                    &persson::io::npy::encode(r.grid, r.grid, &m.von_mises_stress)?,
+                )?;
             }
         }
     }
-    #[cfg(not(feature = "bem"))]
-    let _ = (scene, report, dir, &mut written);
-    Ok(written)
+    #[cfg(not(any(feature = "plot", feature = "bem")))]
+    let _ = (scene, report, dir, out);
+    Ok(())
 }
 
-/// Draw every plot the scene names, into `dir` (feature `plot`).
-///
-/// # Errors
-/// A plot that cannot be drawn or written (nothing is left half-written).
+/// Stage every plot the scene names (feature `plot`).
 #[cfg(feature = "plot")]
-pub fn render_plots(scene: &Scene, report: &SceneReport, dir: &Path) -> Result<Vec<PathBuf>> {
-    use crate::plot::Figure;
+fn write_plots(scene: &Scene, report: &SceneReport, dir: &Path, out: &mut Files) -> Result<()> {
+    use crate::plot::{Encode, Figure};
     let o = &scene.outputs;
-    let mut written = Vec::new();
-    // The subsurface maps (written beside `written`, which `draw` holds).
-    #[cfg(feature = "bem")]
-    let mut planes: Vec<PathBuf> = Vec::new();
-    let mut draw = |path: &Option<PathBuf>, fig: &dyn Fn() -> Result<Figure>| -> Result<()> {
-        if let Some(p) = path {
-            let p = dir.join(p);
-            crate::plot::render(&fig()?, &p)?;
-            written.push(p);
-        }
-        Ok(())
-    };
-    if let (Some(out), Some(r)) = (&o.spectrum, &report.spectrum) {
-        draw(&out.plot, &|| plot::spectrum(r))?;
+    let draw =
+        |out: &mut Files, path: &Option<PathBuf>, fig: &dyn Fn() -> Result<Figure>| -> Result<()> {
+            if let Some(p) = path {
+                let p = dir.join(p);
+                out.write(&p, &fig()?.encode(&p)?)?;
+            }
+            Ok(())
+        };
+    if let (Some(s), Some(r)) = (&o.spectrum, &report.spectrum) {
+        draw(out, &s.plot, &|| plot::spectrum(r))?;
     }
-    if let (Some(out), Some(r)) = (&o.area, &report.area) {
-        draw(&out.plot, &|| plot::area(r))?;
+    if let (Some(a), Some(r)) = (&o.area, &report.area) {
+        draw(out, &a.plot, &|| plot::area(r))?;
     }
-    if let (Some(out), Some(r)) = (&o.magnification, &report.magnification) {
-        draw(&out.plot, &|| plot::magnification_area(r))?;
-        draw(&out.plot_g, &|| plot::magnification_g(r))?;
+    if let (Some(m), Some(r)) = (&o.magnification, &report.magnification) {
+        draw(out, &m.plot, &|| plot::magnification_area(r))?;
+        draw(out, &m.plot_g, &|| plot::magnification_g(r))?;
     }
-    if let (Some(out), Some(r)) = (&o.theories, &report.theories) {
-        draw(&out.plot, &|| plot::theories(r))?;
+    if let (Some(t), Some(r)) = (&o.theories, &report.theories) {
+        draw(out, &t.plot, &|| plot::theories(r))?;
     }
-    if let (Some(out), Some(r)) = (&o.stress, &report.stress) {
-        draw(&out.plot, &|| plot::stress(r))?;
+    if let (Some(s), Some(r)) = (&o.stress, &report.stress) {
+        draw(out, &s.plot, &|| plot::stress(r))?;
     }
     #[cfg(feature = "bem")]
-    if let (Some(out), Some(r)) = (&o.bem, &report.bem) {
-        draw(&out.plot, &|| plot::bem(r))?;
-        if let (Some(p), Some(r)) = (&out.patches, &report.bem_patches) {
-            draw(&p.plot, &|| plot::patch_areas(r))?;
+    let mut planes = Vec::new();
+    #[cfg(feature = "bem")]
+    if let (Some(b), Some(r)) = (&o.bem, &report.bem) {
+        draw(out, &b.plot, &|| plot::bem(r))?;
+        if let (Some(p), Some(r)) = (&b.patches, &report.bem_patches) {
+            draw(out, &p.plot, &|| plot::patch_areas(r))?;
         }
-        if let (Some(s), Some(r)) = (&out.subsurface, &report.bem_subsurface) {
-            draw(&s.plot, &|| plot::subsurface_profiles(r))?;
+        if let (Some(s), Some(r)) = (&b.subsurface, &report.bem_subsurface) {
+            draw(out, &s.plot, &|| plot::subsurface_profiles(r))?;
         }
-        if let (Some(Some(p)), Some(s)) =
-            (out.subsurface.as_ref().map(|s| &s.plot), &out.subsurface)
-        {
-            // Each plane's von Mises map beside the depth plot: `_k_j` added.
-            planes.extend(crate::plot::stress_map::render_planes(
-                &report.bem_stress_maps,
-                (r.grid, r.size),
-                &s.depth,
-                &scene.nominal_pressure,
-                if r.contact_modulus == 1.0 { "E*" } else { "Pa" },
-                &dir.join(p),
-            )?);
+        if let Some(s) = &b.subsurface {
+            if let Some(p) = &s.plot {
+                // Each plane's von Mises map beside the depth plot: `_k_j` added.
+                planes = crate::plot::stress_map::planes(
+                    &report.bem_stress_maps,
+                    (r.grid, r.size),
+                    &s.depth,
+                    &scene.nominal_pressure,
+                    if r.contact_modulus == 1.0 { "E*" } else { "Pa" },
+                    &dir.join(p),
+                );
+            }
         }
     }
-    if let (Some(out), Some(r)) = (&o.conductance, &report.conductance) {
-        draw(&out.plot, &|| plot::conductance(r))?;
+    if let (Some(c), Some(r)) = (&o.conductance, &report.conductance) {
+        draw(out, &c.plot, &|| plot::conductance(r))?;
     }
-    if let (Some(out), Some(r)) = (&o.leakage, &report.leakage) {
-        draw(&out.plot, &|| plot::leakage(r))?;
+    if let (Some(l), Some(r)) = (&o.leakage, &report.leakage) {
+        draw(out, &l.plot, &|| plot::leakage(r))?;
     }
     #[cfg(feature = "bem")]
-    written.extend(planes);
-    // Two panels: drawn here, after the last use of `draw` (which holds `written`).
+    for (p, fig) in planes {
+        out.write(&p, &fig.encode(&p)?)?;
+    }
     if let (Some(Some(path)), Some(r)) = (o.friction.as_ref().map(|f| &f.plot), &report.friction) {
         let p = dir.join(path);
-        crate::plot::render_stacked(&plot::friction(r)?, &p)?;
-        written.push(p);
+        out.write(&p, &plot::friction(r)?.encode(&p)?)?;
     }
-    Ok(written)
+    Ok(())
 }
 
 /// serde_json's message without its trailing " at line L column C" (the
