@@ -651,3 +651,191 @@ fn instrument_files_through_the_command_line() {
         "{err}"
     );
 }
+
+/// One reader for every command: each instrument format the readers know
+/// (one example file each, with the flags it needs) is read by `spectrum`
+/// and by the BEM alike: the BEM solves on exactly the heights the reader
+/// gives (its `--surface-out`), or refuses a map that is not square, naming
+/// the file. Every other command that takes `--surface` reads through the
+/// same entry (`HeightMapSpec::read`): each runs on the small files of
+/// three container families (NetCDF, X3P, Igor), printing only finite
+/// numbers.
+#[test]
+fn every_format_is_read_alike_by_every_command_that_takes_a_surface() {
+    // (file, extra reading flags)
+    let files: &[(&str, &[&str])] = &[
+        ("di-3.di", &[]),
+        ("spot_1-1000nm.ibw", &[]),
+        (
+            "10x10-one_channel_without_name.ibw",
+            &["--height-unit", "nm", "--size", "1e-6"],
+        ),
+        ("sur-3.sur", &["--fill-undefined"]),
+        ("sur-2.sur", &["--fill-undefined"]),
+        ("al3d-1.al3d", &[]),
+        ("metropro-1.dat", &[]),
+        ("nc-1.nc", &[]),
+        ("st-mask.nc", &["--fill-undefined"]),
+        ("plu-1.plu", &[]),
+        (
+            "gwyfile-test.gwy",
+            &["--height-unit", "m", "--lateral-unit", "m"],
+        ),
+        ("ISO5436-sample1_bin.x3p", &["--fill-undefined"]),
+        ("gwyddion-export-english.txt", &[]),
+        ("matrix-4.txt", &[]),
+        ("xyz-2.txt", &["--fill-undefined"]),
+    ];
+    let d = dir();
+    for (name, flags) in files {
+        let file = instrument_file(name);
+        let with = |cmd: &[&str], more: &[&str]| -> Vec<String> {
+            let mut v: Vec<String> = cmd.iter().map(|s| s.to_string()).collect();
+            v.extend(["--surface".into(), file.clone()]);
+            v.extend(flags.iter().map(|s| s.to_string()));
+            v.extend(more.iter().map(|s| s.to_string()));
+            v
+        };
+        let spectrum = run_json(&with(&["spectrum"], &["--json"]));
+        // The theory commands: the map's spectrum, whatever the command.
+        let material = ["--contact-modulus", "1e9"];
+        let theory: [&[&str]; 8] = [
+            &["area", "--pressure", "1e5"],
+            &["magnification", "--pressure", "1e5"],
+            &["separation", "--pressure", "1e5"],
+            &["conductance", "--pressure", "1e5", "--conductivity", "50"],
+            &[
+                "leakage",
+                "--pressure",
+                "1e5",
+                "--viscosity",
+                "1e-3",
+                "--pressure-drop",
+                "1e5",
+            ],
+            &[
+                "adhesion",
+                "--pressure",
+                "1e5",
+                "--work-of-adhesion",
+                "0.01",
+            ],
+            &["stress", "--flat", "--pressure", "1e5"],
+            &["spectrum"],
+        ];
+        let small = [
+            "nc-1.nc",
+            "ISO5436-sample1_bin.x3p",
+            "10x10-one_channel_without_name.ibw",
+        ];
+        for cmd in theory.iter().filter(|_| small.contains(name)) {
+            let mut more = if cmd[0] == "spectrum" {
+                vec![]
+            } else {
+                material.to_vec()
+            };
+            let (code, out, err) = persson(&str_refs(&with(cmd, &more)));
+            assert_eq!(code, 0, "{name} {}: {err}", cmd[0]);
+            assert!(
+                !out.contains("NaN") && !out.contains('∞'),
+                "{name} {}: {out}",
+                cmd[0]
+            );
+        }
+        if !small.contains(name) {
+            // (the theory commands above and friction: the small files)
+        } else {
+            let (code, _, err) = persson(&str_refs(&with(
+                &["friction"],
+                &[
+                    "--master-curve",
+                    &reference("rubber_master_curve.csv"),
+                    "--frequency-unit",
+                    "rad/s",
+                    "--pressure",
+                    "1e5",
+                    "--velocity",
+                    "1e-2",
+                ],
+            )));
+            assert_eq!(code, 0, "{name} friction: {err}");
+        }
+        if spectrum["shape"][0] == spectrum["shape"][1] {
+            // Square: the anisotropy and the BEM on exactly the reader's heights.
+            // (a map too small for the texture parameters is refused, naming it)
+            let (code, _, err) = persson(&str_refs(&with(&["anisotropy"], &[])));
+            assert!(
+                code == 0 || (code == 2 && err.contains(name) && err.contains("texture")),
+                "{name} anisotropy: {err}"
+            );
+            let out = d.join(format!("{name}.bem.npy"));
+            let args = with(
+                &["bem", "rough"],
+                &[
+                    "--contact-modulus",
+                    "1e9",
+                    "--pressure",
+                    "1e5",
+                    "--boundary",
+                    "free",
+                    "--surface-out",
+                    &out.to_string_lossy(),
+                ],
+            );
+            let (code, _, err) = persson(&str_refs(&args));
+            let n = spectrum["shape"][0].as_u64().unwrap();
+            if n < persson::bem::MIN_GRID as u64 {
+                assert_eq!(code, 2, "{name}");
+                assert!(err.contains("grid"), "{name}: {err}");
+                continue;
+            }
+            assert_eq!(code, 0, "{name} bem: {err}");
+            let solved = persson::io::npy::parse(&out, &std::fs::read(&out).unwrap()).unwrap();
+            let read = read_as_the_flags_say(&file, flags);
+            assert_eq!(
+                solved.values, read,
+                "{name}: the BEM's heights are the reader's"
+            );
+        } else {
+            let (code, _, err) = persson(&str_refs(&with(
+                &["bem", "rough"],
+                &["--contact-modulus", "1e9", "--pressure", "1e5"],
+            )));
+            assert_eq!(code, 2, "{name}");
+            assert!(
+                err.contains(name) && err.contains("square"),
+                "{name}: {err}"
+            );
+        }
+    }
+}
+
+fn str_refs(v: &[String]) -> Vec<&str> {
+    v.iter().map(String::as_str).collect()
+}
+
+/// The heights `persson::topography::read` gives for `file` with the
+/// reading flags of the test above.
+fn read_as_the_flags_say(file: &str, flags: &[&str]) -> Vec<f64> {
+    use persson::topography::{read, LengthUnit, ReadOptions, SizeSpec};
+    let mut o = ReadOptions::default();
+    let mut it = flags.iter();
+    while let Some(f) = it.next() {
+        match *f {
+            "--fill-undefined" => o.fill_undefined = true,
+            "--height-unit" => {
+                o.height_unit = Some(match *it.next().unwrap() {
+                    "nm" => LengthUnit::Nanometre,
+                    _ => LengthUnit::Metre,
+                })
+            }
+            "--size" => o.size = Some(SizeSpec::Size(it.next().unwrap().parse().unwrap(), None)),
+            "--lateral-unit" => {
+                it.next();
+                o.lateral_unit = Some(LengthUnit::Metre)
+            }
+            other => panic!("flag {other}"),
+        }
+    }
+    read(Path::new(file), &o).unwrap().heights().to_vec()
+}

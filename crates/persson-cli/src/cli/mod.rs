@@ -93,6 +93,14 @@ enum Cmd {
 /// names is checked before anything is computed, and its outputs are
 /// written only once the whole command has succeeded ([`files`]).
 pub fn run(cli: Cli, matches: &clap::ArgMatches) -> anyhow::Result<()> {
+    stage(cli, matches)?.commit()?;
+    Ok(())
+}
+
+/// Run one parsed command line up to its outputs: computed, and staged
+/// beside their targets, which nothing has touched yet (`persson run`
+/// writes its own, to list them).
+fn stage(cli: Cli, matches: &clap::ArgMatches) -> anyhow::Result<persson_studies::output::Files> {
     use clap::CommandFactory;
     let mut out = persson_studies::output::Files::new();
     files::plan(&Cli::command(), matches, &mut out)?;
@@ -116,6 +124,8 @@ pub fn run(cli: Cli, matches: &clap::ArgMatches) -> anyhow::Result<()> {
         Cmd::Conductance(a) => conductance::run(a, o),
         Cmd::Leakage(a) => leakage::run(a, o),
     }?;
-    out.commit()?;
-    Ok(())
+    Ok(out)
 }
+
+#[cfg(test)]
+mod tests;

@@ -112,7 +112,9 @@ pub fn print_narrowed<R: Serialize + Tabulate>(
     )
 }
 
-/// Print the warnings and the report; text tables narrowed to `width`.
+/// Print the warnings and the report; text tables narrowed to `width`. A
+/// quantity that came out NaN or infinite is printed as `–` (text), empty
+/// (CSV) or `null` (JSON), with a warning that names it.
 fn print_tables<R: Serialize + Tabulate>(
     report: &R,
     warnings: &[Warning],
@@ -120,15 +122,17 @@ fn print_tables<R: Serialize + Tabulate>(
     source: Source,
     width: Option<usize>,
 ) -> anyhow::Result<()> {
-    for w in warnings {
+    let mut tables = report.tables();
+    let mut warnings = warnings.to_vec();
+    warnings.extend(persson_studies::warning::not_computed(&tables));
+    for w in &warnings {
         print_warning(w, source);
     }
     let mut out = std::io::stdout().lock();
     if f.json {
-        serde_json::to_writer_pretty(&mut out, &Warned::new(report, warnings))?;
+        serde_json::to_writer_pretty(&mut out, &Warned::new(report, &warnings))?;
         writeln!(out)?;
     } else {
-        let mut tables = report.tables();
         if let (Some(w), false) = (width, f.csv) {
             for t in &mut tables {
                 narrow(t, w, "not shown (--wide shows them)");

@@ -16,6 +16,9 @@
 //! - CSV writes reals in the shortest form that reads back to the same `f64`
 //!   (`64`, `0.6`, `1e-12`, `1.333256300747068e7`): nothing is lost, nothing
 //!   is padded.
+//! - No non-finite number is printed: a NaN or ∞ is a quantity that could
+//!   not be computed, `–` in text and empty in CSV (serde_json writes it as
+//!   `null`), and [`crate::warning::not_computed`] says where.
 
 use std::fmt::Write;
 
@@ -40,6 +43,15 @@ pub enum Cell {
     Text(String),
     /// No value here (printed as `–` in text, empty in CSV).
     Empty,
+}
+
+impl Cell {
+    /// Whether the cell holds a number that is not finite: a quantity that
+    /// could not be computed, printed as `–` in text and empty in CSV (and
+    /// `null` in JSON), with a warning ([`crate::warning::not_computed`]).
+    pub fn is_not_finite(&self) -> bool {
+        matches!(self, Cell::Num(v) | Cell::Measured { value: v, .. } if !v.is_finite())
+    }
 }
 
 impl From<f64> for Cell {
@@ -314,9 +326,9 @@ fn text_cell(c: &Cell, style: Option<Style>) -> String {
         Cell::Int(i) => i.to_string(),
         Cell::Text(t) => t.clone(),
         Cell::Empty => "–".into(),
+        c if c.is_not_finite() => "–".into(),
         Cell::Measured { value, error } => measured(*value, *error),
         Cell::Num(v) => match style {
-            _ if !v.is_finite() => non_finite(*v),
             Some(Style::Fixed(d)) => format!("{v:.d$}"),
             Some(Style::Scientific(d)) => scientific(*v, d),
             None => number(*v, DEFAULT_DIGITS),
@@ -404,6 +416,7 @@ pub fn measured(value: f64, error: f64) -> String {
 fn csv_cell(c: &Cell, exponent: bool) -> String {
     match c {
         Cell::Int(i) => i.to_string(),
+        c if c.is_not_finite() => String::new(),
         Cell::Num(v) | Cell::Measured { value: v, .. } if exponent && v.is_finite() => {
             format!("{v:e}")
         }

@@ -42,6 +42,16 @@ pub const SUM_BAND_RATIO: f64 = 10.0;
 #[serde(remote = "Self", tag = "kind", rename_all = "snake_case")]
 #[non_exhaustive]
 pub enum Warning {
+    /// A quantity of a report could not be computed (it came out NaN or
+    /// ±∞): it is printed as `–` in text, empty in CSV and `null` in JSON.
+    NotComputed {
+        /// The table ([`crate::table::Table::name`]).
+        table: String,
+        /// The quantity (the column's or scalar's key).
+        quantity: String,
+        /// How many of its values.
+        count: usize,
+    },
     /// The nominal pressure σ0 is above [`HIGH_PRESSURE_RATIO`] E*: strains of
     /// order one, or (above E*) most likely a modulus and a pressure in
     /// different units (E in MPa, σ0 in Pa).
@@ -394,9 +404,10 @@ impl Warning {
     /// `adhesive_not_converged`, `master_curve_range`, `friction_not_converged`, `shift_table_extended`,
     /// `sum_bands`, `measurement_gap`, `sealed`, `small_bandwidth`, `coalescence`,
     /// `curvature_unresolved`, `beyond_pull_off`, `adhesion_tolerance_not_met`,
-    /// `long_adhesion_range`).
+    /// `long_adhesion_range`, `not_computed`).
     pub fn kind(&self) -> &'static str {
         match self {
+            Warning::NotComputed { .. } => "not_computed",
             Warning::HighPressure { .. } => "high_pressure",
             Warning::SteepSlope { .. } => "steep_slope",
             Warning::ZetaBeyondBand { .. } => "zeta_beyond_band",
@@ -615,4 +626,31 @@ mod tests {
         assert!(Warning::steep_slope(1.0).is_none());
         assert!(Warning::zeta_beyond_band(&[1e4], 1e4).is_none());
     }
+}
+
+/// A [`Warning::NotComputed`] for every column and scalar of `tables` that
+/// holds a value that is not finite (module [`crate::table`]).
+pub fn not_computed(tables: &[crate::table::Table]) -> Vec<Warning> {
+    let mut out = Vec::new();
+    for t in tables {
+        let mut push = |quantity: &str, count: usize| {
+            if count > 0 {
+                out.push(Warning::NotComputed {
+                    table: t.name.clone(),
+                    quantity: quantity.to_string(),
+                    count,
+                });
+            }
+        };
+        for (key, _, value) in &t.scalars {
+            push(key, usize::from(value.is_not_finite()));
+        }
+        for (j, c) in t.columns.iter().enumerate() {
+            push(
+                &c.key,
+                t.rows.iter().filter(|r| r[j].is_not_finite()).count(),
+            );
+        }
+    }
+    out
 }

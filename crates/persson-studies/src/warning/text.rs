@@ -11,6 +11,16 @@ impl fmt::Display for Warning {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let n = |v: f64| number(v, 6);
         match self {
+            Warning::NotComputed {
+                table,
+                quantity,
+                count,
+            } => write!(
+                f,
+                "{quantity} could not be computed ({count} value{} of the table {table} \
+                 came out NaN or infinite; shown as – and null)",
+                if *count == 1 { "" } else { "s" }
+            ),
             Warning::HighPressure {
                 nominal_pressure,
                 contact_modulus,
