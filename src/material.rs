@@ -13,20 +13,28 @@ pub struct Body {
 }
 
 impl Body {
-    /// `(1 − ν²)/E`, the body's compliance contribution to 1/E*; 0 for a rigid body.
-    fn compliance(&self) -> Result<f64> {
+    /// `(1 − ν²)/E`, the body's compliance contribution to 1/E*; 0 for a
+    /// rigid body. Errors name the fields `young{suffix}`, `poisson{suffix}`.
+    fn compliance(&self, suffix: &str) -> Result<f64> {
         if self.young == f64::INFINITY {
             return Ok(0.0);
         }
-        check::positive("young", self.young)?;
-        if !(self.poisson.is_finite() && self.poisson > -1.0 && self.poisson <= 0.5) {
-            return Err(crate::Error::invalid(
-                "poisson",
-                self.poisson,
-                "in (-1, 0.5]",
-            ));
-        }
+        check::positive(&format!("young{suffix}"), self.young)?;
+        check_poisson(&format!("poisson{suffix}"), self.poisson)?;
         Ok((1.0 - self.poisson * self.poisson) / self.young)
+    }
+}
+
+/// A Poisson ratio ν ∈ (−1, 0.5] (thermodynamic stability of an isotropic
+/// solid: bulk and shear moduli positive), the one check of every ν.
+///
+/// # Errors
+/// [`crate::Error::InvalidParameter`] naming `name`.
+pub fn check_poisson(name: &str, poisson: f64) -> Result<f64> {
+    if poisson.is_finite() && poisson > -1.0 && poisson <= 0.5 {
+        Ok(poisson)
+    } else {
+        Err(crate::Error::invalid(name, poisson, "in (-1, 0.5]"))
     }
 }
 
@@ -77,9 +85,10 @@ impl Material {
     /// Two elastic bodies.
     ///
     /// # Errors
-    /// As [`Material::from_body`] for either body; both rigid.
+    /// As [`Material::from_body`] for either body (the second's fields named
+    /// `young2`, `poisson2`); both rigid.
     pub fn from_bodies(a: Body, b: Body) -> Result<Self> {
-        let c = a.compliance()? + b.compliance()?;
+        let c = a.compliance("")? + b.compliance("2")?;
         if c <= 0.0 {
             return Err(crate::Error::invalid(
                 "young",

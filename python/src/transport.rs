@@ -320,7 +320,7 @@ pub(crate) fn compare_transport(
     let request = transport::TransportRequest::new(
         transport::conductivity(&k.conductivity.unwrap_or_default()).map_err(err)?,
         transport::resistivity(&k.resistivity.unwrap_or_default()).map_err(err)?,
-        transport::gap_law(k.gas_conductivity, k.mean_free_path, &[]).map_err(err)?,
+        transport::gap_law(k.gas_conductivity, k.mean_free_path, None).map_err(err)?,
         seal,
     );
     let mut config = persson_studies::validation::TransportCompareConfig::new(request);

@@ -776,6 +776,9 @@ impl AdhesiveSolver {
         opts: &AdhesiveOptions,
     ) -> Result<AdhesivePoint> {
         check::tolerance("tolerance", opts.tolerance)?;
+        if opts.max_iterations == 0 {
+            return Err(crate::Error::invalid("max_iterations", 0.0, ">= 1"));
+        }
         self.check_heights(heights)?;
         let (h_max, h_mean) = height_stats(heights);
         self.start(heights, target, h_max);

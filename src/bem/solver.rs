@@ -154,13 +154,16 @@ impl Solver {
     }
 }
 
-/// The checks of the options, in the order 0.3 made them: the yield stress
-/// (positive, above the mean pressure), then the tolerance.
+/// The checks of the options: the yield stress (positive, above the mean
+/// pressure), the tolerance, at least one iteration.
 fn check_options(opts: &Options, control: Control) -> Result<()> {
     if let Some(y) = opts.yield_stress {
         saturated::check_yield_stress(y, control)?;
     }
-    check::tolerance("tol", opts.tolerance)?;
+    check::tolerance("tolerance", opts.tolerance)?;
+    if opts.max_iterations == 0 {
+        return Err(crate::Error::invalid("max_iterations", 0.0, ">= 1"));
+    }
     Ok(())
 }
 

@@ -41,10 +41,7 @@ impl Rubber {
     /// # Errors
     /// `poisson` not finite or outside (−1, 0.5].
     pub fn with_poisson(mut self, poisson: f64) -> Result<Self> {
-        if !(poisson.is_finite() && poisson > -1.0 && poisson <= 0.5) {
-            return Err(Error::invalid("poisson", poisson, "in (-1, 0.5]"));
-        }
-        self.poisson = poisson;
+        self.poisson = crate::material::check_poisson("poisson", poisson)?;
         Ok(self)
     }
 

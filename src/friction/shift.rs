@@ -274,9 +274,18 @@ impl TemperatureShift {
     /// vertical shift.
     ///
     /// # Errors
-    /// `reference_temperature` not finite and > 0.
+    /// `reference_temperature` not finite and > 0, or outside the table's
+    /// temperatures.
     pub fn table(reference_temperature: f64, table: ShiftTable) -> Result<Self> {
         let mut s = Self::none(reference_temperature)?;
+        let (lo, hi) = table.temperature_range();
+        if !(lo..=hi).contains(&reference_temperature) {
+            return Err(Error::invalid(
+                "reference_temperature",
+                reference_temperature,
+                format!("within the shift table's range [{lo}, {hi}] K"),
+            ));
+        }
         if table.vertical.is_some() {
             s.vertical = VerticalShift::Table;
         }

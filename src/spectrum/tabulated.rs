@@ -284,7 +284,7 @@ pub fn parse_columns(path: &Path, text: &str, names: [&str; 2]) -> Result<Rows> 
             path,
             0,
             0,
-            "no data rows (expected columns q, C)",
+            format!("no data rows (expected columns {}, {})", names[0], names[1]),
         ));
     }
     Ok((points, lines))

@@ -729,7 +729,7 @@ fn every_format_is_read_alike_by_every_command_that_takes_a_surface() {
             "10x10-one_channel_without_name.ibw",
         ];
         for cmd in theory.iter().filter(|_| small.contains(name)) {
-            let mut more = if cmd[0] == "spectrum" {
+            let more = if cmd[0] == "spectrum" {
                 vec![]
             } else {
                 material.to_vec()

@@ -206,9 +206,7 @@ impl Subsurface {
         if n < 2 {
             return Err(Error::invalid("grid", n as f64, ">= 2"));
         }
-        if !(poisson > -1.0 && poisson <= 0.5) {
-            return Err(Error::invalid("poisson", poisson, "in (-1, 0.5]"));
-        }
+        crate::material::check_poisson("poisson", poisson)?;
         if pressure.len() != n * n {
             return Err(Error::Inconsistent {
                 name: "pressure".into(),

@@ -265,13 +265,14 @@ impl SpectrumArgs {
 #[derive(clap::Args, Debug, Clone, Default)]
 pub struct MaterialArgs {
     /// Contact modulus E*, 1/E* = Σ (1 − ν²)/E (same unit as the pressures).
-    #[arg(long, alias = "modulus", allow_hyphen_values = true, value_parser = number, conflicts_with_all = ["young", "poisson"])]
+    #[arg(long, alias = "modulus", allow_hyphen_values = true, value_parser = number, conflicts_with = "young")]
     pub contact_modulus: Option<f64>,
     /// Young's modulus E of the elastic body (against a rigid one unless --young2).
     #[arg(long, requires = "poisson", allow_hyphen_values = true, value_parser = number)]
     pub young: Option<f64>,
-    /// Poisson ratio ν of the body.
-    #[arg(long, requires = "young", allow_hyphen_values = true, value_parser = number)]
+    /// Poisson ratio ν of the body (with --young; with --contact-modulus only
+    /// where the stress below the surface needs it, default 0.3).
+    #[arg(long, allow_hyphen_values = true, value_parser = number)]
     pub poisson: Option<f64>,
     /// Young's modulus of the second body.
     #[arg(long, requires_all = ["young", "poisson2"], allow_hyphen_values = true, value_parser = number)]

@@ -146,8 +146,9 @@ fn rough_contact(a: &RoughArgs, files: &mut Files) -> anyhow::Result<()> {
         eprintln!("persson: {}", persson_studies::scene::EXAMPLE);
     }
     let pressures = super::args::pressures(&a.pressure, a.spectrum.example)?;
-    // Before any computation: the transport flags.
+    // Before any computation: the transport flags, the bins.
     let request = super::bem_transport::request(a)?;
+    persson_studies::validation::check_bins(a.bins)?;
     let options = RoughOptions {
         boundary: a.boundary,
         solver: Options {
@@ -299,6 +300,7 @@ fn rough_surface(
     Ok(if let Some(path) = &a.surface {
         let mut map = a.read.spec(path, 0);
         map.size = a.size.map(persson_studies::scene::Sides::One);
+        map.detrend = a.detrend;
         (
             map.bem_surface(a.boundary)?,
             SurfaceOrigin::height_map(path),
@@ -324,32 +326,10 @@ fn adhesive_rough(a: &RoughArgs, work_of_adhesion: f64, files: &mut Files) -> an
         adhesive_controlled_path, adhesive_warnings, AdhesiveIteration, PathControl,
     };
     let ad = &a.adhesion;
-    if !(work_of_adhesion.is_finite() && work_of_adhesion > 0.0) {
-        anyhow::bail!("--work-of-adhesion {work_of_adhesion}: must be finite and > 0 (J/m²)");
-    }
     let range = ad
         .adhesion_range
         .context("--work-of-adhesion needs --adhesion-range")?;
-    if !(range.is_finite() && range > 0.0) {
-        anyhow::bail!("--adhesion-range {range}: must be finite and > 0 (m)");
-    }
-    if let Some(g) = ad.mean_gap.iter().find(|g| !(g.is_finite() && **g > 0.0)) {
-        anyhow::bail!("--mean-gap {g}: must be finite and > 0 (m)");
-    }
-    if let Some(d) = ad.approach.iter().find(|d| !d.is_finite()) {
-        anyhow::bail!("--approach {d}: must be finite (m)");
-    }
-    let free = a.boundary != persson::bem::Boundary::Periodic;
-    let control = match (ad.mean_gap.is_empty(), ad.approach.is_empty()) {
-        (false, _) if free => anyhow::bail!(
-            "--mean-gap: with --boundary free the adhesive BEM runs under approach control: give --approach d1,d2,… (m) instead"
-        ),
-        (false, _) => PathControl::MeanGap(&ad.mean_gap),
-        (true, false) => PathControl::Approach(&ad.approach),
-        (true, true) => anyhow::bail!(
-            "--work-of-adhesion needs --mean-gap g1,g2,… (or --approach d1,d2,…): the adhesive BEM runs along a path of mean gaps (approaches)"
-        ),
-    };
+    let control = PathControl::new(&ad.mean_gap, &ad.approach, a.boundary)?;
     if a.spectrum.example {
         eprintln!("persson: {}", persson_studies::scene::EXAMPLE);
     }
@@ -360,8 +340,7 @@ fn adhesive_rough(a: &RoughArgs, work_of_adhesion: f64, files: &mut Files) -> an
     }
     let kind = law_kind(&ad.adhesion);
     let options = persson::bem::adhesive::AdhesiveOptions {
-        tolerance: check::tolerance("tolerance", a.solver.tolerance)
-            .map_err(|e| anyhow::anyhow!("--tolerance: {e}"))?,
+        tolerance: check::tolerance("tolerance", a.solver.tolerance)?,
         max_iterations: a.solver.max_iterations,
     };
     let report = adhesive_controlled_path(
@@ -372,11 +351,7 @@ fn adhesive_rough(a: &RoughArgs, work_of_adhesion: f64, files: &mut Files) -> an
         control,
         &options,
         AdhesiveIteration::parse(&ad.adhesive_iteration)?,
-    )
-    .map_err(|e| match super::args::flag_of(&e, ADHESION_FLAGS) {
-        Some(flag) => anyhow::anyhow!("{flag}: {e}"),
-        None => e.into(),
-    })?;
+    )?;
     let mut warnings = a.spectrum.file_warnings();
     warnings.extend(adhesive_warnings(&report));
     print_narrowed(&report, &warnings, &a.format, a.wide)
@@ -386,15 +361,9 @@ fn adhesive_rough(a: &RoughArgs, work_of_adhesion: f64, files: &mut Files) -> an
 fn adhesive_hertz(h: &HertzArgs) -> anyhow::Result<()> {
     use persson_studies::bem_detail::{adhesive_sphere, sphere_warnings};
     let dg = h.work_of_adhesion.unwrap_or(0.0);
-    if !(dg.is_finite() && dg > 0.0) {
-        anyhow::bail!("--work-of-adhesion {dg}: must be finite and > 0");
-    }
     let range = h
         .adhesion_range
         .context("--work-of-adhesion needs --adhesion-range")?;
-    if !(range.is_finite() && range > 0.0) {
-        anyhow::bail!("--adhesion-range {range}: must be finite and > 0");
-    }
     if h.boundary != persson::bem::Boundary::Periodic {
         anyhow::bail!(
             "--boundary {}: the adhesive sphere of `bem hertz` is solved on a periodic cell \
@@ -402,18 +371,8 @@ fn adhesive_hertz(h: &HertzArgs) -> anyhow::Result<()> {
             h.boundary.name()
         );
     }
-    for (flag, v) in [
-        ("--size", h.size),
-        ("--radius", h.radius),
-        ("--contact-modulus", h.contact_modulus),
-    ] {
-        if !(v.is_finite() && v > 0.0) {
-            anyhow::bail!("{flag} {v}: must be finite and > 0");
-        }
-    }
     let options = persson::bem::adhesive::AdhesiveOptions {
-        tolerance: check::tolerance("tolerance", h.solver.tolerance)
-            .map_err(|e| anyhow::anyhow!("--tolerance: {e}"))?,
+        tolerance: check::tolerance("tolerance", h.solver.tolerance)?,
         max_iterations: h.solver.max_iterations,
     };
     let report = adhesive_sphere(
@@ -421,11 +380,7 @@ fn adhesive_hertz(h: &HertzArgs) -> anyhow::Result<()> {
         (h.size, h.radius, h.contact_modulus),
         (law_kind(&h.adhesion), dg, range),
         &options,
-    )
-    .map_err(|e| match super::args::flag_of(&e, ADHESION_FLAGS) {
-        Some(flag) => anyhow::anyhow!("{flag}: {e}"),
-        None => e.into(),
-    })?;
+    )?;
     print_narrowed(&report, &sphere_warnings(&report), &h.format, h.wide)
 }
 
@@ -436,16 +391,6 @@ fn law_kind(name: &str) -> persson_studies::bem_detail::LawKind {
         _ => persson_studies::bem_detail::LawKind::Maugis,
     }
 }
-
-/// The flags of the fields the adhesive solver names in its errors.
-const ADHESION_FLAGS: &[(&str, &str)] = &[
-    ("work_of_adhesion", "--work-of-adhesion"),
-    ("adhesion_range", "--adhesion-range"),
-    ("mean_gap", "--mean-gap"),
-    ("approach", "--approach"),
-    ("tolerance", "--tolerance"),
-    ("heights", "--surface"),
-];
 
 /// `dir/name.ext` → `dir/name_k.ext` when `k` is given.
 pub fn indexed(path: &Path, k: Option<usize>) -> PathBuf {

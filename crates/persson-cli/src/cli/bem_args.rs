@@ -163,6 +163,10 @@ pub struct RoughArgs {
     pub size: Option<f64>,
     #[command(flatten)]
     pub read: MapReadArgs,
+    /// Least-squares trend removed from the --surface heights before the
+    /// solve (default: none, the heights as read).
+    #[arg(long, value_enum, requires = "surface")]
+    pub detrend: Option<persson_studies::scene::DetrendName>,
     /// Grid side N for a synthesised surface.
     #[arg(long, conflicts_with = "surface", allow_hyphen_values = true, value_parser = super::number::count)]
     pub grid: Option<usize>,

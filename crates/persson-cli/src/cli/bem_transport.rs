@@ -33,7 +33,7 @@ pub fn request(a: &RoughArgs) -> anyhow::Result<Option<TransportRequest>> {
     let request = TransportRequest::new(
         transport::conductivity(&t.conductivity)?,
         transport::resistivity(&t.resistivity)?,
-        transport::gap_law(t.gas_conductivity, t.mean_free_path, &[])?,
+        transport::gap_law(t.gas_conductivity, t.mean_free_path, None)?,
         seal,
     );
     if request == TransportRequest::default() {

@@ -79,7 +79,7 @@ impl TransportArgs {
         let request = TransportRequest::new(
             transport::conductivity(&self.conductivity).map_err(flag)?,
             transport::resistivity(&self.resistivity).map_err(flag)?,
-            transport::gap_law(self.gas_conductivity, self.mean_free_path, &[]).map_err(flag)?,
+            transport::gap_law(self.gas_conductivity, self.mean_free_path, None).map_err(flag)?,
             seal,
         );
         let mut config = TransportCompareConfig::new(request);

@@ -50,10 +50,7 @@ pub struct Args {
 pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
     let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
     let pressures = pressures(&a.pressure, a.spectrum.example)?;
-    let gap_table = match &a.gap_table {
-        Some(path) => read_gap_table(path)?,
-        None => vec![],
-    };
+    let gap_table = a.gap_table.as_deref().map(read_gap_table).transpose()?;
     let out = ConductanceOutput {
         conductivity: a.conductivity.clone(),
         resistivity: a.resistivity.clone(),

@@ -75,7 +75,7 @@ path_type!(
 /// The output layer's refusal, naming the flags; a plot in a build
 /// without the feature `plot`.
 pub fn plan(cmd: &clap::Command, m: &ArgMatches, files: &mut Files) -> anyhow::Result<()> {
-    let (cmd, m) = innermost(cmd, m);
+    let (cmd, m) = super::blame::innermost(cmd, m);
     for arg in cmd.get_arguments() {
         let id = arg.get_id().as_str();
         if let Ok(Some(values)) = m.try_get_many::<InFile>(id) {
@@ -108,17 +108,6 @@ pub fn plan(cmd: &clap::Command, m: &ArgMatches, files: &mut Files) -> anyhow::R
     Ok(())
 }
 
-/// The deepest subcommand given and its matches (`bem rough`).
-fn innermost<'a>(cmd: &'a clap::Command, m: &'a ArgMatches) -> (&'a clap::Command, &'a ArgMatches) {
-    match m.subcommand() {
-        Some((name, sub)) => match cmd.find_subcommand(name) {
-            Some(c) => innermost(c, sub),
-            None => (cmd, m),
-        },
-        None => (cmd, m),
-    }
-}
-
 /// How the user spelled an argument: `--plot`, or `SCENE` for a positional one.
 pub fn flag(arg: &clap::Arg) -> String {
     match arg.get_long() {
@@ -139,7 +128,6 @@ pub fn formats(arg: &clap::Arg) -> Vec<&'static str> {
     if !name.contains('|') {
         return Vec::new();
     }
-    // Value names are 'static strings of the derive; leak-free lookup.
     let list = name.split_once('.').map_or("", |(_, exts)| exts);
     KNOWN
         .iter()

@@ -190,8 +190,12 @@ pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Resul
     let velocity_range = match a.velocity_range.as_slice() {
         [] => None,
         &[lo, hi, n] => {
-            if !(n.fract() == 0.0 && (1.0..=1e6).contains(&n)) {
-                bail!("--velocity-range: N = {n} must be a whole number in 1..=1000000");
+            if !(n.fract() == 0.0 && n >= 1.0 && n <= persson_studies::scene::MAX_VELOCITIES as f64)
+            {
+                bail!(
+                    "--velocity-range: N = {n} must be a whole number in 1..={}",
+                    persson_studies::scene::MAX_VELOCITIES
+                );
             }
             Some(VelocityRange {
                 velocity_min: lo,

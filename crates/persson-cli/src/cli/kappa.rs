@@ -19,9 +19,14 @@ pub struct Args {
     format: Format,
 }
 
-/// Run `persson kappa`.
+/// Run `persson kappa`: κ alone, or (as a scene's `kappa` output) with the
+/// linear contact fractions when a spectrum, a material and pressures are
+/// given (or the example).
 pub fn run(a: Args) -> anyhow::Result<()> {
-    let report = if a.spectrum.is_given() {
+    let material = a.material.spec(false).is_ok();
+    let with_surface =
+        a.spectrum.example || (a.spectrum.is_given() && (material || !a.pressure.is_empty()));
+    let report = if with_surface {
         let surface = contact(&a.spectrum, &a.material)?;
         let pressures = pressures(&a.pressure, a.spectrum.example)?;
         run::kappa(Some((&surface, &pressures)))?

@@ -13,6 +13,7 @@ mod bem_args;
 mod bem_detail;
 #[cfg(feature = "bem")]
 mod bem_transport;
+mod blame;
 #[cfg(feature = "bem")]
 mod compare;
 #[cfg(feature = "bem")]
@@ -93,7 +94,10 @@ enum Cmd {
 /// names is checked before anything is computed, and its outputs are
 /// written only once the whole command has succeeded ([`files`]).
 pub fn run(cli: Cli, matches: &clap::ArgMatches) -> anyhow::Result<()> {
-    stage(cli, matches)?.commit()?;
+    use clap::CommandFactory;
+    let mut staged =
+        stage(cli, matches).map_err(|e| blame::name_flag(&Cli::command(), matches, e))?;
+    staged.commit()?;
     Ok(())
 }
 

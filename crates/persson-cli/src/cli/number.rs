@@ -49,6 +49,9 @@ pub fn number(s: &str) -> Result<f64, String> {
             }
         }
     }
+    if t.contains(',') {
+        return Err(format!("`{s}` is a list: this flag takes one number"));
+    }
     Err(format!(
         "`{s}` is not a number: give a plain SI number (Pa, m, N, 1/m), e.g. 1e6, 2.5e-7"
     ))

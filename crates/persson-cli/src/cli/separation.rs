@@ -51,19 +51,12 @@ pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Resul
     let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
     let pressures = pressures(&a.pressure, a.spectrum.example)?;
     if a.separation_density {
-        if a.density_points < 2 {
-            anyhow::bail!("--density-points {}: need at least 2", a.density_points);
-        }
         let report = persson_studies::scene::separation_density::separation_density(
             &surface,
             &pressures,
             a.density_points,
             a.tolerance,
-        )
-        .map_err(|e| match super::args::flag_of(&e, DENSITY_FLAGS) {
-            Some(flag) => anyhow::anyhow!("{flag}: {e}"),
-            None => e.into(),
-        })?;
+        )?;
         return print_warned(&report, &report.warnings, &a.format);
     }
     let grid = if a.plot.plot.is_some() || a.plot_area.is_some() {
@@ -111,10 +104,3 @@ fn plot_pressures(given: &[f64], n: usize) -> anyhow::Result<Vec<f64>> {
         .map(|i| (a + (b - a) * i as f64 / (n - 1) as f64).exp())
         .collect())
 }
-
-/// The flags of the fields P(u) names in its errors.
-const DENSITY_FLAGS: &[(&str, &str)] = &[
-    ("nominal_pressure", "--pressure"),
-    ("tolerance", "--tolerance"),
-    ("points", "--density-points"),
-];

@@ -21,7 +21,7 @@ use persson::bem::adhesive::{
     RESOLVED_COHESIVE_LENGTH,
 };
 use persson::bem::{Boundary, Method, Operator};
-use persson::error::{Error, Result};
+use persson::error::{check, Error, Result};
 
 /// The cohesive law of an adhesive BEM path, by name.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -131,6 +131,48 @@ pub enum PathControl<'a> {
     Approach(&'a [f64]),
 }
 
+impl<'a> PathControl<'a> {
+    /// The path of the lists given (`mean_gap` or `approach`, exactly one
+    /// non-empty) on `boundary`: the one check of the command line, the
+    /// scene and Python. Mean gaps must be finite and > 0, approaches finite.
+    ///
+    /// # Errors
+    /// [`Error::Inconsistent`] naming `mean_gap` / `approach` for both or
+    /// neither given, or mean gaps on the free boundary (it runs under
+    /// approach control); [`Error::InvalidParameter`] naming `mean_gap[i]` or
+    /// `approach[i]`.
+    pub fn new(mean_gap: &'a [f64], approach: &'a [f64], boundary: Boundary) -> Result<Self> {
+        for (i, &g) in mean_gap.iter().enumerate() {
+            check::positive(&format!("mean_gap[{i}]"), g)?;
+        }
+        for (i, &d) in approach.iter().enumerate() {
+            if !d.is_finite() {
+                return Err(Error::invalid(format!("approach[{i}]"), d, "finite (m)"));
+            }
+        }
+        match (mean_gap.is_empty(), approach.is_empty()) {
+            (false, false) => Err(Error::Inconsistent {
+                name: "mean_gap and approach".into(),
+                requirement: "give one of the two".into(),
+            }),
+            (false, true) if boundary != Boundary::Periodic => Err(Error::Inconsistent {
+                name: "mean_gap and boundary".into(),
+                requirement: "mean gaps need a periodic boundary: the free one runs under \
+                              approach control (give approach instead)"
+                    .into(),
+            }),
+            (false, true) => Ok(PathControl::MeanGap(mean_gap)),
+            (true, false) => Ok(PathControl::Approach(approach)),
+            (true, true) => Err(Error::Inconsistent {
+                name: "mean_gap or approach".into(),
+                requirement: "the adhesive BEM runs along a path: give mean gaps (m) or \
+                              approaches (m)"
+                    .into(),
+            }),
+        }
+    }
+}
+
 /// Solve the adhesive contact of the periodic surface `heights` (N × N,
 /// side `size`, m) against a flat half-space of modulus `contact_modulus` at
 /// each of `mean_gaps` (m) in order.
@@ -182,6 +224,9 @@ pub fn adhesive_controlled_path(
             requirement: format!("at least one {}", name.replace('_', " ")),
         });
     }
+    // Δγ = 0 is no adhesion at all: the elastic BEM (`bem rough`) answers that.
+    check::positive("work_of_adhesion", work_of_adhesion)?;
+    check::positive("adhesion_range", adhesion_range)?;
     let law = kind.law(work_of_adhesion, adhesion_range)?;
     let op = Operator::new(boundary, n, size, contact_modulus)?;
     let mut solver = AdhesiveSolver::new(op)?;
@@ -375,6 +420,15 @@ pub fn adhesive_sphere(
     options: &AdhesiveOptions,
 ) -> Result<AdhesiveSphereReport> {
     use std::f64::consts::PI;
+    for (name, v) in [
+        ("size", size),
+        ("radius", radius),
+        ("contact_modulus", contact_modulus),
+        ("work_of_adhesion", work_of_adhesion),
+        ("adhesion_range", adhesion_range),
+    ] {
+        check::positive(name, v)?;
+    }
     let dg = work_of_adhesion;
     let approach_scale = (PI * PI * dg * dg * radius / (contact_modulus * contact_modulus)).cbrt();
     let lambda = MaugisDugdale::parameter(radius, contact_modulus, dg, dg / adhesion_range)?;
@@ -391,6 +445,21 @@ pub fn adhesive_sphere(
             let start = touch + 2.0 * adhesion_range;
             let deepest = touch - 1.5 * approach_scale;
             let last = touch + 5.0 * approach_scale + 2.0 * adhesion_range;
+            if !(deepest > 0.0 && last.is_finite()) {
+                // The path goes 1.5 approach scales past first touch: it must
+                // stay above a mean gap of 0 (the sphere pressed flat on the cell).
+                return Err(Error::Inconsistent {
+                    name: "work_of_adhesion, radius, contact_modulus".into(),
+                    requirement: format!(
+                        "an adhesive approach scale (π²Δγ²R/E*²)^(1/3) = {} m whose 1.5-fold \
+                         stays within the mean gap {} m of the sphere at first touch on the \
+                         cell of side {} m (a larger size, or a smaller Δγ)",
+                        crate::table::number(approach_scale, 4),
+                        crate::table::number(touch, 4),
+                        crate::table::number(size, 4),
+                    ),
+                });
+            }
             let mut gaps: Vec<f64> = (0..=10)
                 .map(|k| start + (deepest - start) * k as f64 / 10.0)
                 .collect();

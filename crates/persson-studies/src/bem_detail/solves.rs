@@ -60,7 +60,8 @@ impl Details {
     /// `pressures`; the depths are checked here, before any solve.
     ///
     /// # Errors
-    /// A depth out of (0, L] (named `depth`); no depth.
+    /// A depth out of (0, L] (named `depth`); no depth; a tensile yield
+    /// stress not finite and > 0.
     pub fn new(
         (n, size, boundary): (usize, f64, Boundary),
         pressures: &[f64],
@@ -69,6 +70,9 @@ impl Details {
     ) -> Result<Self> {
         if let Some(s) = &subsurface {
             check_depths(&s.depth, size)?;
+            if let Some(y) = s.tensile_yield_stress {
+                persson::error::check::positive("tensile_yield_stress", y)?;
+            }
         }
         Ok(Details {
             n,

@@ -112,10 +112,8 @@ pub fn bem_rough(scene: &Scene, b: &BemOutput) -> Result<(RoughReport, Details)>
     let named = |e: Error| prefix("outputs.bem.", e);
     let boundary = b.boundary.unwrap_or(BoundaryName::Periodic).into();
     let tol = check::tolerance("tolerance", b.tolerance.unwrap_or(1e-10)).map_err(named)?;
-    let bins = b.bins.unwrap_or(50);
-    if bins == 0 {
-        return Err(named(Error::invalid("bins", 0.0, ">= 1")));
-    }
+    let bins = crate::validation::check_bins(b.bins.unwrap_or(crate::validation::DEFAULT_BINS))
+        .map_err(named)?;
     if scene.nominal_pressure.is_empty() {
         return Err(required(
             "nominal_pressure (a non-empty list, for outputs.bem)",
@@ -212,25 +210,8 @@ pub fn bem_adhesion(
     let named = |e: Error| prefix("outputs.bem_adhesion.", e);
     let boundary_name = a.boundary.unwrap_or(BoundaryName::Periodic);
     let tol = check::tolerance("tolerance", a.tolerance.unwrap_or(1e-10)).map_err(named)?;
-    let control = match (a.mean_gap.is_empty(), a.approach.is_empty()) {
-        (false, false) => {
-            return Err(Error::Inconsistent {
-                name: "outputs.bem_adhesion.mean_gap / approach".into(),
-                requirement: "one of the two".into(),
-            })
-        }
-        (false, true) if boundary_name == BoundaryName::Free => {
-            return Err(Error::Inconsistent {
-                name: "outputs.bem_adhesion.mean_gap".into(),
-                requirement: "a periodic boundary (the free one runs under approach control: \
-                              give approach)"
-                    .into(),
-            })
-        }
-        (false, true) => PathControl::MeanGap(&a.mean_gap),
-        (true, false) => PathControl::Approach(&a.approach),
-        (true, true) => return Err(required("outputs.bem_adhesion.mean_gap (or approach)")),
-    };
+    let control =
+        PathControl::new(&a.mean_gap, &a.approach, boundary_name.into()).map_err(named)?;
     let e_star = scene.material()?.contact_modulus();
     let surf = bem_surface(
         scene,

@@ -119,7 +119,17 @@ pub fn friction_on(
 /// The velocities: the list or the log-spaced range (exactly one).
 fn velocities(out: &FrictionOutput) -> Result<Vec<f64>> {
     match (&out.velocity_range, out.velocity.is_empty()) {
-        (Some(r), true) => log_velocities(r.velocity_min, r.velocity_max, r.points),
+        (Some(r), true) => {
+            if r.points > MAX_VELOCITIES {
+                return Err(Error::invalid(
+                    "velocity_range.points",
+                    r.points as f64,
+                    format!("at most {MAX_VELOCITIES} (each velocity is a friction integral)"),
+                ));
+            }
+            log_velocities(r.velocity_min, r.velocity_max, r.points)
+                .map_err(|e| prefix("velocity_range.", e))
+        }
         (None, false) => {
             for &v in &out.velocity {
                 if !(v.is_finite() && v > 0.0) {
@@ -137,6 +147,9 @@ fn velocities(out: &FrictionOutput) -> Result<Vec<f64>> {
         }),
     }
 }
+
+/// The most velocities a `velocity_range` may ask for.
+pub const MAX_VELOCITIES: usize = 1_000_000;
 
 /// The numerics' options from the output's fields.
 fn options(out: &FrictionOutput, breaks: Vec<f64>) -> Result<FrictionOptions> {

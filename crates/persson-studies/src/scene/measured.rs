@@ -170,9 +170,9 @@ pub fn describe(file: &std::path::Path, a: &Analysis) -> String {
     )
 }
 
-/// An error of the analysis, prefixed with the file unless it names it.
-#[cfg(feature = "topography")]
-fn in_file(file: &std::path::Path, e: Error) -> Error {
+/// An error of reading or analysing `file`, prefixed with the file unless
+/// it names it.
+pub(crate) fn in_file(file: &std::path::Path, e: Error) -> Error {
     let name = file.display().to_string();
     if e.to_string().contains(&name) {
         e
@@ -185,8 +185,9 @@ fn in_file(file: &std::path::Path, e: Error) -> Error {
 impl HeightMapSpec {
     /// The map as the BEM's rigid surface, read by [`HeightMapSpec::read`]
     /// like every other command's surface (the file's own size and units),
-    /// heights as in the file (no detrending: the BEM's mean gap is measured
-    /// from the highest point). The BEM solves on square N × N grids only: a
+    /// heights as in the file, with the trend `detrend` removed only when it
+    /// is given (the spectrum's default detrending is for the spectrum; the
+    /// window, `q_max` and `tip_radius` shape the spectrum only). The BEM solves on square N × N grids only: a
     /// non-square map is an error (cropping it would change its spectrum,
     /// padding it would add a flat strip).
     ///
@@ -217,7 +218,11 @@ impl HeightMapSpec {
             return Err(bad(format!("sides {} × {} m", t.lx(), t.ly())));
         }
         persson::bem::check_memory(nx, boundary)?;
-        persson::bem::surface::GridSurface::new(nx, t.lx(), t.heights().to_vec())
+        let heights = match self.detrend {
+            Some(d) => t.detrended(d.into()),
+            None => t.heights().to_vec(),
+        };
+        persson::bem::surface::GridSurface::new(nx, t.lx(), heights)
             .map_err(|e| Error::parse(&self.file, 0, 0, e.to_string()))
     }
 }

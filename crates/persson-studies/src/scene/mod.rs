@@ -51,7 +51,7 @@ pub mod transport;
 pub mod transport_bem;
 
 pub use adhesion::{DEFAULT_STICKINESS_POINTS, DEFAULT_TOLERANCE as DEFAULT_ADHESION_TOLERANCE};
-pub use friction::{friction, friction_on};
+pub use friction::{friction, friction_on, MAX_VELOCITIES};
 #[cfg(feature = "topography")]
 pub use measured::describe;
 pub use report::*;
@@ -82,6 +82,14 @@ impl Scene {
         let base = path.parent().unwrap_or(Path::new("."));
         if let Some(spectrum) = &mut s.spectrum {
             for file in spectrum.files_mut() {
+                if file.as_os_str().is_empty() {
+                    return Err(Error::parse(
+                        path,
+                        0,
+                        0,
+                        "spectrum: a file name is empty (\"file\": \"\")",
+                    ));
+                }
                 if file.is_relative() {
                     *file = base.join(&*file);
                 }
@@ -137,6 +145,7 @@ impl Scene {
     /// # Errors
     /// The first invalid input or failed computation.
     pub fn run(&self) -> Result<SceneReport> {
+        self.check_unused()?;
         let o = &self.outputs;
         let mut report = SceneReport {
             name: self.name.clone(),
@@ -144,6 +153,7 @@ impl Scene {
             ..Default::default()
         };
         if let Some(st) = o.stress.as_ref().filter(|st| st.zeta.is_empty()) {
+            st.check_mode().map_err(|e| prefix("outputs.stress.", e))?;
             report.stress = Some(
                 run::stress_dimensionless(
                     &Start::from(st.start),
@@ -189,17 +199,7 @@ impl Scene {
                 ["spectrum.", "rubber.", "outputs.friction."],
             )?);
         }
-        let with_surface = self.spectrum.is_some() && self.material.is_some();
-        let needs_surface = o.area.is_some()
-            || o.magnification.is_some()
-            || o.theories.is_some()
-            || o.separation.is_some()
-            || o.conductance.is_some()
-            || o.leakage.is_some()
-            || o.adhesion.is_some()
-            || o.stress.as_ref().is_some_and(|st| !st.zeta.is_empty())
-            || (o.kappa.is_some() && with_surface && !self.nominal_pressure.is_empty());
-        let surface = if needs_surface {
+        let surface = if self.needs_surface() {
             Some(self.contact()?)
         } else {
             None
@@ -226,16 +226,27 @@ impl Scene {
             return Ok(report);
         };
         if let Some(a) = &o.area {
-            report.area = Some(run::area(&surface, &self.nominal_pressure, a)?);
+            report.area = Some(
+                run::area(&surface, &self.nominal_pressure, a)
+                    .map_err(|e| prefix("outputs.area.", e))?,
+            );
         }
         if let Some(m) = &o.magnification {
-            report.magnification = Some(run::magnification(&surface, m)?);
+            report.magnification = Some(
+                run::magnification(&surface, m).map_err(|e| prefix("outputs.magnification.", e))?,
+            );
         }
         if let Some(t) = &o.theories {
-            report.theories = Some(run::theories(&surface, &self.nominal_pressure, t)?);
+            report.theories = Some(
+                run::theories(&surface, &self.nominal_pressure, t)
+                    .map_err(|e| prefix("outputs.theories.", e))?,
+            );
         }
         if let Some(sep) = &o.separation {
-            report.separation = Some(run::separation(&surface, &self.nominal_pressure, sep, &[])?);
+            report.separation = Some(
+                run::separation(&surface, &self.nominal_pressure, sep, &[])
+                    .map_err(|e| prefix("outputs.separation.", e))?,
+            );
         }
         if let Some(d) = &o.separation_density {
             report.separation_density = Some(
@@ -273,6 +284,65 @@ impl Scene {
         }
         report.collect_warnings();
         Ok(report)
+    }
+
+    /// Whether an output reads the rough contact (spectrum and material).
+    fn needs_surface(&self) -> bool {
+        let o = &self.outputs;
+        o.area.is_some()
+            || o.magnification.is_some()
+            || o.theories.is_some()
+            || o.separation.is_some()
+            || o.separation_density.is_some()
+            || o.conductance.is_some()
+            || o.leakage.is_some()
+            || o.adhesion.is_some()
+            || o.stress.as_ref().is_some_and(|st| !st.zeta.is_empty())
+            || (o.kappa.is_some() && self.spectrum.is_some() && !self.nominal_pressure.is_empty())
+    }
+
+    /// Every section the scene gives is checked, even one no output reads
+    /// (a scene is refused for what the command line refuses): the
+    /// spectrum, material, rubber and pressures no output uses are built
+    /// here (the ones an output uses are built by it); a scene that asks
+    /// for nothing is refused.
+    fn check_unused(&self) -> Result<()> {
+        let o = &self.outputs;
+        let asked =
+            serde_json::to_value(o).map_or(true, |v| v.as_object().is_none_or(|m| !m.is_empty()));
+        if !asked {
+            return Err(Error::Inconsistent {
+                name: "outputs".into(),
+                requirement:
+                    "at least one output (area, spectrum, bem, …): the scene asks for nothing"
+                        .into(),
+            });
+        }
+        let surface = self.needs_surface();
+        let spectrum = surface
+            || o.spectrum.is_some()
+            || o.bem.is_some()
+            || o.friction.is_some()
+            || o.bem_adhesion.is_some();
+        if !spectrum && self.spectrum.is_some() {
+            self.spectrum()?;
+        }
+        let material = surface || o.bem.is_some() || o.bem_adhesion.is_some();
+        if !material && self.material.is_some() {
+            self.material()?;
+        }
+        if o.friction.is_none() {
+            if let Some(r) = &self.rubber {
+                r.build(false).map_err(|e| prefix("rubber.", e))?;
+            }
+        }
+        let pressures = surface || o.bem.is_some() || o.friction.is_some();
+        if !pressures {
+            for &p in &self.nominal_pressure {
+                persson::error::check::positive("nominal_pressure", p)?;
+            }
+        }
+        Ok(())
     }
 
     /// The BEM outputs (feature `bem`); without the feature, a scene naming

@@ -198,7 +198,7 @@ pub fn kappa(surface: Option<(&RoughContact, &[f64])>) -> Result<KappaReport> {
         let slope = s.spectrum.rms_slope(q_l, q_s)?.value;
         r.rms_slope = Some(slope);
         for &p in pressures {
-            check::positive("pressure", p)?;
+            check::positive("nominal_pressure", p)?;
             r.points.push(LinearPoint {
                 nominal_pressure: p,
                 contact_fraction_bush_linear: Kappa::Bush.linear_fraction(
@@ -378,6 +378,7 @@ pub fn stress_dimensionless(
 /// Inconsistent start and contact; as [`StressScene::curves`].
 pub fn stress_physical(surface: &RoughContact, out: &StressOutput) -> Result<StressReport> {
     check_points(out.points)?;
+    out.check_mode()?;
     if out.zeta.is_empty() {
         return Err(required("zeta (a non-empty list of magnifications)"));
     }
@@ -386,16 +387,20 @@ pub fn stress_physical(surface: &RoughContact, out: &StressOutput) -> Result<Str
     let start = Start::from(out.start);
     let contact = match (&out.ball, &out.cylinder, out.peak_pressure) {
         (Some(b), None, None) if out.start == StartName::Hertz => {
-            Some(HertzContact::ball(b.radius, b.load, e_star)?)
+            Some(HertzContact::ball(b.radius, b.load, e_star).map_err(|e| prefix("ball.", e))?)
         }
-        (None, Some(c), None) if out.start == StartName::Cylinder => {
-            Some(HertzContact::cylinder(c.radius, c.load_per_length, e_star)?)
-        }
+        (None, Some(c), None) if out.start == StartName::Cylinder => Some(
+            HertzContact::cylinder(c.radius, c.load_per_length, e_star)
+                .map_err(|e| prefix("cylinder.", e))?,
+        ),
         (None, None, Some(_)) => None,
         _ => {
-            return Err(required(
-                "exactly one of peak_pressure, ball (start hertz), cylinder (start cylinder)",
-            ))
+            return Err(Error::Inconsistent {
+                name: "peak_pressure, ball, cylinder".into(),
+                requirement: "give exactly one: peak_pressure, ball (with start hertz) or \
+                              cylinder (with start cylinder)"
+                    .into(),
+            })
         }
     };
     let problem = match (&contact, out.peak_pressure) {
@@ -572,16 +577,78 @@ pub(crate) fn prefix(section: &str, e: Error) -> Error {
             value,
             requirement,
         } => Error::InvalidParameter {
-            name: format!("{section}{name}"),
+            name: placed(section, &name),
             value,
             requirement,
         },
-        Error::Inconsistent { name, requirement } if !name.starts_with(section) => {
-            Error::Inconsistent {
-                name: format!("{section}{name}"),
-                requirement,
-            }
-        }
+        Error::Inconsistent { name, requirement } => Error::Inconsistent {
+            name: placed(section, &name),
+            requirement,
+        },
         other => other,
     }
 }
+
+/// `name` as the scene's field under `section`: each field of a list
+/// (`a, b and c`) prefixed, unless already placed (under `section`, another
+/// output, or a top-level field); a name in words (`number of spectrum
+/// points`) keeps its words with the section after it.
+fn placed(section: &str, name: &str) -> String {
+    let field = |f: &str| {
+        !f.is_empty()
+            && f.chars()
+                .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || "_.[]".contains(c))
+    };
+    let is_placed = |f: &str| {
+        f.starts_with(section)
+            || f.starts_with("outputs.")
+            || TOP_LEVEL.iter().any(|t| {
+                f == *t || f.starts_with(&format!("{t}.")) || f.starts_with(&format!("{t}["))
+            })
+    };
+    // `fields (a remark)`: the fields before the remark.
+    let (head, remark) = match name.find(" (") {
+        Some(i) => name.split_at(i),
+        None => (name, ""),
+    };
+    let parts: Vec<&str> = head
+        .split([',', '/'])
+        .flat_map(|p| p.split(" and "))
+        .flat_map(|p| p.split(" or "))
+        .map(str::trim)
+        .collect();
+    if parts.iter().all(|p| field(p)) {
+        let mut out = head.to_string();
+        for p in parts.iter().filter(|p| !is_placed(p)) {
+            out = replace_word(&out, p, &format!("{section}{p}"));
+        }
+        out + remark
+    } else {
+        format!("{name} ({})", section.trim_end_matches('.'))
+    }
+}
+
+/// `text` with the whole word `word` replaced by `with`.
+fn replace_word(text: &str, word: &str, with: &str) -> String {
+    let mut out = String::with_capacity(text.len() + with.len());
+    let mut rest = text;
+    while let Some(i) = rest.find(word) {
+        let before = rest[..i].chars().next_back();
+        let after = rest[i + word.len()..].chars().next();
+        let boundary =
+            |c: Option<char>| c.is_none_or(|c| !(c.is_alphanumeric() || c == '_' || c == '.'));
+        out.push_str(&rest[..i]);
+        if boundary(before) && boundary(after) {
+            out.push_str(with);
+        } else {
+            out.push_str(word);
+        }
+        rest = &rest[i + word.len()..];
+    }
+    out.push_str(rest);
+    out
+}
+
+/// A scene's fields outside `outputs`, named as they are wherever an error
+/// arises (`nominal_pressure`, not `outputs.bem.nominal_pressure`).
+const TOP_LEVEL: [&str; 4] = ["nominal_pressure", "material", "spectrum", "rubber"];

@@ -70,7 +70,7 @@ pub fn separation_density(
 ) -> Result<SeparationDensityReport> {
     if points < 2 {
         return Err(persson::Error::invalid(
-            "points",
+            "density_points",
             points as f64,
             ">= 2 separations",
         ));

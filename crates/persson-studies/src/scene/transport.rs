@@ -93,22 +93,20 @@ pub fn resistivity(v: &[f64]) -> Result<Option<Resistivity>> {
 pub fn gap_law(
     gas_conductivity: Option<f64>,
     mean_free_path: Option<f64>,
-    table: &[(f64, f64)],
+    table: Option<&[(f64, f64)]>,
 ) -> Result<Option<GapLaw>> {
-    let law = match (gas_conductivity, mean_free_path, table.is_empty()) {
-        (None, None, true) => return Ok(None),
-        (Some(k), Some(l), true) => {
+    let law = match (gas_conductivity, mean_free_path, table) {
+        (None, None, None) => return Ok(None),
+        (Some(k), Some(l), None) => {
             check::positive("mean_free_path", l)?;
             GapLaw::Gas {
                 gas_conductivity: k,
                 mean_free_path: l,
             }
         }
-        (None, None, false) => GapLaw::Table {
-            points: table.to_vec(),
-        },
-        (Some(_), None, true) => return Err(missing("mean_free_path", "gas_conductivity")),
-        (None, Some(_), true) => return Err(missing("gas_conductivity", "mean_free_path")),
+        (None, None, Some(t)) => GapLaw::Table { points: t.to_vec() },
+        (Some(_), None, None) => return Err(missing("mean_free_path", "gas_conductivity")),
+        (None, Some(_), None) => return Err(missing("gas_conductivity", "mean_free_path")),
         _ => {
             return Err(Error::Inconsistent {
                 name: "gap_table".into(),
@@ -208,7 +206,11 @@ pub fn conductance(
     let tolerance = check::tolerance("tolerance", out.tolerance.unwrap_or(DEFAULT_TOLERANCE))?;
     let kappa = conductivity(&out.conductivity)?;
     let rho = resistivity(&out.resistivity)?;
-    let law = gap_law(out.gas_conductivity, out.mean_free_path, &out.gap_table)?;
+    let law = gap_law(
+        out.gas_conductivity,
+        out.mean_free_path,
+        out.gap_table.as_deref(),
+    )?;
     let options = ConductanceOptions {
         conductivity: kappa,
         resistivity: rho,
@@ -237,7 +239,7 @@ pub fn conductance(
         resistivity2: rho.map(|r| r.resistivity2),
         gas_conductivity: out.gas_conductivity,
         mean_free_path: out.mean_free_path,
-        gap_table: out.gap_table.clone(),
+        gap_table: out.gap_table.clone().unwrap_or_default(),
         points,
         bem,
     })

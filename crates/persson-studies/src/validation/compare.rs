@@ -28,6 +28,18 @@ use persson::theory::Persson;
 /// `persson bem rough --histogram`, the Python `compare`).
 pub const DEFAULT_BINS: usize = 50;
 
+/// The bins of a BEM pressure histogram: at least 1 (the one check of the
+/// command line, the scene and Python, whether or not a histogram is drawn).
+///
+/// # Errors
+/// [`persson::Error::InvalidParameter`] naming `bins`.
+pub fn check_bins(bins: usize) -> persson::Result<usize> {
+    match bins {
+        0 => Err(persson::Error::invalid("bins", 0.0, ">= 1")),
+        n => Ok(n),
+    }
+}
+
 /// Low-load regime of the κ fits: points with A/A0 below this.
 pub const KAPPA_MAX_FRACTION: f64 = 0.1;
 
@@ -555,7 +567,7 @@ fn compare_on(
         None => None,
     };
 
-    let distributions = pressure_distributions(&sw, &model, config.bins)?;
+    let distributions = pressure_distributions(&sw, &model, check_bins(config.bins)?)?;
     let finest = sw.mean_contact_fraction().pop().unwrap_or(SeedMean {
         mean: vec![],
         standard_error: vec![],

@@ -131,6 +131,10 @@ impl AdhesionCompareConfig {
     }
 }
 
+/// The longest cohesive range over the surface's highest point above its
+/// mean height a comparison runs (its path reaches 3ρ above first touch).
+pub const MAX_RANGE_OVER_HEIGHTS: f64 = 100.0;
+
 /// Theory against BEM at one point of the path.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[non_exhaustive]
@@ -256,6 +260,19 @@ pub(super) fn compare_adhesion(
         let rho = t
             .adhesion_range
             .unwrap_or(rms_slope * sweep.size / finest as f64);
+        // The path runs out to touch + 3ρ: a range far beyond the heights
+        // (the theory's gaps then overflow) attracts across the whole surface.
+        if rho.is_nan() || rho > MAX_RANGE_OVER_HEIGHTS * touch {
+            return Err(Error::invalid(
+                "adhesion_range",
+                rho,
+                format!(
+                    "at most {MAX_RANGE_OVER_HEIGHTS} × the surface's highest point above its mean \
+                     ({} m)",
+                    crate::table::number(touch, 4)
+                ),
+            ));
+        }
         let gaps = path(
             touch + rho,
             u_lo.min(touch),

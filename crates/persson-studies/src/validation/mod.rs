@@ -84,7 +84,9 @@ pub use data::{density_distance, interpolate_log, score, Score, UserData, UserHi
 pub use kappa::{fit_kappa, KappaEstimate, KappaFit};
 
 #[cfg(feature = "bem")]
-pub use compare::{compare, compare_surface, ComparisonConfig, DEFAULT_BINS, KAPPA_MAX_FRACTION};
+pub use compare::{
+    check_bins, compare, compare_surface, ComparisonConfig, DEFAULT_BINS, KAPPA_MAX_FRACTION,
+};
 #[cfg(feature = "bem")]
 pub use compare_transport::{TransportCompareConfig, TransportComparison};
 #[cfg(feature = "bem")]

@@ -577,6 +577,33 @@ pub(crate) fn push(list: &mut Vec<Warning>, w: Option<Warning>) {
     }
 }
 
+/// A [`Warning::NotComputed`] for every column and scalar of `tables` that
+/// holds a value that is not finite (module [`crate::table`]).
+pub fn not_computed(tables: &[crate::table::Table]) -> Vec<Warning> {
+    let mut out = Vec::new();
+    for t in tables {
+        let mut push = |quantity: &str, count: usize| {
+            if count > 0 {
+                out.push(Warning::NotComputed {
+                    table: t.name.clone(),
+                    quantity: quantity.to_string(),
+                    count,
+                });
+            }
+        };
+        for (key, _, value) in &t.scalars {
+            push(key, usize::from(value.is_not_finite()));
+        }
+        for (j, c) in t.columns.iter().enumerate() {
+            push(
+                &c.key,
+                t.rows.iter().filter(|r| r[j].is_not_finite()).count(),
+            );
+        }
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -626,31 +653,4 @@ mod tests {
         assert!(Warning::steep_slope(1.0).is_none());
         assert!(Warning::zeta_beyond_band(&[1e4], 1e4).is_none());
     }
-}
-
-/// A [`Warning::NotComputed`] for every column and scalar of `tables` that
-/// holds a value that is not finite (module [`crate::table`]).
-pub fn not_computed(tables: &[crate::table::Table]) -> Vec<Warning> {
-    let mut out = Vec::new();
-    for t in tables {
-        let mut push = |quantity: &str, count: usize| {
-            if count > 0 {
-                out.push(Warning::NotComputed {
-                    table: t.name.clone(),
-                    quantity: quantity.to_string(),
-                    count,
-                });
-            }
-        };
-        for (key, _, value) in &t.scalars {
-            push(key, usize::from(value.is_not_finite()));
-        }
-        for (j, c) in t.columns.iter().enumerate() {
-            push(
-                &c.key,
-                t.rows.iter().filter(|r| r[j].is_not_finite()).count(),
-            );
-        }
-    }
-    out
 }

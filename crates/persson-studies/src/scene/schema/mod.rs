@@ -134,22 +134,48 @@ impl MaterialSpec {
         *self == MaterialSpec::default()
     }
 
-    /// Build the material (E* takes precedence over the bodies).
+    /// Build the material: E* given (`contact_modulus`, with `poisson` the
+    /// body's ν where the stress below the surface needs it), or the bodies'
+    /// `young` and `poisson` (and `young2`, `poisson2` of a second elastic
+    /// body). Every given field is checked, even one that E* makes unused.
     ///
     /// # Errors
-    /// Missing or invalid fields, named as in the scene file.
+    /// Missing, invalid or contradicting fields, named as in the scene file
+    /// (and as the flags' ids: `contact_modulus`, `young2`, …).
     pub fn build(&self) -> Result<Material> {
+        if let Some(nu) = self.poisson {
+            persson::material::check_poisson("poisson", nu)?;
+        }
+        let either = |what: &str| Error::Inconsistent {
+            name: format!("contact_modulus and {what}"),
+            requirement: "give E* (contact_modulus) or the bodies' young and poisson, not both"
+                .into(),
+        };
         if let Some(e) = self.contact_modulus {
+            for (name, given) in [
+                ("young", self.young),
+                ("young2", self.young2),
+                ("poisson2", self.poisson2),
+            ] {
+                if given.is_some() {
+                    return Err(either(name));
+                }
+            }
             return Material::new(e);
         }
         let (Some(young), Some(poisson)) = (self.young, self.poisson) else {
-            return Err(required("contact_modulus (or young and poisson)"));
+            return Err(required(match (self.young, self.poisson) {
+                (Some(_), None) => "poisson (with young)",
+                (None, Some(_)) => "young (with poisson), or contact_modulus",
+                _ => "contact_modulus (or young and poisson)",
+            }));
         };
         let a = Body { young, poisson };
         match (self.young2, self.poisson2) {
             (Some(young), Some(poisson)) => Material::from_bodies(a, Body { young, poisson }),
             (None, None) => Material::from_body(a),
-            _ => Err(required("young2 and poisson2 together")),
+            (Some(_), None) => Err(required("poisson2 (with young2)")),
+            (None, Some(_)) => Err(required("young2 (with poisson2)")),
         }
     }
 }
@@ -158,7 +184,7 @@ impl MaterialSpec {
 pub(crate) fn required(what: &str) -> Error {
     Error::Inconsistent {
         name: what.to_string(),
-        requirement: "required by the scene's outputs".into(),
+        requirement: "missing (required for this calculation)".into(),
     }
 }
 

@@ -225,6 +225,53 @@ pub struct StressOutput {
     pub plot: Option<PathBuf>,
 }
 
+impl StressOutput {
+    /// The fields of one mode only: the dimensionless mode (`g`,
+    /// `yield_ratio`) or the physical one (`zeta` with `peak_pressure`,
+    /// `ball` or `cylinder`, and `yield_stress`), as the command line's flags
+    /// conflict.
+    ///
+    /// # Errors
+    /// [`persson::Error::Inconsistent`] naming the fields of the other mode.
+    pub fn check_mode(&self) -> persson::Result<()> {
+        let physical = !self.zeta.is_empty();
+        let other: Vec<&str> = if physical {
+            [
+                ("g", !self.g.is_empty()),
+                ("yield_ratio", self.yield_ratio.is_some()),
+            ]
+            .into_iter()
+            .filter_map(|(n, given)| given.then_some(n))
+            .collect()
+        } else {
+            [
+                ("peak_pressure", self.peak_pressure.is_some()),
+                ("ball", self.ball.is_some()),
+                ("cylinder", self.cylinder.is_some()),
+                ("yield_stress", self.yield_stress.is_some()),
+            ]
+            .into_iter()
+            .filter_map(|(n, given)| given.then_some(n))
+            .collect()
+        };
+        match other.is_empty() {
+            true => Ok(()),
+            false => Err(persson::Error::Inconsistent {
+                name: other.join(", "),
+                requirement: if physical {
+                    "the dimensionless mode's (g, yield_ratio): not with zeta, the physical mode \
+                     (its yield stress is yield_stress, in the pressure unit)"
+                        .into()
+                } else {
+                    "the physical mode's: give zeta with them (or g alone, the dimensionless mode, \
+                     whose yield stress is yield_ratio)"
+                        .into()
+                },
+            }),
+        }
+    }
+}
+
 fn default_stress_points() -> usize {
     201
 }

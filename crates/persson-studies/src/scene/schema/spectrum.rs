@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
-use super::{required, ConventionName, DetrendName, LengthUnitName, WindowName};
+use super::{ConventionName, DetrendName, LengthUnitName, WindowName};
 use persson::error::Result;
 use persson::spectrum::{Amplitude, SelfAffine, Spectrum, Sum, Tabulated};
 
@@ -149,7 +149,7 @@ pub struct HeightMapSpec {
 
 /// A physical size: one side `Lx` (square pixels) or both `[Lx, Ly]`, m.
 #[derive(Debug, Clone, Copy, PartialEq, Deserialize, Serialize, JsonSchema)]
-#[serde(untagged)]
+#[serde(untagged, expecting = "a side Lx in m, or both sides as [Lx, Ly]")]
 pub enum Sides {
     /// `Lx`; `Ly = Lx·ny/nx`.
     One(f64),
@@ -211,7 +211,12 @@ impl SpectrumSpec {
                     (Some(x), None, None) => Amplitude::RmsHeight(*x),
                     (None, Some(x), None) => Amplitude::RmsSlope(*x),
                     (None, None, Some(x)) => Amplitude::CR(*x),
-                    _ => return Err(required("exactly one of rms_height, rms_slope, c_r")),
+                    _ => {
+                        return Err(persson::Error::Inconsistent {
+                            name: "rms_height, rms_slope, c_r".into(),
+                            requirement: "give exactly one of them (the amplitude)".into(),
+                        })
+                    }
                 };
                 Ok(Box::new(SelfAffine::new(
                     *q_l,
@@ -225,10 +230,10 @@ impl SpectrumSpec {
                 file,
                 convention,
                 size,
-            } => Ok(Box::new(Tabulated::from_csv(
-                file,
-                convention.with(*size)?,
-            )?)),
+            } => Ok(Box::new(
+                Tabulated::from_csv(file, convention.with(*size)?)
+                    .map_err(|e| crate::scene::measured::in_file(file, e))?,
+            )),
             SpectrumSpec::HeightMap(m) => m.spectrum(),
             SpectrumSpec::Sum { parts } => Ok(Box::new(Sum::new(
                 parts

@@ -30,8 +30,8 @@ pub struct ConductanceOutput {
     /// A table of the gap's heat-transfer coefficient instead of the gas law:
     /// `[[u, α], …]`, u ascending in m, α in W/(m² K) (linear in between,
     /// held at the ends).
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub gap_table: Vec<(f64, f64)>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub gap_table: Option<Vec<(f64, f64)>>,
     /// Relative tolerance of the wavevector integrals (default 1e-9).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tolerance: Option<f64>,
