@@ -6,7 +6,7 @@ use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
     if let Ok(text) = std::str::from_utf8(data) {
-        if let Ok(scene) = persson::scene::Scene::parse(std::path::Path::new("fuzz.json"), text) {
+        if let Ok(scene) = persson_studies::scene::Scene::parse(std::path::Path::new("fuzz.json"), text) {
             let _ = scene.run();
         }
     }
