@@ -70,8 +70,8 @@ pub struct SeparationPoint {
     pub mean_separation: f64,
     /// Absolute error estimate of ū, m.
     pub mean_separation_error_bound: f64,
-    /// Normal contact stiffness per unit area K = −dp/dū, Pa/m (`+∞`, JSON
-    /// `null`, when it overflows f64 near full contact).
+    /// Normal contact stiffness per unit area K = −dp/dū, Pa/m (finite: a
+    /// load where it overflows f64, near full contact, is refused).
     pub stiffness: f64,
     /// Absolute error estimate of K, Pa/m.
     pub stiffness_error_bound: f64,
@@ -232,7 +232,11 @@ impl<'a> Separation<'a> {
     /// Mean interfacial separation ū(p), m (see the module docs).
     ///
     /// # Errors
-    /// `pressure` not finite and positive; quadrature failure.
+    /// [`Error::InvalidParameter`] naming `nominal_pressure` not finite and
+    /// positive, or naming `nominal_pressure` or `contact_modulus` when
+    /// E*/σ0 is so large that G = (E*/σ0)²⟨|∇h|²⟩/8 overflows f64 (the bound
+    /// of `theory::check_g_finite`: (w(q_s)σ0/E*)² = 1/(4G) underflows
+    /// there); quadrature failure.
     ///
     /// # Examples
     /// ```
@@ -245,7 +249,7 @@ impl<'a> Separation<'a> {
     /// assert!((u.value - 6.843_276_361_740_7e-5).abs() < 1e-9 * u.value);
     /// ```
     pub fn mean_separation(&self, pressure: f64) -> Result<Estimate> {
-        check::positive("pressure", pressure)?;
+        self.check_pressure(pressure)?;
         let r = pressure / self.contact_modulus;
         let sqrt_pi = std::f64::consts::PI.sqrt();
         let (q, _) = self.integral("mean separation", f64::MIN_POSITIVE, |q, c, w| {
@@ -267,15 +271,28 @@ impl<'a> Separation<'a> {
     /// ```
     /// The exponential is scaled by its largest value e^{−x_s²},
     /// x_s = w(q_s) p/E* (w decreases with q), so K stays accurate until it
-    /// overflows f64 near full contact; it is then `+∞` (error 0).
+    /// overflows f64 near full contact (ln K > ln f64::MAX, decided in log
+    /// space): that load is refused.
     ///
     /// # Errors
-    /// As [`Separation::mean_separation`].
+    /// As [`Separation::mean_separation`]; [`Error::InvalidParameter`] naming
+    /// `nominal_pressure` (or `contact_modulus`, E* when it is beyond 1e±30,
+    /// `theory::ratio_culprit`) where K overflows f64.
     pub fn stiffness(&self, pressure: f64) -> Result<Estimate> {
-        check::positive("pressure", pressure)?;
+        self.check_pressure(pressure)?;
         let r = pressure / self.contact_modulus;
         let sqrt_pi = std::f64::consts::PI.sqrt();
-        let x_s2 = (self.w_min()? * r).powi(2);
+        let w_min = self.w_min()?;
+        let x_s2 = (w_min * r).powi(2);
+        if !x_s2.is_finite() {
+            // e^{x_s²} overflows and I_scaled ≤ √π ∫ q² C w dq is finite
+            return Err(stiffness_overflow(
+                self.contact_modulus,
+                pressure,
+                w_min,
+                f64::INFINITY,
+            ));
+        }
         let (q, evals) = self.integral("contact stiffness", f64::MIN_POSITIVE, |q, c, w| {
             let x2 = (w * r) * (w * r) - x_s2;
             if x2 >= UNDERFLOW_ARG {
@@ -286,7 +303,7 @@ impl<'a> Separation<'a> {
         })?;
         let scaled = with_rounding(q);
         // A scaled integral of exactly 0 (every node underflowed) is full
-        // contact: K = +∞ below, like an overflowing K.
+        // contact: ln K = +∞ below, refused like an overflowing K.
         if scaled.value.is_nan() || scaled.value < 0.0 {
             return Err(Error::NotConverged {
                 what: format!("contact stiffness at p = {pressure:e} (compliance vanishes)"),
@@ -295,18 +312,33 @@ impl<'a> Separation<'a> {
                 tolerance: self.tolerance,
             });
         }
-        // K = p e^{x_s²} / I_scaled
-        let k = (pressure.ln() + x_s2 - scaled.value.ln()).exp();
-        if !k.is_finite() {
-            return Ok(Estimate {
-                value: f64::INFINITY,
-                error: 0.0,
-            });
+        // K = p e^{x_s²} / I_scaled, refused where it overflows f64
+        // (ln K > ln f64::MAX, decided in log space; an I_scaled of exactly 0,
+        // every node underflowed, is ln K = +∞)
+        let ln_k = pressure.ln() + x_s2 - scaled.value.ln();
+        if !(ln_k < f64::MAX.ln()) {
+            return Err(stiffness_overflow(
+                self.contact_modulus,
+                pressure,
+                w_min,
+                ln_k,
+            ));
         }
+        let k = ln_k.exp();
         Ok(Estimate {
             value: k,
             error: k * scaled.error / scaled.value + 4.0 * f64::EPSILON * k * (1.0 + x_s2),
         })
+    }
+
+    /// σ0 finite and positive, and E*/σ0 within the bound of
+    /// [`crate::theory::check_g_finite`]: beyond it (w(q_s)σ0/E*)² underflows
+    /// (it is 1/(4G) at full magnification) and E1 of it is +∞.
+    fn check_pressure(&self, pressure: f64) -> Result<()> {
+        check::positive("nominal_pressure", pressure)?;
+        let q = (self.spectrum.q_min(), self.spectrum.q_max());
+        let slope_variance = std::f64::consts::TAU * self.spectrum.moment(3, q.0, q.1)?.value;
+        crate::theory::check_g_finite(self.contact_modulus, pressure, slope_variance)
     }
 
     /// w(q_s) = (π ∫_{q_l}^{q_s} q³ C dq)^{−1/2}, the smallest w.
@@ -327,7 +359,7 @@ impl<'a> Separation<'a> {
     /// # Errors
     /// As [`Separation::mean_separation`].
     pub fn elastic_energy(&self, pressure: f64) -> Result<Estimate> {
-        check::positive("pressure", pressure)?;
+        self.check_pressure(pressure)?;
         let r = pressure / self.contact_modulus;
         let pre = 0.5 * std::f64::consts::PI * self.contact_modulus;
         let (q, _) = self.integral("elastic energy", f64::MIN_POSITIVE, |q, c, w| {
@@ -376,7 +408,7 @@ impl<'a> Separation<'a> {
     /// As [`Separation::point`], for the first bad pressure.
     pub fn load_curve(&self, pressures: &[f64]) -> Result<Vec<SeparationPoint>> {
         for &p in pressures {
-            check::positive("pressure", p)?;
+            self.check_pressure(p)?;
         }
         pressures.iter().map(|&p| self.point(p)).collect()
     }
@@ -407,6 +439,49 @@ impl<'a> Separation<'a> {
                 error: p_ref * (ratio_err + 8.0 * f64::EPSILON * (1.0 + ln_p.abs())),
             },
         })
+    }
+}
+
+/// The error for a stiffness K = σ0 e^{x_s²}/I_scaled beyond f64 (near
+/// full contact), naming σ0 or E* ([`crate::theory::ratio_culprit`]).
+///
+/// # Bound
+/// ln K = ln σ0 + x_s² − ln I_scaled ≤ ln f64::MAX, x_s = w(q_s)σ0/E*.
+/// I_scaled is at most of the order of ū's length u0, so K leaves f64
+/// where x_s² ≈ ln f64::MAX = 709.78, i.e. near σ0/E* = √709.78/w(q_s):
+/// the value stated (the exact limit moves with ln(σ0/I_scaled)).
+pub(crate) fn stiffness_overflow(
+    contact_modulus: f64,
+    pressure: f64,
+    w_min: f64,
+    ln_k: f64,
+) -> Error {
+    let (num, approx) = (crate::error::num, crate::error::approx);
+    let ratio = f64::MAX.ln().sqrt() / w_min;
+    let why = format!(
+        "so that the contact stiffness K = σ0 e^{{x²}}/I, x = w(q_s)σ0/E*, stays finite in f64 \
+         (here ln K = {} > ln f64::MAX = 709.8: full contact)",
+        approx(ln_k)
+    );
+    match crate::theory::ratio_culprit(contact_modulus, pressure) {
+        "contact_modulus" => Error::invalid(
+            "contact_modulus",
+            contact_modulus,
+            format!(
+                "above about {} (σ0 = {}) {why}",
+                approx(pressure / ratio),
+                num(pressure)
+            ),
+        ),
+        _ => Error::invalid(
+            "nominal_pressure",
+            pressure,
+            format!(
+                "below about {} (E* = {}) {why}",
+                approx(ratio * contact_modulus),
+                num(contact_modulus)
+            ),
+        ),
     }
 }
 

@@ -40,7 +40,7 @@ use crate::special::{erf, erfc};
 use crate::spectrum::Spectrum;
 
 /// x = 1/(2√G) at the table's lowest s for its lowest load.
-const X_LOW: f64 = 6.5;
+pub(crate) const X_LOW: f64 = 6.5;
 
 /// Default ζ-panels per unit of s = ln m3.
 pub const DEFAULT_ZETA_PANELS_PER_UNIT: f64 = 0.5;
@@ -212,7 +212,12 @@ impl SeparationTable {
     ///
     /// # Errors
     /// E* or `lowest_pressure` not finite and positive; `zeta_panels_per_unit`
-    /// not finite and positive, or above 100; `q_panels` 0 or above 100.
+    /// not finite and positive, or above 100; `q_panels` 0 or above 100;
+    /// E*/σ0 so large at the lowest pressure that G = (E*/σ0)²⟨|∇h|²⟩/8
+    /// overflows f64, or that the contact is lost closer to ζ = 1 than the
+    /// routes resolve (σ0 ≥ 6.5 E* √(π ∫q³C dq over [q_l, q_l(1 + 1e-12)]);
+    /// [`Error::InvalidParameter`] naming `nominal_pressure` or
+    /// `contact_modulus`, E* when it is beyond 1e±30).
     ///
     /// # Examples
     /// ```
@@ -259,6 +264,21 @@ impl SeparationTable {
                 "a positive slope moment ∫q³C dq",
             ));
         }
+        // g_max = (π/4)(E*/σ0)² and G = g_max m3 finite (the bound of
+        // `theory::check_g_finite`): else s_lo = ln(1/(4 X_LOW² g_max)) is
+        // −∞ and the panels between it and s_hi never end.
+        crate::theory::check_g_finite(
+            contact_modulus,
+            lowest_pressure,
+            std::f64::consts::TAU * m3_total,
+        )?;
+        super::magnified::check_resolved(
+            spectrum,
+            contact_modulus,
+            lowest_pressure,
+            X_LOW,
+            super::magnified::TABLE_RESOLUTION,
+        )?;
         let r = contact_modulus / lowest_pressure;
         let g_max = 0.25 * std::f64::consts::PI * r * r;
         let s_hi = m3_total.ln();
@@ -334,21 +354,27 @@ impl SeparationTable {
 
     /// The contact stiffness K = −dσ0/dū at σ0 = `pressure`, Pa/m, from
     /// the full band (formula of [`crate::separation::Separation::stiffness`]:
-    /// K = σ0 / (√π ∫ q² C w e^{−(w σ0/E*)²} dq)); `+∞` (error 0) where
-    /// the integral underflows, deep in full contact.
+    /// K = σ0 / (√π ∫ q² C w e^{−(w σ0/E*)²} dq)).
     ///
     /// # Errors
-    /// σ0 not finite and positive.
+    /// σ0 not finite and positive; [`Error::InvalidParameter`] naming
+    /// `nominal_pressure` (or `contact_modulus`, as
+    /// [`crate::separation::Separation::stiffness`]) where K overflows f64,
+    /// deep in full contact: the sum underflows below σ0/f64::MAX.
     pub fn stiffness(&self, pressure: f64) -> Result<Estimate> {
         check::positive("nominal_pressure", pressure)?;
         let (k, e) = self.full.band.sums(pressure / self.contact_modulus);
-        if k[1] <= 0.0 {
-            return Ok(Estimate {
-                value: f64::INFINITY,
-                error: 0.0,
-            });
-        }
         let value = pressure / k[1];
+        if !(k[1] > 0.0 && value.is_finite()) {
+            let w_min = 1.0 / (std::f64::consts::PI * self.m3_total).sqrt();
+            let ln_k = pressure.ln() - k[1].ln();
+            return Err(crate::separation::stiffness_overflow(
+                self.contact_modulus,
+                pressure,
+                w_min,
+                ln_k,
+            ));
+        }
         Ok(Estimate {
             value,
             error: value * (e[1] / k[1] + 4.0 * f64::EPSILON),
