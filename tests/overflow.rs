@@ -2,6 +2,7 @@
 //! f64 or a route resolves is refused with an error naming that input (the
 //! cases of the audit, /work/audit/37-findings.md, by its numbers).
 
+use persson::adhesion::{AdhesionModel, AdhesiveContact};
 use persson::conductance::{Conductance, ConductanceOptions, Conductivity, GapLaw};
 use persson::gap::{DensityOptions, SeparationDensity, SeparationTable};
 use persson::leakage::{CriticalJunction, Drive, EffectiveMedium, Seal};
@@ -185,5 +186,39 @@ fn stiffness_beyond_f64_is_refused_naming_the_input() {
         for p in [2e7, 1e300] {
             assert_eq!(name(c.load_curve(&[p])), "nominal_pressure");
         }
+    }
+}
+
+// ---------------------------------------------------------------- adhesion
+
+/// The issue's `adhesion --work-of-adhesion 1e300` (σ_p = ∞, NaN areas) and
+/// 2.14 (E* = 1e300: a NaN row).
+#[test]
+fn adhesion_beyond_f64_is_refused_naming_the_input() {
+    let s = sa();
+    assert_eq!(
+        name(AdhesionModel::new(&s, 1e9, 1e300).map(|_| ())),
+        "work_of_adhesion"
+    );
+    assert_eq!(
+        name(AdhesionModel::new(&s, 1e300, 0.1).map(|_| ())),
+        "contact_modulus"
+    );
+    let m = AdhesionModel::new(&s, 1e9, 0.1).unwrap();
+    assert_eq!(
+        name(AdhesiveContact::new(m).point(1e300, 8.0)),
+        "nominal_pressure"
+    );
+    // a Δγ just inside the bound gives finite numbers
+    let p = AdhesiveContact::new(AdhesionModel::new(&s, 1e9, 1e250).unwrap())
+        .point(1e7, 8.0)
+        .unwrap();
+    for v in [
+        p.contact_fraction,
+        p.contact_fraction_error_bound,
+        p.pull_off_stress,
+        p.tensile_fraction,
+    ] {
+        assert!(v.is_finite(), "{p:?}");
     }
 }
