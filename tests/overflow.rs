@@ -222,3 +222,38 @@ fn adhesion_beyond_f64_is_refused_naming_the_input() {
         assert!(v.is_finite(), "{p:?}");
     }
 }
+
+// ------------------------------------------------------------ adhesive BEM
+
+/// The adhesive `bem rough --mean-gap 1e300` (ε = NaN) and 2.15
+/// (Δγ = 1e300: ε NaN), 2.17 (ρ = 1e-300: ∞ in the pull-off table).
+#[test]
+fn adhesive_bem_refuses_a_mean_gap_or_a_law_beyond_f64() {
+    use persson::bem::adhesive::{AdhesiveOptions, AdhesiveSolver, CohesiveLaw};
+    use persson::bem::{Boundary, Operator};
+    assert_eq!(name(CohesiveLaw::maugis(1e300, 1e-5)), "work_of_adhesion");
+    assert_eq!(
+        name(CohesiveLaw::exponential(1e-3, 1e-300)),
+        "adhesion_range"
+    );
+    let n = 32;
+    let h: Vec<f64> = (0..n * n)
+        .map(|k| 1e-6 * ((k % n) as f64 * 0.7).sin() + 1e-6 * ((k / n) as f64 * 1.3).cos())
+        .collect();
+    let law = CohesiveLaw::maugis(0.05, 1e-5).unwrap();
+    let op = || Operator::new(Boundary::Periodic, n, 3.2e-5, 1e9).unwrap();
+    let opts = AdhesiveOptions::default();
+    let mut s = AdhesiveSolver::new(op()).unwrap();
+    assert_eq!(name(s.solve(&h, &law, 1e300, &opts)), "mean_gap");
+    // the bound ρ/(ε N²): beyond it the gap's rounding exceeds ρ and the
+    // solve returned its noise (p̄ = −6e145 at ḡ = 9e133, "not converged")
+    let bound = 1e-5 / (f64::EPSILON * (n * n) as f64);
+    assert_eq!(name(s.solve(&h, &law, 1.01 * bound, &opts)), "mean_gap");
+    // inside it, far apart: no traction, p̄ = 0 and ε finite, for both laws
+    for law in [law, CohesiveLaw::exponential(0.05, 1e-5).unwrap()] {
+        let mut s = AdhesiveSolver::new(op()).unwrap();
+        let p = s.solve(&h, &law, 0.99 * bound, &opts).unwrap();
+        assert!(p.mean_pressure.abs() < 1e-12, "{p:?}");
+        assert!(p.residual.is_finite(), "{p:?}");
+    }
+}
