@@ -257,3 +257,130 @@ fn adhesive_bem_refuses_a_mean_gap_or_a_law_beyond_f64() {
         assert!(p.residual.is_finite(), "{p:?}");
     }
 }
+
+// ---------------------------------------------------------------- friction
+
+fn friction_spectrum() -> SelfAffine {
+    // the audit's FS surface (friction.json)
+    SelfAffine::new(1e3, 1e4, 1e7, 0.8, Amplitude::RmsSlope(0.8)).unwrap()
+}
+
+/// The issue's master curve of 1e300 Pa moduli ("angular integrals … did
+/// not converge: 0 iterations, residual NaN") and 3.8 (a standard linear
+/// solid of 1e300 Pa; σ0 = 1e-300: "friction integrand … residual NaN").
+#[test]
+fn friction_refuses_moduli_and_loads_beyond_f64() {
+    use persson::friction::{
+        Friction, FrictionOptions, MasterCurve, Prony, Rubber, TemperatureShift,
+    };
+    use std::path::Path;
+    let e = MasterCurve::from_bytes(
+        Path::new("mc_huge.csv"),
+        b"1,1e6,1e5\n10,1e300,1e300\n100,1e300,1e300\n",
+        persson::friction::FrequencyUnit::RadPerSecond,
+    )
+    .unwrap_err();
+    match &e {
+        Error::Parse {
+            path,
+            line,
+            message,
+            ..
+        } => {
+            assert_eq!(path, Path::new("mc_huge.csv"));
+            assert_eq!(*line, 2, "{e}");
+            assert!(message.contains("storage_modulus"), "{e}");
+        }
+        other => panic!("{other:?}"),
+    }
+    assert_eq!(
+        name(MasterCurve::new(&[
+            (1.0, 1e6, 1e5),
+            (10.0, 1e6, 1e300),
+            (100.0, 1e6, 1e5)
+        ])),
+        "loss_modulus[1]"
+    );
+    assert_eq!(
+        name(Prony::standard_linear_solid(1e300, 3e6, 1e-4)),
+        "instantaneous_modulus"
+    );
+    let s = friction_spectrum();
+    let sls = Prony::standard_linear_solid(3e9, 3e6, 1e-4).unwrap();
+    let rubber = Rubber::new(sls, TemperatureShift::none(293.15).unwrap());
+    let opts = FrictionOptions {
+        breaks: vec![1e4],
+        ..Default::default()
+    };
+    let f = Friction::new(&s, &rubber, &opts).unwrap();
+    assert_eq!(name(f.point(0.01, 293.15, 1e-300)), "nominal_pressure");
+    // the bound σ0 ≥ E_eff/r_max: E_eff = 3e9/0.75, r_max = √f64::MAX (the
+    // slope variance 0.64 is below 8)
+    let bound = 4e9 / f64::MAX.sqrt();
+    assert_eq!(name(f.point(0.01, 293.15, 0.5 * bound)), "nominal_pressure");
+    let p = f.point(0.01, 293.15, 2.0 * bound).unwrap();
+    assert!(p.isothermal.friction_coefficient.is_finite());
+}
+
+/// 3.9: ρ = 1e-300 kg/m³ ("flash-temperature collocation did not converge
+/// … residual NaN"): the prefactor 4v/((1 − ν²)ρc) overflowed its product
+/// before the kernel h(q) ∝ ρc came in. The flash temperature has the
+/// steady-conduction limit there (h/(ρc) → 1/(3κq²)), which a rubber with
+/// ρc = 1.5 J/(m³ K) already reaches on the old path (x² ≥ 5e4).
+#[test]
+fn flash_temperature_at_a_vanishing_heat_capacity_is_the_steady_limit() {
+    use persson::friction::{Friction, FrictionOptions, Prony, Rubber, TemperatureShift, Thermal};
+    let s = friction_spectrum();
+    let sls = Prony::standard_linear_solid(3e9, 3e6, 1e-4).unwrap();
+    let opts = FrictionOptions {
+        breaks: vec![1e4],
+        ..Default::default()
+    };
+    let flash = |density: f64, heat_capacity: f64| {
+        let r = Rubber::new(
+            sls.clone(),
+            TemperatureShift::wlf(293.15, 8.86, 101.6).unwrap(),
+        )
+        .with_thermal(Thermal::new(0.25, density, heat_capacity).unwrap());
+        let f = Friction::new(&s, &r, &opts).unwrap();
+        f.point(0.01, 293.15, 2e5).unwrap().flash.unwrap()
+    };
+    let reference = flash(1e-3, 1500.0);
+    for (d, c) in [(1e-300, 1500.0), (1e-300, 1e-300), (1e-200, 1e-200)] {
+        let r = flash(d, c);
+        let rel = |a: f64, b: f64| ((a - b) / b).abs();
+        assert!(
+            rel(r.friction_coefficient, reference.friction_coefficient) < 1e-10,
+            "{d:e}, {c:e}: {} vs {}",
+            r.friction_coefficient,
+            reference.friction_coefficient
+        );
+        assert!(rel(r.flash_temperature, reference.flash_temperature) < 1e-10);
+    }
+}
+
+/// 3.10 (T = 193.15 K refused as "a_T = inf" although the bound stated for
+/// lower T was "> T_ref − C2 = 191.55 K"), C1 = 1e300, and 3.12 (one
+/// velocity: "number of velocities … at least 2").
+#[test]
+fn wlf_range_and_velocity_count_are_stated_as_they_are() {
+    use persson::friction::{log_velocities, TemperatureShift, MAX_WLF_C1};
+    let s = TemperatureShift::wlf(293.15, 8.86, 101.6).unwrap();
+    // ln a_T = ln f64::MAX at ΔT = −L C2/(ln 10 C1 + L), L = 709.78
+    let l = f64::MAX.ln();
+    let t_min = 293.15 - l * 101.6 / (std::f64::consts::LN_10 * 8.86 + l);
+    assert!((s.lowest_temperature() - t_min).abs() < 1e-9, "{t_min}");
+    let e = s.factors(193.15).unwrap_err();
+    assert!(e.to_string().contains("194.388645"), "{e}");
+    assert_eq!(name(s.factors(t_min - 1e-6)), "temperature");
+    let a = s.factors(t_min + 1e-6).unwrap().shift_factor;
+    assert!(a.is_finite() && a > 1e300, "{a}");
+    assert_eq!(name(TemperatureShift::wlf(293.15, 1e300, 101.6)), "wlf_c1");
+    assert!(TemperatureShift::wlf(293.15, MAX_WLF_C1, 101.6).is_ok());
+    let f = TemperatureShift::wlf(293.15, MAX_WLF_C1, 101.6)
+        .unwrap()
+        .factors(1e4)
+        .unwrap();
+    assert!(f.shift_factor > 0.0);
+    assert_eq!(name(log_velocities(1e-4, 1.0, 1)), "velocity_range.points");
+}
