@@ -1193,3 +1193,18 @@ fn surface_topography_profile_spectrum() {
         );
     }
 }
+
+/// Issue 37: a flat surface was refused as "inconsistent heights: not all
+/// equal (every height is …)", which reads as if they were not. The message
+/// says they are, and what is required.
+#[test]
+fn a_flat_surface_is_said_to_be_flat() {
+    let h = vec![-1.4e-6; 8];
+    let e = Topography::line_scans(8, 1, 8e-6, h, false).unwrap_err();
+    assert!(matches!(e, persson::Error::Inconsistent { ref name, .. } if name == "heights"));
+    let msg = e.to_string();
+    assert!(
+        msg.contains("every height is -1.4e-6: a flat surface has no spectrum"),
+        "{msg}"
+    );
+}

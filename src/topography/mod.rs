@@ -202,7 +202,9 @@ impl Topography {
             return Err(Error::Inconsistent {
                 name: "heights".into(),
                 requirement: format!(
-                    "not all equal (every height is {h0}: a flat surface has no spectrum)"
+                    "every height is {}: a flat surface has no spectrum (it needs heights \
+                     not all equal)",
+                    crate::error::num(h0)
                 ),
             });
         }
