@@ -143,6 +143,53 @@ pub(crate) fn check_g_finite(
     }
 }
 
+/// Refuse a σ0/E* for which the linear laws κ σ0/(E* h'_rms) beside A/A0
+/// overflow (E* = 1e-300 at σ0 = 1e7 gave A/A0 Bush linear = ∞).
+///
+/// # Bound
+/// κ σ0/(E* h'_rms) ≤ f64::MAX for κ ≤ κ_Bush = √(2π) (the larger κ):
+/// σ0/E* ≤ f64::MAX h'_rms/√(2π), tested as the law itself evaluates.
+///
+/// # Errors
+/// [`Error::InvalidParameter`] naming `nominal_pressure`, or
+/// `contact_modulus` when E* is beyond 1e±30 ([`ratio_culprit`]).
+pub(crate) fn check_linear_laws(contact_modulus: f64, pressure: f64, rms_slope: f64) -> Result<()> {
+    // h'_rms = 0 (ζ = 1: no roughness resolved yet) leaves the laws
+    // undefined, not overflowing: that point keeps its +∞ as before
+    if rms_slope <= 0.0
+        || Kappa::Bush
+            .linear_fraction(pressure, contact_modulus, rms_slope)
+            .is_finite()
+    {
+        return Ok(());
+    }
+    let ratio = f64::MAX / Kappa::Bush.value() * rms_slope;
+    let why = format!(
+        "so that the linear laws κ σ0/(E* h'_rms) (h'_rms = {}) stay finite in f64",
+        crate::error::approx(rms_slope)
+    );
+    Err(match ratio_culprit(contact_modulus, pressure) {
+        "contact_modulus" => Error::invalid(
+            "contact_modulus",
+            contact_modulus,
+            format!(
+                "at least {} (σ0 = {}) {why}",
+                crate::error::approx(pressure / ratio),
+                crate::error::num(pressure)
+            ),
+        ),
+        _ => Error::invalid(
+            "nominal_pressure",
+            pressure,
+            format!(
+                "at most {} (E* = {}) {why}",
+                crate::error::approx(ratio * contact_modulus),
+                crate::error::num(contact_modulus)
+            ),
+        ),
+    })
+}
+
 /// One point of an area curve.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 #[non_exhaustive]
@@ -265,7 +312,9 @@ impl<'a> Persson<'a> {
     /// The area at one (ζ, σ0) with the linear laws beside it.
     ///
     /// # Errors
-    /// As [`Persson::g`].
+    /// As [`Persson::g`]; σ0/E* so large that the linear laws κσ0/(E* h'_rms)
+    /// overflow f64 (naming `nominal_pressure`, or `contact_modulus` beyond
+    /// 1e±30).
     pub fn point(&self, zeta: f64, pressure: f64) -> Result<AreaPoint> {
         self.point_from(self.slope_variance(zeta)?, zeta, pressure)
     }
@@ -275,6 +324,7 @@ impl<'a> Persson<'a> {
         let g = self.g_from(slope_variance, pressure)?;
         let a = contact_fraction(g.value, g.error)?;
         let slope = slope_variance.value.sqrt();
+        check_linear_laws(self.contact_modulus, pressure, slope)?;
         Ok(AreaPoint {
             nominal_pressure: pressure,
             zeta,

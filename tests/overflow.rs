@@ -384,3 +384,118 @@ fn wlf_range_and_velocity_count_are_stated_as_they_are() {
     assert!(f.shift_factor > 0.0);
     assert_eq!(name(log_velocities(1e-4, 1.0, 1)), "velocity_range.points");
 }
+
+// ------------------------------------------------------- spectra and theory
+
+/// 3.2 ("invalid c_r = inf" for rms_slope = 1e300; rms_height likewise) and
+/// 3.3 (c_r = 1e300 blamed on the pressure: its slope moment overflows).
+#[test]
+fn an_amplitude_beyond_f64_is_refused_by_its_own_name() {
+    let q_l = 6283.185307179586;
+    let make = |a| SelfAffine::new(q_l, 2.0 * q_l, 8.0 * q_l, 0.8, a).map(|_| ());
+    assert_eq!(name(make(Amplitude::RmsSlope(1e300))), "rms_slope");
+    assert_eq!(name(make(Amplitude::RmsHeight(1e300))), "rms_height");
+    assert_eq!(name(make(Amplitude::RmsHeight(1e-300))), "rms_height");
+    let no_roll_off = SelfAffine::new(q_l, q_l, 8.0 * q_l, 0.8, Amplitude::CR(1e300));
+    assert_eq!(name(no_roll_off.map(|_| ())), "c_r");
+    // inside, unchanged
+    let s = SelfAffine::new(q_l, 2.0 * q_l, 8.0 * q_l, 0.8, Amplitude::RmsSlope(0.1)).unwrap();
+    assert!((s.rms_slope(q_l, 8.0 * q_l).unwrap().value - 0.1).abs() < 1e-15);
+}
+
+/// 2.3, 2.4 (E* = 1e-300: "A/A0 Bush linear ∞") and the G of 3.3's twin
+/// (E* = 1e300: named, not the pressure).
+#[test]
+fn area_refuses_a_modulus_whose_laws_overflow() {
+    use persson::kappa::Kappa;
+    use persson::theory::Persson;
+    let s = sa();
+    let m = Persson::new(&s, 1e-300).unwrap();
+    assert_eq!(name(m.point(m.zeta_max(), 1e7)), "contact_modulus");
+    assert_eq!(
+        name(Kappa::Bush.checked_linear_fraction(1e7, 1e-300, 0.1)),
+        "contact_modulus"
+    );
+    let m = Persson::new(&s, 1e300).unwrap();
+    assert_eq!(name(m.point(m.zeta_max(), 1e7)), "contact_modulus");
+    let m = Persson::new(&s, 1e9).unwrap();
+    assert_eq!(name(m.point(m.zeta_max(), 1e-160)), "nominal_pressure");
+    // E* = 1e-10 at σ0 = 1e7: finite laws (2.5e16), A/A0 = 1
+    let p = Persson::new(&s, 1e-10)
+        .unwrap()
+        .point(m.zeta_max(), 1e7)
+        .unwrap();
+    assert!(p.contact_fraction_bush_linear.is_finite());
+}
+
+/// 2.5 (anisotropy 1e300: G = 0, A/A0 = 1, the linear laws ∞): the angular
+/// average missed the peak of width 1/γ at φ = π/2 from γ ≈ 1e5 on (the
+/// slope came out 2e-5 instead of 0.0707). The slope variance of a stretch
+/// is ⟨|∇h|²⟩_iso (1 + 1/γ²)/2 (module docs of `spectrum::anisotropic`:
+/// q² = p_u²/γ² + p_v² under p_u = γ q_u).
+#[test]
+fn a_large_stretch_keeps_its_slope() {
+    use persson::spectrum::Stretched;
+    use std::sync::Arc;
+    let q_l = 6283.185307179586;
+    let iso: Arc<dyn Spectrum> = Arc::new(sa());
+    for g in [1e5, 1e12, 1e300, 1e-5, 1e-40] {
+        let s = Stretched::new(iso.clone(), g, 0.3).unwrap();
+        let slope = Spectrum::rms_slope(&s, Spectrum::q_min(&s), Spectrum::q_max(&s))
+            .unwrap()
+            .value;
+        let want = 0.1 * ((1.0 + 1.0 / (g * g)) / 2.0).sqrt();
+        assert!(
+            ((slope - want) / want).abs() < 1e-12,
+            "{g:e}: {slope} vs {want}"
+        );
+        let h = Spectrum::rms_height(&s, Spectrum::q_min(&s), Spectrum::q_max(&s))
+            .unwrap()
+            .value;
+        let h_iso = sa().rms_height(q_l, 8.0 * q_l).unwrap().value;
+        assert!(((h - h_iso) / h_iso).abs() < 1e-11, "{g:e}: {h} vs {h_iso}");
+    }
+    // below (4 m5/f64::MAX)^{1/6} the curvature's integrand overflows
+    assert_eq!(
+        name(Stretched::new(iso.clone(), 1e-100, 0.3).map(|_| ())),
+        "anisotropy"
+    );
+    // 3.16: the lay angle's requirement names no unit (the flag is degrees)
+    let e = Stretched::new(iso, 2.0, f64::NAN).map(|_| ()).unwrap_err();
+    assert_eq!(e.to_string(), "invalid lay_angle = NaN: must be finite");
+}
+
+/// 3.5: tolerances were named `tol`, a word no front-end uses.
+#[test]
+fn tolerances_are_named_tolerance() {
+    use persson::stress::{Solver, Start, TabulatedStart};
+    assert_eq!(
+        name(Solver::new(&Start::Hertz, 0.6, None, 0.0).map(|_| ())),
+        "tolerance"
+    );
+    assert_eq!(
+        name(TabulatedStart::new(&[0.0, 1.0], &[1.0, 1.0], 0.0)),
+        "table_normalisation"
+    );
+    assert_eq!(
+        name(persson::spectrum::FnSpectrum::new(|_| 1.0, 1.0, 2.0, 0.0).map(|_| ())),
+        "tolerance"
+    );
+}
+
+/// 3.14: Bush–Gibson–Thomas at σ0 = 1e17 E* ("BGT u-integral (integrand not
+/// finite at 21 nodes) did not converge … residual 0 > tolerance 1e-300").
+#[test]
+fn asperity_theory_refuses_a_load_beyond_its_integrals() {
+    use persson::asperity::{AsperityTheory, Bush, EllipticHertz, SpectralMoments};
+    let m = SpectralMoments::from_spectrum(&sa()).unwrap();
+    let b = Bush::new(&m, 1e-10, EllipticHertz::Exact).unwrap();
+    let e = b.at_pressure(1e7).unwrap_err();
+    assert!(
+        matches!(e, Error::InvalidParameter { ref name, .. } if name == "nominal_pressure"),
+        "{e}"
+    );
+    // an ordinary load is unchanged
+    let b = Bush::new(&m, 1e9, EllipticHertz::Exact).unwrap();
+    assert!(b.at_pressure(1e7).unwrap().contact_fraction.is_finite());
+}

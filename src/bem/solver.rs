@@ -160,7 +160,7 @@ fn check_options(opts: &Options, control: Control) -> Result<()> {
     if let Some(y) = opts.yield_stress {
         saturated::check_yield_stress(y, control)?;
     }
-    check::tolerance("tol", opts.tolerance)?;
+    check::tolerance("tolerance", opts.tolerance)?;
     Ok(())
 }
 
