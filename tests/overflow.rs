@@ -499,3 +499,85 @@ fn asperity_theory_refuses_a_load_beyond_its_integrals() {
     let b = Bush::new(&m, 1e9, EllipticHertz::Exact).unwrap();
     assert!(b.at_pressure(1e7).unwrap().contact_fraction.is_finite());
 }
+
+// ------------------------------------------------- leakage and gap conductance
+
+/// 2.11 (L_y = 1e300: Q junction = ∞), 2.12 (P_b = 1e-300: both Q = ∞) and
+/// 2.13 (η = 1e-300, Δ = 1e300): the prefactor (L_y/L_x) Δ/(12η) of the leak
+/// rate is bounded by f64::MAX/1e30, naming the input furthest from 1.
+#[test]
+fn a_seal_whose_leak_rate_overflows_is_refused() {
+    let base = seal();
+    let with = |f: &dyn Fn(&mut Seal)| {
+        let mut s = base;
+        f(&mut s);
+        s.validate()
+    };
+    assert_eq!(name(with(&|s| s.seal_length = 1e300)), "seal_length");
+    assert_eq!(name(with(&|s| s.seal_width = 1e-300)), "seal_width");
+    assert_eq!(
+        name(with(&|s| {
+            s.viscosity = 1e-300;
+            s.drive = Drive::Liquid {
+                pressure_drop: 1e280,
+            }
+        })),
+        "viscosity"
+    );
+    let gas = |a: f64, b: f64| Drive::Gas {
+        inlet_pressure: a,
+        outlet_pressure: b,
+    };
+    assert_eq!(
+        name(with(&|s| s.drive = gas(2e5, 1e-300))),
+        "outlet_pressure"
+    );
+    assert_eq!(name(with(&|s| s.drive = gas(1e300, 1e5))), "inlet_pressure");
+    // the stated bound on L_y is where the prefactor meets f64::MAX/1e30:
+    // L_y = L_x · 12η · f64::MAX/1e30 / Δ
+    let e = with(&|s| s.seal_length = 1e300).unwrap_err().to_string();
+    let bound = 1e-3 * 12e-3 * (f64::MAX / 1e30) / 1e5;
+    assert!(
+        e.contains(&format!("at most {:.3e}", bound).replace("e2", "e2")),
+        "{e}"
+    );
+    assert!(with(&|s| s.seal_length = 0.5 * bound).is_ok());
+    // an ordinary gas seal is unchanged
+    assert!(with(&|s| s.drive = gas(2e5, 1e5)).is_ok());
+    let surface = cs();
+    let cj = CriticalJunction::new(&surface, 1e7, base).unwrap();
+    let mut long = base;
+    long.seal_length = 1e300;
+    assert_eq!(
+        name(CriticalJunction::new(&cs(), 1e7, long).map(|_| ())),
+        "seal_length"
+    );
+    assert!(cj.point(1e5).unwrap().leak_rate.is_finite());
+}
+
+/// 2.10: κ_gas = 1e300 with ℓ = 1e-300 gave h_gap = ∞ (α(0) = κ_gas/(2ℓ)).
+#[test]
+fn a_gas_law_whose_slope_overflows_is_refused() {
+    use persson::conductance::gap_conductance;
+    let s = cs();
+    let d = SeparationDensity::new(&s, 1e7, 1e5, &density(&s)).unwrap();
+    let law = |k: f64, l: f64| GapLaw::Gas {
+        gas_conductivity: k,
+        mean_free_path: l,
+    };
+    assert_eq!(
+        name(gap_conductance(&d, &law(1e300, 1e-100))),
+        "gas_conductivity"
+    );
+    assert_eq!(
+        name(gap_conductance(&d, &law(0.026, 1e-200))),
+        "mean_free_path"
+    );
+    // the audit's pair, both 1e±300: the mean free path is named
+    assert_eq!(
+        name(gap_conductance(&d, &law(1e300, 1e-300))),
+        "mean_free_path"
+    );
+    let h = gap_conductance(&d, &law(0.026, 7e-8)).unwrap();
+    assert!(h.value.is_finite() && h.error.is_finite());
+}
