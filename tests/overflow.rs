@@ -581,3 +581,98 @@ fn a_gas_law_whose_slope_overflows_is_refused() {
     let h = gap_conductance(&d, &law(0.026, 7e-8)).unwrap();
     assert!(h.value.is_finite() && h.error.is_finite());
 }
+
+// ---------------------------------------------------------------- BEM maps
+
+/// 3.21: a 3 × 3 map given to the BEM was refused as "grid = 3e0: must be
+/// between 8 and 32768", naming an option the user did not give.
+#[test]
+fn a_map_too_small_for_the_bem_says_its_size() {
+    use persson::bem::surface::GridSurface;
+    let e = GridSurface::new(
+        3,
+        1e-5,
+        vec![0.0, 1e-9, 0.0, 2e-9, 0.0, 1e-9, 0.0, 3e-9, 0.0],
+    )
+    .unwrap_err();
+    assert!(
+        matches!(e, Error::Inconsistent { ref name, .. } if name == "heights"),
+        "{e}"
+    );
+    let msg = e.to_string();
+    assert!(
+        msg.contains("this one is 3 × 3") && msg.contains("8 × 8"),
+        "{msg}"
+    );
+    let e = persson::bem::check_memory(3, persson::bem::Boundary::Periodic).unwrap_err();
+    assert!(e.to_string().contains("3 × 3 here"), "{e}");
+}
+
+/// 3.23 (L = 1e300: "height[0, 0] = −inf"; 1e-300: "pressure = NaN"),
+/// 3.24 (R = 1e300: a fit over 1024 "contact" nodes), 3.25 (a = 1e-300:
+/// "pressure = 0"), 2.16 and 3.27 (E* = 1e300: NaN stresses, "maugis_parameter
+/// = 0").
+#[test]
+fn the_hertz_case_names_the_scale_f64_cannot_carry() {
+    use persson::adhesion::MaugisDugdale;
+    use persson::bem::hertz::HertzCase;
+    use persson::bem::Boundary;
+    let base = HertzCase::new(32, Boundary::Free);
+    let with = |f: &dyn Fn(&mut HertzCase)| {
+        let mut c = base;
+        f(&mut c);
+        c.check()
+    };
+    assert_eq!(
+        name(with(&|c| {
+            c.size = 1e300;
+            c.contact_radius = 0.1 * c.size
+        })),
+        "size"
+    );
+    assert_eq!(
+        name(with(&|c| {
+            c.size = 1e-300;
+            c.contact_radius = 0.1 * c.size
+        })),
+        "size"
+    );
+    assert_eq!(name(with(&|c| c.radius = 1e300)), "radius");
+    assert_eq!(name(with(&|c| c.contact_radius = 1e-300)), "contact_radius");
+    assert_eq!(name(with(&|c| c.e_star = 1e300)), "contact_modulus");
+    assert!(with(&|_| ()).is_ok());
+    assert_eq!(
+        name(MaugisDugdale::parameter(1.0, 1e300, 1e-3, 0.1)),
+        "contact_modulus"
+    );
+    let lambda = MaugisDugdale::parameter(1.0, 1.0, 1e-3, 0.1).unwrap();
+    let want = 0.1 * (9.0 / (2.0 * std::f64::consts::PI * 1e-3)).cbrt();
+    assert!((lambda - want).abs() < 1e-15 * want);
+}
+
+/// 3.15: the BEM at p̄ = 1e300 (or E* = 1e-10 at 1e7) iterated to its cap,
+/// "Polonsky–Keer contact solver did not converge: 10000 iterations,
+/// residual 2.67": the rounding ε p̄ alone exceeds the tolerance of the
+/// pressure scale E* h'_rms. Refused beyond τ E* h'_rms/(8ε).
+#[test]
+fn the_bem_refuses_a_pressure_whose_rounding_exceeds_its_tolerance() {
+    use persson::bem::surface::synthesize;
+    use persson::bem::{Boundary, Control, Operator, Options, Solver};
+    let q_l = 6283.185307179586;
+    let size = std::f64::consts::TAU / q_l;
+    let g = synthesize(&sa(), 32, size, 1).unwrap();
+    let solve = |e: f64, p: f64| {
+        Solver::new(Operator::new(Boundary::Periodic, 32, size, e).unwrap()).solve(
+            &g.heights,
+            Control::MeanPressure(p),
+            &Options::default(),
+        )
+    };
+    assert_eq!(name(solve(1e9, 1e300).map(|_| ())), "nominal_pressure");
+    assert_eq!(name(solve(1e-10, 1e7).map(|_| ())), "nominal_pressure");
+    assert_eq!(name(solve(1e-100, 1e7).map(|_| ())), "contact_modulus");
+    // full contact well inside the bound still converges
+    let s = solve(1e9, 1e12).unwrap();
+    assert_eq!(s.contact_fraction, 1.0);
+    assert!(solve(1e9, 1e7).unwrap().contact_fraction < 1.0);
+}
