@@ -676,3 +676,83 @@ fn the_bem_refuses_a_pressure_whose_rounding_exceeds_its_tolerance() {
     assert_eq!(s.contact_fraction, 1.0);
     assert!(solve(1e9, 1e7).unwrap().contact_fraction < 1.0);
 }
+
+// ---------------------------------------------------- spectra from files, maps
+
+/// 3.17 (a grid spectrum with L = 1e300 blamed on the file: "psd.csv:2:2:
+/// C[0] = inf"), 3.18 (one row: "invalid number of spectrum points = 1",
+/// no file) and 3.19 (a 2 × 2 map: the same words for a map).
+#[test]
+fn spectrum_files_and_maps_name_what_is_wrong() {
+    use persson::spectrum::{Convention, Tabulated};
+    use persson::topography::{analyse, AnalysisOptions, Topography};
+    use std::path::Path;
+    let csv = b"q,c\n1e4,1e-20\n1e5,1e-23\n";
+    let e = Tabulated::from_csv_bytes(Path::new("psd.csv"), csv, Convention::Grid { size: 1e300 })
+        .unwrap_err();
+    assert_eq!(name(Err::<(), _>(e)), "size");
+    assert!(
+        Tabulated::from_csv_bytes(Path::new("psd.csv"), csv, Convention::Grid { size: 1e-3 })
+            .is_ok()
+    );
+    let e = Tabulated::from_csv_bytes(
+        Path::new("psd_one.csv"),
+        b"q,c\n1e4,1e-20\n",
+        Convention::Persson,
+    )
+    .unwrap_err();
+    match &e {
+        Error::Parse { path, message, .. } => {
+            assert_eq!(path, Path::new("psd_one.csv"));
+            assert!(message.contains("1 data row(s)"), "{e}");
+        }
+        other => panic!("{other:?}"),
+    }
+    let t = Topography::map(2, 2, 1e-5, 1e-5, vec![0.0, 1e-9, 2e-9, 0.5e-9], false).unwrap();
+    let a = analyse(&t, &AnalysisOptions::default()).unwrap();
+    let e = a.psd.to_tabulated().unwrap_err();
+    assert!(
+        matches!(e, Error::Inconsistent { ref name, .. } if name == "heights"),
+        "{e}"
+    );
+    assert!(e.to_string().contains("gives 1"), "{e}");
+}
+
+/// 2.2: heights of 1e290 m gave every moment and C(q) as ∞ (exit 0).
+#[test]
+fn heights_whose_statistics_overflow_are_refused() {
+    use persson::topography::Topography;
+    let n = 32;
+    let h = |scale: f64| -> Vec<f64> {
+        (0..n * n)
+            .map(|k| scale * ((k % n) as f64 * 0.7).sin() * ((k / n) as f64 * 1.3).cos())
+            .collect()
+    };
+    let e = Topography::map(n, n, 3.2e-5, 3.2e-5, h(1e290), false).unwrap_err();
+    assert!(
+        matches!(e, Error::Inconsistent { ref name, .. } if name == "heights"),
+        "{e}"
+    );
+    // the bound √(f64::MAX/n)/(8n) on 4s/d² (d = 1e-6): s ≤ 1.6e135
+    assert!(Topography::map(n, n, 3.2e-5, 3.2e-5, h(1e120), false).is_ok());
+    let e = Topography::map(n, n, 3.2e-300, 3.2e-300, h(1e-6), false).unwrap_err();
+    assert_eq!(name(Err::<(), _>(e)), "pixel_size");
+}
+
+/// 3.33: Δγ = 1e-300 J/m² warned "error estimate up to 1.51751e134" on an
+/// A/A0 tolerance of 1e-5 (its detachment stress, 1e-147 Pa, is below the
+/// rounding of the stress axis: the non-adhesive area to rounding).
+#[test]
+fn a_vanishing_work_of_adhesion_is_the_non_adhesive_contact() {
+    use persson::theory::Persson;
+    let s = SelfAffine::new(1e4, 1e4, 1e6, 0.8, Amplitude::CR(1e-19)).unwrap();
+    let c = AdhesiveContact::new(AdhesionModel::new(&s, 1e6, 1e-300).unwrap());
+    let p = c.point(1e3, 100.0).unwrap();
+    assert!(p.flags.is_empty(), "{p:?}");
+    assert!(p.contact_fraction_error_bound < 1e-5, "{p:?}");
+    let a = Persson::new(&s, 1e6).unwrap().point(100.0, 1e3).unwrap();
+    assert!(
+        (p.contact_fraction - a.contact_fraction).abs() < 1e-9,
+        "{p:?}"
+    );
+}

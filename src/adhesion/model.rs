@@ -32,6 +32,10 @@ pub struct AdhesionModel<'a> {
     pub(crate) work_of_adhesion: f64,
     pub(crate) area_enhancement: AreaEnhancement,
     pub(crate) detachment_prefactor: f64,
+    /// ε √t_max = ε E* ξ/√8: a detachment stress below it is below the
+    /// rounding of the stress axis of the diffusion (whose width at full
+    /// magnification is √t_max) and is taken as 0 (`gamma_sigma`).
+    pub(crate) stress_floor: f64,
 }
 
 impl<'a> AdhesionModel<'a> {
@@ -69,14 +73,17 @@ impl<'a> AdhesionModel<'a> {
                 requirement: format!("0 < q_l < q_s < ∞, got q_l = {q_l:e}, q_s = {q_s:e}"),
             });
         }
-        let model = AdhesionModel {
+        let mut model = AdhesionModel {
             spectrum,
             contact_modulus,
             work_of_adhesion,
             area_enhancement: AreaEnhancement::Slopes,
             detachment_prefactor: 1.0,
+            stress_floor: 0.0,
         };
         model.check_range()?;
+        let xi2 = std::f64::consts::TAU * spectrum.moment(3, q_l, q_s)?.value;
+        model.stress_floor = f64::EPSILON * contact_modulus * (xi2 / 8.0).sqrt();
         Ok(model)
     }
 
