@@ -397,7 +397,9 @@ fn an_amplitude_beyond_f64_is_refused_by_its_own_name() {
     assert_eq!(name(make(Amplitude::RmsHeight(1e300))), "rms_height");
     assert_eq!(name(make(Amplitude::RmsHeight(1e-300))), "rms_height");
     let no_roll_off = SelfAffine::new(q_l, q_l, 8.0 * q_l, 0.8, Amplitude::CR(1e300));
-    assert_eq!(name(no_roll_off.map(|_| ())), "c_r");
+    let e = no_roll_off.map(|_| ()).unwrap_err().to_string();
+    assert!(e.starts_with("invalid c_r = 1e300: must be in ["), "{e}");
+    assert!(e.contains("so that C(q_r) and the height"), "{e}");
     // inside, unchanged
     let s = SelfAffine::new(q_l, 2.0 * q_l, 8.0 * q_l, 0.8, Amplitude::RmsSlope(0.1)).unwrap();
     assert!((s.rms_slope(q_l, 8.0 * q_l).unwrap().value - 0.1).abs() < 1e-15);
@@ -532,6 +534,17 @@ fn a_seal_whose_leak_rate_overflows_is_refused() {
         name(with(&|s| s.drive = gas(2e5, 1e-300))),
         "outlet_pressure"
     );
+    // 2.13's pair: the bound on η is computed in logarithms (e^{excess}
+    // alone overflowed: "must be at least inf")
+    let e = with(&|s| {
+        s.viscosity = 1e-300;
+        s.drive = Drive::Liquid {
+            pressure_drop: 1e300,
+        }
+    })
+    .unwrap_err()
+    .to_string();
+    assert!(!e.contains("inf"), "{e}");
     assert_eq!(name(with(&|s| s.drive = gas(1e300, 1e5))), "inlet_pressure");
     // the stated bound on L_y is where the prefactor meets f64::MAX/1e30:
     // L_y = L_x · 12η · f64::MAX/1e30 / Δ

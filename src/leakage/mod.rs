@@ -209,7 +209,8 @@ impl Seal {
                 a
             }
         });
-        let bound = value * (-(ln_f - ln_max) / exponent).exp();
+        // in logarithms: the factor e^{excess} alone may overflow
+        let bound = (value.ln() - (ln_f - ln_max) / exponent).exp();
         Err(Error::invalid(
             name,
             value,

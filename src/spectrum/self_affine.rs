@@ -165,19 +165,19 @@ fn amplitude_range(name: &str, value: f64, unit1: f64, unit3: f64) -> Error {
     let (lo, hi, what) = match name {
         "rms_height" => {
             let s = (tau * unit1).sqrt();
-            (lo.sqrt() * s, hi.sqrt() * s, "the rms height")
+            (lo.sqrt() * s, hi.sqrt() * s, "the rms height, ")
         }
         "rms_slope" => {
             let s = (tau * unit3).sqrt();
-            (lo.sqrt() * s, hi.sqrt() * s, "the rms slope")
+            (lo.sqrt() * s, hi.sqrt() * s, "the rms slope, ")
         }
-        _ => (lo, hi, "C(q_r)"),
+        _ => (lo, hi, ""),
     };
     Error::invalid(
         name,
         value,
         format!(
-            "in [{}, {}] for these cut-offs and H, so that {what}, C(q_r) and the height and \
+            "in [{}, {}] for these cut-offs and H, so that {what}C(q_r) and the height and \
              slope variances 2π∫q C dq, 2π∫q³ C dq are finite, positive f64",
             crate::error::approx(lo),
             crate::error::approx(hi)
