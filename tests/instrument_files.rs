@@ -106,7 +106,7 @@ fn maps_agree_with_surface_topography() {
         check(
             w,
             &format!("{} rms curvature", m.file),
-            a.rms_curvature,
+            a.rms_curvature.unwrap(),
             m.rms_laplacian,
             tol,
         );
@@ -115,7 +115,7 @@ fn maps_agree_with_surface_topography() {
         check(
             w,
             &format!("{} mean curvature", m.file),
-            a.mean_curvature_rms,
+            a.mean_curvature_rms.unwrap(),
             m.rms_mean_curvature,
             tol,
         );
