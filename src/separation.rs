@@ -316,7 +316,7 @@ impl<'a> Separation<'a> {
         // (ln K > ln f64::MAX, decided in log space; an I_scaled of exactly 0,
         // every node underflowed, is ln K = +∞)
         let ln_k = pressure.ln() + x_s2 - scaled.value.ln();
-        if !(ln_k < f64::MAX.ln()) {
+        if ln_k.is_nan() || ln_k >= f64::MAX.ln() {
             return Err(stiffness_overflow(
                 self.contact_modulus,
                 pressure,

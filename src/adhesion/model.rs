@@ -45,8 +45,8 @@ impl<'a> AdhesionModel<'a> {
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] naming `contact_modulus` (not finite and
-    /// > 0, or above √(2 f64::MAX/ξ²)) or `work_of_adhesion` (negative or
-    /// not finite, e.g. NaN, or above f64::MAX/(16 a(ξ²) E* q_s)): the
+    /// positive, or above √(2 f64::MAX/ξ²)) or `work_of_adhesion` (negative
+    /// or not finite, e.g. NaN, or above f64::MAX/(16 a(ξ²) E* q_s)): the
     /// bounds under which the diffusion's quantities stay finite (ξ² the
     /// mean-square slope of the band, a the true-area ratio).
     ///
@@ -125,7 +125,8 @@ impl<'a> AdhesionModel<'a> {
         // of it is a refusal; a quotient would overflow for a factor < 1)
         let factor = self.detachment_prefactor * a_max * self.contact_modulus * q_s;
         let dg_max = f64::MAX / 16.0 / factor;
-        if !(self.work_of_adhesion * factor <= f64::MAX / 16.0) {
+        let scaled = self.work_of_adhesion * factor;
+        if scaled.is_nan() || scaled > f64::MAX / 16.0 {
             return Err(Error::invalid(
                 "work_of_adhesion",
                 self.work_of_adhesion,

@@ -706,9 +706,9 @@ impl AdhesiveSolver {
     ///
     /// # Errors
     /// Heights of the wrong length or not finite; `mean_gap` not finite and
-    /// > 0, or so large that the gap field's rounding exceeds the adhesion
-    /// range (ḡ ≤ ρ/(ε N²)) or its elastic pressures overflow (ḡ ≤
-    /// (√f64::MAX/(E*|q|_max N) − (max h − min h))/N², |q|_max = √2πN/L);
+    /// positive, or so large that the gap field's rounding exceeds the
+    /// adhesion range (ḡ ≤ ρ/(ε N²)) or its elastic pressures overflow
+    /// (ḡ ≤ (√f64::MAX/(E*|q|_max N) − (max h − min h))/N², |q|_max = √2πN/L);
     /// a tolerance out of range; a free-boundary operator (use
     /// [`AdhesiveSolver::solve_approach`]); [`Error::NotConverged`] when every
     /// node closes.
@@ -1425,7 +1425,7 @@ impl AdhesiveSolver {
         match target {
             Target::MeanGap(mean_gap) => {
                 let bound = (rho / (f64::EPSILON * n * n)).min((reach - range) / (n * n));
-                if !(mean_gap <= bound) {
+                if mean_gap.is_nan() || mean_gap > bound {
                     return Err(Error::invalid(
                         "mean_gap",
                         mean_gap,
@@ -1435,7 +1435,7 @@ impl AdhesiveSolver {
             }
             Target::Approach(approach) => {
                 let bound = (rho / f64::EPSILON).min(reach - 2.0 * range);
-                if !(approach.abs() <= bound) {
+                if approach.is_nan() || approach.abs() > bound {
                     return Err(Error::invalid(
                         "approach",
                         approach,

@@ -77,7 +77,7 @@ impl MasterCurve {
     /// # Errors
     /// [`Error::InvalidParameter`] naming `frequency[i]`, `storage_modulus[i]`
     /// or `loss_modulus[i]` (0-based) for a value not finite and > 0, a
-    /// modulus above [`MAX_MODULUS`](super::MAX_MODULUS), a repeated or
+    /// modulus above [`MAX_MODULUS`], a repeated or
     /// non-monotone frequency; fewer than 3 points.
     pub fn new(points: &[(f64, f64, f64)]) -> Result<Self> {
         if points.len() < MIN_POINTS {
@@ -160,7 +160,7 @@ impl MasterCurve {
     /// # Errors
     /// [`Error::Io`]; [`Error::Parse`] with the file's line for a cell that is
     /// not a number, a row without three columns, a frequency or modulus not
-    /// finite and > 0, a modulus above [`MAX_MODULUS`](super::MAX_MODULUS), a
+    /// finite and > 0, a modulus above [`MAX_MODULUS`], a
     /// repeated or non-monotone frequency; fewer than 3 rows.
     pub fn from_file(path: &Path, unit: FrequencyUnit) -> Result<Self> {
         Self::from_bytes(path, &crate::io::read(path)?, unit)

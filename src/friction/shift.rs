@@ -339,7 +339,7 @@ impl TemperatureShift {
     }
 
     /// The lowest temperature the shift accepts (K): for WLF the T_min of
-    /// [`Self::wlf_range`] (above the singularity T_ref − C2), the table's
+    /// WLF range (`wlf_range`, above the singularity T_ref − C2), the table's
     /// first row, 0 otherwise.
     pub fn lowest_temperature(&self) -> f64 {
         match &self.horizontal {

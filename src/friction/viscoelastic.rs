@@ -154,7 +154,7 @@ impl Prony {
             ));
         }
         let glassy = relaxed_modulus + terms.iter().map(|t| t.modulus).sum::<f64>();
-        if !(glassy <= MAX_MODULUS) {
+        if glassy > MAX_MODULUS {
             // name the largest part of the sum: the typing error
             let (name, value) = terms
                 .iter()

@@ -97,7 +97,7 @@ impl<'a> CriticalJunction<'a> {
     ///
     /// # Errors
     /// σ0 not finite and positive; quadrature failures; σ0 so low against E*
-    /// that ζ_c lies closer to 1 than it is resolved ([`Error::InvalidParameter`]
+    /// that ζ_c lies closer to 1 than it is resolved ([`crate::Error::InvalidParameter`]
     /// naming `nominal_pressure` or `contact_modulus`; bound:
     /// σ0 ≥ E* erf⁻¹(a_c) √(π ∫q³C dq over [q_l, q_l(1 + 1e-9)])).
     ///
