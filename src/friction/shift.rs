@@ -378,6 +378,21 @@ impl TemperatureShift {
         let (ln_a, b_table) = match &self.horizontal {
             HorizontalShift::None => (0.0, None),
             HorizontalShift::Wlf { c1, c2 } => {
+                if dt + c2 <= 0.0 || dt.is_nan() {
+                    // at or below the singularity: the message of persson 0.4
+                    return Err(Error::invalid(
+                        "temperature",
+                        temperature,
+                        format!(
+                            "> T_ref − C2 = {} K (the WLF singularity)",
+                            ((self.reference_temperature - c2) * 1e6).round() / 1e6
+                        ),
+                    ));
+                }
+                // above it, a_T still overflows up to T_min, and underflows
+                // beyond T_max for a large C1: that range is stated (at
+                // 193.15 K, above 191.55 K, the shift was refused as
+                // "a_T = inf", 3.10 of the issue-37 audit)
                 let (lo, hi) = wlf_range(self.reference_temperature, *c1, *c2);
                 if !(temperature >= lo && temperature <= hi) {
                     let round = |t: f64| (t * 1e6).round() / 1e6;
