@@ -523,12 +523,29 @@ impl<'a> Conductance<'a> {
     }
 
     /// The conductances at σ0 from the stiffness `k`, with the gap term from `gap(law)`.
+    ///
+    /// # Errors
+    /// An infinite K (full contact beyond f64: the conductances
+    /// 2κ_s K/E* would be ∞, printed with exit 0 before issue 37: σ0 = 2E*,
+    /// σ0 = 1e300) is refused naming `nominal_pressure` (or `contact_modulus`
+    /// beyond 1e±30), with the load near which K leaves f64.
     fn point_with(
         &self,
         pressure: f64,
         k: Estimate,
         gap: impl Fn(&GapLaw) -> Result<Estimate>,
     ) -> Result<ConductancePoint> {
+        if !k.value.is_finite() {
+            let q = (self.spectrum.q_min(), self.spectrum.q_max());
+            let m3 = self.spectrum.moment(3, q.0, q.1)?.value;
+            let w_min = 1.0 / (std::f64::consts::PI * m3).sqrt();
+            return Err(crate::separation::stiffness_overflow(
+                self.contact_modulus,
+                pressure,
+                w_min,
+                f64::INFINITY,
+            ));
+        }
         let split = |e: Option<Estimate>| (e.map(|e| e.value), e.map(|e| e.error));
         let (th, th_e) = split(
             self.options

@@ -70,8 +70,8 @@ pub struct SeparationPoint {
     pub mean_separation: f64,
     /// Absolute error estimate of ū, m.
     pub mean_separation_error_bound: f64,
-    /// Normal contact stiffness per unit area K = −dp/dū, Pa/m (finite: a
-    /// load where it overflows f64, near full contact, is refused).
+    /// Normal contact stiffness per unit area K = −dp/dū, Pa/m (`+∞`, JSON
+    /// `null`, when it overflows f64 near full contact).
     pub stiffness: f64,
     /// Absolute error estimate of K, Pa/m.
     pub stiffness_error_bound: f64,
@@ -272,12 +272,14 @@ impl<'a> Separation<'a> {
     /// The exponential is scaled by its largest value e^{−x_s²},
     /// x_s = w(q_s) p/E* (w decreases with q), so K stays accurate until it
     /// overflows f64 near full contact (ln K > ln f64::MAX, decided in log
-    /// space): that load is refused.
+    /// space); it is then `+∞` (error 0), the full-contact limit, beside a
+    /// finite ū and U. Where E* itself is the absurd input (beyond 1e±30,
+    /// `theory::ratio_culprit`) the load is refused instead.
     ///
     /// # Errors
     /// As [`Separation::mean_separation`]; [`Error::InvalidParameter`] naming
-    /// `nominal_pressure` (or `contact_modulus`, E* when it is beyond 1e±30,
-    /// `theory::ratio_culprit`) where K overflows f64.
+    /// `contact_modulus` where K overflows f64 because E* is beyond 1e±30
+    /// (E* = 1e-300 at σ0 = 1e7 gave "integrand not finite at 21 nodes").
     pub fn stiffness(&self, pressure: f64) -> Result<Estimate> {
         self.check_pressure(pressure)?;
         let r = pressure / self.contact_modulus;
@@ -286,12 +288,7 @@ impl<'a> Separation<'a> {
         let x_s2 = (w_min * r).powi(2);
         if !x_s2.is_finite() {
             // e^{x_s²} overflows and I_scaled ≤ √π ∫ q² C w dq is finite
-            return Err(stiffness_overflow(
-                self.contact_modulus,
-                pressure,
-                w_min,
-                f64::INFINITY,
-            ));
+            return self.full_contact(pressure, w_min, f64::INFINITY);
         }
         let (q, evals) = self.integral("contact stiffness", f64::MIN_POSITIVE, |q, c, w| {
             let x2 = (w * r) * (w * r) - x_s2;
@@ -303,7 +300,7 @@ impl<'a> Separation<'a> {
         })?;
         let scaled = with_rounding(q);
         // A scaled integral of exactly 0 (every node underflowed) is full
-        // contact: ln K = +∞ below, refused like an overflowing K.
+        // contact: ln K = +∞ below, like an overflowing K.
         if scaled.value.is_nan() || scaled.value < 0.0 {
             return Err(Error::NotConverged {
                 what: format!("contact stiffness at p = {pressure:e} (compliance vanishes)"),
@@ -312,11 +309,26 @@ impl<'a> Separation<'a> {
                 tolerance: self.tolerance,
             });
         }
-        // K = p e^{x_s²} / I_scaled, refused where it overflows f64
-        // (ln K > ln f64::MAX, decided in log space; an I_scaled of exactly 0,
-        // every node underflowed, is ln K = +∞)
+        // K = p e^{x_s²} / I_scaled, +∞ where it overflows f64 (ln K >
+        // ln f64::MAX, decided in log space; an I_scaled of exactly 0, every
+        // node underflowed, is ln K = +∞)
         let ln_k = pressure.ln() + x_s2 - scaled.value.ln();
         if ln_k.is_nan() || ln_k >= f64::MAX.ln() {
+            return self.full_contact(pressure, w_min, ln_k);
+        }
+        let k = ln_k.exp();
+        Ok(Estimate {
+            value: k,
+            error: k * scaled.error / scaled.value + 4.0 * f64::EPSILON * k * (1.0 + x_s2),
+        })
+    }
+
+    /// K beyond f64 (ln K = `ln_k`): +∞ at full contact, the limit of the
+    /// theory (persson 0.4's value, the conductance refuses it), unless E*
+    /// is beyond 1e±30 (`theory::ratio_culprit`), an input no unit system
+    /// gives: then refused, naming contact_modulus.
+    fn full_contact(&self, pressure: f64, w_min: f64, ln_k: f64) -> Result<Estimate> {
+        if crate::theory::ratio_culprit(self.contact_modulus, pressure) == "contact_modulus" {
             return Err(stiffness_overflow(
                 self.contact_modulus,
                 pressure,
@@ -324,10 +336,9 @@ impl<'a> Separation<'a> {
                 ln_k,
             ));
         }
-        let k = ln_k.exp();
         Ok(Estimate {
-            value: k,
-            error: k * scaled.error / scaled.value + 4.0 * f64::EPSILON * k * (1.0 + x_s2),
+            value: f64::INFINITY,
+            error: 0.0,
         })
     }
 
@@ -458,10 +469,14 @@ pub(crate) fn stiffness_overflow(
 ) -> Error {
     let (num, approx) = (crate::error::num, crate::error::approx);
     let ratio = f64::MAX.ln().sqrt() / w_min;
+    let here = if ln_k.is_finite() {
+        format!("here ln K = {} > ln f64::MAX = 709.8", approx(ln_k))
+    } else {
+        "here K is beyond f64".to_string()
+    };
     let why = format!(
         "so that the contact stiffness K = σ0 e^{{x²}}/I, x = w(q_s)σ0/E*, stays finite in f64 \
-         (here ln K = {} > ln f64::MAX = 709.8: full contact)",
-        approx(ln_k)
+         ({here}: full contact)"
     );
     match crate::theory::ratio_culprit(contact_modulus, pressure) {
         "contact_modulus" => Error::invalid(

@@ -153,19 +153,21 @@ fn separation_density_is_refused_where_its_magnifications_are_not_resolved() {
 
 // ------------------------------------------------- full contact: K overflows
 
-/// 2.7, 2.8, 2.9, 3.13 and the issue's `conductance --pressure 1e300`: the
-/// stiffness K = σ0 e^{x²}/I overflows near full contact. It was +∞ (printed
-/// with exit 0) or "contact stiffness (integrand not finite at 21 nodes) did
-/// not converge … residual 0 > tolerance 2.2e-308".
+/// 2.8, 2.9, 3.13 and the issue's `conductance --pressure 1e300`: the
+/// stiffness K = σ0 e^{x²}/I overflows near full contact. The conductances
+/// 2κ_s K/E* were ∞ (printed with exit 0), or "contact stiffness (integrand
+/// not finite at 21 nodes) did not converge … residual 0 > tolerance
+/// 2.2e-308" (E* = 1e-300). The separation keeps K = +∞ there, the full
+/// contact limit beside finite ū and U (persson 0.4's documented value, and
+/// the measured surfaces of the CLI's tests reach it at 1e5 Pa), unless E*
+/// is the absurd input.
 #[test]
 fn stiffness_beyond_f64_is_refused_naming_the_input() {
     let s = sa();
     let sep = Separation::new(&s, 1e9).unwrap();
     for p in [1e12, 1e300] {
-        assert_eq!(name(sep.stiffness(p)), "nominal_pressure");
-        assert_eq!(name(sep.point(p)), "nominal_pressure");
+        assert_eq!(sep.stiffness(p).unwrap().value, f64::INFINITY);
     }
-    // ū and U stay finite there
     assert!(sep.mean_separation(1e12).unwrap().value.is_finite());
     assert!(sep.elastic_energy(1e12).unwrap().value.is_finite());
     let sep = Separation::new(&s, 1e-300).unwrap();
@@ -185,7 +187,10 @@ fn stiffness_beyond_f64_is_refused_naming_the_input() {
         let c = Conductance::new(&s, 1e7, opts).unwrap();
         for p in [2e7, 1e300] {
             assert_eq!(name(c.load_curve(&[p])), "nominal_pressure");
+            assert_eq!(name(c.point(p)), "nominal_pressure");
         }
+        let ok = c.load_curve(&[1e5]).unwrap();
+        assert!(ok[0].thermal_conductance.unwrap().is_finite());
     }
 }
 
