@@ -525,27 +525,17 @@ impl<'a> Conductance<'a> {
     /// The conductances at σ0 from the stiffness `k`, with the gap term from `gap(law)`.
     ///
     /// # Errors
-    /// An infinite K (full contact beyond f64: the conductances
-    /// 2κ_s K/E* would be ∞, printed with exit 0 before issue 37: σ0 = 2E*,
-    /// σ0 = 1e300) is refused naming `nominal_pressure` (or `contact_modulus`
-    /// beyond 1e±30), with the load near which K leaves f64.
+    /// A load whose stiffness exponent (w(q_s)σ0/E*)² overflows f64
+    /// (`separation::check_stiffness_exponent`, for the table's route as
+    /// for the adaptive one: σ0 = 1e300 gave ∞ with a gas law, a "did not
+    /// converge" without). A K of +∞ below it, full contact, is kept.
     fn point_with(
         &self,
         pressure: f64,
         k: Estimate,
         gap: impl Fn(&GapLaw) -> Result<Estimate>,
     ) -> Result<ConductancePoint> {
-        if !k.value.is_finite() {
-            let q = (self.spectrum.q_min(), self.spectrum.q_max());
-            let m3 = self.spectrum.moment(3, q.0, q.1)?.value;
-            let w_min = 1.0 / (std::f64::consts::PI * m3).sqrt();
-            return Err(crate::separation::stiffness_overflow(
-                self.contact_modulus,
-                pressure,
-                w_min,
-                f64::INFINITY,
-            ));
-        }
+        crate::separation::check_stiffness_exponent(self.spectrum, self.contact_modulus, pressure)?;
         let split = |e: Option<Estimate>| (e.map(|e| e.value), e.map(|e| e.error));
         let (th, th_e) = split(
             self.options

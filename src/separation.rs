@@ -273,23 +273,19 @@ impl<'a> Separation<'a> {
     /// x_s = w(q_s) p/E* (w decreases with q), so K stays accurate until it
     /// overflows f64 near full contact (ln K > ln f64::MAX, decided in log
     /// space); it is then `+∞` (error 0), the full-contact limit, beside a
-    /// finite ū and U. Where E* itself is the absurd input (beyond 1e±30,
-    /// `theory::ratio_culprit`) the load is refused instead.
+    /// finite ū and U.
     ///
     /// # Errors
     /// As [`Separation::mean_separation`]; [`Error::InvalidParameter`] naming
-    /// `contact_modulus` where K overflows f64 because E* is beyond 1e±30
-    /// (E* = 1e-300 at σ0 = 1e7 gave "integrand not finite at 21 nodes").
+    /// `nominal_pressure` (or `contact_modulus` beyond 1e±30) where the
+    /// exponent (w(q_s)σ0/E*)² itself overflows, σ0/E* > √f64::MAX/w(q_s)
+    /// (`check_stiffness_exponent`).
     pub fn stiffness(&self, pressure: f64) -> Result<Estimate> {
         self.check_pressure(pressure)?;
         let r = pressure / self.contact_modulus;
         let sqrt_pi = std::f64::consts::PI.sqrt();
-        let w_min = self.w_min()?;
+        let w_min = check_stiffness_exponent(self.spectrum, self.contact_modulus, pressure)?;
         let x_s2 = (w_min * r).powi(2);
-        if !x_s2.is_finite() {
-            // e^{x_s²} overflows and I_scaled ≤ √π ∫ q² C w dq is finite
-            return self.full_contact(pressure, w_min, f64::INFINITY);
-        }
         let (q, evals) = self.integral("contact stiffness", f64::MIN_POSITIVE, |q, c, w| {
             let x2 = (w * r) * (w * r) - x_s2;
             if x2 >= UNDERFLOW_ARG {
@@ -309,36 +305,19 @@ impl<'a> Separation<'a> {
                 tolerance: self.tolerance,
             });
         }
-        // K = p e^{x_s²} / I_scaled, +∞ where it overflows f64 (ln K >
-        // ln f64::MAX, decided in log space; an I_scaled of exactly 0, every
-        // node underflowed, is ln K = +∞)
-        let ln_k = pressure.ln() + x_s2 - scaled.value.ln();
-        if ln_k.is_nan() || ln_k >= f64::MAX.ln() {
-            return self.full_contact(pressure, w_min, ln_k);
+        // K = p e^{x_s²} / I_scaled, computed from its logarithm: +∞ where
+        // it overflows f64 (an I_scaled of exactly 0, every node underflowed,
+        // is ln K = +∞)
+        let k = (pressure.ln() + x_s2 - scaled.value.ln()).exp();
+        if !k.is_finite() {
+            return Ok(Estimate {
+                value: f64::INFINITY,
+                error: 0.0,
+            });
         }
-        let k = ln_k.exp();
         Ok(Estimate {
             value: k,
             error: k * scaled.error / scaled.value + 4.0 * f64::EPSILON * k * (1.0 + x_s2),
-        })
-    }
-
-    /// K beyond f64 (ln K = `ln_k`): +∞ at full contact, the limit of the
-    /// theory (persson 0.4's value, the conductance refuses it), unless E*
-    /// is beyond 1e±30 (`theory::ratio_culprit`), an input no unit system
-    /// gives: then refused, naming contact_modulus.
-    fn full_contact(&self, pressure: f64, w_min: f64, ln_k: f64) -> Result<Estimate> {
-        if crate::theory::ratio_culprit(self.contact_modulus, pressure) == "contact_modulus" {
-            return Err(stiffness_overflow(
-                self.contact_modulus,
-                pressure,
-                w_min,
-                ln_k,
-            ));
-        }
-        Ok(Estimate {
-            value: f64::INFINITY,
-            error: 0.0,
         })
     }
 
@@ -350,14 +329,6 @@ impl<'a> Separation<'a> {
         let q = (self.spectrum.q_min(), self.spectrum.q_max());
         let slope_variance = std::f64::consts::TAU * self.spectrum.moment(3, q.0, q.1)?.value;
         crate::theory::check_g_finite(self.contact_modulus, pressure, slope_variance)
-    }
-
-    /// w(q_s) = (π ∫_{q_l}^{q_s} q³ C dq)^{−1/2}, the smallest w.
-    fn w_min(&self) -> Result<f64> {
-        let m = self
-            .spectrum
-            .moment(3, self.spectrum.q_min(), self.spectrum.q_max())?;
-        Ok(1.0 / (std::f64::consts::PI * m.value).sqrt())
     }
 
     /// Elastic energy stored per unit nominal area U/A0, J/m².
@@ -453,51 +424,57 @@ impl<'a> Separation<'a> {
     }
 }
 
-/// The error for a stiffness K = σ0 e^{x_s²}/I_scaled beyond f64 (near
-/// full contact), naming σ0 or E* ([`crate::theory::ratio_culprit`]).
+/// Refuse a load whose stiffness exponent x_s² = (w(q_s)σ0/E*)² overflows
+/// f64, naming σ0 or E* ([`crate::theory::ratio_culprit`]): σ0 = 1e300 at
+/// E* = 1e7 (or E* = 1e-300 at 1e7) gave "contact stiffness (integrand not
+/// finite at 21 nodes) did not converge … residual 0 > tolerance 2.2e-308".
 ///
 /// # Bound
-/// ln K = ln σ0 + x_s² − ln I_scaled ≤ ln f64::MAX, x_s = w(q_s)σ0/E*.
-/// I_scaled is at most of the order of ū's length u0, so K leaves f64
-/// where x_s² ≈ ln f64::MAX = 709.78, i.e. near σ0/E* = √709.78/w(q_s):
-/// the value stated (the exact limit moves with ln(σ0/I_scaled)).
-pub(crate) fn stiffness_overflow(
+/// x_s² ≤ f64::MAX ⇔ σ0/E* ≤ √f64::MAX/w(q_s), w(q_s) = (π ∫_{q_l}^{q_s}
+/// q³C dq)^{−1/2}, tested as the routes evaluate it. Below it K is computed,
+/// and is +∞ where ln K = ln σ0 + x_s² − ln I exceeds ln f64::MAX, far in
+/// full contact (the theory's limit there, persson 0.4's documented value).
+/// Returns w(q_s).
+pub(crate) fn check_stiffness_exponent(
+    spectrum: &dyn Spectrum,
     contact_modulus: f64,
     pressure: f64,
-    w_min: f64,
-    ln_k: f64,
-) -> Error {
-    let (num, approx) = (crate::error::num, crate::error::approx);
-    let ratio = f64::MAX.ln().sqrt() / w_min;
-    let here = if ln_k.is_finite() {
-        format!("here ln K = {} > ln f64::MAX = 709.8", approx(ln_k))
-    } else {
-        "here K is beyond f64".to_string()
-    };
-    let why = format!(
-        "so that the contact stiffness K = σ0 e^{{x²}}/I, x = w(q_s)σ0/E*, stays finite in f64 \
-         ({here}: full contact)"
-    );
-    match crate::theory::ratio_culprit(contact_modulus, pressure) {
-        "contact_modulus" => Error::invalid(
-            "contact_modulus",
-            contact_modulus,
-            format!(
-                "above about {} (σ0 = {}) {why}",
-                approx(pressure / ratio),
-                num(pressure)
-            ),
-        ),
-        _ => Error::invalid(
-            "nominal_pressure",
-            pressure,
-            format!(
-                "below about {} (E* = {}) {why}",
-                approx(ratio * contact_modulus),
-                num(contact_modulus)
-            ),
-        ),
+) -> Result<f64> {
+    let m = spectrum.moment(3, spectrum.q_min(), spectrum.q_max())?;
+    let w_min = 1.0 / (std::f64::consts::PI * m.value).sqrt();
+    let x_s2 = (w_min * (pressure / contact_modulus)).powi(2);
+    if x_s2.is_finite() {
+        return Ok(w_min);
     }
+    let (num, approx) = (crate::error::num, crate::error::approx);
+    let ratio = f64::MAX.sqrt() / w_min;
+    let why = format!(
+        "so that the exponent (w(q_s)σ0/E*)² of the contact stiffness K = σ0 e^{{(w(q_s)σ0/E*)²}}/I \
+         stays finite in f64 (w(q_s) = {}): far beyond full contact",
+        approx(w_min)
+    );
+    Err(
+        match crate::theory::ratio_culprit(contact_modulus, pressure) {
+            "contact_modulus" => Error::invalid(
+                "contact_modulus",
+                contact_modulus,
+                format!(
+                    "at least {} (σ0 = {}) {why}",
+                    approx(pressure / ratio),
+                    num(pressure)
+                ),
+            ),
+            _ => Error::invalid(
+                "nominal_pressure",
+                pressure,
+                format!(
+                    "at most {} (E* = {}) {why}",
+                    approx(ratio * contact_modulus),
+                    num(contact_modulus)
+                ),
+            ),
+        },
+    )
 }
 
 /// A quadrature's value and error plus a few ulps of rounding.
