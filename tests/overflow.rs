@@ -102,8 +102,8 @@ fn leakage_at_a_vanishing_load_or_an_absurd_modulus_is_refused() {
 
 /// Below the bounds of the P(u) routes the weight −dA/A0 lies closer to
 /// ζ = 1 than the route resolves (ζ − 1 < 1e-9 for the adaptive route,
-/// whose narrowest panel is 1e-9 in ln ζ; < 1e-12 for the table), and the
-/// routes lost it silently: the adaptive P(u) of `cs()` at σ0 = 0.1 Pa
+/// whose narrowest panel is 1e-9 in ln ζ; < 5e-13 for the table; < 1e-13
+/// for the critical junction's ζ_c), and the routes lost it silently: the adaptive P(u) of `cs()` at σ0 = 0.1 Pa
 /// summed to 0.965, the table's at 0.01 Pa to 1 − 2.8e-4 against its bound
 /// of 1.3e-4. Refused there, normalised within the bound just above.
 #[test]
@@ -114,7 +114,7 @@ fn separation_density_is_refused_where_its_magnifications_are_not_resolved() {
     let q_l = s.q_min();
     let bound =
         |delta: f64| 6.5 * e * (std::f64::consts::PI * q_l.powi(4) * s.c(q_l) * delta).sqrt();
-    let (adaptive, table) = (bound(1e-9), bound(1e-12));
+    let (adaptive, table, critical) = (bound(1e-9), bound(5e-13), bound(1e-13));
     assert!(adaptive > 1.0 && adaptive < 100.0, "{adaptive}");
     let d = density(&s);
     assert_eq!(
@@ -144,10 +144,10 @@ fn separation_density_is_refused_where_its_magnifications_are_not_resolved() {
     let cj = CriticalJunction::new(&s, e, seal()).unwrap();
     let x_c = 0.391_302_087_802_832_1;
     assert_eq!(
-        name(cj.point(0.5 * adaptive * x_c / 6.5)),
+        name(cj.point(0.5 * critical * x_c / 6.5)),
         "nominal_pressure"
     );
-    let q = cj.point(2.0 * adaptive * x_c / 6.5).unwrap();
+    let q = cj.point(2.0 * critical * x_c / 6.5).unwrap();
     assert!(q.leak_rate.is_finite() && q.leak_rate_error_bound.is_finite());
 }
 

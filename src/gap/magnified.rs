@@ -60,28 +60,35 @@ const MAX_EVALS: usize = 2_000_000;
 /// Arguments of e^{−x²} and E1(x²) beyond which both underflow.
 const UNDERFLOW_ARG: f64 = 745.0;
 
-/// ζ − 1 below which the adaptive routes (P(u) of
-/// [`super::SeparationDensity::new`], the critical junction) do not resolve a
-/// magnification apart from ζ = 1: 1e-9, their narrowest ζ-panel in ln ζ
-/// (`MIN_PANEL` of [`super`]), so that the weight −dA/A0 lying closer to 1
-/// sits inside one unsplittable panel. Measured on self-affine spectra
-/// (H = 0.5, 0.8): P(u) keeps its normalisation within its error bound
-/// (≤ 3e-10) down to ζ − 1 ≈ 1e-9 at the weight's lower edge; from 3e-10
-/// on it errs by more than its bound (4e-3 against 2e-3 at 4e-12), and
-/// loses 59 % of its weight at 2.5e-15; the critical junction's ζ_c rounds
-/// onto 1 near 1e-15, where u1 and Q become +∞.
+/// ζ − 1 below which the adaptive P(u) ([`super::SeparationDensity::new`])
+/// does not resolve a magnification apart from ζ = 1: 1e-9, its narrowest
+/// ζ-panel in ln ζ (`MIN_PANEL` of [`super`]), so that the weight −dA/A0
+/// lying closer to 1 sits inside one unsplittable panel. Measured on
+/// self-affine spectra (H = 0.5, 0.8): P(u) keeps its normalisation within
+/// its error bound (≤ 3e-10) down to ζ − 1 ≈ 1e-9 at the weight's lower
+/// edge; from 3e-10 on it errs by more than its bound (4e-3 against 2e-3 at
+/// 4e-12), and loses 59 % of its weight at 2.5e-15.
 pub(crate) const ADAPTIVE_RESOLUTION: f64 = 1e-9;
 
 /// The same for the load curves' table ([`super::SeparationTable`]), which
-/// places its nodes in s = ln m3 and not in ln ζ: 1e-12. Measured on the
+/// places its nodes in s = ln m3 and not in ln ζ: 5e-13. Measured on the
 /// same spectra: the table keeps its normalisation within its error bound
 /// down to ζ − 1 ≈ 5e-13 at the weight's lower edge and exceeds it from
 /// 2.5e-13 on (3e-6 against 2.5e-6; 2e-1 against 6e-2 at 2.5e-17).
-pub(crate) const TABLE_RESOLUTION: f64 = 1e-12;
+pub(crate) const TABLE_RESOLUTION: f64 = 5e-13;
+
+/// The same for the critical junction's ζ_c, found by a root search in
+/// ln ζ to 1e-13 and used as one point ([`Magnified::point`]), not as a
+/// quadrature's nodes: 1e-13. Measured on the same spectra: Q changes
+/// smoothly with σ0 down to ζ_c − 1 ≈ 7e-14; below, ζ_c carries the
+/// rounding of 1 + δ (Q stalls as σ0 falls further) and near 1e-15 it
+/// rounds onto 1, where −A′ = 0 and u1 and Q become +∞.
+pub(crate) const CRITICAL_RESOLUTION: f64 = 1e-13;
 
 /// Refuse a load so low (against E*) that the contact is lost, from A/A0 = 1
 /// down to A/A0 = erf(`x_edge`), closer to ζ = 1 than a route resolves
-/// (`resolution`: [`ADAPTIVE_RESOLUTION`] or [`TABLE_RESOLUTION`]): the
+/// (`resolution`: [`ADAPTIVE_RESOLUTION`], [`TABLE_RESOLUTION`] or
+/// [`CRITICAL_RESOLUTION`]): the
 /// magnifications that carry the result round towards ζ = 1, and the routes
 /// then lose the area −dA.
 ///

@@ -215,7 +215,7 @@ impl SeparationTable {
     /// not finite and positive, or above 100; `q_panels` 0 or above 100;
     /// E*/σ0 so large at the lowest pressure that G = (E*/σ0)²⟨|∇h|²⟩/8
     /// overflows f64, or that the contact is lost closer to ζ = 1 than the
-    /// routes resolve (σ0 ≥ 6.5 E* √(π ∫q³C dq over [q_l, q_l(1 + 1e-12)]);
+    /// routes resolve (σ0 ≥ 6.5 E* √(π ∫q³C dq over [q_l, q_l(1 + 5e-13)]);
     /// [`Error::InvalidParameter`] naming `nominal_pressure` or
     /// `contact_modulus`, E* when it is beyond 1e±30).
     ///

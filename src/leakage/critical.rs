@@ -99,7 +99,7 @@ impl<'a> CriticalJunction<'a> {
     /// σ0 not finite and positive; quadrature failures; σ0 so low against E*
     /// that ζ_c lies closer to 1 than it is resolved ([`crate::Error::InvalidParameter`]
     /// naming `nominal_pressure` or `contact_modulus`; bound:
-    /// σ0 ≥ E* erf⁻¹(a_c) √(π ∫q³C dq over [q_l, q_l(1 + 1e-9)])).
+    /// σ0 ≥ E* erf⁻¹(a_c) √(π ∫q³C dq over [q_l, q_l(1 + 1e-13)])).
     ///
     /// # Examples
     /// ```
@@ -131,7 +131,7 @@ impl<'a> CriticalJunction<'a> {
             self.contact_modulus,
             pressure,
             crate::gap::magnified::erf_inverse(self.threshold),
-            crate::gap::magnified::ADAPTIVE_RESOLUTION,
+            crate::gap::magnified::CRITICAL_RESOLUTION,
         )?;
         let (a1, _) = m.area(m.zeta_max())?;
         let mut out = CriticalJunctionPoint {
