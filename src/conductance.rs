@@ -311,17 +311,75 @@ impl GapLaw {
 ///
 /// # Errors
 /// A bad law ([`GapLaw::validate`]; a gas needs ℓ > 0 here, since P_nc
-/// reaches u = 0); quadrature failures.
+/// reaches u = 0, and a finite slope κ_gas/(2ℓ)²: a table's slopes finite);
+/// quadrature failures.
 pub fn gap_conductance(density: &SeparationDensity, law: &GapLaw) -> Result<Estimate> {
     check_for_density(law)?;
     density.expectation(&|u| law.alpha(u), 1e-12, law.lipschitz())
 }
 
-/// A law usable over a P(u): valid, and a gas with ℓ > 0 (P_nc reaches u = 0).
+/// A law usable over a P(u): valid, a gas with ℓ > 0 (P_nc reaches u = 0),
+/// and a finite bound on |dα/du| (the error of u1 is carried through it).
+///
+/// # Bound
+/// Gas: |dα/du| ≤ κ_gas/(2ℓ)², finite iff ℓ ≥ √(κ_gas/f64::MAX)/2 (it also
+/// bounds α ≤ κ_gas/(2ℓ) when 2ℓ < 1; else α < κ_gas). Table: the largest
+/// slope |α_{i+1} − α_i|/(u_{i+1} − u_i) finite, else the row is named.
+/// The gas names `mean_free_path`, or `gas_conductivity` when that is the
+/// further from 1 in order of magnitude (κ_gas = 1e300 at ℓ = 1e-300 gave
+/// h_gap = ∞).
 fn check_for_density(law: &GapLaw) -> Result<()> {
     law.validate()?;
-    if let GapLaw::Gas { mean_free_path, .. } = law {
-        check::positive("mean_free_path", *mean_free_path)?;
+    match law {
+        GapLaw::Gas {
+            gas_conductivity,
+            mean_free_path,
+        } => {
+            check::positive("mean_free_path", *mean_free_path)?;
+            if !law.lipschitz().is_finite() {
+                let approx = crate::error::approx;
+                let (k, l) = (*gas_conductivity, *mean_free_path);
+                return Err(if k.ln().abs() > l.ln().abs() {
+                    Error::invalid(
+                        "gas_conductivity",
+                        k,
+                        format!(
+                            "at most {} W/(m K) at mean_free_path = {} m so that dα/du at u = 0, \
+                             κ_gas/(2ℓ)², stays finite in f64",
+                            approx(f64::MAX * (2.0 * l) * (2.0 * l)),
+                            crate::error::num(l)
+                        ),
+                    )
+                } else {
+                    Error::invalid(
+                        "mean_free_path",
+                        l,
+                        format!(
+                            "at least {} m at gas_conductivity = {} W/(m K) so that dα/du at \
+                             u = 0, κ_gas/(2ℓ)², stays finite in f64",
+                            approx(0.5 * k.sqrt() / f64::MAX.sqrt()),
+                            crate::error::num(k)
+                        ),
+                    )
+                });
+            }
+        }
+        GapLaw::Table { points } => {
+            for (i, w) in points.windows(2).enumerate() {
+                let slope = (w[1].1 - w[0].1) / (w[1].0 - w[0].0);
+                if !slope.is_finite() {
+                    return Err(Error::invalid(
+                        format!("gap_table[{}]", i + 1),
+                        w[1].0,
+                        format!(
+                            "a separation far enough from the previous one ({}) that the slope \
+                             of α between them stays finite in f64",
+                            crate::error::num(w[0].0)
+                        ),
+                    ));
+                }
+            }
+        }
     }
     Ok(())
 }
@@ -465,12 +523,19 @@ impl<'a> Conductance<'a> {
     }
 
     /// The conductances at σ0 from the stiffness `k`, with the gap term from `gap(law)`.
+    ///
+    /// # Errors
+    /// A load whose stiffness exponent (w(q_s)σ0/E*)² overflows f64
+    /// (`separation::check_stiffness_exponent`, for the table's route as
+    /// for the adaptive one: σ0 = 1e300 gave ∞ with a gas law, a "did not
+    /// converge" without). A K of +∞ below it, full contact, is kept.
     fn point_with(
         &self,
         pressure: f64,
         k: Estimate,
         gap: impl Fn(&GapLaw) -> Result<Estimate>,
     ) -> Result<ConductancePoint> {
+        crate::separation::check_stiffness_exponent(self.spectrum, self.contact_modulus, pressure)?;
         let split = |e: Option<Estimate>| (e.map(|e| e.value), e.map(|e| e.error));
         let (th, th_e) = split(
             self.options

@@ -84,6 +84,16 @@ pub(crate) fn num(v: f64) -> String {
     }
 }
 
+/// A derived bound as a person reads it: [`num`] of `v` rounded to four
+/// significant digits (bounds computed from other inputs carry no more).
+pub(crate) fn approx(v: f64) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return num(v);
+    }
+    let rounded: f64 = format!("{v:.3e}").parse().unwrap_or(v);
+    num(rounded)
+}
+
 impl Error {
     /// Shorthand for [`Error::InvalidParameter`].
     pub fn invalid(name: impl Into<String>, value: f64, requirement: impl Into<String>) -> Self {

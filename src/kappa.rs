@@ -37,4 +37,28 @@ impl Kappa {
     pub fn linear_fraction(self, pressure: f64, contact_modulus: f64, rms_slope: f64) -> f64 {
         self.value() * pressure / (contact_modulus * rms_slope)
     }
+
+    /// [`Kappa::linear_fraction`], refused where it (or Bush's, the larger)
+    /// overflows f64: σ0/E* ≤ f64::MAX h'_rms/√(2π).
+    ///
+    /// # Errors
+    /// [`crate::Error::InvalidParameter`] naming `nominal_pressure`, or
+    /// `contact_modulus` when E* is beyond 1e±30, with that bound.
+    ///
+    /// # Examples
+    /// ```
+    /// use persson::kappa::Kappa;
+    /// assert!(Kappa::Persson.checked_linear_fraction(1e6, 1e9, 0.1).is_ok());
+    /// let e = Kappa::Bush.checked_linear_fraction(1e7, 1e-300, 0.1).unwrap_err();
+    /// assert!(e.to_string().contains("contact_modulus"));
+    /// ```
+    pub fn checked_linear_fraction(
+        self,
+        pressure: f64,
+        contact_modulus: f64,
+        rms_slope: f64,
+    ) -> crate::Result<f64> {
+        crate::theory::check_linear_laws(contact_modulus, pressure, rms_slope)?;
+        Ok(self.linear_fraction(pressure, contact_modulus, rms_slope))
+    }
 }

@@ -232,7 +232,11 @@ impl<'a> Separation<'a> {
     /// Mean interfacial separation ū(p), m (see the module docs).
     ///
     /// # Errors
-    /// `pressure` not finite and positive; quadrature failure.
+    /// [`Error::InvalidParameter`] naming `nominal_pressure` not finite and
+    /// positive, or naming `nominal_pressure` or `contact_modulus` when
+    /// E*/σ0 is so large that G = (E*/σ0)²⟨|∇h|²⟩/8 overflows f64 (the bound
+    /// of `theory::check_g_finite`: (w(q_s)σ0/E*)² = 1/(4G) underflows
+    /// there); quadrature failure.
     ///
     /// # Examples
     /// ```
@@ -245,7 +249,7 @@ impl<'a> Separation<'a> {
     /// assert!((u.value - 6.843_276_361_740_7e-5).abs() < 1e-9 * u.value);
     /// ```
     pub fn mean_separation(&self, pressure: f64) -> Result<Estimate> {
-        check::positive("pressure", pressure)?;
+        self.check_pressure(pressure)?;
         let r = pressure / self.contact_modulus;
         let sqrt_pi = std::f64::consts::PI.sqrt();
         let (q, _) = self.integral("mean separation", f64::MIN_POSITIVE, |q, c, w| {
@@ -267,15 +271,21 @@ impl<'a> Separation<'a> {
     /// ```
     /// The exponential is scaled by its largest value e^{−x_s²},
     /// x_s = w(q_s) p/E* (w decreases with q), so K stays accurate until it
-    /// overflows f64 near full contact; it is then `+∞` (error 0).
+    /// overflows f64 near full contact (ln K > ln f64::MAX, decided in log
+    /// space); it is then `+∞` (error 0), the full-contact limit, beside a
+    /// finite ū and U.
     ///
     /// # Errors
-    /// As [`Separation::mean_separation`].
+    /// As [`Separation::mean_separation`]; [`Error::InvalidParameter`] naming
+    /// `nominal_pressure` (or `contact_modulus` beyond 1e±30) where the
+    /// exponent (w(q_s)σ0/E*)² itself overflows, σ0/E* > √f64::MAX/w(q_s)
+    /// (`check_stiffness_exponent`).
     pub fn stiffness(&self, pressure: f64) -> Result<Estimate> {
-        check::positive("pressure", pressure)?;
+        self.check_pressure(pressure)?;
         let r = pressure / self.contact_modulus;
         let sqrt_pi = std::f64::consts::PI.sqrt();
-        let x_s2 = (self.w_min()? * r).powi(2);
+        let w_min = check_stiffness_exponent(self.spectrum, self.contact_modulus, pressure)?;
+        let x_s2 = (w_min * r).powi(2);
         let (q, evals) = self.integral("contact stiffness", f64::MIN_POSITIVE, |q, c, w| {
             let x2 = (w * r) * (w * r) - x_s2;
             if x2 >= UNDERFLOW_ARG {
@@ -286,7 +296,7 @@ impl<'a> Separation<'a> {
         })?;
         let scaled = with_rounding(q);
         // A scaled integral of exactly 0 (every node underflowed) is full
-        // contact: K = +∞ below, like an overflowing K.
+        // contact: ln K = +∞ below, like an overflowing K.
         if scaled.value.is_nan() || scaled.value < 0.0 {
             return Err(Error::NotConverged {
                 what: format!("contact stiffness at p = {pressure:e} (compliance vanishes)"),
@@ -295,7 +305,9 @@ impl<'a> Separation<'a> {
                 tolerance: self.tolerance,
             });
         }
-        // K = p e^{x_s²} / I_scaled
+        // K = p e^{x_s²} / I_scaled, computed from its logarithm: +∞ where
+        // it overflows f64 (an I_scaled of exactly 0, every node underflowed,
+        // is ln K = +∞)
         let k = (pressure.ln() + x_s2 - scaled.value.ln()).exp();
         if !k.is_finite() {
             return Ok(Estimate {
@@ -309,12 +321,14 @@ impl<'a> Separation<'a> {
         })
     }
 
-    /// w(q_s) = (π ∫_{q_l}^{q_s} q³ C dq)^{−1/2}, the smallest w.
-    fn w_min(&self) -> Result<f64> {
-        let m = self
-            .spectrum
-            .moment(3, self.spectrum.q_min(), self.spectrum.q_max())?;
-        Ok(1.0 / (std::f64::consts::PI * m.value).sqrt())
+    /// σ0 finite and positive, and E*/σ0 within the bound of
+    /// [`crate::theory::check_g_finite`]: beyond it (w(q_s)σ0/E*)² underflows
+    /// (it is 1/(4G) at full magnification) and E1 of it is +∞.
+    fn check_pressure(&self, pressure: f64) -> Result<()> {
+        check::positive("nominal_pressure", pressure)?;
+        let q = (self.spectrum.q_min(), self.spectrum.q_max());
+        let slope_variance = std::f64::consts::TAU * self.spectrum.moment(3, q.0, q.1)?.value;
+        crate::theory::check_g_finite(self.contact_modulus, pressure, slope_variance)
     }
 
     /// Elastic energy stored per unit nominal area U/A0, J/m².
@@ -327,7 +341,7 @@ impl<'a> Separation<'a> {
     /// # Errors
     /// As [`Separation::mean_separation`].
     pub fn elastic_energy(&self, pressure: f64) -> Result<Estimate> {
-        check::positive("pressure", pressure)?;
+        self.check_pressure(pressure)?;
         let r = pressure / self.contact_modulus;
         let pre = 0.5 * std::f64::consts::PI * self.contact_modulus;
         let (q, _) = self.integral("elastic energy", f64::MIN_POSITIVE, |q, c, w| {
@@ -376,7 +390,7 @@ impl<'a> Separation<'a> {
     /// As [`Separation::point`], for the first bad pressure.
     pub fn load_curve(&self, pressures: &[f64]) -> Result<Vec<SeparationPoint>> {
         for &p in pressures {
-            check::positive("pressure", p)?;
+            self.check_pressure(p)?;
         }
         pressures.iter().map(|&p| self.point(p)).collect()
     }
@@ -408,6 +422,59 @@ impl<'a> Separation<'a> {
             },
         })
     }
+}
+
+/// Refuse a load whose stiffness exponent x_s² = (w(q_s)σ0/E*)² overflows
+/// f64, naming σ0 or E* ([`crate::theory::ratio_culprit`]): σ0 = 1e300 at
+/// E* = 1e7 (or E* = 1e-300 at 1e7) gave "contact stiffness (integrand not
+/// finite at 21 nodes) did not converge … residual 0 > tolerance 2.2e-308".
+///
+/// # Bound
+/// x_s² ≤ f64::MAX ⇔ σ0/E* ≤ √f64::MAX/w(q_s), w(q_s) = (π ∫_{q_l}^{q_s}
+/// q³C dq)^{−1/2}, tested as the routes evaluate it. Below it K is computed,
+/// and is +∞ where ln K = ln σ0 + x_s² − ln I exceeds ln f64::MAX, far in
+/// full contact (the theory's limit there, persson 0.4's documented value).
+/// Returns w(q_s).
+pub(crate) fn check_stiffness_exponent(
+    spectrum: &dyn Spectrum,
+    contact_modulus: f64,
+    pressure: f64,
+) -> Result<f64> {
+    let m = spectrum.moment(3, spectrum.q_min(), spectrum.q_max())?;
+    let w_min = 1.0 / (std::f64::consts::PI * m.value).sqrt();
+    let x_s2 = (w_min * (pressure / contact_modulus)).powi(2);
+    if x_s2.is_finite() {
+        return Ok(w_min);
+    }
+    let (num, approx) = (crate::error::num, crate::error::approx);
+    let ratio = f64::MAX.sqrt() / w_min;
+    let why = format!(
+        "so that the exponent (w(q_s)σ0/E*)² of the contact stiffness K = σ0 e^{{(w(q_s)σ0/E*)²}}/I \
+         stays finite in f64 (w(q_s) = {}): far beyond full contact",
+        approx(w_min)
+    );
+    Err(
+        match crate::theory::ratio_culprit(contact_modulus, pressure) {
+            "contact_modulus" => Error::invalid(
+                "contact_modulus",
+                contact_modulus,
+                format!(
+                    "at least {} (σ0 = {}) {why}",
+                    approx(pressure / ratio),
+                    num(pressure)
+                ),
+            ),
+            _ => Error::invalid(
+                "nominal_pressure",
+                pressure,
+                format!(
+                    "at most {} (E* = {}) {why}",
+                    approx(ratio * contact_modulus),
+                    num(contact_modulus)
+                ),
+            ),
+        },
+    )
 }
 
 /// A quadrature's value and error plus a few ulps of rounding.

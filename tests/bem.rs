@@ -433,7 +433,7 @@ fn bad_height_maps_name_the_problem() {
         (
             "small.npy",
             npy_bytes("<f8", false, "(4, 4)", &data[..128]),
-            "grid",
+            "this one is 4 × 4",
         ),
     ];
     for (name, bytes, needle) in cases {

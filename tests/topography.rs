@@ -606,7 +606,8 @@ fn spectrum_matches_naive_dft_parseval_and_stencils() {
         }
         let cell = dqx * dqy;
         assert!((stats.rms_slope.powi(2) - s1 * cell).abs() < 1e-10 * s1 * cell);
-        assert!((stats.rms_curvature.powi(2) - s2 * cell).abs() < 1e-10 * s2 * cell);
+        let curvature = stats.rms_curvature.unwrap();
+        assert!((curvature.powi(2) - s2 * cell).abs() < 1e-10 * s2 * cell);
         assert!((psd.rms_slope.powi(2) - q2 * cell).abs() < 1e-10 * q2 * cell);
         assert!((psd.rms_curvature.powi(2) - q4 * cell).abs() < 1e-10 * q4 * cell);
     }
@@ -1116,14 +1117,14 @@ fn surface_topography_rms_heights_slopes_curvatures() {
         );
         assert_rel(
             &format!("{name} rms curvature"),
-            s.rms_curvature,
+            s.rms_curvature.unwrap(),
             laplacian,
             ST_STENCIL,
         );
         // SurfaceTopography's "rms curvature" is the mean curvature ∇²h/2.
         assert_rel(
             &format!("{name} mean curvature"),
-            s.rms_curvature / 2.0,
+            s.rms_curvature.unwrap() / 2.0,
             mean_curvature,
             ST_STENCIL,
         );
@@ -1192,4 +1193,48 @@ fn surface_topography_profile_spectrum() {
             ST_SPECTRUM,
         );
     }
+}
+
+/// Issue 37: a flat surface was refused as "inconsistent heights: not all
+/// equal (every height is …)", which reads as if they were not. The message
+/// says they are, and what is required.
+#[test]
+fn a_flat_surface_is_said_to_be_flat() {
+    let h = vec![-1.4e-6; 8];
+    let e = Topography::line_scans(8, 1, 8e-6, h, false).unwrap_err();
+    assert!(matches!(e, persson::Error::Inconsistent { ref name, .. } if name == "heights"));
+    let msg = e.to_string();
+    assert!(
+        msg.contains("every height is -1.4e-6: a flat surface has no spectrum"),
+        "{msg}"
+    );
+}
+
+/// Issue 37 (the issue's 2 × 2 map, audit 2.1: 2 × 8 and 32 × 2): a
+/// non-periodic map with fewer than 3 points along x or y has no point with
+/// the Laplacian's neighbours; h''_rms and the rms mean curvature were NaN.
+/// They are `None` with a note, the rest of the analysis unchanged.
+#[test]
+fn a_map_too_small_for_a_curvature_says_so() {
+    use persson::topography::Note;
+    for (nx, ny) in [(2, 2), (8, 2), (2, 32)] {
+        let h: Vec<f64> = (0..nx * ny).map(|k| 1e-9 * ((k * 7) % 5) as f64).collect();
+        let t = Topography::map(nx, ny, 1e-5, 1e-5, h, false).unwrap();
+        let a = analyse(&t, &AnalysisOptions::default()).unwrap();
+        assert_eq!((a.rms_curvature, a.mean_curvature_rms), (None, None));
+        assert!(a.rms_height.is_finite() && a.rms_slope.is_finite());
+        assert!(
+            a.notes.iter().any(|n| matches!(n, Note::CurvatureNotComputed { shape, periodic: false } if *shape == [ny, nx])),
+            "{:?}",
+            a.notes
+        );
+        // periodic, every point has its neighbours
+        let t = Topography::map(nx, ny, 1e-5, 1e-5, t.heights().to_vec(), true).unwrap();
+        let a = analyse(&t, &AnalysisOptions::default()).unwrap();
+        assert!(a.rms_curvature.unwrap().is_finite());
+    }
+    // a line scan of 2 points
+    let t = Topography::line_scans(2, 1, 2e-6, vec![0.0, 1e-9], false).unwrap();
+    let s = real_space_stats(&t, Detrend::Mean).unwrap();
+    assert_eq!((s.rms_curvature, s.rms_curvature_profile), (None, None));
 }

@@ -189,7 +189,7 @@ impl<'a> AdhesiveContact<'a> {
     /// A/A0 at σ0 = `nominal_pressure` (Pa, may be ≤ 0) and magnification ζ.
     ///
     /// # Errors
-    /// σ0 not finite; ζ outside [1, ζ_max].
+    /// σ0 not finite or |σ0| > √f64::MAX/4 ≈ 3.4e153; ζ outside [1, ζ_max].
     ///
     /// # Examples
     /// ```
@@ -217,11 +217,19 @@ impl<'a> AdhesiveContact<'a> {
         nominal_pressure: f64,
         zetas: &[f64],
     ) -> Result<Vec<AdhesivePoint>> {
-        if !nominal_pressure.is_finite() {
+        // |σ0| ≤ √f64::MAX/4: with σ_a² ≤ f64::MAX/16 (the bound of
+        // `AdhesionModel::new`) every (σ − b)² of the diffusion is at most
+        // f64::MAX/4
+        let bound = f64::MAX.sqrt() / 4.0;
+        if !(nominal_pressure.is_finite() && nominal_pressure.abs() <= bound) {
             return Err(Error::invalid(
                 "nominal_pressure",
                 nominal_pressure,
-                "finite",
+                format!(
+                    "finite and in [-{0}, {0}] so that the squares of the adhesive stress \
+                     diffusion stay finite in f64",
+                    crate::error::approx(bound)
+                ),
             ));
         }
         let zetas = zetas

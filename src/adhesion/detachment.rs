@@ -110,6 +110,19 @@ impl AdhesionModel<'_> {
         }
         let k = self.detachment_prefactor * self.contact_modulus * q;
         let s = (k * g).sqrt();
+        if s <= self.stress_floor {
+            // σ_a below ε √t_max, the rounding of the diffusion's stress
+            // axis: the wall does not move in f64, and its rate dσ_a/dt ∝
+            // 1/σ_a only blew up the error estimate (Δγ = 1e-300 reported
+            // 1.5e134 on A/A0, 3.33 of the issue-37 audit)
+            return Ok((
+                gamma,
+                Estimate {
+                    value: 0.0,
+                    error: s,
+                },
+            ));
+        }
         // δσ = k δγ/(2σ), and √(k δγ) bounds it where γ ≲ δγ
         let err = (0.5 * k * g_err / s).min((k * g_err).sqrt()) + 2.0 * f64::EPSILON * s;
         Ok((

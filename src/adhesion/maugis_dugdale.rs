@@ -45,7 +45,7 @@
 
 use std::f64::consts::PI;
 
-use crate::error::{check, Result};
+use crate::error::{check, Error, Result};
 
 /// Maugis's sphere at one transition parameter λ.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -83,7 +83,17 @@ impl MaugisDugdale {
     /// system).
     ///
     /// # Errors
-    /// Any argument not finite and > 0 (named).
+    /// Any argument not finite and > 0 (named); a λ, or its intermediate
+    /// 2πΔγE*² and 9R/(2πΔγE*²), outside the normal f64 range (E* = 1e300
+    /// gave λ = 0, then "invalid maugis_parameter = 0"): the argument
+    /// furthest from 1 in order of magnitude among those of the failing
+    /// term is named.
+    ///
+    /// # Bound
+    /// Each of d = 2πΔγE*², 9R/d and λ = σ0 (9R/d)^{1/3} lies in
+    /// [f64::MIN_POSITIVE, f64::MAX], decided on their logarithms
+    /// (ln d = ln 2π + ln Δγ + 2 ln E*, …), so that none is rounded to 0
+    /// or ∞ as it is formed.
     pub fn parameter(
         radius: f64,
         contact_modulus: f64,
@@ -94,6 +104,51 @@ impl MaugisDugdale {
         check::positive("contact_modulus", contact_modulus)?;
         check::positive("work_of_adhesion", work_of_adhesion)?;
         check::positive("cohesive_stress", cohesive_stress)?;
+        let (lr, le, lg, ls) = (
+            radius.ln(),
+            contact_modulus.ln(),
+            work_of_adhesion.ln(),
+            cohesive_stress.ln(),
+        );
+        let ln_d = (2.0 * PI).ln() + lg + 2.0 * le;
+        let ln_ratio = 9f64.ln() + lr - ln_d;
+        let ln_lambda = ls + ln_ratio / 3.0;
+        let range = f64::MIN_POSITIVE.ln()..=f64::MAX.ln();
+        let inputs = [
+            ("radius", radius, lr),
+            ("contact_modulus", contact_modulus, le),
+            ("work_of_adhesion", work_of_adhesion, lg),
+            ("cohesive_stress", cohesive_stress, ls),
+        ];
+        for (term, ln, uses) in [
+            ("2πΔγE*²", ln_d, [false, true, true, false]),
+            ("9R/(2πΔγE*²)", ln_ratio, [true, true, true, false]),
+            ("λ", ln_lambda, [true; 4]),
+        ] {
+            if !range.contains(&ln) {
+                let (name, value, _) = inputs
+                    .iter()
+                    .zip(uses)
+                    .filter(|(_, u)| *u)
+                    .map(|(i, _)| *i)
+                    .fold(("radius", radius, 0.0f64), |a, b| {
+                        if b.2.abs() > a.2.abs() {
+                            b
+                        } else {
+                            a
+                        }
+                    });
+                return Err(Error::invalid(
+                    name,
+                    value,
+                    format!(
+                        "such that {term} of the Maugis parameter λ = σ0 (9R/(2πΔγE*²))^(1/3) \
+                         is a normal f64 (here e^{}, outside [e^-708.4, e^709.8])",
+                        crate::error::approx(ln)
+                    ),
+                ));
+            }
+        }
         Ok(cohesive_stress
             * (9.0 * radius / (2.0 * PI * work_of_adhesion * contact_modulus * contact_modulus))
                 .cbrt())

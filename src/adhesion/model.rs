@@ -32,6 +32,10 @@ pub struct AdhesionModel<'a> {
     pub(crate) work_of_adhesion: f64,
     pub(crate) area_enhancement: AreaEnhancement,
     pub(crate) detachment_prefactor: f64,
+    /// ε √t_max = ε E* ξ/√8: a detachment stress below it is below the
+    /// rounding of the stress axis of the diffusion (whose width at full
+    /// magnification is √t_max) and is taken as 0 (`gamma_sigma`).
+    pub(crate) stress_floor: f64,
 }
 
 impl<'a> AdhesionModel<'a> {
@@ -41,7 +45,10 @@ impl<'a> AdhesionModel<'a> {
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] naming `contact_modulus` (not finite and
-    /// > 0) or `work_of_adhesion` (negative or not finite, e.g. NaN).
+    /// positive, or above √(2 f64::MAX/ξ²)) or `work_of_adhesion` (negative
+    /// or not finite, e.g. NaN, or above f64::MAX/(16 a(ξ²) E* q_s)): the
+    /// bounds under which the diffusion's quantities stay finite (ξ² the
+    /// mean-square slope of the band, a the true-area ratio).
     ///
     /// # Examples
     /// ```
@@ -66,13 +73,73 @@ impl<'a> AdhesionModel<'a> {
                 requirement: format!("0 < q_l < q_s < ∞, got q_l = {q_l:e}, q_s = {q_s:e}"),
             });
         }
-        Ok(AdhesionModel {
+        let mut model = AdhesionModel {
             spectrum,
             contact_modulus,
             work_of_adhesion,
             area_enhancement: AreaEnhancement::Slopes,
             detachment_prefactor: 1.0,
-        })
+            stress_floor: 0.0,
+        };
+        model.check_range()?;
+        let xi2 = std::f64::consts::TAU * spectrum.moment(3, q_l, q_s)?.value;
+        model.stress_floor = f64::EPSILON * contact_modulus * (xi2 / 8.0).sqrt();
+        Ok(model)
+    }
+
+    /// Refuse an E* or a Δγ for which the diffusion's quantities leave f64.
+    ///
+    /// # Bounds
+    /// The moving-boundary solve forms (σ − b)², 4t and their ratio, with
+    /// t ≤ t_max = E*² ξ²/8 (ξ² = 2π ∫_{q_l}^{q_s} q³C dq) and |b| ≤ σ_a,max:
+    /// ```text
+    /// 4 t_max ≤ f64::MAX                    ⇔  E* ≤ √(2 f64::MAX/ξ²)
+    /// σ_a,max² ≤ f64::MAX/16                ⇐  Δγ ≤ f64::MAX/(16 c_a a(ξ²) E* q_s)
+    /// ```
+    /// since γ_eff(ζ) = Δγ a(ξ²_>) − U_> ≤ Δγ a(ξ²) (a increases with its
+    /// argument, U_> ≥ 0) and q ≤ q_s in σ_a² = c_a γ_eff E* q. With
+    /// |σ0| ≤ √f64::MAX/4 ([`AdhesiveContact`](super::AdhesiveContact)) every
+    /// (σ − b)² is then at most f64::MAX/4. The area factor is taken with the
+    /// enhancement (a ≥ 1 = the factor without it), so the bound holds for
+    /// both choices.
+    fn check_range(&self) -> Result<()> {
+        let (q_l, q_s) = (self.spectrum.q_min(), self.spectrum.q_max());
+        let xi2 = std::f64::consts::TAU * self.spectrum.moment(3, q_l, q_s)?.value;
+        let approx = crate::error::approx;
+        // √(2 f64::MAX/ξ²) without overflow of f64::MAX/ξ² for ξ² < 1
+        let e_max = std::f64::consts::SQRT_2 * f64::MAX.sqrt() / xi2.sqrt();
+        if self.contact_modulus > e_max {
+            return Err(Error::invalid(
+                "contact_modulus",
+                self.contact_modulus,
+                format!(
+                    "at most {} so that the diffusion time t = E*²ξ²/8 of the adhesive stress \
+                     distribution stays finite in f64 (ξ² = {})",
+                    approx(e_max),
+                    approx(xi2)
+                ),
+            ));
+        }
+        let a_max = area_ratio(xi2).value;
+        // Δγ · c_a a E* q_s ≤ f64::MAX/16, tested as a product (an overflow
+        // of it is a refusal; a quotient would overflow for a factor < 1)
+        let factor = self.detachment_prefactor * a_max * self.contact_modulus * q_s;
+        let dg_max = f64::MAX / 16.0 / factor;
+        let scaled = self.work_of_adhesion * factor;
+        if scaled.is_nan() || scaled > f64::MAX / 16.0 {
+            return Err(Error::invalid(
+                "work_of_adhesion",
+                self.work_of_adhesion,
+                format!(
+                    "at most {} J/m² (E* = {}, q_s = {}) so that the detachment stress \
+                     σ_a = (c_a γ_eff E* q)^(1/2) and its square stay finite in f64",
+                    approx(dg_max),
+                    crate::error::num(self.contact_modulus),
+                    crate::error::num(q_s)
+                ),
+            ));
+        }
+        Ok(())
     }
 
     /// Choose whether Δγ acts on the true or the projected area.
@@ -84,9 +151,11 @@ impl<'a> AdhesionModel<'a> {
     /// Set c_a in σ_a = [c_a γ_eff E* q]^{1/2} (default 1).
     ///
     /// # Errors
-    /// `detachment_prefactor` not finite and > 0.
+    /// `detachment_prefactor` not finite and > 0; `work_of_adhesion` above
+    /// its bound at this c_a (as [`AdhesionModel::new`]).
     pub fn with_detachment_prefactor(mut self, detachment_prefactor: f64) -> Result<Self> {
         self.detachment_prefactor = check::positive("detachment_prefactor", detachment_prefactor)?;
+        self.check_range()?;
         Ok(self)
     }
 

@@ -168,7 +168,31 @@ pub(crate) fn solve_separation(
 ) -> Result<f64> {
     crate::error::check::positive("nominal_pressure", target)?;
     let lt = target.ln();
-    let g = |d: f64| -> Result<f64> { Ok(ln_sigma(d)? - lt) };
+    // The highest load reached so far, for the error when the theory's
+    // integrals leave f64 deeper in (a load far beyond E* h'_rms: E* = 1e-10
+    // at σ0 = 1e7 gave "BGT u-integral (integrand not finite at 21 nodes) did
+    // not converge … residual 0 > tolerance 1e-300").
+    let reached = std::cell::Cell::new(f64::NEG_INFINITY);
+    let g = |d: f64| -> Result<f64> {
+        match ln_sigma(d) {
+            Ok(v) => {
+                reached.set(reached.get().max(v));
+                Ok(v - lt)
+            }
+            Err(Error::NotConverged { .. }) if d < start => Err(Error::invalid(
+                "nominal_pressure",
+                target,
+                format!(
+                    "at most {} (the largest load reached before the theory's integrals \
+                     leave f64 at a separation of {} rms heights): far beyond E* h'_rms, \
+                     outside the asperity theory",
+                    crate::error::approx(reached.get().exp()),
+                    crate::error::approx(d / scale)
+                ),
+            )),
+            Err(e) => Err(e),
+        }
+    };
     // Bracket: g(lo) ≥ 0 ≥ g(hi).
     let (mut lo, mut hi) = (start, start);
     let mut glo = g(lo)?;

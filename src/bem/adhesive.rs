@@ -184,14 +184,60 @@ pub enum CohesiveLaw {
     },
 }
 
+/// The largest peak attraction σ_c = Δγ/ρ of a [`CohesiveLaw`]: √f64::MAX/
+/// [`super::MAX_GRID`] ≈ 4.1e149 (unit of E*).
+///
+/// # Bound
+/// The solvers' KKT residual sums the squares of the tractions W′(g) ≤ σ_c
+/// over N² ≤ MAX_GRID² nodes: N² σ_c² ≤ f64::MAX on every grid.
+pub const MAX_PEAK_ATTRACTION: f64 = 1.340_780_792_994_259_6e154 / super::MAX_GRID as f64;
+
+/// Δγ ≥ 0 and ρ > 0, finite, with σ_c = Δγ/ρ ≤ [`MAX_PEAK_ATTRACTION`],
+/// naming Δγ or ρ (the one further from 1 in order of magnitude: an
+/// overflowing ratio needs one of them far outside every unit system).
+fn check_law(work_of_adhesion: f64, adhesion_range: f64) -> Result<()> {
+    check::non_negative("work_of_adhesion", work_of_adhesion)?;
+    check::positive("adhesion_range", adhesion_range)?;
+    if work_of_adhesion / adhesion_range <= MAX_PEAK_ATTRACTION {
+        return Ok(());
+    }
+    let approx = crate::error::approx;
+    let why = "so that the peak attraction Δγ/ρ, summed in squares over the grid, stays finite \
+               in f64";
+    Err(
+        if work_of_adhesion.log10().abs() >= adhesion_range.log10().abs() {
+            Error::invalid(
+                "work_of_adhesion",
+                work_of_adhesion,
+                format!(
+                    "at most {} (ρ = {}) {why}",
+                    approx(MAX_PEAK_ATTRACTION * adhesion_range),
+                    crate::error::num(adhesion_range)
+                ),
+            )
+        } else {
+            Error::invalid(
+                "adhesion_range",
+                adhesion_range,
+                format!(
+                    "at least {} (Δγ = {}) {why}",
+                    approx(work_of_adhesion / MAX_PEAK_ATTRACTION),
+                    crate::error::num(work_of_adhesion)
+                ),
+            )
+        },
+    )
+}
+
 impl CohesiveLaw {
     /// The Maugis–Dugdale law.
     ///
     /// # Errors
-    /// `work_of_adhesion` negative or not finite; `adhesion_range` not finite and > 0.
+    /// `work_of_adhesion` negative or not finite; `adhesion_range` not finite
+    /// and > 0; Δγ/ρ above [`MAX_PEAK_ATTRACTION`] (naming the one of the
+    /// two further from 1 in order of magnitude).
     pub fn maugis(work_of_adhesion: f64, adhesion_range: f64) -> Result<Self> {
-        check::non_negative("work_of_adhesion", work_of_adhesion)?;
-        check::positive("adhesion_range", adhesion_range)?;
+        check_law(work_of_adhesion, adhesion_range)?;
         Ok(CohesiveLaw::Maugis {
             work_of_adhesion,
             adhesion_range,
@@ -203,8 +249,7 @@ impl CohesiveLaw {
     /// # Errors
     /// As [`CohesiveLaw::maugis`].
     pub fn exponential(work_of_adhesion: f64, adhesion_range: f64) -> Result<Self> {
-        check::non_negative("work_of_adhesion", work_of_adhesion)?;
-        check::positive("adhesion_range", adhesion_range)?;
+        check_law(work_of_adhesion, adhesion_range)?;
         Ok(CohesiveLaw::Exponential {
             work_of_adhesion,
             adhesion_range,
@@ -660,7 +705,10 @@ impl AdhesiveSolver {
     /// when there is one. Periodic only.
     ///
     /// # Errors
-    /// Heights of the wrong length or not finite; `mean_gap` not finite and > 0;
+    /// Heights of the wrong length or not finite; `mean_gap` not finite and
+    /// positive, or so large that the gap field's rounding exceeds the
+    /// adhesion range (ḡ ≤ ρ/(ε N²)) or its elastic pressures overflow
+    /// (ḡ ≤ (√f64::MAX/(E*|q|_max N) − (max h − min h))/N², |q|_max = √2πN/L);
     /// a tolerance out of range; a free-boundary operator (use
     /// [`AdhesiveSolver::solve_approach`]); [`Error::NotConverged`] when every
     /// node closes.
@@ -691,7 +739,8 @@ impl AdhesiveSolver {
     ///
     /// # Errors
     /// As [`AdhesiveSolver::solve`]; `approach` not finite, or (periodic)
-    /// not below max h − mean h (ḡ must be > 0).
+    /// not below max h − mean h (ḡ must be > 0), or (free) |δ| above ρ/ε or
+    /// the bound on the elastic pressures (as for ḡ).
     pub fn solve_approach(
         &mut self,
         heights: &[f64],
@@ -780,6 +829,7 @@ impl AdhesiveSolver {
             return Err(crate::Error::invalid("max_iterations", 0.0, ">= 1"));
         }
         self.check_heights(heights)?;
+        self.check_reach(heights, law, target)?;
         let (h_max, h_mean) = height_stats(heights);
         self.start(heights, target, h_max);
         if self.detach(heights, law, target, h_mean) {
@@ -1332,6 +1382,72 @@ impl AdhesiveSolver {
             (mean, eps) = self.gradient(heights, law)?;
         }
         Ok((-mean, iterations, eps.min(residual), eps <= opts.tolerance))
+    }
+
+    /// Refuse a mean gap (or an approach) so large that the gap field no
+    /// longer resolves the cohesive law, or its elastic pressures overflow
+    /// (ε was NaN at ḡ = 1e300, and a finite noise of ±6e145 at 9e133).
+    ///
+    /// # Bounds
+    /// The gap field is ≥ 0 with mean ḡ, so a gap is at most N²ḡ and carries
+    /// a rounding of up to ε N²ḡ (ε = f64::EPSILON; approach control: ε|δ|).
+    /// The law varies on the scale ρ: its tractions are resolved only while
+    ///
+    /// ```text
+    /// ε N² ḡ ≤ ρ   ⇔   ḡ ≤ ρ/(ε N²)          (approach: |δ| ≤ ρ/ε)
+    /// ```
+    ///
+    /// Beyond it the iteration stops at the round-off of 𝒦(g + h), which the
+    /// noise of the gap sets, and reports that noise as the mean pressure.
+    /// Independently the displacement |g + h − o| is at most
+    /// U = N²ḡ + (max h − min h) (approach: |δ| + 2(max h − min h)) and the
+    /// operator's largest symbol E*|q|_max/2, |q|_max = √2 πN/L, so
+    /// Σ(𝒦u)² ≤ (E*|q|_max/2)² N² U² stays below f64::MAX/4 while
+    /// (E*|q|_max/2) N U ≤ √f64::MAX/2; the smaller bound is stated.
+    fn check_reach(&self, heights: &[f64], law: &CohesiveLaw, target: Target) -> Result<()> {
+        let op = &self.ops.op;
+        let n = self.layout.n as f64;
+        let rho = law.parameters().1;
+        let q_max = std::f64::consts::SQRT_2 * std::f64::consts::PI * n / op.size();
+        let (lo, hi) = heights
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &h| {
+                (a.min(h), b.max(h))
+            });
+        let range = hi - lo;
+        let reach = f64::MAX.sqrt() / (op.e_star() * q_max * n);
+        let approx = crate::error::approx;
+        let why = format!(
+            "(ρ = {}, N = {}, E* = {}, L = {}) so that the gap field resolves the cohesive law \
+             (its rounding ε N²ḡ below ρ) and its elastic pressures stay finite in f64",
+            crate::error::num(rho),
+            self.layout.n,
+            crate::error::num(op.e_star()),
+            crate::error::num(op.size()),
+        );
+        match target {
+            Target::MeanGap(mean_gap) => {
+                let bound = (rho / (f64::EPSILON * n * n)).min((reach - range) / (n * n));
+                if mean_gap.is_nan() || mean_gap > bound {
+                    return Err(Error::invalid(
+                        "mean_gap",
+                        mean_gap,
+                        format!("at most {} {why}", approx(bound.max(0.0))),
+                    ));
+                }
+            }
+            Target::Approach(approach) => {
+                let bound = (rho / f64::EPSILON).min(reach - 2.0 * range);
+                if approach.is_nan() || approach.abs() > bound {
+                    return Err(Error::invalid(
+                        "approach",
+                        approach,
+                        format!("at most {} in size {why}", approx(bound.max(0.0))),
+                    ));
+                }
+            }
+        }
+        Ok(())
     }
 
     fn check_heights(&self, heights: &[f64]) -> Result<()> {

@@ -184,12 +184,86 @@ impl HertzCase {
             .collect()
     }
 
-    fn check(&self) -> Result<()> {
+    /// Check the case: positive inputs, a < L/2, a grid of 8 to 32768 and
+    /// scales that f64 carries (below).
+    ///
+    /// # Bound
+    /// With ρ = a/L, the solve's scales are monomials of L, ρ, R and E*:
+    /// ```text
+    /// p₀ = (2/π) E* ρ L/R,   F/L² = (4/3) E* ρ³ L/R,   L²/R (heights),   ρ² L²/R (the contact's)
+    /// ```
+    /// Each must lie in [f64::MIN_POSITIVE/ε, ε f64::MAX] ≈ [1e-292, 4e292]:
+    /// then it and its rounding are normal f64, and the solver's sums of up
+    /// to 1/ε ≥ N² of them stay finite. Decided on logarithms; the input
+    /// furthest from 1 in order of magnitude among the failing monomial's
+    /// is named (ρ standing for `contact_radius`, so that a size with the
+    /// default a = 0.1 L names `size`). L = 1e300 gave "height[0, 0] =
+    /// −inf", 1e-300 "pressure = NaN", a = 1e-300 "pressure = 0".
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] naming `size`, `radius`,
+    /// `contact_modulus`, `contact_radius` or `grid`.
+    pub fn check(&self) -> Result<()> {
         check::positive("size", self.size)?;
         check::positive("radius", self.radius)?;
         check::positive("contact_modulus", self.e_star)?;
         check::open("contact_radius", self.contact_radius, 0.0, 0.5 * self.size)?;
-        super::check_grid(self.grid)
+        super::check_grid(self.grid)?;
+        let (l, rho, r, e) = (
+            self.size,
+            self.contact_radius / self.size,
+            self.radius,
+            self.e_star,
+        );
+        let ln = [l.ln(), rho.ln(), r.ln(), e.ln()];
+        // (what, ln of the constant, exponents of L, ρ, R, E*)
+        let scales: [(&str, f64, [f64; 4]); 4] = [
+            (
+                "the peak pressure p₀ = 2E*a/(πR)",
+                std::f64::consts::FRAC_2_PI.ln(),
+                [1.0, 1.0, -1.0, 1.0],
+            ),
+            (
+                "the mean pressure F/L² = 4E*a³/(3RL²)",
+                (4.0f64 / 3.0).ln(),
+                [1.0, 3.0, -1.0, 1.0],
+            ),
+            ("the height scale L²/R", 0.0, [2.0, 0.0, -1.0, 0.0]),
+            (
+                "the contact's height scale a²/R",
+                0.0,
+                [2.0, 2.0, -1.0, 0.0],
+            ),
+        ];
+        let (lo, hi) = (
+            (f64::MIN_POSITIVE / f64::EPSILON).ln(),
+            (f64::EPSILON * f64::MAX).ln(),
+        );
+        let names = ["size", "contact_radius", "radius", "contact_modulus"];
+        let values = [l, self.contact_radius, r, e];
+        for (what, c, exp) in scales {
+            let v: f64 = c + (0..4).map(|j| exp[j] * ln[j]).sum::<f64>();
+            if !(lo..=hi).contains(&v) {
+                let j = (0..4)
+                    .filter(|&j| exp[j] != 0.0)
+                    .max_by(|&a, &b| ln[a].abs().total_cmp(&ln[b].abs()))
+                    .unwrap_or(0);
+                return Err(Error::invalid(
+                    names[j],
+                    values[j],
+                    format!(
+                        "such that {what} is within [1e-292, 4e292] (here e^{}), where f64 \
+                         carries it and its rounding (L = {}, R = {}, E* = {}, a = {})",
+                        crate::error::approx(v),
+                        crate::error::num(l),
+                        crate::error::num(r),
+                        crate::error::num(e),
+                        crate::error::num(self.contact_radius)
+                    ),
+                ));
+            }
+        }
+        Ok(())
     }
 }
 
@@ -331,10 +405,20 @@ fn fit(radii: &[f64], p: &[f64]) -> Result<(f64, f64)> {
     let c1 = (n * sxy - sx * sy) / det;
     let c0 = (sy - c1 * sx) / n;
     if !(n >= 3.0 && det > 0.0 && c0 > 0.0 && c1 < 0.0) {
+        let why = if n < 3.0 {
+            format!("only {n} nodes are in contact")
+        } else {
+            format!(
+                "the {n} contact nodes give p² = c₀ + c₁r² with c₀ = {}, c₁ = {} (the \
+                 contact covers the grid or its pressures are not resolved)",
+                crate::error::num(c0),
+                crate::error::num(c1)
+            )
+        };
         return Err(Error::Inconsistent {
             name: "Hertz fit".into(),
             requirement: format!(
-                "at least 3 contact nodes with a decreasing p²(r²), got {n} nodes"
+                "at least 3 contact nodes whose p² falls with r² (c₀ > 0 > c₁); {why}"
             ),
         });
     }
@@ -531,5 +615,19 @@ mod tests {
         let case = HertzCase::new(64, Boundary::Free);
         let (a, p0) = fit(&case.radii(), &case.exact_pressure()).unwrap();
         assert!((a - 0.1).abs() < 1e-12 && (p0 - case.peak_pressure()).abs() < 1e-12);
+    }
+
+    /// Issue 37, 3.24: a fit over many contact nodes whose p² does not fall
+    /// with r² said "at least 3 contact nodes …, got 1024 nodes".
+    #[test]
+    fn a_failed_fit_says_why() {
+        let radii = [0.0, 0.1, 0.2, 0.3, 0.4];
+        let e = fit(&radii, &[1.0; 5]).unwrap_err().to_string();
+        assert!(e.contains("the 5 contact nodes give p²"), "{e}");
+        assert!(!e.contains("got"), "{e}");
+        let e = fit(&radii, &[1.0, 0.5, 0.0, 0.0, 0.0])
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("only 2 nodes are in contact"), "{e}");
     }
 }

@@ -111,7 +111,10 @@ pub fn check_grid(n: usize) -> Result<()> {
         Err(Error::invalid(
             "grid",
             n as f64,
-            format!("between {MIN_GRID} and {MAX_GRID}"),
+            format!(
+                "between {MIN_GRID} and {MAX_GRID} points a side (of the BEM's N × N grid, \
+                 or of a square height map solved on it: {n} × {n} here)"
+            ),
         ))
     }
 }

@@ -112,6 +112,9 @@ pub struct Problem<'a> {
     h_max: f64,
     h_mean: f64,
     sigma_h: f64,
+    /// rms of the heights' forward differences over L/N (both directions,
+    /// wrapping around): the slope that sets the pressure scale E* h'_rms.
+    slope_rms: f64,
 }
 
 impl<'a> Problem<'a> {
@@ -142,6 +145,18 @@ impl<'a> Problem<'a> {
         let h_mean = heights.iter().sum::<f64>() / n2 as f64;
         let sigma_h =
             (heights.iter().map(|h| (h - h_mean).powi(2)).sum::<f64>() / (n2 as f64 - 1.0)).sqrt();
+        let dx = op.size() / n as f64;
+        let mut s2 = 0.0;
+        for j in 0..n {
+            for i in 0..n {
+                let h = heights[j * n + i];
+                let (gx, gy) = (
+                    (heights[j * n + (i + 1) % n] - h) / dx,
+                    (heights[((j + 1) % n) * n + i] - h) / dx,
+                );
+                s2 += gx * gx + gy * gy;
+            }
+        }
         let problem = Problem {
             heights,
             n,
@@ -152,6 +167,7 @@ impl<'a> Problem<'a> {
             h_max,
             h_mean,
             sigma_h,
+            slope_rms: (s2 / n2 as f64).sqrt(),
         };
         problem.with_control(control)
     }
@@ -181,6 +197,64 @@ impl<'a> Problem<'a> {
             }
         }
         Ok(Problem { control, ..*self })
+    }
+
+    /// Refuse a mean pressure whose rounding alone exceeds the tolerance:
+    /// the solver then iterates to its cap ("did not converge: 10000
+    /// iterations, residual 2.67" at p̄ = 1e300, E* = 1e9).
+    ///
+    /// # Bound
+    /// The relative residual ε_r compares the pressure's deviations, of
+    /// order E* h'_rms (the pressure that flattens slopes h'_rms), with p̄
+    /// itself; p̄ carries a rounding ε p̄, so the residual cannot fall below
+    /// about ε p̄/(E* h'_rms) (measured on a self-affine surface at 32²:
+    /// 3e-12 at p̄ = 1e12, 5e-10 at 1e14 with E* h'_rms = 1e8). It reaches
+    /// `tolerance` τ only while, with a factor 8 of room,
+    /// ```text
+    /// p̄ ≤ τ E* h'_rms/(8ε)
+    /// ```
+    /// A flat surface (h'_rms = 0) is uniform pressure and is not refused.
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] naming `nominal_pressure`, or
+    /// `contact_modulus` when E* is beyond 1e±30.
+    pub(crate) fn check_round_off(&self, tolerance: f64) -> Result<()> {
+        let Control::MeanPressure(pm) = self.control else {
+            return Ok(());
+        };
+        let scale = self.e_star * self.slope_rms;
+        let bound = tolerance * scale / (8.0 * f64::EPSILON);
+        if self.slope_rms == 0.0 || pm <= bound {
+            return Ok(());
+        }
+        let approx = crate::error::approx;
+        let why = format!(
+            "so that its rounding ε p̄ stays below the tolerance {} of the pressure scale \
+             E* h'_rms = {} (h'_rms = {} on the grid): far above full contact",
+            crate::error::num(tolerance),
+            approx(scale),
+            approx(self.slope_rms)
+        );
+        Err(match crate::theory::ratio_culprit(self.e_star, pm) {
+            "contact_modulus" => Error::invalid(
+                "contact_modulus",
+                self.e_star,
+                format!(
+                    "at least {} (p̄ = {}) {why}",
+                    approx(pm * 8.0 * f64::EPSILON / (tolerance * self.slope_rms)),
+                    crate::error::num(pm)
+                ),
+            ),
+            _ => Error::invalid(
+                "nominal_pressure",
+                pm,
+                format!(
+                    "at most {} (E* = {}) {why}",
+                    approx(bound),
+                    crate::error::num(self.e_star)
+                ),
+            ),
+        })
     }
 
     /// The rigid heights `h` (unit of L).

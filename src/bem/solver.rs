@@ -105,7 +105,9 @@ impl Solver {
     /// # Errors
     /// Heights of the wrong length or not finite, a target ≤ 0 (or a
     /// penetration beyond what a periodic system can carry), an invalid
-    /// tolerance or yield stress; [`Error::NotConverged`] after `max_iter`
+    /// tolerance or yield stress; a mean pressure so far above full contact
+    /// that its rounding exceeds the tolerance (p̄ > τ E* h'_rms/(8ε),
+    /// naming `nominal_pressure`); [`Error::NotConverged`] after `max_iter`
     /// iterations.
     ///
     /// [`Error::NotConverged`]: crate::Error::NotConverged
@@ -126,6 +128,7 @@ impl Solver {
     ) -> Result<Solution> {
         check_options(opts, control)?;
         let problem = Problem::new(heights, self.ws.operator(), control)?;
+        problem.check_round_off(opts.tolerance)?;
         self.run(&problem, opts, observer)
     }
 
@@ -229,6 +232,7 @@ impl LoadPath<'_, '_> {
                 Problem::new(self.heights, self.solver.ws.operator(), control)?
             }
         };
+        problem.check_round_off(opts.tolerance)?;
         let warm = Options {
             warm_start: self.warm,
             ..*opts

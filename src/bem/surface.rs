@@ -66,10 +66,24 @@ impl GridSurface {
     /// A surface from heights, checked: square, `N ≥ 8`, finite.
     ///
     /// # Errors
-    /// Wrong length, grid below 8, non-finite height or size.
+    /// Wrong length, non-finite height or size; [`Error::Inconsistent`]
+    /// naming `heights` for a map of fewer than 8 × 8 points (or more than
+    /// 32768 × 32768), saying how many it has: the map is the user's input
+    /// here, not a grid option (3.21 of the issue-37 audit: "grid = 3" for a
+    /// 3 × 3 map).
     pub fn new(n: usize, size: f64, heights: Vec<f64>) -> Result<Self> {
         check::positive("size", size)?;
-        super::check_grid(n)?;
+        if !(super::MIN_GRID..=super::MAX_GRID).contains(&n) {
+            return Err(Error::Inconsistent {
+                name: "heights".into(),
+                requirement: format!(
+                    "a square map of {0} × {0} to {1} × {1} points for the BEM; this one is \
+                     {n} × {n}",
+                    super::MIN_GRID,
+                    super::MAX_GRID
+                ),
+            });
+        }
         if heights.len() != n * n {
             return Err(Error::Inconsistent {
                 name: "heights".into(),
@@ -381,8 +395,14 @@ pub fn height_map_from_bytes(path: &Path, bytes: &[u8], size: f64) -> Result<Gri
             path,
             0,
             0,
-            format!("{name} = {value:e}: must be {requirement}"),
+            format!(
+                "{name} = {}: must be {requirement}",
+                crate::error::num(value)
+            ),
         ),
+        Error::Inconsistent { name, requirement } => {
+            Error::parse(path, 0, 0, format!("{name}: {requirement}"))
+        }
         other => other,
     })
 }

@@ -160,6 +160,40 @@ pub fn heat_kernel(q: f64, velocity: f64, diffusivity: f64) -> f64 {
     tau * heat_kernel_ratio((diffusivity * tau).sqrt() * q)
 }
 
+/// ρc (J/(m³ K)) below which the flash march carries the kernel as
+/// h(q)/(ρc) ([`heat_kernel_per_capacity`]): 1. No condensed matter, nor a
+/// gas at 1 bar (air: 1.2e3), comes within 10³ of it, so physical inputs keep
+/// the product of [`heat_kernel`] and 4v/((1 − ν²)ρc) as it always was; below
+/// it that prefactor grows towards f64::MAX (ρ = 1e-300 kg/m³: 3.6e295) and
+/// its product with the integrand overflowed before the tiny h(q) came in.
+pub(crate) const MIN_HEAT_CAPACITY: f64 = 1.0;
+
+/// h(q)/(ρc) in s m³ K/J, without forming 1/(ρc): the temperature rise per
+/// unit heating rate Q̇0 itself.
+///
+/// # Formula
+/// ```text
+/// h/(ρc) = τ R(x)/(ρc)                           x < 0.1 (series)
+///        = S(x)/(3 κ q²),  S = 3x² R(x)           x ≥ 0.1
+/// ```
+/// since 3x² ρc = 3π κ q/v and τ = π/(qv). S(x) = 2 erf(x) − 1 + e^{−x²} erfcx(2x)
+/// lies in (0, 1] and tends to 1 as ρc → 0 (x → ∞): the steady-conduction
+/// limit 1/(3κq²), which does not depend on ρc.
+pub(crate) fn heat_kernel_per_capacity(q: f64, velocity: f64, thermal: &Thermal) -> f64 {
+    let tau = std::f64::consts::PI / (q * velocity);
+    let x = (thermal.thermal_diffusivity() * tau).sqrt() * q;
+    if x < SERIES_MAX_X {
+        tau * heat_kernel_ratio(x) / thermal.volumetric_heat_capacity()
+    } else {
+        let s = if x.is_finite() {
+            2.0 * erf(x) - 1.0 + (-x * x).exp() * erfcx(2.0 * x)
+        } else {
+            1.0
+        };
+        s / (3.0 * thermal.thermal_conductivity * q * q)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -9,7 +9,7 @@
 //! the tolerance; otherwise it is bisected.
 
 use super::chebyshev::{rule, Map, NODES};
-use super::heat::{heat_kernel, Thermal};
+use super::heat::{heat_kernel, heat_kernel_per_capacity, Thermal, MIN_HEAT_CAPACITY};
 use super::shift::ShiftFactors;
 use super::theory::{
     DecadeContribution, Friction, FrictionResult, MagnificationPoint, TableExcursion, DECADE,
@@ -106,7 +106,8 @@ pub(crate) struct Run<'r, 'a> {
     pub thermal: Option<&'r Thermal>,
     /// 1/((1 − ν²) σ0), 1/Pa.
     pub k_e: f64,
-    /// 4 v/((1 − ν²) ρ c): dT/dx = S · heat_k · q⁵ C b_T A h.
+    /// 4 v/((1 − ν²) ρ c): dT/dx = S · heat_k · q⁵ C b_T A h (below ρc =
+    /// [`MIN_HEAT_CAPACITY`]: 4v/(1 − ν²), with h/(ρc) from `kernel`).
     pub heat_k: f64,
     pub x_lo: f64,
     length: f64,
@@ -129,7 +130,12 @@ impl<'r, 'a> Run<'r, 'a> {
             thermal,
             k_e: 1.0 / (one_minus * c.nominal_pressure),
             heat_k: thermal.map_or(0.0, |t| {
-                4.0 * c.velocity / (one_minus * t.volumetric_heat_capacity())
+                if t.volumetric_heat_capacity() < MIN_HEAT_CAPACITY {
+                    // `kernel` returns h/(ρc): 1/(ρc) is not formed
+                    4.0 * c.velocity / one_minus
+                } else {
+                    4.0 * c.velocity / (one_minus * t.volumetric_heat_capacity())
+                }
             }),
             x_lo,
             length: fr.q1.ln() - x_lo,
@@ -171,10 +177,16 @@ impl<'r, 'a> Run<'r, 'a> {
         }
     }
 
-    /// The heat kernel at q (0 without thermal properties).
+    /// The heat kernel at q (0 without thermal properties): h(q), or
+    /// h(q)/(ρc) below ρc = [`MIN_HEAT_CAPACITY`] (then `heat_k` has no
+    /// 1/(ρc)), so that heat_k · h is the same product without overflow.
     pub fn kernel(&self, q: f64) -> f64 {
         self.thermal.map_or(0.0, |t| {
-            heat_kernel(q, self.c.velocity, t.thermal_diffusivity())
+            if t.volumetric_heat_capacity() < MIN_HEAT_CAPACITY {
+                heat_kernel_per_capacity(q, self.c.velocity, t)
+            } else {
+                heat_kernel(q, self.c.velocity, t.thermal_diffusivity())
+            }
         })
     }
 

@@ -32,7 +32,7 @@ use std::f64::consts::TAU;
 use std::path::Path;
 
 use super::columns::{cell_error, parse_rows, Row};
-use super::viscoelastic::{AngularIntegrals, Modulus};
+use super::viscoelastic::{modulus_requirement, AngularIntegrals, Modulus, MAX_MODULUS};
 use crate::error::{Error, Result};
 
 /// The boundary between the two series of the segment integral.
@@ -77,7 +77,8 @@ impl MasterCurve {
     /// # Errors
     /// [`Error::InvalidParameter`] naming `frequency[i]`, `storage_modulus[i]`
     /// or `loss_modulus[i]` (0-based) for a value not finite and > 0, a
-    /// repeated or non-monotone frequency; fewer than 3 points.
+    /// modulus above [`MAX_MODULUS`], a repeated or
+    /// non-monotone frequency; fewer than 3 points.
     pub fn new(points: &[(f64, f64, f64)]) -> Result<Self> {
         if points.len() < MIN_POINTS {
             return Err(Error::invalid(
@@ -93,10 +94,21 @@ impl MasterCurve {
                 Err(Error::invalid(format!("{name}[{i}]"), v, "finite and > 0"))
             }
         };
+        let modulus = |name: &str, i: usize, v: f64| {
+            if v.is_finite() && v > 0.0 && v <= MAX_MODULUS {
+                Ok(())
+            } else {
+                Err(Error::invalid(
+                    format!("{name}[{i}]"),
+                    v,
+                    modulus_requirement(),
+                ))
+            }
+        };
         for (i, &(w, e1, e2)) in points.iter().enumerate() {
             positive("frequency", i, w)?;
-            positive("storage_modulus", i, e1)?;
-            positive("loss_modulus", i, e2)?;
+            modulus("storage_modulus", i, e1)?;
+            modulus("loss_modulus", i, e2)?;
         }
         let ascending = points[1].0 > points[0].0;
         for i in 1..points.len() {
@@ -148,7 +160,8 @@ impl MasterCurve {
     /// # Errors
     /// [`Error::Io`]; [`Error::Parse`] with the file's line for a cell that is
     /// not a number, a row without three columns, a frequency or modulus not
-    /// finite and > 0, a repeated or non-monotone frequency; fewer than 3 rows.
+    /// finite and > 0, a modulus above [`MAX_MODULUS`], a
+    /// repeated or non-monotone frequency; fewer than 3 rows.
     pub fn from_file(path: &Path, unit: FrequencyUnit) -> Result<Self> {
         Self::from_bytes(path, &crate::io::read(path)?, unit)
     }
@@ -278,6 +291,9 @@ fn check_rows(path: &Path, rows: &[Row], freq: &str) -> Result<()> {
             let v = row.values[j];
             if !(v.is_finite() && v > 0.0) {
                 return Err(cell_error(path, row, name, v, "finite and > 0"));
+            }
+            if j > 0 && v > MAX_MODULUS {
+                return Err(cell_error(path, row, name, v, &modulus_requirement()));
             }
         }
     }

@@ -145,10 +145,12 @@ pub mod viscoelastic;
 pub use heat::{heat_kernel, heat_kernel_ratio, Thermal};
 pub use master_curve::{FrequencyUnit, MasterCurve};
 pub use rubber::{Rubber, DEFAULT_POISSON};
-pub use shift::{HorizontalShift, ShiftFactors, ShiftTable, TemperatureShift, VerticalShift};
+pub use shift::{
+    HorizontalShift, ShiftFactors, ShiftTable, TemperatureShift, VerticalShift, MAX_WLF_C1,
+};
 pub use theory::{
     log_velocities, CutOff, DecadeContribution, Friction, FrictionOptions, FrictionPoint,
     FrictionResult, MagnificationPoint, TableExcursion, DEFAULT_GAMMA, DEFAULT_POINTS_PER_DECADE,
     DEFAULT_TOLERANCE,
 };
-pub use viscoelastic::{AngularIntegrals, Modulus, Prony, PronyTerm, Viscoelastic};
+pub use viscoelastic::{AngularIntegrals, Modulus, Prony, PronyTerm, Viscoelastic, MAX_MODULUS};

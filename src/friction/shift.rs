@@ -234,6 +234,15 @@ pub struct TemperatureShift {
     vertical: VerticalShift,
 }
 
+/// The largest WLF constant C1: −log10(f64::MIN_POSITIVE) ≈ 307.65.
+///
+/// # Bound
+/// Above T_ref the shift log10 a_T = −C1 ΔT/(C2 + ΔT) falls towards −C1;
+/// a_T stays a positive (normal) f64 at every T > T_ref, which the flash
+/// temperature reaches from any background temperature, iff 10^(−C1) ≥
+/// f64::MIN_POSITIVE.
+pub const MAX_WLF_C1: f64 = 307.652_655_568_588_8;
+
 impl TemperatureShift {
     /// No shift: E does not depend on T (T_ref only labels the curve).
     ///
@@ -251,7 +260,7 @@ impl TemperatureShift {
     ///
     /// # Errors
     /// Any of them not finite and > 0, naming `reference_temperature`,
-    /// `wlf_c1` or `wlf_c2`.
+    /// `wlf_c1` or `wlf_c2`; C1 above [`MAX_WLF_C1`] (`wlf_c1`).
     ///
     /// # Examples
     /// ```
@@ -263,8 +272,21 @@ impl TemperatureShift {
     /// ```
     pub fn wlf(reference_temperature: f64, c1: f64, c2: f64) -> Result<Self> {
         let mut s = Self::none(reference_temperature)?;
+        check::positive("wlf_c1", c1)?;
+        if c1 > MAX_WLF_C1 {
+            return Err(Error::invalid(
+                "wlf_c1",
+                c1,
+                format!(
+                    "at most −log10(f64::MIN_POSITIVE) = {} so that a_T ≥ 10^(−C1) stays a \
+                     positive f64 at every temperature above T_ref (the flash temperature \
+                     heats; measured C1 are 5–40)",
+                    crate::error::approx(MAX_WLF_C1)
+                ),
+            ));
+        }
         s.horizontal = HorizontalShift::Wlf {
-            c1: check::positive("wlf_c1", c1)?,
+            c1,
             c2: check::positive("wlf_c2", c2)?,
         };
         Ok(s)
@@ -325,12 +347,13 @@ impl TemperatureShift {
         self.vertical
     }
 
-    /// The lowest temperature the shift accepts (K): T_ref − C2 for WLF
-    /// (excluded), the table's first row, 0 otherwise.
+    /// The lowest temperature the shift accepts (K): for WLF the T_min of
+    /// WLF range (`wlf_range`, above the singularity T_ref − C2), the table's
+    /// first row, 0 otherwise.
     pub fn lowest_temperature(&self) -> f64 {
         match &self.horizontal {
             HorizontalShift::None => 0.0,
-            HorizontalShift::Wlf { c2, .. } => self.reference_temperature - c2,
+            HorizontalShift::Wlf { c1, c2 } => wlf_range(self.reference_temperature, *c1, *c2).0,
             HorizontalShift::Table(t) => t.temperature_range().0,
         }
     }
@@ -339,7 +362,9 @@ impl TemperatureShift {
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] naming `temperature`: not finite and > 0;
-    /// at or below the WLF singularity T_ref − C2; outside the shift table.
+    /// for WLF outside the range where a_T is a finite, positive f64 (it
+    /// starts above the singularity T_ref − C2: [`Self::lowest_temperature`]);
+    /// outside the shift table.
     pub fn factors(&self, temperature: f64) -> Result<ShiftFactors> {
         check::positive("temperature", temperature)?;
         if let HorizontalShift::Table(t) = &self.horizontal {
@@ -363,12 +388,40 @@ impl TemperatureShift {
             HorizontalShift::None => (0.0, None),
             HorizontalShift::Wlf { c1, c2 } => {
                 if dt + c2 <= 0.0 || dt.is_nan() {
+                    // at or below the singularity: the message of persson 0.4
                     return Err(Error::invalid(
                         "temperature",
                         temperature,
                         format!(
                             "> T_ref − C2 = {} K (the WLF singularity)",
                             ((self.reference_temperature - c2) * 1e6).round() / 1e6
+                        ),
+                    ));
+                }
+                // above it, a_T still overflows up to T_min, and underflows
+                // beyond T_max for a large C1: that range is stated (at
+                // 193.15 K, above 191.55 K, the shift was refused as
+                // "a_T = inf", 3.10 of the issue-37 audit)
+                let (lo, hi) = wlf_range(self.reference_temperature, *c1, *c2);
+                if !(temperature >= lo && temperature <= hi) {
+                    let round = |t: f64| (t * 1e6).round() / 1e6;
+                    return Err(Error::invalid(
+                        "temperature",
+                        temperature,
+                        format!(
+                            "in [{}, {} K, where the WLF shift a_T = 10^(−C1 (T − T_ref)/(C2 + \
+                             T − T_ref)) (C1 = {}, C2 = {} K, T_ref = {} K) is a finite, \
+                             positive f64; it is singular at T_ref − C2 = {} K",
+                            round(lo),
+                            if hi.is_finite() {
+                                format!("{}]", round(hi))
+                            } else {
+                                "∞)".into()
+                            },
+                            crate::error::num(*c1),
+                            crate::error::num(*c2),
+                            crate::error::num(self.reference_temperature),
+                            round(self.reference_temperature - c2)
                         ),
                     ));
                 }
@@ -399,6 +452,29 @@ impl TemperatureShift {
     pub(crate) fn beyond_table(&self, temperature: f64) -> bool {
         matches!(&self.horizontal, HorizontalShift::Table(t) if temperature > t.temperature_range().1)
     }
+}
+
+/// The temperatures [T_min, T_max] (K) at which the WLF shift
+/// a_T = e^{ln a}, ln a = −ln 10 · C1 ΔT/(C2 + ΔT), ΔT = T − T_ref, is a
+/// finite, positive (normal) f64.
+///
+/// # Bound
+/// Below T_ref, ln a grows without bound as ΔT → −C2; ln a ≤ L = ln f64::MAX
+/// solves to ΔT ≥ −L C2/(ln 10 C1 + L). Above T_ref, ln a falls towards
+/// −ln 10 C1; ln a ≥ ℓ = ln f64::MIN_POSITIVE (< 0) holds for every ΔT when
+/// ln 10 C1 + ℓ ≤ 0 (C1 ≤ 307.6) and else for ΔT ≤ −ℓ C2/(ln 10 C1 + ℓ).
+/// Each end is pulled inwards by 1e-12 relative so that the computed a_T,
+/// rounded, stays inside f64.
+pub(crate) fn wlf_range(reference_temperature: f64, c1: f64, c2: f64) -> (f64, f64) {
+    let (l_hi, l_lo) = (f64::MAX.ln(), f64::MIN_POSITIVE.ln());
+    let k = LN_10 * c1;
+    let below = l_hi * c2 / (k + l_hi) * (1.0 - 1e-12);
+    let above = if k + l_lo <= 0.0 {
+        f64::INFINITY
+    } else {
+        -l_lo * c2 / (k + l_lo) * (1.0 - 1e-12)
+    };
+    (reference_temperature - below, reference_temperature + above)
 }
 
 #[cfg(test)]

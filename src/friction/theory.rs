@@ -251,6 +251,41 @@ impl<'a> Friction<'a> {
         self.q1
     }
 
+    /// Refuse a σ0 so small against the rubber's modulus that G overflows.
+    ///
+    /// # Bound
+    /// The march integrates dG = ½ q³C (b_T/((1 − ν²)σ0))² B(qv a_T) dq with
+    /// B(w) = ∫₀¹ |E(wu)|² (1 − u²)^{−1/2} du ≤ (π/2)|E|²_max, so
+    /// ```text
+    /// G ≤ (E_eff/σ0)² ⟨|∇h|²⟩/8,   E_eff = b_T |E|_max/(1 − ν²)
+    /// ```
+    /// (⟨|∇h|²⟩ over [q_l, q1]): the bound of `theory::check_g_finite` with
+    /// E* replaced by E_eff, σ0 ≥ E_eff/r_max. |E|_max is the glassy modulus
+    /// (Prony) or the table's largest (master curve); b_T is the vertical
+    /// shift at the background temperature. The moduli themselves are held
+    /// below [`super::MAX_MODULUS`].
+    fn check_load(&self, nominal_pressure: f64, vertical_shift: f64) -> Result<()> {
+        let one_minus = 1.0 - self.rubber.poisson().powi(2);
+        let e_eff = vertical_shift * self.rubber.viscoelastic().max_modulus() / one_minus;
+        let q_l = self.spectrum.q_min();
+        let slope = std::f64::consts::TAU * self.spectrum.moment(3, q_l, self.q1)?.value;
+        crate::theory::check_g_finite(e_eff, nominal_pressure, slope).map_err(|_| {
+            let r_max = (f64::MAX / (slope / 8.0).max(1.0)).sqrt();
+            Error::invalid(
+                "nominal_pressure",
+                nominal_pressure,
+                format!(
+                    "at least {} (|E|_max = {} Pa, ν = {}, ⟨|∇h|²⟩ = {}) so that \
+                     G = (b_T|E|/((1 − ν²)σ0))²⟨|∇h|²⟩/8 stays finite in f64",
+                    crate::error::approx(e_eff / r_max),
+                    crate::error::approx(e_eff * one_minus / vertical_shift),
+                    self.rubber.poisson(),
+                    crate::error::approx(slope)
+                ),
+            )
+        })
+    }
+
     /// The rubber.
     pub fn rubber(&self) -> &Rubber {
         self.rubber
@@ -261,9 +296,11 @@ impl<'a> Friction<'a> {
     /// temperature too when the rubber has thermal properties.
     ///
     /// # Errors
-    /// `velocity` or `nominal_pressure` not finite and > 0; `temperature` as
-    /// in [`super::TemperatureShift::factors`]; [`Error::NotConverged`] when an
-    /// integrand is not finite (moduli or pressures beyond f64).
+    /// `velocity` or `nominal_pressure` not finite and > 0; `nominal_pressure`
+    /// so small against the modulus that G = (b_T|E|_max/((1 − ν²)σ0))²
+    /// ⟨|∇h|²⟩/8 overflows f64; `temperature` as in
+    /// [`super::TemperatureShift::factors`]; [`Error::NotConverged`] when an
+    /// integrand is not finite.
     pub fn point(
         &self,
         velocity: f64,
@@ -276,6 +313,7 @@ impl<'a> Friction<'a> {
             nominal_pressure: check::positive("nominal_pressure", nominal_pressure)?,
             factors: self.rubber.shift_factors(temperature)?,
         };
+        self.check_load(nominal_pressure, c.factors.vertical_shift)?;
         let isothermal = Run::new(self, &c, None).solve()?;
         let flash = match self.rubber.thermal() {
             Some(t) => Some(Run::new(self, &c, Some(t)).solve()?),
@@ -337,9 +375,9 @@ pub fn log_velocities(velocity_min: f64, velocity_max: f64, n: usize) -> Result<
     }
     if n < 2 {
         return Err(Error::invalid(
-            "number of velocities",
+            "velocity_range.points",
             n as f64,
-            "at least 2",
+            "a whole number of at least 2 (1 only when velocity_min = velocity_max)",
         ));
     }
     let r = (velocity_max / velocity_min).ln();

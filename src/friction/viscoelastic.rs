@@ -95,13 +95,33 @@ pub struct Prony {
     terms: Vec<PronyTerm>,
 }
 
+/// The largest modulus a rubber may have, Pa: √f64::MAX/4 ≈ 3.35e153.
+///
+/// # Bound
+/// The friction theory squares the modulus, |E|² = E′² + E″², and sums it
+/// over the angular integral B(w) = ∫₀¹ |E(wu)|² (1 − u²)^{−1/2} du, whose
+/// weight totals π/2: with E′, E″ ≤ √f64::MAX/4, |E|² ≤ f64::MAX/8 and
+/// B ≤ (π/2) f64::MAX/8 < f64::MAX/4 (a Prony series' |E| is at most its
+/// glassy modulus E∞ + Σ E_k, which is held to the bound).
+pub const MAX_MODULUS: f64 = 1.340_780_792_994_259_6e154 / 4.0;
+
+/// The requirement stated when a modulus exceeds [`MAX_MODULUS`].
+pub(crate) fn modulus_requirement() -> String {
+    format!(
+        "finite, > 0 and at most √f64::MAX/4 = {} Pa so that |E|² = E′² + E″² stays finite",
+        crate::error::approx(MAX_MODULUS)
+    )
+}
+
 impl Prony {
     /// A Prony series from E∞ and its terms (none: an elastic solid, E″ = 0).
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] naming `relaxed_modulus` (finite, ≥ 0),
     /// `prony_modulus[k]` or `relaxation_time[k]` (finite, > 0); E∞ = 0 with
-    /// no terms (a zero modulus).
+    /// no terms (a zero modulus); a glassy modulus E∞ + Σ E_k above
+    /// [`MAX_MODULUS`] (naming `relaxed_modulus` or the largest term's
+    /// `prony_modulus[k]`).
     pub fn new(relaxed_modulus: f64, terms: &[PronyTerm]) -> Result<Self> {
         if !(relaxed_modulus.is_finite() && relaxed_modulus >= 0.0) {
             return Err(Error::invalid(
@@ -133,6 +153,28 @@ impl Prony {
                 "> 0 when the series has no terms",
             ));
         }
+        let glassy = relaxed_modulus + terms.iter().map(|t| t.modulus).sum::<f64>();
+        if glassy > MAX_MODULUS {
+            // name the largest part of the sum: the typing error
+            let (name, value) = terms
+                .iter()
+                .enumerate()
+                .map(|(k, t)| (format!("prony_modulus[{k}]"), t.modulus))
+                .fold(
+                    ("relaxed_modulus".to_string(), relaxed_modulus),
+                    |best, x| if x.1 > best.1 { x } else { best },
+                );
+            return Err(Error::invalid(
+                name,
+                value,
+                format!(
+                    "such that the glassy modulus E∞ + Σ E_k (here {}) is at most \
+                     √f64::MAX/4 = {} Pa, so that |E|² stays finite",
+                    crate::error::approx(glassy),
+                    crate::error::approx(MAX_MODULUS)
+                ),
+            ));
+        }
         Ok(Prony {
             relaxed_modulus,
             terms: terms.to_vec(),
@@ -151,7 +193,8 @@ impl Prony {
     ///
     /// # Errors
     /// E∞ not finite and > 0; E0 not finite or not > E∞ (E″ > 0 is required;
-    /// an elastic solid is `Prony::new(E, &[])`); τ not finite and > 0.
+    /// an elastic solid is `Prony::new(E, &[])`) or above [`MAX_MODULUS`]; τ
+    /// not finite and > 0.
     ///
     /// # Examples
     /// ```
@@ -178,6 +221,13 @@ impl Prony {
                 "instantaneous_modulus",
                 instantaneous_modulus,
                 format!("finite and > relaxed_modulus = {relaxed_modulus:e}"),
+            ));
+        }
+        if instantaneous_modulus > MAX_MODULUS {
+            return Err(Error::invalid(
+                "instantaneous_modulus",
+                instantaneous_modulus,
+                modulus_requirement(),
             ));
         }
         Self::new(
@@ -215,8 +265,8 @@ impl Prony {
         let mut terms = Vec::new();
         for row in &rows {
             let (e, tau) = (row.values[0], row.values[1]);
-            if !(e.is_finite() && e > 0.0) {
-                return Err(cell_error(path, row, "E_k", e, "finite and > 0"));
+            if !(e.is_finite() && e > 0.0 && e <= MAX_MODULUS) {
+                return Err(cell_error(path, row, "E_k", e, &modulus_requirement()));
             }
             if tau == f64::INFINITY {
                 if relaxed.replace(e).is_some() {
@@ -344,6 +394,26 @@ impl Viscoelastic {
         match self {
             Viscoelastic::Prony(p) => p.angular(w),
             Viscoelastic::MasterCurve(m) => m.angular(w),
+        }
+    }
+
+    /// An upper bound of |E(ω)| over every ω, Pa: a Prony series' glassy
+    /// modulus E∞ + Σ E_k; for a master curve √(max E′² + max E″²) over the
+    /// table (log-log interpolation and the held ends stay between a
+    /// segment's end values).
+    pub(crate) fn max_modulus(&self) -> f64 {
+        match self {
+            Viscoelastic::Prony(p) => {
+                p.relaxed_modulus + p.terms.iter().map(|t| t.modulus).sum::<f64>()
+            }
+            Viscoelastic::MasterCurve(m) => {
+                let (mut e1, mut e2) = (0.0f64, 0.0f64);
+                for (_, s, l) in m.points() {
+                    e1 = e1.max(s);
+                    e2 = e2.max(l);
+                }
+                e1.hypot(e2)
+            }
         }
     }
 

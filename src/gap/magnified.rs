@@ -60,6 +60,95 @@ const MAX_EVALS: usize = 2_000_000;
 /// Arguments of e^{−x²} and E1(x²) beyond which both underflow.
 const UNDERFLOW_ARG: f64 = 745.0;
 
+/// ζ − 1 below which the adaptive P(u) ([`super::SeparationDensity::new`])
+/// does not resolve a magnification apart from ζ = 1: 1e-9, its narrowest
+/// ζ-panel in ln ζ (`MIN_PANEL` of [`super`]), so that the weight −dA/A0
+/// lying closer to 1 sits inside one unsplittable panel. Measured on
+/// self-affine spectra (H = 0.5, 0.8): P(u) keeps its normalisation within
+/// its error bound (≤ 3e-10) down to ζ − 1 ≈ 1e-9 at the weight's lower
+/// edge; from 3e-10 on it errs by more than its bound (4e-3 against 2e-3 at
+/// 4e-12), and loses 59 % of its weight at 2.5e-15.
+pub(crate) const ADAPTIVE_RESOLUTION: f64 = 1e-9;
+
+/// The same for the load curves' table ([`super::SeparationTable`]), which
+/// places its nodes in s = ln m3 and not in ln ζ: 5e-13. Measured on the
+/// same spectra: the table keeps its normalisation within its error bound
+/// down to ζ − 1 ≈ 5e-13 at the weight's lower edge and exceeds it from
+/// 2.5e-13 on (3e-6 against 2.5e-6; 2e-1 against 6e-2 at 2.5e-17).
+pub(crate) const TABLE_RESOLUTION: f64 = 5e-13;
+
+/// The same for the critical junction's ζ_c, found by a root search in
+/// ln ζ to 1e-13 and used as one point ([`Magnified::point`]), not as a
+/// quadrature's nodes: 1e-13. Measured on the same spectra: Q changes
+/// smoothly with σ0 down to ζ_c − 1 ≈ 7e-14; below, ζ_c carries the
+/// rounding of 1 + δ (Q stalls as σ0 falls further) and near 1e-15 it
+/// rounds onto 1, where −A′ = 0 and u1 and Q become +∞.
+pub(crate) const CRITICAL_RESOLUTION: f64 = 1e-13;
+
+/// Refuse a load so low (against E*) that the contact is lost, from A/A0 = 1
+/// down to A/A0 = erf(`x_edge`), closer to ζ = 1 than a route resolves
+/// (`resolution`: [`ADAPTIVE_RESOLUTION`], [`TABLE_RESOLUTION`] or
+/// [`CRITICAL_RESOLUTION`]): the
+/// magnifications that carry the result round towards ζ = 1, and the routes
+/// then lose the area −dA.
+///
+/// # Bound
+/// G(ζ) = g m3(ζ), g = (π/4)(E*/σ0)², reaches 1/(4 x_edge²) at ζ_edge; it
+/// must lie at least δ = `resolution` above 1:
+/// ```text
+/// g m3(q_l, q_l(1 + δ)) ≤ 1/(4 x_edge²)   ⇔   σ0 ≥ E* x_edge √(π m3_δ)
+/// ```
+/// (m3 increases with ζ). `x_edge` is where the result's weight begins: 6.5
+/// for P(u) (the area beyond is erfc(6.5) < 4e-20), erf⁻¹(a_c) for the
+/// critical junction.
+///
+/// # Errors
+/// [`Error::InvalidParameter`] naming `nominal_pressure` with that bound, or
+/// `contact_modulus` (at most σ0/(x_edge √(π m3_δ))) when E* is beyond
+/// 1e±30 ([`crate::theory::ratio_culprit`]).
+pub(crate) fn check_resolved(
+    spectrum: &dyn Spectrum,
+    contact_modulus: f64,
+    pressure: f64,
+    x_edge: f64,
+    resolution: f64,
+) -> Result<()> {
+    let q_l = spectrum.q_min();
+    let m3 = spectrum.moment(3, q_l, q_l * (1.0 + resolution))?.value;
+    let factor = x_edge * (std::f64::consts::PI * m3).sqrt();
+    if pressure >= contact_modulus * factor {
+        return Ok(());
+    }
+    let approx = crate::error::approx;
+    let why = format!(
+        "so that the contact is not lost within ζ − 1 < {} of ζ = 1, closer than the \
+         magnifications are resolved (σ0 ≥ E* x √(π ∫q³C dq over [q_l, q_l(1 + {0})]))",
+        crate::error::num(resolution)
+    );
+    Err(
+        match crate::theory::ratio_culprit(contact_modulus, pressure) {
+            "contact_modulus" => Error::invalid(
+                "contact_modulus",
+                contact_modulus,
+                format!(
+                    "at most {} (σ0 = {}, x = {x_edge:.3}) {why}",
+                    approx(pressure / factor),
+                    crate::error::num(pressure)
+                ),
+            ),
+            _ => Error::invalid(
+                "nominal_pressure",
+                pressure,
+                format!(
+                    "at least {} (E* = {}, x = {x_edge:.3}) {why}",
+                    approx(contact_modulus * factor),
+                    crate::error::num(contact_modulus)
+                ),
+            ),
+        },
+    )
+}
+
 /// The spectrum restricted to `[lo, q_s]`: the roughness not yet resolved at
 /// magnification ζ = lo/q_l.
 pub(crate) struct Band<'a> {
@@ -129,7 +218,10 @@ impl<'a> Magnified<'a> {
     /// The model at nominal pressure `pressure` (unit of E*).
     ///
     /// # Errors
-    /// E*, σ0 not finite and positive; tolerance outside [1e-15, 0.1].
+    /// E*, σ0 not finite and positive; tolerance outside [1e-15, 0.1]; E*/σ0
+    /// so large that G = (E*/σ0)²⟨|∇h|²⟩/8 overflows f64 (naming
+    /// `nominal_pressure` or `contact_modulus`, E* when it is beyond 1e±30,
+    /// `theory::ratio_culprit`).
     pub fn new(
         spectrum: &'a dyn Spectrum,
         contact_modulus: f64,
@@ -137,6 +229,11 @@ impl<'a> Magnified<'a> {
         tolerance: f64,
         breaks: &[f64],
     ) -> Result<Self> {
+        check::positive("contact_modulus", contact_modulus)?;
+        check::positive("nominal_pressure", pressure)?;
+        let (q_l, q_s) = (spectrum.q_min(), spectrum.q_max());
+        let slope_variance = std::f64::consts::TAU * spectrum.moment(3, q_l, q_s)?.value;
+        crate::theory::check_g_finite(contact_modulus, pressure, slope_variance)?;
         Ok(Magnified {
             spectrum,
             contact_modulus: check::positive("contact_modulus", contact_modulus)?,

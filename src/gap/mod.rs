@@ -227,7 +227,8 @@ impl Panel {
     }
 }
 
-/// Narrowest ζ-panel, in ln ζ.
+/// Narrowest ζ-panel, in ln ζ (the resolution of
+/// [`magnified::ADAPTIVE_RESOLUTION`]).
 const MIN_PANEL: f64 = 1e-9;
 
 /// Most ζ-panels of one P(u).
@@ -285,7 +286,11 @@ impl SeparationDensity {
     ///
     /// # Errors
     /// E*, σ0 not finite and positive; bad options (`tolerance`,
-    /// `panels_per_decade` = 0); quadrature failures.
+    /// `panels_per_decade` = 0); quadrature failures; σ0 so low against E*
+    /// that the contact is lost closer to ζ = 1 than the routes resolve
+    /// ([`Error::InvalidParameter`] naming `nominal_pressure`, or
+    /// `contact_modulus` when E* is beyond 1e±30;
+    /// bound: σ0 ≥ 6.5 E* √(π ∫q³C dq over [q_l, q_l(1 + 1e-9)])).
     ///
     /// # Examples
     /// ```
@@ -315,6 +320,13 @@ impl SeparationDensity {
             pressure,
             options.tolerance,
             &options.breaks,
+        )?;
+        magnified::check_resolved(
+            spectrum,
+            contact_modulus,
+            pressure,
+            table::X_LOW,
+            magnified::ADAPTIVE_RESOLUTION,
         )?;
         let zeta_max = m.zeta_max();
         let (a1, _) = m.area(zeta_max)?;

@@ -40,7 +40,7 @@ use crate::special::{erf, erfc};
 use crate::spectrum::Spectrum;
 
 /// x = 1/(2√G) at the table's lowest s for its lowest load.
-const X_LOW: f64 = 6.5;
+pub(crate) const X_LOW: f64 = 6.5;
 
 /// Default ζ-panels per unit of s = ln m3.
 pub const DEFAULT_ZETA_PANELS_PER_UNIT: f64 = 0.5;
@@ -212,7 +212,12 @@ impl SeparationTable {
     ///
     /// # Errors
     /// E* or `lowest_pressure` not finite and positive; `zeta_panels_per_unit`
-    /// not finite and positive, or above 100; `q_panels` 0 or above 100.
+    /// not finite and positive, or above 100; `q_panels` 0 or above 100;
+    /// E*/σ0 so large at the lowest pressure that G = (E*/σ0)²⟨|∇h|²⟩/8
+    /// overflows f64, or that the contact is lost closer to ζ = 1 than the
+    /// routes resolve (σ0 ≥ 6.5 E* √(π ∫q³C dq over [q_l, q_l(1 + 5e-13)]);
+    /// [`Error::InvalidParameter`] naming `nominal_pressure` or
+    /// `contact_modulus`, E* when it is beyond 1e±30).
     ///
     /// # Examples
     /// ```
@@ -259,6 +264,21 @@ impl SeparationTable {
                 "a positive slope moment ∫q³C dq",
             ));
         }
+        // g_max = (π/4)(E*/σ0)² and G = g_max m3 finite (the bound of
+        // `theory::check_g_finite`): else s_lo = ln(1/(4 X_LOW² g_max)) is
+        // −∞ and the panels between it and s_hi never end.
+        crate::theory::check_g_finite(
+            contact_modulus,
+            lowest_pressure,
+            std::f64::consts::TAU * m3_total,
+        )?;
+        super::magnified::check_resolved(
+            spectrum,
+            contact_modulus,
+            lowest_pressure,
+            X_LOW,
+            super::magnified::TABLE_RESOLUTION,
+        )?;
         let r = contact_modulus / lowest_pressure;
         let g_max = 0.25 * std::f64::consts::PI * r * r;
         let s_hi = m3_total.ln();

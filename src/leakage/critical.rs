@@ -96,7 +96,10 @@ impl<'a> CriticalJunction<'a> {
     /// ```
     ///
     /// # Errors
-    /// σ0 not finite and positive; quadrature failures.
+    /// σ0 not finite and positive; quadrature failures; σ0 so low against E*
+    /// that ζ_c lies closer to 1 than it is resolved ([`crate::Error::InvalidParameter`]
+    /// naming `nominal_pressure` or `contact_modulus`; bound:
+    /// σ0 ≥ E* erf⁻¹(a_c) √(π ∫q³C dq over [q_l, q_l(1 + 1e-13)])).
     ///
     /// # Examples
     /// ```
@@ -121,6 +124,14 @@ impl<'a> CriticalJunction<'a> {
             pressure,
             self.tolerance,
             &self.breaks,
+        )?;
+        // ζ_c must be resolved apart from ζ = 1 (A = a_c at x_c = erf⁻¹(a_c))
+        crate::gap::magnified::check_resolved(
+            self.spectrum,
+            self.contact_modulus,
+            pressure,
+            crate::gap::magnified::erf_inverse(self.threshold),
+            crate::gap::magnified::CRITICAL_RESOLUTION,
         )?;
         let (a1, _) = m.area(m.zeta_max())?;
         let mut out = CriticalJunctionPoint {

@@ -141,12 +141,90 @@ impl Seal {
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] naming `seal_width`, `seal_length`,
-    /// `viscosity` or a pressure of [`Drive::validate`].
+    /// `viscosity` or a pressure of [`Drive::validate`]; naming the one of
+    /// them furthest from 1 in order of magnitude when the leak rate's
+    /// prefactor (L_y/L_x) Δ/(12η) exceeds f64::MAX/1e30.
     pub fn validate(&self) -> Result<()> {
         check::positive("seal_width", self.seal_width)?;
         check::positive("seal_length", self.seal_length)?;
         check::positive("viscosity", self.viscosity)?;
-        self.drive.validate()
+        self.drive.validate()?;
+        self.check_prefactor()
+    }
+
+    /// Refuse a seal whose prefactor f = (L_y/L_x) Δ/(12η) of Q = f u³ (the
+    /// cube law; Q = 12η f σ_eff for the effective medium) leaves f64:
+    /// Q = ∞ at L_y = 1e300, or at P_b = 1e-300 where Δ = (P_a² − P_b²)/(2P_b)
+    /// overflowed.
+    ///
+    /// # Bound
+    /// ln f = ln L_y − ln L_x − ln 12η + ln Δ, with ln Δ = ln(P_a − P_b)
+    /// (liquid) or 2 ln P_a + ln(1 − (P_b/P_a)²) − ln 2P_b (gas), must be at
+    /// most ln(f64::MAX/1e30): f then leaves room for the u³ ≤ 1e30 m³ it
+    /// multiplies (any separation below 1e10 m). Decided in logarithms. The
+    /// input furthest from 1 in order of magnitude (the typing error) is
+    /// named, with the bound on it that the others leave: its exponent e in
+    /// f (+1 for L_y and Δ, −1 for L_x, η and, to leading order, P_b, +2 for
+    /// P_a) moves ln f by e ln x, so x ≤ x e^{−excess/e} (e > 0) or
+    /// x ≥ x e^{excess/|e|} (e < 0).
+    fn check_prefactor(&self) -> Result<()> {
+        // (name, value, exponent, contribution to ln f)
+        let mut factors: Vec<(&str, f64, f64, f64)> = vec![
+            ("seal_length", self.seal_length, 1.0, self.seal_length.ln()),
+            ("seal_width", self.seal_width, -1.0, -self.seal_width.ln()),
+            (
+                "viscosity",
+                self.viscosity,
+                -1.0,
+                -(12.0 * self.viscosity).ln(),
+            ),
+        ];
+        match self.drive {
+            Drive::Liquid { pressure_drop } => {
+                factors.push(("pressure_drop", pressure_drop, 1.0, pressure_drop.ln()));
+            }
+            Drive::Gas {
+                inlet_pressure: a,
+                outlet_pressure: b,
+            } => {
+                let r = b / a;
+                factors.push(("inlet_pressure", a, 2.0, 2.0 * a.ln()));
+                factors.push((
+                    "outlet_pressure",
+                    b,
+                    -1.0,
+                    (1.0 - r * r).ln() - (2.0 * b).ln(),
+                ));
+            }
+        }
+        let ln_f: f64 = factors.iter().map(|f| f.3).sum();
+        let ln_max = f64::MAX.ln() - 1e30f64.ln();
+        if ln_f <= ln_max {
+            return Ok(());
+        }
+        let (name, value, exponent, _) = factors.iter().copied().fold(factors[0], |a, b| {
+            if b.1.ln().abs() > a.1.ln().abs() {
+                b
+            } else {
+                a
+            }
+        });
+        // in logarithms: the factor e^{excess} alone may overflow
+        let bound = (value.ln() - (ln_f - ln_max) / exponent).exp();
+        Err(Error::invalid(
+            name,
+            value,
+            format!(
+                "{} {} (with the seal's other inputs) so that the leak rate's prefactor \
+                 (L_y/L_x) Δ/(12η) stays below f64::MAX/1e30",
+                if exponent > 0.0 {
+                    "at most"
+                } else {
+                    "at least"
+                },
+                crate::error::approx(bound)
+            ),
+        ))
     }
 
     /// Q = (L_y/L_x) σ Δ for a flow conductivity σ (m³/(Pa s)), m³/s.

@@ -63,6 +63,10 @@ const TENSOR_REL_TOL: f64 = 1e-9;
 /// Evaluation budget of one φ quadrature.
 const PHI_MAX_EVALS: usize = 200_000;
 
+/// The stretch (γ or 1/γ) above which the φ quadratures split at the scales
+/// of the peak of s(φ)^{−(k+1)} ([`Stretched`]'s kinks).
+const STRETCH_SPLIT: f64 = 100.0;
+
 /// A power spectrum over the plane, C(q_x, q_y) in m⁴ (Persson's normalisation,
 /// `⟨h²⟩ = ∫ d²q C`), with `C(−q) = C(q)`.
 pub trait Spectrum2d: Send + Sync {
@@ -119,6 +123,32 @@ impl std::fmt::Debug for Stretched {
     }
 }
 
+/// The stretches γ for which [`Stretched`] stays in f64, for an isotropic
+/// spectrum on [q_l, q_s].
+///
+/// # Bound
+/// γ > 1 moves the band's lower end to q_l/γ, a normal f64 while
+/// γ ≤ q_l/f64::MIN_POSITIVE; its integrands s^{−(k+1)} m_k are at most the
+/// isotropic moments (s ≥ 1). γ < 1 moves the upper end to q_s/γ (finite
+/// while γ ≥ q_s/f64::MAX) and lets s fall to γ, so the moments' integrands
+/// reach γ^{−(k+1)} m_k^iso(q_l, q_s); for the moments the crate takes (k =
+/// 1, 2, 3, 5: height, energy, slope, curvature) they and their sums over
+/// the quadrature stay below f64::MAX/4 while
+/// γ ≥ (4 m_k^iso/f64::MAX)^{1/(k+1)}, computed in logarithms.
+fn stretch_range(iso: &dyn Spectrum) -> Result<(f64, f64)> {
+    let (q_l, q_s) = (iso.q_min(), iso.q_max());
+    let hi = (q_l / f64::MIN_POSITIVE).min(f64::MAX);
+    let mut lo = q_s / f64::MAX;
+    for k in [1, 2, 3, 5] {
+        let m = iso.moment(k, q_l, q_s)?.value;
+        if m > 0.0 {
+            let ln = (4.0f64.ln() + m.ln() - f64::MAX.ln()) / f64::from(k + 1);
+            lo = lo.max(ln.exp());
+        }
+    }
+    Ok((lo, hi))
+}
+
 impl Stretched {
     /// `iso` stretched by `gamma` along the direction at `angle` (radians,
     /// from x towards y): the lay runs along `angle` for γ > 1, across it
@@ -126,14 +156,29 @@ impl Stretched {
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] naming `anisotropy` when γ is not finite
-    /// and > 0, `lay_angle` when the angle is not finite;
+    /// and > 0 or outside the range where the stretched band and the moments
+    /// stay in f64 (`stretch_range`), `lay_angle` when the angle is not
+    /// finite;
     /// [`Error::Inconsistent`] naming `spectrum` when `iso` is itself
     /// anisotropic (the moments here assume an isotropic `iso`: stretch the
     /// parts of a sum instead).
     pub fn new(iso: Arc<dyn Spectrum>, gamma: f64, angle: f64) -> Result<Self> {
         check::positive("anisotropy", gamma)?;
+        let (lo, hi) = stretch_range(iso.as_ref())?;
+        if !(gamma >= lo && gamma <= hi) {
+            return Err(Error::invalid(
+                "anisotropy",
+                gamma,
+                format!(
+                    "in [{}, {}] for this spectrum, so that its stretched band and the \
+                     moments of its angular average stay finite, positive f64",
+                    crate::error::approx(lo),
+                    crate::error::approx(hi)
+                ),
+            ));
+        }
         if !angle.is_finite() {
-            return Err(Error::invalid("lay_angle", angle, "finite (radians)"));
+            return Err(Error::invalid("lay_angle", angle, "finite"));
         }
         if iso.as_2d().is_some() {
             return Err(Error::Inconsistent {
@@ -164,11 +209,32 @@ impl Stretched {
         (self.gamma * phi.cos()).hypot(phi.sin())
     }
 
-    /// The angles in (0, π/2) at which `x·s(φ)` meets an end of the
-    /// isotropic band, for each x in `xs` (where the integrand of a moment
-    /// has a kink), sorted, with 0 and π/2 at the ends.
+    /// Whether the φ quadratures of this stretch run in ψ = π/2 − φ: for
+    /// γ > [`STRETCH_SPLIT`], whose peak lies near φ = π/2, where cos φ
+    /// would carry an absolute rounding of ε, relative εγ (measured: the
+    /// slope of γ = 1e12 was 7e-5 off). Then cos φ = sin ψ is exact to ulps.
+    fn mirrored(&self) -> bool {
+        self.gamma > STRETCH_SPLIT
+    }
+
+    /// s at the quadrature variable t: φ, or ψ = π/2 − φ when
+    /// [`Self::mirrored`].
+    fn scale_at(&self, t: f64) -> f64 {
+        if self.mirrored() {
+            (self.gamma * t.sin()).hypot(t.cos())
+        } else {
+            self.scale(t)
+        }
+    }
+
+    /// The quadrature variable's split points in [0, π/2] (φ, or ψ when
+    /// [`Self::mirrored`]): where `x·s` meets an end of the isotropic band,
+    /// for each x in `xs` (where the integrand of a moment has a kink),
+    /// sorted, with 0 and π/2 at the ends; past a stretch of
+    /// [`STRETCH_SPLIT`] also the scales of the peak of s^{−(k+1)}.
     fn kinks(&self, xs: &[f64]) -> Vec<f64> {
         let g2 = self.gamma * self.gamma;
+        let mirrored = self.mirrored();
         let mut phis = vec![0.0, std::f64::consts::FRAC_PI_2];
         if g2 != 1.0 {
             for &x in xs {
@@ -177,12 +243,32 @@ impl Stretched {
                     let s = edge / x;
                     let c2 = (s * s - 1.0) / (g2 - 1.0);
                     if c2 > 0.0 && c2 < 1.0 {
-                        phis.push(c2.sqrt().acos());
+                        phis.push(if mirrored {
+                            c2.sqrt().asin()
+                        } else {
+                            c2.sqrt().acos()
+                        });
                     }
                 }
             }
         }
+        // the peak of s^{−(k+1)}: s stays near its minimum min(1, γ) only
+        // within cos φ ≲ 1/γ of π/2 (γ > 1) or sin φ ≲ γ of 0 (γ < 1); past
+        // a stretch of STRETCH_SPLIT the quadrature no longer finds so narrow
+        // a peak in [0, π/2] (measured: the slope of γ = 1e5 came out 2e-5
+        // instead of 0.0707), so its scales are split points too. Below
+        // STRETCH_SPLIT the pieces are those of persson 0.4, bit for bit.
+        let outer = self.gamma.max(1.0 / self.gamma);
+        if outer > STRETCH_SPLIT {
+            let mut m = 1.0;
+            while m < outer {
+                // cos φ = m/γ is ψ = asin(m/γ); sin φ = mγ is φ = asin(mγ)
+                phis.push((m / outer).asin());
+                m *= 4.0;
+            }
+        }
         phis.sort_by(f64::total_cmp);
+        phis.dedup();
         phis
     }
 }
@@ -212,7 +298,7 @@ impl Spectrum for Stretched {
         if q.is_nan() || q < Spectrum2d::q_min(self) || q > Spectrum2d::q_max(self) {
             return 0.0;
         }
-        let f = |phi: f64| self.iso.c(q * self.scale(phi));
+        let f = |t: f64| self.iso.c(q * self.scale_at(t));
         let mut sum = 0.0;
         for w in self.kinks(&[q]).windows(2) {
             match integrate(
@@ -246,8 +332,8 @@ impl Spectrum for Stretched {
     fn moment(&self, k: i32, a: f64, b: f64) -> Result<Estimate> {
         check_range(a, b)?;
         let bad = std::cell::Cell::new(None);
-        let f = |phi: f64| {
-            let s = self.scale(phi);
+        let f = |t: f64| {
+            let s = self.scale_at(t);
             match self.iso.moment(k, a * s, b * s) {
                 Ok(m) => m.value * s.powi(-(k + 1)),
                 Err(e) => {

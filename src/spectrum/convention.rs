@@ -51,7 +51,50 @@ impl Convention {
             Convention::Grid { size } => {
                 crate::error::check::positive("size", size)?;
                 let f = size / TAU;
-                Ok(pts.iter().map(|&(k, phi)| (k / f, f * f * phi)).collect())
+                let out: Vec<(f64, f64)> =
+                    pts.iter().map(|&(k, phi)| (k / f, f * f * phi)).collect();
+                // q = 2πk/L and C = (L/2π)² φ must stay positive normal f64
+                // for every finite, positive (k, φ) of the file: else L is at
+                // fault, not the row (3.17 of the issue-37 audit: "psd.csv:2:2:
+                // C[0] = inf" for L = 1e300). The bounds follow from the rows'
+                // extremes: (L/2π)² max φ ≤ f64::MAX, 2π min k/L ≥
+                // f64::MIN_POSITIVE, (L/2π)² min φ ≥ f64::MIN_POSITIVE, and
+                // 2π max k/L ≤ f64::MAX.
+                let fine = |v: f64| v.is_finite() && v >= f64::MIN_POSITIVE;
+                let given = |v: f64| v.is_finite() && v > 0.0;
+                if pts
+                    .iter()
+                    .zip(&out)
+                    .any(|(&(k, phi), &(q, c))| given(k) && given(phi) && !(fine(q) && fine(c)))
+                {
+                    let extreme =
+                        |f: fn(f64, f64) -> f64, init: f64, pick: fn(&(f64, f64)) -> f64| {
+                            pts.iter().map(pick).filter(|v| given(*v)).fold(init, f)
+                        };
+                    let (phi_max, phi_min) = (
+                        extreme(f64::max, 0.0, |p| p.1),
+                        extreme(f64::min, f64::INFINITY, |p| p.1),
+                    );
+                    let (k_max, k_min) = (
+                        extreme(f64::max, 0.0, |p| p.0),
+                        extreme(f64::min, f64::INFINITY, |p| p.0),
+                    );
+                    let hi = (TAU * f64::MAX.sqrt() / phi_max.sqrt())
+                        .min(TAU * k_min / f64::MIN_POSITIVE);
+                    let lo = (TAU * f64::MIN_POSITIVE.sqrt() / phi_min.sqrt())
+                        .max(TAU * k_max / f64::MAX);
+                    return Err(Error::invalid(
+                        "size",
+                        size,
+                        format!(
+                            "in [{}, {}] m for this table, so that q = 2πk/L and C = (L/2π)² φ \
+                             are finite, positive f64",
+                            crate::error::approx(lo),
+                            crate::error::approx(hi)
+                        ),
+                    ));
+                }
+                Ok(out)
             }
             Convention::Profile1D => {
                 let n = pts.len();

@@ -36,7 +36,7 @@ impl<F: Fn(f64) -> f64 + Send + Sync> FnSpectrum<F> {
                 format!("> q_min = {q_min:e}"),
             ));
         }
-        check::tolerance("tol", tol)?;
+        check::tolerance("tolerance", tol)?;
         Ok(FnSpectrum {
             f,
             q_min,

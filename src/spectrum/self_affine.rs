@@ -81,23 +81,28 @@ impl SelfAffine {
             hurst,
             c_r: 1.0,
         };
-        s.c_r = match amplitude {
-            Amplitude::CR(c) => check::positive("c_r", c)?,
-            Amplitude::RmsHeight(h) => {
-                check::positive("rms_height", h)?;
-                h * h / (std::f64::consts::TAU * s.moment_exact(1, q_l, q_s))
-            }
-            Amplitude::RmsSlope(g) => {
-                check::positive("rms_slope", g)?;
-                g * g / (std::f64::consts::TAU * s.moment_exact(3, q_l, q_s))
-            }
+        // the moments of C/C_r: m1 and m3 per unit C_r, both > 0
+        let (unit1, unit3) = (s.moment_exact(1, q_l, q_s), s.moment_exact(3, q_l, q_s));
+        let (name, value) = match amplitude {
+            Amplitude::CR(c) => ("c_r", check::positive("c_r", c)?),
+            Amplitude::RmsHeight(h) => ("rms_height", check::positive("rms_height", h)?),
+            Amplitude::RmsSlope(g) => ("rms_slope", check::positive("rms_slope", g)?),
         };
-        if !(s.c_r.is_finite() && s.c_r > 0.0) {
-            return Err(Error::invalid(
-                "c_r",
-                s.c_r,
-                "a finite, positive f64 (the amplitude and cut-offs over/underflow)",
-            ));
+        s.c_r = match amplitude {
+            Amplitude::CR(c) => c,
+            Amplitude::RmsHeight(h) => h * h / (std::f64::consts::TAU * unit1),
+            Amplitude::RmsSlope(g) => g * g / (std::f64::consts::TAU * unit3),
+        };
+        // C_r and the height and slope variances 2π C_r m_k (every theory's
+        // inputs) finite and > 0: checked as computed, and the bounds stated
+        // for the amplitude given (the variance is C_r·2π m_k, so the bounds
+        // on C_r are f64::MAX/(2π m_k) and on h_rms, h'_rms their √(·2π m_k))
+        let variances = [
+            std::f64::consts::TAU * unit1 * s.c_r,
+            std::f64::consts::TAU * unit3 * s.c_r,
+        ];
+        if !(s.c_r.is_finite() && s.c_r > 0.0 && variances.iter().all(|v| v.is_finite())) {
+            return Err(amplitude_range(name, value, unit1, unit3));
         }
         Ok(s)
     }
@@ -139,6 +144,45 @@ impl SelfAffine {
         }
         scale * sum
     }
+}
+
+/// The error for an amplitude whose C_r, ⟨h²⟩ or ⟨|∇h|²⟩ leaves f64,
+/// naming the amplitude given with its range.
+///
+/// # Bound
+/// With u_k = ∫ q^k (C/C_r) dq (closed form), C_r = c_r, h_rms²/(2π u1) or
+/// h'²_rms/(2π u3), and the variances are 2π u_k C_r. All finite and C_r > 0
+/// (a normal f64) need
+/// ```text
+/// f64::MIN_POSITIVE ≤ C_r ≤ f64::MAX / (2π max(1, u1, u3))
+/// ```
+/// i.e. h_rms ∈ √(2π u1 [lo, hi]), h'_rms ∈ √(2π u3 [lo, hi]) for those C_r
+/// bounds [lo, hi] (each square root taken apart, so no bound overflows).
+fn amplitude_range(name: &str, value: f64, unit1: f64, unit3: f64) -> Error {
+    let tau = std::f64::consts::TAU;
+    let lo = f64::MIN_POSITIVE;
+    let hi = f64::MAX / (tau * unit1.max(unit3).max(1.0 / tau));
+    let (lo, hi, what) = match name {
+        "rms_height" => {
+            let s = (tau * unit1).sqrt();
+            (lo.sqrt() * s, hi.sqrt() * s, "the rms height, ")
+        }
+        "rms_slope" => {
+            let s = (tau * unit3).sqrt();
+            (lo.sqrt() * s, hi.sqrt() * s, "the rms slope, ")
+        }
+        _ => (lo, hi, ""),
+    };
+    Error::invalid(
+        name,
+        value,
+        format!(
+            "in [{}, {}] for these cut-offs and H, so that {what}C(q_r) and the height and \
+             slope variances 2π∫q C dq, 2π∫q³ C dq are finite, positive f64",
+            crate::error::approx(lo),
+            crate::error::approx(hi)
+        ),
+    )
 }
 
 impl Spectrum for SelfAffine {

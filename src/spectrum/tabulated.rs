@@ -201,6 +201,21 @@ impl Spectrum for Tabulated {
 
 /// Attach the file line of row `i` to an error about `q[i]` / `C[i]`.
 fn at_line(e: Error, path: &Path, lines: &[usize]) -> Error {
+    if let Error::InvalidParameter { name, value, .. } = &e {
+        if name == "number of spectrum points" {
+            // the whole file is at fault: name it (3.18 of the issue-37
+            // audit: "invalid number of spectrum points = 1", no file)
+            return Error::parse(
+                path,
+                0,
+                0,
+                format!(
+                    "{} data row(s): a tabulated spectrum needs at least 2 rows (q, C)",
+                    crate::error::num(*value)
+                ),
+            );
+        }
+    }
     if let Error::InvalidParameter {
         name,
         value,
@@ -217,7 +232,10 @@ fn at_line(e: Error, path: &Path, lines: &[usize]) -> Error {
                 path,
                 lines[row],
                 column,
-                format!("{name} = {value:e}: must be {requirement}"),
+                format!(
+                    "{name} = {}: must be {requirement}",
+                    crate::error::num(*value)
+                ),
             );
         }
     }

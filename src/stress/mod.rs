@@ -194,7 +194,7 @@ impl<'a> Solver<'a> {
         method: Method,
     ) -> Result<Self> {
         check::non_negative("g", g)?;
-        check::tolerance("tol", tol)?;
+        check::tolerance("tolerance", tol)?;
         let y = match yield_ratio {
             None => f64::INFINITY,
             Some(r) => {

@@ -60,8 +60,10 @@ impl StressScene {
     /// A flat punch at nominal pressure σ0 (Pa).
     ///
     /// # Errors
-    /// σ0 or σY not finite and positive; σY ≤ σ0.
+    /// σ0 (`nominal_pressure`) or σY not finite and positive; σY ≤ σ0.
     pub fn flat(nominal_pressure: f64, yield_stress: Option<f64>) -> Result<Self> {
+        // the flat start's peak pressure is σ0 itself: name the input given
+        check::positive("nominal_pressure", nominal_pressure)?;
         Self::new(Start::Flat, nominal_pressure, yield_stress)
     }
 

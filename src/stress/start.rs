@@ -153,9 +153,11 @@ impl TabulatedStart {
     ///
     /// # Errors
     /// Fewer than two points, lengths differ, σ not ascending/finite/≥ 0,
-    /// a density negative or non-finite, or ∫P0 dσ ≠ 1 within `tol`.
+    /// a density negative or non-finite, or ∫P0 dσ ≠ 1 within `tol`; `tol`
+    /// outside [1e-15, 0.1] (named `table_normalisation`, the option that
+    /// sets it).
     pub fn new(sigma: &[f64], density: &[f64], tol: f64) -> Result<Self> {
-        check::tolerance("tol", tol)?;
+        check::tolerance("table_normalisation", tol)?;
         if sigma.len() < 2 || sigma.len() != density.len() {
             return Err(Error::Inconsistent {
                 name: "start table".into(),

@@ -79,8 +79,9 @@ pub struct Analysis {
     /// line scans), dimensionless.
     pub rms_slope: f64,
     /// rms Laplacian (real space, 5-point; 2D-equivalent √(8/3)·h''_x for line
-    /// scans), 1/m.
-    pub rms_curvature: f64,
+    /// scans), 1/m; `None` (JSON `null`) when the map has no point with the
+    /// stencil's neighbours, with [`Note::CurvatureNotComputed`].
+    pub rms_curvature: Option<f64>,
     /// Half of `rms_curvature`: the rms mean curvature `∇²h/2`, 1/m. This is
     /// the number SurfaceTopography and contact.engineering call
     /// `rms_curvature` (`rms_curvature_from_area`); persson's
@@ -91,7 +92,8 @@ pub struct Analysis {
     /// ```text
     /// mean_curvature_rms = ½ √⟨(∇²h)²⟩ = rms_curvature / 2
     /// ```
-    pub mean_curvature_rms: f64,
+    /// `None` with `rms_curvature`.
+    pub mean_curvature_rms: Option<f64>,
     /// Line scans: rms slope along the profiles `h'_x` (real space, forward
     /// differences), dimensionless; `None` for maps.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -185,6 +187,12 @@ pub fn analyse(t: &Topography, options: &AnalysisOptions) -> Result<Analysis> {
         }
     };
     let real = real_space_stats(t, conditioning.detrend)?;
+    if real.rms_curvature.is_none() {
+        notes.push(Note::CurvatureNotComputed {
+            shape: t.shape(),
+            periodic: t.periodic(),
+        });
+    }
     let fit = hurst(&psd, profile.as_ref(), &mut notes);
     Ok(Analysis {
         shape: t.shape(),
@@ -196,7 +204,7 @@ pub fn analyse(t: &Topography, options: &AnalysisOptions) -> Result<Analysis> {
         rms_height: real.rms_height,
         rms_slope: real.rms_slope,
         rms_curvature: real.rms_curvature,
-        mean_curvature_rms: real.rms_curvature / 2.0,
+        mean_curvature_rms: real.rms_curvature.map(|c| c / 2.0),
         rms_slope_profile: real.rms_slope_profile,
         rms_curvature_profile: real.rms_curvature_profile,
         rms_height_from_spectrum: psd.rms_height,

@@ -202,11 +202,82 @@ impl Topography {
             return Err(Error::Inconsistent {
                 name: "heights".into(),
                 requirement: format!(
-                    "not all equal (every height is {h0}: a flat surface has no spectrum)"
+                    "every height is {}: a flat surface has no spectrum (it needs heights \
+                     not all equal)",
+                    crate::error::num(h0)
                 ),
             });
         }
-        Ok(())
+        self.check_scales()
+    }
+
+    /// Refuse heights (or a pixel size) whose statistics overflow: heights
+    /// of 1e290 m gave every moment and C(q) as ∞ with exit 0.
+    ///
+    /// # Bound
+    /// With s the span max h − min h, d the smaller pixel size and n the
+    /// number of points, the analysis sums n squares of the heights (≤ s),
+    /// of forward differences over d (≤ s/d), of 5-point Laplacians
+    /// (≤ 4s/d²), and the spectrum's |ĥ|² ≤ n²s² weighted by up to |q|⁴ ≤
+    /// (π√2/d)⁴ over n modes. All stay finite when each of s, s/d and 4s/d²
+    /// is at most B = √(f64::MAX/n)/(8n) (the factor n for the spectrum's
+    /// sum, 8 for the stencils' and π√2's constants), decided on
+    /// logarithms. The heights are named unless the pixel size is the
+    /// further from 1 in order of magnitude of the two.
+    fn check_scales(&self) -> Result<()> {
+        let (lo, hi) = self
+            .heights
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &h| {
+                (a.min(h), b.max(h))
+            });
+        let ln_span = (0.5 * hi - 0.5 * lo).ln() + std::f64::consts::LN_2;
+        let d = match self.layout {
+            Layout::Map => self.dx().min(self.dy()),
+            Layout::LineScans => self.dx(),
+        };
+        let n = (self.nx * self.ny) as f64;
+        let ln_b = 0.5 * (f64::MAX.ln() - n.ln()) - (8.0 * n).ln();
+        let ln_d = d.ln();
+        let worst = ln_span
+            .max(ln_span - ln_d)
+            .max(4f64.ln() + ln_span - 2.0 * ln_d);
+        if worst <= ln_b {
+            return Ok(());
+        }
+        let approx = crate::error::approx;
+        if ln_span.abs() >= ln_d.abs() {
+            // the largest span the pixel size d leaves
+            let span = (ln_b - 0f64.max(-ln_d).max(4f64.ln() - 2.0 * ln_d)).exp();
+            Err(Error::Inconsistent {
+                name: "heights".into(),
+                requirement: format!(
+                    "heights spanning at most {} (pixel size {}, {} points) so that their \
+                     squares, slopes and curvatures summed over the map stay finite; these \
+                     span {}",
+                    approx(span),
+                    crate::error::num(d),
+                    self.nx * self.ny,
+                    approx(ln_span.exp())
+                ),
+            })
+        } else {
+            // the smallest pixel size the span leaves: s/d ≤ B and 4s/d² ≤ B
+            let d_min = (ln_span - ln_b)
+                .exp()
+                .max((0.5 * (4f64.ln() + ln_span - ln_b)).exp());
+            Err(Error::invalid(
+                "pixel_size",
+                d,
+                format!(
+                    "at least {} (heights spanning {}, {} points) so that the slopes and \
+                     curvatures summed over the map stay finite",
+                    approx(d_min),
+                    approx(ln_span.exp()),
+                    self.nx * self.ny
+                ),
+            ))
+        }
     }
 
     /// Points along x (per row or profile).

@@ -33,6 +33,17 @@ pub enum Note {
         /// Its standard error.
         hurst_error: f64,
     },
+    /// The real-space curvature (5-point Laplacian; 3-point along line
+    /// scans) needs a point with neighbours on both sides: a non-periodic
+    /// map of fewer than 3 points along x or y (a line scan of fewer than 3
+    /// points) has none, so `rms_curvature` and `mean_curvature_rms` are not
+    /// given (they were NaN before issue 37).
+    CurvatureNotComputed {
+        /// `[ny, nx]` of the surface.
+        shape: [usize; 2],
+        /// Whether it was taken as periodic (then every point has them).
+        periodic: bool,
+    },
     /// Bins of a line scan's 1D spectrum whose local log-log slope is not
     /// below −1 (a noise floor, a few modes at low q) have no isotropic 2D
     /// counterpart ([`crate::spectrum::Convention::Profile1D`]) and were left

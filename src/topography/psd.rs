@@ -149,6 +149,21 @@ impl Psd {
     /// somewhere in the band cannot be interpolated in log-log).
     pub fn to_tabulated(&self) -> Result<Tabulated> {
         let pts: Vec<(f64, f64)> = self.q.iter().copied().zip(self.c.iter().copied()).collect();
+        if pts.len() < 2 {
+            // the user gave a map, not a table: say what is short (3.19 of
+            // the issue-37 audit: "invalid number of spectrum points = 1")
+            return Err(Error::Inconsistent {
+                name: "heights".into(),
+                requirement: format!(
+                    "a map large enough for a spectrum of at least 2 bins in its band; this one \
+                     gives {} (too few points, or a band from q_min = {} to q_max = {} 1/m too \
+                     narrow)",
+                    pts.len(),
+                    crate::error::num(self.q_min),
+                    crate::error::num(self.q_max)
+                ),
+            });
+        }
         Tabulated::new(&pts)
     }
 

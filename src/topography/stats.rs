@@ -35,12 +35,14 @@ pub struct RealSpaceStats {
     pub rms_height: f64,
     /// rms slope (forward differences), dimensionless.
     pub rms_slope: f64,
-    /// rms Laplacian (5-point), 1/m.
-    pub rms_curvature: f64,
+    /// rms Laplacian (5-point), 1/m; `None` when no point has the stencil's
+    /// neighbours (a non-periodic map of fewer than 3 points along x or y, a
+    /// line scan of fewer than 3 points).
+    pub rms_curvature: Option<f64>,
     /// Line scans: rms slope along the profiles, `rms(D⁺_x h)` (`None` for maps).
     pub rms_slope_profile: Option<f64>,
     /// Line scans: rms second derivative along the profiles, `rms(D²_x h)`,
-    /// 1/m (`None` for maps).
+    /// 1/m (`None` for maps, and for profiles of fewer than 3 points).
     pub rms_curvature_profile: Option<f64>,
 }
 
@@ -61,7 +63,7 @@ pub struct RealSpaceStats {
 /// let t = Topography::map(nx, ny, nx as f64 * d, ny as f64 * d, h, false)?;
 /// let s = real_space_stats(&t, Detrend::Mean)?;
 /// assert!((s.rms_slope - 0.01).abs() < 1e-15);
-/// assert!(s.rms_curvature.abs() < 1e-6);
+/// assert!(s.rms_curvature.unwrap().abs() < 1e-6);
 /// assert!(real_space_stats(&t, Detrend::Plane)?.rms_height < 1e-20);
 /// # Ok(()) }
 /// ```
@@ -92,15 +94,11 @@ pub fn real_space_stats(t: &Topography, detrend: Detrend) -> Result<RealSpaceSta
             }
             let (slope, curvature) = (
                 (s1 / n1 as f64).sqrt(),
-                if n2 > 0 {
-                    (s2 / n2 as f64).sqrt()
-                } else {
-                    f64::NAN
-                },
+                (n2 > 0).then(|| (s2 / n2 as f64).sqrt()),
             );
             (
                 2f64.sqrt() * slope,
-                (8.0f64 / 3.0).sqrt() * curvature,
+                curvature.map(|c| (8.0f64 / 3.0).sqrt() * c),
                 Some((slope, curvature)),
             )
         }
@@ -128,11 +126,7 @@ pub fn real_space_stats(t: &Topography, detrend: Detrend) -> Result<RealSpaceSta
             }
             (
                 (s1 / n1 as f64).sqrt(),
-                if n2 > 0 {
-                    (s2 / n2 as f64).sqrt()
-                } else {
-                    f64::NAN
-                },
+                (n2 > 0).then(|| (s2 / n2 as f64).sqrt()),
                 None,
             )
         }
@@ -142,6 +136,6 @@ pub fn real_space_stats(t: &Topography, detrend: Detrend) -> Result<RealSpaceSta
         rms_slope,
         rms_curvature,
         rms_slope_profile: profile.map(|p| p.0),
-        rms_curvature_profile: profile.map(|p| p.1),
+        rms_curvature_profile: profile.and_then(|p| p.1),
     })
 }
