@@ -822,6 +822,11 @@ fn note_state(n: &Note) -> NoteState {
             vec![*hurst, *hurst_error],
         ),
         Note::BinsLeftOut { q, of } => ("bins_left_out".into(), vec![*of], q.clone()),
+        Note::CurvatureNotComputed { shape, periodic } => (
+            "curvature_not_computed".into(),
+            vec![shape[0], shape[1], usize::from(*periodic)],
+            vec![],
+        ),
     }
 }
 
@@ -839,6 +844,10 @@ fn note_of_state((kind, ints, floats): NoteState) -> PyResult<Note> {
         ("bins_left_out", [of], q) => Note::BinsLeftOut {
             q: q.to_vec(),
             of: *of,
+        },
+        ("curvature_not_computed", [ny, nx, periodic], []) => Note::CurvatureNotComputed {
+            shape: [*ny, *nx],
+            periodic: *periodic != 0,
         },
         _ => return Err(value_error(format!("invalid pickled note '{kind}'"))),
     })

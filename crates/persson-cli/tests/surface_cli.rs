@@ -124,8 +124,8 @@ fn spectrum_of_the_reference_maps_is_the_library_analysis() {
         let scalars = [
             ("rms_height", a.rms_height),
             ("rms_slope", a.rms_slope),
-            ("rms_curvature", a.rms_curvature),
-            ("mean_curvature_rms", a.mean_curvature_rms),
+            ("rms_curvature", a.rms_curvature.unwrap()),
+            ("mean_curvature_rms", a.mean_curvature_rms.unwrap()),
             ("hurst", a.hurst.unwrap()),
             ("hurst_error", a.hurst_error.unwrap()),
             ("q_min", a.q_min),

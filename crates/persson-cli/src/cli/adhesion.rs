@@ -43,30 +43,8 @@ pub struct Args {
     format: Format,
 }
 
-/// The flag of a field the library names in an error.
-const FLAGS: &[(&str, &str)] = &[
-    ("work_of_adhesion", "--work-of-adhesion"),
-    ("nominal_pressure", "--pressure"),
-    ("zeta", "--zeta"),
-    ("points", "--points"),
-    ("adhesion_range", "--adhesion-range"),
-    ("tolerance", "--tolerance"),
-];
-
 /// Run `persson adhesion`.
 pub fn run(a: Args) -> anyhow::Result<()> {
-    if !(a.work_of_adhesion.is_finite() && a.work_of_adhesion >= 0.0) {
-        anyhow::bail!(
-            "--work-of-adhesion {}: must be finite and ≥ 0 (J/m²)",
-            a.work_of_adhesion
-        );
-    }
-    if let Some(r) = a.adhesion_range.filter(|r| !(r.is_finite() && *r > 0.0)) {
-        anyhow::bail!("--adhesion-range {r}: must be finite and > 0 (m)");
-    }
-    if let Some(p) = a.pressure.iter().find(|p| !p.is_finite()) {
-        anyhow::bail!("--pressure {p}: must be finite (≤ 0 is a tension)");
-    }
     let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
     let out = AdhesionOutput {
         work_of_adhesion: a.work_of_adhesion,
@@ -76,14 +54,6 @@ pub fn run(a: Args) -> anyhow::Result<()> {
         adhesion_range: a.adhesion_range,
         tolerance: Some(a.tolerance),
     };
-    let report = run::adhesion(&surface, &a.pressure, &out).map_err(name_flag)?;
+    let report = run::adhesion(&surface, &a.pressure, &out)?;
     print_warned(&report, &report.warnings, &a.format)
-}
-
-/// The library's error with the flag of the field it names.
-fn name_flag(e: persson::Error) -> anyhow::Error {
-    match super::args::flag_of(&e, FLAGS) {
-        Some(flag) => anyhow::anyhow!("{flag}: {e}"),
-        None => e.into(),
-    }
 }

@@ -19,17 +19,6 @@ pub mod example {
     pub const PRESSURES: [f64; 6] = persson_studies::scene::EXAMPLE_PRESSURES;
 }
 
-/// The flag of the field a library error names, looked up in a subcommand's
-/// table of (field, flag); `None` when the error names none of them.
-pub fn flag_of(e: &persson::Error, flags: &[(&str, &'static str)]) -> Option<&'static str> {
-    let field = match e {
-        persson::Error::InvalidParameter { name, .. } => name.as_str(),
-        persson::Error::Inconsistent { name, .. } => name.as_str(),
-        _ => return None,
-    };
-    flags.iter().find(|(k, _)| *k == field).map(|(_, f)| *f)
-}
-
 /// The power spectrum: a self-affine model or a tabulated file.
 #[derive(clap::Args, Debug, Clone, Default)]
 pub struct SpectrumArgs {

@@ -19,43 +19,60 @@ pub fn name_flag(cmd: &Command, m: &ArgMatches, e: anyhow::Error) -> anyhow::Err
     };
     let (cmd, m) = innermost(cmd, m);
     let (names, only_given) = match pe {
-        persson::Error::InvalidParameter { name, .. } => (vec![field(name)], true),
+        persson::Error::InvalidParameter { name, .. } => (vec![name.as_str()], true),
         persson::Error::Inconsistent { name, .. } => (fields(name), false),
         _ => return e,
     };
-    let flags: Vec<String> = names
-        .iter()
-        .map(|f| {
-            ALIASES
-                .iter()
-                .find(|(k, _)| k == f)
-                .map_or(*f, |(_, id)| *id)
-        })
-        .filter_map(|f| {
-            cmd.get_arguments().find(|a| {
-                a.get_id().as_str() == f
-                    && (!only_given
-                        || m.value_source(a.get_id().as_str()) == Some(ValueSource::CommandLine))
-            })
-        })
-        .filter_map(|a| a.get_long().map(|l| format!("--{l}")))
-        .collect();
+    let given = |id: &str| m.value_source(id) == Some(ValueSource::CommandLine);
+    let mut flags: Vec<String> = Vec::new();
+    for name in names {
+        let flag = ids(name).into_iter().find_map(|id| {
+            cmd.get_arguments()
+                .find(|a| a.get_id().as_str() == id && (!only_given || given(&id)))
+                .and_then(|a| a.get_long())
+        });
+        if let Some(long) = flag {
+            let f = format!("--{long}");
+            if !flags.contains(&f) {
+                flags.push(f);
+            }
+        }
+    }
     match flags.is_empty() {
         true => e,
         false => anyhow::anyhow!("{}: {e}", flags.join(", ")),
     }
 }
 
-/// Fields whose flag has another name (the names table of the numerics:
-/// the JSON key `nominal_pressure` is the flag `--pressure`).
-const ALIASES: [(&str, &str); 1] = [("nominal_pressure", "pressure")];
+/// Fields whose flag has another name: the names table's JSON key
+/// `nominal_pressure` is the flag `--pressure`, and `stress --flat`'s
+/// `--pressure` is its start's peak pressure.
+const ALIASES: [(&str, &str); 2] = [
+    ("nominal_pressure", "pressure"),
+    ("peak_pressure", "pressure"),
+];
 
-/// The argument id of a field's name, without an index or a sub-field
-/// (`gap_table[3]` → `gap_table`, `standard_linear_solid.tau` →
-/// `standard_linear_solid`).
-fn field(name: &str) -> &str {
-    let end = name.find(['[', '.', ' ']).unwrap_or(name.len());
-    &name[..end]
+/// The argument ids a field's name may be spelled by here, most specific
+/// first: `ball.radius` → `ball_radius`, `radius`, `ball`; `gap_table[3]` →
+/// `gap_table`; then its alias, if any.
+fn ids(name: &str) -> Vec<String> {
+    let name = name.split('[').next().unwrap_or(name);
+    let mut out = vec![name.replace('.', "_")];
+    if let Some((first, rest)) = name.split_once('.') {
+        out.push(rest.rsplit('.').next().unwrap_or(rest).to_string());
+        out.push(first.to_string());
+    }
+    let aliases: Vec<String> = out
+        .iter()
+        .flat_map(|id| {
+            ALIASES
+                .iter()
+                .filter(move |(k, _)| k == id)
+                .map(|(_, a)| a.to_string())
+        })
+        .collect();
+    out.extend(aliases);
+    out
 }
 
 /// The fields of a list of names (`mean_gap or approach`, `a, b and c`).
@@ -64,7 +81,7 @@ fn fields(name: &str) -> Vec<&str> {
     head.split([',', '/'])
         .flat_map(|p| p.split(" and "))
         .flat_map(|p| p.split(" or "))
-        .map(|p| field(p.trim()))
+        .map(str::trim)
         .filter(|p| !p.is_empty())
         .collect()
 }

@@ -69,60 +69,24 @@ impl TransportArgs {
         if !self.leakage && !self.conductance {
             return Ok(None);
         }
-        let flag = |e: persson::Error| anyhow::anyhow!("{}", flag_names(&e.to_string()));
         let seal = if self.leakage {
             let out = s.output(self.percolation_threshold, 1e-9)?;
-            Some(transport::seal(&out).map_err(flag)?)
+            Some(transport::seal(&out)?)
         } else {
             None
         };
         let request = TransportRequest::new(
-            transport::conductivity(&self.conductivity).map_err(flag)?,
-            transport::resistivity(&self.resistivity).map_err(flag)?,
-            transport::gap_law(self.gas_conductivity, self.mean_free_path, None).map_err(flag)?,
+            transport::conductivity(&self.conductivity)?,
+            transport::resistivity(&self.resistivity)?,
+            transport::gap_law(self.gas_conductivity, self.mean_free_path, None)?,
             seal,
         );
         let mut config = TransportCompareConfig::new(request);
         config.percolation_threshold = self.percolation_threshold;
         config.breaks = breaks;
-        config.validate(None, None).map_err(flag)?;
+        config.validate(None, None)?;
         Ok(Some(config))
     }
-}
-
-/// The library's field names, as whole words of `message`, as the flags
-/// that set them.
-fn flag_names(message: &str) -> String {
-    const FLAGS: [(&str, &str); 11] = [
-        ("percolation_threshold", "--percolation-threshold"),
-        ("viscosity", "--viscosity"),
-        ("pressure_drop", "--pressure-drop"),
-        ("inlet_pressure", "--inlet-pressure"),
-        ("outlet_pressure", "--outlet-pressure"),
-        ("seal_width", "--seal-width"),
-        ("seal_length", "--seal-length"),
-        ("gas_conductivity", "--gas-conductivity"),
-        ("mean_free_path", "--mean-free-path"),
-        ("conductivity", "--conductivity"),
-        ("resistivity", "--resistivity"),
-    ];
-    let mut out = String::with_capacity(message.len() + 8);
-    let mut word = String::new();
-    let flush = |word: &mut String, out: &mut String| {
-        let flag = FLAGS.iter().find(|(f, _)| f == word).map(|(_, g)| *g);
-        out.push_str(flag.unwrap_or(word));
-        word.clear();
-    };
-    for c in message.chars() {
-        if c.is_ascii_alphanumeric() || c == '_' {
-            word.push(c);
-        } else {
-            flush(&mut word, &mut out);
-            out.push(c);
-        }
-    }
-    flush(&mut word, &mut out);
-    out
 }
 
 /// `FILE.ext` → `FILE_<what>.ext`: the transport figures beside `--plot`'s.

@@ -8,7 +8,7 @@ use persson_studies::scene::{
     VelocityRange, VerticalShiftName, WlfSpec,
 };
 
-use super::args::{flag_of, spectrum_spec, MeasuredArgs, SpectrumArgs};
+use super::args::{spectrum_spec, MeasuredArgs, SpectrumArgs};
 use super::files::{in_file, InFile};
 use super::number::number;
 use super::output::{print_warned, Format};
@@ -151,27 +151,6 @@ impl RubberArgs {
     }
 }
 
-/// The flag of each field the library names in an error.
-const FLAGS: &[(&str, &str)] = &[
-    ("velocity", "--velocity"),
-    ("velocity_min", "--velocity-range"),
-    ("velocity_max", "--velocity-range"),
-    ("temperature", "--temperature"),
-    ("nominal_pressure", "--pressure"),
-    ("q1", "--q1"),
-    ("q1_rms_slope", "--q1-rms-slope"),
-    ("gamma", "--gamma"),
-    ("tolerance", "--tolerance"),
-    ("points_per_decade", "--points-per-decade"),
-    ("poisson", "--poisson"),
-    ("thermal_conductivity", "--thermal-conductivity"),
-    ("density", "--density"),
-    ("heat_capacity", "--heat-capacity"),
-    ("wlf_c1", "--wlf"),
-    ("wlf_c2", "--wlf"),
-    ("reference_temperature", "--reference-temperature"),
-];
-
 /// Run `persson friction`.
 pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
     let thermal = [
@@ -224,10 +203,7 @@ pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Resul
         plot: None,
     };
     let report =
-        friction(&spectrum, &rubber, &a.pressure, &out).map_err(|e| match flag_of(&e, FLAGS) {
-            Some(flag) => anyhow::anyhow!("{flag}: {e}"),
-            None => a.spectrum.psd_hint(e),
-        })?;
+        friction(&spectrum, &rubber, &a.pressure, &out).map_err(|e| a.spectrum.psd_hint(e))?;
     #[cfg(feature = "plot")]
     a.plot
         .draw(files, || persson_studies::scene::plot::friction(&report))?;

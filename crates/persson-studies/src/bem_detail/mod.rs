@@ -412,6 +412,7 @@ pub fn hertz_subsurface(
     poisson: f64,
     progress: &mut dyn FnMut(Iteration),
 ) -> Result<HertzSubsurface> {
+    case.check()?;
     let op = Operator::new(case.boundary, case.grid, case.size, case.e_star)?;
     let mut solver = Solver::new(op);
     let sol = solver.solve_observed(

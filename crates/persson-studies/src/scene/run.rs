@@ -201,16 +201,16 @@ pub fn kappa(surface: Option<(&RoughContact, &[f64])>) -> Result<KappaReport> {
             check::positive("nominal_pressure", p)?;
             r.points.push(LinearPoint {
                 nominal_pressure: p,
-                contact_fraction_bush_linear: Kappa::Bush.linear_fraction(
+                contact_fraction_bush_linear: Kappa::Bush.checked_linear_fraction(
                     p,
                     s.contact_modulus,
                     slope,
-                ),
-                contact_fraction_persson_linear: Kappa::Persson.linear_fraction(
+                )?,
+                contact_fraction_persson_linear: Kappa::Persson.checked_linear_fraction(
                     p,
                     s.contact_modulus,
                     slope,
-                ),
+                )?,
             });
         }
     }
@@ -411,8 +411,29 @@ pub fn stress_physical(surface: &RoughContact, out: &StressOutput) -> Result<Str
     // σ from 0 to σY, or (elastic) to σH plus four standard deviations
     // √(2G) σ0 of the widest curve.
     let mut g_max = 0.0f64;
+    // The mean pressure of a ball or cylinder comes from its radius and load:
+    // a pressure G cannot take is theirs.
+    let given = match (&out.ball, &out.cylinder) {
+        (Some(_), _) => "ball.radius, ball.load",
+        (_, Some(_)) => "cylinder.radius, cylinder.load_per_length",
+        _ => "peak_pressure",
+    };
     for &z in &out.zeta {
-        g_max = g_max.max(model.g(z, problem.nominal_pressure())?.value);
+        let g = model
+            .g(z, problem.nominal_pressure())
+            .map_err(|e| match e {
+                Error::InvalidParameter {
+                    name, requirement, ..
+                } if name == "nominal_pressure" => Error::Inconsistent {
+                    name: given.into(),
+                    requirement: format!(
+                        "a mean pressure σ0 = {} of the contact that G can take: {requirement}",
+                        crate::table::number(problem.nominal_pressure(), 4)
+                    ),
+                },
+                e => e,
+            })?;
+        g_max = g_max.max(g.value);
     }
     let top = out
         .yield_stress

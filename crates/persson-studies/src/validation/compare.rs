@@ -452,6 +452,10 @@ fn compare_on(
     progress: &mut dyn FnMut(SweepProgress),
 ) -> Result<Comparison> {
     let e_star = check::positive("contact_modulus", config.contact_modulus)?;
+    if let Some(p) = config.histogram_pressure {
+        check::positive("histogram_pressure", p)?;
+    }
+    check_bins(config.bins)?;
     let (sweep_config, q_s, setup_warning) = sweep_setup(spectrum, map, config)?;
     let band = BandLimited::new(spectrum, q_s)?;
     let (q_l, q_max) = (spectrum.q_min(), band.q_max());
@@ -567,7 +571,7 @@ fn compare_on(
         None => None,
     };
 
-    let distributions = pressure_distributions(&sw, &model, check_bins(config.bins)?)?;
+    let distributions = pressure_distributions(&sw, &model, config.bins)?;
     let finest = sw.mean_contact_fraction().pop().unwrap_or(SeedMean {
         mean: vec![],
         standard_error: vec![],

@@ -83,7 +83,8 @@ pub struct ResolvedBand {
 /// ```
 ///
 /// # Errors
-/// Non-positive `q_l` or `pixels_per_wavelength`.
+/// Non-positive `q_l` or `pixels_per_wavelength`; `pixels_per_wavelength`
+/// at or above the coarsest grid side (no wavevector above q_l resolved).
 pub fn resolve_q_s(
     q_l: f64,
     requested: Option<f64>,
@@ -93,6 +94,13 @@ pub fn resolve_q_s(
     check::positive("q_l", q_l)?;
     check::positive("pixels_per_wavelength", pixels_per_wavelength)?;
     let q_max = resolvable_q_max(q_l, coarsest, pixels_per_wavelength);
+    if q_max.is_nan() || q_max <= q_l {
+        return Err(persson::Error::invalid(
+            "pixels_per_wavelength",
+            pixels_per_wavelength,
+            format!("below the coarsest grid side {coarsest} (then some wavevector above q_l is resolved)"),
+        ));
+    }
     Ok(match requested {
         Some(q) if q > q_max => ResolvedBand {
             q_s: q_max,

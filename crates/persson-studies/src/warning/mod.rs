@@ -42,6 +42,14 @@ pub const SUM_BAND_RATIO: f64 = 10.0;
 #[serde(remote = "Self", tag = "kind", rename_all = "snake_case")]
 #[non_exhaustive]
 pub enum Warning {
+    /// A measured map too small for a curvature (fewer than 3 points along
+    /// x or y, not periodic): h''_rms and the rms mean curvature are `null`.
+    CurvatureNotComputed {
+        /// The file.
+        file: PathBuf,
+        /// `[ny, nx]` of the map.
+        shape: [usize; 2],
+    },
     /// A quantity of a report could not be computed (it came out NaN or
     /// ±∞): it is printed as `–` in text, empty in CSV and `null` in JSON.
     NotComputed {
@@ -404,10 +412,11 @@ impl Warning {
     /// `adhesive_not_converged`, `master_curve_range`, `friction_not_converged`, `shift_table_extended`,
     /// `sum_bands`, `measurement_gap`, `sealed`, `small_bandwidth`, `coalescence`,
     /// `curvature_unresolved`, `beyond_pull_off`, `adhesion_tolerance_not_met`,
-    /// `long_adhesion_range`, `not_computed`).
+    /// `long_adhesion_range`, `not_computed`, `curvature_not_computed`).
     pub fn kind(&self) -> &'static str {
         match self {
             Warning::NotComputed { .. } => "not_computed",
+            Warning::CurvatureNotComputed { .. } => "curvature_not_computed",
             Warning::HighPressure { .. } => "high_pressure",
             Warning::SteepSlope { .. } => "steep_slope",
             Warning::ZetaBeyondBand { .. } => "zeta_beyond_band",
@@ -555,6 +564,10 @@ pub fn of_notes(file: &std::path::Path, notes: &[persson::topography::Note]) -> 
                 file: file.clone(),
                 hurst: *hurst,
                 hurst_error: *hurst_error,
+            },
+            Note::CurvatureNotComputed { shape, .. } => Warning::CurvatureNotComputed {
+                file: file.clone(),
+                shape: *shape,
             },
             Note::BinsLeftOut { q, of } => Warning::BinsLeftOut {
                 file: file.clone(),

@@ -21,6 +21,14 @@ impl fmt::Display for Warning {
                  came out NaN or infinite; shown as – and null)",
                 if *count == 1 { "" } else { "s" }
             ),
+            Warning::CurvatureNotComputed { file, shape } => write!(
+                f,
+                "{}: no curvature (h''_rms, rms mean curvature: null): the map has {} × {} \
+                 points, and a curvature needs at least 3 along x and y (or a periodic map)",
+                file.display(),
+                shape[0],
+                shape[1]
+            ),
             Warning::HighPressure {
                 nominal_pressure,
                 contact_modulus,
