@@ -73,7 +73,7 @@ fn conductance<'py>(
     let pressures = float_list("pressure", pressure)?;
     let surface = spectrum.contact(contact_modulus)?;
     let table = match gap_table {
-        None => vec![],
+        None => None,
         Some((u, a)) => {
             let (u, a) = (float_list("gap_table", &u)?, float_list("gap_table", &a)?);
             if u.len() != a.len() {
@@ -83,7 +83,7 @@ fn conductance<'py>(
                     a.len()
                 )));
             }
-            u.into_iter().zip(a).collect()
+            Some(u.into_iter().zip(a).collect())
         }
     };
     let out = ConductanceOutput {
