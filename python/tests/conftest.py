@@ -9,6 +9,7 @@ release build of this repository.
 
 import json
 import os
+import re
 import pathlib
 import subprocess
 
@@ -32,7 +33,9 @@ def run_cli(*args, cwd=None):
 
 
 def cli_error(*args, cwd=None):
-    """The CLI's one-line error (without the `persson: error: ` prefix)."""
+    """The CLI's one-line error without the `persson: error: ` prefix and
+    without the flags the CLI names before the library's text (`--hurst: `):
+    the text Python gives for the same input."""
     r = subprocess.run(
         [BIN, *map(str, args)],
         capture_output=True,
@@ -44,7 +47,7 @@ def cli_error(*args, cwd=None):
     line = r.stderr.strip().splitlines()[-1]
     prefix = "persson: error: "
     assert line.startswith(prefix), r.stderr
-    return line[len(prefix):]
+    return re.sub(r"^--[a-z0-9-]+(, --[a-z0-9-]+)*: ", "", line[len(prefix):])
 
 
 def strip(value, drop=("seconds",)):
