@@ -29,19 +29,6 @@ use serde::Serialize;
 /// A library error as a Python exception: `OSError` when a file could not
 /// be read or written, `ValueError` otherwise; the message is the CLI's.
 pub(crate) fn err(e: persson::Error) -> PyErr {
-    // Python spells the nominal pressure `pressure`, as the CLI's flag.
-    let e = match e {
-        persson::Error::InvalidParameter {
-            name,
-            value,
-            requirement,
-        } if name == "nominal_pressure" => persson::Error::InvalidParameter {
-            name: "pressure".into(),
-            value,
-            requirement,
-        },
-        e => e,
-    };
     match e {
         persson::Error::Io { .. } => PyOSError::new_err(e.to_string()),
         _ => PyValueError::new_err(e.to_string()),

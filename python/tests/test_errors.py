@@ -81,7 +81,7 @@ def test_non_contiguous_and_non_square_heights():
 def test_nan_and_negative_values_name_the_argument():
     with pytest.raises(ValueError) as e:
         persson.contact_area(S, 1e9, [1e6, np.nan])
-    assert message(e) == "invalid pressure = NaN: must be finite and > 0"
+    assert message(e) == "invalid nominal_pressure = NaN: must be finite and > 0"
     h = H.copy()
     h[2, 3] = np.nan
     with pytest.raises(ValueError, match=r"^invalid height\[2, 3\] = NaN: must be finite"):
