@@ -1,6 +1,6 @@
 //! Issue 37: no non-finite number reaches a result, and an input beyond what
 //! f64 or a route resolves is refused with an error naming that input (the
-//! cases of the audit, /work/audit/37-findings.md, by its numbers).
+//! cases of the issue's audit).
 
 use persson::adhesion::{AdhesionModel, AdhesiveContact};
 use persson::conductance::{Conductance, ConductanceOptions, Conductivity, GapLaw};
@@ -234,6 +234,7 @@ fn adhesion_beyond_f64_is_refused_naming_the_input() {
 /// The issue's adhesive `bem rough --mean-gap 1e300` (ε = NaN) and 2.15
 /// (Δγ = 1e300: ε NaN), 2.17 (ρ = 1e-300: ∞ in the pull-off table).
 #[test]
+#[cfg(feature = "bem")]
 fn adhesive_bem_refuses_a_mean_gap_or_a_law_beyond_f64() {
     use persson::bem::adhesive::{AdhesiveOptions, AdhesiveSolver, CohesiveLaw};
     use persson::bem::{Boundary, Operator};
@@ -606,6 +607,7 @@ fn a_gas_law_whose_slope_overflows_is_refused() {
 /// 3.21: a 3 × 3 map given to the BEM was refused as "grid = 3e0: must be
 /// between 8 and 32768", naming an option the user did not give.
 #[test]
+#[cfg(feature = "bem")]
 fn a_map_too_small_for_the_bem_says_its_size() {
     use persson::bem::surface::GridSurface;
     let e = GridSurface::new(
@@ -632,6 +634,7 @@ fn a_map_too_small_for_the_bem_says_its_size() {
 /// "pressure = 0"), 2.16 and 3.27 (E* = 1e300: NaN stresses, "maugis_parameter
 /// = 0").
 #[test]
+#[cfg(feature = "bem")]
 fn the_hertz_case_names_the_scale_f64_cannot_carry() {
     use persson::adhesion::MaugisDugdale;
     use persson::bem::hertz::HertzCase;
@@ -674,6 +677,7 @@ fn the_hertz_case_names_the_scale_f64_cannot_carry() {
 /// residual 2.67": the rounding ε p̄ alone exceeds the tolerance of the
 /// pressure scale E* h'_rms. Refused beyond τ E* h'_rms/(8ε).
 #[test]
+#[cfg(feature = "bem")]
 fn the_bem_refuses_a_pressure_whose_rounding_exceeds_its_tolerance() {
     use persson::bem::surface::synthesize;
     use persson::bem::{Boundary, Control, Operator, Options, Solver};
@@ -702,6 +706,7 @@ fn the_bem_refuses_a_pressure_whose_rounding_exceeds_its_tolerance() {
 /// C[0] = inf"), 3.18 (one row: "invalid number of spectrum points = 1",
 /// no file) and 3.19 (a 2 × 2 map: the same words for a map).
 #[test]
+#[cfg(feature = "topography")]
 fn spectrum_files_and_maps_name_what_is_wrong() {
     use persson::spectrum::{Convention, Tabulated};
     use persson::topography::{analyse, AnalysisOptions, Topography};
@@ -739,6 +744,7 @@ fn spectrum_files_and_maps_name_what_is_wrong() {
 
 /// 2.2: heights of 1e290 m gave every moment and C(q) as ∞ (exit 0).
 #[test]
+#[cfg(feature = "topography")]
 fn heights_whose_statistics_overflow_are_refused() {
     use persson::topography::Topography;
     let n = 32;
