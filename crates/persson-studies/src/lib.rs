@@ -29,15 +29,31 @@
 #[cfg(all(doctest, feature = "bem", feature = "topography"))]
 mod guide;
 
+pub mod adhesion;
+pub mod area;
 pub mod asperity;
+pub mod bem;
+pub mod bem_adhesion;
 #[cfg(feature = "bem")]
 pub mod bem_detail;
+pub mod bem_hertz;
+pub mod conductance;
+pub mod friction;
+pub mod kappa;
+pub mod leakage;
+pub mod magnification;
 pub mod output;
 #[cfg(feature = "plot")]
 pub mod plot;
 pub mod report;
 pub mod scene;
+pub mod separation;
+pub mod separation_density;
+pub mod spectrum;
+pub mod stress;
+pub mod study;
 pub mod table;
+pub mod theories;
 pub mod validation;
 pub mod warning;
 

@@ -94,7 +94,7 @@ mod bem {
         let s = parse(&rough(r#"{"bem": {"grid": 32, "seed": 9}}"#)).unwrap();
         let r = s.run().unwrap();
         assert!(r.area.is_none() && r.bem_hertz.is_none(), "only bem");
-        let b = r.bem.unwrap();
+        let b = r.bem.unwrap().rough;
         assert_eq!(
             (b.grid, b.surface.seed(), b.boundary.name()),
             (32, Some(9), "periodic")
@@ -137,7 +137,7 @@ mod bem {
             .iter()
             .any(|(field, p, _)| *field == "outputs.bem.histogram" && *p == dir.join("h.csv")));
         let r = s.run().unwrap();
-        let b = r.bem.as_ref().unwrap();
+        let b = &r.bem.as_ref().unwrap().rough;
         assert_eq!(b.boundary.name(), "free");
         for pt in &b.points {
             let h = pt.histogram.as_ref().unwrap();
@@ -178,14 +178,16 @@ mod bem {
             .run()
             .unwrap()
             .bem
-            .unwrap();
+            .unwrap()
+            .rough;
         assert_eq!(from_map.surface.seed(), None);
         let synthesised = parse(&rough(r#"{"bem": {"grid": 32, "seed": 9}}"#))
             .unwrap()
             .run()
             .unwrap()
             .bem
-            .unwrap();
+            .unwrap()
+            .rough;
         for (a, b) in from_map.points.iter().zip(&synthesised.points) {
             assert_eq!(a.contact_fraction, b.contact_fraction);
         }
@@ -232,8 +234,8 @@ mod bem {
         let scene = parse(&text).unwrap();
         let nu = 0.25;
         let r = scene.run().unwrap();
-        let bem = r.bem.as_ref().unwrap();
-        let patches = r.bem_patches.as_ref().unwrap();
+        let bem = &r.bem.as_ref().unwrap().rough;
+        let patches = r.bem.as_ref().unwrap().patches.as_ref().unwrap();
         let size = 1.0; // L = 2π/q_l
         for (p, b) in patches.points.iter().zip(&bem.points) {
             let areas: f64 = p.area_distribution.iter().map(|x| x.count).sum::<usize>() as f64;
@@ -243,7 +245,7 @@ mod bem {
                     < AREA_SUM
             );
         }
-        let sub = r.bem_subsurface.as_ref().unwrap();
+        let sub = r.bem.as_ref().unwrap().subsurface.as_ref().unwrap();
         for (p, &sigma0) in sub.points.iter().zip(&[0.001, 0.003, 0.01]) {
             let deep = p.report.planes[1].von_mises_stress.value;
             let uniform = sigma0 * (1.0 - 2.0 * nu) / (1.0 - nu);

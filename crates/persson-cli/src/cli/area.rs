@@ -1,9 +1,11 @@
 //! `persson area`: A/A0 against nominal pressure (the scene output `area`).
 
-use persson_studies::scene::{run, AreaOutput, TheoryName};
+use persson_studies::area::Area;
+use persson_studies::scene::{AreaOutput, TheoryName};
+use persson_studies::study::Context;
 
 use super::args::{measured_contact, pressures, MaterialArgs, MeasuredArgs, SpectrumArgs};
-use super::output::{print_warned, Format};
+use super::output::Format;
 
 /// Arguments of `persson area`.
 #[derive(clap::Args, Debug)]
@@ -66,11 +68,8 @@ pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Resul
         gamma: a.theory.gamma,
         tolerance: Some(a.theory.tolerance),
         yield_stress: a.yield_stress,
-        plot: None,
+        plot: a.plot.path(),
     };
-    let report = run::area(&surface, &pressures, &out)?;
-    #[cfg(feature = "plot")]
-    a.plot
-        .draw(files, || persson_studies::scene::plot::area(&report))?;
-    print_warned(&report, &report.warnings, &a.format)
+    let ctx = Context::with_contact(surface, &pressures);
+    super::study::run::<Area>(&ctx, &out, files, &a.format)
 }

@@ -2,11 +2,13 @@
 //! load, through the contact spots (Barber's identity on Persson's stiffness)
 //! and through the gap (over P(u)); the scene output `conductance`.
 
-use persson_studies::scene::{transport, ConductanceOutput};
+use persson_studies::conductance::Conductance;
+use persson_studies::scene::ConductanceOutput;
+use persson_studies::study::Context;
 
 use super::args::{measured_contact, pressures, MaterialArgs, MeasuredArgs, SpectrumArgs};
 use super::number::number;
-use super::output::{print_warned, Format};
+use super::output::Format;
 
 /// Arguments of `persson conductance`.
 #[derive(clap::Args, Debug)]
@@ -59,13 +61,10 @@ pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Resul
         gap_table,
         tolerance: Some(a.tolerance),
         bem: None,
-        plot: None,
+        plot: a.plot.path(),
     };
-    let report = transport::conductance(&surface, &pressures, &out)?;
-    #[cfg(feature = "plot")]
-    a.plot
-        .draw(files, || persson_studies::scene::plot::conductance(&report))?;
-    print_warned(&report, &report.warnings, &a.format)
+    let ctx = Context::with_contact(surface, &pressures);
+    super::study::run::<Conductance>(&ctx, &out, files, &a.format)
 }
 
 /// The (u, α) pairs of a `--gap-table` file, checked by the gap law's own

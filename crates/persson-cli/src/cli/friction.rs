@@ -3,10 +3,12 @@
 //! Phys. 115, 3840 (2001); J. Phys.: Condens. Matter 18, 7789 (2006)).
 
 use anyhow::bail;
+use persson_studies::friction::Friction;
 use persson_studies::scene::{
     friction, FrequencyUnitName, FrictionOutput, RubberSpec, StandardLinearSolidSpec,
     VelocityRange, VerticalShiftName, WlfSpec,
 };
+use persson_studies::study::{Context, Inputs, Reads, Study};
 
 use super::args::{spectrum_spec, MeasuredArgs, SpectrumArgs};
 use super::files::{in_file, InFile};
@@ -200,12 +202,17 @@ pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Resul
         tolerance: Some(a.tolerance),
         points_per_decade: Some(a.points_per_decade),
         flash_temperature: a.flash_temperature,
-        plot: None,
+        plot: a.plot.path(),
     };
     let report =
         friction(&spectrum, &rubber, &a.pressure, &out).map_err(|e| a.spectrum.psd_hint(e))?;
-    #[cfg(feature = "plot")]
-    a.plot
-        .draw(files, || persson_studies::scene::plot::friction(&report))?;
-    print_warned(&report, &report.warnings, &a.format)
+    let inputs = Inputs {
+        spectrum: Some(&spectrum),
+        material: None,
+        rubber: Some(&rubber),
+        nominal_pressure: &a.pressure,
+    };
+    let ctx = Context::new(inputs, Reads::NOTHING)?;
+    Friction::write(&out, &report, &ctx, std::path::Path::new(""), files)?;
+    print_warned(&report, &Friction::warnings(&report), &a.format)
 }

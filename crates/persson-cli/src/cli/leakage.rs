@@ -2,11 +2,11 @@
 //! critical-junction and the effective-medium theories; the scene output
 //! `leakage`.
 
-use persson_studies::scene::{transport, LeakageOutput};
+use persson_studies::scene::LeakageOutput;
 
 use super::args::{measured_contact, pressures, MaterialArgs, MeasuredArgs, SpectrumArgs};
 use super::number::number;
-use super::output::{print_warned, Format};
+use super::output::Format;
 
 /// Arguments of `persson leakage`.
 #[derive(clap::Args, Debug)]
@@ -90,12 +90,10 @@ impl SealArgs {
 
 /// Run `persson leakage`.
 pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
-    let out = a.seal.output(a.percolation_threshold, a.tolerance)?;
+    let mut out = a.seal.output(a.percolation_threshold, a.tolerance)?;
+    out.plot = a.plot.path();
     let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
     let pressures = pressures(&a.pressure, a.spectrum.example)?;
-    let report = transport::leakage(&surface, &pressures, &out)?;
-    #[cfg(feature = "plot")]
-    a.plot
-        .draw(files, || persson_studies::scene::plot::leakage(&report))?;
-    print_warned(&report, &report.warnings, &a.format)
+    let ctx = persson_studies::study::Context::with_contact(surface, &pressures);
+    super::study::run::<persson_studies::leakage::Leakage>(&ctx, &out, files, &a.format)
 }

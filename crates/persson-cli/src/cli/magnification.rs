@@ -1,10 +1,10 @@
 //! `persson magnification` (alias `g`): G(ζ) and A/A0 against magnification
 //! (the scene output `magnification`).
 
-use persson_studies::scene::{run, MagnificationOutput};
+use persson_studies::scene::MagnificationOutput;
 
 use super::args::{measured_contact, MaterialArgs, MeasuredArgs, SpectrumArgs};
-use super::output::{print_warned, Format};
+use super::output::Format;
 
 /// Arguments of `persson magnification`.
 #[derive(clap::Args, Debug)]
@@ -45,17 +45,9 @@ pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Resul
         nominal_pressure,
         zeta: a.zeta.clone(),
         points: a.points,
-        plot: None,
-        plot_g: None,
+        plot: a.plot.path(),
+        plot_g: a.plot_g.as_deref().map(std::path::Path::to_path_buf),
     };
-    let report = run::magnification(&surface, &out)?;
-    #[cfg(feature = "plot")]
-    {
-        use persson_studies::scene::plot;
-        a.plot.draw(files, || plot::magnification_area(&report))?;
-        super::plot::draw(files, a.plot_g.as_deref(), || {
-            plot::magnification_g(&report)
-        })?;
-    }
-    print_warned(&report, &report.warnings, &a.format)
+    let ctx = persson_studies::study::Context::with_contact(surface, &[]);
+    super::study::run::<persson_studies::magnification::Magnification>(&ctx, &out, files, &a.format)
 }

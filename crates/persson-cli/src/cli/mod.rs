@@ -39,6 +39,7 @@ mod run;
 mod separation;
 mod spectrum;
 mod stress;
+mod study;
 
 use clap::{Parser, Subcommand};
 

@@ -10,8 +10,6 @@
 
 use std::path::Path;
 
-use persson_studies::output::Files;
-
 use super::files::{out_file, OutFile};
 
 /// The `--plot` flag.
@@ -23,11 +21,16 @@ pub struct PlotArg {
 }
 
 impl PlotArg {
+    /// The `--plot` file, as a study's spec names it.
+    pub fn path(&self) -> Option<std::path::PathBuf> {
+        self.plot.as_deref().map(Path::to_path_buf)
+    }
+
     /// Stages the figure made by `build` for the `--plot` file, if given.
     #[cfg(feature = "plot")]
     pub fn draw<F: persson_studies::plot::Encode>(
         &self,
-        files: &mut Files,
+        files: &mut persson_studies::output::Files,
         build: impl FnOnce() -> persson::Result<F>,
     ) -> anyhow::Result<()> {
         draw(files, self.plot.as_deref(), build)
@@ -38,23 +41,12 @@ impl PlotArg {
 /// its extension); written when the whole command has succeeded.
 #[cfg(feature = "plot")]
 pub fn draw<F: persson_studies::plot::Encode>(
-    files: &mut Files,
+    files: &mut persson_studies::output::Files,
     path: Option<&Path>,
     build: impl FnOnce() -> persson::Result<F>,
 ) -> anyhow::Result<()> {
     if let Some(p) = path {
         files.write(p, &build()?.encode(p)?)?;
     }
-    Ok(())
-}
-
-/// Without the feature `plot` no output flag names a plot (refused by
-/// [`super::files::plan`]): nothing to draw.
-#[cfg(not(feature = "plot"))]
-pub fn draw<F>(
-    _: &mut Files,
-    _: Option<&Path>,
-    _: impl FnOnce() -> persson::Result<F>,
-) -> anyhow::Result<()> {
     Ok(())
 }

@@ -33,6 +33,7 @@ enum Which {
 }
 
 /// Run `persson report`.
+#[cfg_attr(not(feature = "plot"), allow(unused_variables))]
 pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
     match a.which {
         Which::Accuracy { full, format, plot } => {

@@ -47,6 +47,7 @@ pub struct Args {
 }
 
 /// Run `persson separation`.
+#[cfg_attr(not(feature = "plot"), allow(unused_variables))]
 pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
     let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
     let pressures = pressures(&a.pressure, a.spectrum.example)?;

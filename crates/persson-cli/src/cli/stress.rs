@@ -138,6 +138,7 @@ pub struct Args {
 }
 
 /// Run `persson stress`.
+#[cfg_attr(not(feature = "plot"), allow(unused_variables))]
 pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
     if a.ball_radius.is_some() || a.cylinder_radius.is_some() || a.flat || a.peak_pressure.is_some()
     {
@@ -222,13 +223,10 @@ fn physical(a: &Args, files: &mut persson_studies::output::Files) -> anyhow::Res
         yield_stress: a.yield_stress,
         points: a.points,
         tolerance: a.tolerance,
-        plot: None,
+        plot: a.plot.path(),
     };
-    let report = run::stress_physical(&surface, &out)?;
-    #[cfg(feature = "plot")]
-    a.plot
-        .draw(files, || persson_studies::scene::plot::stress(&report))?;
-    print_warned(&report, &report.warnings, &a.format)
+    let ctx = persson_studies::study::Context::with_contact(surface, &[]);
+    super::study::run::<persson_studies::stress::Stress>(&ctx, &out, files, &a.format)
 }
 
 /// Two columns of numbers; `#` starts a comment.

@@ -5,7 +5,7 @@
 //! A surface with a lay varies slowly along it, so its power lies in a band
 //! *across* the lay in the q-plane: the drawn line runs along the lay and
 //! the bright band perpendicular to it. Like [`super::Figure`] a
-//! [`SpectrumMapFigure`] is plain data, drawn by [`render_spectrum_map`] into an
+//! [`SpectrumMapFigure`] is plain data, drawn by [`super::render`] into an
 //! `.svg` or `.png` file (atomically) or by [`render_spectrum_map_svg_string`].
 //!
 //! Grids finer than [`super::map::MAP_CELLS`] per side are drawn in blocks,

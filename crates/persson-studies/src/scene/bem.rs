@@ -8,7 +8,7 @@ use persson::error::{check, Error, Result};
 
 use super::report::{BemHertzReport, BemHertzRow};
 use super::run::prefix;
-use super::schema::{required, BemHertzOutput, BemOutput, BoundaryName, Scene, SpectrumSpec};
+use super::schema::{required, BemHertzOutput, BemOutput, BoundaryName, SpectrumSpec};
 use crate::bem_detail::{Details, SubsurfaceOptions, DEFAULT_POISSON};
 
 /// `outputs.bem_hertz`: η per grid.
@@ -71,12 +71,12 @@ pub fn bem_hertz(h: &BemHertzOutput) -> Result<BemHertzReport> {
 /// The rigid surface of a BEM output (`section`, e.g. `outputs.bem.`): the
 /// height map, or synthesised from the spectrum on `grid` nodes with `seed`.
 fn bem_surface(
-    scene: &Scene,
+    ctx: &crate::study::Context<'_>,
     (section, grid, seed): (&str, Option<usize>, Option<u64>),
     boundary: persson::bem::Boundary,
 ) -> Result<surface::GridSurface> {
     let named = |e: Error| prefix(section, e);
-    if let Some(SpectrumSpec::HeightMap(m)) = &scene.spectrum {
+    if let Some(SpectrumSpec::HeightMap(m)) = ctx.inputs.spectrum {
         if grid.is_some() || seed.is_some() {
             return Err(Error::Inconsistent {
                 name: format!("{section}grid / {section}seed"),
@@ -98,7 +98,7 @@ fn bem_surface(
     }
     let n = grid.ok_or_else(|| required(&format!("{section}grid (for a synthesised surface)")))?;
     check_memory(n, boundary).map_err(named)?;
-    let spectrum = scene.spectrum()?;
+    let spectrum = ctx.build_spectrum()?;
     let size = std::f64::consts::TAU / spectrum.q_min();
     surface::synthesize(spectrum.as_ref(), n, size, seed.unwrap_or(1)).map_err(named)
 }
@@ -108,22 +108,22 @@ fn bem_surface(
 ///
 /// # Errors
 /// Missing or invalid inputs; a solve that fails.
-pub fn bem_rough(scene: &Scene, b: &BemOutput) -> Result<(RoughReport, Details)> {
+pub fn bem_rough(ctx: &crate::study::Context<'_>, b: &BemOutput) -> Result<(RoughReport, Details)> {
     let named = |e: Error| prefix("outputs.bem.", e);
     let boundary = b.boundary.unwrap_or(BoundaryName::Periodic).into();
     let tol = check::tolerance("tolerance", b.tolerance.unwrap_or(1e-10)).map_err(named)?;
     let bins = crate::validation::check_bins(b.bins.unwrap_or(crate::validation::DEFAULT_BINS))
         .map_err(named)?;
-    if scene.nominal_pressure.is_empty() {
+    if ctx.nominal_pressure().is_empty() {
         return Err(required(
             "nominal_pressure (a non-empty list, for outputs.bem)",
         ));
     }
-    let e_star = scene.material()?.contact_modulus();
-    let surf = bem_surface(scene, ("outputs.bem.", b.grid, b.seed), boundary)?;
-    let source = match &scene.spectrum {
+    let e_star = ctx.build_material()?.contact_modulus();
+    let surf = bem_surface(ctx, ("outputs.bem.", b.grid, b.seed), boundary)?;
+    let source = match ctx.inputs.spectrum {
         Some(SpectrumSpec::HeightMap(m)) => SurfaceOrigin::height_map(&m.file),
-        _ => SurfaceOrigin::synthesised(scene.spectrum()?.as_ref(), b.seed.unwrap_or(1))?,
+        _ => SurfaceOrigin::synthesised(ctx.build_spectrum()?.as_ref(), b.seed.unwrap_or(1))?,
     };
     let options = RoughOptions {
         boundary,
@@ -136,12 +136,12 @@ pub fn bem_rough(scene: &Scene, b: &BemOutput) -> Result<(RoughReport, Details)>
         bins: b.histogram.as_ref().map(|_| bins),
         ..RoughOptions::default()
     };
-    let mut details = details(scene, b, (surf.n, surf.size, boundary))?;
+    let mut details = details(ctx, b, (surf.n, surf.size, boundary))?;
     let report = rough::rough_contact(
         &surf,
         source,
         e_star,
-        &scene.nominal_pressure,
+        ctx.nominal_pressure(),
         &options,
         &mut details,
     )
@@ -156,7 +156,7 @@ pub fn bem_rough(scene: &Scene, b: &BemOutput) -> Result<(RoughReport, Details)>
 /// `bins_per_decade` 0; a depth out of (0, L] (named
 /// `outputs.bem.subsurface.depth`).
 fn details(
-    scene: &Scene,
+    ctx: &crate::study::Context<'_>,
     b: &BemOutput,
     grid: (usize, f64, persson::bem::Boundary),
 ) -> Result<Details> {
@@ -179,9 +179,9 @@ fn details(
     };
     let subsurface = b.subsurface.as_ref().map(|s| SubsurfaceOptions {
         depth: s.depth.clone(),
-        poisson: scene
+        poisson: ctx
+            .inputs
             .material
-            .as_ref()
             .and_then(|m| m.poisson)
             .unwrap_or(DEFAULT_POISSON),
         tensile_yield_stress: s.tensile_yield_stress,
@@ -189,7 +189,7 @@ fn details(
         // Kept for the .npy files and for the maps drawn beside the plot.
         keep_maps: s.stress_field.is_some() || s.plot.is_some(),
     });
-    Details::new(grid, &scene.nominal_pressure, patches, subsurface)
+    Details::new(grid, ctx.nominal_pressure(), patches, subsurface)
         .map_err(|e| prefix("outputs.bem.subsurface.", e))
 }
 
@@ -203,7 +203,7 @@ fn details(
 /// both of `mean_gap` and `approach`; `mean_gap` on the free boundary; a
 /// solve that fails.
 pub fn bem_adhesion(
-    scene: &Scene,
+    ctx: &crate::study::Context<'_>,
     a: &super::schema::BemAdhesionOutput,
 ) -> Result<crate::bem_detail::AdhesiveBemReport> {
     use crate::bem_detail::{adhesive_controlled_path, PathControl};
@@ -212,9 +212,9 @@ pub fn bem_adhesion(
     let tol = check::tolerance("tolerance", a.tolerance.unwrap_or(1e-10)).map_err(named)?;
     let control =
         PathControl::new(&a.mean_gap, &a.approach, boundary_name.into()).map_err(named)?;
-    let e_star = scene.material()?.contact_modulus();
+    let e_star = ctx.build_material()?.contact_modulus();
     let surf = bem_surface(
-        scene,
+        ctx,
         ("outputs.bem_adhesion.", a.grid, a.seed),
         boundary_name.into(),
     )?;

@@ -87,7 +87,7 @@ pub struct Scene {
     #[serde(default, alias = "pressures", skip_serializing_if = "Vec::is_empty")]
     pub nominal_pressure: Vec<f64>,
     /// What to compute; absent outputs are not computed.
-    pub outputs: Outputs,
+    pub outputs: super::Outputs,
 }
 
 /// The material: E* directly, or one or two elastic bodies

@@ -6,65 +6,9 @@ use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
 use super::{
-    AdhesionLawName, AreaEnhancementName, BoundaryName, ConductanceOutput, ConnectivityName,
-    LeakageOutput, StartName, TheoryName, TheorySpec,
+    AdhesionLawName, AreaEnhancementName, BoundaryName, ConnectivityName, StartName, TheoryName,
+    TheorySpec,
 };
-
-/// The outputs a scene asks for; absent ones are not computed.
-#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
-pub struct Outputs {
-    /// Moments of the spectrum, a power-law fit and C(q).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub spectrum: Option<SpectrumOutput>,
-    /// A/A0 against the scene's nominal pressures (load curve).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub area: Option<AreaOutput>,
-    /// G(ζ) and A/A0 against magnification at one pressure.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub magnification: Option<MagnificationOutput>,
-    /// κ of the linear low-load law; with spectrum, material and pressures
-    /// also the linear contact fractions.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub kappa: Option<KappaOutput>,
-    /// A/A0 against load for several contact-area theories.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub theories: Option<TheoriesOutput>,
-    /// Mean interfacial separation, stiffness and elastic energy against load.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub separation: Option<SeparationOutput>,
-    /// P(u), the distribution of interfacial separations.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub separation_density: Option<SeparationDensityOutput>,
-    /// Stress distributions P(σ, ζ).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub stress: Option<StressOutput>,
-    /// FFT-BEM rough contact at the scene's nominal pressures (feature `bem`).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub bem: Option<BemOutput>,
-    /// FFT-BEM Hertz convergence, η per grid (feature `bem`).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub bem_hertz: Option<BemHertzOutput>,
-    /// The adhesive FFT-BEM along a path of mean gaps or approaches
-    /// (`bem rough --work-of-adhesion`).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub bem_adhesion: Option<BemAdhesionOutput>,
-    /// Adhesion: the stickiness energy balance and A/A0 against the scene's
-    /// nominal pressures (which may be ≤ 0) with the pull-off stress.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub adhesion: Option<AdhesionOutput>,
-    /// Rubber friction μ and A/A0 against sliding velocity (needs `rubber`).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub friction: Option<super::FrictionOutput>,
-    /// Thermal and electrical contact conductance against load, theory and
-    /// (with `bem`) the FFT-BEM.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub conductance: Option<ConductanceOutput>,
-    /// Leak rate of a static seal against load: critical junction, effective
-    /// medium and (with `bem`) Reynolds flow on the FFT-BEM's gap.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub leakage: Option<LeakageOutput>,
-}
 
 /// Spectrum summary: rms height, slope and curvature over [q_min, q_max],
 /// a power-law fit and C(q).

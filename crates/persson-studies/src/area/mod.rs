@@ -1,0 +1,47 @@
+//! `area`: A/A0 against the scene's nominal pressures (the load curve).
+
+use persson::error::Result;
+
+use crate::scene::{run, AreaOutput, AreaReport};
+use crate::study::{plot_file, Context, Inputs, OutFile, Reads, Study};
+use crate::warning::Warning;
+
+/// The study `area`.
+pub struct Area;
+
+impl Study for Area {
+    const KEY: &'static str = "area";
+    type Spec = AreaOutput;
+    type Report = AreaReport;
+
+    fn reads(_: &AreaOutput, _: &Inputs<'_>) -> Reads {
+        Reads::CONTACT
+    }
+
+    fn run(ctx: &Context<'_>, a: &AreaOutput) -> Result<AreaReport> {
+        run::area(ctx.contact()?, ctx.nominal_pressure(), a)
+    }
+
+    fn warnings(r: &AreaReport) -> Vec<Warning> {
+        r.warnings.clone()
+    }
+
+    fn files(a: &AreaOutput) -> Vec<OutFile> {
+        plot_file(Self::KEY, "plot", a.plot.as_ref())
+            .into_iter()
+            .collect()
+    }
+
+    #[cfg(feature = "plot")]
+    fn write(
+        a: &AreaOutput,
+        r: &AreaReport,
+        _: &Context<'_>,
+        dir: &std::path::Path,
+        out: &mut crate::output::Files,
+    ) -> Result<()> {
+        crate::study::draw(out, dir, a.plot.as_ref(), || {
+            crate::scene::plot::area(r).map(Box::new)
+        })
+    }
+}

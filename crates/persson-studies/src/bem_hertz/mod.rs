@@ -1,0 +1,31 @@
+//! `bem_hertz`: the FFT-BEM's Hertz convergence table, η per grid.
+
+use persson::error::Result;
+
+use crate::scene::{BemHertzOutput, BemHertzReport};
+use crate::study::{Context, Inputs, Reads, Study};
+
+/// The study `bem_hertz`.
+pub struct BemHertz;
+
+impl Study for BemHertz {
+    const KEY: &'static str = "bem_hertz";
+    type Spec = BemHertzOutput;
+    type Report = BemHertzReport;
+
+    fn reads(_: &BemHertzOutput, _: &Inputs<'_>) -> Reads {
+        Reads::NOTHING
+    }
+
+    fn run(_: &Context<'_>, h: &BemHertzOutput) -> Result<BemHertzReport> {
+        hertz(h)
+    }
+}
+
+#[cfg(feature = "bem")]
+use crate::scene::bem::bem_hertz as hertz;
+
+#[cfg(not(feature = "bem"))]
+fn hertz(_: &BemHertzOutput) -> Result<BemHertzReport> {
+    Err(crate::study::unavailable(BemHertz::KEY, "bem"))
+}

@@ -1,0 +1,48 @@
+//! `conductance`: thermal and electrical contact conductance against load,
+//! the theory and (feature `flow`) the FFT-BEM.
+
+use persson::error::Result;
+
+use crate::scene::{transport, ConductanceOutput, ConductanceReport};
+use crate::study::{plot_file, Context, Inputs, OutFile, Reads, Study};
+use crate::warning::Warning;
+
+/// The study `conductance`.
+pub struct Conductance;
+
+impl Study for Conductance {
+    const KEY: &'static str = "conductance";
+    type Spec = ConductanceOutput;
+    type Report = ConductanceReport;
+
+    fn reads(_: &ConductanceOutput, _: &Inputs<'_>) -> Reads {
+        Reads::CONTACT
+    }
+
+    fn run(ctx: &Context<'_>, c: &ConductanceOutput) -> Result<ConductanceReport> {
+        transport::conductance(ctx.contact()?, ctx.nominal_pressure(), c)
+    }
+
+    fn warnings(r: &ConductanceReport) -> Vec<Warning> {
+        r.warnings.clone()
+    }
+
+    fn files(c: &ConductanceOutput) -> Vec<OutFile> {
+        plot_file(Self::KEY, "plot", c.plot.as_ref())
+            .into_iter()
+            .collect()
+    }
+
+    #[cfg(feature = "plot")]
+    fn write(
+        c: &ConductanceOutput,
+        r: &ConductanceReport,
+        _: &Context<'_>,
+        dir: &std::path::Path,
+        out: &mut crate::output::Files,
+    ) -> Result<()> {
+        crate::study::draw(out, dir, c.plot.as_ref(), || {
+            crate::scene::plot::conductance(r).map(Box::new)
+        })
+    }
+}

@@ -1,0 +1,49 @@
+//! `leakage`: the leak rate of a static seal against load: the critical
+//! junction, the effective medium and (feature `flow`) Reynolds flow on the
+//! FFT-BEM's gap.
+
+use persson::error::Result;
+
+use crate::scene::{transport, LeakageOutput, LeakageReport};
+use crate::study::{plot_file, Context, Inputs, OutFile, Reads, Study};
+use crate::warning::Warning;
+
+/// The study `leakage`.
+pub struct Leakage;
+
+impl Study for Leakage {
+    const KEY: &'static str = "leakage";
+    type Spec = LeakageOutput;
+    type Report = LeakageReport;
+
+    fn reads(_: &LeakageOutput, _: &Inputs<'_>) -> Reads {
+        Reads::CONTACT
+    }
+
+    fn run(ctx: &Context<'_>, l: &LeakageOutput) -> Result<LeakageReport> {
+        transport::leakage(ctx.contact()?, ctx.nominal_pressure(), l)
+    }
+
+    fn warnings(r: &LeakageReport) -> Vec<Warning> {
+        r.warnings.clone()
+    }
+
+    fn files(l: &LeakageOutput) -> Vec<OutFile> {
+        plot_file(Self::KEY, "plot", l.plot.as_ref())
+            .into_iter()
+            .collect()
+    }
+
+    #[cfg(feature = "plot")]
+    fn write(
+        l: &LeakageOutput,
+        r: &LeakageReport,
+        _: &Context<'_>,
+        dir: &std::path::Path,
+        out: &mut crate::output::Files,
+    ) -> Result<()> {
+        crate::study::draw(out, dir, l.plot.as_ref(), || {
+            crate::scene::plot::leakage(r).map(Box::new)
+        })
+    }
+}

@@ -1,0 +1,55 @@
+//! `magnification`: G(ζ) and A/A0 against ζ at one pressure.
+
+use persson::error::Result;
+
+use crate::scene::{run, MagnificationOutput, MagnificationReport};
+use crate::study::{plot_file, Context, Inputs, OutFile, Reads, Study};
+use crate::warning::Warning;
+
+/// The study `magnification`.
+pub struct Magnification;
+
+impl Study for Magnification {
+    const KEY: &'static str = "magnification";
+    type Spec = MagnificationOutput;
+    type Report = MagnificationReport;
+
+    fn reads(_: &MagnificationOutput, _: &Inputs<'_>) -> Reads {
+        Reads::CONTACT
+    }
+
+    fn run(ctx: &Context<'_>, m: &MagnificationOutput) -> Result<MagnificationReport> {
+        run::magnification(ctx.contact()?, m)
+    }
+
+    fn warnings(r: &MagnificationReport) -> Vec<Warning> {
+        r.warnings.clone()
+    }
+
+    fn files(m: &MagnificationOutput) -> Vec<OutFile> {
+        [
+            plot_file(Self::KEY, "plot", m.plot.as_ref()),
+            plot_file(Self::KEY, "plot_g", m.plot_g.as_ref()),
+        ]
+        .into_iter()
+        .flatten()
+        .collect()
+    }
+
+    #[cfg(feature = "plot")]
+    fn write(
+        m: &MagnificationOutput,
+        r: &MagnificationReport,
+        _: &Context<'_>,
+        dir: &std::path::Path,
+        out: &mut crate::output::Files,
+    ) -> Result<()> {
+        use crate::scene::plot;
+        crate::study::draw(out, dir, m.plot.as_ref(), || {
+            plot::magnification_area(r).map(Box::new)
+        })?;
+        crate::study::draw(out, dir, m.plot_g.as_ref(), || {
+            plot::magnification_g(r).map(Box::new)
+        })
+    }
+}

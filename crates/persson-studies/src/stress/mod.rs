@@ -1,0 +1,65 @@
+//! `stress`: the stress distributions P(σ, ζ), dimensionless at given G or
+//! in the pressure unit at given magnifications.
+
+use persson::error::Result;
+use persson::stress::Start;
+
+use crate::scene::{run, StressOutput, StressReport};
+use crate::study::{plot_file, Context, Inputs, OutFile, Reads, Study};
+use crate::warning::Warning;
+
+/// The study `stress`.
+pub struct Stress;
+
+impl Study for Stress {
+    const KEY: &'static str = "stress";
+    type Spec = StressOutput;
+    type Report = StressReport;
+
+    fn reads(st: &StressOutput, _: &Inputs<'_>) -> Reads {
+        if st.zeta.is_empty() {
+            Reads::NOTHING
+        } else {
+            Reads::CONTACT
+        }
+    }
+
+    fn run(ctx: &Context<'_>, st: &StressOutput) -> Result<StressReport> {
+        if st.zeta.is_empty() {
+            st.check_mode()?;
+            run::stress_dimensionless(
+                &Start::from(st.start),
+                &st.g,
+                st.yield_ratio,
+                st.tolerance,
+                &[],
+                st.points,
+            )
+        } else {
+            run::stress_physical(ctx.contact()?, st)
+        }
+    }
+
+    fn warnings(r: &StressReport) -> Vec<Warning> {
+        r.warnings.clone()
+    }
+
+    fn files(st: &StressOutput) -> Vec<OutFile> {
+        plot_file(Self::KEY, "plot", st.plot.as_ref())
+            .into_iter()
+            .collect()
+    }
+
+    #[cfg(feature = "plot")]
+    fn write(
+        st: &StressOutput,
+        r: &StressReport,
+        _: &Context<'_>,
+        dir: &std::path::Path,
+        out: &mut crate::output::Files,
+    ) -> Result<()> {
+        crate::study::draw(out, dir, st.plot.as_ref(), || {
+            crate::scene::plot::stress(r).map(Box::new)
+        })
+    }
+}
