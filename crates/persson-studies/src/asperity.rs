@@ -33,7 +33,7 @@ use std::path::{Path, PathBuf};
 
 use serde::Serialize;
 
-use crate::scene::TheoryName;
+use crate::input::TheoryName;
 use crate::table::number;
 use crate::warning::Warning;
 use persson::asperity::{

@@ -38,10 +38,13 @@ pub mod bem_adhesion;
 pub mod bem_detail;
 pub mod bem_hertz;
 pub mod conductance;
+pub mod contact;
 pub mod friction;
+pub mod input;
 pub mod kappa;
 pub mod leakage;
 pub mod magnification;
+pub mod naming;
 pub mod output;
 #[cfg(feature = "plot")]
 pub mod plot;

@@ -28,7 +28,7 @@ impl Study for Friction {
         let rubber = ctx
             .inputs
             .rubber
-            .ok_or_else(|| crate::scene::required("rubber (for outputs.friction)"))?;
+            .ok_or_else(|| crate::naming::required("rubber (for outputs.friction)"))?;
         friction_named(
             ctx.spectrum()?,
             rubber,

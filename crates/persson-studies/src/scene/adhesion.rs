@@ -9,7 +9,7 @@ use persson::error::{check, Error, Result};
 use persson::theory::log_zetas;
 
 use super::report::AdhesionReport;
-use super::run::RoughContact;
+use crate::contact::RoughContact;
 use super::schema::AdhesionOutput;
 use crate::warning::{self, Warning};
 

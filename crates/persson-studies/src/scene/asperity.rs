@@ -9,7 +9,7 @@ use persson::error::{Error, Result};
 use persson::kappa::Kappa;
 
 use super::report::{input_digits, surface_prefix, AreaReport, LoadPoint};
-use super::run::RoughContact;
+use crate::contact::RoughContact;
 use super::schema::AreaOutput;
 
 /// The asperity model of `out.theory` for `surface`: from its height map's

@@ -7,9 +7,10 @@ use persson::bem::{check_memory, hertz, surface, Options};
 use persson::error::{check, Error, Result};
 
 use super::report::{BemHertzReport, BemHertzRow};
-use super::run::prefix;
-use super::schema::{required, BemHertzOutput, BemOutput, BoundaryName, SpectrumSpec};
+use super::schema::{BemHertzOutput, BemOutput, BoundaryName, SpectrumSpec};
 use crate::bem_detail::{Details, SubsurfaceOptions, DEFAULT_POISSON};
+use crate::naming::prefix;
+use crate::naming::required;
 
 /// `outputs.bem_hertz`: η per grid.
 ///

@@ -11,8 +11,10 @@ use persson::friction::{
 use persson::spectrum::Spectrum;
 
 use super::report::FrictionReport;
-use super::run::{prefix, spectrum_warnings};
-use super::schema::{required, FrictionOutput, RubberSpec, SpectrumSpec};
+use super::run::spectrum_warnings;
+use super::schema::{FrictionOutput, RubberSpec, SpectrumSpec};
+use crate::naming::prefix;
+use crate::naming::required;
 use crate::warning::{self, Warning};
 
 /// μ, A/A0 and (with `out.flash_temperature`) the flash temperature at every

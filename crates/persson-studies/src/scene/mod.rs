@@ -38,7 +38,6 @@ mod asperity;
 pub(crate) mod bem;
 pub mod friction;
 mod list;
-mod measured;
 pub mod multiscale;
 #[cfg(feature = "plot")]
 pub mod plot;
@@ -50,18 +49,18 @@ pub mod transport;
 #[cfg(feature = "flow")]
 pub mod transport_bem;
 
+#[cfg(feature = "topography")]
+pub use crate::input::describe;
 pub use adhesion::{DEFAULT_STICKINESS_POINTS, DEFAULT_TOLERANCE as DEFAULT_ADHESION_TOLERANCE};
 pub use friction::{friction, friction_on, MAX_VELOCITIES};
 pub use list::{Outputs, SceneReport};
-#[cfg(feature = "topography")]
-pub use measured::describe;
 pub use report::*;
 pub use run::RoughContact;
 pub use schema::*;
 
 use crate::study::{Context, Inputs};
 
-use run::prefix;
+use crate::naming::{prefix, required};
 
 impl Scene {
     /// Parse a scene from JSON text; `path` is used in errors and to resolve

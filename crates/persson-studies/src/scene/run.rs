@@ -1,104 +1,20 @@
 //! Computing the outputs: one function per output, shared by `persson run`
 //! and the subcommand of the same name.
 
-use crate::warning::{self, Warning};
+use crate::naming::{prefix, required};
+use crate::warning::Warning;
 use persson::corrected;
 use persson::error::{check, Error, Result};
 use persson::kappa::Kappa;
-use persson::material::Material;
 use persson::separation::Separation;
 use persson::spectrum::Spectrum;
 use persson::stress::{HertzContact, Solver, Start, StressScene};
-use persson::theory::{log_zetas, Persson};
+use persson::theory::log_zetas;
 
 pub use super::adhesion::adhesion;
 use super::report::*;
 use super::schema::*;
-
-/// A rough contact, the input of the theories: the spectrum of the rigid
-/// rough surface, the contact modulus E* of the elastic body pressed on it,
-/// and what they are (`persson::bem::GridSurface` is the BEM's height map, a
-/// different thing). Called `Surface` in persson 0.3.
-pub struct RoughContact {
-    /// The roughness spectrum.
-    pub spectrum: Box<dyn Spectrum>,
-    /// E*.
-    pub contact_modulus: f64,
-    /// Kinks of C(q) inside the band (the roll-off), for the separation integrals.
-    pub breaks: Vec<f64>,
-    /// What the surface is (the built-in example says so), shown in titles.
-    pub description: Option<String>,
-    /// Remarks on the spectrum (its file's convention, a steep slope), passed
-    /// on to every report of this surface.
-    pub warnings: Vec<Warning>,
-    /// The measured map the spectrum was taken from, if any: the asperity
-    /// theories take their moments from its heights.
-    pub height_map: Option<HeightMapSpec>,
-}
-
-impl RoughContact {
-    /// Build from the flags' (or a scene's) spectrum and material.
-    ///
-    /// # Errors
-    /// As [`SpectrumSpec::build`] and [`MaterialSpec::build`].
-    pub fn new(spectrum: &SpectrumSpec, material: &MaterialSpec) -> Result<Self> {
-        Self::named(spectrum, material, "", "")
-    }
-
-    /// As [`RoughContact::new`], naming the fields with the prefixes of their sections.
-    pub(crate) fn named(
-        spectrum: &SpectrumSpec,
-        material: &MaterialSpec,
-        spectrum_section: &str,
-        material_section: &str,
-    ) -> Result<Self> {
-        let built = spectrum
-            .build_described()
-            .map_err(|e| prefix(spectrum_section, e))?;
-        let (s, measured, measured_warnings) = (built.value, built.description, built.warnings);
-        let m: Material = material.build().map_err(|e| prefix(material_section, e))?;
-        let description = (*spectrum == SpectrumSpec::example()
-            && *material == MaterialSpec::example())
-        .then(|| EXAMPLE.to_string())
-        .or(measured);
-        let mut warnings = measured_warnings;
-        for w in spectrum_warnings(spectrum, s.as_ref()) {
-            warning::push(&mut warnings, Some(w));
-        }
-        Ok(RoughContact {
-            spectrum: s,
-            contact_modulus: m.contact_modulus(),
-            breaks: spectrum.breaks(),
-            description,
-            warnings,
-            height_map: match spectrum {
-                SpectrumSpec::HeightMap(m) => Some(m.clone()),
-                _ => None,
-            },
-        })
-    }
-
-    /// The surface's warnings with those of the nominal pressures and the
-    /// magnifications of one output.
-    pub(crate) fn warnings(&self, pressures: &[f64], zetas: &[f64]) -> Vec<Warning> {
-        let mut w = self.warnings.clone();
-        warning::push(
-            &mut w,
-            Warning::high_pressure(pressures, self.contact_modulus),
-        );
-        let zeta_max = self.spectrum.q_max() / self.spectrum.q_min();
-        warning::push(&mut w, Warning::zeta_beyond_band(zetas, zeta_max));
-        w
-    }
-
-    pub(crate) fn model(&self) -> Result<Persson<'_>> {
-        Persson::new(self.spectrum.as_ref(), self.contact_modulus)
-    }
-
-    pub(crate) fn band(&self) -> (f64, f64) {
-        (self.spectrum.q_min(), self.spectrum.q_max())
-    }
-}
+pub use crate::contact::{spectrum_warnings, RoughContact};
 
 /// A/A0 against the nominal pressures (`area`).
 ///
@@ -550,34 +466,6 @@ pub fn spectrum(
     })
 }
 
-/// The warnings a spectrum gives whatever is computed from it: the
-/// normalisation a spectrum file was read in (and a C(q) that rises, as a
-/// height profile would), and an rms slope over the band above 1.
-pub fn spectrum_warnings(spec: &SpectrumSpec, s: &dyn Spectrum) -> Vec<Warning> {
-    let mut w = Vec::new();
-    if let SpectrumSpec::Tabulated {
-        file, convention, ..
-    } = spec
-    {
-        w.push(Warning::PsdConvention {
-            file: file.clone(),
-            convention: *convention,
-        });
-        let (c_first, c_last) = (s.c(s.q_min()), s.c(s.q_max()));
-        if c_last >= c_first {
-            w.push(Warning::RisingSpectrum {
-                file: file.clone(),
-                c_first,
-                c_last,
-            });
-        }
-    }
-    if let Ok(m) = s.rms_slope(s.q_min(), s.q_max()) {
-        warning::push(&mut w, Warning::steep_slope(m.value));
-    }
-    w
-}
-
 /// A number of points of a curve or table: at least 2 (its two ends).
 fn check_points(points: usize) -> Result<usize> {
     if points < 2 {
@@ -589,87 +477,3 @@ fn check_points(points: usize) -> Result<usize> {
     }
     Ok(points)
 }
-
-/// Prefix the parameter name of an error with its section.
-pub(crate) fn prefix(section: &str, e: Error) -> Error {
-    match e {
-        Error::InvalidParameter {
-            name,
-            value,
-            requirement,
-        } => Error::InvalidParameter {
-            name: placed(section, &name),
-            value,
-            requirement,
-        },
-        Error::Inconsistent { name, requirement } => Error::Inconsistent {
-            name: placed(section, &name),
-            requirement,
-        },
-        other => other,
-    }
-}
-
-/// `name` as the scene's field under `section`: each field of a list
-/// (`a, b and c`) prefixed, unless already placed (under `section`, another
-/// output, or a top-level field); a name in words (`number of spectrum
-/// points`) keeps its words with the section after it.
-fn placed(section: &str, name: &str) -> String {
-    let field = |f: &str| {
-        !f.is_empty()
-            && f.chars()
-                .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || "_.[]".contains(c))
-    };
-    let is_placed = |f: &str| {
-        f.starts_with(section)
-            || f.starts_with("outputs.")
-            || TOP_LEVEL.iter().any(|t| {
-                f == *t || f.starts_with(&format!("{t}.")) || f.starts_with(&format!("{t}["))
-            })
-    };
-    // `fields (a remark)`: the fields before the remark.
-    let (head, remark) = match name.find(" (") {
-        Some(i) => name.split_at(i),
-        None => (name, ""),
-    };
-    let parts: Vec<&str> = head
-        .split([',', '/'])
-        .flat_map(|p| p.split(" and "))
-        .flat_map(|p| p.split(" or "))
-        .map(str::trim)
-        .collect();
-    if parts.iter().all(|p| field(p)) {
-        let mut out = head.to_string();
-        for p in parts.iter().filter(|p| !is_placed(p)) {
-            out = replace_word(&out, p, &format!("{section}{p}"));
-        }
-        out + remark
-    } else {
-        format!("{name} ({})", section.trim_end_matches('.'))
-    }
-}
-
-/// `text` with the whole word `word` replaced by `with`.
-fn replace_word(text: &str, word: &str, with: &str) -> String {
-    let mut out = String::with_capacity(text.len() + with.len());
-    let mut rest = text;
-    while let Some(i) = rest.find(word) {
-        let before = rest[..i].chars().next_back();
-        let after = rest[i + word.len()..].chars().next();
-        let boundary =
-            |c: Option<char>| c.is_none_or(|c| !(c.is_alphanumeric() || c == '_' || c == '.'));
-        out.push_str(&rest[..i]);
-        if boundary(before) && boundary(after) {
-            out.push_str(with);
-        } else {
-            out.push_str(word);
-        }
-        rest = &rest[i + word.len()..];
-    }
-    out.push_str(rest);
-    out
-}
-
-/// A scene's fields outside `outputs`, named as they are wherever an error
-/// arises (`nominal_pressure`, not `outputs.bem.nominal_pressure`).
-const TOP_LEVEL: [&str; 4] = ["nominal_pressure", "material", "spectrum", "rubber"];

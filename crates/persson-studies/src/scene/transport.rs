@@ -12,8 +12,10 @@ use persson::leakage::{
 use super::report::{
     BemTransportPoint, BemTransportReport, ConductanceReport, Fluid, LeakagePoint, LeakageReport,
 };
-use super::run::{prefix, RoughContact};
-use super::schema::{required, ConductanceOutput, LeakageOutput, TransportBem};
+use crate::contact::RoughContact;
+use super::schema::{ConductanceOutput, LeakageOutput, TransportBem};
+use crate::naming::prefix;
+use crate::naming::required;
 use crate::warning::{self, Warning};
 
 /// Default relative tolerance of the wavevector integrals of both outputs.

@@ -29,8 +29,10 @@ use serde::Serialize;
 
 use persson::error::{Error, Result};
 
+use crate::contact::RoughContact;
+use crate::input::{MaterialSpec, RubberSpec, SpectrumSpec};
+use crate::naming::required;
 use crate::output::Files;
-use crate::scene::{MaterialSpec, RoughContact, RubberSpec, SpectrumSpec};
 use crate::table::Tabulate;
 use crate::warning::Warning;
 
@@ -237,7 +239,7 @@ impl<'a> Context<'a> {
     pub fn build_spectrum(&self) -> Result<Box<dyn persson::spectrum::Spectrum>> {
         self.spectrum()?
             .build()
-            .map_err(|e| crate::scene::run::prefix("spectrum.", e))
+            .map_err(|e| crate::naming::prefix("spectrum.", e))
     }
 
     /// The material, built.
@@ -247,12 +249,8 @@ impl<'a> Context<'a> {
     pub fn build_material(&self) -> Result<persson::material::Material> {
         self.material()?
             .build()
-            .map_err(|e| crate::scene::run::prefix("material.", e))
+            .map_err(|e| crate::naming::prefix("material.", e))
     }
-}
-
-fn required(what: &str) -> Error {
-    crate::scene::required(what)
 }
 
 /// The plot `path` of the field `outputs.<key>.<field>`, if asked for.

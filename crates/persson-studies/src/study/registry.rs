@@ -75,7 +75,7 @@ macro_rules! studies {
                     if let Some(s) = &self.$key {
                         report.$key = Some(
                             <$study as $crate::study::Study>::run(ctx, s).map_err(|e| {
-                                $crate::scene::run::prefix(
+                                $crate::naming::prefix(
                                     concat!("outputs.", stringify!($key), "."),
                                     e,
                                 )

@@ -20,7 +20,7 @@ use std::path::PathBuf;
 
 use serde::{Serialize, Serializer};
 
-use crate::scene::ConventionName;
+use crate::input::ConventionName;
 
 mod text;
 
@@ -306,7 +306,7 @@ pub enum Warning {
     /// theories' threshold ([`persson::asperity::moments::SMALL_BANDWIDTH`]).
     SmallBandwidth {
         /// The asperity theory.
-        theory: crate::scene::TheoryName,
+        theory: crate::input::TheoryName,
         /// α = m0 m4/m2².
         bandwidth_parameter: f64,
         /// The threshold.
@@ -316,7 +316,7 @@ pub enum Warning {
     /// coalesce ([`persson::asperity::COALESCENCE_FRACTION`]).
     Coalescence {
         /// The asperity theory.
-        theory: crate::scene::TheoryName,
+        theory: crate::input::TheoryName,
         /// The first σ0 above the threshold.
         nominal_pressure: f64,
         /// Its A/A0.

@@ -4,7 +4,7 @@
 use std::fmt;
 
 use super::{Warning, HIGH_PRESSURE_RATIO};
-use crate::scene::ConventionName;
+use crate::input::ConventionName;
 use crate::table::number;
 
 impl fmt::Display for Warning {

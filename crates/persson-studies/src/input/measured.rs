@@ -6,10 +6,10 @@ use persson::error::{Error, Result};
 use persson::spectrum::{Spectrum, Tabulated};
 
 #[cfg(any(feature = "bem", feature = "topography"))]
-use super::schema::Sides;
-use super::schema::{Described, HeightMapSpec};
+use super::Sides;
+use super::{Described, HeightMapSpec};
 #[cfg(feature = "topography")]
-use super::schema::{DetrendName, LengthUnitName, WindowName};
+use super::{DetrendName, LengthUnitName, WindowName};
 
 #[cfg(feature = "topography")]
 use persson::topography::{self as topo, Analysis, AnalysisOptions, Detrend, Topography, Window};

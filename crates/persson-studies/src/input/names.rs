@@ -5,7 +5,7 @@
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
-use super::required;
+use crate::naming::required;
 use persson::corrected::Theory;
 use persson::error::{Error, Result};
 use persson::spectrum::Convention;

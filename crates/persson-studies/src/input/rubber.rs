@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
-use super::required;
+use crate::naming::required;
 use persson::error::{Error, Result};
 use persson::friction::{
     FrequencyUnit, MasterCurve, Prony, Rubber, ShiftTable, TemperatureShift, Thermal,

@@ -232,7 +232,7 @@ impl SpectrumSpec {
                 size,
             } => Ok(Box::new(
                 Tabulated::from_csv(file, convention.with(*size)?)
-                    .map_err(|e| crate::scene::measured::in_file(file, e))?,
+                    .map_err(|e| super::measured::in_file(file, e))?,
             )),
             SpectrumSpec::HeightMap(m) => m.spectrum(),
             SpectrumSpec::Sum { parts } => Ok(Box::new(Sum::new(
@@ -348,5 +348,5 @@ impl SpectrumSpec {
 
 /// An error of the `i`-th part of a sum, named `parts[i].<field>`.
 fn in_part(i: usize, e: persson::Error) -> persson::Error {
-    super::super::run::prefix(&format!("parts[{i}]."), e)
+    crate::naming::prefix(&format!("parts[{i}]."), e)
 }
