@@ -1,8 +1,8 @@
 //! The only code that talks to `plotters`.
 
+use super::figure::{LegendPosition, Rgb, Style};
 use super::prepare::PlotAxis;
 use super::prepare::{PlotSeries, Prepared};
-use super::{LegendPosition, Rgb, Style};
 use crate::{Error, Result};
 use plotters::chart::SeriesAnno;
 use plotters::coord::ranged1d::{KeyPointHint, NoDefaultFormatting, Ranged, ValueFormatter};

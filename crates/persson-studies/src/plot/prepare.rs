@@ -1,8 +1,8 @@
 //! From a [`Figure`] to drawable data: log transform, ranges, ticks, clipping,
 //! colours and the pixel layout. Independent of the plotting library.
 
+use super::figure::{Figure, LegendPosition, Rgb, Scale, Style, PALETTE, SIZE_LIMITS};
 use super::ticks::{self, Tick, Ticks};
-use super::{Figure, LegendPosition, Rgb, Scale, Style, PALETTE, SIZE_LIMITS};
 use crate::{Error, Result};
 
 /// Text measurement: `(text, font size px) → (width, height)` in pixels.

@@ -4,7 +4,7 @@
 
 use persson::bem::fft::Complex64;
 
-use super::{AccuracyRow, Extent, Knob, MethodAccuracy};
+use super::accuracy::{AccuracyRow, Extent, Knob, MethodAccuracy};
 use persson::bem::fft::Fft2;
 use persson::bem::surface::{synthesize, GridSurface};
 use persson::bem::{hertz, Boundary, Control, Operator, Options, Solver};

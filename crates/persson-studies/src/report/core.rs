@@ -1,7 +1,8 @@
 //! The core's entries: G(ζ) by quadrature for spectra given as functions,
 //! and the extreme cases of G, A/A0, H, ζ and pressure.
 
-use super::{case, num, time_it, AccuracyRow, Extent, Family, Knob, MethodAccuracy, StabilityCase};
+use super::accuracy::{time_it, AccuracyRow, Extent, Knob, MethodAccuracy};
+use super::stability::{case, num, Family, StabilityCase};
 use crate::table;
 use persson::error::Result;
 use persson::spectrum::{Amplitude, FnSpectrum, SelfAffine, Spectrum};

@@ -3,7 +3,7 @@
 
 use std::f64::consts::PI;
 
-use super::{time_it, AccuracyRow, Extent, Knob, MethodAccuracy};
+use super::accuracy::{time_it, AccuracyRow, Extent, Knob, MethodAccuracy};
 use persson::error::Result;
 use persson::friction::{Friction, FrictionOptions, MasterCurve, Rubber, TemperatureShift};
 use persson::spectrum::{Amplitude, SelfAffine, Spectrum};

@@ -11,7 +11,8 @@
 
 use std::sync::LazyLock;
 
-use super::{case, num, time_it, AccuracyRow, Extent, Family, Knob, MethodAccuracy, StabilityCase};
+use super::accuracy::{time_it, AccuracyRow, Extent, Knob, MethodAccuracy};
+use super::stability::{case, num, Family, StabilityCase};
 use persson::error::{Error, Result};
 use persson::stress::{series_fractions, Method, Solver, Start, TabulatedStart};
 

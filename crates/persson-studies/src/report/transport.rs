@@ -3,7 +3,7 @@
 //! (feature `bem`), Reynolds flow against its closed forms (feature `flow`),
 //! and the two-phase Bruggeman medium against σ1(1 − 2a).
 
-use super::{time_it, AccuracyRow, Extent, Knob, MethodAccuracy};
+use super::accuracy::{time_it, AccuracyRow, Extent, Knob, MethodAccuracy};
 use persson::error::Result;
 
 /// Every transport row of the accuracy report in this build.

@@ -9,8 +9,8 @@ use persson::error::{check, Error, Result};
 use persson::theory::log_zetas;
 
 use super::report::AdhesionReport;
-use crate::contact::RoughContact;
 use super::schema::AdhesionOutput;
+use crate::contact::RoughContact;
 use crate::warning::{self, Warning};
 
 /// Default number of log-spaced ζ of the stickiness balance.

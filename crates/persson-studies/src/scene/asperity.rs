@@ -9,8 +9,8 @@ use persson::error::{Error, Result};
 use persson::kappa::Kappa;
 
 use super::report::{input_digits, surface_prefix, AreaReport, LoadPoint};
-use crate::contact::RoughContact;
 use super::schema::AreaOutput;
+use crate::contact::RoughContact;
 
 /// The asperity model of `out.theory` for `surface`: from its height map's
 /// heights when it has one, else from its spectrum up to ζ q_l.

@@ -48,6 +48,7 @@ pub mod separation_density;
 pub mod transport;
 #[cfg(feature = "flow")]
 pub mod transport_bem;
+mod transport_request;
 
 #[cfg(feature = "topography")]
 pub use crate::input::describe;

@@ -12,45 +12,16 @@ use persson::leakage::{
 use super::report::{
     BemTransportPoint, BemTransportReport, ConductanceReport, Fluid, LeakagePoint, LeakageReport,
 };
-use crate::contact::RoughContact;
 use super::schema::{ConductanceOutput, LeakageOutput, TransportBem};
+use crate::contact::RoughContact;
 use crate::naming::prefix;
 use crate::naming::required;
 use crate::warning::{self, Warning};
 
+pub use super::transport_request::TransportRequest;
+
 /// Default relative tolerance of the wavevector integrals of both outputs.
 pub const DEFAULT_TOLERANCE: f64 = persson::gap::DEFAULT_TOLERANCE;
-
-/// What the BEM computes besides the contact: the conductances and the flow.
-#[derive(Debug, Clone, PartialEq, Default)]
-#[non_exhaustive]
-pub struct TransportRequest {
-    /// κ1, κ2: the thermal conductance.
-    pub conductivity: Option<Conductivity>,
-    /// ρ1, ρ2: the electrical conductance.
-    pub resistivity: Option<Resistivity>,
-    /// α(u): the gap conductance.
-    pub gap_law: Option<GapLaw>,
-    /// The seal: Reynolds flow and the leak rate.
-    pub seal: Option<Seal>,
-}
-
-impl TransportRequest {
-    /// A request from its parts.
-    pub fn new(
-        conductivity: Option<Conductivity>,
-        resistivity: Option<Resistivity>,
-        gap_law: Option<GapLaw>,
-        seal: Option<Seal>,
-    ) -> Self {
-        TransportRequest {
-            conductivity,
-            resistivity,
-            gap_law,
-            seal,
-        }
-    }
-}
 
 /// One or two values of a property of the two bodies (one: both bodies).
 fn pair(name: &str, v: &[f64]) -> Result<Option<(f64, f64)>> {

@@ -16,7 +16,7 @@ use persson::Estimate;
 
 use super::report::{BemFlow, BemTransportPoint, BemTransportReport, Direction};
 use super::schema::TransportBem;
-use super::transport::TransportRequest;
+use super::transport_request::TransportRequest;
 
 /// Default solver tolerance of the contact and of the stiffness's CG.
 pub const DEFAULT_TOLERANCE: f64 = 1e-10;
