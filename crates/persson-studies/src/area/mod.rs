@@ -2,9 +2,21 @@
 
 use persson::error::Result;
 
-use crate::scene::{run, AreaOutput, AreaReport};
+mod asperity;
+#[cfg(feature = "plot")]
+mod plot;
+mod report;
+mod run;
+mod spec;
+
 use crate::study::{plot_file, Context, Inputs, OutFile, Reads, Study};
 use crate::warning::Warning;
+#[cfg(feature = "plot")]
+pub use plot::area as figure;
+pub(crate) use report::theory_heading;
+pub use report::{AreaReport, LoadPoint};
+pub use run::area;
+pub use spec::*;
 
 /// The study `area`.
 pub struct Area;
@@ -19,7 +31,7 @@ impl Study for Area {
     }
 
     fn run(ctx: &Context<'_>, a: &AreaOutput) -> Result<AreaReport> {
-        run::area(ctx.contact()?, ctx.nominal_pressure(), a)
+        area(ctx.contact()?, ctx.nominal_pressure(), a)
     }
 
     fn warnings(r: &AreaReport) -> Vec<Warning> {
@@ -40,8 +52,6 @@ impl Study for Area {
         dir: &std::path::Path,
         out: &mut crate::output::Files,
     ) -> Result<()> {
-        crate::study::draw(out, dir, a.plot.as_ref(), || {
-            crate::scene::plot::area(r).map(Box::new)
-        })
+        crate::study::draw(out, dir, a.plot.as_ref(), || figure(r).map(Box::new))
     }
 }

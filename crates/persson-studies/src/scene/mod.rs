@@ -33,7 +33,6 @@ use persson::spectrum::Spectrum;
 use crate::output::Files;
 
 mod adhesion;
-mod asperity;
 #[cfg(feature = "bem")]
 pub(crate) mod bem;
 pub mod friction;

@@ -2,6 +2,7 @@
 //! and the subcommand of the same name.
 
 use crate::naming::{prefix, required};
+use crate::study::check_points;
 use crate::warning::Warning;
 use persson::corrected;
 use persson::error::{check, Error, Result};
@@ -14,61 +15,8 @@ use persson::theory::log_zetas;
 pub use super::adhesion::adhesion;
 use super::report::*;
 use super::schema::*;
+pub use crate::area::area;
 pub use crate::contact::{spectrum_warnings, RoughContact};
-
-/// A/A0 against the nominal pressures (`area`).
-///
-/// # Errors
-/// A pressure not finite and positive; ζ < 1; γ invalid; solver failure.
-pub fn area(surface: &RoughContact, pressures: &[f64], out: &AreaOutput) -> Result<AreaReport> {
-    if pressures.is_empty() {
-        return Err(required(
-            "nominal_pressure (a non-empty list, for outputs.area)",
-        ));
-    }
-    if crate::asperity::is_asperity(out.theory) {
-        return super::asperity::area(surface, pressures, out);
-    }
-    if out.yield_stress.is_some() {
-        return Err(Error::Inconsistent {
-            name: "yield_stress".into(),
-            requirement: "only with the overlap theory (the hardness of its load law)".into(),
-        });
-    }
-    let model = surface.model()?;
-    let zeta = out.zeta.unwrap_or_else(|| model.zeta_max());
-    let theory = TheorySpec {
-        theory: out.theory,
-        gamma: out.gamma,
-    }
-    .build()?;
-    let tolerance = out.tolerance.unwrap_or(corrected::DEFAULT_TOLERANCE);
-    let points = model.load_curve(pressures, zeta)?;
-    let chosen = corrected::load_curve(&model, theory, zeta, pressures, tolerance)?;
-    let original = out.theory == TheoryName::Original;
-    let (q_l, q_s) = surface.band();
-    Ok(AreaReport {
-        warnings: surface.warnings(pressures, &[zeta]),
-        surface: surface.description.clone(),
-        contact_modulus: surface.contact_modulus,
-        rms_height: surface.spectrum.rms_height(q_l, q_s)?.value,
-        rms_slope: surface.spectrum.rms_slope(q_l, q_s)?.value,
-        kappa_bush: Kappa::Bush.value(),
-        kappa_persson: Kappa::Persson.value(),
-        theory: out.theory,
-        gamma: theory.gamma(),
-        kappa: Some(theory.low_load_kappa()),
-        yield_stress: None,
-        asperity: None,
-        zeta,
-        original_contact_fraction: points.iter().map(|p| p.contact_fraction).collect(),
-        points: points
-            .iter()
-            .zip(&chosen)
-            .map(|(p, c)| LoadPoint::new(p, c, original))
-            .collect(),
-    })
-}
 
 /// G(ζ) and A/A0 against magnification (`magnification`).
 ///
@@ -464,16 +412,4 @@ pub fn spectrum(
         curve,
         warnings: Warning::steep_slope(m.value).into_iter().collect(),
     })
-}
-
-/// A number of points of a curve or table: at least 2 (its two ends).
-fn check_points(points: usize) -> Result<usize> {
-    if points < 2 {
-        return Err(Error::invalid(
-            "points",
-            points as f64,
-            "an integer >= 2 (the curve's two ends)",
-        ));
-    }
-    Ok(points)
 }

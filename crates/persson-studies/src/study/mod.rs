@@ -311,3 +311,15 @@ pub fn unavailable(key: &str, feature: &str) -> Error {
         requirement: format!("needs a persson built with the `{feature}` feature"),
     }
 }
+
+/// A number of points of a curve or table: at least 2 (its two ends).
+pub(crate) fn check_points(points: usize) -> Result<usize> {
+    if points < 2 {
+        return Err(Error::invalid(
+            "points",
+            points as f64,
+            "an integer >= 2 (the curve's two ends)",
+        ));
+    }
+    Ok(points)
+}

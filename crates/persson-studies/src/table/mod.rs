@@ -540,3 +540,28 @@ mod narrow;
 mod topography;
 
 pub use narrow::{narrow, TEXT_WIDTH};
+
+/// Significant digits that print every input as given (its shortest
+/// round-trip form): `1e4`, `3e8`, `4.26e8`.
+pub fn input_digits(values: impl IntoIterator<Item = f64>) -> usize {
+    values
+        .into_iter()
+        .filter(|v| v.is_finite() && *v != 0.0)
+        .map(|v| {
+            let s = format!("{:e}", v.abs());
+            s.split('e')
+                .next()
+                .unwrap_or("")
+                .chars()
+                .filter(char::is_ascii_digit)
+                .count()
+        })
+        .max()
+        .unwrap_or(1)
+        .max(1)
+}
+
+/// The surface's description on a line of its own above a table's title (empty without one).
+pub fn surface_prefix(surface: &Option<String>) -> String {
+    surface.as_ref().map_or(String::new(), |s| format!("{s}\n"))
+}

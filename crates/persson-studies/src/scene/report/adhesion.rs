@@ -7,7 +7,7 @@ use crate::scene::AreaEnhancementName;
 use crate::table::{number, Cell, Table, Tabulate};
 use persson::adhesion::{AdhesivePoint, PastewkaRobbins, Stickiness};
 
-use super::area::{input_digits, surface_prefix};
+use crate::table::{input_digits, surface_prefix};
 
 /// Adhesion against load and magnification (`persson adhesion`, scene output
 /// `adhesion`; Persson & Tosatti, J. Chem. Phys. 115, 5597 (2001); Persson,

@@ -7,7 +7,7 @@ use serde::Serialize;
 use crate::table::{number, Table, Tabulate};
 use persson::friction::FrictionPoint;
 
-use super::area::input_digits;
+use crate::table::input_digits;
 
 /// Rubber friction (`persson friction`, scene output `friction`; Persson,
 /// J. Chem. Phys. 115, 3840 (2001) and J. Phys.: Condens. Matter 18, 7789
@@ -64,7 +64,7 @@ impl FrictionReport {
             "friction",
             format!(
                 "{}Rubber friction (Persson 2001, 2006): q1 = {}, γ = {}, ν = {}, T_ref = {} K",
-                super::area::surface_prefix(&self.surface),
+                crate::table::surface_prefix(&self.surface),
                 number(self.q1, 6),
                 number(self.gamma, 3),
                 number(self.poisson, 3),

@@ -11,6 +11,7 @@ mod spectrum;
 mod stress;
 mod transport;
 
+pub use crate::area::{AreaReport, LoadPoint};
 pub use adhesion::*;
 pub use area::*;
 pub use bem::*;

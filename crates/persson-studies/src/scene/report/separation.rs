@@ -5,7 +5,7 @@ use serde::Serialize;
 use crate::table::{number, Table, Tabulate};
 use persson::separation::SeparationPoint;
 
-use super::area::{input_digits, surface_prefix};
+use crate::table::{input_digits, surface_prefix};
 
 /// Mean separation, stiffness and elastic energy against load (`persson
 /// separation`, scene output `separation`; Persson, Phys. Rev. Lett. 99, 125502 (2007)).

@@ -4,7 +4,7 @@ use serde::Serialize;
 
 use crate::table::{number, Table, Tabulate};
 
-use super::area::surface_prefix;
+use crate::table::surface_prefix;
 
 /// The spectrum's moments, a power-law fit and C(q) (`persson spectrum`).
 #[derive(Debug, Clone, PartialEq, Serialize)]

@@ -7,7 +7,7 @@ use crate::table::{number, Table, Tabulate};
 use persson::conductance::ConductancePoint;
 use persson::leakage::{CriticalJunctionPoint, EffectiveMediumPoint, LeakStatus};
 
-use super::area::{input_digits, surface_prefix};
+use crate::table::{input_digits, surface_prefix};
 
 /// Contact conductance against load (`persson conductance`, scene output
 /// `conductance`): Barber's identity on the stiffness of Persson's theory,

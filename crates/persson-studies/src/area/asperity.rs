@@ -8,9 +8,9 @@ use crate::warning;
 use persson::error::{Error, Result};
 use persson::kappa::Kappa;
 
-use super::report::{input_digits, surface_prefix, AreaReport, LoadPoint};
-use super::schema::AreaOutput;
+use super::{AreaOutput, AreaReport, LoadPoint};
 use crate::contact::RoughContact;
+use crate::table::{input_digits, surface_prefix};
 
 /// The asperity model of `out.theory` for `surface`: from its height map's
 /// heights when it has one, else from its spectrum up to ζ q_l.
@@ -45,7 +45,7 @@ fn model(surface: &RoughContact, out: &AreaOutput, zeta: Option<f64>) -> Result<
 /// The model from a measured map's heights, detrended as its spectrum is.
 #[cfg(feature = "topography")]
 fn from_map(
-    map: &super::schema::HeightMapSpec,
+    map: &crate::input::HeightMapSpec,
     e_star: f64,
     settings: &AsperitySettings,
 ) -> Result<AsperityModel> {
@@ -78,7 +78,7 @@ fn from_map(
 
 #[cfg(not(feature = "topography"))]
 fn from_map(
-    _: &super::schema::HeightMapSpec,
+    _: &crate::input::HeightMapSpec,
     _: f64,
     _: &AsperitySettings,
 ) -> Result<AsperityModel> {
@@ -107,7 +107,7 @@ pub fn area(surface: &RoughContact, pressures: &[f64], out: &AreaOutput) -> Resu
             format!("absent for the {} theory (it has no γ)", out.theory),
         ));
     }
-    if out.yield_stress.is_some() && out.theory != super::TheoryName::Overlap {
+    if out.yield_stress.is_some() && out.theory != crate::input::TheoryName::Overlap {
         return Err(Error::Inconsistent {
             name: "yield_stress".into(),
             requirement: format!(
