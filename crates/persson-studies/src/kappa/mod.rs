@@ -3,9 +3,15 @@
 
 use persson::error::Result;
 
-use crate::scene::{run, KappaOutput, KappaReport};
+mod report;
+mod run;
+mod spec;
+
 use crate::study::{Context, Inputs, Reads, Study};
 use crate::warning::Warning;
+pub use report::*;
+pub use run::kappa;
+pub use spec::*;
 
 /// The study `kappa`.
 pub struct Kappa;
@@ -25,7 +31,7 @@ impl Study for Kappa {
 
     fn run(ctx: &Context<'_>, _: &KappaOutput) -> Result<KappaReport> {
         let with = ctx.contact().ok().map(|s| (s, ctx.nominal_pressure()));
-        run::kappa(with)
+        kappa(with)
     }
 
     fn warnings(r: &KappaReport) -> Vec<Warning> {

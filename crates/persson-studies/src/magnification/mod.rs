@@ -2,9 +2,19 @@
 
 use persson::error::Result;
 
-use crate::scene::{run, MagnificationOutput, MagnificationReport};
+#[cfg(feature = "plot")]
+mod plot;
+mod report;
+mod run;
+mod spec;
+
 use crate::study::{plot_file, Context, Inputs, OutFile, Reads, Study};
 use crate::warning::Warning;
+#[cfg(feature = "plot")]
+pub use plot::{magnification_area, magnification_g};
+pub use report::*;
+pub use run::magnification;
+pub use spec::*;
 
 /// The study `magnification`.
 pub struct Magnification;
@@ -19,7 +29,7 @@ impl Study for Magnification {
     }
 
     fn run(ctx: &Context<'_>, m: &MagnificationOutput) -> Result<MagnificationReport> {
-        run::magnification(ctx.contact()?, m)
+        magnification(ctx.contact()?, m)
     }
 
     fn warnings(r: &MagnificationReport) -> Vec<Warning> {
@@ -44,12 +54,11 @@ impl Study for Magnification {
         dir: &std::path::Path,
         out: &mut crate::output::Files,
     ) -> Result<()> {
-        use crate::scene::plot;
         crate::study::draw(out, dir, m.plot.as_ref(), || {
-            plot::magnification_area(r).map(Box::new)
+            magnification_area(r).map(Box::new)
         })?;
         crate::study::draw(out, dir, m.plot_g.as_ref(), || {
-            plot::magnification_g(r).map(Box::new)
+            magnification_g(r).map(Box::new)
         })
     }
 }

@@ -1,114 +1,15 @@
 //! Figures drawn from the typed reports alone (feature `plot`).
 
-use crate::plot::{self, Axis, Figure, LinearLaw, PowerLaw, Series, Style};
+use crate::plot::{self, Axis, Figure, PowerLaw, Series, Style};
 use crate::table::number;
 use persson::error::Result;
 
 use super::report::*;
 
 pub use crate::area::figure as area;
-
-/// A/A0 against ζ.
-///
-/// # Errors
-/// An inconsistent report.
-pub fn magnification_area(r: &MagnificationReport) -> Result<Figure> {
-    let z: Vec<f64> = r.points.iter().map(|x| x.zeta).collect();
-    let a: Vec<f64> = r.points.iter().map(|x| x.contact_fraction).collect();
-    let label = format!("σ0 = {}", number(r.nominal_pressure, 6));
-    plot::area_vs_zeta(&z, &[(label.as_str(), &a)])
-}
-
-/// G(ζ).
-///
-/// # Errors
-/// An inconsistent report.
-pub fn magnification_g(r: &MagnificationReport) -> Result<Figure> {
-    let z: Vec<f64> = r.points.iter().map(|x| x.zeta).collect();
-    let g: Vec<f64> = r.points.iter().map(|x| x.g).collect();
-    let label = format!("σ0 = {}", number(r.nominal_pressure, 6));
-    plot::g_vs_zeta(&z, &[(label.as_str(), &g)])
-}
-
-/// A/A0 against load for every theory, with the linear laws.
-///
-/// # Errors
-/// An inconsistent report.
-pub fn theories(r: &TheoriesReport) -> Result<Figure> {
-    let p: Vec<f64> = r
-        .curves
-        .first()
-        .map(|c| c.points.iter().map(|x| x.nominal_pressure).collect())
-        .unwrap_or_default();
-    let labels: Vec<String> = r
-        .curves
-        .iter()
-        .map(|c| match c.gamma {
-            None => format!("{} (κ = {})", c.theory, number(c.kappa, 3)),
-            Some(g) => format!(
-                "{}, γ = {} (κ = {})",
-                c.theory,
-                number(g, 3),
-                number(c.kappa, 3)
-            ),
-        })
-        .collect();
-    let a: Vec<Vec<f64>> = r
-        .curves
-        .iter()
-        .map(|c| c.points.iter().map(|x| x.contact_fraction).collect())
-        .collect();
-    let refs: Vec<(&str, &[f64])> = labels
-        .iter()
-        .zip(&a)
-        .map(|(l, v)| (l.as_str(), v.as_slice()))
-        .collect();
-    let law = LinearLaw {
-        contact_modulus: r.contact_modulus,
-        rms_slope: r.rms_slope,
-    };
-    plot::area_vs_load(&p, &refs, "unit of E*", Some(law))
-}
-
-/// ū against load (the report's figure curve, else its points), log axes,
-/// with the low-load law u0 ln(p_ref/σ0).
-///
-/// # Errors
-/// None in practice (the figure is built from the report's numbers).
-pub fn separation(r: &SeparationReport) -> Result<Figure> {
-    let curve = if r.plot_points.is_empty() {
-        &r.points
-    } else {
-        &r.plot_points
-    };
-    let u: Vec<(f64, f64)> = curve
-        .iter()
-        .map(|p| (p.nominal_pressure, p.mean_separation))
-        .collect();
-    let (u0, p_ref) = (r.low_load_length, r.reference_pressure);
-    let asymptote: Vec<(f64, f64)> = curve
-        .iter()
-        .map(|p| (p.nominal_pressure, u0 * (p_ref / p.nominal_pressure).ln()))
-        .filter(|&(_, v)| v > 0.0)
-        .collect();
-    Ok(Figure::new(
-        format!(
-            "Mean interfacial separation (Persson 2007), E* = {}",
-            number(r.contact_modulus, 4)
-        ),
-        Axis::log("nominal pressure σ0 (unit of E*)"),
-        Axis::log("mean separation ū (m)"),
-    )
-    .with_series(Series::line("ū(σ0)", u))
-    .with_series(Series::dashed(
-        format!(
-            "u0 ln(σ_ref/σ0), u0 = {} m, σ_ref = {}",
-            number(u0, 3),
-            number(p_ref, 3)
-        ),
-        asymptote,
-    )))
-}
+pub use crate::magnification::{magnification_area, magnification_g};
+pub use crate::separation::figure as separation;
+pub use crate::theories::figure as theories;
 
 /// The family of stress distributions.
 ///
@@ -207,7 +108,7 @@ pub fn bem(r: &persson::bem::rough::RoughReport) -> Result<Figure> {
     let p: Vec<f64> = r.points.iter().map(|x| x.nominal_pressure).collect();
     let a: Vec<f64> = r.points.iter().map(|x| x.contact_fraction).collect();
     let label = format!("FFT-BEM, {0}×{0} {1}", r.grid, r.boundary.name());
-    let law = LinearLaw {
+    let law = crate::plot::LinearLaw {
         contact_modulus: r.contact_modulus,
         rms_slope: r.surface_rms_slope,
     };

@@ -4,174 +4,19 @@
 use crate::naming::{prefix, required};
 use crate::study::check_points;
 use crate::warning::Warning;
-use persson::corrected;
 use persson::error::{check, Error, Result};
-use persson::kappa::Kappa;
-use persson::separation::Separation;
 use persson::spectrum::Spectrum;
 use persson::stress::{HertzContact, Solver, Start, StressScene};
-use persson::theory::log_zetas;
 
 pub use super::adhesion::adhesion;
 use super::report::*;
 use super::schema::*;
 pub use crate::area::area;
 pub use crate::contact::{spectrum_warnings, RoughContact};
-
-/// G(ζ) and A/A0 against magnification (`magnification`).
-///
-/// # Errors
-/// ζ < 1; a pressure not finite and positive.
-pub fn magnification(
-    surface: &RoughContact,
-    out: &MagnificationOutput,
-) -> Result<MagnificationReport> {
-    let model = surface.model()?;
-    let zeta = if out.zeta.is_empty() {
-        check_points(out.points)?;
-        log_zetas(model.zeta_max(), out.points)
-    } else {
-        out.zeta.clone()
-    };
-    Ok(MagnificationReport {
-        warnings: surface.warnings(&[out.nominal_pressure], &zeta),
-        surface: surface.description.clone(),
-        nominal_pressure: out.nominal_pressure,
-        contact_modulus: surface.contact_modulus,
-        zeta_max: model.zeta_max(),
-        points: model.magnification_curve(&zeta, out.nominal_pressure)?,
-    })
-}
-
-/// κ of both laws and, with a surface and pressures, the linear fractions (`kappa`).
-///
-/// # Errors
-/// A pressure not finite and positive.
-pub fn kappa(surface: Option<(&RoughContact, &[f64])>) -> Result<KappaReport> {
-    let mut r = KappaReport {
-        surface: surface.and_then(|(s, _)| s.description.clone()),
-        kappa_bush: Kappa::Bush.value(),
-        kappa_persson: Kappa::Persson.value(),
-        rms_slope: None,
-        points: vec![],
-        warnings: vec![],
-    };
-    if let Some((s, pressures)) = surface {
-        r.warnings = s.warnings(pressures, &[]);
-        let (q_l, q_s) = s.band();
-        let slope = s.spectrum.rms_slope(q_l, q_s)?.value;
-        r.rms_slope = Some(slope);
-        for &p in pressures {
-            check::positive("nominal_pressure", p)?;
-            r.points.push(LinearPoint {
-                nominal_pressure: p,
-                contact_fraction_bush_linear: Kappa::Bush.checked_linear_fraction(
-                    p,
-                    s.contact_modulus,
-                    slope,
-                )?,
-                contact_fraction_persson_linear: Kappa::Persson.checked_linear_fraction(
-                    p,
-                    s.contact_modulus,
-                    slope,
-                )?,
-            });
-        }
-    }
-    Ok(r)
-}
-
-/// A/A0 against load for several theories (`theories`).
-///
-/// # Errors
-/// As [`corrected::load_curve`].
-pub fn theories(
-    surface: &RoughContact,
-    pressures: &[f64],
-    out: &TheoriesOutput,
-) -> Result<TheoriesReport> {
-    if pressures.is_empty() {
-        return Err(required(
-            "nominal_pressure (a non-empty list, for outputs.theories)",
-        ));
-    }
-    let model = surface.model()?;
-    let zeta = out.zeta.unwrap_or_else(|| model.zeta_max());
-    let tolerance = out.tolerance.unwrap_or(corrected::DEFAULT_TOLERANCE);
-    let list = if out.theories.is_empty() {
-        TheorySpec::all()
-    } else {
-        out.theories.clone()
-    };
-    let curves = list
-        .iter()
-        .map(|spec| {
-            let th = spec.build()?;
-            Ok(TheoryCurve {
-                theory: spec.theory,
-                gamma: th.gamma(),
-                kappa: th.low_load_kappa(),
-                points: corrected::load_curve(&model, th, zeta, pressures, tolerance)?,
-            })
-        })
-        .collect::<Result<Vec<_>>>()?;
-    Ok(TheoriesReport {
-        warnings: surface.warnings(pressures, &[zeta]),
-        contact_modulus: surface.contact_modulus,
-        zeta,
-        rms_slope: model.slope_variance(zeta)?.value.sqrt(),
-        curves,
-    })
-}
-
-/// Mean separation, stiffness and energy against load (`separation`);
-/// `plot_pressures` adds a curve for a figure.
-///
-/// # Errors
-/// A pressure not finite and positive; a tolerance out of range; an integral
-/// that does not converge.
-pub fn separation(
-    surface: &RoughContact,
-    pressures: &[f64],
-    out: &SeparationOutput,
-    plot_pressures: &[f64],
-) -> Result<SeparationReport> {
-    if pressures.is_empty() {
-        return Err(required(
-            "nominal_pressure (a non-empty list, for outputs.separation)",
-        ));
-    }
-    let tolerance = out
-        .tolerance
-        .unwrap_or(persson::separation::DEFAULT_TOLERANCE);
-    let model = Separation::new(surface.spectrum.as_ref(), surface.contact_modulus)?
-        .with_tolerance(tolerance)?
-        .with_breaks(&surface.breaks);
-    let points = model.load_curve(pressures)?;
-    let law = model.low_load_law()?;
-    let full = model.full_contact_energy()?;
-    let (q_l, q_s) = surface.band();
-    Ok(SeparationReport {
-        warnings: surface.warnings(pressures, &[]),
-        surface: surface.description.clone(),
-        contact_modulus: surface.contact_modulus,
-        rms_height: surface.spectrum.rms_height(q_l, q_s)?.value,
-        rms_slope: surface.spectrum.rms_slope(q_l, q_s)?.value,
-        tolerance,
-        low_load_length: law.length.value,
-        low_load_length_error_bound: law.length.error,
-        reference_pressure: law.reference_pressure.value,
-        reference_pressure_error_bound: law.reference_pressure.error,
-        full_contact_energy: full.value,
-        full_contact_energy_error_bound: full.error,
-        points,
-        plot_points: if plot_pressures.is_empty() {
-            vec![]
-        } else {
-            model.load_curve(plot_pressures)?
-        },
-    })
-}
+pub use crate::kappa::kappa;
+pub use crate::magnification::magnification;
+pub use crate::separation::separation;
+pub use crate::theories::theories;
 
 /// Dimensionless stress distributions at each G (`stress`): σ/σH at
 /// `sigma_ratio`, or `points` values over the distribution when empty.

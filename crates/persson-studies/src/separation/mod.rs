@@ -3,9 +3,19 @@
 
 use persson::error::Result;
 
-use crate::scene::{run, SeparationOutput, SeparationReport};
+#[cfg(feature = "plot")]
+mod plot;
+mod report;
+mod run;
+mod spec;
+
 use crate::study::{Context, Inputs, Reads, Study};
 use crate::warning::Warning;
+#[cfg(feature = "plot")]
+pub use plot::separation as figure;
+pub use report::*;
+pub use run::separation;
+pub use spec::*;
 
 /// The study `separation`.
 pub struct Separation;
@@ -20,7 +30,7 @@ impl Study for Separation {
     }
 
     fn run(ctx: &Context<'_>, s: &SeparationOutput) -> Result<SeparationReport> {
-        run::separation(ctx.contact()?, ctx.nominal_pressure(), s, &[])
+        separation(ctx.contact()?, ctx.nominal_pressure(), s, &[])
     }
 
     fn warnings(r: &SeparationReport) -> Vec<Warning> {

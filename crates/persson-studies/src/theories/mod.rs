@@ -2,9 +2,19 @@
 
 use persson::error::Result;
 
-use crate::scene::{run, TheoriesOutput, TheoriesReport};
+#[cfg(feature = "plot")]
+mod plot;
+mod report;
+mod run;
+mod spec;
+
 use crate::study::{plot_file, Context, Inputs, OutFile, Reads, Study};
 use crate::warning::Warning;
+#[cfg(feature = "plot")]
+pub use plot::theories as figure;
+pub use report::*;
+pub use run::theories;
+pub use spec::*;
 
 /// The study `theories`.
 pub struct Theories;
@@ -19,7 +29,7 @@ impl Study for Theories {
     }
 
     fn run(ctx: &Context<'_>, t: &TheoriesOutput) -> Result<TheoriesReport> {
-        run::theories(ctx.contact()?, ctx.nominal_pressure(), t)
+        theories(ctx.contact()?, ctx.nominal_pressure(), t)
     }
 
     fn warnings(r: &TheoriesReport) -> Vec<Warning> {
@@ -40,8 +50,6 @@ impl Study for Theories {
         dir: &std::path::Path,
         out: &mut crate::output::Files,
     ) -> Result<()> {
-        crate::study::draw(out, dir, t.plot.as_ref(), || {
-            crate::scene::plot::theories(r).map(Box::new)
-        })
+        crate::study::draw(out, dir, t.plot.as_ref(), || figure(r).map(Box::new))
     }
 }

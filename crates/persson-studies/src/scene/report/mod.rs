@@ -3,20 +3,20 @@
 //! (its text and CSV tables); the figures are drawn from them alone.
 
 mod adhesion;
-mod area;
 mod bem;
 mod friction;
-mod separation;
 mod spectrum;
 mod stress;
 mod transport;
 
 pub use crate::area::{AreaReport, LoadPoint};
+pub use crate::kappa::{KappaReport, LinearPoint};
+pub use crate::magnification::MagnificationReport;
+pub use crate::separation::SeparationReport;
+pub use crate::theories::{TheoriesReport, TheoryCurve};
 pub use adhesion::*;
-pub use area::*;
 pub use bem::*;
 pub use friction::*;
-pub use separation::*;
 pub use spectrum::*;
 pub use stress::*;
 pub use transport::*;

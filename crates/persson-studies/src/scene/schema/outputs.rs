@@ -5,10 +5,12 @@ use std::path::PathBuf;
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
-use super::{
-    AdhesionLawName, AreaEnhancementName, BoundaryName, ConnectivityName, StartName, TheorySpec,
-};
+use super::{AdhesionLawName, AreaEnhancementName, BoundaryName, ConnectivityName, StartName};
 pub use crate::area::AreaOutput;
+pub use crate::kappa::KappaOutput;
+pub use crate::magnification::MagnificationOutput;
+pub use crate::separation::SeparationOutput;
+pub use crate::theories::TheoriesOutput;
 
 /// Spectrum summary: rms height, slope and curvature over [q_min, q_max],
 /// a power-law fit and C(q).
@@ -31,62 +33,6 @@ pub struct SpectrumOutput {
 
 fn default_spectrum_points() -> usize {
     11
-}
-
-/// Magnification curve: G(ζ) and A/A0 against ζ at one pressure.
-#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
-pub struct MagnificationOutput {
-    /// Nominal pressure σ0.
-    pub nominal_pressure: f64,
-    /// Explicit magnifications ζ ≥ 1 (default: `points` log-spaced from 1 to q_s/q_l).
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub zeta: Vec<f64>,
-    /// Number of log-spaced magnifications (default 41).
-    #[serde(default = "default_points")]
-    pub points: usize,
-    /// Draw A/A0 against ζ (.svg or .png).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub plot: Option<PathBuf>,
-    /// Draw G(ζ) (.svg or .png).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub plot_g: Option<PathBuf>,
-}
-
-fn default_points() -> usize {
-    41
-}
-
-/// κ output (no options).
-#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
-pub struct KappaOutput {}
-
-/// Corrected-theory load curves at the scene's nominal pressures.
-#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
-pub struct TheoriesOutput {
-    /// The theories, e.g. `{"theory": "yang-persson", "gamma": 0.42}` (default: all four with their default γ).
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub theories: Vec<TheorySpec>,
-    /// Magnification ζ (default full).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub zeta: Option<f64>,
-    /// Absolute tolerance on A/A0 (default 1e-12).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub tolerance: Option<f64>,
-    /// Draw A/A0 against load for all of them (.svg or .png).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub plot: Option<PathBuf>,
-}
-
-/// Mean-separation load curve at the scene's nominal pressures (Persson, Phys. Rev. Lett. 99, 125502 (2007)).
-#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
-pub struct SeparationOutput {
-    /// Relative tolerance of the wavevector integrals (default 1e-10).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub tolerance: Option<f64>,
 }
 
 /// The distribution of interfacial separations P(u) at the scene's nominal
