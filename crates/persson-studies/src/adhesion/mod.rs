@@ -3,9 +3,15 @@
 
 use persson::error::Result;
 
-use crate::scene::{run, AdhesionOutput, AdhesionReport};
+mod report;
+mod run;
+mod spec;
+
 use crate::study::{Context, Inputs, Reads, Study};
 use crate::warning::Warning;
+pub use report::*;
+pub use run::{adhesion, DEFAULT_STICKINESS_POINTS, DEFAULT_TOLERANCE};
+pub use spec::*;
 
 /// The study `adhesion`.
 pub struct Adhesion;
@@ -20,7 +26,7 @@ impl Study for Adhesion {
     }
 
     fn run(ctx: &Context<'_>, a: &AdhesionOutput) -> Result<AdhesionReport> {
-        run::adhesion(ctx.contact()?, ctx.nominal_pressure(), a)
+        adhesion(ctx.contact()?, ctx.nominal_pressure(), a)
     }
 
     fn warnings(r: &AdhesionReport) -> Vec<Warning> {

@@ -32,7 +32,6 @@ use persson::spectrum::Spectrum;
 
 use crate::output::Files;
 
-mod adhesion;
 #[cfg(feature = "bem")]
 pub(crate) mod bem;
 pub mod friction;
@@ -43,15 +42,17 @@ pub mod plot;
 pub mod report;
 pub mod run;
 pub mod schema;
-pub mod separation_density;
 pub mod transport;
 #[cfg(feature = "flow")]
 pub mod transport_bem;
 mod transport_request;
 
+pub use crate::adhesion::{
+    DEFAULT_STICKINESS_POINTS, DEFAULT_TOLERANCE as DEFAULT_ADHESION_TOLERANCE,
+};
 #[cfg(feature = "topography")]
 pub use crate::input::describe;
-pub use adhesion::{DEFAULT_STICKINESS_POINTS, DEFAULT_TOLERANCE as DEFAULT_ADHESION_TOLERANCE};
+pub use crate::separation_density;
 pub use friction::{friction, friction_on, MAX_VELOCITIES};
 pub use list::{Outputs, SceneReport};
 pub use report::*;

@@ -1,6 +1,6 @@
 //! Figures drawn from the typed reports alone (feature `plot`).
 
-use crate::plot::{self, Axis, Figure, PowerLaw, Series, Style};
+use crate::plot::{self, Axis, Figure, Series};
 use crate::table::number;
 use persson::error::Result;
 
@@ -9,95 +9,9 @@ use super::report::*;
 pub use crate::area::figure as area;
 pub use crate::magnification::{magnification_area, magnification_g};
 pub use crate::separation::figure as separation;
+pub use crate::spectrum::figure as spectrum;
+pub use crate::stress::figure as stress;
 pub use crate::theories::figure as theories;
-
-/// The family of stress distributions.
-///
-/// # Errors
-/// None in practice.
-pub fn stress(r: &StressReport) -> Result<Figure> {
-    // With a yield stress the legend gives A = A_el + A_pl.
-    let plastic = r.yield_stress.is_some() || r.yield_ratio.is_some();
-    let plastic_note = |el: f64, pl: f64| {
-        if plastic || pl > 0.0 {
-            format!(" (A_el {}, A_pl {})", number(el, 3), number(pl, 3))
-        } else {
-            String::new()
-        }
-    };
-    let (x, y) = if r.physical() {
-        ("normal stress σ (Pa, or the unit of E*)", "P(σ, ζ) (1/Pa)")
-    } else {
-        ("normal stress σ/σH", "σH P(σ, ζ)")
-    };
-    let yield_note = match (r.yield_stress, r.yield_ratio) {
-        (Some(y), _) => format!(", σY = {}", number(y, 4)),
-        (None, Some(y)) => format!(", σY/σH = {}", number(y, 4)),
-        _ => String::new(),
-    };
-    let mut fig = Figure::new(
-        format!("Stress distribution P(σ, ζ), {} start{yield_note}", r.start),
-        Axis::linear(x),
-        Axis::linear(y),
-    );
-    let styles = [Style::Line, Style::Dashed, Style::Dotted];
-    for (i, c) in r.curves.iter().enumerate() {
-        let (label, s, p) = match c.zeta {
-            Some(z) => (
-                format!(
-                    "ζ = {}, G = {}, A/A0 = {}{}",
-                    number(z, 6),
-                    number(c.g, 3),
-                    number(c.contact_fraction, 3),
-                    plastic_note(c.elastic_fraction, c.plastic_fraction)
-                ),
-                &c.sigma,
-                &c.density,
-            ),
-            None => (
-                format!(
-                    "G = {}, A/A0 = {}{}",
-                    number(c.g, 6),
-                    number(c.contact_fraction, 3),
-                    plastic_note(c.elastic_fraction, c.plastic_fraction)
-                ),
-                &c.sigma_ratio,
-                &c.scaled_density,
-            ),
-        };
-        // A flat start at G = 0 is a δ at σ0: nothing finite to draw.
-        let pts = s
-            .iter()
-            .copied()
-            .zip(p.iter().copied())
-            .filter(|p| p.1.is_finite())
-            .collect();
-        fig.push(Series::new(label, pts, styles[i % styles.len()]));
-    }
-    // σY marked by a grey vertical line over the height of the curves (the
-    // plastic part A_pl/A0 is the δ at σ = σY, not drawn).
-    let at = match (r.yield_stress, r.yield_ratio) {
-        (Some(y), _) => Some((y, format!("σY = {}", number(y, 4)))),
-        (None, Some(y)) => Some((y, format!("σY/σH = {}", number(y, 4)))),
-        _ => None,
-    };
-    if let Some((y, label)) = at {
-        let top = r
-            .curves
-            .iter()
-            .flat_map(|c| c.density.iter().chain(&c.scaled_density))
-            .copied()
-            .filter(|p| p.is_finite())
-            .fold(0.0f64, f64::max);
-        if top > 0.0 {
-            fig.push(
-                Series::new(label, vec![(y, 0.0), (y, top)], Style::Dashed)
-                    .with_color(crate::plot::Rgb(128, 128, 128)),
-            );
-        }
-    }
-    Ok(fig)
-}
 
 /// FFT-BEM A/A0 against load with the Bush and Persson lines.
 ///
@@ -115,27 +29,13 @@ pub fn bem(r: &persson::bem::rough::RoughReport) -> Result<Figure> {
     plot::area_vs_load(&p, &[(label.as_str(), &a)], "unit of E*", Some(law))
 }
 
-/// C(q) with the fitted power law over its band.
-///
-/// # Errors
-/// An inconsistent report.
-pub fn spectrum(r: &SpectrumReport) -> Result<Figure> {
-    let (q, c): (Vec<f64>, Vec<f64>) = r.curve.iter().map(|p| (p.q, p.c)).unzip();
-    let law = PowerLaw {
-        prefactor: r.power_law_fit.prefactor,
-        exponent: r.power_law_fit.exponent,
-        q_range: Some((r.power_law_fit.q_min, r.power_law_fit.q_max)),
-    };
-    plot::spectrum(&q, &c, Some(law))
-}
-
 /// C(q) of a measured surface with its Hurst fit over the band.
 ///
 /// # Errors
 /// An inconsistent report.
 #[cfg(feature = "topography")]
 pub fn measured_spectrum(a: &persson::topography::Analysis) -> Result<Figure> {
-    let law = a.fit.map(|f| PowerLaw {
+    let law = a.fit.map(|f| crate::plot::PowerLaw {
         prefactor: f.prefactor,
         exponent: -2.0 * (f.hurst + 1.0),
         q_range: Some((a.q_min, a.q_max)),

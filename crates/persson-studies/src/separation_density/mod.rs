@@ -3,10 +3,13 @@
 
 use persson::error::Result;
 
-use crate::scene::separation_density::{separation_density, SeparationDensityReport};
-use crate::scene::SeparationDensityOutput;
+mod density;
+mod spec;
+
 use crate::study::{Context, Inputs, Reads, Study};
 use crate::warning::Warning;
+pub use density::*;
+pub use spec::*;
 
 /// The study `separation_density`.
 pub struct SeparationDensity;

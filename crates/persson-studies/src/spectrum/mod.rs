@@ -2,9 +2,22 @@
 
 use persson::error::Result;
 
-use crate::scene::{run, SpectrumOutput, SpectrumReport, SpectrumSpec, EXAMPLE};
+use crate::contact::spectrum_warnings;
+use crate::input::{SpectrumSpec, EXAMPLE};
+
+#[cfg(feature = "plot")]
+mod plot;
+mod report;
+mod run;
+mod spec;
+
 use crate::study::{plot_file, Context, Inputs, OutFile, Reads, Study};
 use crate::warning::Warning;
+#[cfg(feature = "plot")]
+pub use plot::spectrum as figure;
+pub use report::*;
+pub use run::spectrum;
+pub use spec::*;
 
 /// The study `spectrum`.
 pub struct Spectrum;
@@ -25,14 +38,14 @@ impl Study for Spectrum {
         let spec = ctx.spectrum()?;
         let s = ctx.build_spectrum()?;
         let example = *spec == SpectrumSpec::example();
-        let mut r = run::spectrum(
+        let mut r = spectrum(
             s.as_ref(),
             example.then(|| EXAMPLE.to_string()),
             sp.q_min,
             sp.q_max,
             sp.points,
         )?;
-        for w in run::spectrum_warnings(spec, s.as_ref()) {
+        for w in spectrum_warnings(spec, s.as_ref()) {
             crate::warning::push(&mut r.warnings, Some(w));
         }
         Ok(r)
@@ -56,8 +69,6 @@ impl Study for Spectrum {
         dir: &std::path::Path,
         out: &mut crate::output::Files,
     ) -> Result<()> {
-        crate::study::draw(out, dir, s.plot.as_ref(), || {
-            crate::scene::plot::spectrum(r).map(Box::new)
-        })
+        crate::study::draw(out, dir, s.plot.as_ref(), || figure(r).map(Box::new))
     }
 }

@@ -4,9 +4,19 @@
 use persson::error::Result;
 use persson::stress::Start;
 
-use crate::scene::{run, StressOutput, StressReport};
+#[cfg(feature = "plot")]
+mod plot;
+mod report;
+mod run;
+mod spec;
+
 use crate::study::{plot_file, Context, Inputs, OutFile, Reads, Study};
 use crate::warning::Warning;
+#[cfg(feature = "plot")]
+pub use plot::stress as figure;
+pub use report::*;
+pub use run::{stress_dimensionless, stress_physical};
+pub use spec::*;
 
 /// The study `stress`.
 pub struct Stress;
@@ -27,7 +37,7 @@ impl Study for Stress {
     fn run(ctx: &Context<'_>, st: &StressOutput) -> Result<StressReport> {
         if st.zeta.is_empty() {
             st.check_mode()?;
-            run::stress_dimensionless(
+            stress_dimensionless(
                 &Start::from(st.start),
                 &st.g,
                 st.yield_ratio,
@@ -36,7 +46,7 @@ impl Study for Stress {
                 st.points,
             )
         } else {
-            run::stress_physical(ctx.contact()?, st)
+            stress_physical(ctx.contact()?, st)
         }
     }
 
@@ -58,8 +68,6 @@ impl Study for Stress {
         dir: &std::path::Path,
         out: &mut crate::output::Files,
     ) -> Result<()> {
-        crate::study::draw(out, dir, st.plot.as_ref(), || {
-            crate::scene::plot::stress(r).map(Box::new)
-        })
+        crate::study::draw(out, dir, st.plot.as_ref(), || figure(r).map(Box::new))
     }
 }

@@ -5,164 +5,16 @@ use std::path::PathBuf;
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
-use super::{AdhesionLawName, AreaEnhancementName, BoundaryName, ConnectivityName, StartName};
+use super::{AdhesionLawName, BoundaryName, ConnectivityName};
+pub use crate::adhesion::AdhesionOutput;
 pub use crate::area::AreaOutput;
 pub use crate::kappa::KappaOutput;
 pub use crate::magnification::MagnificationOutput;
 pub use crate::separation::SeparationOutput;
+pub use crate::separation_density::SeparationDensityOutput;
+pub use crate::spectrum::SpectrumOutput;
+pub use crate::stress::{BallSpec, CylinderSpec, StressOutput};
 pub use crate::theories::TheoriesOutput;
-
-/// Spectrum summary: rms height, slope and curvature over [q_min, q_max],
-/// a power-law fit and C(q).
-#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
-pub struct SpectrumOutput {
-    /// Lower end of the band of the moments (default q_l), 1/m.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub q_min: Option<f64>,
-    /// Upper end of the band of the moments (default q_s), 1/m.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub q_max: Option<f64>,
-    /// Number of log-spaced q in the C(q) table (default 11).
-    #[serde(default = "default_spectrum_points")]
-    pub points: usize,
-    /// Draw C(q) with the fitted power law (.svg or .png).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub plot: Option<PathBuf>,
-}
-
-fn default_spectrum_points() -> usize {
-    11
-}
-
-/// The distribution of interfacial separations P(u) at the scene's nominal
-/// pressures (Almqvist, Campañá, Prodanov & Persson, J. Mech. Phys. Solids
-/// 59, 2355 (2011)): the report of `persson separation --separation-density`.
-#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
-pub struct SeparationDensityOutput {
-    /// Separations u per pressure, from 0 to where P_nc is negligible
-    /// (default 101, at least 2).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub density_points: Option<usize>,
-    /// Relative tolerance of the wavevector integrals (default 1e-10).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub tolerance: Option<f64>,
-}
-
-/// Stress distributions: dimensionless at given G (`g`), or in the pressure
-/// unit at given magnifications (`zeta`, with the scene's spectrum and material).
-#[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
-pub struct StressOutput {
-    /// Start condition P(σ, ζ = 1).
-    pub start: StartName,
-    /// Dimensionless mode: the values of G (σ in units of σH).
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub g: Vec<f64>,
-    /// Dimensionless mode: σY/σH (absent: elastic).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub yield_ratio: Option<f64>,
-    /// Physical mode: the magnifications ζ.
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub zeta: Vec<f64>,
-    /// Physical mode: σH (flat: the nominal pressure). Or give `ball` / `cylinder`.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub peak_pressure: Option<f64>,
-    /// Physical mode: a Hertz ball (start `hertz`).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub ball: Option<BallSpec>,
-    /// Physical mode: a Hertz cylinder (start `cylinder`).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub cylinder: Option<CylinderSpec>,
-    /// Physical mode: σY (absent: elastic).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub yield_stress: Option<f64>,
-    /// Number of σ values per curve (default 201).
-    #[serde(default = "default_stress_points")]
-    pub points: usize,
-    /// Absolute tolerance of σH·P and the fractions (default 1e-12).
-    #[serde(default = "default_stress_tolerance")]
-    pub tolerance: f64,
-    /// Draw the family of curves (.svg or .png).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub plot: Option<PathBuf>,
-}
-
-impl StressOutput {
-    /// The fields of one mode only: the dimensionless mode (`g`,
-    /// `yield_ratio`) or the physical one (`zeta` with `peak_pressure`,
-    /// `ball` or `cylinder`, and `yield_stress`), as the command line's flags
-    /// conflict.
-    ///
-    /// # Errors
-    /// [`persson::Error::Inconsistent`] naming the fields of the other mode.
-    pub fn check_mode(&self) -> persson::Result<()> {
-        let physical = !self.zeta.is_empty();
-        let other: Vec<&str> = if physical {
-            [
-                ("g", !self.g.is_empty()),
-                ("yield_ratio", self.yield_ratio.is_some()),
-            ]
-            .into_iter()
-            .filter_map(|(n, given)| given.then_some(n))
-            .collect()
-        } else {
-            [
-                ("peak_pressure", self.peak_pressure.is_some()),
-                ("ball", self.ball.is_some()),
-                ("cylinder", self.cylinder.is_some()),
-                ("yield_stress", self.yield_stress.is_some()),
-            ]
-            .into_iter()
-            .filter_map(|(n, given)| given.then_some(n))
-            .collect()
-        };
-        match other.is_empty() {
-            true => Ok(()),
-            false => Err(persson::Error::Inconsistent {
-                name: other.join(", "),
-                requirement: if physical {
-                    "the dimensionless mode's (g, yield_ratio): not with zeta, the physical mode \
-                     (its yield stress is yield_stress, in the pressure unit)"
-                        .into()
-                } else {
-                    "the physical mode's: give zeta with them (or g alone, the dimensionless mode, \
-                     whose yield stress is yield_ratio)"
-                        .into()
-                },
-            }),
-        }
-    }
-}
-
-fn default_stress_points() -> usize {
-    201
-}
-
-fn default_stress_tolerance() -> f64 {
-    1e-12
-}
-
-/// A Hertz ball: radius (m) and load (N).
-#[derive(Debug, Clone, Copy, Deserialize, Serialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
-pub struct BallSpec {
-    /// Radius R, m.
-    pub radius: f64,
-    /// Load F, N.
-    pub load: f64,
-}
-
-/// A Hertz cylinder: radius (m) and load per unit length (N/m).
-#[derive(Debug, Clone, Copy, Deserialize, Serialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
-pub struct CylinderSpec {
-    /// Radius R, m.
-    pub radius: f64,
-    /// Load per unit length F, N/m.
-    pub load_per_length: f64,
-}
 
 /// FFT-BEM rough contact: the surface is synthesised from the scene's
 /// spectrum (side 2π/q_l, `grid` nodes, `seed`) or read from its height map.
@@ -295,31 +147,4 @@ pub struct BemAdhesionOutput {
     /// the control of the free boundary).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub approach: Vec<f64>,
-}
-
-/// Adhesion from Persson's theory (Persson & Tosatti, J. Chem. Phys. 115,
-/// 5597 (2001); Persson, Eur. Phys. J. E 8, 385 (2002)): the energy balance
-/// at full contact per magnification and its stickiness verdict, and A/A0
-/// against the scene's nominal pressures (tension ≤ 0 allowed) with the
-/// pull-off stress.
-#[derive(Debug, Clone, Default, Deserialize, Serialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
-pub struct AdhesionOutput {
-    /// Work of adhesion Δγ, J/m² (≥ 0).
-    pub work_of_adhesion: f64,
-    /// Magnification ζ of the contact points (default q_s/q_l, full magnification).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub zeta: Option<f64>,
-    /// Number of log-spaced ζ from 1 to q_s/q_l of the stickiness balance (default 11).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub points: Option<usize>,
-    /// Whether Δγ acts on the true (sloped) area (`slopes`, default) or the projected one (`none`).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub area_enhancement: Option<AreaEnhancementName>,
-    /// Range Δr of the adhesive interaction, m: adds the Pastewka–Robbins criterion.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub adhesion_range: Option<f64>,
-    /// Absolute tolerance of the contact fractions (default 1e-5).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub tolerance: Option<f64>,
 }

@@ -13,7 +13,7 @@
 
 use serde::Serialize;
 
-use super::RoughContact;
+use crate::contact::RoughContact;
 use crate::table::{Table, Tabulate};
 use crate::Warning;
 use persson::error::{check, Result};

@@ -8,8 +8,7 @@ use persson::adhesion::{AdhesionModel, AdhesiveContact, AdhesivePoint, Flag};
 use persson::error::{check, Error, Result};
 use persson::theory::log_zetas;
 
-use super::report::AdhesionReport;
-use super::schema::AdhesionOutput;
+use super::{AdhesionOutput, AdhesionReport};
 use crate::contact::RoughContact;
 use crate::warning::{self, Warning};
 

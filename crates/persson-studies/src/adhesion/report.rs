@@ -3,7 +3,7 @@
 
 use serde::Serialize;
 
-use crate::scene::AreaEnhancementName;
+use crate::input::AreaEnhancementName;
 use crate::table::{number, Cell, Table, Tabulate};
 use persson::adhesion::{AdhesivePoint, PastewkaRobbins, Stickiness};
 
