@@ -85,7 +85,7 @@ impl<'a> Observed<'a> {
             #[cfg(not(feature = "flow"))]
             Some(_) => {
                 let _ = (grid, pressures, tolerance);
-                bail!("this persson was built without the `flow` feature")
+                Err(super::left_out("flow"))
             }
         }
     }

@@ -83,12 +83,35 @@ enum Cmd {
     /// Theories against the BEM at several resolutions, its continuum limit, κ and your data.
     #[cfg(feature = "bem")]
     Compare(compare::Args),
+    /// FFT boundary-element cross-check (needs the feature `bem`).
+    #[cfg(not(feature = "bem"))]
+    Bem(LeftOut),
+    /// Theories against the BEM (needs the feature `bem`).
+    #[cfg(not(feature = "bem"))]
+    Compare(LeftOut),
     /// Rubber friction μ(v, T, σ0) and A/A0 from a viscoelastic master curve (Persson 2001, 2006).
     Friction(friction::Args),
     /// Thermal and electrical contact conductance against load (Barber's identity; gap over P(u)).
     Conductance(conductance::Args),
     /// Leak rate of a static seal against load (critical junction, effective medium).
     Leakage(leakage::Args),
+}
+
+/// The arguments of a command whose feature this build leaves out: taken
+/// as they come, and refused naming the feature.
+#[derive(clap::Args, Debug)]
+pub struct LeftOut {
+    #[arg(trailing_var_arg = true, allow_hyphen_values = true, hide = true)]
+    args: Vec<String>,
+}
+
+/// The error of a command that needs `feature`.
+pub fn left_out(feature: &str) -> anyhow::Error {
+    anyhow::anyhow!(
+        "this command needs the feature `{feature}`, which this build of persson leaves out: \
+         build with `cargo run --release --features full -- …` or install with \
+         `cargo install --path crates/persson-cli --features full`"
+    )
 }
 
 /// Run one parsed command line (`matches` as clap parsed it): every file it
@@ -125,6 +148,8 @@ fn stage(cli: Cli, matches: &clap::ArgMatches) -> anyhow::Result<persson_studies
         Cmd::Bem(a) => bem::run(a, o),
         #[cfg(feature = "bem")]
         Cmd::Compare(a) => compare::run(a, o),
+        #[cfg(not(feature = "bem"))]
+        Cmd::Bem(_) | Cmd::Compare(_) => Err(left_out("bem")),
         Cmd::Friction(a) => friction::run(a, o),
         Cmd::Conductance(a) => conductance::run(a, o),
         Cmd::Leakage(a) => leakage::run(a, o),

@@ -90,10 +90,8 @@ fn measured(
     map: &persson_studies::scene::HeightMapSpec,
     _: &mut Files,
 ) -> anyhow::Result<()> {
-    anyhow::bail!(
-        "--surface {}: this persson was built without the `topography` feature",
-        map.file.display()
-    )
+    Err(super::left_out("topography"))
+        .map_err(|e| e.context(format!("--surface {}", map.file.display())))
 }
 
 /// Several `--surface`: each measurement's band and the combined spectrum.

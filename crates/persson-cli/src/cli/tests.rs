@@ -330,3 +330,12 @@ fn files_named(d: &Path, stem: &str) -> Vec<PathBuf> {
         })
         .collect()
 }
+
+/// A command whose feature a build leaves out names the feature and the
+/// build that has it (the default build is the theory's).
+#[test]
+fn a_left_out_feature_is_named_with_the_build_that_has_it() {
+    let e = super::left_out("bem").to_string();
+    assert!(e.contains("the feature `bem`"), "{e}");
+    assert!(e.contains("--features full"), "{e}");
+}
