@@ -37,12 +37,10 @@ pub mod bem_adhesion;
 #[cfg(feature = "bem")]
 pub mod bem_detail;
 pub mod bem_hertz;
-pub mod conductance;
 pub mod contact;
 pub mod friction;
 pub mod input;
 pub mod kappa;
-pub mod leakage;
 pub mod magnification;
 pub mod naming;
 pub mod output;
@@ -57,6 +55,7 @@ pub mod stress;
 pub mod study;
 pub mod table;
 pub mod theories;
+pub mod transport;
 pub mod validation;
 pub mod warning;
 

@@ -2,9 +2,9 @@
 //! load, through the contact spots (Barber's identity on Persson's stiffness)
 //! and through the gap (over P(u)); the scene output `conductance`.
 
-use persson_studies::conductance::Conductance;
 use persson_studies::scene::ConductanceOutput;
 use persson_studies::study::Context;
+use persson_studies::transport::Conductance;
 
 use super::args::{measured_contact, pressures, MaterialArgs, MeasuredArgs, SpectrumArgs};
 use super::number::number;

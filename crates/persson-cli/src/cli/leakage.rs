@@ -95,5 +95,5 @@ pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Resul
     let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
     let pressures = pressures(&a.pressure, a.spectrum.example)?;
     let ctx = persson_studies::study::Context::with_contact(surface, &pressures);
-    super::study::run::<persson_studies::leakage::Leakage>(&ctx, &out, files, &a.format)
+    super::study::run::<persson_studies::transport::Leakage>(&ctx, &out, files, &a.format)
 }

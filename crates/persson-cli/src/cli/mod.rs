@@ -105,7 +105,11 @@ pub struct LeftOut {
     args: Vec<String>,
 }
 
-/// The error of a command that needs `feature`.
+/// The error of a command that needs `feature` (unused in a build with all).
+#[cfg_attr(
+    all(feature = "bem", feature = "flow", feature = "topography"),
+    allow(dead_code)
+)]
 pub fn left_out(feature: &str) -> anyhow::Error {
     anyhow::anyhow!(
         "this command needs the feature `{feature}`, which this build of persson leaves out: \

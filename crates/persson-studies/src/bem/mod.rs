@@ -78,6 +78,8 @@ impl Study for Bem {
     }
 }
 
+#[cfg(all(feature = "bem", feature = "plot"))]
+pub mod figures;
 #[cfg(feature = "bem")]
 mod rough;
 #[cfg(feature = "bem")]

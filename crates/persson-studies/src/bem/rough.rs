@@ -117,8 +117,8 @@ pub fn write(
 /// plane's von Mises map beside the depth plot (`_k_j` added).
 #[cfg(feature = "plot")]
 fn plots(b: &BemOutput, r: &Report, ctx: &Context<'_>, dir: &Path, out: &mut Files) -> Result<()> {
+    use super::figures as plot;
     use crate::plot::Encode;
-    use crate::scene::plot;
     use crate::study::draw;
     draw(out, dir, b.plot.as_ref(), || {
         plot::bem(&r.rough).map(Box::new)

@@ -2,10 +2,19 @@
 
 use persson::error::Result;
 
-use crate::scene::friction::friction_named;
-use crate::scene::{FrictionOutput, FrictionReport};
+#[cfg(feature = "plot")]
+mod plot;
+mod report;
+mod run;
+mod spec;
+
 use crate::study::{plot_file, Context, Inputs, OutFile, Reads, Study};
 use crate::warning::Warning;
+#[cfg(feature = "plot")]
+pub use plot::friction as figure;
+pub use report::*;
+pub use run::*;
+pub use spec::*;
 
 /// The study `friction`.
 pub struct Friction;
@@ -56,8 +65,6 @@ impl Study for Friction {
         dir: &std::path::Path,
         out: &mut crate::output::Files,
     ) -> Result<()> {
-        crate::study::draw(out, dir, f.plot.as_ref(), || {
-            crate::scene::plot::friction(r).map(Box::new)
-        })
+        crate::study::draw(out, dir, f.plot.as_ref(), || figure(r).map(Box::new))
     }
 }

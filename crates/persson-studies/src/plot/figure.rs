@@ -232,3 +232,12 @@ impl Figure {
         self.series.push(series);
     }
 }
+
+/// The positive (x, y) pairs of a curve: a log axis has no room for zero
+/// (a sealed load's Q = 0 is in the table, not on the figure).
+pub(crate) fn positive(points: impl Iterator<Item = (f64, Option<f64>)>) -> Vec<(f64, f64)> {
+    points
+        .filter_map(|(x, y)| y.map(|y| (x, y)))
+        .filter(|&(x, y)| x > 0.0 && y > 0.0 && y.is_finite())
+        .collect()
+}

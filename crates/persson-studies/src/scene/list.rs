@@ -37,8 +37,8 @@ studies! {
     friction: crate::friction::Friction,
     /// Thermal and electrical contact conductance against load, theory and
     /// (with `bem`) the FFT-BEM.
-    conductance: crate::conductance::Conductance,
+    conductance: crate::transport::Conductance,
     /// Leak rate of a static seal against load: critical junction, effective
     /// medium and (with `bem`) Reynolds flow on the FFT-BEM's gap.
-    leakage: crate::leakage::Leakage,
+    leakage: crate::transport::Leakage,
 }

@@ -34,7 +34,6 @@ use crate::output::Files;
 
 #[cfg(feature = "bem")]
 pub(crate) mod bem;
-pub mod friction;
 mod list;
 pub mod multiscale;
 #[cfg(feature = "plot")]
@@ -42,18 +41,18 @@ pub mod plot;
 pub mod report;
 pub mod run;
 pub mod schema;
-pub mod transport;
-#[cfg(feature = "flow")]
-pub mod transport_bem;
-mod transport_request;
 
 pub use crate::adhesion::{
     DEFAULT_STICKINESS_POINTS, DEFAULT_TOLERANCE as DEFAULT_ADHESION_TOLERANCE,
 };
+pub use crate::friction;
+pub use crate::friction::{friction, friction_on, MAX_VELOCITIES};
 #[cfg(feature = "topography")]
 pub use crate::input::describe;
 pub use crate::separation_density;
-pub use friction::{friction, friction_on, MAX_VELOCITIES};
+pub use crate::transport;
+#[cfg(feature = "flow")]
+pub use crate::transport::bem as transport_bem;
 pub use list::{Outputs, SceneReport};
 pub use report::*;
 pub use run::RoughContact;

@@ -13,6 +13,8 @@ mod spec;
 
 use crate::study::{plot_file, Context, Inputs, OutFile, Reads, Study};
 use crate::warning::Warning;
+#[cfg(all(feature = "plot", feature = "topography"))]
+pub use plot::measured_spectrum;
 #[cfg(feature = "plot")]
 pub use plot::spectrum as figure;
 pub use report::*;

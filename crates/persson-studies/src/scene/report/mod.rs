@@ -3,17 +3,15 @@
 //! (its text and CSV tables); the figures are drawn from them alone.
 
 mod bem;
-mod friction;
-mod transport;
 
 pub use crate::adhesion::AdhesionReport;
 pub use crate::area::{AreaReport, LoadPoint};
+pub use crate::friction::FrictionReport;
 pub use crate::kappa::{KappaReport, LinearPoint};
 pub use crate::magnification::MagnificationReport;
 pub use crate::separation::SeparationReport;
 pub use crate::spectrum::{PowerLawFit, SpectrumPoint, SpectrumReport};
 pub use crate::stress::{StressCurveReport, StressReport};
 pub use crate::theories::{TheoriesReport, TheoryCurve};
+pub use crate::transport::report::*;
 pub use bem::*;
-pub use friction::*;
-pub use transport::*;

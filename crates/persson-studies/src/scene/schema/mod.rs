@@ -8,17 +8,15 @@
 //! |---|---|
 //! | this one | the scene ([`Scene`]); its inputs are [`crate::input`]'s |
 //! | `outputs` | what a scene asks for, one struct per output |
-//! | `transport` | the `conductance` and `leakage` outputs |
 
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
 mod outputs;
-mod transport;
 
 pub use crate::input::*;
+pub use crate::transport::{ConductanceOutput, LeakageOutput, TransportBem};
 pub use outputs::*;
-pub use transport::*;
 
 /// The scene format version this crate reads.
 pub const SCHEMA: u32 = 1;

@@ -8,6 +8,7 @@ use serde::{Deserialize, Serialize};
 use super::{AdhesionLawName, BoundaryName, ConnectivityName};
 pub use crate::adhesion::AdhesionOutput;
 pub use crate::area::AreaOutput;
+pub use crate::friction::{FrictionOutput, VelocityRange};
 pub use crate::kappa::KappaOutput;
 pub use crate::magnification::MagnificationOutput;
 pub use crate::separation::SeparationOutput;

@@ -3,7 +3,8 @@
 
 use persson::error::Result;
 
-use crate::scene::{transport, ConductanceOutput, ConductanceReport};
+use super::run as transport;
+use super::{ConductanceOutput, ConductanceReport};
 use crate::study::{plot_file, Context, Inputs, OutFile, Reads, Study};
 use crate::warning::Warning;
 
@@ -42,7 +43,7 @@ impl Study for Conductance {
         out: &mut crate::output::Files,
     ) -> Result<()> {
         crate::study::draw(out, dir, c.plot.as_ref(), || {
-            crate::scene::plot::conductance(r).map(Box::new)
+            super::conductance_figure(r).map(Box::new)
         })
     }
 }

@@ -10,9 +10,9 @@ use persson::friction::{
 };
 use persson::spectrum::Spectrum;
 
-use super::report::FrictionReport;
-use super::run::spectrum_warnings;
-use super::schema::{FrictionOutput, RubberSpec, SpectrumSpec};
+use super::{FrictionOutput, FrictionReport};
+use crate::contact::spectrum_warnings;
+use crate::input::{RubberSpec, SpectrumSpec};
 use crate::naming::prefix;
 use crate::naming::required;
 use crate::warning::{self, Warning};

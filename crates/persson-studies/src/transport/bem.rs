@@ -15,8 +15,8 @@ use persson::spectrum::Spectrum;
 use persson::Estimate;
 
 use super::report::{BemFlow, BemTransportPoint, BemTransportReport, Direction};
-use super::schema::TransportBem;
-use super::transport_request::TransportRequest;
+use super::request::TransportRequest;
+use super::spec::TransportBem;
 
 /// Default solver tolerance of the contact and of the stiffness's CG.
 pub const DEFAULT_TOLERANCE: f64 = 1e-10;

@@ -1,6 +1,6 @@
 //! The outputs `conductance` and `leakage` (the subcommands of the same
 //! names run these functions): the theory's curve, and with `bem` the
-//! FFT-BEM's values at the same loads ([`super::transport_bem`], feature `flow`).
+//! FFT-BEM's values at the same loads ([`super::bem`], feature `flow`).
 
 use persson::conductance::{Conductance, ConductanceOptions, Conductivity, GapLaw, Resistivity};
 use persson::error::{check, Error, Result};
@@ -12,13 +12,13 @@ use persson::leakage::{
 use super::report::{
     BemTransportPoint, BemTransportReport, ConductanceReport, Fluid, LeakagePoint, LeakageReport,
 };
-use super::schema::{ConductanceOutput, LeakageOutput, TransportBem};
+use super::spec::{ConductanceOutput, LeakageOutput, TransportBem};
 use crate::contact::RoughContact;
 use crate::naming::prefix;
 use crate::naming::required;
 use crate::warning::{self, Warning};
 
-pub use super::transport_request::TransportRequest;
+pub use super::request::TransportRequest;
 
 /// Default relative tolerance of the wavevector integrals of both outputs.
 pub const DEFAULT_TOLERANCE: f64 = persson::gap::DEFAULT_TOLERANCE;
@@ -398,7 +398,7 @@ fn bem(
     b: &TransportBem,
     request: &TransportRequest,
 ) -> Result<BemTransportReport> {
-    super::transport_bem::synthesised(
+    super::bem::synthesised(
         surface.spectrum.as_ref(),
         surface.contact_modulus,
         pressures,

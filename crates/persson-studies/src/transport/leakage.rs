@@ -4,7 +4,8 @@
 
 use persson::error::Result;
 
-use crate::scene::{transport, LeakageOutput, LeakageReport};
+use super::run as transport;
+use super::{LeakageOutput, LeakageReport};
 use crate::study::{plot_file, Context, Inputs, OutFile, Reads, Study};
 use crate::warning::Warning;
 
@@ -43,7 +44,7 @@ impl Study for Leakage {
         out: &mut crate::output::Files,
     ) -> Result<()> {
         crate::study::draw(out, dir, l.plot.as_ref(), || {
-            crate::scene::plot::leakage(r).map(Box::new)
+            super::leakage_figure(r).map(Box::new)
         })
     }
 }
