@@ -6,8 +6,10 @@ use std::path::Path;
 use persson::error::Result;
 
 use crate::output::Files;
-use crate::scene::BemOutput;
+mod spec;
+
 use crate::study::{Context, Inputs, OutFile, Reads, Study};
+pub use spec::*;
 
 /// The study `bem`.
 pub struct Bem;
@@ -82,6 +84,8 @@ impl Study for Bem {
 pub mod figures;
 #[cfg(feature = "bem")]
 mod rough;
+#[cfg(feature = "bem")]
+pub(crate) mod solve;
 #[cfg(feature = "bem")]
 pub use rough::{entries, run, warnings, write, Report};
 

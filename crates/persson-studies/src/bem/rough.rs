@@ -6,9 +6,9 @@ use persson::bem::rough::RoughReport;
 use persson::error::Result;
 use serde::Serialize;
 
+use super::spec::BemOutput;
 use crate::bem_detail::{PatchReport, StressMap, SubsurfaceStudy};
 use crate::output::Files;
-use crate::scene::BemOutput;
 use crate::study::Context;
 use crate::table::{Table, Tabulate};
 
@@ -46,7 +46,7 @@ impl Tabulate for Report {
 /// # Errors
 /// Missing or invalid inputs; a solve that fails.
 pub fn run(ctx: &Context<'_>, b: &BemOutput) -> Result<Report> {
-    let (rough, details) = crate::scene::bem::bem_rough(ctx, b)?;
+    let (rough, details) = super::solve::bem_rough(ctx, b)?;
     Ok(Report {
         rough,
         patches: details.patches,

@@ -4,8 +4,8 @@ use std::path::Path;
 
 use persson::error::Result;
 
+use super::spec::BemOutput;
 use crate::output::Files;
-use crate::scene::BemOutput;
 use crate::study::{unavailable, Context};
 
 pub use crate::study::Unavailable as Report;

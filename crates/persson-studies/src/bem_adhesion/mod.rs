@@ -3,8 +3,12 @@
 
 use persson::error::Result;
 
-use crate::scene::BemAdhesionOutput;
+#[cfg(feature = "bem")]
+mod run;
+mod spec;
+
 use crate::study::{Context, Inputs, Reads, Study};
+pub use spec::*;
 
 /// The study `bem_adhesion`.
 pub struct BemAdhesion;
@@ -24,7 +28,7 @@ impl Study for BemAdhesion {
     }
 
     fn run(ctx: &Context<'_>, a: &BemAdhesionOutput) -> Result<Self::Report> {
-        crate::scene::bem::bem_adhesion(ctx, a)
+        run::bem_adhesion(ctx, a)
     }
 
     fn warnings(r: &Self::Report) -> Vec<crate::warning::Warning> {

@@ -2,8 +2,14 @@
 
 use persson::error::Result;
 
-use crate::scene::{BemHertzOutput, BemHertzReport};
+mod report;
+#[cfg(feature = "bem")]
+mod run;
+mod spec;
+
 use crate::study::{Context, Inputs, Reads, Study};
+pub use report::*;
+pub use spec::*;
 
 /// The study `bem_hertz`.
 pub struct BemHertz;
@@ -23,7 +29,7 @@ impl Study for BemHertz {
 }
 
 #[cfg(feature = "bem")]
-use crate::scene::bem::bem_hertz as hertz;
+use run::bem_hertz as hertz;
 
 #[cfg(not(feature = "bem"))]
 fn hertz(_: &BemHertzOutput) -> Result<BemHertzReport> {

@@ -32,8 +32,6 @@ use persson::spectrum::Spectrum;
 
 use crate::output::Files;
 
-#[cfg(feature = "bem")]
-pub(crate) mod bem;
 mod list;
 pub mod multiscale;
 #[cfg(feature = "plot")]

@@ -2,10 +2,9 @@
 //! name) computed. Every report is `Serialize` (its JSON) and [`Tabulate`](crate::table::Tabulate)
 //! (its text and CSV tables); the figures are drawn from them alone.
 
-mod bem;
-
 pub use crate::adhesion::AdhesionReport;
 pub use crate::area::{AreaReport, LoadPoint};
+pub use crate::bem_hertz::{BemHertzReport, BemHertzRow};
 pub use crate::friction::FrictionReport;
 pub use crate::kappa::{KappaReport, LinearPoint};
 pub use crate::magnification::MagnificationReport;
@@ -14,4 +13,3 @@ pub use crate::spectrum::{PowerLawFit, SpectrumPoint, SpectrumReport};
 pub use crate::stress::{StressCurveReport, StressReport};
 pub use crate::theories::{TheoriesReport, TheoryCurve};
 pub use crate::transport::report::*;
-pub use bem::*;

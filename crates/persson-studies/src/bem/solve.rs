@@ -1,77 +1,20 @@
-//! The FFT-BEM outputs of a scene (feature `bem`): rough contact at the
-//! scene's pressures and the Hertz convergence table.
+//! The solves of `bem` (feature `bem`): the rigid surface, one solve per
+//! pressure, and the patch and stress studies of the solves.
 
 use persson::bem::patches::PatchOptions;
 use persson::bem::rough::{self, RoughOptions, RoughReport, SurfaceOrigin};
-use persson::bem::{check_memory, hertz, surface, Options};
+use persson::bem::{check_memory, surface, Options};
 use persson::error::{check, Error, Result};
 
-use super::report::{BemHertzReport, BemHertzRow};
-use super::schema::{BemHertzOutput, BemOutput, BoundaryName, SpectrumSpec};
+use super::spec::BemOutput;
 use crate::bem_detail::{Details, SubsurfaceOptions, DEFAULT_POISSON};
+use crate::input::{BoundaryName, SpectrumSpec};
 use crate::naming::prefix;
 use crate::naming::required;
 
-/// `outputs.bem_hertz`: η per grid.
-///
-/// # Errors
-/// A grid too large for memory; a tolerance out of range; a solve that fails.
-pub fn bem_hertz(h: &BemHertzOutput) -> Result<BemHertzReport> {
-    let named = |e: Error| prefix("outputs.bem_hertz.", e);
-    let boundary_name = h.boundary.unwrap_or(BoundaryName::Free);
-    let boundary = boundary_name.into();
-    let tol = check::tolerance("tolerance", h.tolerance.unwrap_or(1e-12)).map_err(named)?;
-    let grids = if h.grids.is_empty() {
-        vec![64, 128, 256]
-    } else {
-        h.grids.clone()
-    };
-    let opts = Options {
-        tolerance: tol,
-        ..Options::default()
-    };
-    let rows = grids
-        .iter()
-        .map(|&n| {
-            check_memory(n, boundary).map_err(named)?;
-            let r = hertz::validate(&hertz::HertzCase::new(n, boundary), &opts).map_err(named)?;
-            let reference = hertz::lecture_eta(n).filter(|_| boundary_name == BoundaryName::Free);
-            Ok(BemHertzRow {
-                grid: n,
-                energy_error: r.energy_error,
-                energy_error_published: reference,
-                contact_radius_error: r.contact_radius_error,
-                peak_pressure_error: r.peak_pressure_error,
-                contact_fraction: r.contact_fraction,
-                iterations: r.iterations,
-                seconds: r.seconds,
-            })
-        })
-        .collect::<Result<Vec<_>>>()?;
-    let plastic = match h.yield_stress {
-        Some(y) => Some(
-            hertz::plastic_disc(
-                &hertz::HertzCase::new(grids[0], boundary),
-                &grids,
-                y,
-                &opts,
-                &mut |_, _| {},
-            )
-            .map_err(named)?,
-        ),
-        None => None,
-    };
-    Ok(BemHertzReport {
-        boundary: boundary_name,
-        tolerance: tol,
-        rows,
-        plastic,
-    })
-}
-
 /// The rigid surface of a BEM output (`section`, e.g. `outputs.bem.`): the
 /// height map, or synthesised from the spectrum on `grid` nodes with `seed`.
-fn bem_surface(
+pub(crate) fn bem_surface(
     ctx: &crate::study::Context<'_>,
     (section, grid, seed): (&str, Option<usize>, Option<u64>),
     boundary: persson::bem::Boundary,
@@ -192,49 +135,4 @@ fn details(
     });
     Details::new(grid, ctx.nominal_pressure(), patches, subsurface)
         .map_err(|e| prefix("outputs.bem.subsurface.", e))
-}
-
-/// `outputs.bem_adhesion`: the adhesive FFT-BEM along the scene's path of
-/// mean gaps (or approaches), on the scene's surface
-/// ([`crate::bem_detail::adhesive_controlled_path`], the loop of `persson bem
-/// rough --work-of-adhesion`).
-///
-/// # Errors
-/// Missing or invalid inputs (named `outputs.bem_adhesion.…`); neither or
-/// both of `mean_gap` and `approach`; `mean_gap` on the free boundary; a
-/// solve that fails.
-pub fn bem_adhesion(
-    ctx: &crate::study::Context<'_>,
-    a: &super::schema::BemAdhesionOutput,
-) -> Result<crate::bem_detail::AdhesiveBemReport> {
-    use crate::bem_detail::{adhesive_controlled_path, PathControl};
-    let named = |e: Error| prefix("outputs.bem_adhesion.", e);
-    let boundary_name = a.boundary.unwrap_or(BoundaryName::Periodic);
-    let tol = check::tolerance("tolerance", a.tolerance.unwrap_or(1e-10)).map_err(named)?;
-    let control =
-        PathControl::new(&a.mean_gap, &a.approach, boundary_name.into()).map_err(named)?;
-    let e_star = ctx.build_material()?.contact_modulus();
-    let surf = bem_surface(
-        ctx,
-        ("outputs.bem_adhesion.", a.grid, a.seed),
-        boundary_name.into(),
-    )?;
-    let options = persson::bem::adhesive::AdhesiveOptions {
-        tolerance: tol,
-        ..Default::default()
-    };
-    adhesive_controlled_path(
-        &surf.heights,
-        (surf.n, surf.size, e_star),
-        boundary_name.into(),
-        (
-            a.adhesion.unwrap_or_default().into(),
-            a.work_of_adhesion,
-            a.adhesion_range,
-        ),
-        control,
-        &options,
-        crate::bem_detail::AdhesiveIteration::Auto,
-    )
-    .map_err(named)
 }

@@ -1,0 +1,53 @@
+//! The adhesive FFT-BEM along a path (feature `bem`).
+
+use persson::error::{check, Error, Result};
+
+use super::spec::BemAdhesionOutput;
+use crate::bem::solve::bem_surface;
+use crate::input::BoundaryName;
+use crate::naming::prefix;
+
+/// `outputs.bem_adhesion`: the adhesive FFT-BEM along the scene's path of
+/// mean gaps (or approaches), on the scene's surface
+/// ([`crate::bem_detail::adhesive_controlled_path`], the loop of `persson bem
+/// rough --work-of-adhesion`).
+///
+/// # Errors
+/// Missing or invalid inputs (named `outputs.bem_adhesion.…`); neither or
+/// both of `mean_gap` and `approach`; `mean_gap` on the free boundary; a
+/// solve that fails.
+pub fn bem_adhesion(
+    ctx: &crate::study::Context<'_>,
+    a: &BemAdhesionOutput,
+) -> Result<crate::bem_detail::AdhesiveBemReport> {
+    use crate::bem_detail::{adhesive_controlled_path, PathControl};
+    let named = |e: Error| prefix("outputs.bem_adhesion.", e);
+    let boundary_name = a.boundary.unwrap_or(BoundaryName::Periodic);
+    let tol = check::tolerance("tolerance", a.tolerance.unwrap_or(1e-10)).map_err(named)?;
+    let control =
+        PathControl::new(&a.mean_gap, &a.approach, boundary_name.into()).map_err(named)?;
+    let e_star = ctx.build_material()?.contact_modulus();
+    let surf = bem_surface(
+        ctx,
+        ("outputs.bem_adhesion.", a.grid, a.seed),
+        boundary_name.into(),
+    )?;
+    let options = persson::bem::adhesive::AdhesiveOptions {
+        tolerance: tol,
+        ..Default::default()
+    };
+    adhesive_controlled_path(
+        &surf.heights,
+        (surf.n, surf.size, e_star),
+        boundary_name.into(),
+        (
+            a.adhesion.unwrap_or_default().into(),
+            a.work_of_adhesion,
+            a.adhesion_range,
+        ),
+        control,
+        &options,
+        crate::bem_detail::AdhesiveIteration::Auto,
+    )
+    .map_err(named)
+}
