@@ -2,8 +2,6 @@
 //! Persson's finite-σY P(σ) (issue 14, item 3).
 #![cfg(feature = "bem")]
 
-mod common;
-
 use persson::bem::histogram::integral;
 use persson::spectrum::{Amplitude, SelfAffine};
 use persson_studies::validation::{compare, Comparison, ComparisonConfig, SweepSettings};

@@ -4,7 +4,7 @@
 //! periodic load, the patch areas adding up to the contact area.
 #![cfg(feature = "bem")]
 
-mod common;
+use crate::common;
 
 use common::{json, persson};
 use serde_json::Value;

@@ -3,7 +3,7 @@
 //! a `height_map` spectrum, `compare --surface`.
 #![cfg(feature = "topography")]
 
-mod common;
+use crate::common;
 use common::{json, persson};
 
 use std::path::{Path, PathBuf};

@@ -3,7 +3,7 @@
 //! that tie the printed numbers together.
 #![cfg(feature = "flow")]
 
-mod common;
+use crate::common;
 
 use common::json;
 

@@ -2,7 +2,7 @@
 //! method cross-checks and input validation.
 
 // The one oracle of the workspace's tests (the root crate's tests/common).
-#[path = "../../../tests/common/oracle.rs"]
+#[path = "../../../../tests/common/oracle.rs"]
 mod oracle;
 use persson::stress::{distribution, Start};
 

@@ -10,7 +10,7 @@ use persson_studies::plot::stress_map::{hertz_section_figure, von_mises_plane, F
 
 /// Johnson (1985) §3.4 for ν = 0.3: on the axis σ_vM = σ_r − σ_z = 2τ,
 /// largest 2 · 0.3107 p0 at z = 0.4807 a (golden section on the closed
-/// forms, crates/persson-cli/tests/bem_detail.rs).
+/// forms, crates/persson-cli/tests/suite/bem_detail.rs).
 const VM_MAX: f64 = 2.0 * 0.3107;
 const VM_DEPTH: f64 = 0.4807;
 

@@ -17,8 +17,6 @@ fn surface() -> SelfAffine {
 
 // ------------------------------------------------------------- CLI
 
-mod common;
-
 mod cli {
     use super::*;
     use crate::common::{json, persson};

@@ -1,7 +1,7 @@
 //! `persson friction`: its JSON, the scene output of the same name, and bad
 //! input (every case exits 2 naming the flag's field or the file's line).
 
-mod common;
+use crate::common;
 
 use common::{json, persson};
 

@@ -4,8 +4,7 @@
 #![cfg(feature = "bem")]
 
 // The one oracle of the workspace's tests (the root crate's tests/common).
-#[path = "../../../tests/common/oracle.rs"]
-mod oracle;
+use crate::oracle;
 
 use persson::bem::histogram::integral;
 use persson::bem::resample::nested_surfaces;

@@ -2,8 +2,6 @@
 //! synthesis statistics, height-map I/O and bad input (issue 4).
 #![cfg(feature = "bem")]
 
-mod common;
-
 mod cli {
     use crate::common::persson;
 

@@ -3,7 +3,7 @@
 //! is 1, the first moment is ū plus the fold's shift, and the trapezoidal
 //! integral of the printed P_nc(u) recovers the non-contact fraction.
 
-mod common;
+use crate::common;
 
 use common::{json, persson};
 use serde_json::Value;

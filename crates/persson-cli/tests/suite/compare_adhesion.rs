@@ -5,7 +5,7 @@
 //! range is h'_rms L/N; the BEM path reaches tension and lets go; bad flags.
 #![cfg(feature = "bem")]
 
-mod common;
+use crate::common;
 
 use common::{json, persson};
 use serde_json::Value;

@@ -4,7 +4,7 @@
 //! either finite numbers with `–`/`null` for what cannot be computed and a
 //! warning that says why, or exit 2 naming the input.
 
-mod common;
+use crate::common;
 
 use common::persson;
 

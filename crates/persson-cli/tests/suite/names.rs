@@ -4,13 +4,13 @@
 //! container keys allowed below).
 #![cfg(feature = "bem")]
 
-mod common;
+use crate::common;
 
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 
 /// The one source of names.
-const NAMES: &str = include_str!("../../../src/names.md");
+const NAMES: &str = include_str!("../../../../src/names.md");
 
 /// Keys that hold other values rather than name a quantity. Keep this list
 /// short: a quantity belongs in `src/names.md`, not here.

@@ -4,7 +4,7 @@
 //! bad input.
 #![cfg(feature = "bem")]
 
-mod common;
+use crate::common;
 
 use common::{json, persson};
 use serde_json::Value;

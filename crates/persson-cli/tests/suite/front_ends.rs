@@ -3,7 +3,7 @@
 //! naming its field (`outputs.area.zeta`, `material.young2`), and a scene
 //! section no output reads is checked all the same.
 
-mod common;
+use crate::common;
 
 use common::persson;
 

@@ -10,8 +10,7 @@ use persson_studies::plot::{
 };
 
 // The one oracle of the workspace's tests (the root crate's tests/common).
-#[path = "../../../tests/common/oracle.rs"]
-mod oracle;
+use crate::oracle;
 use std::path::{Path, PathBuf};
 
 /// The eight bytes every PNG file starts with (PNG spec §5.2).

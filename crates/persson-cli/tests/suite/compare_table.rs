@@ -4,7 +4,7 @@
 //! `--data` are in the text.
 #![cfg(feature = "bem")]
 
-mod common;
+use crate::common;
 
 use common::{json, persson};
 

@@ -456,7 +456,7 @@ fn collect_properties(v: &serde_json::Value, out: &mut Vec<String>) {
     }
 }
 
-mod common;
+use crate::common;
 
 /// The subcommands print the very numbers of the scene outputs of the same name.
 mod cli {

@@ -4,7 +4,7 @@
 //! its `message`, which names the input, never a flag (stderr adds the flag
 //! in parentheses). A warning never changes a number.
 
-mod common;
+use crate::common;
 
 use common::persson;
 use serde_json::Value;

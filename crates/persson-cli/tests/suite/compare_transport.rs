@@ -4,7 +4,7 @@
 //! the BEM's stiffness, the percolated load, and bad flags.
 #![cfg(feature = "flow")]
 
-mod common;
+use crate::common;
 
 use common::{json, persson};
 

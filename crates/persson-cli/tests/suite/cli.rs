@@ -1,7 +1,7 @@
 //! The command-line interface: outputs parse, fields are named, bad input
 //! exits 2 with a one-line message and never panics.
 
-mod common;
+use crate::common;
 use common::{json, persson};
 
 #[test]

@@ -3,7 +3,7 @@
 //! the Gaussian integrals, the summit closed forms written out, the hardness
 //! law), plus warnings and bad input naming the flag.
 
-mod common;
+use crate::common;
 
 use common::{json, persson};
 use serde_json::Value;

@@ -14,8 +14,6 @@
 /// extrapolation.
 const PINNED_KAPPA: f64 = 1e-12;
 
-mod common;
-
 mod cli {
     use crate::common::persson;
 

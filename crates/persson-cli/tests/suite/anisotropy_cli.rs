@@ -3,7 +3,7 @@
 //! errors that name the flag.
 #![cfg(all(feature = "bem", feature = "topography", feature = "plot"))]
 
-mod common;
+use crate::common;
 use common::{json, persson};
 
 const MAP: &str = "docs/data/stretched.npy";

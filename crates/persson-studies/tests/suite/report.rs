@@ -162,7 +162,7 @@ fn accuracy_report_meets_its_tolerances_bounds_and_references() {
 /// The stress references of the sweep come from the mpmath file the stress
 /// tests read, `tests/reference/stress.json`, read here on its own.
 fn stress_json_fractions() -> Vec<f64> {
-    let text = include_str!("../../../tests/reference/stress.json");
+    let text = include_str!("../../../../tests/reference/stress.json");
     let cases: serde_json::Value = serde_json::from_str(text).unwrap();
     cases
         .as_array()
@@ -281,7 +281,7 @@ fn stability_sweep_is_finite_and_within_its_bounds() {
 fn accuracy_report_errors_are_measured_against_the_mpmath_file() {
     use persson::stress::{series_fractions, Start};
     let report = accuracy(persson_studies::report::Extent::Default).unwrap();
-    let text = include_str!("../../../tests/reference/stress.json");
+    let text = include_str!("../../../../tests/reference/stress.json");
     let cases: serde_json::Value = serde_json::from_str(text).unwrap();
     let mut worst: f64 = 0.0;
     for c in cases.as_array().unwrap() {
