@@ -3,10 +3,10 @@
 //! area against nominal pressure (tension ≤ 0 allowed) and the pull-off
 //! stress, from Persson's theory (the scene output `adhesion`).
 
-use persson_studies::scene::{run, AdhesionOutput, AreaEnhancementName};
+use persson_studies::scene::{AdhesionOutput, AreaEnhancementName};
 
 use super::args::{measured_contact, MaterialArgs, MeasuredArgs, SpectrumArgs};
-use super::output::{print_warned, Format};
+use super::output::Format;
 
 /// Arguments of `persson adhesion`.
 #[derive(clap::Args, Debug)]
@@ -18,8 +18,8 @@ pub struct Args {
     #[command(flatten)]
     material: MaterialArgs,
     /// Work of adhesion Δγ (J/m², ≥ 0).
-    #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
-    work_of_adhesion: f64,
+    #[arg(long, required_unless_present = "example", allow_hyphen_values = true, value_parser = super::number::number)]
+    work_of_adhesion: Option<f64>,
     /// Nominal (mean) pressure σ0, same unit as E*, negative in tension;
     /// repeatable or comma-separated (none: the stickiness balance only).
     #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = super::number::number)]
@@ -44,16 +44,23 @@ pub struct Args {
 }
 
 /// Run `persson adhesion`.
-pub fn run(a: Args) -> anyhow::Result<()> {
+pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
     let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
+    let example = a.spectrum.example;
+    let pressures = match (a.pressure.is_empty(), example) {
+        (true, true) => super::args::example::PRESSURES.to_vec(),
+        _ => a.pressure.clone(),
+    };
     let out = AdhesionOutput {
-        work_of_adhesion: a.work_of_adhesion,
+        work_of_adhesion: a
+            .work_of_adhesion
+            .unwrap_or(persson_studies::adhesion::EXAMPLE_WORK_OF_ADHESION),
         zeta: a.zeta,
         points: Some(a.points),
         area_enhancement: Some(a.area_enhancement),
         adhesion_range: a.adhesion_range,
         tolerance: Some(a.tolerance),
     };
-    let report = run::adhesion(&surface, &a.pressure, &out)?;
-    print_warned(&report, &report.warnings, &a.format)
+    let ctx = persson_studies::study::Context::with_contact(surface, &pressures);
+    super::study::run::<persson_studies::adhesion::Adhesion>(&ctx, &out, files, &a.format)
 }

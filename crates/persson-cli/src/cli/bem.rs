@@ -306,8 +306,10 @@ fn rough_surface(
             SurfaceOrigin::height_map(path),
         )
     } else {
+        // The example's surface on 128² nodes unless --grid says otherwise.
         let n = a
             .grid
+            .or(a.spectrum.example.then_some(128))
             .context("no surface: give --surface FILE, or spectrum flags with --grid N")?;
         check_memory(n, a.boundary)?;
         let spectrum = a.spectrum.build()?;

@@ -53,7 +53,7 @@ pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Resul
     let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
     let pressures = pressures(&a.pressure, a.spectrum.example)?;
     let gap_table = a.gap_table.as_deref().map(read_gap_table).transpose()?;
-    let out = ConductanceOutput {
+    let mut out = ConductanceOutput {
         conductivity: a.conductivity.clone(),
         resistivity: a.resistivity.clone(),
         gas_conductivity: a.gas_conductivity,
@@ -63,6 +63,18 @@ pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Resul
         bem: None,
         plot: a.plot.path(),
     };
+    // The example's heat path where the flags name none.
+    let none = out.conductivity.is_empty()
+        && out.resistivity.is_empty()
+        && out.gas_conductivity.is_none()
+        && out.gap_table.is_none();
+    if a.spectrum.example && none {
+        out = ConductanceOutput {
+            tolerance: out.tolerance,
+            plot: out.plot,
+            ..ConductanceOutput::example()
+        };
+    }
     let ctx = Context::with_contact(surface, &pressures);
     super::study::run::<Conductance>(&ctx, &out, files, &a.format)
 }

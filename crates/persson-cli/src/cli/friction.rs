@@ -108,7 +108,9 @@ pub struct Args {
 
 impl RubberArgs {
     /// The scene file's `rubber` entry.
-    fn spec(&self) -> anyhow::Result<RubberSpec> {
+    /// The rubber of the flags; with `example` and no modulus given, the
+    /// example's modulus ([`RubberSpec::example`]) with the other flags.
+    fn spec(&self, example: bool) -> anyhow::Result<RubberSpec> {
         let sls = match self.standard_linear_solid.as_slice() {
             [] => None,
             &[e0, e_inf, tau] => Some(StandardLinearSolidSpec {
@@ -129,6 +131,11 @@ impl RubberArgs {
                 reference_temperature: t_ref,
             }),
             v => bail!("--wlf: three values C1,C2,Tref, got {}", v.len()),
+        };
+        let given = self.master_curve.is_some() || self.prony.is_some() || sls.is_some();
+        let sls = match (given, example) {
+            (false, true) => RubberSpec::example().standard_linear_solid,
+            _ => sls,
         };
         if self.master_curve.is_none() && self.prony.is_none() && sls.is_none() {
             bail!("no rubber: give --master-curve FILE --frequency-unit rad/s|Hz, --prony FILE or --standard-linear-solid E0,Einf,tau");
@@ -164,10 +171,15 @@ pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Resul
         bail!("--flash-temperature needs --thermal-conductivity, --density and --heat-capacity");
     }
     let spectrum = spectrum_spec(&a.spectrum, &a.measured)?;
-    let rubber = a.rubber.spec()?;
-    if a.pressure.is_empty() {
-        bail!("no nominal pressure: give --pressure P (Pa; repeatable or comma-separated)");
-    }
+    let example = a.spectrum.example;
+    let rubber = a.rubber.spec(example)?;
+    let pressure = match (a.pressure.as_slice(), example) {
+        ([], true) => vec![persson_studies::friction::EXAMPLE_PRESSURE],
+        ([], false) => {
+            bail!("no nominal pressure: give --pressure P (Pa; repeatable or comma-separated)")
+        }
+        (p, _) => p.to_vec(),
+    };
     let velocity_range = match a.velocity_range.as_slice() {
         [] => None,
         &[lo, hi, n] => {
@@ -189,6 +201,10 @@ pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Resul
             v.len()
         ),
     };
+    let velocity_range = velocity_range.or_else(|| {
+        (example && a.velocity.is_empty())
+            .then_some(persson_studies::friction::EXAMPLE_VELOCITY_RANGE)
+    });
     if a.velocity.is_empty() && velocity_range.is_none() {
         bail!("no velocity: give --velocity V (m/s; repeatable or comma-separated) or --velocity-range VMIN,VMAX,N");
     }
@@ -205,12 +221,12 @@ pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Resul
         plot: a.plot.path(),
     };
     let report =
-        friction(&spectrum, &rubber, &a.pressure, &out).map_err(|e| a.spectrum.psd_hint(e))?;
+        friction(&spectrum, &rubber, &pressure, &out).map_err(|e| a.spectrum.psd_hint(e))?;
     let inputs = Inputs {
         spectrum: Some(&spectrum),
         material: None,
         rubber: Some(&rubber),
-        nominal_pressure: &a.pressure,
+        nominal_pressure: &pressure,
     };
     let ctx = Context::new(inputs, Reads::NOTHING)?;
     Friction::write(&out, &report, &ctx, std::path::Path::new(""), files)?;

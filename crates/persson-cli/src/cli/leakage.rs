@@ -65,17 +65,37 @@ impl SealArgs {
         percolation_threshold: f64,
         tolerance: f64,
     ) -> anyhow::Result<LeakageOutput> {
-        let Some(viscosity) = self.viscosity else {
-            anyhow::bail!("no --viscosity: give the fluid's dynamic viscosity η in Pa s");
+        self.output_or_example(percolation_threshold, tolerance, false)
+    }
+
+    /// As [`SealArgs::output`]; with `example`, the example's water seal
+    /// ([`LeakageOutput::example`]) where the fluid or its drive is not given.
+    pub fn output_or_example(
+        &self,
+        percolation_threshold: f64,
+        tolerance: f64,
+        example: bool,
+    ) -> anyhow::Result<LeakageOutput> {
+        let water = LeakageOutput::example();
+        let fluid_given = self.pressure_drop.is_some() || self.inlet_pressure.is_some();
+        let (viscosity, pressure_drop) = match (self.viscosity, example) {
+            (Some(v), _) => (v, self.pressure_drop),
+            (None, true) if !fluid_given => (water.viscosity, water.pressure_drop),
+            (None, true) => (water.viscosity, self.pressure_drop),
+            (None, false) => {
+                anyhow::bail!("no --viscosity: give the fluid's dynamic viscosity η in Pa s")
+            }
         };
-        if self.pressure_drop.is_none() && self.inlet_pressure.is_none() {
+        let pressure_drop =
+            pressure_drop.or(water.pressure_drop.filter(|_| example && !fluid_given));
+        if pressure_drop.is_none() && self.inlet_pressure.is_none() {
             anyhow::bail!(
                 "no --pressure-drop: give ΔP in Pa (a liquid), or --inlet-pressure and --outlet-pressure (a gas)"
             );
         }
         Ok(LeakageOutput {
             viscosity,
-            pressure_drop: self.pressure_drop,
+            pressure_drop,
             inlet_pressure: self.inlet_pressure,
             outlet_pressure: self.outlet_pressure,
             seal_width: self.seal_width,
@@ -90,7 +110,9 @@ impl SealArgs {
 
 /// Run `persson leakage`.
 pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
-    let mut out = a.seal.output(a.percolation_threshold, a.tolerance)?;
+    let mut out =
+        a.seal
+            .output_or_example(a.percolation_threshold, a.tolerance, a.spectrum.example)?;
     out.plot = a.plot.path();
     let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
     let pressures = pressures(&a.pressure, a.spectrum.example)?;

@@ -147,7 +147,7 @@ fn stage(cli: Cli, matches: &clap::ArgMatches) -> anyhow::Result<persson_studies
         Cmd::Report(a) => report::run(a, o),
         Cmd::Stress(a) => stress::run(a, o),
         Cmd::Separation(a) => separation::run(a, o),
-        Cmd::Adhesion(a) => adhesion::run(a),
+        Cmd::Adhesion(a) => adhesion::run(a, o),
         #[cfg(feature = "bem")]
         Cmd::Bem(a) => bem::run(a, o),
         #[cfg(feature = "bem")]

@@ -31,7 +31,7 @@ pub struct Args {
     #[arg(
         long,
         value_enum,
-        required_unless_present_any = ["table", "ball_radius", "cylinder_radius", "flat"],
+        required_unless_present_any = ["table", "ball_radius", "cylinder_radius", "flat", "example"],
         conflicts_with_all = ["table", "ball_radius", "cylinder_radius", "flat"]
     )]
     start: Option<StartName>,
@@ -139,7 +139,17 @@ pub struct Args {
 
 /// Run `persson stress`.
 #[cfg_attr(not(feature = "plot"), allow(unused_variables))]
-pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
+pub fn run(mut a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
+    // The example: a flat punch at σ0 = 1 MPa on the example surface, its
+    // P(σ, ζ) at four magnifications.
+    let contact = a.ball_radius.is_some() || a.cylinder_radius.is_some() || a.flat;
+    if a.spectrum.example && !contact && a.start.is_none() && a.table.is_none() && a.g.is_none() {
+        a.flat = true;
+        a.pressure = Some(super::args::example::PRESSURES[2]);
+        if a.zeta.is_empty() {
+            a.zeta = vec![10.0, 100.0, 1e3, 1e4];
+        }
+    }
     if a.ball_radius.is_some() || a.cylinder_radius.is_some() || a.flat || a.peak_pressure.is_some()
     {
         return physical(&a, files);

@@ -31,3 +31,6 @@ pub struct AdhesionOutput {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tolerance: Option<f64>,
 }
+
+/// The built-in example's work of adhesion Δγ, J/m²: rubber on glass.
+pub const EXAMPLE_WORK_OF_ADHESION: f64 = 0.05;

@@ -48,10 +48,15 @@ impl Study for Area {
     fn write(
         a: &AreaOutput,
         r: &AreaReport,
-        _: &Context<'_>,
+        ctx: &Context<'_>,
         dir: &std::path::Path,
         out: &mut crate::output::Files,
     ) -> Result<()> {
-        crate::study::draw(out, dir, a.plot.as_ref(), || figure(r).map(Box::new))
+        // The curve at enough pressures to look smooth, the table's own kept.
+        crate::study::draw(out, dir, a.plot.as_ref(), || {
+            let p = crate::study::plot_pressures(ctx.nominal_pressure());
+            let dense = ctx.contact().and_then(|s| area(s, &p, a));
+            figure(dense.as_ref().unwrap_or(r)).map(Box::new)
+        })
     }
 }

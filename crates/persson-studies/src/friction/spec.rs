@@ -55,3 +55,14 @@ pub struct FrictionOutput {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub plot: Option<PathBuf>,
 }
+
+/// The built-in example's velocities: 50 log-spaced from 1 µm/s to 100 m/s,
+/// across the rise and fall of μ(v) of [`crate::input::RubberSpec::example`].
+pub const EXAMPLE_VELOCITY_RANGE: VelocityRange = VelocityRange {
+    velocity_min: 1e-6,
+    velocity_max: 1e2,
+    points: 50,
+};
+
+/// The built-in example's nominal pressure for friction, Pa: a tyre's 0.3 MPa.
+pub const EXAMPLE_PRESSURE: f64 = 3e5;

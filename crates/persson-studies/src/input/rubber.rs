@@ -135,6 +135,21 @@ pub struct RubberSpec {
 }
 
 impl RubberSpec {
+    /// The built-in example: a tread compound as a standard linear solid,
+    /// glassy modulus 3 GPa, rubbery plateau 3 MPa, τ = 1 µs, so that on the
+    /// example surface μ(v) rises from 1 µm/s, peaks near 1 cm/s and falls
+    /// by 100 m/s ([`crate::friction::EXAMPLE_VELOCITY_RANGE`]).
+    pub fn example() -> Self {
+        RubberSpec {
+            standard_linear_solid: Some(StandardLinearSolidSpec {
+                instantaneous_modulus: 3e9,
+                relaxed_modulus: 3e6,
+                relaxation_time: 1e-6,
+            }),
+            ..Default::default()
+        }
+    }
+
     /// The rubber, with its thermal properties when `flash` (then required).
     ///
     /// # Errors

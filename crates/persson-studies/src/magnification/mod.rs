@@ -50,15 +50,24 @@ impl Study for Magnification {
     fn write(
         m: &MagnificationOutput,
         r: &MagnificationReport,
-        _: &Context<'_>,
+        ctx: &Context<'_>,
         dir: &std::path::Path,
         out: &mut crate::output::Files,
     ) -> Result<()> {
+        // The curves at enough magnifications to look smooth.
+        let dense = || {
+            let spec = MagnificationOutput {
+                zeta: Vec::new(),
+                points: m.points.max(crate::study::PLOT_POINTS),
+                ..m.clone()
+            };
+            ctx.contact().and_then(|s| magnification(s, &spec))
+        };
         crate::study::draw(out, dir, m.plot.as_ref(), || {
-            magnification_area(r).map(Box::new)
+            magnification_area(dense().as_ref().unwrap_or(r)).map(Box::new)
         })?;
         crate::study::draw(out, dir, m.plot_g.as_ref(), || {
-            magnification_g(r).map(Box::new)
+            magnification_g(dense().as_ref().unwrap_or(r)).map(Box::new)
         })
     }
 }

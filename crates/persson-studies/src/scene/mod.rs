@@ -281,7 +281,8 @@ pub fn write_outputs(
     dir: &Path,
     out: &mut Files,
 ) -> Result<()> {
-    let ctx = Context::new(scene.inputs(), crate::study::Reads::NOTHING)?;
+    // The figures' smooth curves are computed again on the scene's context.
+    let ctx = scene.context()?;
     scene.outputs.write(report, &ctx, dir, out)
 }
 

@@ -168,7 +168,7 @@ impl Reads {
 pub struct Context<'a> {
     /// The scene's inputs.
     pub inputs: Inputs<'a>,
-    contact: Option<RoughContact>,
+    contact: Option<std::rc::Rc<RoughContact>>,
 }
 
 impl<'a> Context<'a> {
@@ -180,7 +180,12 @@ impl<'a> Context<'a> {
         let contact = if reads.contact {
             let s = inputs.spectrum.ok_or_else(|| required("spectrum"))?;
             let m = inputs.material.ok_or_else(|| required("material"))?;
-            Some(RoughContact::named(s, m, "spectrum.", "material.")?)
+            Some(std::rc::Rc::new(RoughContact::named(
+                s,
+                m,
+                "spectrum.",
+                "material.",
+            )?))
         } else {
             None
         };
@@ -197,7 +202,7 @@ impl<'a> Context<'a> {
                 rubber: None,
                 nominal_pressure,
             },
-            contact: Some(contact),
+            contact: Some(std::rc::Rc::new(contact)),
         }
     }
 
@@ -207,7 +212,7 @@ impl<'a> Context<'a> {
     /// A study that did not say it reads it (a programming error, named).
     pub fn contact(&self) -> Result<&RoughContact> {
         self.contact
-            .as_ref()
+            .as_deref()
             .ok_or_else(|| required("spectrum and material"))
     }
 
@@ -230,6 +235,20 @@ impl<'a> Context<'a> {
     /// The nominal pressures.
     pub fn nominal_pressure(&self) -> &'a [f64] {
         self.inputs.nominal_pressure
+    }
+
+    /// The same context at other nominal pressures (a figure's smooth curve).
+    pub fn with_pressures<'b>(&self, nominal_pressure: &'b [f64]) -> Context<'b>
+    where
+        'a: 'b,
+    {
+        Context {
+            inputs: Inputs {
+                nominal_pressure,
+                ..self.inputs
+            },
+            contact: self.contact.clone(),
+        }
     }
 
     /// The spectrum, built.
@@ -274,6 +293,36 @@ pub fn draw<F: crate::plot::Encode + ?Sized>(
         out.write(&p, &fig()?.encode(&p)?)?;
     }
     Ok(())
+}
+
+/// Points of a figure's curve where a point costs microseconds to
+/// milliseconds: enough for the curve to look smooth.
+pub const PLOT_POINTS: usize = 60;
+
+/// The nominal pressures of a figure's smooth curve through `given`:
+/// [`PLOT_POINTS`] log-spaced from the least to the greatest positive one
+/// (σ0/100 to 100 σ0 for a single σ0); `given` itself if none is positive.
+pub fn plot_pressures(given: &[f64]) -> Vec<f64> {
+    let positive = given.iter().copied().filter(|p| *p > 0.0 && p.is_finite());
+    let lo = positive.clone().fold(f64::INFINITY, f64::min);
+    let hi = positive.fold(0.0, f64::max);
+    if hi <= 0.0 {
+        return given.to_vec();
+    }
+    let (lo, hi) = if hi > lo {
+        (lo, hi)
+    } else {
+        (lo / 100.0, hi * 100.0)
+    };
+    let (a, b) = (lo.ln(), hi.ln());
+    let last = (PLOT_POINTS - 1) as f64;
+    (0..PLOT_POINTS)
+        .map(|i| match i {
+            0 => lo,
+            i if i == PLOT_POINTS - 1 => hi,
+            i => (a + (b - a) * i as f64 / last).exp(),
+        })
+        .collect()
 }
 
 /// Whether `a` and `b` are the same text (for the list's compile-time check

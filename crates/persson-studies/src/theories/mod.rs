@@ -46,10 +46,14 @@ impl Study for Theories {
     fn write(
         t: &TheoriesOutput,
         r: &TheoriesReport,
-        _: &Context<'_>,
+        ctx: &Context<'_>,
         dir: &std::path::Path,
         out: &mut crate::output::Files,
     ) -> Result<()> {
-        crate::study::draw(out, dir, t.plot.as_ref(), || figure(r).map(Box::new))
+        crate::study::draw(out, dir, t.plot.as_ref(), || {
+            let p = crate::study::plot_pressures(ctx.nominal_pressure());
+            let dense = ctx.contact().and_then(|s| theories(s, &p, t));
+            figure(dense.as_ref().unwrap_or(r)).map(Box::new)
+        })
     }
 }

@@ -38,12 +38,24 @@ impl Study for Conductance {
     fn write(
         c: &ConductanceOutput,
         r: &ConductanceReport,
-        _: &Context<'_>,
+        ctx: &Context<'_>,
         dir: &std::path::Path,
         out: &mut crate::output::Files,
     ) -> Result<()> {
+        // The theory's curve at enough pressures to look smooth (the BEM's
+        // points, a solve each, as computed).
         crate::study::draw(out, dir, c.plot.as_ref(), || {
-            super::conductance_figure(r).map(Box::new)
+            let p = crate::study::plot_pressures(ctx.nominal_pressure());
+            let theory = ConductanceOutput {
+                bem: None,
+                ..c.clone()
+            };
+            let dense = ctx
+                .contact()
+                .and_then(|s| transport::conductance(s, &p, &theory));
+            let mut dense = dense.unwrap_or_else(|_| r.clone());
+            dense.bem.clone_from(&r.bem);
+            super::conductance_figure(&dense).map(Box::new)
         })
     }
 }

@@ -94,3 +94,37 @@ pub struct TransportBem {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tolerance: Option<f64>,
 }
+
+impl LeakageOutput {
+    /// The built-in example's seal: water (η = 1 mPa s at 20 °C) under a
+    /// pressure drop of 1 bar across a 1 mm × 1 mm seal.
+    pub fn example() -> Self {
+        LeakageOutput {
+            viscosity: 1e-3,
+            pressure_drop: Some(1e5),
+            inlet_pressure: None,
+            outlet_pressure: None,
+            seal_width: 1e-3,
+            seal_length: 1e-3,
+            percolation_threshold: None,
+            tolerance: None,
+            bem: None,
+            plot: None,
+        }
+    }
+}
+
+impl ConductanceOutput {
+    /// The built-in example's heat path: bodies of κ = 50 W/(m K) (a steel)
+    /// with an air gap (κ_gas = 0.026 W/(m K), temperature-jump length
+    /// ℓ = 70 nm at 1 atm), so that both the spots' and the gap's
+    /// conductance are reported.
+    pub fn example() -> Self {
+        ConductanceOutput {
+            conductivity: vec![50.0],
+            gas_conductivity: Some(0.026),
+            mean_free_path: Some(7e-8),
+            ..Default::default()
+        }
+    }
+}
