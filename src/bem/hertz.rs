@@ -462,8 +462,7 @@ pub struct PlasticDiscRow {
     pub seconds: f64,
 }
 
-/// The Hertz ball with a yield stress on a list of grids
-/// (`persson bem hertz --yield-stress`, scene `outputs.bem_hertz.yield_stress`).
+/// The Hertz ball with a yield stress on a list of grids.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
 #[non_exhaustive]
 pub struct PlasticDiscReport {

@@ -339,7 +339,7 @@ pub struct RoughReport {
     pub points: Vec<RoughPoint>,
     /// The pressure field of one solve in partial contact (A/A0 nearest
     /// [`MAPPED_CONTACT_FRACTION`]), kept only by [`rough_contact_mapped`]
-    /// (for `bem rough --plot`); not serialised.
+    /// (for a pressure map); not serialised.
     #[serde(skip)]
     pub pressure_map: Option<PressureMap>,
 }

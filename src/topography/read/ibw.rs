@@ -29,9 +29,9 @@
 //! ```
 //!
 //! Units are the extended units where the file has them, else the 4-char
-//! fields. A wave without a height unit needs `--height-unit`; without a
-//! unit of x it stores no size (`--size`/`--pixel-size`): Igor's default
-//! step is 1 of no unit.
+//! fields. A wave without a height unit needs `ReadOptions::height_unit`;
+//! without a unit of x it stores no size (give `ReadOptions::size`): Igor's
+//! default step is 1 of no unit.
 //!
 //! # References
 //! WaveMetrics, Igor Pro Technical Note PTN003 "Igor Binary Wave Format"
