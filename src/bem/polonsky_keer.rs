@@ -30,8 +30,8 @@ use std::time::Instant;
 
 use super::problem::{Options, Problem};
 use super::solution::{Iteration, Solution};
-use super::steps::{finish_elastic, project_step, sparse_limit, Entry, GapStats, LazyGap, LANES};
-use super::workspace::Workspace;
+use super::steps::{finish_elastic, project_step, Entry, GapStats, LazyGap, LANES};
+use super::workspace::{sparse_limit, Workspace};
 use crate::error::{Error, Result};
 
 /// Solve `problem` from the pressure [`Workspace::start`] (or

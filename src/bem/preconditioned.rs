@@ -306,8 +306,8 @@ use std::time::Instant;
 
 use super::problem::{Options, Problem};
 use super::solution::{Fallback, Iteration, Solution};
-use super::steps::{finish_elastic, project_step, sparse_limit, Entry, GapStats, LazyGap, LANES};
-use super::workspace::Workspace;
+use super::steps::{finish_elastic, project_step, Entry, GapStats, LazyGap, LANES};
+use super::workspace::{sparse_limit, Workspace};
 use crate::error::{Error, Result};
 
 /// How the preconditioned loop ended.

@@ -235,7 +235,7 @@ impl<'a> Problem<'a> {
             approx(scale),
             approx(self.slope_rms)
         );
-        Err(match crate::theory::ratio_culprit(self.e_star, pm) {
+        Err(match crate::error::ratio_culprit(self.e_star, pm) {
             "contact_modulus" => Error::invalid(
                 "contact_modulus",
                 self.e_star,
