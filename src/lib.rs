@@ -159,6 +159,8 @@ pub mod bem;
 pub mod conductance;
 pub mod corrected;
 pub mod error;
+#[cfg(any(feature = "bem", feature = "topography"))]
+mod fft;
 pub mod friction;
 pub mod gap;
 pub mod io;

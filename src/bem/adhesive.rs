@@ -450,7 +450,7 @@ impl Padded {
                 }
             },
             None,
-        )?;
+        );
         Ok(Padded { m, fft, compliance })
     }
 
@@ -490,7 +490,8 @@ impl Padded {
                 }
             },
             Some(emit),
-        )
+        );
+        Ok(())
     }
 }
 
@@ -593,7 +594,8 @@ impl AdhesiveSolver {
     /// with the iteration chosen by the law ([`AdhesiveSolver::method_for`]).
     ///
     /// # Errors
-    /// Internal FFT errors only (planning the padded grid of a free operator).
+    /// None in practice: the padded grid of a free operator has sizes computed
+    /// here (an FFT failure would be a bug and panics: `bem::fft`).
     pub fn new(op: Operator) -> Result<Self> {
         let n = op.n();
         let padded = match op.boundary() {

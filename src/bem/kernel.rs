@@ -191,7 +191,8 @@ impl Operator {
     /// Lets a caller fuse its own passes over the fields with the transform's.
     ///
     /// # Errors
-    /// Internal FFT errors only.
+    /// None in practice: the FFT's sizes are computed here (a failure
+    /// would be a bug and panics: `bem::fft`). The `Result` stays for the API.
     pub fn apply_rows(
         &mut self,
         fill: &mut dyn FnMut(usize, &mut [f64]),
@@ -233,7 +234,8 @@ impl Operator {
     /// window it is an approximate inverse (used as a preconditioner).
     ///
     /// # Errors
-    /// Internal FFT errors only.
+    /// None in practice: the FFT's sizes are computed here (a failure
+    /// would be a bug and panics: `bem::fft`). The `Result` stays for the API.
     pub fn apply_stiffness_rows(
         &mut self,
         fill: &mut dyn FnMut(usize, &mut [f64]),
@@ -350,7 +352,8 @@ impl Operator {
                 }
             },
             Some(&mut |i, row| emit(i as isize - r as isize, &row[..n + 2 * r])),
-        )
+        );
+        Ok(())
     }
 
     /// Add `𝒢 c` for a sparse `c` (values `c[k]` at flat indices `idx[k]`)
@@ -466,7 +469,7 @@ fn free_multiplier(fft: &mut Fft2, size: f64, e_star: f64) -> Result<Vec<f64>> {
                 }
             },
             None,
-        )?;
+        );
     }
     Ok(m)
 }

@@ -110,7 +110,8 @@ impl GridSurface {
     /// rms slope of the trigonometric interpolant, `sqrt(Σ_q |q|² |h_q|²)`.
     ///
     /// # Errors
-    /// Internal FFT errors only.
+    /// None in practice: the FFT's sizes are computed here (a failure
+    /// would be a bug and panics: `bem::fft`). The `Result` stays for the API.
     pub fn rms_slope(&self) -> Result<f64> {
         let n = self.n;
         let mut fft = Fft2::new(n, n)?;
@@ -141,7 +142,8 @@ impl GridSurface {
     /// [`SlopeTensor::principal`] is the surface's Peklenik number and lay.
     ///
     /// # Errors
-    /// Internal FFT errors only.
+    /// None in practice: the FFT's sizes are computed here (a failure
+    /// would be a bug and panics: `bem::fft`). The `Result` stays for the API.
     pub fn slope_tensor(&self) -> Result<SlopeTensor> {
         let n = self.n;
         let mut fft = Fft2::new(n, n)?;

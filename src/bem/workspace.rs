@@ -127,7 +127,8 @@ impl Workspace {
     /// [`Workspace::finish`].
     ///
     /// # Errors
-    /// Internal FFT errors only ([`Start::Predicted`]).
+    /// None in practice ([`Start::Predicted`]'s FFT has sizes computed here;
+    /// a failure would be a bug and panics: `bem::fft`).
     pub fn start(&mut self, problem: &Problem, start: Start) -> Result<()> {
         let start = if self.warm { start } else { Start::Cold };
         self.warm = false;

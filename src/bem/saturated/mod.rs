@@ -217,7 +217,8 @@ impl Run {
     /// put back on the load.
     ///
     /// # Errors
-    /// Internal FFT errors only.
+    /// None in practice: the FFT's sizes are computed here (a failure
+    /// would be a bug and panics: `bem::fft`). The `Result` stays for the API.
     fn new(
         problem: &Problem,
         ws: &mut Workspace,
