@@ -125,7 +125,7 @@
 //! | [`conductance`] | thermal and electrical contact conductance from the stiffness (Barber's identity) and the conductance through the gap |
 //! | [`leakage`] | the leak rate of a static seal: critical junction and effective medium |
 //! | [`gap`] | the distribution of interfacial separations P(u) and the magnification-resolved separation u1(ζ) |
-//! | [`reference`] | closed-form Hertz contacts (ball and cylinder): the smooth starts of the stress distributions and the BEM's validation |
+//! | [`reference`](mod@reference) | closed-form Hertz contacts (ball and cylinder): the smooth starts of the stress distributions and the BEM's validation |
 //! | `bem` | (feature `bem`) the FFT boundary-element solver: elastic kernels, surface synthesis, the Polonsky–Keer, preconditioned, saturated and adhesive loops, Hertz validation, Reynolds flow on the gap (feature `flow`) |
 //! | `topography` | (feature `topography`) measured surfaces: the instrument file readers, detrending, windows, radially averaged spectra, statistics |
 //! | [`io`] | grid file I/O: the one `.npy` reader and writer, the one text reader, atomic writes |

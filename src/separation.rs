@@ -433,7 +433,7 @@ impl<'a> Separation<'a> {
 /// x_s² ≤ f64::MAX ⇔ σ0/E* ≤ √f64::MAX/w(q_s), w(q_s) = (π ∫_{q_l}^{q_s}
 /// q³C dq)^{−1/2}, tested as the routes evaluate it. Below it K is computed,
 /// and is +∞ where ln K = ln σ0 + x_s² − ln I exceeds ln f64::MAX, far in
-/// full contact (the theory's limit there, persson 0.4's documented value).
+/// full contact (the theory's limit there).
 /// Returns w(q_s).
 pub(crate) fn check_stiffness_exponent(
     spectrum: &dyn Spectrum,

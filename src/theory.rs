@@ -41,7 +41,7 @@ pub struct ContactFraction {
 ///
 /// # Examples
 /// ```
-/// // Persson, Bucher & Chiaia (2002), Fig. 2: A/A0 = 0.638690 at G = 0.6 (../shared/theory.md §3)
+/// // Persson, Bucher & Chiaia (2002), Fig. 2: A/A0 = 0.638690 at G = 0.6 (docs/accuracy.md)
 /// let a = persson::theory::contact_fraction(0.6, 0.0).unwrap();
 /// assert!((a.fraction - 0.638_690).abs() < 5e-7);
 /// ```

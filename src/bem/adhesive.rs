@@ -52,7 +52,7 @@
 //! step of 𝒦 alone; it is used only where the cohesive zone is resolved,
 //! Δγ/ρ² below a node's stiffness E*πN/(2L) (else the longer steps reach
 //! other stationary points: the λ = 3 sphere at N = 64). Measured on the
-//! 256² and 512² surfaces of examples/adhesive_tamaas.rs (issue 24): 83 and
+//! 256² and 512² surfaces of examples/adhesive_tamaas.rs: 83 and
 //! 153 iterations with Fletcher–Reeves and the step of 𝒦, 60 and 37 with
 //! Polak–Ribière, 28 and 25 with both; the answers equal to 1e-14.
 //! The conjugacy restarts (β = 0) when a node crosses g = ρ (Maugis–Dugdale)
@@ -64,10 +64,8 @@
 //! the fields per iteration: centring r with ε's numerator; t = z + βt − μ
 //! with ⟨r, t⟩ (⟨r, z⟩ and the sums for μ ride on the emit of 𝒢r, ⟨t, 𝒦t⟩
 //! on the emit of 𝒦t); the gap step with its mean; the scaling, the update
-//! of 𝒦(g + h) and the new r with ε's denominator and p̄ (issue 24: 9–10
-//! passes before, 9 % fewer instructions per solve at 256²). Measured (exponential law, N = 64, tests/bem_adhesive.rs): 5.5–40×
-//! fewer iterations along loading–unloading paths (3.4–6.5× before
-//! Polak–Ribière and the curvature); on the 256² and 512²
+//! of 𝒦(g + h) and the new r with ε's denominator and p̄. Measured (exponential law, N = 64, tests/bem_adhesive.rs): 5.5–40×
+//! fewer iterations along loading–unloading paths; on the 256² and 512²
 //! self-affine surfaces of examples/adhesive_tamaas.rs see docs/adhesion.md.
 //!
 //! **Stall and fallback.** Where the cohesive zone is not resolved by the
@@ -642,8 +640,7 @@ impl AdhesiveSolver {
     /// [`Method::Plain`] for Maugis–Dugdale, whose discrete energy has many
     /// stationary points: the preconditioned steps land on other ones than
     /// the plain iteration on some points of a load path (module docs,
-    /// "Preconditioned iteration"), so the plain one stays the default and
-    /// keeps the answers of persson 0.4. Where the grid resolves the cohesive
+    /// "Preconditioned iteration"), so the plain one stays the default. Where the grid resolves the cohesive
     /// zone ([`RESOLVED_COHESIVE_LENGTH`]) the two agree within 0.2 % on a
     /// cold solve, but along a loading–unloading path they may still follow
     /// different branches past an instability (the free-boundary path of

@@ -1,5 +1,4 @@
-//! The plain Polonsky–Keer constrained conjugate gradient ([`Method::Plain`],
-//! the solver of persson 0.3, unchanged in every operation).
+//! The plain Polonsky–Keer constrained conjugate gradient ([`Method::Plain`]).
 //!
 //! # Algorithm
 //! Polonsky & Keer (1999), §2: conjugate gradient on the contact set

@@ -21,71 +21,36 @@
 //! The linear problem on a fixed free set is `𝒢_FF p = u`. The exact
 //! inverse of the restricted operator is the Schur complement of the
 //! stiffness, `𝒢_FF⁻¹ = 𝒦_FF − 𝒦_FN 𝒦_NN⁻¹ 𝒦_NF`; the FFT preconditioner
-//! `[F]𝒦[F]` keeps its first term only. That restriction of a positive
-//! definite matrix's inverse bounds the restricted matrix's inverse from
-//! above (Cauchy interlacing), so every eigenvalue of `[F]𝒦[F]𝒢_FF` is ≥ 1;
-//! measured on the rough case (Lanczos, fixed contact set), the largest
-//! are 4–15 for N = 128–512 (a continuum, not a few outliers: at 256²,
-//! σ0 = 0.05 E*, the 40 largest lie in 3.1–8.6) where the plain operator's
-//! condition number grows like N (22 at 128², 12 800 at 2048² by the
-//! symbol's range). They belong to modes at the contact edges, where the
-//! restriction imposes zero pressure on the non-contact neighbours
-//! (Zhao, Vollebregt & Oosterlee 2014 see the same for the FFT smoother),
-//! and the missing term is what corrects them: `𝒦_NF r = [N]𝒦r` is
-//! already at hand (the same convolution, off F), and 𝒦's kernel decays
-//! like |Δx|⁻³, so the correction is made locally, with `𝒦_NN⁻¹ ≈ ω/d`
-//! (a weighted Jacobi; ω per node, below) and `𝒦_FN` by the 7 × 7 window
-//! of 𝒦's kernel (read from 𝒦 of a unit pressure once per solve; exactly
-//! symmetric, so the preconditioner is). Measured on the rough case (iterations, σ0 = 0.005 / 0.05 E*,
-//! periodic): 30 / 34 → 26 / 25 at 256², 39 / 45 → 33 / 34 at 512²,
-//! 49 / 59 → 42 / 44 at 1024², 62 / 84 → 53 / 63 at 2048²; free boundary
-//! 51 / 77 → 42 / 58 at 1024² (docs/bem.md). The window and ω were chosen
-//! in a numpy replica of this loop (that of `examples/bem_two_level.py`,
-//! with the correction): at 512², σ0 = 0.05 E*, windows 3 × 3 / 5 × 5 / 7 × 7 /
-//! 11 × 11 (ω = 1.5) gave 37 / 37 / 34 / 34, a disc of radius 3 (28 of the
-//! 48 taps) 35; ω = 1.25 / 1.5 / 1.75 / 2 (7 × 7) gave 35 / 34 / 36 / 39,
-//! and in this loop ω = 1.25 / 1.4 / 1.5 / 1.6 gave 45 / 44 / 44 / 49 at
-//! 1024² (0.05 E*). Those were with one ω for every node. But the exact
-//! `𝒦_NN⁻¹` is 1/d only at a held node whose neighbours are all free;
-//! inside a held cluster its diagonal rises a little and its row sums a lot
-//! (numpy, 32² periodic, the centre of an s × s held block: diagonal 1,
-//! 1.23, 1.26, 1.31 × 1/d and row sums 1, 2.9, 4.5, 11.6 × 1/d for
-//! s = 1, 3, 5, 15; on a wholly held grid the diagonal is that of 𝒢,
-//! mean(2/|q|) · mean(|q|/2) = 1.35/d at 1024² and 2048²), and a diagonal X
-//! stands in for the whole row where 𝒦_NF r varies slowly. The weight now
-//! follows the node's 3 × 3 neighbourhood, `ω = ω₀ + ω₁ n_N/8` with n_N its
-//! held neighbours (the padding counts as held; its own nodes take
-//! ω₀ + ω₁), ω₀ = 1.25, ω₁ = 1 (issue 22's fifth step; chosen in the numpy
-//! replica at 512² and 1024², then confirmed at 2048²: periodic (ω₀, ω₁) =
-//! (1.5, 0) / (1.25, 1) / (1.25, 0.75) / (1.5, 1) / (1, 2) gave 34 / 31 / 32 /
-//! 31 / 33 at 512² and 44 / 42 / 42 / 48 / 49 at 1024², σ0 = 0.05 E*; the
-//! 7 × 7 neighbourhood, with seven pairs, 32–40 at 512²; a padding weight
-//! of 1.5 / 3 / 4 instead of 2.25, in this loop, 89 / 84 / 81 against 76 at
-//! free 2048²). Measured in this loop against the constant ω = 1.5
-//! (σ0 = 0.005 / 0.05 E*): periodic 26 / 25 → 24 / 23, 33 / 34 → 32 / 31,
-//! 42 / 44 → 39 / 42, 53 / 63 → 50 / **59** at 256²–2048²; free
-//! 27 / 31 → 26 / 29 … 56 / 81 → 54 / 76 at 2048² (docs/bem.md). The free-set
-//! test of each node is evaluated once per pass, into a cache of three rows
-//! that gives both the mask and the counts; the counts cost a few additions
-//! per node, and the times are equal within their scatter.
-//! Only ω ≤ d/λ_max(𝒦) ≈ 0.54 (the mean of |q| over the
-//! grid's square of wavevectors against its corner) guarantees a positive
-//! definite preconditioner; a direction that does not descend restarts β
-//! and then hands over to the plain loop (below), which none of the rough
-//! cases measured (docs/bem.md) needed. The saturated
-//! stage (box constraints, [`super::saturated`]) takes the same corrected
-//! preconditioner, with the nodes held at σY in N beside those held at 0
-//! (the Schur term is the same); its elastic stage is this loop.
-//! Overlapping nodes at `p = 0` belong to the free set, so they enter through
-//! the preconditioned step itself (not by the plain solver's `p = −τ g`
-//! re-entry) and conjugacy is kept across active-set changes; measured
-//! (rough case, a numpy prototype), restarting β at each change instead
-//! costs 30–60 % more iterations. The free boundary uses 𝒦 of the 2N
-//! padded grid (an approximate inverse of the window's compliance); the
-//! padding is held at p = 0 just as the non-contact nodes are, so its nodes
-//! within R of the window belong to N too: the operator returns 𝒦r on that
-//! margin (R nodes wide; the pruned transform keeps N + 2R
-//! of the 2N rows) and w there is that 𝒦r.
+//! `[F]𝒦[F]` keeps its first term only, so every eigenvalue of
+//! `[F]𝒦[F]𝒢_FF` is ≥ 1 (Cauchy interlacing) and the large ones belong to
+//! modes at the contact edges (Zhao, Vollebregt & Oosterlee 2014). The
+//! missing term corrects them: `𝒦_NF r = [N]𝒦r` is already at hand (the
+//! same convolution, off F), and 𝒦's kernel decays like |Δx|⁻³, so the
+//! correction is local, with `𝒦_NN⁻¹ ≈ ω/d` (a weighted Jacobi) and `𝒦_FN`
+//! by the 7 × 7 window of 𝒦's kernel (read from 𝒦 of a unit pressure once
+//! per solve; exactly symmetric, so the preconditioner is).
+//!
+//! The weight follows the node's 3 × 3 neighbourhood, ω = ω₀ + ω₁ n_N/8
+//! with n_N its held neighbours (the padding counts as held; its own nodes
+//! take 2.25), ω₀ = 1.25, ω₁ = 1, because the exact `𝒦_NN⁻¹` grows inside a
+//! held cluster. Measured on the rough case (iterations, σ0 = 0.005 /
+//! 0.05 E*, periodic), the correction with this weight takes 24 / 23 at
+//! 256² and 50 / 59 at 2048² where `[F]𝒦[F]` alone takes 30 / 34 and
+//! 62 / 84 (docs/bem.md); the window, the weights and the alternatives
+//! measured are in docs/design-notes.md. Only ω ≤ d/λ_max(𝒦) ≈ 0.54
+//! guarantees a positive definite preconditioner; a direction that does
+//! not descend restarts β and then hands over to the plain loop (below),
+//! which none of the rough cases measured needed. The saturated stage
+//! (box constraints, [`super::saturated`]) takes the same corrected
+//! preconditioner, with the nodes held at σY in N beside those held at 0;
+//! its elastic stage is this loop. Overlapping nodes at `p = 0` belong to
+//! the free set, so they enter through the preconditioned step itself and
+//! conjugacy is kept across active-set changes (restarting β at each change
+//! costs 30–60 % more iterations). The free boundary uses 𝒦 of the 2N
+//! padded grid; the padding is held at p = 0 just as the non-contact nodes
+//! are, so its nodes within R of the window belong to N too: the operator
+//! returns 𝒦r on that margin (R nodes wide; the pruned transform keeps
+//! N + 2R of the 2N rows) and w there is that 𝒦r.
 //!
 //! Two convolutions per iteration (𝒦r and 𝒢t) and the correction's
 //! stencil pass (sums of the rows i ± dy, then of the columns j ± dx:
@@ -108,176 +73,14 @@
 //! fields 9.25 N² and 10 N² ([`super::required_bytes`]), within 10 N².
 //!
 //! # Why this method
-//! Vollebregt (2014) compared CG variants for the elastic normal contact
-//! problem and made the FFT-based approximate inverse of the influence
-//! matrix the preconditioner of his bound-constrained CG (BCCG), with
-//! deflation for the smooth components the preconditioner misjudges. A
-//! multilevel scheme (Venner & Lubrecht 2000) needs coarse-grid versions of
-//! a contact set that is fractal at every scale (a nested start from the
-//! N/2 solution saved 2–5 % of the fine iterations on the rough case, in a
-//! prototype). The stiffness preconditioner costs one convolution, no
-//! memory, and applies unchanged to the saturated loop (box constraints) and
-//! to gap-based loops (whose operator is 𝒦, preconditioned by 𝒢).
-//!
-//! # Deflation, measured and not adopted
-//! Vollebregt's deflation was measured in a numpy prototype that reproduces
-//! this loop's iteration counts exactly (rough case of issue 22, periodic,
-//! ε ≤ 1e-10): the balancing (BNN) form of a two-level preconditioner,
-//! ```text
-//! z = Z E⁻¹ Zᵀ r + (I − Z E⁻¹ Zᵀ𝒢) [F]𝒦[F] (I − 𝒢 Z E⁻¹ Zᵀ) r,   E = Zᵀ𝒢Z   (exact, on F)
-//! ```
-//! with Z the indicators of the free set on m = 4 × 4 coarse blocks, took at
-//! σ0 = 0.05 E* 27 / 40 / 48 iterations at N = 256 / 512 / 1024 (this loop:
-//! 34 / 45 / 59) and at σ0 = 0.005 E* 35 / 44 at 512 / 1024 (39 / 49);
-//! 8 × 8 blocks: 25 and 39 at 256 and 512. The count still grows with N, by
-//! about the same factor per doubling, while each iteration costs two more
-//! convolutions (𝒢 of the coarse correction and of the preconditioned
-//! residual) and E costs m convolutions whenever F changes: slower in time
-//! at every size. The growth is in the linear problem itself, not in the
-//! active set: with the contact set fixed at the solution's, the same
-//! preconditioned CG takes 28 / 36 / 48 iterations at 256 / 512 / 1024
-//! (σ0 = 0.05 E*; the nonlinear loop 34 / 45 / 59) and 24 / 28 at 256 / 512
-//! (0.005 E*). The modes it misjudges are therefore not the
-//! coarse smooth ones a block space catches; nor are they a diagonal effect:
-//! diag(\[F\]𝒦\[F\]𝒢\[F\]) lies in 0.99–1.34 on the rough case (256²,
-//! σ0 = 0.05 E*), and the symmetric scaling by its inverse square root left
-//! the fixed-set count at 28–29. For the free boundary the
-//! periodic N-grid 𝒦 instead of the padded 2N one was measured too: 59
-//! against 40 iterations at 256², σ0 = 0.05 E*.
-//!
-//! # A two-level preconditioner on aggregates, measured and not adopted
-//! The second attempt of issue 22, in a numpy replica of this loop that
-//! gives its counts exactly (34 / 30 at 256², 45 at 512²;
-//! `examples/bem_two_level.py`, rough case, periodic, ε ≤ 1e-10). Balancing
-//! (BNN) form, as above, but the coarse space is made of *aggregates of fixed
-//! size*: Z the indicators of the b × b blocks of the grid intersected with
-//! F (N²/b² coarse unknowns, not 16 or 64), E = Zᵀ𝒜Z (𝒜: 𝒢 on F with the
-//! load constraint), factorised densely. With the contact set fixed at the
-//! solution's (iterations):
-//! ```text
-//!                                   N = 256   512   1024   2048
-//! FFT preconditioner (this loop)        28    36     48     65     σ0 = 0.05 E*
-//!                                       24    29     37     49     σ0 = 0.005 E*
-//! BNN, b = 32, E Galerkin               18    18     18     18     σ0 = 0.05 E*
-//!                                                    18     18     σ0 = 0.005 E*
-//! BNN, b = 16 / 8 / 4, E Galerkin       14 / 11 / 8 (256), 13 (512, b = 16)
-//! BNN, b = 64, E Galerkin                                    24     σ0 = 0.05 E*
-//! ```
-//! The count stops growing with N as long as b stays fixed. Three variants
-//! fail: the additive form z = \[F\]𝒦\[F\]r + Z E⁻¹ Zᵀ r (30 at 256², b = 16:
-//! 𝒦 already overestimates the inverse on F, and adding a positive term only
-//! raises the large eigenvalues); a coarse matrix that is not Galerkin in its
-//! near field (each aggregate's contact smeared over its block,
-//! E ≈ w_I w_J 𝒢_c(I − J): 19 / 57 / 160 at 256 / 512 / 1024, b = 16,
-//! σ0 = 0.05 E*, and 241–392 at 0.005 E*); and a fixed number of coarse
-//! blocks (the deflation above). A cheap assembly of E is as good as the
-//! exact one: near field (|I − J| ≤ 1 block) exact by probing with 16
-//! colours (one convolution each), far field from the aggregates' monopole
-//! and dipole moments through the block kernel (relative error 1e-3 of
-//! max E; the counts above are with it at 1024² and 2048²).
-//!
-//! In the nonlinear loop F changes, and Z and E with it. With E
-//! re-assembled at every iteration in which F changed (iterations,
-//! σ0 = 0.05 / 0.005 E*; –: not run):
-//! ```text
-//!                                   N = 256       512       1024
-//! FFT preconditioner (this loop)       34 / 30    45 / 39   59 / 49
-//! BNN, b = 16                          19 / 20
-//! BNN, b = 32                          24 / 24    29 / 27   51 / –
-//! BNN, b = 32, stale E (below)                    29 / 31   49 / 39
-//! BNN, b = 64                          28
-//! ```
-//! "Stale E": re-assembled only when F has changed at more than 1 % of its
-//! nodes since the last assembly (at 256², b = 16: the same 19 / 20, with 5
-//! and 9 assemblies; at 5 %, 27 / 24). So the nonlinear count still grows
-//! (24 → 29 → 51 at b = 32, σ0 = 0.05 E*; 29 assemblies at 1024²), though
-//! the linear problem's does not: the growth that remains comes with the
-//! moving active set. Where the iterations go (σ0 = 0.05 E*): with this
-//! loop's preconditioner F changes for the last time at iteration 26 of 45
-//! (512²) and 32 of 59 (1024²); with the two-level one (b = 32, every change
-//! re-assembled) at iteration 28 of 51 (1024²), after which it needs 23
-//! more, not the 18 of a start on the fixed set. So about half of the
-//! iterations find the active set, and that phase grows with N whatever
-//! the linear preconditioner. And each BNN iteration costs four convolutions (𝒦r,
-//! 𝒢 of the coarse correction, 𝒢 of the smoothed residual, 𝒢t) against two,
-//! each assembly 17 (16 colours and 𝒢 of the free set's indicator), plus a
-//! dense factorisation of N²/b² unknowns (4096 at 2048², b = 32: 16.8 M values,
-//! 4 N², beyond the memory budget). At 512², σ0 = 0.05 E*: 29 × 4 + 7 × 17
-//! = 235 convolutions against this loop's 45 × 2 = 90, at 1024² (stale E)
-//! 49 × 4 + 10 × 17 = 366 against 59 × 2 = 118: slower in time at every
-//! size measured; not adopted. What a next attempt would need: an
-//! assembly that follows F incrementally (the near-field entries of the
-//! aggregates whose nodes changed, by direct sums with the real-space kernel,
-//! about 9 b² operations per changed node), a coarse solve without a dense
-//! factor (the far field is a coarse circulant), and the projection without
-//! its extra transforms.
-//!
-//! # A nested-iteration start, measured and not adopted
-//! The third attempt of issue 22 (`examples/bem_nested.py`, the numpy
-//! replica of this loop with its exact counts; rough case, periodic): the
-//! fine solve starts from the solution of the same realisation on the N/2
-//! grid (Fourier-filtered at the coarse Nyquist; recursively down to 64²,
-//! each level to ε = 1e-4), prolonged piecewise constant and rescaled to the
-//! load (as [`super::Start::Rescaled`]); the fine loop is unchanged
-//! (ε ≤ 1e-10, same answer). Fine iterations / total cost in fine-size
-//! iterations (a level N/2ˡ costs 4⁻ˡ per iteration), cold start in
-//! brackets:
-//! ```text
-//!                 N = 256          512              1024             2048
-//! σ0 = 0.005 E*   28 / 31.4 (30)   35 / 39.1 (39)   44 / 49.1 (49)   56 / 62.1 (62)
-//! σ0 = 0.05 E*    32 / 35.3 (34)   43 / 47.6 (45)   56 / 61.8 (59)   80 / 87.9 (84)
-//! ```
-//! Coarse ε 1e-2 (512²: 36 / 38.0, 43 / 45.2), a single coarse level
-//! (1024²: 43 / 46.0, 56 / 58.5), bilinear prolongation (256²: 28 / 29.9,
-//! 33 / 34.8), tight coarse solves (256², ε 1e-8: 28 / 34.4, 32 / 38.8) and
-//! injected coarse heights (512²: 35 / 39.2, 43 / 47.4) do no better: the
-//! fine count falls by 3–10 %, the total by ≤ 6 % and mostly not at all,
-//! and the count still grows with N. The free set's last change on the fine
-//! grid barely moves (σ0 = 0.05 E*: iteration 26 cold and nested at 512²,
-//! 32 and 32 at 1024², 63 → 57 at 2048²; 0.005 E*: 20 → 16, 31 → 27, 47 → 38 at 512² / 1024²
-//! / 2048²): with q_s = N/4 q_l each doubling adds the octave of roughness
-//! that carries the most slope (H = 0.8), so the coarse contact set does not
-//! predict the fine one. Not adopted. Counted, not timed (load 5.0–6.8).
-//!
-//! # Around the edge correction, measured and not adopted
-//! The fourth attempt of issue 22 (numpy replica, rough case, periodic,
-//! σ0 = 0.05 E*, 256² unless said; fixed: contact set fixed at the
-//! solution's, this loop's FFT preconditioner 28 there, 34 in the loop):
-//! - the Schur form with a better `𝒦_NN⁻¹`: full-grid 𝒦_FN and Jacobi
-//!   26 in the loop (one more convolution per iteration, for what the
-//!   stencil gives); 1 / 3 Jacobi sweeps 20 / 16 fixed, inner CG with 2 /
-//!   5 / 20 iterations 18 / 10 / 3 fixed (each inner step a convolution:
-//!   5 inner iterations cost 8 convolutions per outer one, 80 against 56);
-//!   with the 7 × 7 stencil, one more local Jacobi sweep 44 against 44 at
-//!   1024² (0.05 E*).
-//! - a distance weight (z = \[F\] w 𝒦 (w r), w = min(1, dist(x, N)/d₀)^a):
-//!   a = 0.25 / 0.5 / −0.25 / −0.5, d₀ = 2–8: 29–56 fixed, never below 28.
-//! - Polak–Ribière β (and its variants with the old residual): 37–38
-//!   against 34 (0.005 E*: 31–32 against 30).
-//! - the entry test for nodes at p = 0: g < g_min (never converged),
-//!   g < ḡ − ½(ḡ − g_min) 47, g < ḡ + ½(ḡ − g_min) 42, against 34 for
-//!   g < ḡ (512², with the correction).
-//!
-//! With one ω, F changed for the last time at iteration 26 of 44 at 1024²
-//! and 48 of 63 at 2048² (σ0 = 0.05 E*, numpy replica), and ε fell by a
-//! decade per 6–7 iterations from 1e-7 on (a node entering and leaving at
-//! iterations 45–48): the 2048² solve at 0.05 E* was 3 iterations above the
-//! goal of 60. ω = 1.3 / 1.4 / 1.6 gave 64 / 64 / 63 there, and a single
-//! restart of β once ε ≤ 0.1 / 0.01 / 1e-3 62 / 62 / 63; the weight per
-//! node (above) gives 59.
-//! The free boundary took 117 at 2048², σ0 = 0.05 E*, before the correction
-//! reached into the padding: its contact set was fixed from iteration 69 and
-//! ε then fell by only 0.82 per iteration, the padding's Schur term missing
-//! (found in the numpy replica `examples/bem_free_padding.py`, which gives
-//! this loop's free counts exactly). With the padding's margin: 81 (76
-//! with the weight per node, the one row above 60); a weight of its own on
-//! the margin (0.67 / 1.33 / 2 × ω, one ω) gave 85 / 87 / 79, no
-//! consistent gain; in the numpy
-//! replica, margins of 1 / 2 / 3 nodes gave 80 / 81 / 81 (and 57 / 57 / 57
-//! at 1024²). A cold start from the clipped full-contact pressure
-//! max(c + 𝒦h, 0) saved 1–4 iterations periodic and saturated but cost 4–13
-//! on the free boundary at 0.05 E* (256²–1024², before the margin; with it,
-//! 42 → 61 at 512² and 57 → 65 at 1024²); not adopted.
+//! Vollebregt (2014) made the FFT-based approximate inverse of the influence
+//! matrix the preconditioner of his bound-constrained CG (BCCG). The
+//! stiffness preconditioner costs one convolution, no memory, and applies
+//! unchanged to the saturated loop (box constraints) and to gap-based loops
+//! (whose operator is 𝒦, preconditioned by 𝒢). Deflation, a two-level
+//! preconditioner on aggregates, a nested-iteration start and variants of
+//! the edge correction were measured against it and were slower in time or
+//! no better (docs/design-notes.md).
 //!
 //! # Stall and fallback
 //! ε is not monotone in a projected CG. When the best ε has not halved

@@ -64,7 +64,7 @@ impl Default for Options {
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum Method {
-    /// Polonsky & Keer (1999) as in persson 0.3: iterations grow with the
+    /// Polonsky & Keer (1999): iterations grow with the
     /// grid (~√N: 217 at 512², 323 at 1024² on the rough case at σ0 = 0.005 E*).
     Plain,
     /// Preconditioned by the half-space stiffness 𝒦 = E*|q|/2 restricted to

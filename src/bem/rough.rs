@@ -260,7 +260,7 @@ impl SpectrumSummary {
 }
 
 /// Where the rigid surface of a rough contact came from: a file, or a
-/// spectrum and a seed. Called `SurfaceSource` in persson 0.3.
+/// spectrum and a seed.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(untagged)]
 #[non_exhaustive]

@@ -227,7 +227,7 @@ pub enum Start {
     /// `p̄` everywhere (load control) or the overlap times the stiffness
     /// guess (penetration control).
     Cold,
-    /// The previous pressure times `p̄_new / p̄_old` (persson 0.3).
+    /// The previous pressure times `p̄_new / p̄_old`.
     Rescaled,
     /// The previous pressure plus a uniform approach increment on its
     /// contact set, predicted by the stiffness (see `predict`); under
@@ -251,7 +251,7 @@ pub const PREDICT_RATIO: f64 = 1.3;
 /// ```text
 /// w = [C] 𝒦 1_C,   c = (N² p̄_new − Σ p_old) / Σ w,   p = max(p_old + c w, 0) · N² p̄_new / Σ(…)
 /// ```
-/// Rescaling `p_old` instead (persson 0.3) keeps the contact set and
+/// Rescaling `p_old` instead ([`Start::Rescaled`]) keeps the contact set and
 /// overloads it: for the preconditioned solver it saves less, and beyond a
 /// load ratio of 1.2 it costs more than a cold start (see [`PREDICT_RATIO`]).
 fn predict(f: Fields<'_>, pm: f64) -> Result<()> {

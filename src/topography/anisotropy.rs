@@ -9,7 +9,7 @@
 //! ```text
 //! C(q_x, q_y) = Lx·Ly / ((2π)² N²) · |ĥ(q)|²      [m⁴],   Σ_q C (2π/Lx)(2π/Ly) = ⟨h²⟩
 //! ```
-//! (Persson's normalisation, `../shared/theory.md` §1), stored with q = 0 at
+//! (Persson's normalisation, the crate docs' Conventions), stored with q = 0 at
 //! index `(ny/2, nx/2)` (numpy's `fftshift`).
 //!
 //! # Peklenik number (moment form)
