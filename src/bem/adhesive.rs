@@ -146,9 +146,9 @@
 //! - E. Polak, G. Ribière, Rev. Fr. Inform. Rech. Opér. 3(16), 35 (1969),
 //!   doi:10.1051/m2an/196903R100351.
 
+use super::driver::Stall;
 use super::fft::Fft2;
 use super::kernel::{love_cell, signed, Boundary, Operator};
-use super::preconditioned::Stall;
 use super::problem::Method;
 use super::solution::Fallback;
 use crate::error::{check, Error, Result};

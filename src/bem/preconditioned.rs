@@ -107,11 +107,12 @@
 use std::cell::Cell;
 use std::time::Instant;
 
+use super::driver::{drive, Check, Limits, Measured, Step};
 use super::problem::{Options, Problem};
 use super::solution::{Fallback, Iteration, Solution};
 use super::steps::{finish_elastic, project_step, Entry, GapStats, LazyGap, LANES};
 use super::workspace::{sparse_limit, Workspace};
-use crate::error::{Error, Result};
+use crate::error::Result;
 
 /// How the preconditioned loop ended.
 #[derive(Debug)]
@@ -138,13 +139,11 @@ pub(crate) struct Cap {
     pub tolerance: f64,
 }
 
-/// Ratio by which the best ε must fall within a stall window.
-const STALL_FACTOR: f64 = 0.5;
-
 /// Solve `problem` from the pressure [`Workspace::start`] wrote.
 ///
 /// # Errors
-/// [`Error::NotConverged`] after `opts.max_iterations` iterations.
+/// [`Error::NotConverged`](crate::Error::NotConverged) after
+/// `opts.max_iterations` iterations.
 pub(crate) fn solve(
     problem: &Problem,
     ws: &mut Workspace,
@@ -154,85 +153,89 @@ pub(crate) fn solve(
     observer: &mut dyn FnMut(Iteration),
 ) -> Result<Outcome> {
     let start = Instant::now();
-    let mut state = State::new(problem, ws)?;
-    let mut stall = Stall::new(stall_iterations);
-    let (residual, stats) = loop {
-        let st = state.gap.measure(problem, ws);
-        let eps = st.residual(state.load, problem.sigma_h());
-        observer(Iteration {
-            iteration: state.k,
-            residual: eps,
-            contact_fraction: st.count as f64 / problem.nodes() as f64,
-        });
-        if eps <= opts.tolerance && !st.overlap(state.load, opts.tolerance, problem.sigma_h()) {
-            if state.gap.fresh {
-                break (eps, st);
-            }
-            state.gap.refresh(problem, ws)?;
-            continue;
-        }
-        if cap.is_some_and(|c| eps <= c.tolerance && st.p_max > c.yield_stress) {
-            state.gap.hand_over(ws);
-            return Ok(Outcome::Capped(state.k));
-        }
-        if state.k >= opts.max_iterations {
-            return Err(Error::NotConverged {
-                what: "preconditioned Polonsky–Keer contact solver".into(),
-                iterations: state.k,
-                residual: eps,
-                tolerance: opts.tolerance,
-            });
-        }
-        if stall.stalled(state.k, eps) || !state.iterate(problem, ws, &st)? {
-            state.gap.hand_over(ws);
-            return Ok(Outcome::Stalled(Fallback {
-                iterations: state.k,
-                residual: eps,
-            }));
-        }
-    };
-    state.gap.hand_over(ws);
-    Ok(Outcome::Converged(finish_elastic(
+    let state = State::new(problem, ws)?;
+    let mut run = Preconditioned {
         problem,
         ws,
-        &stats,
-        (state.k, residual),
+        tolerance: opts.tolerance,
+        cap,
+        state,
+        stats: GapStats::default(),
         start,
-    )))
+    };
+    drive(
+        &mut run,
+        Limits::new(opts.max_iterations, opts.tolerance).with_stall(stall_iterations),
+        Some(observer),
+    )
 }
 
-/// The stall test: the best ε must fall by [`STALL_FACTOR`] in every window.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct Stall {
-    window: usize,
-    since: usize,
-    checkpoint: f64,
-    best: f64,
+/// The preconditioned loop as the driver runs it.
+struct Preconditioned<'a> {
+    problem: &'a Problem<'a>,
+    ws: &'a mut Workspace,
+    tolerance: f64,
+    cap: Option<Cap>,
+    state: State,
+    /// The sums of the last measure.
+    stats: GapStats,
+    start: Instant,
 }
 
-impl Stall {
-    pub fn new(window: usize) -> Self {
-        Stall {
-            window: window.max(1),
-            since: 0,
-            checkpoint: f64::INFINITY,
-            best: f64::INFINITY,
-        }
+impl Step for Preconditioned<'_> {
+    type Output = Outcome;
+    const WHAT: &'static str = "preconditioned Polonsky–Keer contact solver";
+
+    fn measure(&mut self) -> Result<Measured> {
+        self.stats = self.state.gap.measure(self.problem, self.ws);
+        Ok(Measured {
+            iteration: self.state.k,
+            residual: self.stats.residual(self.state.load, self.problem.sigma_h()),
+        })
     }
 
-    /// Record ε of iteration `k`; true when the window closed without progress.
-    pub fn stalled(&mut self, k: usize, eps: f64) -> bool {
-        if !eps.is_finite() {
-            return true;
+    fn contact_fraction(&self) -> f64 {
+        self.stats.count as f64 / self.problem.nodes() as f64
+    }
+
+    fn check(&mut self, m: Measured) -> Result<Check<Outcome>> {
+        let (problem, st, eps) = (self.problem, &self.stats, m.residual);
+        if eps <= self.tolerance && !st.overlap(self.state.load, self.tolerance, problem.sigma_h())
+        {
+            if !self.state.gap.fresh {
+                self.state.gap.refresh(problem, self.ws)?;
+                return Ok(Check::Again);
+            }
+            self.state.gap.hand_over(self.ws);
+            return Ok(Check::Stop(Outcome::Converged(finish_elastic(
+                problem,
+                self.ws,
+                st,
+                (self.state.k, eps),
+                self.start,
+            ))));
         }
-        self.best = self.best.min(eps);
-        if k < self.since + self.window {
-            return false;
+        if self
+            .cap
+            .is_some_and(|c| eps <= c.tolerance && st.p_max > c.yield_stress)
+        {
+            self.state.gap.hand_over(self.ws);
+            return Ok(Check::Stop(Outcome::Capped(self.state.k)));
         }
-        let stalled = self.best > STALL_FACTOR * self.checkpoint;
-        self.checkpoint = self.best;
-        self.since = k;
-        stalled
+        Ok(Check::Go)
+    }
+
+    fn step(&mut self, _: &mut dyn FnMut(Iteration)) -> Result<bool> {
+        let st = self.stats;
+        self.state.iterate(self.problem, self.ws, &st)
+    }
+
+    fn stalled(&mut self, m: Measured) -> Result<Outcome> {
+        self.state.gap.hand_over(self.ws);
+        Ok(Outcome::Stalled(Fallback {
+            iterations: m.iteration,
+            residual: m.residual,
+        }))
     }
 }
 
