@@ -35,6 +35,9 @@ use rustfft::num_complex::Complex64;
 use super::fft::Fft2;
 use crate::error::{check, Error, Result};
 
+mod padded;
+pub(crate) use padded::Padded;
+
 /// Boundary condition of the elastic half-space at the edges of the grid.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
