@@ -12,10 +12,13 @@
 //! `h − o` is always formed first: it is the size of the roughness, so a
 //! large mean height costs no digits in the gap.
 //!
-//! Every loop ([`super::polonsky_keer`], [`super::preconditioned`],
-//! [`super::saturated`], and loops added later such as a gap-based adhesive
-//! one) takes a `&Problem` and a `&mut` [`super::Workspace`]: the problem is
-//! never written, the workspace holds every buffer.
+//! The pressure-based loops ([`super::polonsky_keer`], [`super::preconditioned`],
+//! [`super::saturated`]) take a `&Problem` and a `&mut` [`super::Workspace`]:
+//! the problem is never written, the workspace holds every buffer. The
+//! gap-based adhesive loops ([`super::adhesive`]) do not yet: their unknown is
+//! the gap on a grid padded to 2N on the free boundary, prescribed by a mean
+//! gap or an approach, and they keep their buffers in the
+//! [`super::adhesive::AdhesiveSolver`].
 
 use super::kernel::{Boundary, Operator};
 use crate::error::{check, Error, Result};
