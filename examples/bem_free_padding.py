@@ -1,7 +1,7 @@
 """Prototype of issue 22's step for the free boundary: the edge correction of
 the preconditioner extended over a band of the padding (measured here first, now
-in the solver, whose counts mode "pad" reproduces; see docs/bem.md and the module
-docs of `persson::bem::preconditioned`).
+in the solver, whose counts mode "pad" reproduces; see docs/bem.md and
+docs/design-notes.md).
 
 numpy replica of `src/bem/preconditioned.rs` on the free boundary (load control,
 E* = L = 1): the compliance is Love's cell kernel on the zero-padded 2N grid,

@@ -1,5 +1,5 @@
-//! Iterations and times of the BEM solver, plain (persson 0.3) against
-//! preconditioned, on the rough case of issue 22: self-affine H = 0.8, rms
+//! Iterations and times of the BEM solver, plain against
+//! preconditioned, on the rough case of docs/bem.md: self-affine H = 0.8, rms
 //! slope 0.1, q_l = 2π/L, q_r = 4 q_l, q_s = (N/4) q_l, seed 1, L = E* = 1,
 //! ε ≤ 1e-10; periodic and free boundary, and saturated (σY = 4 σ0,
 //! periodic). One line per case, grid and load: iterations, solve times,

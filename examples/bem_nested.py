@@ -1,5 +1,5 @@
 """Prototype of issue 22's nested-iteration (coarse-to-fine) start, measured and
-not adopted: see the module docs of `persson::bem::preconditioned` and docs/bem.md.
+not adopted: see docs/design-notes.md and docs/bem.md.
 
 The loop is the preconditioned one of `examples/bem_two_level.py` (b = 0; it gives
 `src/bem/preconditioned.rs`'s counts exactly: 30/39/49 at 256/512/1024, sigma0 =

@@ -1,6 +1,6 @@
 """Prototype of issue 22's two-level (balancing Neumann–Neumann) preconditioner
-for the BEM's constrained CG, measured and not adopted: see the module docs of
-`persson::bem::preconditioned` and docs/bem.md for the counts it gave.
+for the BEM's constrained CG, measured and not adopted: see docs/design-notes.md
+and docs/bem.md for the counts it gave.
 
 numpy/scipy replica of `src/bem/preconditioned.rs` (periodic, load control,
 E* = L = 1; it reproduces that loop's iteration counts exactly: 34/30 at 256²,

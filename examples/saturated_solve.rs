@@ -4,7 +4,7 @@
 //! 0 ≤ p ≤ σY and prints one JSON line (fractions, iterations, residual,
 //! seconds, whether the preconditioned solver fell back); writes the
 //! pressure field to the given `.npy`. A sixth argument `plain` selects the
-//! plain Polonsky–Keer method of persson 0.3 (default: preconditioned).
+//! plain Polonsky–Keer method (default: preconditioned).
 //!
 //! `cargo run --release --features bem --example saturated_solve -- \
 //!     heights.npy pressure yield_stress tolerance pressure_out.npy [plain]`

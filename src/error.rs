@@ -75,6 +75,22 @@ fn position(line: usize, column: usize) -> String {
     }
 }
 
+/// Of E* and σ0, the input to name when a function of their ratio leaves
+/// f64's range or the routes' resolution: σ0 (the load, which the bounds
+/// are stated for), unless E* lies outside [1e-30, 1e30] and further from 1
+/// in order of magnitude than σ0. Moduli range from 1e3 Pa (gels) to 1e12
+/// Pa (diamond), or are 1 in reduced units and 1e-6–1e3 in MPa or GPa: an E*
+/// beyond 1e±30 is a typing error in every unit system, while a small or
+/// large σ0 against an ordinary E* is the load the user asked for.
+pub(crate) fn ratio_culprit(contact_modulus: f64, pressure: f64) -> &'static str {
+    let (e, p) = (contact_modulus.log10().abs(), pressure.log10().abs());
+    if e > 30.0 && e > p {
+        "contact_modulus"
+    } else {
+        "nominal_pressure"
+    }
+}
+
 /// A number as a person writes it: plain in [1e-4, 1e7), else scientific.
 pub(crate) fn num(v: f64) -> String {
     if v == 0.0 || !v.is_finite() || (1e-4..1e7).contains(&v.abs()) {

@@ -58,7 +58,60 @@ impl Kappa {
         contact_modulus: f64,
         rms_slope: f64,
     ) -> crate::Result<f64> {
-        crate::theory::check_linear_laws(contact_modulus, pressure, rms_slope)?;
+        check_linear_laws(contact_modulus, pressure, rms_slope)?;
         Ok(self.linear_fraction(pressure, contact_modulus, rms_slope))
     }
+}
+
+/// Refuse a σ0/E* for which the linear laws κ σ0/(E* h'_rms) beside A/A0
+/// overflow (E* = 1e-300 at σ0 = 1e7 gave A/A0 Bush linear = ∞).
+///
+/// # Bound
+/// κ σ0/(E* h'_rms) ≤ f64::MAX for κ ≤ κ_Bush = √(2π) (the larger κ):
+/// σ0/E* ≤ f64::MAX h'_rms/√(2π), tested as the law itself evaluates.
+///
+/// # Errors
+/// [`crate::Error::InvalidParameter`] naming `nominal_pressure`, or
+/// `contact_modulus` when E* is beyond 1e±30 ([`crate::error::ratio_culprit`]).
+pub(crate) fn check_linear_laws(
+    contact_modulus: f64,
+    pressure: f64,
+    rms_slope: f64,
+) -> crate::Result<()> {
+    // h'_rms = 0 (ζ = 1: no roughness resolved yet) leaves the laws
+    // undefined, not overflowing: that point keeps its +∞ as before
+    if rms_slope <= 0.0
+        || Kappa::Bush
+            .linear_fraction(pressure, contact_modulus, rms_slope)
+            .is_finite()
+    {
+        return Ok(());
+    }
+    let ratio = f64::MAX / Kappa::Bush.value() * rms_slope;
+    let why = format!(
+        "so that the linear laws κ σ0/(E* h'_rms) (h'_rms = {}) stay finite in f64",
+        crate::error::approx(rms_slope)
+    );
+    Err(
+        match crate::error::ratio_culprit(contact_modulus, pressure) {
+            "contact_modulus" => crate::Error::invalid(
+                "contact_modulus",
+                contact_modulus,
+                format!(
+                    "at least {} (σ0 = {}) {why}",
+                    crate::error::approx(pressure / ratio),
+                    crate::error::num(pressure)
+                ),
+            ),
+            _ => crate::Error::invalid(
+                "nominal_pressure",
+                pressure,
+                format!(
+                    "at most {} (E* = {}) {why}",
+                    crate::error::approx(ratio * contact_modulus),
+                    crate::error::num(contact_modulus)
+                ),
+            ),
+        },
+    )
 }

@@ -58,8 +58,9 @@
 //! # }
 //! ```
 //!
-//! The command-line tool `persson` (feature `cli`) does the same from flags:
-//! `persson area --example` prints A/A0 against the nominal pressure.
+//! This crate is the numerics only (features `bem`, `flow` and `topography`,
+//! all on by default); the command-line tool and the scene files are the
+//! `persson-cli` and `persson-studies` crates of the same workspace.
 //!
 //! ## Conventions
 //!
@@ -124,7 +125,10 @@
 //! | [`conductance`] | thermal and electrical contact conductance from the stiffness (Barber's identity) and the conductance through the gap |
 //! | [`leakage`] | the leak rate of a static seal: critical junction and effective medium |
 //! | [`gap`] | the distribution of interfacial separations P(u) and the magnification-resolved separation u1(ζ) |
-//! | `bem` | (feature `bem`) the FFT boundary-element solver: elastic kernels, surface synthesis, the Polonsky–Keer solver, Hertz validation |
+//! | [`reference`](mod@reference) | closed-form Hertz contacts (ball and cylinder): the smooth starts of the stress distributions and the BEM's validation |
+//! | `bem` | (feature `bem`) the FFT boundary-element solver: elastic kernels, surface synthesis, the Polonsky–Keer, preconditioned, saturated and adhesive loops, Hertz validation, Reynolds flow on the gap (feature `flow`) |
+//! | `topography` | (feature `topography`) measured surfaces: the instrument file readers, detrending, windows, radially averaged spectra, statistics |
+//! | [`io`] | grid file I/O: the one `.npy` reader and writer, the one text reader, atomic writes |
 //! | [`error`] | the crate's [`Error`] and [`Result`]; [`Estimate`] is a value with its error bound, which many functions return |
 //!
 //! ## References
@@ -155,6 +159,8 @@ pub mod bem;
 pub mod conductance;
 pub mod corrected;
 pub mod error;
+#[cfg(any(feature = "bem", feature = "topography"))]
+mod fft;
 pub mod friction;
 pub mod gap;
 pub mod io;

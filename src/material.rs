@@ -45,7 +45,7 @@ pub fn check_poisson(name: &str, poisson: f64) -> Result<f64> {
 /// 1/E* = (1 − ν₁²)/E₁ + (1 − ν₂²)/E₂        (E₂ = ∞: a rigid counter-body)
 /// ```
 /// All results of the theory depend on the materials through E* only
-/// (`../shared/theory.md` §1).
+/// (the crate docs, Conventions; docs/conventions.md).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Material {
     contact_modulus: f64,

@@ -425,7 +425,7 @@ impl<'a> Separation<'a> {
 }
 
 /// Refuse a load whose stiffness exponent x_s² = (w(q_s)σ0/E*)² overflows
-/// f64, naming σ0 or E* ([`crate::theory::ratio_culprit`]): σ0 = 1e300 at
+/// f64, naming σ0 or E* ([`crate::error::ratio_culprit`]): σ0 = 1e300 at
 /// E* = 1e7 (or E* = 1e-300 at 1e7) gave "contact stiffness (integrand not
 /// finite at 21 nodes) did not converge … residual 0 > tolerance 2.2e-308".
 ///
@@ -433,7 +433,7 @@ impl<'a> Separation<'a> {
 /// x_s² ≤ f64::MAX ⇔ σ0/E* ≤ √f64::MAX/w(q_s), w(q_s) = (π ∫_{q_l}^{q_s}
 /// q³C dq)^{−1/2}, tested as the routes evaluate it. Below it K is computed,
 /// and is +∞ where ln K = ln σ0 + x_s² − ln I exceeds ln f64::MAX, far in
-/// full contact (the theory's limit there, persson 0.4's documented value).
+/// full contact (the theory's limit there).
 /// Returns w(q_s).
 pub(crate) fn check_stiffness_exponent(
     spectrum: &dyn Spectrum,
@@ -454,7 +454,7 @@ pub(crate) fn check_stiffness_exponent(
         approx(w_min)
     );
     Err(
-        match crate::theory::ratio_culprit(contact_modulus, pressure) {
+        match crate::error::ratio_culprit(contact_modulus, pressure) {
             "contact_modulus" => Error::invalid(
                 "contact_modulus",
                 contact_modulus,

@@ -1,7 +1,8 @@
 //! Special functions, accurate to a few ulp over the whole f64 range.
 //!
-//! erf, erfc, J1 come from `libm` (musl port; ≤ 2e-16 relative in
-//! `../shared/deps.md`), erfcx from `errorfunctions` (Faddeeva port). This
+//! erf, erfc, J1 come from `libm` (musl port; ≤ 2e-16 relative, measured
+//! when it was chosen: docs/design-notes.md), erfcx from `errorfunctions`
+//! (Faddeeva port). This
 //! module adds only the combinations the theory needs.
 
 use errorfunctions::RealErrorFunctions;

@@ -41,7 +41,7 @@ pub struct ContactFraction {
 ///
 /// # Examples
 /// ```
-/// // Persson, Bucher & Chiaia (2002), Fig. 2: A/A0 = 0.638690 at G = 0.6 (../shared/theory.md §3)
+/// // Persson, Bucher & Chiaia (2002), Fig. 2: A/A0 = 0.638690 at G = 0.6 (docs/accuracy.md)
 /// let a = persson::theory::contact_fraction(0.6, 0.0).unwrap();
 /// assert!((a.fraction - 0.638_690).abs() < 5e-7);
 /// ```
@@ -67,24 +67,8 @@ pub fn contact_fraction(g: f64, g_error: f64) -> Result<ContactFraction> {
     })
 }
 
-/// Of E* and σ0, the input to name when a function of their ratio leaves
-/// f64's range or the routes' resolution: σ0 (the load, which the bounds
-/// are stated for), unless E* lies outside [1e-30, 1e30] and further from 1
-/// in order of magnitude than σ0. Moduli range from 1e3 Pa (gels) to 1e12
-/// Pa (diamond), or are 1 in reduced units and 1e-6–1e3 in MPa or GPa: an E*
-/// beyond 1e±30 is a typing error in every unit system, while a small or
-/// large σ0 against an ordinary E* is the load the user asked for.
-pub(crate) fn ratio_culprit(contact_modulus: f64, pressure: f64) -> &'static str {
-    let (e, p) = (contact_modulus.log10().abs(), pressure.log10().abs());
-    if e > 30.0 && e > p {
-        "contact_modulus"
-    } else {
-        "nominal_pressure"
-    }
-}
-
 /// The error for an E*/σ0 so large that G overflows, naming E* or σ0
-/// ([`ratio_culprit`]) with the bound on it.
+/// ([`crate::error::ratio_culprit`]) with the bound on it.
 ///
 /// # Bound
 /// ```text
@@ -101,7 +85,7 @@ pub(crate) fn g_overflow(contact_modulus: f64, pressure: f64, slope_variance: f6
         "⟨|∇h|²⟩ = {}) so that G = (E*/σ0)²⟨|∇h|²⟩/8 stays finite in f64",
         approx(slope_variance)
     );
-    match ratio_culprit(contact_modulus, pressure) {
+    match crate::error::ratio_culprit(contact_modulus, pressure) {
         "contact_modulus" => Error::invalid(
             "contact_modulus",
             contact_modulus,
@@ -128,7 +112,7 @@ pub(crate) fn g_overflow(contact_modulus: f64, pressure: f64, slope_variance: f6
 ///
 /// # Errors
 /// [`Error::InvalidParameter`] naming `contact_modulus` or
-/// `nominal_pressure` (see [`ratio_culprit`]).
+/// `nominal_pressure` (see [`crate::error::ratio_culprit`]).
 pub(crate) fn check_g_finite(
     contact_modulus: f64,
     pressure: f64,
@@ -141,53 +125,6 @@ pub(crate) fn check_g_finite(
     } else {
         Err(g_overflow(contact_modulus, pressure, slope_variance))
     }
-}
-
-/// Refuse a σ0/E* for which the linear laws κ σ0/(E* h'_rms) beside A/A0
-/// overflow (E* = 1e-300 at σ0 = 1e7 gave A/A0 Bush linear = ∞).
-///
-/// # Bound
-/// κ σ0/(E* h'_rms) ≤ f64::MAX for κ ≤ κ_Bush = √(2π) (the larger κ):
-/// σ0/E* ≤ f64::MAX h'_rms/√(2π), tested as the law itself evaluates.
-///
-/// # Errors
-/// [`Error::InvalidParameter`] naming `nominal_pressure`, or
-/// `contact_modulus` when E* is beyond 1e±30 ([`ratio_culprit`]).
-pub(crate) fn check_linear_laws(contact_modulus: f64, pressure: f64, rms_slope: f64) -> Result<()> {
-    // h'_rms = 0 (ζ = 1: no roughness resolved yet) leaves the laws
-    // undefined, not overflowing: that point keeps its +∞ as before
-    if rms_slope <= 0.0
-        || Kappa::Bush
-            .linear_fraction(pressure, contact_modulus, rms_slope)
-            .is_finite()
-    {
-        return Ok(());
-    }
-    let ratio = f64::MAX / Kappa::Bush.value() * rms_slope;
-    let why = format!(
-        "so that the linear laws κ σ0/(E* h'_rms) (h'_rms = {}) stay finite in f64",
-        crate::error::approx(rms_slope)
-    );
-    Err(match ratio_culprit(contact_modulus, pressure) {
-        "contact_modulus" => Error::invalid(
-            "contact_modulus",
-            contact_modulus,
-            format!(
-                "at least {} (σ0 = {}) {why}",
-                crate::error::approx(pressure / ratio),
-                crate::error::num(pressure)
-            ),
-        ),
-        _ => Error::invalid(
-            "nominal_pressure",
-            pressure,
-            format!(
-                "at most {} (E* = {}) {why}",
-                crate::error::approx(ratio * contact_modulus),
-                crate::error::num(contact_modulus)
-            ),
-        ),
-    })
 }
 
 /// One point of an area curve.
@@ -324,7 +261,7 @@ impl<'a> Persson<'a> {
         let g = self.g_from(slope_variance, pressure)?;
         let a = contact_fraction(g.value, g.error)?;
         let slope = slope_variance.value.sqrt();
-        check_linear_laws(self.contact_modulus, pressure, slope)?;
+        crate::kappa::check_linear_laws(self.contact_modulus, pressure, slope)?;
         Ok(AreaPoint {
             nominal_pressure: pressure,
             zeta,

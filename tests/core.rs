@@ -166,7 +166,7 @@ fn contact_fraction_keeps_relative_accuracy_on_both_sides() {
 
 #[test]
 fn seed_flat_start_areas() {
-    // ../shared/theory.md §3: Persson, Bucher & Chiaia (2002) Fig. 2 reads 0.64, 0.38; exact 0.638690, 0.382925.
+    // docs/design-notes.md (Reference numbers): Persson, Bucher & Chiaia (2002) Fig. 2 reads 0.64, 0.38; exact 0.638690, 0.382925.
     for (g, seed, exact) in [(0.6, 0.64, 0.638_690), (2.0, 0.38, 0.382_925)] {
         let a = contact_fraction(g, 0.0).unwrap().fraction;
         assert!((a - exact).abs() < 5e-7);
@@ -461,7 +461,7 @@ fn bad_parameters_are_named() {
 
 #[test]
 fn borri_brunetto_slope_ratios() {
-    // ../shared/theory.md §3 (Persson, Bucher & Chiaia 2002, Sec. III): 1.2311, 1.5157, 1.8661, 2.2974 for
+    // docs/design-notes.md, Reference numbers (Persson, Bucher & Chiaia 2002, Sec. III): 1.2311, 1.5157, 1.8661, 2.2974 for
     // L/λ = 128, 64, 32, 16 against 256 with D_f = 2.3; the seed prints 1.23 1.52 1.87 2.30.
     // The pure power law is the limit of magnifications ≫ 1 (here ×1e8).
     const FOUR_DECIMALS: f64 = 5e-5;

@@ -664,7 +664,7 @@ fn height_units_read_checked_or_given() {
     let p = temp("volts.txt", b"x [um], Signal [V]\n0, 1\n1, 4\n2, 2\n");
     error_of(&p, &ReadOptions::default(), "\"V\", not a unit of length");
     let p = temp("half.txt", b"x [um], height\n0, 1\n1, 4\n2, 2\n");
-    error_of(&p, &ReadOptions::default(), "--height-unit");
+    error_of(&p, &ReadOptions::default(), "option `height_unit`");
     let t = read::read(
         &p,
         &ReadOptions {

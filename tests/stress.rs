@@ -111,7 +111,7 @@ fn matches_mpmath_references() {
     assert_eq!(checked, 129);
 }
 
-/// Contact areas of Persson, Bucher & Chiaia (2002) Figs. 2–4 (exact values of ../shared/theory.md §3).
+/// Contact areas of Persson, Bucher & Chiaia (2002) Figs. 2–4 (exact values: docs/design-notes.md, Reference numbers).
 const SEED_AREAS: [(&str, f64, f64); 6] = [
     ("flat", 0.6, 0.638_690),
     ("flat", 2.0, 0.382_925),
@@ -135,7 +135,7 @@ fn reproduces_seed_contact_areas() {
     }
 }
 
-/// Closed forms of ../shared/theory.md §3: Hertz
+/// Closed forms (docs/design-notes.md, Reference numbers): Hertz
 /// A = erf(c)(1 − 1/(2c²)) + e^{−c²}/(c√π), c = 3/(4√G); cylinder
 /// A = ∫₀^{π/2} sin t erf(c sin t) dt, c = 2/(π√G) (adaptive quadrature here).
 /// Checked elastic and at σY/σH = 1e6 (image sum, A_el → A∞ for G ≪ 1e12).

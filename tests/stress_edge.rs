@@ -11,7 +11,7 @@ use persson::stress::{Solver, Start, TabulatedStart};
 /// mpmath at 40 digits with the f64 inputs: A_pl = F(y) = ∫₀¹ P0(1 − v)
 /// [erfc((y − 1 + v)/w) − erfc((y + 1 − v)/w)] dv integrated in units of its
 /// decay length, A_el = A∞ − F(y) (F(2y) < 1e-300), A∞ from the closed forms
-/// of `../shared/theory.md` §3 (cylinder: 1 − ∫ cos θ erfc(cos θ/w) dθ).
+/// of docs/design-notes.md, Reference numbers (cylinder: 1 − ∫ cos θ erfc(cos θ/w) dθ).
 const EDGE_CASES: [(&str, f64, Option<f64>, f64, f64); 5] = [
     // start, G, σY/σH, A_el, A_pl
     (

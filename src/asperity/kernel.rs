@@ -153,47 +153,6 @@ impl Chebyshev {
     }
 }
 
-/// An n-point Gauss–Legendre rule on [−1, 1]: (nodes, weights), by Newton's
-/// method on the three-term recurrence from Tricomi's initial guesses.
-pub(crate) fn gauss_legendre(n: usize) -> (Vec<f64>, Vec<f64>) {
-    let mut x = vec![0.0; n];
-    let mut w = vec![0.0; n];
-    let nf = n as f64;
-    for i in 0..n.div_ceil(2) {
-        let mut z = (std::f64::consts::PI * (i as f64 + 0.75) / (nf + 0.5)).cos();
-        for _ in 0..100 {
-            let (p, d) = legendre_p(n, z);
-            let dz = p / d;
-            z -= dz;
-            if dz.abs() <= 1e-17 {
-                break;
-            }
-        }
-        let (_, d) = legendre_p(n, z);
-        let wi = 2.0 / ((1.0 - z * z) * d * d);
-        x[i] = -z;
-        x[n - 1 - i] = z;
-        w[i] = wi;
-        w[n - 1 - i] = wi;
-    }
-    if n % 2 == 1 {
-        x[n / 2] = 0.0;
-    }
-    (x, w)
-}
-
-/// P_n(z) and P_n'(z).
-fn legendre_p(n: usize, z: f64) -> (f64, f64) {
-    let (mut p0, mut p1) = (1.0, z);
-    for k in 2..=n {
-        let kf = k as f64;
-        let p2 = ((2.0 * kf - 1.0) * z * p1 - (kf - 1.0) * p0) / kf;
-        p0 = p1;
-        p1 = p2;
-    }
-    (p1, n as f64 * (z * p1 - p0) / (z * z - 1.0))
-}
-
 /// One kernel K_γ.
 #[derive(Debug, Clone)]
 pub(crate) struct Kernel {

@@ -25,8 +25,9 @@
 //! power law (ξ > 0) sharpens (u | ξ narrows as α → 3/2) and 64 terms no
 //! longer reach 1e-12 (8e-13 at α = 4, 1e-10 at α = 3): the direct path is used.
 
-use super::kernel::{gauss_legendre, Chebyshev, Kernel, Kernels};
+use super::kernel::{Chebyshev, Kernel, Kernels};
 use crate::error::Result;
+use crate::quad::gauss_legendre;
 use crate::quad::integrate;
 
 /// Table range in ξ.

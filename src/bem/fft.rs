@@ -7,10 +7,10 @@
 //! X(k_i, k_j) = Σ_{i,j} x[i, j] e^{−2πi (k_i i + k_j j)/n}
 //! ```
 //! and only the half spectrum `k_j = 0 … n/2` is kept (the rest follows from
-//! Hermitian symmetry). The half spectrum is stored **transposed**,
-//! `spec[k_j·n + k_i]`, because the column FFTs then run over contiguous memory
-//! in one batched call. The inverse applies no `1/n²` factor: callers fold it
-//! into their multiplier (see [`super::kernel`]).
+//! Hermitian symmetry). In [`Fft2`] the half spectrum is stored
+//! **transposed**, `spec[k_j·n + k_i]`, because the column FFTs then run over
+//! contiguous memory in one batched call. The inverse applies no `1/n²`
+//! factor: callers fold it into their multiplier (see [`super::kernel`]).
 //!
 //! Only the first `rows ≤ n` rows of the real field are used: the forward
 //! transform treats rows `rows … n` as zero and the inverse returns only the
@@ -29,16 +29,19 @@
 //!
 //! No allocation happens after [`Fft2::new`]: all scratch space is owned.
 //!
-//! # References
-//! Recipe and timings: `../shared/deps.md` §4 (rustfft 6.4 + realfft 3.5).
+//! The plans come from the crate's one FFT module (`src/fft.rs`), which
+//! plans each length once; a realfft failure on the lengths planned is a
+//! bug and panics there (its module docs say why), so only the lengths of
+//! buffers a caller passes are errors here.
 
 use std::sync::Arc;
 
-use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
+use realfft::{ComplexToReal, RealToComplex};
 pub use rustfft::num_complex::Complex64;
-use rustfft::{Fft, FftPlanner};
+use rustfft::Fft;
 
 use crate::error::{Error, Result};
+use crate::fft::{complex, forward_row, real_forward, real_inverse, LENGTHS};
 
 /// Bytes of the column block of [`Fft2::convolve`]: a quarter of the 1 MiB
 /// L2 cache of this machine's cores (the block and the rustfft scratch stay
@@ -88,12 +91,8 @@ impl Fft2 {
                 requirement: format!("n >= 2 and 1 <= rows <= n, got n = {n}, rows = {rows}"),
             });
         }
-        let mut rp = RealFftPlanner::<f64>::new();
-        let mut cp = FftPlanner::<f64>::new();
-        let r2c = rp.plan_fft_forward(n);
-        let c2r = rp.plan_fft_inverse(n);
-        let fwd = cp.plan_fft_forward(n);
-        let inv = cp.plan_fft_inverse(n);
+        let (r2c, c2r) = (real_forward(n), real_inverse(n));
+        let (fwd, inv) = (complex(n, false), complex(n, true));
         let len = [
             r2c.get_scratch_len(),
             c2r.get_scratch_len(),
@@ -137,16 +136,14 @@ impl Fft2 {
     /// overwritten as scratch) into `spec` (`(n/2+1) × n`, transposed).
     ///
     /// # Errors
-    /// Wrong buffer lengths (an internal error).
+    /// [`Error::Inconsistent`] for buffers of the wrong lengths.
     pub fn forward(&mut self, x: &mut [f64], spec: &mut [Complex64]) -> Result<()> {
         let (n, nc, rows) = (self.n, self.nc(), self.rows);
         if x.len() != rows * n || spec.len() != nc * n {
             return Err(length_error("forward", x.len(), spec.len()));
         }
         for (xr, sr) in x.chunks_exact_mut(n).zip(self.rowspec.chunks_exact_mut(nc)) {
-            self.r2c
-                .process_with_scratch(xr, sr, &mut self.scratch)
-                .map_err(fft_error)?;
+            forward_row(&*self.r2c, xr, sr, &mut self.scratch);
         }
         gather(&self.rowspec, nc, 0, nc, spec, n, n);
         self.fwd.process_with_scratch(spec, &mut self.scratch);
@@ -157,7 +154,7 @@ impl Fft2 {
     /// `x` (`rows × n`), without the `1/n²` factor.
     ///
     /// # Errors
-    /// Wrong buffer lengths (an internal error).
+    /// [`Error::Inconsistent`] for buffers of the wrong lengths.
     pub fn inverse(&mut self, spec: &mut [Complex64], x: &mut [f64]) -> Result<()> {
         let (n, nc, rows) = (self.n, self.nc(), self.rows);
         if x.len() != rows * n || spec.len() != nc * n {
@@ -175,7 +172,7 @@ impl Fft2 {
             }
             self.c2r
                 .process_with_scratch(sr, xr, &mut self.scratch)
-                .map_err(fft_error)?;
+                .expect(LENGTHS);
         }
         Ok(())
     }
@@ -188,21 +185,16 @@ impl Fft2 {
     /// (unnormalised forward transform) and may change them. If `emit` is
     /// given, the result is transformed back (without the `1/n²` factor)
     /// and `emit(i, row)` receives each of the first `rows` rows in order.
-    ///
-    /// # Errors
-    /// Internal FFT errors only.
     pub fn convolve(
         &mut self,
         fill: &mut dyn FnMut(usize, &mut [f64]),
         multiply: &mut dyn FnMut(usize, &mut [Complex64]),
         emit: Option<RowSink<'_>>,
-    ) -> Result<()> {
+    ) {
         let (n, nc) = (self.n, self.nc());
         for (i, sr) in self.rowspec.chunks_exact_mut(nc).enumerate() {
             fill(i, &mut self.row);
-            self.r2c
-                .process_with_scratch(&mut self.row, sr, &mut self.scratch)
-                .map_err(fft_error)?;
+            forward_row(&*self.r2c, &mut self.row, sr, &mut self.scratch);
         }
         // Columns of the block are `ld = n + PAD` apart: a power-of-two
         // stride would map a gather's writes to one cache set.
@@ -224,7 +216,7 @@ impl Fft2 {
             }
         }
         let Some(emit) = emit else {
-            return Ok(());
+            return;
         };
         let even = n.is_multiple_of(2);
         for (i, sr) in self.rowspec.chunks_exact_mut(nc).enumerate() {
@@ -236,10 +228,9 @@ impl Fft2 {
             }
             self.c2r
                 .process_with_scratch(sr, &mut self.row, &mut self.scratch)
-                .map_err(fft_error)?;
+                .expect(LENGTHS);
             emit(i, &self.row);
         }
-        Ok(())
     }
 }
 
@@ -303,13 +294,6 @@ fn length_error(what: &str, real: usize, spec: usize) -> Error {
     Error::Inconsistent {
         name: format!("fft {what} buffers"),
         requirement: format!("lengths rows·n and (n/2+1)·n, got {real} and {spec}"),
-    }
-}
-
-fn fft_error(e: realfft::FftError) -> Error {
-    Error::Inconsistent {
-        name: "real fft".into(),
-        requirement: e.to_string(),
     }
 }
 

@@ -462,8 +462,7 @@ pub struct PlasticDiscRow {
     pub seconds: f64,
 }
 
-/// The Hertz ball with a yield stress on a list of grids
-/// (`persson bem hertz --yield-stress`, scene `outputs.bem_hertz.yield_stress`).
+/// The Hertz ball with a yield stress on a list of grids.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
 #[non_exhaustive]
 pub struct PlasticDiscReport {
@@ -617,8 +616,8 @@ mod tests {
         assert!((a - 0.1).abs() < 1e-12 && (p0 - case.peak_pressure()).abs() < 1e-12);
     }
 
-    /// Issue 37, 3.24: a fit over many contact nodes whose p² does not fall
-    /// with r² said "at least 3 contact nodes …, got 1024 nodes".
+    /// A fit over many contact nodes whose p² does not fall with r² says
+    /// why, not "at least 3 contact nodes".
     #[test]
     fn a_failed_fit_says_why() {
         let radii = [0.0, 0.1, 0.2, 0.3, 0.4];

@@ -55,6 +55,7 @@
 //! ```
 
 pub mod adhesive;
+mod driver;
 mod elastic;
 pub mod fft;
 pub mod hertz;

@@ -1,5 +1,4 @@
-//! The plain Polonsky–Keer constrained conjugate gradient ([`Method::Plain`],
-//! the solver of persson 0.3, unchanged in every operation).
+//! The plain Polonsky–Keer constrained conjugate gradient ([`Method::Plain`]).
 //!
 //! # Algorithm
 //! Polonsky & Keer (1999), §2: conjugate gradient on the contact set
@@ -28,18 +27,19 @@
 use std::cell::Cell;
 use std::time::Instant;
 
+use super::driver::{drive, Check, Limits, Measured, Step};
 use super::problem::{Options, Problem};
 use super::solution::{Iteration, Solution};
-use super::steps::{finish_elastic, project_step, sparse_limit, Entry, GapStats, LazyGap, LANES};
-use super::workspace::Workspace;
-use crate::error::{Error, Result};
+use super::steps::{finish_elastic, project_step, Entry, GapStats, LazyGap, LANES};
+use super::workspace::{sparse_limit, Workspace};
+use crate::error::Result;
 
 /// Solve `problem` from the pressure [`Workspace::start`] (or
 /// [`Workspace::resume`]) wrote; `k0` iterations were spent before (by a
 /// stalled loop), and count against `opts.max_iterations`.
 ///
 /// # Errors
-/// [`Error::NotConverged`] after `opts.max_iterations` iterations in all.
+/// [`Error::NotConverged`](crate::Error::NotConverged) after `opts.max_iterations` iterations in all.
 pub(crate) fn solve(
     problem: &Problem,
     ws: &mut Workspace,
@@ -48,40 +48,75 @@ pub(crate) fn solve(
     observer: &mut dyn FnMut(Iteration),
 ) -> Result<Solution> {
     let start = Instant::now();
-    let mut state = State::new(problem, ws, k0)?;
-    let (residual, stats) = loop {
-        let st = state.gap.measure(problem, ws);
-        let eps = st.residual(state.load, problem.sigma_h());
-        observer(Iteration {
-            iteration: state.k,
-            residual: eps,
-            contact_fraction: st.count as f64 / problem.nodes() as f64,
-        });
-        if eps <= opts.tolerance && !st.overlap(state.load, opts.tolerance, problem.sigma_h()) {
-            if state.gap.fresh {
-                break (eps, st);
-            }
-            state.gap.refresh(problem, ws)?;
-            continue;
-        }
-        if state.k >= opts.max_iterations {
-            return Err(Error::NotConverged {
-                what: "Polonsky–Keer contact solver".into(),
-                iterations: state.k,
-                residual: eps,
-                tolerance: opts.tolerance,
-            });
-        }
-        state.iterate(problem, ws, &st)?;
-    };
-    state.gap.hand_over(ws);
-    Ok(finish_elastic(
+    let state = State::new(problem, ws, k0)?;
+    let mut run = Plain {
         problem,
         ws,
-        &stats,
-        (state.k, residual),
+        tolerance: opts.tolerance,
+        state,
+        stats: GapStats::default(),
         start,
-    ))
+    };
+    drive(
+        &mut run,
+        Limits::new(opts.max_iterations, opts.tolerance),
+        Some(observer),
+    )
+}
+
+/// The plain loop as the driver runs it.
+struct Plain<'a> {
+    problem: &'a Problem<'a>,
+    ws: &'a mut Workspace,
+    tolerance: f64,
+    state: State,
+    /// The sums of the last measure.
+    stats: GapStats,
+    start: Instant,
+}
+
+impl Step for Plain<'_> {
+    type Output = Solution;
+    const WHAT: &'static str = "Polonsky–Keer contact solver";
+
+    fn measure(&mut self) -> Result<Measured> {
+        self.stats = self.state.gap.measure(self.problem, self.ws);
+        Ok(Measured {
+            iteration: self.state.k,
+            residual: self.stats.residual(self.state.load, self.problem.sigma_h()),
+        })
+    }
+
+    fn contact_fraction(&self) -> f64 {
+        self.stats.count as f64 / self.problem.nodes() as f64
+    }
+
+    fn check(&mut self, m: Measured) -> Result<Check<Solution>> {
+        let (problem, st) = (self.problem, &self.stats);
+        if m.residual > self.tolerance
+            || st.overlap(self.state.load, self.tolerance, problem.sigma_h())
+        {
+            return Ok(Check::Go);
+        }
+        if !self.state.gap.fresh {
+            self.state.gap.refresh(problem, self.ws)?;
+            return Ok(Check::Again);
+        }
+        self.state.gap.hand_over(self.ws);
+        Ok(Check::Stop(finish_elastic(
+            problem,
+            self.ws,
+            st,
+            (self.state.k, m.residual),
+            self.start,
+        )))
+    }
+
+    fn step(&mut self, _: &mut dyn FnMut(Iteration)) -> Result<bool> {
+        let st = self.stats;
+        self.state.iterate(self.problem, self.ws, &st)?;
+        Ok(true)
+    }
 }
 
 /// The iteration's state between passes.

@@ -12,10 +12,13 @@
 //! `h − o` is always formed first: it is the size of the roughness, so a
 //! large mean height costs no digits in the gap.
 //!
-//! Every loop ([`super::polonsky_keer`], [`super::preconditioned`],
-//! [`super::saturated`], and loops added later such as a gap-based adhesive
-//! one) takes a `&Problem` and a `&mut` [`super::Workspace`]: the problem is
-//! never written, the workspace holds every buffer.
+//! The pressure-based loops ([`super::polonsky_keer`], [`super::preconditioned`],
+//! [`super::saturated`]) take a `&Problem` and a `&mut` [`super::Workspace`]:
+//! the problem is never written, the workspace holds every buffer. The
+//! gap-based adhesive loops ([`super::adhesive`]) do not yet: their unknown is
+//! the gap on a grid padded to 2N on the free boundary, prescribed by a mean
+//! gap or an approach, and they keep their buffers in the
+//! [`super::adhesive::AdhesiveSolver`].
 
 use super::kernel::{Boundary, Operator};
 use crate::error::{check, Error, Result};
@@ -64,7 +67,7 @@ impl Default for Options {
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum Method {
-    /// Polonsky & Keer (1999) as in persson 0.3: iterations grow with the
+    /// Polonsky & Keer (1999): iterations grow with the
     /// grid (~√N: 217 at 512², 323 at 1024² on the rough case at σ0 = 0.005 E*).
     Plain,
     /// Preconditioned by the half-space stiffness 𝒦 = E*|q|/2 restricted to
@@ -235,7 +238,7 @@ impl<'a> Problem<'a> {
             approx(scale),
             approx(self.slope_rms)
         );
-        Err(match crate::theory::ratio_culprit(self.e_star, pm) {
+        Err(match crate::error::ratio_culprit(self.e_star, pm) {
             "contact_modulus" => Error::invalid(
                 "contact_modulus",
                 self.e_star,

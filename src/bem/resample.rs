@@ -110,7 +110,7 @@ fn subsampled(fine: &GridSurface, grids: &[usize]) -> Result<Vec<GridSurface>> {
 /// ```
 ///
 /// # Errors
-/// `q_s` not finite and positive; internal FFT errors.
+/// `q_s` not finite and positive.
 ///
 /// # Examples
 /// ```

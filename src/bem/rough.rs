@@ -260,7 +260,7 @@ impl SpectrumSummary {
 }
 
 /// Where the rigid surface of a rough contact came from: a file, or a
-/// spectrum and a seed. Called `SurfaceSource` in persson 0.3.
+/// spectrum and a seed.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(untagged)]
 #[non_exhaustive]
@@ -339,7 +339,7 @@ pub struct RoughReport {
     pub points: Vec<RoughPoint>,
     /// The pressure field of one solve in partial contact (A/A0 nearest
     /// [`MAPPED_CONTACT_FRACTION`]), kept only by [`rough_contact_mapped`]
-    /// (for `bem rough --plot`); not serialised.
+    /// (for a pressure map); not serialised.
     #[serde(skip)]
     pub pressure_map: Option<PressureMap>,
 }

@@ -23,7 +23,7 @@
 //!   whose iteration count grows slowly with the grid; it falls back to the
 //!   plain loop when it stalls, and says so ([`Solution::fallback`]).
 //! - [`Method::Plain`]: Polonsky & Keer's (1999) constrained conjugate
-//!   gradient ([`super::polonsky_keer`]), the solver of persson 0.3.
+//!   gradient ([`super::polonsky_keer`]).
 //!
 //! Both read the same set-up ([`Problem`]) and work in the same buffers
 //! ([`Workspace`]); so do the saturated loop ([`super::saturated`]) and any

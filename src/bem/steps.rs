@@ -47,16 +47,6 @@ pub(crate) fn contact_norm(g: &[f64], p: &[f64], g_bar: f64) -> f64 {
     acc.iter().sum()
 }
 
-/// Most nodes whose step is corrected by direct summation rather than by
-/// recomputing `𝒢p` with two FFTs: log₂(N²) (18 at 512², 20 at 1024²). One
-/// node costs N² multiply-adds against the FFT's ~N² log₂(N²). Best of 2–3
-/// rough solves (`persson bem rough`, H = 0.8, tol 1e-10) with ½×, 1× and
-/// 1.5× log₂(N²): 0.876 / 0.850 / 0.868 s at 512², 7.82 / 7.26 / 7.33 s at
-/// 1024².
-pub(crate) fn sparse_limit(n2: usize) -> usize {
-    n2.max(2).ilog2() as usize
-}
-
 /// Sums over the contact set gathered in one pass.
 #[derive(Debug, Default, Clone, Copy)]
 pub(crate) struct GapStats {

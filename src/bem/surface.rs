@@ -8,7 +8,7 @@
 //! # Formula (synthesis)
 //! A periodic `L × L` surface is the Fourier series
 //! `h(x) = Σ_q h_q e^{i q·x}`, `q = (2π/L)(k_x, k_y)`, `h_{−q} = h_q*`.
-//! With Persson's normalisation (`../shared/theory.md` §1)
+//! With Persson's normalisation (the crate docs, Conventions; docs/conventions.md)
 //! ```text
 //! C(q) = (2π)⁻² ∫ d²x ⟨h(x)h(0)⟩ e^{−iq·x}   ⇒   ⟨|h_q|²⟩ = (2π/L)² C(|q|)
 //! ```
@@ -35,7 +35,7 @@
 //!
 //! # References
 //! Persson, Bucher & Chiaia, PRB 65, 184106 (2002) (normalisation);
-//! `../shared/theory.md` §1.
+//! the crate docs, Conventions (docs/conventions.md).
 
 use std::path::Path;
 
@@ -50,8 +50,8 @@ use crate::spectrum::anisotropic::SlopeTensor;
 use crate::spectrum::{Radial, Spectrum, Spectrum2d};
 
 /// A periodic height map on the BEM's `N × N` grid of side `size`: the rigid
-/// rough surface of a solve (called `Surface` in persson 0.3; a measured map
-/// of any shape is a `persson::topography::Topography`).
+/// rough surface of a solve (a measured map of any shape is a
+/// `persson::topography::Topography`).
 #[derive(Debug, Clone, PartialEq)]
 pub struct GridSurface {
     /// Grid side N.
@@ -110,7 +110,8 @@ impl GridSurface {
     /// rms slope of the trigonometric interpolant, `sqrt(Σ_q |q|² |h_q|²)`.
     ///
     /// # Errors
-    /// Internal FFT errors only.
+    /// None in practice: the FFT's sizes are computed here (a failure
+    /// would be a bug and panics: `bem::fft`). The `Result` stays for the API.
     pub fn rms_slope(&self) -> Result<f64> {
         let n = self.n;
         let mut fft = Fft2::new(n, n)?;
@@ -141,7 +142,8 @@ impl GridSurface {
     /// [`SlopeTensor::principal`] is the surface's Peklenik number and lay.
     ///
     /// # Errors
-    /// Internal FFT errors only.
+    /// None in practice: the FFT's sizes are computed here (a failure
+    /// would be a bug and panics: `bem::fft`). The `Result` stays for the API.
     pub fn slope_tensor(&self) -> Result<SlopeTensor> {
         let n = self.n;
         let mut fft = Fft2::new(n, n)?;

@@ -28,7 +28,6 @@
 use super::kernel::Operator;
 use super::problem::{Control, Problem};
 use super::solution::Solution;
-use super::steps::sparse_limit;
 use crate::error::Result;
 
 /// The operator and the fields of a contact solve.
@@ -128,7 +127,8 @@ impl Workspace {
     /// [`Workspace::finish`].
     ///
     /// # Errors
-    /// Internal FFT errors only ([`Start::Predicted`]).
+    /// None in practice ([`Start::Predicted`]'s FFT has sizes computed here;
+    /// a failure would be a bug and panics: `bem::fft`).
     pub fn start(&mut self, problem: &Problem, start: Start) -> Result<()> {
         let start = if self.warm { start } else { Start::Cold };
         self.warm = false;
@@ -227,7 +227,7 @@ pub enum Start {
     /// `p̄` everywhere (load control) or the overlap times the stiffness
     /// guess (penetration control).
     Cold,
-    /// The previous pressure times `p̄_new / p̄_old` (persson 0.3).
+    /// The previous pressure times `p̄_new / p̄_old`.
     Rescaled,
     /// The previous pressure plus a uniform approach increment on its
     /// contact set, predicted by the stiffness (see `predict`); under
@@ -251,7 +251,7 @@ pub const PREDICT_RATIO: f64 = 1.3;
 /// ```text
 /// w = [C] 𝒦 1_C,   c = (N² p̄_new − Σ p_old) / Σ w,   p = max(p_old + c w, 0) · N² p̄_new / Σ(…)
 /// ```
-/// Rescaling `p_old` instead (persson 0.3) keeps the contact set and
+/// Rescaling `p_old` instead ([`Start::Rescaled`]) keeps the contact set and
 /// overloads it: for the preconditioned solver it saves less, and beyond a
 /// load ratio of 1.2 it costs more than a cold start (see [`PREDICT_RATIO`]).
 fn predict(f: Fields<'_>, pm: f64) -> Result<()> {
@@ -355,4 +355,14 @@ impl Finish {
             ..Finish::default()
         }
     }
+}
+
+/// Most nodes whose step is corrected by direct summation rather than by
+/// recomputing `𝒢p` with two FFTs: log₂(N²) (18 at 512², 20 at 1024²). One
+/// node costs N² multiply-adds against the FFT's ~N² log₂(N²). Best of 2–3
+/// rough solves (`persson bem rough`, H = 0.8, tol 1e-10) with ½×, 1× and
+/// 1.5× log₂(N²): 0.876 / 0.850 / 0.868 s at 512², 7.82 / 7.26 / 7.33 s at
+/// 1024².
+pub(crate) fn sparse_limit(n2: usize) -> usize {
+    n2.max(2).ilog2() as usize
 }

@@ -11,16 +11,10 @@ use std::path::Path;
 use crate::error::{Error, Result};
 
 /// One data row and its 1-based line in the file.
-#[derive(Debug, Clone)]
-pub(crate) struct Row {
-    /// The numbers, one per column.
-    pub values: Vec<f64>,
-    /// 1-based line.
-    pub line: usize,
-}
+pub(crate) use crate::io::text::Row;
 
-/// Parse rows with between `names.len() - optional` and `names.len()` columns;
-/// `names` name the columns in messages.
+/// Parse rows with between `names.len() - optional` and `names.len()` columns
+/// ([`crate::io::text::columns`]); `names` name the columns in messages.
 pub(crate) fn parse_rows(
     path: &Path,
     bytes: &[u8],
@@ -29,69 +23,7 @@ pub(crate) fn parse_rows(
 ) -> Result<Vec<Row>> {
     let text = std::str::from_utf8(bytes)
         .map_err(|e| Error::parse(path, 0, 0, format!("not UTF-8 text ({e})")))?;
-    let (min, max) = (names.len() - optional, names.len());
-    let mut rows = Vec::new();
-    let mut first = true;
-    for (n, raw) in text.lines().enumerate() {
-        let line = raw.trim();
-        if line.is_empty() || line.starts_with('#') {
-            continue;
-        }
-        let cells: Vec<&str> = line
-            .split(|ch: char| ch == ',' || ch == ';' || ch.is_whitespace())
-            .filter(|s| !s.is_empty())
-            .collect();
-        let header = first
-            && cells.iter().any(|c| c.parse::<f64>().is_err())
-            && line.starts_with(|ch: char| ch.is_alphabetic());
-        first = false;
-        if header {
-            continue;
-        }
-        if cells.len() < min || cells.len() > max {
-            let want = if min == max {
-                format!("{max}")
-            } else {
-                format!("{min} to {max}")
-            };
-            return Err(Error::parse(
-                path,
-                n + 1,
-                0,
-                format!(
-                    "expected {want} columns ({}), found {}",
-                    names.join(", "),
-                    cells.len()
-                ),
-            ));
-        }
-        let mut values = Vec::with_capacity(cells.len());
-        for (j, cell) in cells.iter().enumerate() {
-            let v = cell.parse::<f64>().map_err(|_| {
-                let col = raw.find(cell).map_or(0, |c| c + 1);
-                Error::parse(
-                    path,
-                    n + 1,
-                    col,
-                    format!("{}: '{cell}' is not a number", names[j]),
-                )
-            })?;
-            values.push(v);
-        }
-        rows.push(Row {
-            values,
-            line: n + 1,
-        });
-    }
-    if rows.is_empty() {
-        return Err(Error::parse(
-            path,
-            0,
-            0,
-            format!("no data rows (expected columns {})", names.join(", ")),
-        ));
-    }
-    Ok(rows)
+    crate::io::text::columns(path, text, names, optional)
 }
 
 /// An [`Error::Parse`] at `row`'s line about the value of column `col`.

@@ -10,10 +10,11 @@
 
 use super::chebyshev::{rule, Map, NODES};
 use super::heat::{heat_kernel, heat_kernel_per_capacity, Thermal, MIN_HEAT_CAPACITY};
-use super::shift::ShiftFactors;
-use super::theory::{
-    DecadeContribution, Friction, FrictionResult, MagnificationPoint, TableExcursion, DECADE,
+use super::problem::Friction;
+use super::result::{
+    DecadeContribution, FrictionResult, MagnificationPoint, TableExcursion, DECADE,
 };
+use super::shift::ShiftFactors;
 use crate::error::{Error, Result};
 use crate::special::erf;
 

@@ -32,7 +32,7 @@ use std::f64::consts::TAU;
 use std::path::Path;
 
 use super::columns::{cell_error, parse_rows, Row};
-use super::viscoelastic::{modulus_requirement, AngularIntegrals, Modulus, MAX_MODULUS};
+use super::modulus::{modulus_requirement, AngularIntegrals, Modulus, MAX_MODULUS};
 use crate::error::{Error, Result};
 
 /// The boundary between the two series of the segment integral.

@@ -137,6 +137,9 @@ mod flash;
 mod heat;
 mod march;
 pub mod master_curve;
+mod modulus;
+mod problem;
+mod result;
 mod rubber;
 mod shift;
 mod theory;
@@ -144,13 +147,17 @@ pub mod viscoelastic;
 
 pub use heat::{heat_kernel, heat_kernel_ratio, Thermal};
 pub use master_curve::{FrequencyUnit, MasterCurve};
+pub use modulus::{AngularIntegrals, Modulus, MAX_MODULUS};
+pub use problem::Friction;
+pub use result::{
+    DecadeContribution, FrictionPoint, FrictionResult, MagnificationPoint, TableExcursion,
+};
 pub use rubber::{Rubber, DEFAULT_POISSON};
 pub use shift::{
     HorizontalShift, ShiftFactors, ShiftTable, TemperatureShift, VerticalShift, MAX_WLF_C1,
 };
 pub use theory::{
-    log_velocities, CutOff, DecadeContribution, Friction, FrictionOptions, FrictionPoint,
-    FrictionResult, MagnificationPoint, TableExcursion, DEFAULT_GAMMA, DEFAULT_POINTS_PER_DECADE,
+    log_velocities, CutOff, FrictionOptions, DEFAULT_GAMMA, DEFAULT_POINTS_PER_DECADE,
     DEFAULT_TOLERANCE,
 };
-pub use viscoelastic::{AngularIntegrals, Modulus, Prony, PronyTerm, Viscoelastic, MAX_MODULUS};
+pub use viscoelastic::{Prony, PronyTerm, Viscoelastic};

@@ -388,7 +388,7 @@ impl TemperatureShift {
             HorizontalShift::None => (0.0, None),
             HorizontalShift::Wlf { c1, c2 } => {
                 if dt + c2 <= 0.0 || dt.is_nan() {
-                    // at or below the singularity: the message of persson 0.4
+                    // at or below the singularity
                     return Err(Error::invalid(
                         "temperature",
                         temperature,

@@ -1,5 +1,5 @@
 //! E1 by piecewise Chebyshev interpolants: the inner function of the
-//! per-load P(u) table sums (issue 23 speed goal).
+//! per-load P(u) table sums.
 //!
 //! # Formula
 //! ```text

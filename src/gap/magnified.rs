@@ -105,7 +105,7 @@ pub(crate) const CRITICAL_RESOLUTION: f64 = 1e-13;
 /// # Errors
 /// [`Error::InvalidParameter`] naming `nominal_pressure` with that bound, or
 /// `contact_modulus` (at most σ0/(x_edge √(π m3_δ))) when E* is beyond
-/// 1e±30 ([`crate::theory::ratio_culprit`]).
+/// 1e±30 ([`crate::error::ratio_culprit`]).
 pub(crate) fn check_resolved(
     spectrum: &dyn Spectrum,
     contact_modulus: f64,
@@ -126,7 +126,7 @@ pub(crate) fn check_resolved(
         crate::error::num(resolution)
     );
     Err(
-        match crate::theory::ratio_culprit(contact_modulus, pressure) {
+        match crate::error::ratio_culprit(contact_modulus, pressure) {
             "contact_modulus" => Error::invalid(
                 "contact_modulus",
                 contact_modulus,
@@ -221,7 +221,7 @@ impl<'a> Magnified<'a> {
     /// E*, σ0 not finite and positive; tolerance outside [1e-15, 0.1]; E*/σ0
     /// so large that G = (E*/σ0)²⟨|∇h|²⟩/8 overflows f64 (naming
     /// `nominal_pressure` or `contact_modulus`, E* when it is beyond 1e±30,
-    /// `theory::ratio_culprit`).
+    /// `error::ratio_culprit`).
     pub fn new(
         spectrum: &'a dyn Spectrum,
         contact_modulus: f64,
@@ -444,6 +444,34 @@ fn gk15<const M: usize>(f: &dyn Fn(f64) -> [f64; M], a: f64, b: f64) -> ([f64; M
     (k, e)
 }
 
+/// The panel ends of [`v_integral`] in v = √ln(q/q_l): 0, v(q_s) and the
+/// spectrum's breaks inside (q_l, q_s), sorted, without repeats.
+fn knots(q_l: f64, q_s: f64, breaks: &[f64]) -> Vec<f64> {
+    let mut knots = vec![0.0, (q_s / q_l).ln().sqrt()];
+    for &b in breaks {
+        if b.is_finite() && b > q_l && b < q_s {
+            knots.push((b / q_l).ln().sqrt());
+        }
+    }
+    knots.sort_by(f64::total_cmp);
+    knots.dedup();
+    knots
+}
+
+/// Per component: the sum of the panels' values, of their error estimates
+/// and of the values' magnitudes, in the panels' order.
+fn totals<const M: usize>(panels: &[Panel<M>]) -> ([f64; M], [f64; M], [f64; M]) {
+    let (mut total, mut error, mut size) = ([0.0; M], [0.0; M], [0.0; M]);
+    for p in panels {
+        for i in 0..M {
+            total[i] += p.3[i];
+            error[i] += p.4[i];
+            size[i] += p.3[i].abs();
+        }
+    }
+    (total, error, size)
+}
+
 /// ∫_{q_min}^{q_max} kernel(q, C(q), w(q)) dq for a spectrum and M integrands
 /// sharing their nodes, in v = √(ln(q/q_min)) (v = t² on the first segment),
 /// w = (π m3(q_min, q))^{−1/2}: the substitution of [`crate::separation`].
@@ -457,15 +485,7 @@ fn v_integral<const M: usize>(
     kernel: impl Fn(f64, f64, f64) -> [f64; M],
 ) -> Result<[Estimate; M]> {
     let q_l = spectrum.q_min();
-    let q_s = spectrum.q_max();
-    let mut knots = vec![0.0, (q_s / q_l).ln().sqrt()];
-    for &b in breaks {
-        if b.is_finite() && b > q_l && b < q_s {
-            knots.push((b / q_l).ln().sqrt());
-        }
-    }
-    knots.sort_by(f64::total_cmp);
-    knots.dedup();
+    let knots = knots(q_l, spectrum.q_max(), breaks);
     let failure: RefCell<Option<Error>> = RefCell::new(None);
     let integrand = |v: f64| -> [f64; M] {
         let delta = q_l * (v * v).exp_m1();
@@ -523,14 +543,7 @@ fn v_integral<const M: usize>(
         if let Some(e) = failure.borrow_mut().take() {
             return Err(e);
         }
-        let (mut total, mut error, mut size) = ([0.0; M], [0.0; M], [0.0; M]);
-        for p in &panels {
-            for i in 0..M {
-                total[i] += p.3[i];
-                error[i] += p.4[i];
-                size[i] += p.3[i].abs();
-            }
-        }
+        let (total, error, size) = totals(&panels);
         // A component whose total cancels below its panels' sizes cannot be
         // had to better than rounding of those: the target is the larger of
         // `tolerance` × total and ROUNDOFF × Σ|panel|.
@@ -551,17 +564,10 @@ fn v_integral<const M: usize>(
             .filter(|w| w.1 > 0.0)
             .max_by(|a, b| a.1.total_cmp(&b.1));
         let Some((j, _)) = worst.filter(|_| !done) else {
-            let mut out = [Estimate {
-                value: 0.0,
-                error: 0.0,
-            }; M];
-            for i in 0..M {
-                out[i] = Estimate {
-                    value: total[i],
-                    error: error[i],
-                };
-            }
-            return Ok(out);
+            return Ok(std::array::from_fn(|i| Estimate {
+                value: total[i],
+                error: error[i],
+            }));
         };
         if evals >= MAX_EVALS {
             return Err(Error::NotConverged {

@@ -306,6 +306,91 @@ fn not_a_number(path: &Path, ln: usize, data: &str) -> Error {
     Error::parse(path, ln, col + 1, format!("{tok:?} is not a number"))
 }
 
+/// A table of named columns, one row per line (the tabulated spectra and
+/// the friction inputs): rows of between `names.len() − optional` and
+/// `names.len()` numbers, split as [`cells`]; blank lines and lines starting
+/// with `#` are skipped, and the first other line is a header when it
+/// starts with a letter and a cell is not a number (`nan` is one). `names`
+/// name the columns in messages.
+///
+/// # Errors
+/// [`Error::Parse`] naming the file and the 1-based line (and the column of
+/// a cell that is not a number, with its field): a row with too few or too
+/// many cells, a cell that is not a number, a table without rows.
+pub(crate) fn columns(
+    path: &Path,
+    text: &str,
+    names: &[&str],
+    optional: usize,
+) -> Result<Vec<Row>> {
+    let (min, max) = (names.len() - optional, names.len());
+    let mut rows = Vec::new();
+    let mut first = true;
+    for (n, raw) in text.lines().enumerate() {
+        let line = raw.trim();
+        if line.is_empty() || line.starts_with('#') {
+            continue;
+        }
+        let cells: Vec<&str> = cells(line).collect();
+        let header = first
+            && cells.iter().any(|c| c.parse::<f64>().is_err())
+            && line.starts_with(|ch: char| ch.is_alphabetic());
+        first = false;
+        if header {
+            continue;
+        }
+        if cells.len() < min || cells.len() > max {
+            let want = if min == max {
+                format!("{max}")
+            } else {
+                format!("{min} to {max}")
+            };
+            let found = cells.len();
+            return Err(Error::parse(
+                path,
+                n + 1,
+                0,
+                format!(
+                    "expected {want} columns ({}), found {found}",
+                    names.join(", ")
+                ),
+            ));
+        }
+        let mut values = Vec::with_capacity(cells.len());
+        for (j, cell) in cells.iter().enumerate() {
+            let v = cell.parse::<f64>().map_err(|_| {
+                let col = raw.find(cell).map_or(0, |c| c + 1);
+                Error::parse(
+                    path,
+                    n + 1,
+                    col,
+                    format!("{}: '{cell}' is not a number", names[j]),
+                )
+            })?;
+            values.push(v);
+        }
+        let resolution = std::array::from_fn(|k| match cells.get(k) {
+            Some(t) if t.contains(['.', 'e', 'E']) => resolution(t),
+            Some(_) => 0.0,
+            None => f64::NAN,
+        });
+        rows.push(Row {
+            line: n + 1,
+            values,
+            resolution,
+        });
+    }
+    if rows.is_empty() {
+        return Err(Error::parse(
+            path,
+            0,
+            0,
+            format!("no data rows (expected columns {})", names.join(", ")),
+        ));
+    }
+    Ok(rows)
+}
+
 /// A text matrix: one row per line of numbers, every row the same length;
 /// header lines are skipped (module docs).
 ///

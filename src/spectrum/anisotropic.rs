@@ -257,7 +257,7 @@ impl Stretched {
         // a stretch of STRETCH_SPLIT the quadrature no longer finds so narrow
         // a peak in [0, π/2] (measured: the slope of γ = 1e5 came out 2e-5
         // instead of 0.0707), so its scales are split points too. Below
-        // STRETCH_SPLIT the pieces are those of persson 0.4, bit for bit.
+        // STRETCH_SPLIT no scale is a split point.
         let outer = self.gamma.max(1.0 / self.gamma);
         if outer > STRETCH_SPLIT {
             let mut m = 1.0;

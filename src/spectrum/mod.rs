@@ -7,7 +7,7 @@
 //! ⟨|∇h|²⟩   = 2π ∫ q³ C(q) dq
 //! ⟨|∇²h|²⟩  = 2π ∫ q⁵ C(q) dq
 //! ```
-//! (`../shared/theory.md` §1; Persson, Bucher & Chiaia, PRB 65, 184106 (2002)).
+//! (the crate docs, Conventions; Persson, Bucher & Chiaia, PRB 65, 184106 (2002)).
 //! Spectra in other conventions enter only through [`convention`].
 //!
 //! Every spectrum implements [`Spectrum`]; the moments

@@ -36,7 +36,7 @@ pub enum Amplitude {
 ///
 /// # References
 /// Persson, Bucher & Chiaia, Phys. Rev. B 65, 184106 (2002), Eq. 5, doi:10.1103/PhysRevB.65.184106;
-/// `../shared/theory.md` §1.
+/// the crate docs, Conventions (docs/conventions.md).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct SelfAffine {
     q_l: f64,

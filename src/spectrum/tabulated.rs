@@ -246,64 +246,17 @@ fn at_line(e: Error, path: &Path, lines: &[usize]) -> Error {
 pub type Rows = (Vec<(f64, f64)>, Vec<usize>);
 
 /// Parse rows of two numbers named `names` (used in messages); returns the
-/// points and their 1-based lines.
+/// points and their 1-based lines. The table rules are those of every
+/// column file of the crate (`io::text`): cells split by whitespace, commas
+/// or semicolons, `#` comment lines, an optional header line.
+///
+/// # Errors
+/// [`Error::Parse`] naming the file and line: a row without exactly two
+/// cells, a cell that is not a number (with its column and field), no rows.
 pub fn parse_columns(path: &Path, text: &str, names: [&str; 2]) -> Result<Rows> {
-    let mut points = Vec::new();
-    let mut lines = Vec::new();
-    let mut first = true;
-    for (n, raw) in text.lines().enumerate() {
-        let line = raw.trim();
-        if line.is_empty() || line.starts_with('#') {
-            continue;
-        }
-        let cells: Vec<&str> = line
-            .split(|ch: char| ch == ',' || ch == ';' || ch.is_whitespace())
-            .filter(|s| !s.is_empty())
-            .collect();
-        if first
-            && cells.iter().any(|c| c.parse::<f64>().is_err())
-            && line.starts_with(|ch: char| ch.is_alphabetic())
-        {
-            first = false;
-            continue; // a header: text that does not parse as numbers ("nan" does)
-        }
-        first = false;
-        if cells.len() != 2 {
-            return Err(Error::parse(
-                path,
-                n + 1,
-                0,
-                format!(
-                    "expected 2 columns ({}, {}), found {}",
-                    names[0],
-                    names[1],
-                    cells.len()
-                ),
-            ));
-        }
-        let mut v = [0.0; 2];
-        for (j, cell) in cells.iter().enumerate() {
-            v[j] = cell.parse::<f64>().map_err(|_| {
-                let col = raw.find(cell).map_or(0, |c| c + 1);
-                let field = names[j];
-                Error::parse(
-                    path,
-                    n + 1,
-                    col,
-                    format!("{field}: '{cell}' is not a number"),
-                )
-            })?;
-        }
-        points.push((v[0], v[1]));
-        lines.push(n + 1);
-    }
-    if points.is_empty() {
-        return Err(Error::parse(
-            path,
-            0,
-            0,
-            format!("no data rows (expected columns {}, {})", names[0], names[1]),
-        ));
-    }
-    Ok((points, lines))
+    let rows = crate::io::text::columns(path, text, &names, 0)?;
+    Ok(rows
+        .iter()
+        .map(|r| ((r.values[0], r.values[1]), r.line))
+        .unzip())
 }

@@ -9,7 +9,7 @@
 //! Q(x) = ∫₋₁¹ P0ᵒᵈᵈ(u) φ(x − u) du = ∫₀¹ P0(u) [φ(x − u) − φ(x + u)] du
 //! ```
 //! (P0ᵒᵈᵈ the odd extension of P0). The elastic density is P(s) = Q(s) for
-//! s ≥ 0 (Persson, Bucher & Chiaia (2002), Eq. 7 with σY → ∞; `../shared/theory.md` §2).
+//! s ≥ 0 (Persson, Bucher & Chiaia (2002), Eq. 7 with σY → ∞).
 
 use super::gauss;
 use super::method::ImageQuadrature;
@@ -532,7 +532,7 @@ fn integrate_pieces(
 ///           (Wallis W₂ₘ = (π/2)(2m−1)!!/(2m)!!) for c ≤ 1, else 1 − adaptive quadrature
 ///           of sin t erfc(c sin t)
 /// ```
-/// (`../shared/theory.md` §3.)
+/// (docs/stress.md.)
 ///
 /// # Errors
 /// Quadrature failure (cylinder at c > 1, tabulated starts).

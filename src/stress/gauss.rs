@@ -32,51 +32,10 @@ pub(crate) fn rule(i: usize) -> &'static Rule {
     RULES[i].get_or_init(|| legendre(SIZES[i]))
 }
 
-/// Nodes and weights by Newton's method on the three-term recurrence
-/// (Tricomi's initial guesses); converged to the last bit for n ≤ 1000.
+/// The n-point rule ([`crate::quad::gauss_legendre`]).
 fn legendre(n: usize) -> Rule {
-    let mut x = vec![0.0; n];
-    let mut w = vec![0.0; n];
-    let nf = n as f64;
-    for i in 0..n.div_ceil(2) {
-        let mut z = (std::f64::consts::PI * (i as f64 + 0.75) / (nf + 0.5)).cos();
-        let mut dp = 1.0;
-        for _ in 0..100 {
-            let (p, d) = legendre_p(n, z);
-            dp = d;
-            let dz = p / d;
-            z -= dz;
-            if dz.abs() <= 1e-17 {
-                break;
-            }
-        }
-        let (_, d) = legendre_p(n, z);
-        if d.is_finite() {
-            dp = d;
-        }
-        let wi = 2.0 / ((1.0 - z * z) * dp * dp);
-        x[i] = -z;
-        x[n - 1 - i] = z;
-        w[i] = wi;
-        w[n - 1 - i] = wi;
-    }
-    if n % 2 == 1 {
-        x[n / 2] = 0.0;
-    }
+    let (x, w) = crate::quad::gauss_legendre(n);
     Rule { x, w }
-}
-
-/// P_n(z) and P_n'(z).
-fn legendre_p(n: usize, z: f64) -> (f64, f64) {
-    let (mut p0, mut p1) = (1.0, z);
-    for k in 2..=n {
-        let kf = k as f64;
-        let p2 = ((2.0 * kf - 1.0) * z * p1 - (kf - 1.0) * p0) / kf;
-        p0 = p1;
-        p1 = p2;
-    }
-    let d = n as f64 * (z * p1 - p0) / (z * z - 1.0);
-    (p1, d)
 }
 
 /// ln of the Gauss error bound `4 W M ρ^{−(2n−1)}/(ρ − 1)` for one ellipse

@@ -27,7 +27,7 @@
 //! Hertz:  P = s[erf((1−s)/w) + erf((1+s)/w)] − (w/√π) e^{−(1−s)²/w²}(1 − e^{−4s/w²})
 //! series: P = (2/y) Σ Bₙ e^{−(nπ/y)²τ} sin(nπs/y),  Bₙ = sin(nπ/y), 2j₁(nπ/y), (π/2)J₁(nπ/y)
 //! images: P = Σₖ Q(s − 2ky)
-//! A∞    = ∫₀¹ P0(u) erf(u/w) du      (flat erf(1/w); Hertz, cylinder: ../shared/theory.md §3)
+//! A∞    = ∫₀¹ P0(u) erf(u/w) du      (flat erf(1/w); Hertz, cylinder: HertzContact)
 //! A_el  = Σ_{n odd} (4/(nπ)) Bₙ Eₙ            = A∞ − F(y) + F(2y) − …
 //! A_pl  = σ0/σY − Σ (−1)ⁿ⁺¹ (2/(nπ)) Bₙ Eₙ   = Σ_{j≥0} F((2j+1)y)
 //! F(x)  = ∫₀¹ P0(u)[erfc((x−u)/w) − erfc((x+u)/w)] du
@@ -49,7 +49,7 @@
 //!
 //! # References
 //! B. N. J. Persson, F. Bucher, B. Chiaia, PRB 65, 184106 (2002), Eqs. 1, 3, 7–12
-//! doi:10.1103/PhysRevB.65.184106; `../shared/theory.md` §2.
+//! doi:10.1103/PhysRevB.65.184106.
 
 mod elastic;
 mod gauss;
@@ -172,7 +172,7 @@ impl<'a> Solver<'a> {
     /// # Examples
     /// ```
     /// use persson::stress::{Solver, Start};
-    /// // Persson, Bucher & Chiaia (2002), Fig. 3: Hertz ball at G = 0.6, A/A0 = 0.615097 (../shared/theory.md §3)
+    /// // Persson, Bucher & Chiaia (2002), Fig. 3: Hertz ball at G = 0.6, A/A0 = 0.615097 (docs/accuracy.md)
     /// let s = Solver::new(&Start::Hertz, 0.6, None, 1e-12).unwrap();
     /// let c = s.curve(&[0.5]).unwrap();
     /// assert!((c.contact_fraction - 0.615_097).abs() < 1e-6);
@@ -465,7 +465,7 @@ pub fn distribution(
 /// ```
 ///
 /// # References
-/// Persson, Bucher & Chiaia, Phys. Rev. B 65, 184106 (2002), Eqs. 7, 10 (`../shared/theory.md` §2).
+/// Persson, Bucher & Chiaia, Phys. Rev. B 65, 184106 (2002), Eqs. 7, 10.
 pub fn series_fractions(
     start: &Start,
     g: f64,

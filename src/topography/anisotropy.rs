@@ -9,7 +9,7 @@
 //! ```text
 //! C(q_x, q_y) = Lx·Ly / ((2π)² N²) · |ĥ(q)|²      [m⁴],   Σ_q C (2π/Lx)(2π/Ly) = ⟨h²⟩
 //! ```
-//! (Persson's normalisation, `../shared/theory.md` §1), stored with q = 0 at
+//! (Persson's normalisation, the crate docs' Conventions), stored with q = 0 at
 //! index `(ny/2, nx/2)` (numpy's `fftshift`).
 //!
 //! # Peklenik number (moment form)
@@ -50,8 +50,8 @@
 //! which is what users compare, so this is the choice here (stated in the
 //! guide).
 
+use crate::fft::fft2;
 use rustfft::num_complex::Complex64;
-use rustfft::FftPlanner;
 
 use super::{condition, Conditioning, Detrend, Layout, Topography};
 use crate::error::{Error, Result};
@@ -108,36 +108,6 @@ pub struct Anisotropy {
     /// The 2-D spectrum (not serialised: N values).
     #[serde(skip)]
     pub spectrum: Spectrum2dMap,
-}
-
-fn fft_error(e: impl std::fmt::Display) -> Error {
-    Error::Inconsistent {
-        name: "FFT".into(),
-        requirement: format!("internal FFT error: {e}"),
-    }
-}
-
-/// In-place 2-D complex FFT of a row-major `ny × nx` array.
-fn fft2(buf: &mut [Complex64], nx: usize, ny: usize, inverse: bool) {
-    let mut planner = FftPlanner::<f64>::new();
-    let (rows, cols) = if inverse {
-        (planner.plan_fft_inverse(nx), planner.plan_fft_inverse(ny))
-    } else {
-        (planner.plan_fft_forward(nx), planner.plan_fft_forward(ny))
-    };
-    for row in buf.chunks_exact_mut(nx) {
-        rows.process(row);
-    }
-    let mut col = vec![Complex64::new(0.0, 0.0); ny];
-    for ix in 0..nx {
-        for (iy, c) in col.iter_mut().enumerate() {
-            *c = buf[iy * nx + ix];
-        }
-        cols.process(&mut col);
-        for (iy, c) in col.iter().enumerate() {
-            buf[iy * nx + ix] = *c;
-        }
-    }
 }
 
 fn check_map(t: &Topography) -> Result<()> {
@@ -284,7 +254,13 @@ fn texture_aspect_ratio(t: &Topography, detrend: Detrend) -> Result<(f64, f64)> 
     fft2(&mut buf, px, py, true);
     let r0 = buf[0].re;
     if r0.is_nan() || r0 <= 0.0 {
-        return Err(fft_error("zero autocorrelation at zero lag"));
+        // a map flat after detrending: no texture to measure
+        return Err(Error::Inconsistent {
+            name: "surface".into(),
+            requirement:
+                "heights that vary after detrending (the autocorrelation at zero lag is zero)"
+                    .into(),
+        });
     }
     let acf: Vec<f64> = buf.iter().map(|z| z.re / r0).collect();
     let step = 0.25 * dx.min(dy);

@@ -37,7 +37,7 @@ pub enum Note {
     /// scans) needs a point with neighbours on both sides: a non-periodic
     /// map of fewer than 3 points along x or y (a line scan of fewer than 3
     /// points) has none, so `rms_curvature` and `mean_curvature_rms` are not
-    /// given (they were NaN before issue 37).
+    /// given.
     CurvatureNotComputed {
         /// `[ny, nx]` of the surface.
         shape: [usize; 2],

@@ -37,9 +37,7 @@
 
 use std::path::Path;
 
-use realfft::RealFftPlanner;
 use rustfft::num_complex::Complex64;
-use rustfft::FftPlanner;
 
 use super::{condition, window, Conditioning, Layout, Topography};
 use crate::error::{check, Error, Result};
@@ -267,13 +265,6 @@ fn band_max(nyquist: f64, q_max: Option<f64>, q_min: f64) -> Result<f64> {
     }
 }
 
-fn fft_error(e: impl std::fmt::Display) -> Error {
-    Error::Inconsistent {
-        name: "fft".into(),
-        requirement: format!("internal FFT error: {e}"),
-    }
-}
-
 /// The isotropic spectrum of a 2D map by radial averaging (module docs).
 ///
 /// # Errors
@@ -320,18 +311,16 @@ pub fn isotropic_spectrum(
 
     // Row transforms into the half spectrum, ny × nc row-major.
     let nc = nx / 2 + 1;
-    let mut rp = RealFftPlanner::<f64>::new();
-    let r2c = rp.plan_fft_forward(nx);
+    let r2c = crate::fft::real_forward(nx);
     let mut spec = vec![Complex64::new(0.0, 0.0); ny * nc];
     let mut rscratch = r2c.make_scratch_vec();
     for (row, out) in h.chunks_exact_mut(nx).zip(spec.chunks_exact_mut(nc)) {
-        r2c.process_with_scratch(row, out, &mut rscratch)
-            .map_err(fft_error)?;
+        crate::fft::forward_row(&*r2c, row, out, &mut rscratch);
     }
     drop(h);
 
     // Column transforms in blocks, binned at once.
-    let fft = FftPlanner::<f64>::new().plan_fft_forward(ny);
+    let fft = crate::fft::complex(ny, false);
     let mut scratch = vec![Complex64::new(0.0, 0.0); fft.get_inplace_scratch_len()];
     let width = (BLOCK_BYTES / (16 * ny)).clamp(1, nc);
     let mut block = vec![Complex64::new(0.0, 0.0); width * ny];
@@ -516,14 +505,12 @@ pub fn profile_spectrum(
         Layout::LineScans,
         conditioning.window,
     );
-    let mut rp = RealFftPlanner::<f64>::new();
-    let r2c = rp.plan_fft_forward(nx);
+    let r2c = crate::fft::real_forward(nx);
     let mut out = r2c.make_output_vec();
     let mut scratch = r2c.make_scratch_vec();
     let mut acc = vec![0.0; out.len()];
     for row in h.chunks_exact_mut(nx) {
-        r2c.process_with_scratch(row, &mut out, &mut scratch)
-            .map_err(fft_error)?;
+        crate::fft::forward_row(&*r2c, row, &mut out, &mut scratch);
         for (a, z) in acc.iter_mut().zip(&out) {
             *a += z.norm_sqr();
         }

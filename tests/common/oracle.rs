@@ -37,7 +37,7 @@ pub fn integrate(
     r.value
 }
 
-/// erf from libm (at most 2e-16 relative error; see ../shared/deps.md).
+/// erf from libm (at most 2e-16 relative error; docs/design-notes.md).
 pub fn erf(x: f64) -> f64 {
     libm::erf(x)
 }

@@ -2,6 +2,7 @@
 //! [`super`]).
 
 /// The convergence measure of a state (see the module docs).
+#[derive(Debug, Clone, Copy)]
 pub(super) struct Measure {
     /// ε.
     pub eps: f64,

@@ -51,7 +51,7 @@
 //! plastic nodes; a solve stops when ε ≤ `tolerance` and no node at `p = 0`
 //! overlaps by more than `tolerance · σ_h` and (load control) |Σp − N² p̄| ≤
 //! `tolerance` · N² p̄; it fails with
-//! [`Error::NotConverged`] (with ε) after `max_iterations` iterations (both
+//! [`Error::NotConverged`](crate::Error::NotConverged) (with ε) after `max_iterations` iterations (both
 //! stages together).
 //!
 //! # References
@@ -78,19 +78,20 @@ use fista::projected_gradient;
 use measure::{measure, Measure};
 use projection::{fill_nearest, project_load};
 
+use super::driver::{drive, Check, Limits, Measured, Stall, Step};
 use super::elastic::{self, Stage};
 use super::kernel::Operator;
-use super::preconditioned::{direction_and_response, precondition, Cap, Conjugacy, Edge, Stall};
+use super::preconditioned::{direction_and_response, precondition, Cap, Conjugacy, Edge};
 use super::problem::{Control, Method, Options, Problem};
 use super::solution::{Fallback, Iteration, Solution};
 use super::workspace::{Displacement, Finish, Workspace};
-use crate::error::{check, Error, Result};
+use crate::error::{check, Result};
 
 /// Check a yield stress: finite and > 0, and above the mean pressure under
 /// load control.
 ///
 /// # Errors
-/// [`Error::InvalidParameter`] naming `yield_stress`.
+/// [`Error::InvalidParameter`](crate::Error::InvalidParameter) naming `yield_stress`.
 pub(crate) fn check_yield_stress(y: f64, control: Control) -> Result<f64> {
     let mean = match control {
         Control::MeanPressure(pm) if pm.is_finite() && pm > 0.0 => vec![pm],
@@ -103,7 +104,7 @@ pub(crate) fn check_yield_stress(y: f64, control: Control) -> Result<f64> {
 /// the elastic solve by `method`, then the saturated stage if needed.
 ///
 /// # Errors
-/// [`Error::NotConverged`] after `opts.max_iterations` iterations in all.
+/// [`Error::NotConverged`](crate::Error::NotConverged) after `opts.max_iterations` iterations in all.
 pub(crate) fn solve(
     problem: &Problem,
     ws: &mut Workspace,
@@ -132,49 +133,20 @@ pub(crate) fn solve(
         };
     let mut run = Run::new(problem, ws, y, k0, method)?;
     run.fallback = fallback;
-    let (residual, g_bar) = loop {
-        run.gap(problem, ws)?;
-        let m = run.measure(problem, ws, observer);
-        // Under load control the load must be carried too: with every
-        // contact node at σY, ε is 0 whatever the load they carry.
-        let load_error = run
-            .target
-            .map_or(0.0, |total| (total - m.sum_p).abs() / total);
-        if m.eps <= opts.tolerance
-            && m.off_min >= -opts.tolerance * problem.sigma_h()
-            && load_error <= opts.tolerance
-        {
-            break (m.eps, m.g_bar);
-        }
-        if run.k >= opts.max_iterations {
-            return Err(Error::NotConverged {
-                what: "saturated Polonsky–Keer contact solver (yield stress)".into(),
-                iterations: run.k,
-                residual: m.eps,
-                tolerance: opts.tolerance,
-            });
-        }
-        // Progress of the preconditioned steps: ε, the load error and the
-        // overlap off the contact (ε alone is 0 while every contact node
-        // sits at σY and the load is short, and they could cycle there).
-        let overlap = (-m.off_min / problem.sigma_h()).max(0.0);
-        let progress = m.eps.max(load_error).max(overlap);
-        if run.preconditioned_step(ws, &m, progress)? {
-            continue;
-        }
-        if run.stalled(m.eps) {
-            // A cycle of active sets (seen on 0.3 % of random 32²–128²
-            // cases) makes no progress: finish with the projected
-            // gradient, which cannot cycle.
-            projected_gradient(problem, ws, y, opts, &mut run.k, observer)?;
-            run.conjugate = false;
-            continue;
-        }
-        if run.refill(ws, &m) {
-            continue;
-        }
-        run.cg_step(problem, ws, &m)?;
+    let mut stage = Saturated {
+        problem,
+        ws,
+        opts,
+        run,
+        last: None,
+        contact: 0,
     };
+    let (residual, g_bar) = drive(
+        &mut stage,
+        Limits::new(opts.max_iterations, opts.tolerance),
+        Some(observer),
+    )?;
+    let Saturated { ws, run, .. } = stage;
     let mut done = run.finish(ws, g_bar);
     done.approach = match problem.target_total() {
         Some(_) => g_bar,
@@ -185,6 +157,94 @@ pub(crate) fn solve(
     let mut sol = ws.finish(problem, done);
     sol.fallback = run.fallback;
     Ok(sol)
+}
+
+/// The saturated stage as the driver runs it.
+struct Saturated<'a> {
+    problem: &'a Problem<'a>,
+    ws: &'a mut Workspace,
+    opts: &'a Options,
+    run: Run,
+    /// The last measure.
+    last: Option<Measure>,
+    /// Nodes in contact at the last measure.
+    contact: usize,
+}
+
+impl Step for Saturated<'_> {
+    /// ε and ḡ of the converged iterate.
+    type Output = (f64, f64);
+    const WHAT: &'static str = "saturated Polonsky–Keer contact solver (yield stress)";
+
+    fn measure(&mut self) -> Result<Measured> {
+        self.run.gap(self.problem, self.ws)?;
+        let f = self.ws.fields();
+        let (p, g) = (&*f.pressure, &*f.gap);
+        let run = &self.run;
+        let m = measure(p, g, run.y, run.target.is_some(), self.problem.sigma_h());
+        self.contact = p.iter().filter(|&&v| v > 0.0).count();
+        self.last = Some(m);
+        Ok(Measured {
+            iteration: run.k,
+            residual: m.eps,
+        })
+    }
+
+    fn contact_fraction(&self) -> f64 {
+        self.contact as f64 / self.problem.nodes() as f64
+    }
+
+    fn check(&mut self, _: Measured) -> Result<Check<(f64, f64)>> {
+        let Some(m) = self.last else {
+            return Ok(Check::Go);
+        };
+        // Under load control the load must be carried too: with every
+        // contact node at σY, ε is 0 whatever the load they carry.
+        let tol = self.opts.tolerance;
+        if m.eps <= tol && m.off_min >= -tol * self.problem.sigma_h() && self.load_error(&m) <= tol
+        {
+            return Ok(Check::Stop((m.eps, m.g_bar)));
+        }
+        Ok(Check::Go)
+    }
+
+    fn step(&mut self, observer: &mut dyn FnMut(Iteration)) -> Result<bool> {
+        let Some(m) = self.last else {
+            return Ok(true);
+        };
+        let problem = self.problem;
+        // Progress of the preconditioned steps: ε, the load error and the
+        // overlap off the contact (ε alone is 0 while every contact node
+        // sits at σY and the load is short, and they could cycle there).
+        let overlap = (-m.off_min / problem.sigma_h()).max(0.0);
+        let progress = m.eps.max(self.load_error(&m)).max(overlap);
+        let (run, ws) = (&mut self.run, &mut *self.ws);
+        if run.preconditioned_step(ws, &m, progress)? {
+            return Ok(true);
+        }
+        if run.stalled(m.eps) {
+            // A cycle of active sets (seen on 0.3 % of random 32²–128²
+            // cases) makes no progress: finish with the projected
+            // gradient, which cannot cycle.
+            projected_gradient(problem, ws, run.y, self.opts, &mut run.k, observer)?;
+            run.conjugate = false;
+            return Ok(true);
+        }
+        if run.refill(ws, &m) {
+            return Ok(true);
+        }
+        run.cg_step(problem, ws, &m)?;
+        Ok(true)
+    }
+}
+
+impl Saturated<'_> {
+    /// |load − Σp|/load under load control, else 0.
+    fn load_error(&self, m: &Measure) -> f64 {
+        self.run
+            .target
+            .map_or(0.0, |total| (total - m.sum_p).abs() / total)
+    }
 }
 
 /// The saturated stage's state.
@@ -217,7 +277,8 @@ impl Run {
     /// put back on the load.
     ///
     /// # Errors
-    /// Internal FFT errors only.
+    /// None in practice: the FFT's sizes are computed here (a failure
+    /// would be a bug and panics: `bem::fft`). The `Result` stays for the API.
     fn new(
         problem: &Problem,
         ws: &mut Workspace,
@@ -262,25 +323,6 @@ impl Run {
     fn gap(&self, problem: &Problem, ws: &mut Workspace) -> Result<()> {
         let f = ws.fields();
         displacement_and_gap(f.op, f.pressure, f.response, f.gap, problem)
-    }
-
-    /// ε and the sums of the state, reported to the observer.
-    fn measure(
-        &self,
-        problem: &Problem,
-        ws: &mut Workspace,
-        observer: &mut dyn FnMut(Iteration),
-    ) -> Measure {
-        let f = ws.fields();
-        let (p, g) = (&*f.pressure, &*f.gap);
-        let m = measure(p, g, self.y, self.target.is_some(), problem.sigma_h());
-        let contact = p.iter().filter(|&&v| v > 0.0).count();
-        observer(Iteration {
-            iteration: self.k,
-            residual: m.eps,
-            contact_fraction: contact as f64 / p.len() as f64,
-        });
-        m
     }
 
     /// One preconditioned step on the free set of the box (see

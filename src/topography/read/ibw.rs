@@ -29,9 +29,9 @@
 //! ```
 //!
 //! Units are the extended units where the file has them, else the 4-char
-//! fields. A wave without a height unit needs `--height-unit`; without a
-//! unit of x it stores no size (`--size`/`--pixel-size`): Igor's default
-//! step is 1 of no unit.
+//! fields. A wave without a height unit needs `ReadOptions::height_unit`;
+//! without a unit of x it stores no size (give `ReadOptions::size`): Igor's
+//! default step is 1 of no unit.
 //!
 //! # References
 //! WaveMetrics, Igor Pro Technical Note PTN003 "Igor Binary Wave Format"
@@ -89,29 +89,22 @@ impl Fields<'_> {
     }
 }
 
-pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
-    let f = Bin {
-        bytes: b,
-        path,
-        format: "Igor binary wave .ibw",
-    };
+/// Whether the file is big-endian, from its version field (version 5 only).
+fn big_endian(f: &Bin) -> Result<bool> {
     let v = f.slice(0, 2, "the version")?;
-    let big = match (v[0], v[1]) {
-        (0, 5) => true,
-        (5, 0) => false,
-        (0, n) | (n, 0) if (1..=3).contains(&n) => {
-            return Err(f.bad(format!(
-                "version {n}: only version 5 is read (save it from Igor Pro 3 or later)"
-            )))
-        }
-        _ => return Err(f.bad("the file does not start with an Igor binary wave version")),
-    };
-    let w = Fields { f, big };
-    let f = &w.f;
-    f.slice(0, BIN_HEADER + WAVE_HEADER, "the headers")?;
-    let h = BIN_HEADER;
-    let npnts = w.size(h + 12, "npnts")?;
-    let (item, kind) = match w.i16(h + 16, "type")? {
+    match (v[0], v[1]) {
+        (0, 5) => Ok(true),
+        (5, 0) => Ok(false),
+        (0, n) | (n, 0) if (1..=3).contains(&n) => Err(f.bad(format!(
+            "version {n}: only version 5 is read (save it from Igor Pro 3 or later)"
+        ))),
+        _ => Err(f.bad("the file does not start with an Igor binary wave version")),
+    }
+}
+
+/// The size in bytes and the kind of one value, from the wave header's type.
+fn wave_type(w: &Fields) -> Result<(usize, Kind)> {
+    Ok(match w.i16(BIN_HEADER + 16, "type")? {
         2 => (4, Kind::F32),
         4 => (8, Kind::F64),
         8 => (1, Kind::I8),
@@ -121,12 +114,27 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
         0x50 => (2, Kind::U16),
         0x60 => (4, Kind::U32),
         t => {
-            return Err(f.bad(format!(
+            return Err(w.f.bad(format!(
                 "wave type {t:#x}: real numbers (float32/64, 8/16/32-bit integers) are read, \
                  not complex or text waves"
             )))
         }
+    })
+}
+
+pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
+    let f = Bin {
+        bytes: b,
+        path,
+        format: "Igor binary wave .ibw",
     };
+    let big = big_endian(&f)?;
+    let w = Fields { f, big };
+    let f = &w.f;
+    f.slice(0, BIN_HEADER + WAVE_HEADER, "the headers")?;
+    let h = BIN_HEADER;
+    let npnts = w.size(h + 12, "npnts")?;
+    let (item, kind) = wave_type(&w)?;
     let mut dims = [0usize; 4];
     for (d, n) in dims.iter_mut().enumerate() {
         *n = w.size(h + 68 + 4 * d, "nDim")?;
@@ -171,25 +179,7 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
     let names: Vec<String> = labels[2].chunks(LABEL).skip(1).map(text).collect();
     let channel = channel(f, &names, channels)?;
     let start = channel * nx * ny;
-    let value = |k: usize| -> f64 {
-        let c = &values[(start + k) * item..(start + k + 1) * item];
-        let mut a = [0u8; 8];
-        a[..item].copy_from_slice(c);
-        if big {
-            a[..item].reverse();
-        }
-        let [b0, b1, b2, b3, ..] = a;
-        match kind {
-            Kind::F32 => f64::from(f32::from_le_bytes([b0, b1, b2, b3])),
-            Kind::F64 => f64::from_le_bytes(a),
-            Kind::I8 => f64::from(b0 as i8),
-            Kind::I16 => f64::from(i16::from_le_bytes([b0, b1])),
-            Kind::I32 => f64::from(i32::from_le_bytes([b0, b1, b2, b3])),
-            Kind::U8 => f64::from(b0),
-            Kind::U16 => f64::from(u16::from_le_bytes([b0, b1])),
-            Kind::U32 => f64::from(u32::from_le_bytes([b0, b1, b2, b3])),
-        }
-    };
+    let value = |k: usize| kind.decode(&values[(start + k) * item..(start + k + 1) * item], big);
     let mut heights = Vec::with_capacity(nx * ny);
     for iy in 0..ny {
         let row = nx * (ny - 1 - iy);
@@ -237,6 +227,30 @@ enum Kind {
     U8,
     U16,
     U32,
+}
+
+impl Kind {
+    /// One value from its `bytes` (as many as the kind's size), in the
+    /// file's byte order.
+    fn decode(self, bytes: &[u8], big: bool) -> f64 {
+        let item = bytes.len();
+        let mut a = [0u8; 8];
+        a[..item].copy_from_slice(bytes);
+        if big {
+            a[..item].reverse();
+        }
+        let [b0, b1, b2, b3, ..] = a;
+        match self {
+            Kind::F32 => f64::from(f32::from_le_bytes([b0, b1, b2, b3])),
+            Kind::F64 => f64::from_le_bytes(a),
+            Kind::I8 => f64::from(b0 as i8),
+            Kind::I16 => f64::from(i16::from_le_bytes([b0, b1])),
+            Kind::I32 => f64::from(i32::from_le_bytes([b0, b1, b2, b3])),
+            Kind::U8 => f64::from(b0),
+            Kind::U16 => f64::from(u16::from_le_bytes([b0, b1])),
+            Kind::U32 => f64::from(u32::from_le_bytes([b0, b1, b2, b3])),
+        }
+    }
 }
 
 /// The next section after the wave, of the size at `offset` of the binary

@@ -20,7 +20,7 @@
 //! # Axis order
 //! A row of a `.npy` array or text matrix runs along x: the array of
 //! shape `(ny, nx)` has `nx` points along x (numpy's image convention), and
-//! `size: [Lx, Ly]` (`--size LX,LY`) gives `Lx` along a row.
+//! `size: [Lx, Ly]` ([`ReadOptions::size`]) gives `Lx` along a row.
 //! SurfaceTopography's `heights()` is indexed the other way round, `[ix, iy]`:
 //! save its transpose, or read with [`ReadOptions::transpose`].
 //!
@@ -380,7 +380,7 @@ fn unit_factors(raw: &Raw, options: &ReadOptions) -> std::result::Result<(f64, f
     };
     let z = one(
         "heights",
-        "height unit (--height-unit, scenes: height_unit)",
+        "height unit (option `height_unit`)",
         &raw.height_unit,
         options.height_unit,
         lateral,
@@ -388,7 +388,7 @@ fn unit_factors(raw: &Raw, options: &ReadOptions) -> std::result::Result<(f64, f
     let xy = match &raw.size {
         Some(s) => one(
             "coordinates",
-            "lateral unit (--lateral-unit, scenes: lateral_unit)",
+            "lateral unit (option `lateral_unit`)",
             &s.unit,
             options.lateral_unit,
             &raw.height_unit,
@@ -466,8 +466,8 @@ fn fill_undefined(raw: &mut Raw, options: &ReadOptions) -> std::result::Result<(
     if !options.fill_undefined {
         return Err(format!(
             "{undefined} of {} points are undefined (NaN, infinite, the format's missing-data \
-             marker or validity mask); fill them by harmonic interpolation with \
-             --fill-undefined (scenes: fill_undefined)",
+             marker or validity mask); fill them by harmonic interpolation with the \
+             option `fill_undefined`",
             raw.heights.len()
         ));
     }

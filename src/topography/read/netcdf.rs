@@ -22,7 +22,7 @@
 //! Types: byte, short, int, float, double (and CDF-5's unsigned and 64-bit
 //! integers). Record variables (an unlimited dimension) and nonuniform line
 //! scans (dimension `n`) are errors naming them. A file's `periodic`
-//! attribute is not read: periodicity is the caller's (`--periodic`).
+//! attribute is not read: periodicity is the caller's (`ReadOptions::periodic`).
 //!
 //! The header is parsed here (a short grammar, every offset bounds-checked,
 //! the values read in place) rather than with the `netcdf3` crate, whose

@@ -647,7 +647,7 @@ fn instrument_files_through_the_command_line() {
     let (code, _, err) = persson(&["spectrum", "--surface", ibw]);
     assert_eq!(code, 2, "{err}");
     assert!(
-        err.contains("no unit of the heights") && err.contains("--height-unit"),
+        err.contains("no unit of the heights") && err.contains("height_unit"),
         "{err}"
     );
 }

@@ -35,6 +35,9 @@ use rustfft::num_complex::Complex64;
 use super::fft::Fft2;
 use crate::error::{check, Error, Result};
 
+mod padded;
+pub(crate) use padded::Padded;
+
 /// Boundary condition of the elastic half-space at the edges of the grid.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
@@ -191,7 +194,8 @@ impl Operator {
     /// Lets a caller fuse its own passes over the fields with the transform's.
     ///
     /// # Errors
-    /// Internal FFT errors only.
+    /// None in practice: the FFT's sizes are computed here (a failure
+    /// would be a bug and panics: `bem::fft`). The `Result` stays for the API.
     pub fn apply_rows(
         &mut self,
         fill: &mut dyn FnMut(usize, &mut [f64]),
@@ -233,7 +237,8 @@ impl Operator {
     /// window it is an approximate inverse (used as a preconditioner).
     ///
     /// # Errors
-    /// Internal FFT errors only.
+    /// None in practice: the FFT's sizes are computed here (a failure
+    /// would be a bug and panics: `bem::fft`). The `Result` stays for the API.
     pub fn apply_stiffness_rows(
         &mut self,
         fill: &mut dyn FnMut(usize, &mut [f64]),
@@ -350,7 +355,8 @@ impl Operator {
                 }
             },
             Some(&mut |i, row| emit(i as isize - r as isize, &row[..n + 2 * r])),
-        )
+        );
+        Ok(())
     }
 
     /// Add `𝒢 c` for a sparse `c` (values `c[k]` at flat indices `idx[k]`)
@@ -466,7 +472,7 @@ fn free_multiplier(fft: &mut Fft2, size: f64, e_star: f64) -> Result<Vec<f64>> {
                 }
             },
             None,
-        )?;
+        );
     }
     Ok(m)
 }
