@@ -99,5 +99,5 @@ fn spectrum_bytes(
 /// Without the feature `topography`, an error.
 #[cfg(not(feature = "topography"))]
 pub fn run(_: Args, _: &mut persson_studies::output::Files) -> anyhow::Result<()> {
-    Err(super::left_out("topography"))
+    Err(super::features::left_out("topography"))
 }

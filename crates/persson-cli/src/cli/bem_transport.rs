@@ -25,7 +25,7 @@ pub fn request(a: &RoughArgs) -> anyhow::Result<Option<TransportRequest>> {
     let seal = if t.leakage {
         let out = t
             .seal
-            .output(persson::leakage::DEFAULT_PERCOLATION_THRESHOLD, 1e-9)?;
+            .output(persson::leakage::DEFAULT_PERCOLATION_THRESHOLD, 1e-9, false)?;
         Some(transport::seal(&out)?)
     } else {
         None
@@ -85,7 +85,7 @@ impl<'a> Observed<'a> {
             #[cfg(not(feature = "flow"))]
             Some(_) => {
                 let _ = (grid, pressures, tolerance);
-                Err(super::left_out("flow"))
+                Err(super::features::left_out("flow"))
             }
         }
     }

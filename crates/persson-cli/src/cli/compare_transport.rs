@@ -70,7 +70,7 @@ impl TransportArgs {
             return Ok(None);
         }
         let seal = if self.leakage {
-            let out = s.output(self.percolation_threshold, 1e-9)?;
+            let out = s.output(self.percolation_threshold, 1e-9, false)?;
             Some(transport::seal(&out)?)
         } else {
             None

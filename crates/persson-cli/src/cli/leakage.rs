@@ -59,18 +59,9 @@ pub struct SealArgs {
 }
 
 impl SealArgs {
-    /// The scene's `leakage` output for these flags.
-    pub fn output(
-        &self,
-        percolation_threshold: f64,
-        tolerance: f64,
-    ) -> anyhow::Result<LeakageOutput> {
-        self.output_or_example(percolation_threshold, tolerance, false)
-    }
-
-    /// As [`SealArgs::output`]; with `example`, the example's water seal
+    /// The scene's `leakage` output for these flags; with `example`, the example's water seal
     /// ([`LeakageOutput::example`]) where the fluid or its drive is not given.
-    pub fn output_or_example(
+    pub fn output(
         &self,
         percolation_threshold: f64,
         tolerance: f64,
@@ -110,9 +101,9 @@ impl SealArgs {
 
 /// Run `persson leakage`.
 pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
-    let mut out =
-        a.seal
-            .output_or_example(a.percolation_threshold, a.tolerance, a.spectrum.example)?;
+    let mut out = a
+        .seal
+        .output(a.percolation_threshold, a.tolerance, a.spectrum.example)?;
     out.plot = a.plot.path();
     let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
     let pressures = pressures(&a.pressure, a.spectrum.example)?;

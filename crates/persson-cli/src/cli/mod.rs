@@ -23,6 +23,7 @@ mod compare_plot;
 #[cfg(feature = "bem")]
 mod compare_transport;
 mod conductance;
+mod features;
 mod files;
 mod friction;
 mod kappa;
@@ -85,37 +86,16 @@ enum Cmd {
     Compare(compare::Args),
     /// FFT boundary-element cross-check (needs the feature `bem`).
     #[cfg(not(feature = "bem"))]
-    Bem(LeftOut),
+    Bem(features::LeftOut),
     /// Theories against the BEM (needs the feature `bem`).
     #[cfg(not(feature = "bem"))]
-    Compare(LeftOut),
+    Compare(features::LeftOut),
     /// Rubber friction μ(v, T, σ0) and A/A0 from a viscoelastic master curve (Persson 2001, 2006).
     Friction(friction::Args),
     /// Thermal and electrical contact conductance against load (Barber's identity; gap over P(u)).
     Conductance(conductance::Args),
     /// Leak rate of a static seal against load (critical junction, effective medium).
     Leakage(leakage::Args),
-}
-
-/// The arguments of a command whose feature this build leaves out: taken
-/// as they come, and refused naming the feature.
-#[derive(clap::Args, Debug)]
-pub struct LeftOut {
-    #[arg(trailing_var_arg = true, allow_hyphen_values = true, hide = true)]
-    args: Vec<String>,
-}
-
-/// The error of a command that needs `feature` (unused in a build with all).
-#[cfg_attr(
-    all(feature = "bem", feature = "flow", feature = "topography"),
-    allow(dead_code)
-)]
-pub fn left_out(feature: &str) -> anyhow::Error {
-    anyhow::anyhow!(
-        "this command needs the feature `{feature}`, which this build of persson leaves out: \
-         build with `cargo run --release --features full -- …` or install with \
-         `cargo install --path crates/persson-cli --features full`"
-    )
 }
 
 /// Run one parsed command line (`matches` as clap parsed it): every file it
@@ -153,7 +133,7 @@ fn stage(cli: Cli, matches: &clap::ArgMatches) -> anyhow::Result<persson_studies
         #[cfg(feature = "bem")]
         Cmd::Compare(a) => compare::run(a, o),
         #[cfg(not(feature = "bem"))]
-        Cmd::Bem(_) | Cmd::Compare(_) => Err(left_out("bem")),
+        Cmd::Bem(_) | Cmd::Compare(_) => Err(features::left_out("bem")),
         Cmd::Friction(a) => friction::run(a, o),
         Cmd::Conductance(a) => conductance::run(a, o),
         Cmd::Leakage(a) => leakage::run(a, o),

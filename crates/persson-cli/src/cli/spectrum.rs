@@ -90,7 +90,7 @@ fn measured(
     map: &persson_studies::scene::HeightMapSpec,
     _: &mut Files,
 ) -> anyhow::Result<()> {
-    Err(super::left_out("topography"))
+    Err(super::features::left_out("topography"))
         .map_err(|e| e.context(format!("--surface {}", map.file.display())))
 }
 

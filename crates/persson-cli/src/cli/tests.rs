@@ -335,7 +335,7 @@ fn files_named(d: &Path, stem: &str) -> Vec<PathBuf> {
 /// build that has it (the default build is the theory's).
 #[test]
 fn a_left_out_feature_is_named_with_the_build_that_has_it() {
-    let e = super::left_out("bem").to_string();
+    let e = super::features::left_out("bem").to_string();
     assert!(e.contains("the feature `bem`"), "{e}");
     assert!(e.contains("--features full"), "{e}");
 }
