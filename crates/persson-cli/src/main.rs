@@ -106,5 +106,12 @@ fn split_usage(text: &str) -> (String, Option<String>) {
     (one, usage)
 }
 
+/// Items of one feature, gated once for the group (as tokio's `cfg_rt!`).
+macro_rules! cfg_feature {
+    ($feature:literal, $($item:item)*) => {
+        $( #[cfg(feature = $feature)] $item )*
+    };
+}
+
 #[path = "cli/mod.rs"]
 mod persson_cli;

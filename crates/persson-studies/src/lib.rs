@@ -25,6 +25,14 @@
 
 #![warn(missing_docs)]
 
+/// Items of one feature, gated once for the group (as tokio's `cfg_rt!`):
+/// `cfg_feature!("bem", pub mod x; pub use x::Y;)`.
+macro_rules! cfg_feature {
+    ($feature:literal, $($item:item)*) => {
+        $( #[cfg(feature = $feature)] $item )*
+    };
+}
+
 // The README's and the guide's Rust examples, as doctests.
 #[cfg(all(doctest, feature = "bem", feature = "topography"))]
 mod guide;

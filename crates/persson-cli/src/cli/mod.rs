@@ -5,23 +5,7 @@ mod adhesion;
 mod anisotropy;
 mod area;
 mod args;
-#[cfg(feature = "bem")]
-mod bem;
-#[cfg(feature = "bem")]
-mod bem_args;
-#[cfg(feature = "bem")]
-mod bem_detail;
-#[cfg(feature = "bem")]
-mod bem_transport;
 mod blame;
-#[cfg(feature = "bem")]
-mod compare;
-#[cfg(feature = "bem")]
-mod compare_args;
-#[cfg(feature = "bem")]
-mod compare_plot;
-#[cfg(feature = "bem")]
-mod compare_transport;
 mod conductance;
 mod features;
 mod files;
@@ -33,8 +17,19 @@ mod measured_args;
 mod number;
 mod output;
 mod plot;
-#[cfg(feature = "bem")]
-mod progress;
+// The BEM's subcommands and what only they use.
+cfg_feature! {
+    "bem",
+    mod bem;
+    mod bem_args;
+    mod bem_detail;
+    mod bem_transport;
+    mod compare;
+    mod compare_args;
+    mod compare_plot;
+    mod compare_transport;
+    mod progress;
+}
 mod report;
 mod run;
 mod separation;

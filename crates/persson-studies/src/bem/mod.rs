@@ -82,12 +82,12 @@ impl Study for Bem {
 
 #[cfg(all(feature = "bem", feature = "plot"))]
 pub mod figures;
-#[cfg(feature = "bem")]
-mod rough;
-#[cfg(feature = "bem")]
-pub(crate) mod solve;
-#[cfg(feature = "bem")]
-pub use rough::{entries, run, warnings, write, Report};
+cfg_feature! {
+    "bem",
+    mod rough;
+    pub(crate) mod solve;
+    pub use rough::{entries, run, warnings, write, Report};
+}
 
 #[cfg(not(feature = "bem"))]
 mod unavailable;

@@ -206,35 +206,7 @@ pub(crate) fn prepare(fig: &Figure, k: u32, measure: &Measure) -> Result<Prepare
     };
     let x_ticks = choose_ticks(x_lo, x_hi, xs, &x_fits);
 
-    let mut palette = PALETTE.iter().cycle();
-    let mut markers = 0..;
-    let series = fig
-        .series
-        .iter()
-        .zip(&transformed)
-        .map(|(s, pts)| {
-            let color = s
-                .color
-                .unwrap_or_else(|| *palette.next().unwrap_or(&PALETTE[0]));
-            let marker = match s.style {
-                Style::Markers | Style::LineMarkers => markers.next().unwrap_or(0),
-                _ => 0,
-            };
-            PlotSeries {
-                label: s.label.clone(),
-                runs: clip_runs(pts, &rect),
-                points: pts
-                    .iter()
-                    .flatten()
-                    .copied()
-                    .filter(|&p| rect.contains(p))
-                    .collect(),
-                style: s.style,
-                color,
-                marker,
-            }
-        })
-        .collect();
+    let series = plot_series(fig, &transformed, &rect);
 
     Ok(Prepared {
         title: fig.title.clone(),
@@ -255,6 +227,42 @@ pub(crate) fn prepare(fig: &Figure, k: u32, measure: &Measure) -> Result<Prepare
         legend: fig.legend,
         layout,
     })
+}
+
+/// Each series' colour, marker, clipped runs and the points inside `rect`.
+fn plot_series(
+    fig: &Figure,
+    transformed: &[Vec<Option<(f64, f64)>>],
+    rect: &Rect,
+) -> Vec<PlotSeries> {
+    let mut palette = PALETTE.iter().cycle();
+    let mut markers = 0..;
+    fig.series
+        .iter()
+        .zip(transformed)
+        .map(|(s, pts)| {
+            let color = s
+                .color
+                .unwrap_or_else(|| *palette.next().unwrap_or(&PALETTE[0]));
+            let marker = match s.style {
+                Style::Markers | Style::LineMarkers => markers.next().unwrap_or(0),
+                _ => 0,
+            };
+            PlotSeries {
+                label: s.label.clone(),
+                runs: clip_runs(pts, rect),
+                points: pts
+                    .iter()
+                    .flatten()
+                    .copied()
+                    .filter(|&p| rect.contains(p))
+                    .collect(),
+                style: s.style,
+                color,
+                marker,
+            }
+        })
+        .collect()
 }
 
 fn check_size((w, h): (u32, u32)) -> Result<()> {

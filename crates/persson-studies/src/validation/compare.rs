@@ -451,66 +451,26 @@ fn compare_on(
     config: &ComparisonConfig,
     progress: &mut dyn FnMut(SweepProgress),
 ) -> Result<Comparison> {
-    let e_star = check::positive("contact_modulus", config.contact_modulus)?;
-    if let Some(p) = config.histogram_pressure {
-        check::positive("histogram_pressure", p)?;
-    }
-    check_bins(config.bins)?;
+    let e_star = check_settings(config)?;
     let (sweep_config, q_s, setup_warning) = sweep_setup(spectrum, map, config)?;
     let band = BandLimited::new(spectrum, q_s)?;
-    let (q_l, q_max) = (spectrum.q_min(), band.q_max());
-    let rms_slope = band.rms_slope(q_l, q_max)?.value;
-    let rms_height = band.rms_height(q_l, q_max)?.value;
+    let compared = compared_spectrum(spectrum, &band, e_star)?;
+    let rms_slope = compared.rms_slope;
     let pressures = compared_pressures(config, rms_slope)?;
     let yield_stress = config.sweep.options.yield_stress;
-    if let Some(y) = yield_stress {
-        check::yield_stress("yield_stress", y, &pressures)?;
-    }
-    if let Some(t) = &config.transport {
-        // Before the sweep: bad transport settings fail at once.
-        t.validate(map.map(|m| m.1), yield_stress)?;
-    }
-    if let Some(a) = &config.adhesion {
-        a.validate(map.map(|m| m.1), yield_stress)?;
-    }
+    check_before_sweep(config, map.map(|m| m.1), &pressures)?;
     let model = Persson::new(&band, e_star)?;
     let theories = theory_curves(&model, &pressures)?;
 
     // An anisotropic spectrum's Peklenik number and its surfaces' (cheap; before the BEM).
     let anisotropy = match map {
-        None => super::anisotropic::compared_anisotropy(
-            &band,
-            sweep_config.grids.last().copied().unwrap_or_default(),
-            sweep_config.size,
-            &sweep_config.seeds,
-        )?,
+        None => synthesised_anisotropy(&band, &sweep_config)?,
         Some(_) => None,
     };
 
     // The BEM sweep, its continuum limit and the periodic map as measured.
-    let source = match map {
-        None => SweepSource::Synthesised(&band),
-        Some((m, Boundary::Periodic)) => SweepSource::BandLimitedMap(m, q_s),
-        Some((m, b)) => SweepSource::Map(m, b),
-    };
-    // The patches of every solve, as it arrives (module `patches`).
-    let boundary = map.map_or(Boundary::Periodic, |(_, b)| b);
-    let mut collector = PatchCollector::new(
-        &sweep_config.grids,
-        sweep_config.seeds.len(),
-        pressures.len(),
-        sweep_config.size,
-        boundary,
-    );
-    let sw = sweep_source_observed(
-        source,
-        e_star,
-        &pressures,
-        &sweep_config,
-        progress,
-        Some(&mut |g, s, k, solution| collector.add(g, s, k, solution)),
-    )?;
-    let (patches, few_patches) = collector.finish(&pressures);
+    let (sw, patches, few_patches) =
+        patched_sweep(&band, (map, q_s), e_star, &pressures, &sweep_config, progress)?;
     let (measured, measured_fallbacks) = match map {
         Some((m, Boundary::Periodic)) => {
             measured_map(m, e_star, &pressures, &sweep_config, yield_stress, progress)?
@@ -534,62 +494,41 @@ fn compare_on(
         .chain(asperity.warnings.iter().cloned())
         .chain(few_patches)
         .collect();
-    let transport = match &config.transport {
-        Some(t) => {
-            let (report, w) = transport_comparison(
-                &band,
-                map,
-                q_s,
-                e_star,
-                &pressures,
-                &sweep_config,
-                config,
-                t,
-            )?;
+    let transport = config
+        .transport
+        .as_ref()
+        .map(|t| transport_comparison(&band, map, q_s, e_star, &pressures, &sweep_config, config, t))
+        .transpose()?
+        .map(|(report, w)| {
             warnings.extend(w);
-            Some(report)
-        }
-        None => None,
-    };
+            report
+        });
     let adhesion = match &config.adhesion {
-        Some(a) => {
-            use super::compare_transport::Surfaces;
-            let surfaces = match map {
-                Some((m, Boundary::Periodic)) => Surfaces::BandLimitedMap(m, q_s),
-                _ => Surfaces::Synthesised(&band),
-            };
-            let max_pressure = pressures.iter().copied().fold(0.0, f64::max);
-            Some(super::compare_adhesion::compare_adhesion(
-                &band,
-                surfaces,
-                (e_star, rms_slope),
-                max_pressure,
-                &sweep_config,
-                a,
-            )?)
-        }
+        Some(a) => Some(adhesion_comparison(
+            &band,
+            (map, q_s),
+            (e_star, rms_slope),
+            &pressures,
+            &sweep_config,
+            a,
+        )?),
         None => None,
     };
 
     let distributions = pressure_distributions(&sw, &model, config.bins)?;
-    let finest = sw.mean_contact_fraction().pop().unwrap_or(SeedMean {
-        mean: vec![],
-        standard_error: vec![],
-    });
-    let histogram_index = chosen_histogram(config.histogram_pressure, &pressures, &finest.mean);
-    let data_histogram = match &config.data_histogram {
-        Some(h) => Some(user_histogram(
-            h,
-            &model,
-            pressures[histogram_index],
-            yield_stress,
-        )?),
-        None => None,
-    };
-    let data = match &config.data {
-        Some(d) => Some(user_data(d, &model, &pressures, &a_inf)?),
-        None => None,
-    };
+    let finest = sw.mean_contact_fraction().pop().map(|m| m.mean);
+    let histogram_index =
+        chosen_histogram(config.histogram_pressure, &pressures, &finest.unwrap_or_default());
+    let data_histogram = config
+        .data_histogram
+        .as_ref()
+        .map(|h| user_histogram(h, &model, pressures[histogram_index], yield_stress))
+        .transpose()?;
+    let data = config
+        .data
+        .as_ref()
+        .map(|d| user_data(d, &model, &pressures, &a_inf))
+        .transpose()?;
     let kappa = kappa_fits(
         &theories,
         &sw,
@@ -597,28 +536,10 @@ fn compare_on(
         (e_star, rms_slope),
         config.sweep.alpha,
     );
-    // Mean separation: the finest grid's mean gap against ū(σ0).
-    let sep = Separation::new(&band, e_star)?;
-    let u_theory: Vec<f64> = pressures
-        .iter()
-        .map(|&p| sep.mean_separation(p).map(|u| u.value))
-        .collect::<Result<_>>()?;
-    let u_bem = sw
-        .mean_separation()
-        .pop()
-        .map(|g| g.mean)
-        .unwrap_or_default();
+    let mean_separation = mean_separations(&band, e_star, &pressures, &sw)?;
     Ok(Comparison {
         contact_modulus: e_star,
-        spectrum: ComparedSpectrum {
-            q_l,
-            q_s: q_max,
-            q_s_requested: spectrum.q_max(),
-            clipped: band.clipped(),
-            rms_height,
-            rms_slope,
-            zeta: model.zeta_max(),
-        },
+        spectrum: compared,
         size: sweep_config.size,
         grids: sweep_config.grids.clone(),
         seeds: sweep_config.seeds.clone(),
@@ -634,10 +555,7 @@ fn compare_on(
         kappa,
         pressure_distribution: distributions,
         histogram_index,
-        mean_separation: MeanSeparation {
-            bem: u_bem,
-            theory: u_theory,
-        },
+        mean_separation,
         data,
         data_histogram,
         measured,
@@ -645,6 +563,150 @@ fn compare_on(
         adhesion,
         warnings,
     })
+}
+
+/// The Peklenik number of a synthesised anisotropic spectrum and of its
+/// surfaces on the finest grid.
+fn synthesised_anisotropy(
+    band: &BandLimited<'_>,
+    sweep_config: &SweepConfig,
+) -> Result<Option<super::anisotropic::ComparedAnisotropy>> {
+    super::anisotropic::compared_anisotropy(
+        band,
+        sweep_config.grids.last().copied().unwrap_or_default(),
+        sweep_config.size,
+        &sweep_config.seeds,
+    )
+}
+
+/// The settings checked before anything is computed; E*.
+fn check_settings(config: &ComparisonConfig) -> Result<f64> {
+    let e_star = check::positive("contact_modulus", config.contact_modulus)?;
+    if let Some(p) = config.histogram_pressure {
+        check::positive("histogram_pressure", p)?;
+    }
+    check_bins(config.bins)?;
+    Ok(e_star)
+}
+
+/// The compared spectrum: its band as the BEM resolves it, rms height and
+/// slope over it, and the magnification of the theories.
+fn compared_spectrum(
+    spectrum: &dyn Spectrum,
+    band: &BandLimited<'_>,
+    e_star: f64,
+) -> Result<ComparedSpectrum> {
+    let (q_l, q_max) = (spectrum.q_min(), band.q_max());
+    Ok(ComparedSpectrum {
+        q_l,
+        q_s: q_max,
+        q_s_requested: spectrum.q_max(),
+        clipped: band.clipped(),
+        rms_height: band.rms_height(q_l, q_max)?.value,
+        rms_slope: band.rms_slope(q_l, q_max)?.value,
+        zeta: Persson::new(band, e_star)?.zeta_max(),
+    })
+}
+
+/// Every setting that would fail after the sweep, checked before it: the
+/// yield stress against the pressures, the transport and adhesion settings.
+fn check_before_sweep(
+    config: &ComparisonConfig,
+    boundary: Option<Boundary>,
+    pressures: &[f64],
+) -> Result<()> {
+    let yield_stress = config.sweep.options.yield_stress;
+    if let Some(y) = yield_stress {
+        check::yield_stress("yield_stress", y, pressures)?;
+    }
+    if let Some(t) = &config.transport {
+        t.validate(boundary, yield_stress)?;
+    }
+    if let Some(a) = &config.adhesion {
+        a.validate(boundary, yield_stress)?;
+    }
+    Ok(())
+}
+
+/// The BEM sweep on the compared surfaces (synthesised, a periodic map's
+/// band-limited copies, or a map as given), with the patches of every solve
+/// as it arrives (module `patches`).
+fn patched_sweep(
+    band: &BandLimited<'_>,
+    (map, q_s): (Option<(&GridSurface, Boundary)>, f64),
+    e_star: f64,
+    pressures: &[f64],
+    sweep_config: &SweepConfig,
+    progress: &mut dyn FnMut(SweepProgress),
+) -> Result<(Sweep, super::patches::PatchComparison, Option<Warning>)> {
+    let source = match map {
+        None => SweepSource::Synthesised(band),
+        Some((m, Boundary::Periodic)) => SweepSource::BandLimitedMap(m, q_s),
+        Some((m, b)) => SweepSource::Map(m, b),
+    };
+    let boundary = map.map_or(Boundary::Periodic, |(_, b)| b);
+    let mut collector = PatchCollector::new(
+        &sweep_config.grids,
+        sweep_config.seeds.len(),
+        pressures.len(),
+        sweep_config.size,
+        boundary,
+    );
+    let sw = sweep_source_observed(
+        source,
+        e_star,
+        pressures,
+        sweep_config,
+        progress,
+        Some(&mut |g, s, k, solution| collector.add(g, s, k, solution)),
+    )?;
+    let (patches, few_patches) = collector.finish(pressures);
+    Ok((sw, patches, few_patches))
+}
+
+/// `compare --work-of-adhesion`: the adhesive BEM on the sweep's surfaces.
+fn adhesion_comparison(
+    band: &BandLimited<'_>,
+    (map, q_s): (Option<(&GridSurface, Boundary)>, f64),
+    (e_star, rms_slope): (f64, f64),
+    pressures: &[f64],
+    sweep_config: &SweepConfig,
+    a: &super::compare_adhesion::AdhesionCompareConfig,
+) -> Result<super::compare_adhesion::AdhesionComparison> {
+    use super::compare_transport::Surfaces;
+    let surfaces = match map {
+        Some((m, Boundary::Periodic)) => Surfaces::BandLimitedMap(m, q_s),
+        _ => Surfaces::Synthesised(band),
+    };
+    let max_pressure = pressures.iter().copied().fold(0.0, f64::max);
+    super::compare_adhesion::compare_adhesion(
+        band,
+        surfaces,
+        (e_star, rms_slope),
+        max_pressure,
+        sweep_config,
+        a,
+    )
+}
+
+/// The mean separation: the finest grid's mean gap against ū(σ0).
+fn mean_separations(
+    band: &BandLimited<'_>,
+    e_star: f64,
+    pressures: &[f64],
+    sw: &Sweep,
+) -> Result<MeanSeparation> {
+    let sep = Separation::new(band, e_star)?;
+    let theory: Vec<f64> = pressures
+        .iter()
+        .map(|&p| sep.mean_separation(p).map(|u| u.value))
+        .collect::<Result<_>>()?;
+    let bem = sw
+        .mean_separation()
+        .pop()
+        .map(|g| g.mean)
+        .unwrap_or_default();
+    Ok(MeanSeparation { bem, theory })
 }
 
 /// `compare --leakage / --conductance` on the sweep's surfaces: synthesised

@@ -46,65 +46,46 @@ pub mod continuum;
 pub mod data;
 pub mod kappa;
 
-#[cfg(feature = "bem")]
-pub mod anisotropic;
-#[cfg(feature = "bem")]
-pub mod asperity;
-#[cfg(feature = "bem")]
-mod compare;
-#[cfg(feature = "bem")]
-pub mod compare_adhesion;
-#[cfg(feature = "bem")]
-pub mod compare_transport;
-#[cfg(feature = "bem")]
-mod distribution;
-#[cfg(feature = "bem")]
-pub mod ensemble;
-#[cfg(feature = "bem")]
-mod hertz;
-#[cfg(feature = "bem")]
-mod kappa_study;
-#[cfg(feature = "bem")]
-pub mod limits;
-#[cfg(feature = "bem")]
-pub mod patches;
-#[cfg(feature = "bem")]
-mod plastic;
-#[cfg(feature = "bem")]
-pub mod report;
-#[cfg(feature = "bem")]
-mod report_tables;
-#[cfg(feature = "bem")]
-pub mod resolution;
-#[cfg(feature = "bem")]
-pub mod sweep;
+cfg_feature! {
+    "bem",
+    pub mod anisotropic;
+    pub mod asperity;
+    mod compare;
+    pub mod compare_adhesion;
+    pub mod compare_transport;
+    mod compare_transport_tables;
+    mod distribution;
+    pub mod ensemble;
+    mod hertz;
+    mod kappa_study;
+    pub mod limits;
+    pub mod patches;
+    mod plastic;
+    pub mod report;
+    mod report_tables;
+    pub mod resolution;
+    pub mod sweep;
+}
 
 pub use continuum::{extrapolate, mean_and_error, Extrapolation, SampleMean, DEFAULT_ALPHA};
 pub use data::{density_distance, interpolate_log, score, Score, UserData, UserHistogram};
 pub use kappa::{fit_kappa, KappaEstimate, KappaFit};
 
-#[cfg(feature = "bem")]
-pub use compare::{
-    check_bins, compare, compare_surface, ComparisonConfig, DEFAULT_BINS, KAPPA_MAX_FRACTION,
-};
-#[cfg(feature = "bem")]
-pub use compare_transport::{TransportCompareConfig, TransportComparison};
-#[cfg(feature = "bem")]
-pub use ensemble::{ensemble, EnsembleConfig, EnsembleJob, EnsembleReport, EnsembleSolve};
-#[cfg(feature = "bem")]
-pub use hertz::{hertz, HertzValidation};
-#[cfg(feature = "bem")]
-pub use kappa::{GridKappa, SweepKappa};
-#[cfg(feature = "bem")]
-pub use kappa_study::{kappa_study, HurstKappa, KappaStudy, KappaStudyConfig};
-#[cfg(feature = "bem")]
-pub use limits::{continuum_limit, Continuum, ContinuumSplit, PlasticSplit, SeedMean};
-#[cfg(feature = "bem")]
-pub use report::Comparison;
-#[cfg(feature = "bem")]
-pub use resolution::{
-    default_pressures, resolution_grids, resolvable_q_max, resolve_q_s, ResolvedBand, SweepConfig,
-    SweepSettings, DEFAULT_LEVELS, DEFAULT_PIXELS_PER_WAVELENGTH,
-};
-#[cfg(feature = "bem")]
-pub use sweep::{sweep, sweep_one, sweep_source, GridResult, Sweep, SweepProgress, SweepSource};
+cfg_feature! {
+    "bem",
+    pub use compare::{
+        check_bins, compare, compare_surface, ComparisonConfig, DEFAULT_BINS, KAPPA_MAX_FRACTION,
+    };
+    pub use compare_transport::{TransportCompareConfig, TransportComparison};
+    pub use ensemble::{ensemble, EnsembleConfig, EnsembleJob, EnsembleReport, EnsembleSolve};
+    pub use hertz::{hertz, HertzValidation};
+    pub use kappa::{GridKappa, SweepKappa};
+    pub use kappa_study::{kappa_study, HurstKappa, KappaStudy, KappaStudyConfig};
+    pub use limits::{continuum_limit, Continuum, ContinuumSplit, PlasticSplit, SeedMean};
+    pub use report::Comparison;
+    pub use resolution::{
+        default_pressures, resolution_grids, resolvable_q_max, resolve_q_s, ResolvedBand,
+        SweepConfig, SweepSettings, DEFAULT_LEVELS, DEFAULT_PIXELS_PER_WAVELENGTH,
+    };
+    pub use sweep::{sweep, sweep_one, sweep_source, GridResult, Sweep, SweepProgress, SweepSource};
+}

@@ -8,321 +8,379 @@ use crate::input::ConventionName;
 use crate::table::number;
 
 impl fmt::Display for Warning {
+    /// The text of the group the warning is in (each group a function, in
+    /// the order of the variants).
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let n = |v: f64| number(v, 6);
-        match self {
-            Warning::NotComputed {
-                table,
-                quantity,
-                count,
-            } => write!(
-                f,
-                "{quantity} could not be computed ({count} value{} of the table {table} \
-                 came out NaN or infinite; shown as – and null)",
-                if *count == 1 { "" } else { "s" }
-            ),
-            Warning::CurvatureNotComputed { file, shape } => write!(
-                f,
-                "{}: no curvature (h''_rms, rms mean curvature: null): the map has {} × {} \
-                 points, and a curvature needs at least 3 along x and y (or a periodic map)",
-                file.display(),
-                shape[0],
-                shape[1]
-            ),
-            Warning::HighPressure {
-                nominal_pressure,
-                contact_modulus,
-                count,
-            } => high_pressure(f, *nominal_pressure, *contact_modulus, *count),
-            Warning::SteepSlope { rms_slope } => write!(
-                f,
-                "rms slope h'_rms = {} is above 1: outside the small-slope theory \
-                 (lengths are in m and wavevectors in 1/m: a height in µm given as m?)",
-                n(*rms_slope)
-            ),
-            Warning::ZetaBeyondBand { zeta, zeta_max } => write!(
-                f,
-                "ζ = {} is beyond q_s/q_l = {}: C(q) = 0 above q_s, so the result is that of \
-                 full magnification ζ = {}",
-                n(*zeta),
-                n(*zeta_max),
-                n(*zeta_max)
-            ),
-            Warning::BandLimited {
-                grid,
-                surface_rms_slope,
-                rms_slope,
-            } => write!(
-                f,
-                "the {grid}² surface is band-limited by its grid: its rms slope is {} against \
-                 the spectrum's {} (a finer grid, or a smaller q_s, resolves it)",
-                n(*surface_rms_slope),
-                n(*rms_slope)
-            ),
-            Warning::PsdConvention { file, convention } => {
-                write!(
-                    f,
-                    "spectrum file {} read in the `{convention}` convention",
-                    file.display()
-                )?;
-                if *convention == ConventionName::Persson {
-                    write!(
-                        f,
-                        "; a SurfaceTopography or contact.engineering PSD needs the \
-                         `surface-topography` convention"
-                    )?;
-                }
-                Ok(())
+        type Text = fn(&Warning, &mut fmt::Formatter<'_>, &mut bool) -> fmt::Result;
+        const GROUPS: [Text; 4] = [
+            text_of_inputs,
+            text_of_theories,
+            text_of_solves,
+            text_of_rest,
+        ];
+        for text in GROUPS {
+            let mut mine = true;
+            let r = text(self, f, &mut mine);
+            if mine {
+                return r;
             }
-            Warning::RisingSpectrum {
-                file,
-                c_first,
-                c_last,
-            } => write!(
+        }
+        Ok(())
+    }
+}
+
+/// The text of the warnings of this group; `mine` set to false for the others.
+fn text_of_inputs(w: &Warning, f: &mut fmt::Formatter<'_>, mine: &mut bool) -> fmt::Result {
+    let n = |v: f64| number(v, 6);
+    match w {
+        Warning::NotComputed {
+            table,
+            quantity,
+            count,
+        } => write!(
+            f,
+            "{quantity} could not be computed ({count} value{} of the table {table} \
+             came out NaN or infinite; shown as – and null)",
+            if *count == 1 { "" } else { "s" }
+        ),
+        Warning::CurvatureNotComputed { file, shape } => write!(
+            f,
+            "{}: no curvature (h''_rms, rms mean curvature: null): the map has {} × {} \
+             points, and a curvature needs at least 3 along x and y (or a periodic map)",
+            file.display(),
+            shape[0],
+            shape[1]
+        ),
+        Warning::HighPressure {
+            nominal_pressure,
+            contact_modulus,
+            count,
+        } => high_pressure(f, *nominal_pressure, *contact_modulus, *count),
+        Warning::SteepSlope { rms_slope } => write!(
+            f,
+            "rms slope h'_rms = {} is above 1: outside the small-slope theory \
+             (lengths are in m and wavevectors in 1/m: a height in µm given as m?)",
+            n(*rms_slope)
+        ),
+        Warning::ZetaBeyondBand { zeta, zeta_max } => write!(
+            f,
+            "ζ = {} is beyond q_s/q_l = {}: C(q) = 0 above q_s, so the result is that of \
+             full magnification ζ = {}",
+            n(*zeta),
+            n(*zeta_max),
+            n(*zeta_max)
+        ),
+        Warning::BandLimited {
+            grid,
+            surface_rms_slope,
+            rms_slope,
+        } => write!(
+            f,
+            "the {grid}² surface is band-limited by its grid: its rms slope is {} against \
+             the spectrum's {} (a finer grid, or a smaller q_s, resolves it)",
+            n(*surface_rms_slope),
+            n(*rms_slope)
+        ),
+        Warning::PsdConvention { file, convention } => {
+            write!(
                 f,
-                "C(q) of {} does not fall with q (C = {} at the first q, {} at the last): \
-                 is it a height map or profile? a measured surface is read as a height map, \
-                 not as a spectrum",
-                file.display(),
-                n(*c_first),
-                n(*c_last)
-            ),
-            Warning::ClippedBand {
-                q_s_requested,
-                q_s,
-                q_l,
-                grid,
-                pixels_per_wavelength,
-            } => write!(
-                f,
-                "q_s = {} is not resolved by the coarsest grid ({grid}², {} pixels per \
-                 wavelength); the theories and the BEM use q_s = {} (= {}·q_l)",
-                n(*q_s_requested),
-                n(*pixels_per_wavelength),
-                n(*q_s),
-                n(*q_s / *q_l)
-            ),
-            Warning::Resampled {
-                file,
-                points,
-                max_deviation,
-            } => write!(
-                f,
-                "{}: the x positions are not equally spaced (up to {} pixel(s) off the equally \
-                 spaced grid): the heights were linearly interpolated onto {points} equally \
-                 spaced points",
-                file.display(),
-                n(*max_deviation)
-            ),
-            Warning::HurstNotFitted { file, bins } => write!(
-                f,
-                "{}: no Hurst exponent (hurst null): {bins} spectrum bin(s) in the band, a fit \
-                 needs 3",
+                "spectrum file {} read in the `{convention}` convention",
                 file.display()
-            ),
-            Warning::HurstOutOfRange {
-                file,
-                hurst,
-                hurst_error,
-            } => write!(
+            )?;
+            if *convention == ConventionName::Persson {
+                write!(
+                    f,
+                    "; a SurfaceTopography or contact.engineering PSD needs the \
+                     `surface-topography` convention"
+                )?;
+            }
+            Ok(())
+        }
+        Warning::RisingSpectrum {
+            file,
+            c_first,
+            c_last,
+        } => write!(
+            f,
+            "C(q) of {} does not fall with q (C = {} at the first q, {} at the last): \
+             is it a height map or profile? a measured surface is read as a height map, \
+             not as a spectrum",
+            file.display(),
+            n(*c_first),
+            n(*c_last)
+        ),
+        Warning::ClippedBand {
+            q_s_requested,
+            q_s,
+            q_l,
+            grid,
+            pixels_per_wavelength,
+        } => write!(
+            f,
+            "q_s = {} is not resolved by the coarsest grid ({grid}², {} pixels per \
+             wavelength); the theories and the BEM use q_s = {} (= {}·q_l)",
+            n(*q_s_requested),
+            n(*pixels_per_wavelength),
+            n(*q_s),
+            n(*q_s / *q_l)
+        ),
+        _ => {
+            *mine = false;
+            Ok(())
+        }
+    }
+}
+
+/// The text of the warnings of this group; `mine` set to false for the others.
+fn text_of_theories(w: &Warning, f: &mut fmt::Formatter<'_>, mine: &mut bool) -> fmt::Result {
+    let n = |v: f64| number(v, 6);
+    match w {
+        Warning::Resampled {
+            file,
+            points,
+            max_deviation,
+        } => write!(
+            f,
+            "{}: the x positions are not equally spaced (up to {} pixel(s) off the equally \
+             spaced grid): the heights were linearly interpolated onto {points} equally \
+             spaced points",
+            file.display(),
+            n(*max_deviation)
+        ),
+        Warning::HurstNotFitted { file, bins } => write!(
+            f,
+            "{}: no Hurst exponent (hurst null): {bins} spectrum bin(s) in the band, a fit \
+             needs 3",
+            file.display()
+        ),
+        Warning::HurstOutOfRange {
+            file,
+            hurst,
+            hurst_error,
+        } => write!(
+            f,
+            "{}: no Hurst exponent (hurst null): the fit gives H = {} ± {}, outside (0, 1) \
+             where the spectrum is w-affine",
+            file.display(),
+            n(*hurst),
+            n(*hurst_error)
+        ),
+        Warning::BinsLeftOut {
+            file,
+            count,
+            of,
+            q_range,
+        } => write!(
+            f,
+            "{}: {count} of {of} bins of the line scans' 1D spectrum (q = {} … {} 1/m) do \
+             not fall faster than 1/q and have no isotropic 2D counterpart: left out of \
+             C(q) (the rms values keep them)",
+            file.display(),
+            n(q_range.0),
+            n(q_range.1)
+        ),
+        Warning::BeyondPullOff {
+            nominal_pressure,
+            pull_off_stress,
+            count,
+        } => write!(
+            f,
+            "{} at or below −σ_p, minus the pull-off stress σ_p = {} (the highest: \
+             σ0 = {}): nothing is in contact there (A/A0 = 0)",
+            if *count > 1 {
+                format!("{count} nominal pressures are")
+            } else {
+                "a nominal pressure is".to_string()
+            },
+            n(*pull_off_stress),
+            n(*nominal_pressure)
+        ),
+        Warning::AdhesionToleranceNotMet {
+            tolerance,
+            error_bound,
+            count,
+        } => write!(
+            f,
+            "{count} adhesive contact fraction(s) did not reach the tolerance {} at the \
+             largest mesh: error estimate up to {} (reported with each point)",
+            n(*tolerance),
+            n(*error_bound)
+        ),
+        Warning::LongAdhesionRange {
+            adhesion_range,
+            rms_slope,
+            rms_curvature,
+        } => write!(
+            f,
+            "the adhesion range Δr = {} is not short against g₀ = (16/3) h'²_rms/h''_rms \
+             = {} (Δr/g₀ ≥ 0.1): the Pastewka–Robbins criterion assumes short-ranged \
+             adhesion",
+            n(*adhesion_range),
+            n(16.0 / 3.0 * rms_slope * rms_slope / rms_curvature)
+        ),
+        Warning::SumBands { bands, ratio } => {
+            let b: Vec<String> = bands
+                .iter()
+                .map(|(a, b)| format!("{} … {}", n(*a), n(*b)))
+                .collect();
+            write!(
                 f,
-                "{}: no Hurst exponent (hurst null): the fit gives H = {} ± {}, outside (0, 1) \
-                 where the spectrum is self-affine",
-                file.display(),
-                n(*hurst),
-                n(*hurst_error)
-            ),
-            Warning::BinsLeftOut {
-                file,
-                count,
-                of,
-                q_range,
-            } => write!(
+                "the rough bodies' spectra cover bands q = {} 1/m, a factor {} apart: \
+                 outside their common band the summed roughness is one body's alone",
+                b.join(" and "),
+                n(*ratio)
+            )
+        }
+        _ => {
+            *mine = false;
+            Ok(())
+        }
+    }
+}
+
+/// The text of the warnings of this group; `mine` set to false for the others.
+fn text_of_solves(w: &Warning, f: &mut fmt::Formatter<'_>, mine: &mut bool) -> fmt::Result {
+    let n = |v: f64| number(v, 6);
+    match w {
+        Warning::MeasurementGap {
+            below,
+            above,
+            q_range,
+        } => write!(
+            f,
+            "the reliable bands of {} and {} do not overlap: no measurement covers \
+             q = {} … {} 1/m, where the combined spectrum is interpolated (power law)",
+            below.display(),
+            above.display(),
+            n(q_range.0),
+            n(q_range.1)
+        ),
+        Warning::PreconditionerFallback {
+            nominal_pressure,
+            iterations,
+        } => {
+            let list: Vec<String> = nominal_pressure.iter().map(|&p| n(p)).collect();
+            write!(
                 f,
-                "{}: {count} of {of} bins of the line scans' 1D spectrum (q = {} … {} 1/m) do \
-                 not fall faster than 1/q and have no isotropic 2D counterpart: left out of \
-                 C(q) (the rms values keep them)",
-                file.display(),
-                n(q_range.0),
-                n(q_range.1)
-            ),
-            Warning::BeyondPullOff {
-                nominal_pressure,
-                pull_off_stress,
-                count,
-            } => write!(
-                f,
-                "{} at or below −σ_p, minus the pull-off stress σ_p = {} (the highest: \
-                 σ0 = {}): nothing is in contact there (A/A0 = 0)",
-                if *count > 1 {
-                    format!("{count} nominal pressures are")
-                } else {
-                    "a nominal pressure is".to_string()
-                },
-                n(*pull_off_stress),
-                n(*nominal_pressure)
-            ),
-            Warning::AdhesionToleranceNotMet {
-                tolerance,
-                error_bound,
-                count,
-            } => write!(
-                f,
-                "{count} adhesive contact fraction(s) did not reach the tolerance {} at the \
-                 largest mesh: error estimate up to {} (reported with each point)",
-                n(*tolerance),
-                n(*error_bound)
-            ),
-            Warning::LongAdhesionRange {
-                adhesion_range,
-                rms_slope,
-                rms_curvature,
-            } => write!(
-                f,
-                "the adhesion range Δr = {} is not short against g₀ = (16/3) h'²_rms/h''_rms \
-                 = {} (Δr/g₀ ≥ 0.1): the Pastewka–Robbins criterion assumes short-ranged \
-                 adhesion",
-                n(*adhesion_range),
-                n(16.0 / 3.0 * rms_slope * rms_slope / rms_curvature)
-            ),
-            Warning::SumBands { bands, ratio } => {
-                let b: Vec<String> = bands
+                "the preconditioned BEM solver stalled at σ0 = {} (after {} iteration(s)) \
+                 and the plain Polonsky–Keer loop finished: same answer and tolerance, \
+                 more time",
+                list.join(", "),
+                iterations
                     .iter()
-                    .map(|(a, b)| format!("{} … {}", n(*a), n(*b)))
-                    .collect();
-                write!(
-                    f,
-                    "the rough bodies' spectra cover bands q = {} 1/m, a factor {} apart: \
-                     outside their common band the summed roughness is one body's alone",
-                    b.join(" and "),
-                    n(*ratio)
-                )
-            }
-            Warning::MeasurementGap {
-                below,
-                above,
-                q_range,
-            } => write!(
-                f,
-                "the reliable bands of {} and {} do not overlap: no measurement covers \
-                 q = {} … {} 1/m, where the combined spectrum is interpolated (power law)",
-                below.display(),
-                above.display(),
-                n(q_range.0),
-                n(q_range.1)
-            ),
-            Warning::PreconditionerFallback {
-                nominal_pressure,
-                iterations,
-            } => {
-                let list: Vec<String> = nominal_pressure.iter().map(|&p| n(p)).collect();
-                write!(
-                    f,
-                    "the preconditioned BEM solver stalled at σ0 = {} (after {} iteration(s)) \
-                     and the plain Polonsky–Keer loop finished: same answer and tolerance, \
-                     more time",
-                    list.join(", "),
-                    iterations
-                        .iter()
-                        .map(|k| k.to_string())
-                        .collect::<Vec<_>>()
-                        .join(", ")
-                )
-            }
-            Warning::CohesiveZoneUnresolved {
-                adhesion_range,
-                cohesive_length,
-                grid_spacing,
-            } => {
-                if adhesion_range < grid_spacing {
-                    write!(
-                        f,
-                        "the adhesion range ρ = {} is below the grid spacing L/N = {}",
-                        n(*adhesion_range),
-                        n(*grid_spacing)
-                    )?;
-                } else {
-                    write!(
-                        f,
-                        "the cohesive length E*Δγ/σ_c² = E*ρ²/Δγ = {} spans only {:.1} grid \
-                         spacings L/N = {}",
-                        n(*cohesive_length),
-                        cohesive_length / grid_spacing,
-                        n(*grid_spacing)
-                    )?;
-                }
-                write!(
-                    f,
-                    ": the cohesive zone is not resolved and the pull-off depends on the grid \
-                     (and, for Maugis–Dugdale, on the solver's path: several solutions are \
-                     stationary); refine the grid or lengthen the range"
-                )
-            }
-            Warning::AdhesiveFallback { mean_gap } => write!(
-                f,
-                "the preconditioned adhesive solver stalled at mean gap ḡ = {} and the plain \
-                 iteration finished: same tolerance, more time",
-                mean_gap
-                    .iter()
-                    .map(|&g| n(g))
+                    .map(|k| k.to_string())
                     .collect::<Vec<_>>()
                     .join(", ")
-            ),
-            Warning::AdhesiveNotConverged {
-                mean_gap,
-                tolerance,
-            } => write!(
-                f,
-                "the adhesive solve at mean gap ḡ = {} stopped short of the tolerance {} \
-                 (iteration limit): its numbers are not converged",
-                mean_gap
-                    .iter()
-                    .map(|&g| n(g))
-                    .collect::<Vec<_>>()
-                    .join(", "),
-                n(*tolerance)
-            ),
-            Warning::MasterCurveRange { .. }
-            | Warning::FrictionNotConverged { .. }
-            | Warning::ShiftTableExtended { .. } => friction(f, self),
-            Warning::Sealed {
-                method,
-                nominal_pressure,
-                count,
-                contact_fraction,
-                percolation_threshold,
-            } => {
-                let why = match percolation_threshold {
-                    Some(a) => format!(
-                        "A/A0 = {} is at or above the percolation threshold {}",
-                        n(*contact_fraction),
-                        n(*a)
-                    ),
-                    None => format!(
-                        "A/A0 = {}, no open path joins inlet and outlet",
-                        n(*contact_fraction)
-                    ),
-                };
+            )
+        }
+        Warning::CohesiveZoneUnresolved {
+            adhesion_range,
+            cohesive_length,
+            grid_spacing,
+        } => {
+            if adhesion_range < grid_spacing {
                 write!(
                     f,
-                    "the contact already percolates at {count} load(s) from σ0 = {} ({why}): \
-                     the {method} leak rate is 0 there",
-                    n(*nominal_pressure)
-                )
+                    "the adhesion range ρ = {} is below the grid spacing L/N = {}",
+                    n(*adhesion_range),
+                    n(*grid_spacing)
+                )?;
+            } else {
+                write!(
+                    f,
+                    "the cohesive length E*Δγ/σ_c² = E*ρ²/Δγ = {} spans only {:.1} grid \
+                     spacings L/N = {}",
+                    n(*cohesive_length),
+                    cohesive_length / grid_spacing,
+                    n(*grid_spacing)
+                )?;
             }
-            Warning::SmallBandwidth { .. }
-            | Warning::Coalescence { .. }
-            | Warning::CurvatureUnresolved { .. } => crate::asperity::describe(self, f),
-            #[cfg(feature = "bem")]
-            Warning::FewPatches { .. } => crate::validation::patches::describe(self, f),
-            #[cfg(not(feature = "bem"))]
-            Warning::FewPatches { count, .. } => write!(f, "{count} solve(s) with few patches"),
-            Warning::MapNotPeriodic => write!(
+            write!(
                 f,
-                "the map is not periodic: its coarser copies are block averages, each a \
-                 smoother surface, so N → ∞ is a resolution trend, not a continuum limit; \
-                 trust the finest grid (the map as measured)"
-            ),
+                ": the cohesive zone is not resolved and the pull-off depends on the grid \
+                 (and, for Maugis–Dugdale, on the solver's path: several solutions are \
+                 stationary); refine the grid or lengthen the range"
+            )
+        }
+        Warning::AdhesiveFallback { mean_gap } => write!(
+            f,
+            "the preconditioned adhesive solver stalled at mean gap ḡ = {} and the plain \
+             iteration finished: same tolerance, more time",
+            mean_gap
+                .iter()
+                .map(|&g| n(g))
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
+        Warning::AdhesiveNotConverged {
+            mean_gap,
+            tolerance,
+        } => write!(
+            f,
+            "the adhesive solve at mean gap ḡ = {} stopped short of the tolerance {} \
+             (iteration limit): its numbers are not converged",
+            mean_gap
+                .iter()
+                .map(|&g| n(g))
+                .collect::<Vec<_>>()
+                .join(", "),
+            n(*tolerance)
+        ),
+        Warning::MasterCurveRange { .. }
+        | Warning::FrictionNotConverged { .. }
+        | Warning::ShiftTableExtended { .. } => friction(f, w),
+        _ => {
+            *mine = false;
+            Ok(())
+        }
+    }
+}
+
+/// The text of the warnings of this group; `mine` set to false for the others.
+fn text_of_rest(w: &Warning, f: &mut fmt::Formatter<'_>, mine: &mut bool) -> fmt::Result {
+    let n = |v: f64| number(v, 6);
+    match w {
+        Warning::Sealed {
+            method,
+            nominal_pressure,
+            count,
+            contact_fraction,
+            percolation_threshold,
+        } => {
+            let why = match percolation_threshold {
+                Some(a) => format!(
+                    "A/A0 = {} is at or above the percolation threshold {}",
+                    n(*contact_fraction),
+                    n(*a)
+                ),
+                None => format!(
+                    "A/A0 = {}, no open path joins inlet and outlet",
+                    n(*contact_fraction)
+                ),
+            };
+            write!(
+                f,
+                "the contact already percolates at {count} load(s) from σ0 = {} ({why}): \
+                 the {method} leak rate is 0 there",
+                n(*nominal_pressure)
+            )
+        }
+        Warning::SmallBandwidth { .. }
+        | Warning::Coalescence { .. }
+        | Warning::CurvatureUnresolved { .. } => crate::asperity::describe(w, f),
+        #[cfg(feature = "bem")]
+        Warning::FewPatches { .. } => crate::validation::patches::describe(w, f),
+        #[cfg(not(feature = "bem"))]
+        Warning::FewPatches { count, .. } => write!(f, "{count} solve(s) with few patches"),
+        Warning::MapNotPeriodic => write!(
+            f,
+            "the map is not periodic: its coarser copies are block averages, each a \
+             smoother surface, so N → ∞ is a resolution trend, not a continuum limit; \
+             trust the finest grid (the map as measured)"
+        ),
+        _ => {
+            *mine = false;
+            Ok(())
         }
     }
 }
