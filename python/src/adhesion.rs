@@ -4,8 +4,8 @@ use persson_studies::scene::{run, AdhesionOutput};
 use pyo3::prelude::*;
 
 use crate::arrays::float_list;
+use crate::convert::{err, name, to_dict_warned};
 use crate::spectrum::Spectrum;
-use crate::{err, name, to_dict_warned};
 
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(adhesion, m)?)?;

@@ -8,7 +8,7 @@ use persson_studies::scene::{DetrendName, WindowName};
 use pyo3::prelude::*;
 
 use crate::arrays::{float_list, floats, map};
-use crate::{err, name, to_dict_warned, value_error};
+use crate::convert::{err, name, to_dict_warned, value_error};
 
 /// A map from `heights` (ny × nx, a row along x) of physical size `size`:
 /// L (square pixels: Ly = L·ny/nx) or (Lx, Ly), in m, as `--size`.

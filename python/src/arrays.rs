@@ -8,7 +8,7 @@ use numpy::{IntoPyArray, PyReadonlyArrayDyn, PyUntypedArray, PyUntypedArrayMetho
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use crate::value_error;
+use crate::convert::value_error;
 
 /// `obj` as a read-only float64 array (any shape): an ndarray of dtype
 /// float64 as it is (no copy); an array of another real dtype (int, unsigned,

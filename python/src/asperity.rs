@@ -9,7 +9,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyList;
 
 use crate::arrays::{float_list, floats, map, square};
-use crate::{err, name, to_dict, value_error};
+use crate::convert::{err, name, to_dict, value_error};
 
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(contact_patches, m)?)?;

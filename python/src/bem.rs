@@ -19,8 +19,8 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::arrays::{float_list, floats, map, square};
+use crate::convert::{err, name, to_dict, to_dict_warned, value_error, Seed};
 use crate::spectrum::Spectrum;
-use crate::{err, name, to_dict, to_dict_warned, value_error, Seed};
 
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(synthesize, m)?)?;
@@ -495,32 +495,14 @@ fn compare<'py>(
         pixels_per_wavelength,
         options: options(tolerance, max_iterations, yield_stress)?,
     };
-    config.data = data
-        .as_deref()
-        .map(UserData::from_csv)
-        .transpose()
-        .map_err(err)?;
-    config.data_histogram = data_histogram
-        .as_deref()
-        .map(UserHistogram::from_csv)
+    let read = |p: &Option<PathBuf>| p.as_deref().map(UserData::from_csv).transpose();
+    config.data = read(&data).map_err(err)?;
+    config.data_histogram = (data_histogram.as_deref().map(UserHistogram::from_csv))
         .transpose()
         .map_err(err)?;
     config.histogram_pressure = histogram_pressure;
     config.bins = bins;
-    config.adhesion = match work_of_adhesion {
-        Some(w) => {
-            let mut a = persson_studies::validation::compare_adhesion::AdhesionCompareConfig::new(
-                float_list("work_of_adhesion", w)?,
-            );
-            a.adhesion_range = adhesion_range;
-            a.adhesion = law_kind(adhesion)?;
-            Some(a)
-        }
-        None if adhesion_range.is_some() => {
-            return Err(value_error("adhesion_range: needs work_of_adhesion"))
-        }
-        None => None,
-    };
+    config.adhesion = adhesion_config(work_of_adhesion, adhesion_range, adhesion)?;
     config.transport = crate::transport::compare_transport(
         crate::transport::CompareTransport {
             leakage,
@@ -564,5 +546,26 @@ fn compare<'py>(
         }
     }
     .map_err(err)?;
-    crate::to_dict_warned(py, &r, &r.warnings)
+    crate::convert::to_dict_warned(py, &r, &r.warnings)
+}
+
+/// `compare`'s adhesion settings: Δγ (one or a list), the range and the law.
+fn adhesion_config(
+    work_of_adhesion: Option<&Bound<'_, PyAny>>,
+    adhesion_range: Option<f64>,
+    adhesion: &str,
+) -> PyResult<Option<persson_studies::validation::compare_adhesion::AdhesionCompareConfig>> {
+    use persson_studies::validation::compare_adhesion::AdhesionCompareConfig;
+    match work_of_adhesion {
+        Some(w) => {
+            let mut a = AdhesionCompareConfig::new(float_list("work_of_adhesion", w)?);
+            a.adhesion_range = adhesion_range;
+            a.adhesion = law_kind(adhesion)?;
+            Ok(Some(a))
+        }
+        None if adhesion_range.is_some() => {
+            Err(value_error("adhesion_range: needs work_of_adhesion"))
+        }
+        None => Ok(None),
+    }
 }

@@ -10,8 +10,8 @@ use persson_studies::validation::SweepSettings;
 use pyo3::prelude::*;
 
 use crate::arrays::float_list;
+use crate::convert::{err, to_dict_warned, value_error, Seed};
 use crate::spectrum::Spectrum;
-use crate::{err, to_dict_warned, value_error, Seed};
 
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<EnsemblePlan>()?;

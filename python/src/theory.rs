@@ -9,8 +9,8 @@ use persson_studies::scene::{MaterialSpec, TheoryName, TheorySpec};
 use pyo3::prelude::*;
 
 use crate::arrays::{broadcast, floats, output};
+use crate::convert::{err, name, value_error};
 use crate::spectrum::Spectrum;
-use crate::{err, name, value_error};
 
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(contact_modulus, m)?)?;

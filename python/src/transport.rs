@@ -8,8 +8,8 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::arrays::float_list;
+use crate::convert::{err, value_error};
 use crate::spectrum::Spectrum;
-use crate::{err, value_error};
 
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(conductance, m)?)?;
