@@ -70,7 +70,7 @@ impl Axis {
 
     /// The same axis with the range fixed to `[lo, hi]` (data units).
     ///
-    /// The range is checked by [`render`]: finite, `lo < hi`, and `lo > 0` on a
+    /// The range is checked by [`super::render`]: finite, `lo < hi`, and `lo > 0` on a
     /// log axis.
     pub fn with_range(mut self, lo: f64, hi: f64) -> Self {
         self.range = Some((lo, hi));
