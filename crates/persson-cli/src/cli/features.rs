@@ -17,7 +17,7 @@ pub struct LeftOut {
 pub fn left_out(feature: &str) -> anyhow::Error {
     anyhow::anyhow!(
         "this command needs the feature `{feature}`, which this build of persson leaves out: \
-         build with `cargo run --release --features full -- …` or install with \
+         build with `cargo run --release -p persson-cli --features full -- …` or install with \
          `cargo install --path crates/persson-cli --features full`"
     )
 }
