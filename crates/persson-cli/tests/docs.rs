@@ -289,7 +289,10 @@ fn readme_stays_short_with_its_set_up_commands_on_top() {
         "README.md has {lines} lines (at most {README_LINES}): move the detail to docs/"
     );
     let head: String = readme.lines().take(25).collect::<Vec<_>>().join("\n");
-    for command in ["cargo run --release -p persson-cli -- area --example", "scripts/test"] {
+    for command in [
+        "cargo run --release -p persson-cli -- area --example",
+        "scripts/test",
+    ] {
         assert!(
             head.contains(command),
             "README.md: `{command}` is not at the top"
