@@ -11,6 +11,11 @@ use super::output::Format;
 pub struct Args {
     #[command(flatten)]
     measured: MeasuredArgs,
+    /// The built-in example instead of a map: the guide's stretched surface
+    /// (self-affine H = 0.8, rms slope 0.1, stretched by γ = 3 along 30°,
+    /// 128², L = 1 mm, seed 7), synthesised (needs the feature `bem`).
+    #[arg(long, conflicts_with = "surface")]
+    example: bool,
     /// Draw log10 C(q_x, q_y), the 2-D spectrum, with the lay (the principal
     /// direction) into this file (.svg or .png).
     #[arg(long, value_name = "FILE.svg|png", value_parser = super::files::out_file)]
@@ -29,17 +34,25 @@ pub struct Args {
 pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
     use super::output::print;
     use persson::topography::{anisotropy, Conditioning};
-    let Some(map) = a.measured.spec(None)? else {
-        anyhow::bail!("persson anisotropy needs a height map: --surface FILE");
+    let (t, name, detrend, window) = match a.measured.spec(None)? {
+        Some(map) => {
+            let name = map.file.file_name().map_or_else(
+                || map.file.display().to_string(),
+                |n| n.to_string_lossy().into_owned(),
+            );
+            (map.read()?, name, map.detrend, map.window)
+        }
+        None if a.example => (example_map()?, "the built-in example".into(), None, None),
+        None => {
+            anyhow::bail!("persson anisotropy needs a height map: --surface FILE (or --example)")
+        }
     };
-    let t = map.read()?;
     let defaults = Conditioning::for_topography(&t);
     let conditioning = Conditioning {
-        detrend: map.detrend.map_or(defaults.detrend, Into::into),
-        window: map.window.map_or(defaults.window, Into::into),
+        detrend: detrend.map_or(defaults.detrend, Into::into),
+        window: window.map_or(defaults.window, Into::into),
     };
-    let report =
-        anisotropy(&t, conditioning).map_err(|e| anyhow::anyhow!("{}: {e}", map.file.display()))?;
+    let report = anisotropy(&t, conditioning).map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
     if let Some(path) = &a.spectrum_2d {
         files.write(path, &spectrum_bytes(path, &report.spectrum)?)?;
     }
@@ -51,10 +64,7 @@ pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Resul
         let fig = SpectrumMapFigure {
             title: format!(
                 "2-D spectrum of {}: Peklenik γ = {}, lay {}°",
-                map.file.file_name().map_or_else(
-                    || map.file.display().to_string(),
-                    |n| n.to_string_lossy().into_owned()
-                ),
+                name,
                 number(report.peklenik_number),
                 number(report.principal_direction)
             ),
@@ -67,6 +77,26 @@ pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Resul
         files.write(path, &fig.encode(path)?)?;
     }
     print(&report, &a.format)
+}
+
+/// The built-in example's map (the guide's `docs/data/stretched.npy`).
+#[cfg(all(feature = "topography", feature = "bem"))]
+fn example_map() -> anyhow::Result<persson::topography::Topography> {
+    use persson::spectrum::{Amplitude, SelfAffine, Stretched};
+    let (l, n) = (1e-3, 128);
+    let q = std::f64::consts::TAU / l;
+    let iso = SelfAffine::new(q, 8.0 * q, 60.0 * q, 0.8, Amplitude::RmsSlope(0.1))?;
+    let s = Stretched::new(std::sync::Arc::new(iso), 3.0, 30f64.to_radians())?;
+    let g = persson::bem::surface::synthesize_2d(&s, n, l, 7)?;
+    Ok(persson::topography::Topography::map(
+        n, n, l, l, g.heights, true,
+    )?)
+}
+
+/// Without the feature `bem`, the example cannot be synthesised.
+#[cfg(all(feature = "topography", not(feature = "bem")))]
+fn example_map() -> anyhow::Result<persson::topography::Topography> {
+    Err(super::features::left_out("bem"))
 }
 
 /// The 2-D spectrum as the bytes of `path`: `.npy` (C), else CSV (q_x,

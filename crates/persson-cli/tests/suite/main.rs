@@ -18,6 +18,7 @@ mod compare_bem;
 mod compare_table;
 mod compare_transport;
 mod compare_yield;
+mod examples;
 mod friction;
 mod front_ends;
 mod names;
