@@ -5,7 +5,7 @@
 //!
 //! Run: `cargo run --release --example persson2002_figures [out.csv] [plot-dir]`
 //! Prints the areas (the paper's captions: 0.64/0.38, 0.62/0.38, 0.61/0.37; exact values in
-//! ../shared/theory.md §3), writes the curves (figure, start, G, σ/σH, σH·P)
+//! docs/stress.md), writes the curves (figure, start, G, σ/σH, σH·P)
 //! as CSV, and with the `plot` feature draws fig2_flat.svg, fig3_hertz.svg and
 //! fig4_cylinder.svg into `plot-dir`. G = 0 is the start itself (the flat
 //! start's δ is drawn as zero).

@@ -187,7 +187,7 @@ const EDGE_FRACTIONS: [f64; 3] = [
 const REFERENCE_ULP: f64 = 0.5 * f64::EPSILON;
 
 /// erf from libm as the independent A/A0 = erf(1/(2√G)) of the contact-fraction
-/// family: 2e-16 relative (../shared/deps.md), rounding of 1/(2√G) included.
+/// family: 2e-16 relative (docs/design-notes.md, special), rounding of 1/(2√G) included.
 const ERF_ORACLE_REL: f64 = 1e-15;
 
 /// The sweep graded by this test, not by the report: every value and bound
