@@ -42,8 +42,7 @@ pub fn run(a: Args, files: &mut Files) -> anyhow::Result<()> {
     if a.out.is_some() {
         files.reserve("--out", &report_json, &[])?;
     }
-    let report = scene.run()?;
-    persson_studies::scene::write_outputs(&scene, &report, &dir, files)?;
+    let report = scene.run_and_write(&dir, files)?;
     if a.out.is_some() || a.csv {
         for t in report.tables().iter().filter(|t| !t.rows.is_empty()) {
             files.write(&dir.join(format!("{}.csv", t.name)), t.to_csv().as_bytes())?;

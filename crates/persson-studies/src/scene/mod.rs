@@ -166,6 +166,26 @@ impl Scene {
     /// The first invalid input or failed computation.
     pub fn run(&self) -> Result<SceneReport> {
         self.check_unused()?;
+        self.run_in(&self.context()?)
+    }
+
+    /// Compute every output the scene names, as [`Scene::run`], and stage
+    /// every file it asks for into `out` (in `dir`), as reserved by
+    /// [`Scene::plan`], on the same context (the rough contact built once);
+    /// the caller commits them once the whole run has succeeded.
+    ///
+    /// # Errors
+    /// As [`Scene::run`]; a plot that cannot be drawn; a staged file that
+    /// cannot be written.
+    pub fn run_and_write(&self, dir: &Path, out: &mut Files) -> Result<SceneReport> {
+        self.check_unused()?;
+        let ctx = self.context()?;
+        let report = self.run_in(&ctx)?;
+        self.outputs.write(&report, &ctx, dir, out)?;
+        Ok(report)
+    }
+
+    fn run_in(&self, ctx: &Context<'_>) -> Result<SceneReport> {
         let mut report = SceneReport {
             name: self.name.clone(),
             description: self.description.clone(),
@@ -181,8 +201,7 @@ impl Scene {
                 convention: *convention,
             });
         }
-        let ctx = self.context()?;
-        self.outputs.run(&ctx, &mut report)?;
+        self.outputs.run(ctx, &mut report)?;
         report.collect_warnings();
         Ok(report)
     }
@@ -268,22 +287,6 @@ impl Scene {
         }
         Ok(())
     }
-}
-
-/// Stage every file the scene asks for into `out`, as reserved by
-/// [`Scene::plan`]; the caller commits them once the whole run has succeeded.
-///
-/// # Errors
-/// A plot that cannot be drawn; a staged file that cannot be written.
-pub fn write_outputs(
-    scene: &Scene,
-    report: &SceneReport,
-    dir: &Path,
-    out: &mut Files,
-) -> Result<()> {
-    // The figures' smooth curves are computed again on the scene's context.
-    let ctx = scene.context()?;
-    scene.outputs.write(report, &ctx, dir, out)
 }
 
 /// serde_json's message without its trailing " at line L column C" (the

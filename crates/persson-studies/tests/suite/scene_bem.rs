@@ -150,7 +150,8 @@ mod bem {
             assert!((total - pt.contact_fraction).abs() < 1e-14, "{total}");
         }
         let mut files = persson_studies::output::Files::new();
-        persson_studies::scene::write_outputs(&s, &r, &dir, &mut files).unwrap();
+        let again = s.run_and_write(&dir, &mut files).unwrap();
+        assert_eq!(again.warnings, r.warnings);
         let written = files.commit().unwrap();
         assert_eq!(written, vec![dir.join("h.csv")]);
         let text = std::fs::read_to_string(dir.join("h.csv")).unwrap();
@@ -257,7 +258,8 @@ mod bem {
         let dir = tmp("details");
         std::fs::create_dir_all(&dir).unwrap();
         let mut files = persson_studies::output::Files::new();
-        persson_studies::scene::write_outputs(&scene, &r, &dir, &mut files).unwrap();
+        let again = scene.run_and_write(&dir, &mut files).unwrap();
+        assert_eq!(again.warnings, r.warnings);
         let written = files.commit().unwrap();
         let npy: Vec<_> = written
             .iter()
