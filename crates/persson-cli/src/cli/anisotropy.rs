@@ -34,15 +34,21 @@ pub struct Args {
 pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
     use super::output::print;
     use persson::topography::{anisotropy, Conditioning};
-    let (t, name, detrend, window) = match a.measured.spec(None)? {
+    // The map and how errors (its path as given) and the title (its file's
+    // name) call it.
+    let (t, label, detrend, window) = match a.measured.spec(None)? {
         Some(map) => {
             let name = map.file.file_name().map_or_else(
                 || map.file.display().to_string(),
                 |n| n.to_string_lossy().into_owned(),
             );
-            (map.read()?, name, map.detrend, map.window)
+            let path = map.file.display().to_string();
+            (map.read()?, (path, name), map.detrend, map.window)
         }
-        None if a.example => (example_map()?, "the built-in example".into(), None, None),
+        None if a.example => {
+            let name = "the built-in example".to_string();
+            (example_map()?, (name.clone(), name), None, None)
+        }
         None => {
             anyhow::bail!("persson anisotropy needs a height map: --surface FILE (or --example)")
         }
@@ -52,7 +58,7 @@ pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Resul
         detrend: detrend.map_or(defaults.detrend, Into::into),
         window: window.map_or(defaults.window, Into::into),
     };
-    let report = anisotropy(&t, conditioning).map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
+    let report = anisotropy(&t, conditioning).map_err(|e| anyhow::anyhow!("{}: {e}", label.0))?;
     if let Some(path) = &a.spectrum_2d {
         files.write(path, &spectrum_bytes(path, &report.spectrum)?)?;
     }
@@ -64,7 +70,7 @@ pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Resul
         let fig = SpectrumMapFigure {
             title: format!(
                 "2-D spectrum of {}: Peklenik γ = {}, lay {}°",
-                name,
+                label.1,
                 number(report.peklenik_number),
                 number(report.principal_direction)
             ),
