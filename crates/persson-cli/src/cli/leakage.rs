@@ -67,18 +67,15 @@ impl SealArgs {
         tolerance: f64,
         example: bool,
     ) -> anyhow::Result<LeakageOutput> {
-        let water = LeakageOutput::example();
-        let fluid_given = self.pressure_drop.is_some() || self.inlet_pressure.is_some();
-        let (viscosity, pressure_drop) = match (self.viscosity, example) {
-            (Some(v), _) => (v, self.pressure_drop),
-            (None, true) if !fluid_given => (water.viscosity, water.pressure_drop),
-            (None, true) => (water.viscosity, self.pressure_drop),
-            (None, false) => {
-                anyhow::bail!("no --viscosity: give the fluid's dynamic viscosity η in Pa s")
-            }
+        // The example's water seal stands in for what is not given.
+        let water = example.then(LeakageOutput::example);
+        let Some(viscosity) = self.viscosity.or(water.as_ref().map(|w| w.viscosity)) else {
+            anyhow::bail!("no --viscosity: give the fluid's dynamic viscosity η in Pa s");
         };
-        let pressure_drop =
-            pressure_drop.or(water.pressure_drop.filter(|_| example && !fluid_given));
+        let pressure_drop = match (&water, self.inlet_pressure) {
+            (Some(w), None) => self.pressure_drop.or(w.pressure_drop),
+            _ => self.pressure_drop,
+        };
         if pressure_drop.is_none() && self.inlet_pressure.is_none() {
             anyhow::bail!(
                 "no --pressure-drop: give ΔP in Pa (a liquid), or --inlet-pressure and --outlet-pressure (a gas)"

@@ -61,7 +61,7 @@ pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Resul
         return print_warned(&report, &report.warnings, &a.format);
     }
     let grid = if a.plot.plot.is_some() || a.plot_area.is_some() {
-        plot_pressures(&pressures, a.plot_points)?
+        persson_studies::study::plot_pressures(&pressures, a.plot_points)?
     } else {
         vec![]
     };
@@ -86,22 +86,4 @@ pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Resul
     #[cfg(not(feature = "plot"))]
     let _ = TheoriesOutput::default();
     print_warned(&report, &report.warnings, &a.format)
-}
-
-/// `n` log-spaced pressures spanning the given ones (σ0/100 to 100 σ0 for one).
-fn plot_pressures(given: &[f64], n: usize) -> anyhow::Result<Vec<f64>> {
-    let lo = given.iter().copied().fold(f64::INFINITY, f64::min);
-    let hi = given.iter().copied().fold(0.0, f64::max);
-    let (lo, hi) = if hi > lo {
-        (lo, hi)
-    } else {
-        (lo / 100.0, hi * 100.0)
-    };
-    if n < 2 {
-        anyhow::bail!("--plot-points {n}: need at least 2");
-    }
-    let (a, b) = (lo.ln(), hi.ln());
-    Ok((0..n)
-        .map(|i| (a + (b - a) * i as f64 / (n - 1) as f64).exp())
-        .collect())
 }

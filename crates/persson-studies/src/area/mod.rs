@@ -54,7 +54,8 @@ impl Study for Area {
     ) -> Result<()> {
         // The curve at enough pressures to look smooth, the table's own kept.
         crate::study::draw(out, dir, a.plot.as_ref(), || {
-            let p = crate::study::plot_pressures(ctx.nominal_pressure());
+            let p =
+                crate::study::plot_pressures(ctx.nominal_pressure(), crate::study::PLOT_POINTS)?;
             let dense = ctx.contact().and_then(|s| area(s, &p, a));
             figure(dense.as_ref().unwrap_or(r)).map(Box::new)
         })

@@ -299,15 +299,25 @@ pub fn draw<F: crate::plot::Encode + ?Sized>(
 /// milliseconds: enough for the curve to look smooth.
 pub const PLOT_POINTS: usize = 60;
 
-/// The nominal pressures of a figure's smooth curve through `given`:
-/// [`PLOT_POINTS`] log-spaced from the least to the greatest positive one
-/// (σ0/100 to 100 σ0 for a single σ0); `given` itself if none is positive.
-pub fn plot_pressures(given: &[f64]) -> Vec<f64> {
+/// The nominal pressures of a figure's smooth curve through `given`: `n`
+/// log-spaced from the least to the greatest positive one (σ0/100 to 100 σ0
+/// for a single σ0); `given` itself if none is positive.
+///
+/// # Errors
+/// `n` < 2 (named `plot_points`).
+pub fn plot_pressures(given: &[f64], n: usize) -> Result<Vec<f64>> {
+    if n < 2 {
+        return Err(Error::invalid(
+            "plot_points",
+            n as f64,
+            ">= 2 (the curve's two ends)",
+        ));
+    }
     let positive = given.iter().copied().filter(|p| *p > 0.0 && p.is_finite());
     let lo = positive.clone().fold(f64::INFINITY, f64::min);
     let hi = positive.fold(0.0, f64::max);
     if hi <= 0.0 {
-        return given.to_vec();
+        return Ok(given.to_vec());
     }
     let (lo, hi) = if hi > lo {
         (lo, hi)
@@ -315,14 +325,14 @@ pub fn plot_pressures(given: &[f64]) -> Vec<f64> {
         (lo / 100.0, hi * 100.0)
     };
     let (a, b) = (lo.ln(), hi.ln());
-    let last = (PLOT_POINTS - 1) as f64;
-    (0..PLOT_POINTS)
+    let last = (n - 1) as f64;
+    Ok((0..n)
         .map(|i| match i {
             0 => lo,
-            i if i == PLOT_POINTS - 1 => hi,
+            i if i == n - 1 => hi,
             i => (a + (b - a) * i as f64 / last).exp(),
         })
-        .collect()
+        .collect())
 }
 
 /// Whether `a` and `b` are the same text (for the list's compile-time check

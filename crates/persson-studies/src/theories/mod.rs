@@ -51,7 +51,8 @@ impl Study for Theories {
         out: &mut crate::output::Files,
     ) -> Result<()> {
         crate::study::draw(out, dir, t.plot.as_ref(), || {
-            let p = crate::study::plot_pressures(ctx.nominal_pressure());
+            let p =
+                crate::study::plot_pressures(ctx.nominal_pressure(), crate::study::PLOT_POINTS)?;
             let dense = ctx.contact().and_then(|s| theories(s, &p, t));
             figure(dense.as_ref().unwrap_or(r)).map(Box::new)
         })

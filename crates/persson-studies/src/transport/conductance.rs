@@ -45,7 +45,8 @@ impl Study for Conductance {
         // The theory's curve at enough pressures to look smooth (the BEM's
         // points, a solve each, as computed).
         crate::study::draw(out, dir, c.plot.as_ref(), || {
-            let p = crate::study::plot_pressures(ctx.nominal_pressure());
+            let p =
+                crate::study::plot_pressures(ctx.nominal_pressure(), crate::study::PLOT_POINTS)?;
             let theory = ConductanceOutput {
                 bem: None,
                 ..c.clone()

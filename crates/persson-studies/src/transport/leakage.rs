@@ -46,7 +46,8 @@ impl Study for Leakage {
         // The theory's curve at enough pressures to look smooth (the BEM's
         // points, a solve each, as computed).
         crate::study::draw(out, dir, l.plot.as_ref(), || {
-            let p = crate::study::plot_pressures(ctx.nominal_pressure());
+            let p =
+                crate::study::plot_pressures(ctx.nominal_pressure(), crate::study::PLOT_POINTS)?;
             let theory = LeakageOutput {
                 bem: None,
                 ..l.clone()
