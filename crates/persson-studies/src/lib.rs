@@ -52,7 +52,6 @@ pub mod kappa;
 pub mod magnification;
 pub mod naming;
 pub mod output;
-#[cfg(feature = "plot")]
 pub mod plot;
 pub mod report;
 pub mod scene;

@@ -8,9 +8,6 @@ use persson_studies::scene::{ConventionName, MaterialSpec, RoughContact, Spectru
 use super::files::{in_file, InFile};
 pub use super::measured_args::MeasuredArgs;
 use super::number::number;
-#[cfg(feature = "bem")]
-use persson::spectrum::Spectrum;
-use persson::Material;
 
 /// The built-in example: a self-affine surface (H = 0.8, q_l = 1e4 1/m,
 /// q_r = 1e5 1/m, q_s = 1e8 1/m, rms height 1 µm) on a body with E* = 1 GPa.
@@ -217,25 +214,6 @@ impl SpectrumArgs {
         }
     }
 
-    /// Build the spectrum from the flags.
-    #[cfg(feature = "bem")]
-    pub fn build(&self) -> anyhow::Result<Box<dyn Spectrum>> {
-        self.spec()?.build().map_err(|e| self.psd_hint(e))
-    }
-
-    /// The warning of a `--psd` file (the convention it was read in), for the
-    /// commands that build the spectrum without a [`RoughContact`].
-    #[cfg_attr(not(feature = "bem"), allow(dead_code))]
-    pub fn file_warnings(&self) -> Vec<persson_studies::Warning> {
-        self.psd
-            .iter()
-            .map(|file| persson_studies::Warning::PsdConvention {
-                file: file.to_path_buf(),
-                convention: self.psd_convention,
-            })
-            .collect()
-    }
-
     /// A `--psd` file that could not be read as a spectrum but looks like a
     /// height map: say so, and name `--surface`.
     pub fn psd_hint(&self, e: persson::Error) -> anyhow::Error {
@@ -288,12 +266,6 @@ impl MaterialArgs {
                 bail!("no material: give --contact-modulus E* or --young E --poisson NU")
             }
         }
-    }
-
-    /// Build the material (`example` supplies E* when nothing is given).
-    #[cfg_attr(not(feature = "bem"), allow(dead_code))]
-    pub fn build(&self, example: bool) -> anyhow::Result<Material> {
-        Ok(self.spec(example)?.build()?)
     }
 }
 

@@ -75,15 +75,12 @@ fn hertz_subsurface(h: &HertzArgs, files: &mut Files) -> anyhow::Result<()> {
     );
     bar.finish();
     let r = r?;
-    #[cfg(feature = "plot")]
     super::plot::draw(files, h.stress_plot.as_deref(), || {
         let section = persson_studies::bem_detail::hertz_section(&r)?;
         Ok(persson_studies::plot::stress_map::hertz_section_figure(
             &r, &section,
         ))
     })?;
-    #[cfg(not(feature = "plot"))]
-    let _ = files;
     print(&r, &h.format)
 }
 
@@ -209,7 +206,6 @@ fn rough_contact(a: &RoughArgs, files: &mut Files) -> anyhow::Result<()> {
     solves.bar.finish();
     let (files, details) = (solves.files, solves.details);
     let report = report?;
-    #[cfg(feature = "plot")]
     super::plot::draw(files, a.plot.as_deref(), || {
         persson_studies::plot::map::rough_map(&report)
     })?;
@@ -270,7 +266,6 @@ fn write_planes(
             files.write(&p, &npy::encode(n, n, &m.von_mises_stress)?)?;
         }
     }
-    #[cfg(feature = "plot")]
     if let Some(path) = &a.detail.stress_plot {
         use persson_studies::plot::Encode;
         let unit = if e_star == 1.0 { "E*" } else { "Pa" };
@@ -286,8 +281,6 @@ fn write_planes(
             files.write(&p, &fig.encode(&p)?)?;
         }
     }
-    #[cfg(not(feature = "plot"))]
-    let _ = (size, e_star, pressures);
     Ok(())
 }
 

@@ -1,6 +1,8 @@
 //! The flags of `persson bem` (and the solver flags `persson compare` shares).
 
 use persson::bem::{Boundary, Options};
+use persson::spectrum::Spectrum;
+use persson::Material;
 use persson::error::check;
 
 use super::args::{MaterialArgs, SpectrumArgs};
@@ -171,7 +173,7 @@ pub struct RoughArgs {
     #[arg(long, conflicts_with = "surface", allow_hyphen_values = true, value_parser = super::number::count)]
     pub grid: Option<usize>,
     /// Seed of the synthesised surface (Pcg64Mcg, value-stable).
-    #[arg(long, default_value = "1", conflicts_with = "surface", allow_hyphen_values = true, value_parser = super::number::seed)]
+    #[arg(long, default_value = "1", conflicts_with = "surface", allow_hyphen_values = true, value_parser = seed)]
     pub seed: u64,
     #[command(flatten)]
     pub spectrum: SpectrumArgs,
@@ -296,4 +298,46 @@ pub struct AdhesionBemArgs {
     /// resolves the cohesive zone, see docs/adhesion.md).
     #[arg(long, default_value = "auto", requires = "work_of_adhesion", value_parser = ["auto", "plain", "preconditioned"])]
     pub adhesive_iteration: String,
+}
+
+// What only the BEM's commands ask of the common flags.
+
+impl SpectrumArgs {
+    /// Build the spectrum from the flags.
+    pub fn build(&self) -> anyhow::Result<Box<dyn Spectrum>> {
+        self.spec()?.build().map_err(|e| self.psd_hint(e))
+    }
+
+    /// The warning of a `--psd` file (the convention it was read in), for the
+    /// commands that build the spectrum without a [`RoughContact`].
+    pub fn file_warnings(&self) -> Vec<persson_studies::Warning> {
+        self.psd
+            .iter()
+            .map(|file| persson_studies::Warning::PsdConvention {
+                file: file.to_path_buf(),
+                convention: self.psd_convention,
+            })
+            .collect()
+    }
+}
+
+impl MaterialArgs {
+    /// Build the material (`example` supplies E* when nothing is given).
+    pub fn build(&self, example: bool) -> anyhow::Result<Material> {
+        Ok(self.spec(example)?.build()?)
+    }
+}
+
+/// As [`super::number::count`], for a seed (an integer from 0 to 2⁶⁴ − 1).
+pub fn seed(s: &str) -> Result<u64, String> {
+    let t = s.trim();
+    if let Ok(v) = t.parse::<u64>() {
+        return Ok(v);
+    }
+    match t.parse::<f64>() {
+        Ok(v) => Err(format!(
+            "must be an integer from 0 to 18446744073709551615 (a seed), got {v}"
+        )),
+        Err(_) => Err(format!("`{s}` is not a seed: give an integer >= 0")),
+    }
 }

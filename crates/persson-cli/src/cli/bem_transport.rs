@@ -6,6 +6,7 @@ use anyhow::bail;
 use persson::bem::rough::Observer;
 use persson::bem::Boundary;
 use persson_studies::scene::transport::{self, TransportRequest};
+use persson_studies::scene::transport_bem::TransportObserver;
 use persson_studies::scene::{BemTransportPoint, RoughTransportReport};
 use persson_studies::Warning;
 
@@ -60,9 +61,8 @@ pub fn request(a: &RoughArgs) -> anyhow::Result<Option<TransportRequest>> {
 pub enum Observed<'a> {
     /// Only the CLI's.
     Plain(&'a mut dyn Observer),
-    /// With the conductance and flow of each solve.
-    #[cfg(feature = "flow")]
-    Transport(Box<persson_studies::scene::transport_bem::TransportObserver<'a>>),
+    /// With the conductance and flow of each solve (feature `flow`).
+    Transport(Box<TransportObserver<'a>>),
 }
 
 impl<'a> Observed<'a> {
@@ -74,27 +74,18 @@ impl<'a> Observed<'a> {
         pressures: &[f64],
         tolerance: f64,
     ) -> anyhow::Result<Self> {
-        match request {
-            None => Ok(Observed::Plain(inner)),
-            #[cfg(feature = "flow")]
-            Some(r) => Ok(Observed::Transport(Box::new(
-                persson_studies::scene::transport_bem::TransportObserver::new(
-                    inner, grid.0, grid.1, grid.2, pressures, tolerance, r,
-                )?,
-            ))),
-            #[cfg(not(feature = "flow"))]
-            Some(_) => {
-                let _ = (grid, pressures, tolerance);
-                Err(super::features::left_out("flow"))
-            }
-        }
+        Ok(match request {
+            None => Observed::Plain(inner),
+            Some(r) => Observed::Transport(Box::new(TransportObserver::new(
+                inner, grid.0, grid.1, grid.2, pressures, tolerance, r,
+            )?)),
+        })
     }
 
     /// The observer to pass to the solves.
     pub fn observer(&mut self) -> &mut dyn Observer {
         match self {
             Observed::Plain(o) => *o,
-            #[cfg(feature = "flow")]
             Observed::Transport(t) => t.as_mut(),
         }
     }
@@ -103,7 +94,6 @@ impl<'a> Observed<'a> {
     pub fn finish(self) -> Option<Vec<BemTransportPoint>> {
         match self {
             Observed::Plain(_) => None,
-            #[cfg(feature = "flow")]
             Observed::Transport(t) => Some(t.into_points()),
         }
     }

@@ -5,23 +5,13 @@ use persson_studies::validation::{Comparison, KappaStudy};
 
 use super::compare_args::{KappaArgs, MainArgs};
 
-#[cfg(not(feature = "plot"))]
-pub fn comparison(_: &MainArgs, _: &Comparison, _: &mut Files) -> anyhow::Result<()> {
-    Ok(())
-}
 
-#[cfg(not(feature = "plot"))]
-pub fn kappa(_: &KappaArgs, _: &KappaStudy, _: &mut Files) -> anyhow::Result<()> {
-    Ok(())
-}
 
-#[cfg(feature = "plot")]
 fn xy(x: &[f64], y: &[f64]) -> Vec<(f64, f64)> {
     x.iter().copied().zip(y.iter().copied()).collect()
 }
 
 /// A/A0 against σ0 (`--plot`) and the pressure distribution (`--plot-histogram[-log]`).
-#[cfg(feature = "plot")]
 pub fn comparison(a: &MainArgs, r: &Comparison, files: &mut Files) -> anyhow::Result<()> {
     use persson_studies::plot::{Axis, Encode, Figure, Series, Style};
     use persson_studies::validation::asperity;
@@ -124,7 +114,6 @@ pub fn comparison(a: &MainArgs, r: &Comparison, files: &mut Files) -> anyhow::Re
 /// The δ-peaks at σY (weight A_pl/A0) of the BEM and of the theory, each a
 /// vertical bar at σY as high as one histogram bin of that weight (A_pl/Δσ),
 /// labelled with A_pl/A0.
-#[cfg(feature = "plot")]
 fn plastic_peaks(
     fig: &mut persson_studies::plot::Figure,
     d: &persson_studies::validation::report::PressureDistribution,
@@ -168,7 +157,6 @@ fn plastic_peaks(
 }
 
 /// κ against H with error bars, next to Persson's and Bush's κ (`--plot`).
-#[cfg(feature = "plot")]
 pub fn kappa(a: &KappaArgs, r: &KappaStudy, files: &mut Files) -> anyhow::Result<()> {
     use persson_studies::plot::{Axis, Figure, Series, Style, PALETTE};
     a.plot.draw(files, || {

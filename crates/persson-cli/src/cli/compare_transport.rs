@@ -90,7 +90,6 @@ impl TransportArgs {
 }
 
 /// `FILE.ext` → `FILE_<what>.ext`: the transport figures beside `--plot`'s.
-#[cfg(feature = "plot")]
 fn sibling(path: &std::path::Path, what: &str) -> std::path::PathBuf {
     let stem = path.file_stem().unwrap_or_default().to_string_lossy();
     let name = match path.extension() {
@@ -103,7 +102,6 @@ fn sibling(path: &std::path::Path, what: &str) -> std::path::PathBuf {
 /// With `--plot FILE` and `--leakage` / `--conductance`: Q(σ0) into
 /// `FILE_leakage.ext` and h(σ0) into `FILE_conductance.ext`, log–log, the
 /// theories as lines and the BEM as markers on one figure each.
-#[cfg(feature = "plot")]
 pub fn plot(
     path: Option<&std::path::Path>,
     r: &persson_studies::validation::Comparison,

@@ -21,3 +21,16 @@ pub fn left_out(feature: &str) -> anyhow::Error {
          `cargo install --path crates/persson-cli --features full`"
     )
 }
+
+/// `bem` and `compare` in a build without the feature `bem`: taken, and
+/// refused naming it.
+#[cfg(not(feature = "bem"))]
+pub mod bem {
+    /// Whatever follows the command.
+    pub type Args = super::LeftOut;
+
+    /// The error naming the feature.
+    pub fn run(_: Args, _: &mut persson_studies::output::Files) -> anyhow::Result<()> {
+        Err(super::left_out("bem"))
+    }
+}

@@ -38,6 +38,8 @@ mod stress;
 mod study;
 
 use clap::{Parser, Subcommand};
+#[cfg(not(feature = "bem"))]
+use features::{bem, bem as compare};
 
 /// Contact mechanics of randomly rough surfaces (Persson's theory).
 ///
@@ -73,18 +75,10 @@ enum Cmd {
     Separation(separation::Args),
     /// Adhesion: stickiness per magnification, A/A0 against load (tension included), pull-off.
     Adhesion(adhesion::Args),
-    /// FFT boundary-element cross-check: Hertz validation and rough contact.
-    #[cfg(feature = "bem")]
+    /// FFT boundary-element cross-check: Hertz validation and rough contact (feature `bem`).
     Bem(bem::Args),
-    /// Theories against the BEM at several resolutions, its continuum limit, κ and your data.
-    #[cfg(feature = "bem")]
+    /// Theories against the BEM at several resolutions, its continuum limit, κ and your data (feature `bem`).
     Compare(compare::Args),
-    /// FFT boundary-element cross-check (needs the feature `bem`).
-    #[cfg(not(feature = "bem"))]
-    Bem(features::LeftOut),
-    /// Theories against the BEM (needs the feature `bem`).
-    #[cfg(not(feature = "bem"))]
-    Compare(features::LeftOut),
     /// Rubber friction μ(v, T, σ0) and A/A0 from a viscoelastic master curve (Persson 2001, 2006).
     Friction(friction::Args),
     /// Thermal and electrical contact conductance against load (Barber's identity; gap over P(u)).
@@ -123,12 +117,8 @@ fn stage(cli: Cli, matches: &clap::ArgMatches) -> anyhow::Result<persson_studies
         Cmd::Stress(a) => stress::run(a, o),
         Cmd::Separation(a) => separation::run(a, o),
         Cmd::Adhesion(a) => adhesion::run(a, o),
-        #[cfg(feature = "bem")]
         Cmd::Bem(a) => bem::run(a, o),
-        #[cfg(feature = "bem")]
         Cmd::Compare(a) => compare::run(a, o),
-        #[cfg(not(feature = "bem"))]
-        Cmd::Bem(_) | Cmd::Compare(_) => Err(features::left_out("bem")),
         Cmd::Friction(a) => friction::run(a, o),
         Cmd::Conductance(a) => conductance::run(a, o),
         Cmd::Leakage(a) => leakage::run(a, o),

@@ -4,7 +4,6 @@
 //! The file was checked before anything was computed ([`super::files`]);
 //! after computing, a subcommand draws its figure:
 //! ```text
-//! #[cfg(feature = "plot")]
 //! a.plot.draw(files, || persson_studies::scene::plot::area(&report))?;
 //! ```
 
@@ -27,7 +26,6 @@ impl PlotArg {
     }
 
     /// Stages the figure made by `build` for the `--plot` file, if given.
-    #[cfg(feature = "plot")]
     pub fn draw<F: persson_studies::plot::Encode>(
         &self,
         files: &mut persson_studies::output::Files,
@@ -39,7 +37,6 @@ impl PlotArg {
 
 /// Stages the figure made by `build` for `path`, if given (the format by
 /// its extension); written when the whole command has succeeded.
-#[cfg(feature = "plot")]
 pub fn draw<F: persson_studies::plot::Encode>(
     files: &mut persson_studies::output::Files,
     path: Option<&Path>,

@@ -33,12 +33,10 @@ enum Which {
 }
 
 /// Run `persson report`.
-#[cfg_attr(not(feature = "plot"), allow(unused_variables))]
 pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
     match a.which {
         Which::Accuracy { full, format, plot } => {
             let r = report::accuracy(if full { Extent::Full } else { Extent::Default })?;
-            #[cfg(feature = "plot")]
             plot.draw(files, || {
                 let methods: Vec<(&str, Vec<(f64, f64)>)> = r
                     .methods

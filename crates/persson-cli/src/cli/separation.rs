@@ -47,7 +47,6 @@ pub struct Args {
 }
 
 /// Run `persson separation`.
-#[cfg_attr(not(feature = "plot"), allow(unused_variables))]
 pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
     let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
     let pressures = pressures(&a.pressure, a.spectrum.example)?;
@@ -74,7 +73,6 @@ pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Resul
         &[]
     };
     let report = run::separation(&surface, &pressures, &out, curve)?;
-    #[cfg(feature = "plot")]
     {
         use persson_studies::scene::plot;
         a.plot.draw(files, || plot::separation(&report))?;
@@ -83,7 +81,5 @@ pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Resul
             super::plot::draw(files, a.plot_area.as_deref(), || plot::theories(&theories))?;
         }
     }
-    #[cfg(not(feature = "plot"))]
-    let _ = TheoriesOutput::default();
     print_warned(&report, &report.warnings, &a.format)
 }

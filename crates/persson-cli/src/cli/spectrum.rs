@@ -58,7 +58,6 @@ pub fn run(a: Args, files: &mut Files) -> anyhow::Result<()> {
             report.warnings.push(w);
         }
     }
-    #[cfg(feature = "plot")]
     a.plot
         .draw(files, || persson_studies::scene::plot::spectrum(&report))?;
     print_warned(&report, &report.warnings, &a.format)
@@ -75,7 +74,6 @@ fn measured(
     if let Some(path) = &a.psd_out {
         files.write(path, report.psd.to_csv().as_bytes())?;
     }
-    #[cfg(feature = "plot")]
     a.plot.draw(files, || {
         persson_studies::scene::plot::measured_spectrum(&report)
     })?;
@@ -101,7 +99,6 @@ fn multi_scale(a: &Args, files: &mut Files) -> anyhow::Result<()> {
         anyhow::bail!("several --surface files expected");
     };
     let report = persson_studies::scene::multiscale::multi_scale(&measurements)?;
-    #[cfg(feature = "plot")]
     a.plot
         .draw(files, || persson_studies::scene::plot::multi_scale(&report))?;
     if let Some(path) = &a.psd_out {

@@ -138,7 +138,6 @@ pub struct Args {
 }
 
 /// Run `persson stress`.
-#[cfg_attr(not(feature = "plot"), allow(unused_variables))]
 pub fn run(mut a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
     // The example: a flat punch at σ0 = 1 MPa on the example surface, its
     // P(σ, ζ) at four magnifications.
@@ -187,7 +186,6 @@ pub fn run(mut a: Args, files: &mut persson_studies::output::Files) -> anyhow::R
         &a.sigma_ratio,
         a.points,
     )?;
-    #[cfg(feature = "plot")]
     a.plot
         .draw(files, || persson_studies::scene::plot::stress(&report))?;
     print_warned(&report, &report.warnings, &a.format)

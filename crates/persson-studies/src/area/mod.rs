@@ -3,7 +3,6 @@
 use persson::error::Result;
 
 mod asperity;
-#[cfg(feature = "plot")]
 mod plot;
 mod report;
 mod run;
@@ -11,7 +10,6 @@ mod spec;
 
 use crate::study::{plot_file, Context, Inputs, OutFile, Reads, Study};
 use crate::warning::Warning;
-#[cfg(feature = "plot")]
 pub use plot::area as figure;
 pub(crate) use report::theory_heading;
 pub use report::{AreaReport, LoadPoint};
@@ -44,7 +42,6 @@ impl Study for Area {
             .collect()
     }
 
-    #[cfg(feature = "plot")]
     fn write(
         a: &AreaOutput,
         r: &AreaReport,

@@ -80,16 +80,10 @@ impl Study for Bem {
     }
 }
 
-#[cfg(all(feature = "bem", feature = "plot"))]
+#[cfg(feature = "bem")]
 pub mod figures;
-cfg_feature! {
-    "bem",
-    mod rough;
-    pub(crate) mod solve;
-    pub use rough::{entries, run, warnings, write, Report};
-}
-
-#[cfg(not(feature = "bem"))]
-mod unavailable;
-#[cfg(not(feature = "bem"))]
-use unavailable::{entries, run, warnings, write, Report};
+#[cfg_attr(not(feature = "bem"), path = "unavailable.rs")]
+mod rough;
+#[cfg(feature = "bem")]
+pub(crate) mod solve;
+use rough::{entries, run, warnings, write, Report};

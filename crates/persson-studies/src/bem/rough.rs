@@ -86,10 +86,7 @@ pub fn write(
     dir: &Path,
     out: &mut Files,
 ) -> Result<()> {
-    #[cfg(feature = "plot")]
     plots(b, r, ctx, dir, out)?;
-    #[cfg(not(feature = "plot"))]
-    let _ = ctx;
     if let Some(file) = &b.histogram {
         if let Some(t) = r
             .rough
@@ -115,7 +112,6 @@ pub fn write(
 
 /// The plots of the solves, the patches and the stress below them, each
 /// plane's von Mises map beside the depth plot (`_k_j` added).
-#[cfg(feature = "plot")]
 fn plots(b: &BemOutput, r: &Report, ctx: &Context<'_>, dir: &Path, out: &mut Files) -> Result<()> {
     use super::figures as plot;
     use crate::plot::Encode;

@@ -3,7 +3,7 @@
 
 use persson::error::Result;
 
-#[cfg(feature = "bem")]
+#[cfg_attr(not(feature = "bem"), path = "off.rs")]
 mod run;
 mod spec;
 
@@ -13,11 +13,10 @@ pub use spec::*;
 /// The study `bem_adhesion`.
 pub struct BemAdhesion;
 
-#[cfg(feature = "bem")]
 impl Study for BemAdhesion {
     const KEY: &'static str = "bem_adhesion";
     type Spec = BemAdhesionOutput;
-    type Report = crate::bem_detail::AdhesiveBemReport;
+    type Report = run::Report;
 
     fn reads(_: &BemAdhesionOutput, _: &Inputs<'_>) -> Reads {
         Reads {
@@ -32,21 +31,6 @@ impl Study for BemAdhesion {
     }
 
     fn warnings(r: &Self::Report) -> Vec<crate::warning::Warning> {
-        crate::bem_detail::adhesive_warnings(r)
-    }
-}
-
-#[cfg(not(feature = "bem"))]
-impl Study for BemAdhesion {
-    const KEY: &'static str = "bem_adhesion";
-    type Spec = BemAdhesionOutput;
-    type Report = crate::study::Unavailable;
-
-    fn reads(_: &BemAdhesionOutput, _: &Inputs<'_>) -> Reads {
-        Reads::NOTHING
-    }
-
-    fn run(_: &Context<'_>, _: &BemAdhesionOutput) -> Result<Self::Report> {
-        Err(crate::study::unavailable(Self::KEY, "bem"))
+        run::warnings(r)
     }
 }

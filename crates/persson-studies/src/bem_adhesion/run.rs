@@ -7,6 +7,8 @@ use crate::bem::solve::bem_surface;
 use crate::input::BoundaryName;
 use crate::naming::prefix;
 
+pub use crate::bem_detail::{adhesive_warnings as warnings, AdhesiveBemReport as Report};
+
 /// `outputs.bem_adhesion`: the adhesive FFT-BEM along the scene's path of
 /// mean gaps (or approaches), on the scene's surface
 /// ([`crate::bem_detail::adhesive_controlled_path`], the loop of `persson bem

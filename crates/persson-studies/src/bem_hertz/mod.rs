@@ -3,7 +3,7 @@
 use persson::error::Result;
 
 mod report;
-#[cfg(feature = "bem")]
+#[cfg_attr(not(feature = "bem"), path = "off.rs")]
 mod run;
 mod spec;
 
@@ -28,10 +28,4 @@ impl Study for BemHertz {
     }
 }
 
-#[cfg(feature = "bem")]
 use run::bem_hertz as hertz;
-
-#[cfg(not(feature = "bem"))]
-fn hertz(_: &BemHertzOutput) -> Result<BemHertzReport> {
-    Err(crate::study::unavailable(BemHertz::KEY, "bem"))
-}

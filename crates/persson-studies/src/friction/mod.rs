@@ -2,7 +2,6 @@
 
 use persson::error::Result;
 
-#[cfg(feature = "plot")]
 mod plot;
 mod report;
 mod run;
@@ -10,7 +9,6 @@ mod spec;
 
 use crate::study::{plot_file, Context, Inputs, OutFile, Reads, Study};
 use crate::warning::Warning;
-#[cfg(feature = "plot")]
 pub use plot::friction as figure;
 pub use report::*;
 pub use run::*;
@@ -57,7 +55,6 @@ impl Study for Friction {
             .collect()
     }
 
-    #[cfg(feature = "plot")]
     fn write(
         f: &FrictionOutput,
         r: &FrictionReport,

@@ -19,15 +19,21 @@ use persson::material::{Body, Material};
 
 use crate::naming::required;
 
-/// Defines a closed set of names: serde and (feature `cli`) clap spell the
-/// variants in kebab-case, the same strings in scenes and on the command line.
+/// Defines a closed set of names: serde and (feature `clap`) clap spell each
+/// variant as its string, the same in scenes and on the command line.
 macro_rules! names {
     ($(#[$m:meta])* $name:ident { $($(#[$vm:meta])* $v:ident = $s:literal),+ $(,)? }) => {
         $(#[$m])*
         #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, JsonSchema)]
         #[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
-        #[serde(rename_all = "kebab-case")]
-        pub enum $name { $($(#[$vm])* $v),+ }
+        pub enum $name {
+            $(
+                $(#[$vm])*
+                #[serde(rename = $s)]
+                #[cfg_attr(feature = "clap", value(name = $s))]
+                $v
+            ),+
+        }
 
         impl $name {
             /// Every value, in order.

@@ -18,18 +18,14 @@ use persson::friction::{
 /// 20 °C, where its modulus does not depend on T and T only labels results.
 pub const DEFAULT_REFERENCE_TEMPERATURE: f64 = 293.15;
 
-/// The unit of a master curve's frequency column.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, JsonSchema)]
-#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
-pub enum FrequencyUnitName {
-    /// Angular frequency ω in rad/s.
-    #[serde(rename = "rad/s")]
-    #[cfg_attr(feature = "clap", value(name = "rad/s"))]
-    RadPerSecond,
-    /// Frequency f in Hz (ω = 2π f).
-    #[serde(rename = "Hz")]
-    #[cfg_attr(feature = "clap", value(name = "Hz"))]
-    Hertz,
+names! {
+    /// The unit of a master curve's frequency column.
+    FrequencyUnitName {
+        /// Angular frequency ω in rad/s.
+        RadPerSecond = "rad/s",
+        /// Frequency f in Hz (ω = 2π f).
+        Hertz = "Hz",
+    }
 }
 
 impl From<FrequencyUnitName> for FrequencyUnit {

@@ -2,7 +2,6 @@
 
 use persson::error::Result;
 
-#[cfg(feature = "plot")]
 mod plot;
 mod report;
 mod run;
@@ -10,7 +9,6 @@ mod spec;
 
 use crate::study::{plot_file, Context, Inputs, OutFile, Reads, Study};
 use crate::warning::Warning;
-#[cfg(feature = "plot")]
 pub use plot::{magnification_area, magnification_g};
 pub use report::*;
 pub use run::magnification;
@@ -46,7 +44,6 @@ impl Study for Magnification {
         .collect()
     }
 
-    #[cfg(feature = "plot")]
     fn write(
         m: &MagnificationOutput,
         r: &MagnificationReport,

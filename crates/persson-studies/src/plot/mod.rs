@@ -42,16 +42,16 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-mod canvas;
-mod draw;
 mod figure;
 pub mod figures;
 pub mod map;
-mod prepare;
+// Everything that touches the plotting library: one gate. Without the
+// feature every figure still builds (its data are the report's), and
+// encoding one says which feature it needs.
+#[cfg_attr(not(feature = "plot"), path = "render_off.rs")]
+mod render;
 pub mod spectrum_map;
-mod stack;
 pub mod stress_map;
-mod ticks;
 
 pub use figure::*;
 pub use figures::{
@@ -113,33 +113,6 @@ pub trait Encode {
     fn encode(&self, path: &Path) -> Result<Vec<u8>>;
 }
 
-impl Encode for Figure {
-    fn encode(&self, path: &Path) -> Result<Vec<u8>> {
-        let format = Format::from_path(path)?;
-        draw::ensure_font(path)?;
-        match format {
-            Format::Svg => {
-                let prepared = prepare::prepare(self, 1, &draw::measure)?;
-                let svg = draw::svg_string(&prepared).map_err(|e| backend_error(path, e))?;
-                Ok(svg.into_bytes())
-            }
-            Format::Png => {
-                // Drawn at k× the size (fonts and lines scale along) and
-                // averaged down: anti-aliased lines and text.
-                let k = draw::supersampling(self.size);
-                let big = (self.size.0 * k, self.size.1 * k);
-                let prepared = prepare::prepare(self, k, &draw::measure)?;
-                let pixels = draw::rgb_pixels(&prepared).map_err(|e| backend_error(path, e))?;
-                let pixels = draw::downsample(&pixels, big, k);
-                draw::png_bytes(self.size, &pixels).map_err(|source| Error::Io {
-                    path: path.to_path_buf(),
-                    source,
-                })
-            }
-        }
-    }
-}
-
 /// Draws `fig` into `path` as SVG or PNG (by extension), atomically
 /// ([`persson::io::write_atomic`]): a failure never leaves a half-written
 /// file and never touches an existing one.
@@ -154,17 +127,11 @@ pub fn render<F: Encode + ?Sized>(fig: &F, path: &Path) -> Result<()> {
 /// Draws `fig` as an SVG document in memory (for embedding, or tests).
 ///
 /// # Errors
-/// As [`render`], except the file errors.
-pub fn render_svg_string(fig: &Figure) -> Result<String> {
-    let here = Path::new("<svg string>");
-    draw::ensure_font(here)?;
-    let prepared = prepare::prepare(fig, 1, &draw::measure)?;
-    draw::svg_string(&prepared).map_err(|e| backend_error(here, e))
-}
-
-fn backend_error(path: &Path, message: String) -> Error {
-    Error::Io {
-        path: path.to_path_buf(),
-        source: std::io::Error::other(format!("plot rendering failed: {message}")),
-    }
+/// As [`Encode::encode`] of a `.svg` file.
+pub fn render_svg_string<F: Encode + ?Sized>(fig: &F) -> Result<String> {
+    let here = Path::new("figure.svg");
+    String::from_utf8(fig.encode(here)?).map_err(|e| Error::Io {
+        path: here.to_path_buf(),
+        source: std::io::Error::other(e),
+    })
 }

@@ -34,7 +34,6 @@ use crate::output::Files;
 
 mod list;
 pub mod multiscale;
-#[cfg(feature = "plot")]
 pub mod plot;
 pub mod report;
 pub mod run;
@@ -49,7 +48,6 @@ pub use crate::friction::{friction, friction_on, MAX_VELOCITIES};
 pub use crate::input::describe;
 pub use crate::separation_density;
 pub use crate::transport;
-#[cfg(feature = "flow")]
 pub use crate::transport::bem as transport_bem;
 pub use list::{Outputs, SceneReport};
 pub use report::*;

@@ -3,7 +3,6 @@
 
 use persson::error::Result;
 
-#[cfg(feature = "plot")]
 mod plot;
 mod report;
 mod run;
@@ -11,7 +10,6 @@ mod spec;
 
 use crate::study::{Context, Inputs, Reads, Study};
 use crate::warning::Warning;
-#[cfg(feature = "plot")]
 pub use plot::separation as figure;
 pub use report::*;
 pub use run::separation;

@@ -5,7 +5,6 @@ use persson::error::Result;
 use crate::contact::spectrum_warnings;
 use crate::input::{SpectrumSpec, EXAMPLE};
 
-#[cfg(feature = "plot")]
 mod plot;
 mod report;
 mod run;
@@ -13,9 +12,8 @@ mod spec;
 
 use crate::study::{plot_file, Context, Inputs, OutFile, Reads, Study};
 use crate::warning::Warning;
-#[cfg(all(feature = "plot", feature = "topography"))]
+#[cfg(feature = "topography")]
 pub use plot::measured_spectrum;
-#[cfg(feature = "plot")]
 pub use plot::spectrum as figure;
 pub use report::*;
 pub use run::spectrum;
@@ -63,7 +61,6 @@ impl Study for Spectrum {
             .collect()
     }
 
-    #[cfg(feature = "plot")]
     fn write(
         s: &SpectrumOutput,
         r: &SpectrumReport,

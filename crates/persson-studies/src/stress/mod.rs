@@ -4,7 +4,6 @@
 use persson::error::Result;
 use persson::stress::Start;
 
-#[cfg(feature = "plot")]
 mod plot;
 mod report;
 mod run;
@@ -12,7 +11,6 @@ mod spec;
 
 use crate::study::{plot_file, Context, Inputs, OutFile, Reads, Study};
 use crate::warning::Warning;
-#[cfg(feature = "plot")]
 pub use plot::stress as figure;
 pub use report::*;
 pub use run::{stress_dimensionless, stress_physical};
@@ -60,7 +58,6 @@ impl Study for Stress {
             .collect()
     }
 
-    #[cfg(feature = "plot")]
     fn write(
         st: &StressOutput,
         r: &StressReport,

@@ -281,7 +281,6 @@ pub fn plot_file(key: &str, field: &str, path: Option<&PathBuf>) -> Option<OutFi
 ///
 /// # Errors
 /// A figure that cannot be drawn or encoded; a file that cannot be staged.
-#[cfg(feature = "plot")]
 pub fn draw<F: crate::plot::Encode + ?Sized>(
     out: &mut Files,
     dir: &Path,

@@ -2,7 +2,6 @@
 
 use persson::error::Result;
 
-#[cfg(feature = "plot")]
 mod plot;
 mod report;
 mod run;
@@ -10,7 +9,6 @@ mod spec;
 
 use crate::study::{plot_file, Context, Inputs, OutFile, Reads, Study};
 use crate::warning::Warning;
-#[cfg(feature = "plot")]
 pub use plot::theories as figure;
 pub use report::*;
 pub use run::theories;
@@ -42,7 +40,6 @@ impl Study for Theories {
             .collect()
     }
 
-    #[cfg(feature = "plot")]
     fn write(
         t: &TheoriesOutput,
         r: &TheoriesReport,

@@ -34,7 +34,6 @@ impl Study for Conductance {
             .collect()
     }
 
-    #[cfg(feature = "plot")]
     fn write(
         c: &ConductanceOutput,
         r: &ConductanceReport,

@@ -35,7 +35,6 @@ impl Study for Leakage {
             .collect()
     }
 
-    #[cfg(feature = "plot")]
     fn write(
         l: &LeakageOutput,
         r: &LeakageReport,

@@ -13,11 +13,10 @@
 //! | `report` | what they computed, with their tables |
 //! | `plot` | their figures (feature `plot`) |
 
-#[cfg(feature = "flow")]
+#[cfg_attr(not(feature = "flow"), path = "bem_off.rs")]
 pub mod bem;
 mod conductance;
 mod leakage;
-#[cfg(feature = "plot")]
 mod plot;
 pub mod report;
 mod request;
@@ -26,7 +25,6 @@ mod spec;
 
 pub use conductance::Conductance;
 pub use leakage::Leakage;
-#[cfg(feature = "plot")]
 pub use plot::{conductance as conductance_figure, leakage as leakage_figure};
 pub use report::*;
 pub use run::*;

@@ -3,6 +3,12 @@
 
 use serde::Serialize;
 
+cfg_feature! {
+    "bem",
+    mod rough;
+    pub use rough::RoughTransportReport;
+}
+
 use crate::table::{number, Table, Tabulate};
 use persson::conductance::ConductancePoint;
 use persson::leakage::{CriticalJunctionPoint, EffectiveMediumPoint, LeakStatus};
@@ -435,37 +441,6 @@ impl LeakageReport {
             ]);
         }
         t
-    }
-}
-
-/// An FFT-BEM rough contact with its conductance and leak rate per load
-/// (`persson bem rough --conductivity/--resistivity/--leakage`): the rough
-/// report's keys, and `transport` with one point per load.
-#[cfg(feature = "bem")]
-#[derive(Debug, Clone, PartialEq, Serialize)]
-#[non_exhaustive]
-pub struct RoughTransportReport {
-    /// The contact.
-    #[serde(flatten)]
-    pub rough: persson::bem::rough::RoughReport,
-    /// The transport values of each solve, in the order of `points`.
-    pub transport: Vec<BemTransportPoint>,
-}
-
-#[cfg(feature = "bem")]
-impl RoughTransportReport {
-    /// The report of a contact and its transport values.
-    pub fn new(rough: persson::bem::rough::RoughReport, transport: Vec<BemTransportPoint>) -> Self {
-        RoughTransportReport { rough, transport }
-    }
-}
-
-#[cfg(feature = "bem")]
-impl Tabulate for RoughTransportReport {
-    fn tables(&self) -> Vec<Table> {
-        let mut out = self.rough.tables();
-        out.push(transport_table(&self.transport));
-        out
     }
 }
 

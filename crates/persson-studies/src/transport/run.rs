@@ -391,7 +391,6 @@ fn sealed_warning(method: &str, sealed: &[(f64, f64)], threshold: Option<f64>) -
 }
 
 /// The FFT-BEM beside a theory (feature `flow`).
-#[cfg(feature = "flow")]
 fn bem(
     surface: &RoughContact,
     pressures: &[f64],
@@ -405,18 +404,4 @@ fn bem(
         b,
         request,
     )
-}
-
-/// Without the feature `flow`, a BEM beside the theory is an error.
-#[cfg(not(feature = "flow"))]
-fn bem(
-    _surface: &RoughContact,
-    _pressures: &[f64],
-    _b: &TransportBem,
-    _request: &TransportRequest,
-) -> Result<BemTransportReport> {
-    Err(Error::Inconsistent {
-        name: "bem".into(),
-        requirement: "needs a persson built with the `flow` feature".into(),
-    })
 }

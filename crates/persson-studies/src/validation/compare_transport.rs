@@ -299,7 +299,6 @@ pub struct TransportComparison {
 }
 
 /// The surfaces of the comparison on every grid of `config`, per seed.
-#[cfg_attr(not(feature = "flow"), allow(dead_code))]
 pub(super) enum Surfaces<'a> {
     /// Synthesised from the band-limited spectrum.
     Synthesised(&'a dyn Spectrum),
@@ -307,7 +306,6 @@ pub(super) enum Surfaces<'a> {
     BandLimitedMap(&'a GridSurface, f64),
 }
 
-#[cfg_attr(not(feature = "flow"), allow(dead_code))]
 impl Surfaces<'_> {
     pub(super) fn seeds<'s>(&self, seeds: &'s [u64]) -> &'s [u64] {
         match self {
@@ -375,7 +373,6 @@ fn theory(
 }
 
 /// The BEM's transport points, `[grid][seed][pressure]` in the caller's order.
-#[cfg(feature = "flow")]
 fn bem_points(
     surfaces: &Surfaces<'_>,
     e_star: f64,
@@ -405,20 +402,6 @@ fn bem_points(
         }
     }
     Ok(out)
-}
-
-#[cfg(not(feature = "flow"))]
-fn bem_points(
-    _: &Surfaces<'_>,
-    _: f64,
-    _: &[f64],
-    _: &SweepConfig,
-    _: &TransportRequest,
-) -> Result<Vec<Vec<Vec<BemTransportPoint>>>> {
-    Err(Error::Inconsistent {
-        name: "leakage / conductance".into(),
-        requirement: "needs a persson built with the `flow` feature".into(),
-    })
 }
 
 /// Mean over the seeds of `f` at each pressure.

@@ -23,6 +23,16 @@ use serde::{Serialize, Serializer};
 use crate::input::ConventionName;
 
 mod text;
+cfg_feature! {
+    "bem",
+    mod rough;
+    pub use rough::{of_rough, preconditioner_fallback};
+}
+cfg_feature! {
+    "topography",
+    mod measured;
+    pub use measured::{of_measured, of_notes};
+}
 
 /// σ0 above this fraction of E* is warned of ([`Warning::HighPressure`]).
 pub const HIGH_PRESSURE_RATIO: f64 = 0.1;
@@ -484,17 +494,6 @@ impl<'a, R: Serialize> Warned<'a, R> {
     }
 }
 
-/// [`Warning::PreconditionerFallback`] when some solve of `points` fell back
-/// to the plain solver ([`persson::bem::rough::RoughPoint::fallback`]).
-#[cfg(feature = "bem")]
-pub fn preconditioner_fallback(points: &[persson::bem::rough::RoughPoint]) -> Option<Warning> {
-    fallen_back(
-        points
-            .iter()
-            .filter_map(|p| p.fallback.map(|f| (p.nominal_pressure, f.iterations))),
-    )
-}
-
 /// [`Warning::PreconditionerFallback`] from the (σ0, preconditioned
 /// iterations) of the solves that fell back; `None` when there are none.
 pub fn fallen_back(solves: impl IntoIterator<Item = (f64, usize)>) -> Option<Warning> {
@@ -503,82 +502,6 @@ pub fn fallen_back(solves: impl IntoIterator<Item = (f64, usize)>) -> Option<War
         nominal_pressure,
         iterations,
     })
-}
-
-/// The warnings of an FFT-BEM rough contact: a synthesised surface
-/// band-limited by its grid, pressures above 0.1 E*, a surface steeper than 1,
-/// solves finished by the plain solver.
-#[cfg(feature = "bem")]
-pub fn of_rough(r: &persson::bem::rough::RoughReport) -> Vec<Warning> {
-    let mut w = Vec::new();
-    push(&mut w, preconditioner_fallback(&r.points));
-    let pressures: Vec<f64> = r.points.iter().map(|p| p.nominal_pressure).collect();
-    push(
-        &mut w,
-        Warning::high_pressure(&pressures, r.contact_modulus),
-    );
-    if let persson::bem::rough::SurfaceOrigin::Synthesised { spectrum, .. } = &r.surface {
-        push(
-            &mut w,
-            Warning::band_limited(r.grid, r.surface_rms_slope, spectrum.rms_slope),
-        );
-        push(&mut w, Warning::steep_slope(spectrum.rms_slope));
-    } else {
-        push(&mut w, Warning::steep_slope(r.surface_rms_slope));
-    }
-    w
-}
-
-/// The warnings of a measured surface's analysis: what the reader did (a
-/// line scan resampled) and what the analysis could not do (no Hurst fit,
-/// bins left out of the 2D spectrum).
-#[cfg(feature = "topography")]
-pub fn of_measured(file: &std::path::Path, a: &persson::topography::Analysis) -> Vec<Warning> {
-    of_notes(file, &a.notes)
-}
-
-/// The warnings of a measured surface's notes ([`of_measured`] without the
-/// analysis: for a spectrum that keeps only its notes, as a pickled Python
-/// `Spectrum` does). `file` names the input (a stand-in such as `(array)`
-/// for heights that came from no file).
-#[cfg(feature = "topography")]
-pub fn of_notes(file: &std::path::Path, notes: &[persson::topography::Note]) -> Vec<Warning> {
-    use persson::topography::Note;
-    let file = file.to_path_buf();
-    notes
-        .iter()
-        .map(|note| match note {
-            Note::Resampled {
-                points,
-                max_deviation,
-            } => Warning::Resampled {
-                file: file.clone(),
-                points: *points,
-                max_deviation: *max_deviation,
-            },
-            Note::HurstNotFitted { bins } => Warning::HurstNotFitted {
-                file: file.clone(),
-                bins: *bins,
-            },
-            Note::HurstOutOfRange { hurst, hurst_error } => Warning::HurstOutOfRange {
-                file: file.clone(),
-                hurst: *hurst,
-                hurst_error: *hurst_error,
-            },
-            Note::CurvatureNotComputed { shape, .. } => Warning::CurvatureNotComputed {
-                file: file.clone(),
-                shape: *shape,
-            },
-            Note::BinsLeftOut { q, of } => Warning::BinsLeftOut {
-                file: file.clone(),
-                count: q.len(),
-                of: *of,
-                q_range: q
-                    .iter()
-                    .fold((f64::INFINITY, 0.0), |(lo, hi), &v| (lo.min(v), hi.max(v))),
-            },
-        })
-        .collect()
 }
 
 /// Append `w` to `list` unless it is already there.

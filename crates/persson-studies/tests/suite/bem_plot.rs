@@ -8,7 +8,8 @@ use persson::bem::rough::{
 use persson::bem::surface::synthesize;
 use persson::bem::Options;
 use persson::spectrum::{Amplitude, SelfAffine};
-use persson_studies::plot::map::{render_map_svg_string, rough_map, MAP_SIZE, PRESSURE_LABEL};
+use persson_studies::plot::map::{rough_map, MAP_SIZE, PRESSURE_LABEL};
+use persson_studies::plot::render_svg_string;
 use persson_studies::table::number;
 
 /// The eight bytes every PNG file starts with (PNG spec §5.2).
@@ -63,7 +64,7 @@ fn map_marks_every_plastic_node_and_labels_the_peak() {
         r.points[k].plastic_fraction.unwrap()
     );
     let fig = rough_map(&r).unwrap();
-    let svg = render_map_svg_string(&fig).unwrap();
+    let svg = render_svg_string(&fig).unwrap();
     assert!(svg.starts_with("<svg"));
     assert!(
         svg.contains(&format!("{PRESSURE_LABEL} (E*)")),
@@ -85,7 +86,7 @@ fn map_marks_every_plastic_node_and_labels_the_peak() {
 #[test]
 fn elastic_map_has_no_plastic_marks_and_writes_png() {
     let r = report(32, None, true);
-    let svg = render_map_svg_string(&rough_map(&r).unwrap()).unwrap();
+    let svg = render_svg_string(&rough_map(&r).unwrap()).unwrap();
     assert_eq!(svg.matches(PLASTIC_FILL).count(), 0);
     assert!(!svg.contains("δ-peak"));
     let dir = std::env::temp_dir().join(format!("persson-bem-plot-{}", std::process::id()));

@@ -1,8 +1,8 @@
 //! The only code that talks to `plotters`.
 
-use super::figure::{LegendPosition, Rgb, Style};
 use super::prepare::PlotAxis;
 use super::prepare::{PlotSeries, Prepared};
+use crate::plot::{LegendPosition, Rgb, Style};
 use crate::{Error, Result};
 use plotters::chart::SeriesAnno;
 use plotters::coord::ranged1d::{KeyPointHint, NoDefaultFormatting, Ranged, ValueFormatter};
@@ -15,7 +15,7 @@ use std::path::Path;
 use std::sync::OnceLock;
 
 /// DejaVu Sans (Bitstream Vera licence, see assets/DejaVuSans-LICENSE.txt).
-static FONT: &[u8] = include_bytes!("../../assets/DejaVuSans.ttf");
+static FONT: &[u8] = include_bytes!("../../../assets/DejaVuSans.ttf");
 
 /// Outcome of the one-time font registration.
 static FONT_OK: OnceLock<bool> = OnceLock::new();

@@ -6,8 +6,6 @@
 
 use std::path::PathBuf;
 
-#[cfg(feature = "topography")]
-use persson::error::Error;
 use persson::error::Result;
 use persson::spectrum::Tabulated;
 use serde::Serialize;
@@ -15,6 +13,11 @@ use serde::Serialize;
 use super::schema::{Described, HeightMapSpec};
 use crate::table::{number, Cell, Table, Tabulate};
 use crate::warning::Warning;
+
+// Reading and combining the measurements (feature `topography`).
+#[cfg_attr(not(feature = "topography"), path = "off.rs")]
+mod combine;
+pub use combine::multi_scale;
 
 /// Edges per decade of the common log grid (as a single measurement's).
 pub const BINS_PER_DECADE: usize = 10;
@@ -105,96 +108,6 @@ impl MultiScaleReport {
             parts.join(", ")
         )
     }
-}
-
-/// Read, condition and combine the measurements.
-///
-/// # Errors
-/// No measurement; the errors of each file (named); a tip radius so large
-/// that a measurement has no reliable band.
-#[cfg(feature = "topography")]
-pub fn multi_scale(specs: &[HeightMapSpec]) -> Result<MultiScaleReport> {
-    use persson::topography::{self as topo, AnalysisOptions, Measurement};
-    let maps: Vec<topo::Topography> = specs.iter().map(|s| s.read()).collect::<Result<_>>()?;
-    let measurements: Vec<Measurement<'_>> = specs
-        .iter()
-        .zip(&maps)
-        .map(|(s, t)| Measurement {
-            topography: t,
-            options: AnalysisOptions {
-                detrend: s.detrend.map(Into::into),
-                window: s.window.map(Into::into),
-                q_max: s.q_max,
-                bins: None,
-            },
-            tip_radius: s.tip_radius,
-        })
-        .collect();
-    let m = topo::multi_scale(&measurements, BINS_PER_DECADE).map_err(|e| name_file(specs, e))?;
-    let mut warnings = Vec::new();
-    for (s, c) in specs.iter().zip(&m.measurements) {
-        for w in crate::warning::of_measured(&s.file, &c.analysis) {
-            crate::warning::push(&mut warnings, Some(w));
-        }
-    }
-    for g in &m.gaps {
-        warnings.push(Warning::MeasurementGap {
-            below: specs[g.below].file.clone(),
-            above: specs[g.above].file.clone(),
-            q_range: g.q_range,
-        });
-    }
-    Ok(MultiScaleReport {
-        measurements: specs
-            .iter()
-            .zip(&m.measurements)
-            .map(|(s, c)| MeasurementBand {
-                file: s.file.clone(),
-                shape: c.analysis.shape,
-                pixel_size: c.analysis.pixel_size.clone(),
-                q_min: c.q_min,
-                q_max: c.q_max,
-                tip_cutoff_length: c.tip_cutoff_length,
-                rms_height: c.analysis.rms_height,
-                psd: BandSpectrum {
-                    q: c.analysis.psd.q.clone(),
-                    c: c.analysis.psd.c.clone(),
-                    count: c.analysis.psd.count.clone(),
-                },
-            })
-            .collect(),
-        q: m.q,
-        c: m.c,
-        count: m.count,
-        contributors: m.contributors,
-        q_min: m.q_min,
-        q_max: m.q_max,
-        warnings,
-    })
-}
-
-/// An error of the numerics naming "measurement i": name its file.
-#[cfg(feature = "topography")]
-fn name_file(specs: &[HeightMapSpec], e: Error) -> Error {
-    if let Error::Inconsistent { name, requirement } = &e {
-        if let Some(i) = name
-            .strip_prefix("measurement ")
-            .and_then(|n| n.parse::<usize>().ok())
-            .filter(|i| (1..=specs.len()).contains(i))
-        {
-            return Error::parse(&specs[i - 1].file, 0, 0, requirement.clone());
-        }
-    }
-    e
-}
-
-/// Without the feature `topography` measured surfaces cannot be read.
-#[cfg(not(feature = "topography"))]
-pub fn multi_scale(_: &[HeightMapSpec]) -> Result<MultiScaleReport> {
-    Err(persson::Error::Inconsistent {
-        name: "kind = multi_scale".into(),
-        requirement: "measured surfaces need persson built with the feature `topography`".into(),
-    })
 }
 
 /// The combined spectrum as a scene's spectrum, described, with warnings.

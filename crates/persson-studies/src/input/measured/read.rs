@@ -1,20 +1,14 @@
-//! A measured surface as a scene's (and the flags') spectrum: read, condition
-//! and analyse the map ([`persson::topography`]), then use its binned spectrum
-//! as a [`Tabulated`] one, whose band is the map's.
+//! Reading, conditioning and analysing a measured surface (feature
+//! `topography`).
 
 use persson::error::{Error, Result};
-use persson::spectrum::{Spectrum, Tabulated};
+use persson::spectrum::Tabulated;
 
-#[cfg(any(feature = "bem", feature = "topography"))]
-use super::Sides;
-use super::{Described, HeightMapSpec};
-#[cfg(feature = "topography")]
-use super::{DetrendName, LengthUnitName, WindowName};
+use super::in_file;
+use crate::input::{Described, DetrendName, HeightMapSpec, LengthUnitName, Sides, WindowName};
 
-#[cfg(feature = "topography")]
 use persson::topography::{self as topo, Analysis, AnalysisOptions, Detrend, Topography, Window};
 
-#[cfg(feature = "topography")]
 impl From<DetrendName> for Detrend {
     fn from(d: DetrendName) -> Self {
         match d {
@@ -26,7 +20,6 @@ impl From<DetrendName> for Detrend {
     }
 }
 
-#[cfg(feature = "topography")]
 impl From<LengthUnitName> for topo::LengthUnit {
     fn from(u: LengthUnitName) -> Self {
         match u {
@@ -40,7 +33,6 @@ impl From<LengthUnitName> for topo::LengthUnit {
     }
 }
 
-#[cfg(feature = "topography")]
 impl From<WindowName> for Window {
     fn from(w: WindowName) -> Self {
         match w {
@@ -56,7 +48,6 @@ impl HeightMapSpec {
     ///
     /// # Errors
     /// Both `size` and `pixel_size` given.
-    #[cfg(feature = "topography")]
     fn size_spec(&self) -> Result<Option<topo::SizeSpec>> {
         Ok(match (self.size, self.pixel_size) {
             (Some(_), Some(_)) => {
@@ -76,7 +67,6 @@ impl HeightMapSpec {
     ///
     /// # Errors
     /// As [`persson::topography::read()`].
-    #[cfg(feature = "topography")]
     pub fn read(&self) -> Result<Topography> {
         let options = topo::ReadOptions {
             size: self.size_spec()?,
@@ -94,7 +84,6 @@ impl HeightMapSpec {
     ///
     /// # Errors
     /// As [`HeightMapSpec::read`] and [`persson::topography::analyse`].
-    #[cfg(feature = "topography")]
     pub fn analyse(&self) -> Result<Analysis> {
         let t = self.read()?;
         let tip = match self.tip_radius {
@@ -120,7 +109,6 @@ impl HeightMapSpec {
     ///
     /// # Errors
     /// As [`HeightMapSpec::analyse`] and [`persson::topography::Psd::to_tabulated`].
-    #[cfg(feature = "topography")]
     pub fn spectrum_described(&self) -> Result<Described<Tabulated>> {
         let a = self.analyse()?;
         let s = a.psd.to_tabulated().map_err(|e| in_file(&self.file, e))?;
@@ -130,29 +118,9 @@ impl HeightMapSpec {
             warnings: crate::warning::of_measured(&self.file, &a),
         })
     }
-
-    /// Without the `topography` feature a measured surface cannot be read.
-    #[cfg(not(feature = "topography"))]
-    pub fn spectrum_described(&self) -> Result<Described<Tabulated>> {
-        Err(Error::Inconsistent {
-            name: "kind = height_map".into(),
-            requirement:
-                "a spectrum from a height map needs persson built with the feature `topography`"
-                    .into(),
-        })
-    }
-
-    /// The map's spectrum as a boxed [`Spectrum`].
-    ///
-    /// # Errors
-    /// As [`HeightMapSpec::spectrum_described`].
-    pub fn spectrum(&self) -> Result<Box<dyn Spectrum>> {
-        Ok(Box::new(self.spectrum_described()?.value))
-    }
 }
 
 /// What the spectrum of a measured surface assumed, for report titles.
-#[cfg(feature = "topography")]
 pub fn describe(file: &std::path::Path, a: &Analysis) -> String {
     use crate::table::number;
     let pixel: Vec<String> = a.pixel_size.iter().map(|d| number(*d, 6)).collect();
@@ -168,17 +136,6 @@ pub fn describe(file: &std::path::Path, a: &Analysis) -> String {
         number(a.q_min, 6),
         number(a.q_max, 6),
     )
-}
-
-/// An error of reading or analysing `file`, prefixed with the file unless
-/// it names it.
-pub(crate) fn in_file(file: &std::path::Path, e: Error) -> Error {
-    let name = file.display().to_string();
-    if e.to_string().contains(&name) {
-        e
-    } else {
-        Error::parse(file, 0, 0, e.to_string())
-    }
 }
 
 #[cfg(feature = "bem")]

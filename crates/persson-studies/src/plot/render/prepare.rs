@@ -1,8 +1,8 @@
 //! From a [`Figure`] to drawable data: log transform, ranges, ticks, clipping,
 //! colours and the pixel layout. Independent of the plotting library.
 
-use super::figure::{Figure, LegendPosition, Rgb, Scale, Style, PALETTE, SIZE_LIMITS};
 use super::ticks::{self, Tick, Ticks};
+use crate::plot::{Figure, LegendPosition, Rgb, Scale, Style, PALETTE, SIZE_LIMITS};
 use crate::{Error, Result};
 
 /// Text measurement: `(text, font size px) → (width, height)` in pixels.
@@ -127,7 +127,7 @@ pub(crate) struct Prepared {
 /// Checks `fig` and computes ranges, ticks, clipped runs, colours and layout.
 ///
 /// # Errors
-/// See [`super::render`].
+/// See [`crate::plot::render`].
 /// The figure is laid out `k` times larger than its size (supersampling);
 /// fonts and lines scale along.
 pub(crate) fn prepare(fig: &Figure, k: u32, measure: &Measure) -> Result<Prepared> {

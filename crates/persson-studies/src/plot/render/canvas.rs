@@ -5,14 +5,15 @@
 //! layout step, so each implements [`Canvas`] (validate, then draw at `k`
 //! times its size) and [`render_canvas`] does the rest: the format from the
 //! extension, the font check and PNG supersampling, into the file's bytes
-//! ([`super::Encode`]).
+//! ([`crate::plot::Encode`]).
 
 use std::path::Path;
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::{backend_error, draw, Format};
+use super::{backend_error, draw};
+use crate::plot::Format;
 use crate::{Error, Result};
 
 /// What drawing on a backend `DB` returns.
@@ -34,7 +35,7 @@ pub(crate) trait Canvas {
 ///
 /// # Errors
 /// [`Error::Io`] for another extension or a backend failure;
-/// [`Error::InvalidParameter`] for a size outside [`super::SIZE_LIMITS`];
+/// [`Error::InvalidParameter`] for a size outside [`crate::plot::SIZE_LIMITS`];
 /// the figure's own [`Canvas::check`] errors.
 pub(crate) fn encode_canvas<C: Canvas>(fig: &C, path: &Path) -> Result<Vec<u8>> {
     let format = Format::from_path(path)?;
@@ -65,21 +66,9 @@ pub(crate) fn encode_canvas<C: Canvas>(fig: &C, path: &Path) -> Result<Vec<u8>> 
     }
 }
 
-/// Draws `fig` as an SVG document in memory.
-///
-/// # Errors
-/// As [`render_canvas`], except the file errors.
-pub(crate) fn render_canvas_svg_string<C: Canvas>(fig: &C) -> Result<String> {
-    let here = Path::new("<svg string>");
-    check_size(fig.size())?;
-    fig.check()?;
-    draw::ensure_font(here)?;
-    svg_string(fig).map_err(|e| backend_error(here, e))
-}
-
-/// Both sides within [`super::SIZE_LIMITS`].
+/// Both sides within [`crate::plot::SIZE_LIMITS`].
 fn check_size(size: (u32, u32)) -> Result<()> {
-    let (lo, hi) = super::SIZE_LIMITS;
+    let (lo, hi) = crate::plot::SIZE_LIMITS;
     for v in [size.0, size.1] {
         if !(lo..=hi).contains(&v) {
             return Err(Error::invalid(

@@ -3,7 +3,8 @@
 
 use std::path::Path;
 
-use super::{backend_error, draw, prepare, Encode, Figure, Format};
+use super::{backend_error, draw, prepare};
+use crate::plot::{Encode, Figure, Format};
 use crate::{Error, Result};
 
 /// Figures one above the other in one file (SVG or PNG by extension); every
