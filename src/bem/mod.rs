@@ -36,6 +36,7 @@
 //! - [`hertz`]: closed-form Hertz solution and the η validation; with a
 //!   yield stress, the plastic disc per grid ([`hertz::plastic_disc`]).
 //! - [`surface`]: Fourier synthesis from any [`crate::Spectrum`], height-map I/O.
+//! - [`surrogate`]: random surfaces with a map's spectrum (phase-randomised and IAAFT).
 //! - [`resample`]: one surface on several grids (subsampled, low-passed, block-averaged).
 //! - [`rough`]: the rough-contact loop (one solve per nominal pressure) and its report.
 //! - [`histogram`]: pressure histograms P(σ) that integrate to A/A0.
@@ -76,6 +77,7 @@ mod steps;
 pub mod stiffness;
 pub mod subsurface;
 pub mod surface;
+pub mod surrogate;
 pub mod workspace;
 
 pub use histogram::{pressure_histogram, saturated_histogram, HistogramBin, SaturatedHistogram};

@@ -199,7 +199,7 @@ fn mode_variance(spectrum: &dyn Spectrum2d, kx: f64, ky: f64, dq: f64) -> f64 {
 }
 
 /// Standard normal pair by Box–Muller from two 64-bit draws.
-fn normal_pair(rng: &mut Pcg64Mcg) -> (f64, f64) {
+pub(crate) fn normal_pair(rng: &mut Pcg64Mcg) -> (f64, f64) {
     let unit = |x: u64| ((x >> 11) as f64 + 0.5) * (1.0 / (1u64 << 53) as f64);
     let u1 = unit(rng.next_u64());
     let u2 = unit(rng.next_u64());

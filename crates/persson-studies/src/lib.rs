@@ -60,6 +60,7 @@ pub mod separation_density;
 pub mod spectrum;
 pub mod stress;
 pub mod study;
+pub mod surrogates;
 pub mod table;
 pub mod theories;
 pub mod transport;

@@ -28,6 +28,7 @@ cfg_feature! {
     mod compare_args;
     mod compare_plot;
     mod compare_transport;
+    mod surrogates;
     mod progress;
 }
 mod report;
@@ -39,7 +40,7 @@ mod study;
 
 use clap::{Parser, Subcommand};
 #[cfg(not(feature = "bem"))]
-use features::{bem, bem as compare};
+use features::{bem, bem as compare, bem as surrogates};
 
 /// Contact mechanics of randomly rough surfaces (Persson's theory).
 ///
@@ -85,6 +86,9 @@ enum Cmd {
     Conductance(conductance::Args),
     /// Leak rate of a static seal against load (critical junction, effective medium).
     Leakage(leakage::Args),
+    /// The map against random surfaces of its spectrum: the FFT-BEM on a
+    /// measured map and on its surrogates (feature `bem`).
+    Surrogates(surrogates::Args),
 }
 
 /// Run one parsed command line (`matches` as clap parsed it): every file it
@@ -122,6 +126,7 @@ fn stage(cli: Cli, matches: &clap::ArgMatches) -> anyhow::Result<persson_studies
         Cmd::Friction(a) => friction::run(a, o),
         Cmd::Conductance(a) => conductance::run(a, o),
         Cmd::Leakage(a) => leakage::run(a, o),
+        Cmd::Surrogates(a) => surrogates::run(a, o),
     }?;
     Ok(out)
 }

@@ -28,6 +28,7 @@ mod scene;
 mod separation_density;
 mod stress;
 mod surface_cli;
+mod surrogates;
 mod theories;
 mod transport;
 mod warnings;

@@ -268,3 +268,15 @@ impl From<AreaEnhancementName> for persson::adhesion::AreaEnhancement {
         }
     }
 }
+
+names! {
+    /// The surrogates of a measured map (`surrogates`).
+    #[derive(Default)]
+    SurrogateKindName {
+        /// The map's periodic spectrum with random phases: a Gaussian surface.
+        #[default]
+        Phase = "phase",
+        /// The map's heights, rearranged to the map's spectrum (IAAFT).
+        AmplitudeAdjusted = "amplitude-adjusted",
+    }
+}

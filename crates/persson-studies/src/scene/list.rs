@@ -30,6 +30,9 @@ studies! {
     /// The adhesive FFT-BEM along a path of mean gaps or approaches
     /// (`bem rough --work-of-adhesion`).
     bem_adhesion: crate::bem_adhesion::BemAdhesion,
+    /// The map against random surfaces of its spectrum: the FFT-BEM on the
+    /// scene's height map and on its surrogates (feature `bem`).
+    surrogates: crate::surrogates::Surrogates,
     /// Adhesion: the stickiness energy balance and A/A0 against the scene's
     /// nominal pressures (which may be ≤ 0) with the pull-off stress.
     adhesion: crate::adhesion::Adhesion,

@@ -349,6 +349,14 @@ pub enum Warning {
         /// The threshold.
         min_patches: usize,
     },
+    /// Amplitude-adjusted surrogates whose radial spectrum stays off the
+    /// map's (a map whose spectrum falls below what rearranging its heights
+    /// adds): the comparison mixes a height-distribution effect with a
+    /// spectrum one.
+    SurrogateSpectrum {
+        /// The largest relative difference over the radial bins.
+        mismatch: f64,
+    },
     /// A height map's fourth moment depends on its pixel size
     /// ([`persson::asperity::moments::CURVATURE_RESOLUTION_RATIO`]).
     CurvatureUnresolved {
@@ -456,6 +464,7 @@ impl Warning {
             Warning::Coalescence { .. } => "coalescence",
             Warning::CurvatureUnresolved { .. } => "curvature_unresolved",
             Warning::FewPatches { .. } => "few_patches",
+            Warning::SurrogateSpectrum { .. } => "surrogate_spectrum",
         }
     }
 }

@@ -372,6 +372,13 @@ fn text_of_rest(w: &Warning, f: &mut fmt::Formatter<'_>, mine: &mut bool) -> fmt
         Warning::FewPatches { .. } => crate::validation::patches::describe(w, f),
         #[cfg(not(feature = "bem"))]
         Warning::FewPatches { count, .. } => write!(f, "{count} solve(s) with few patches"),
+        Warning::SurrogateSpectrum { mismatch } => write!(
+            f,
+            "the amplitude-adjusted surrogates' radial spectrum differs from the map's by up \
+             to {} in some bins (their heights are the map's exactly): part of a difference \
+             may be the spectrum's; compare with kind = phase",
+            number(*mismatch * 100.0, 3) + " %"
+        ),
         Warning::MapNotPeriodic => write!(
             f,
             "the map is not periodic: its coarser copies are block averages, each a \

@@ -16,4 +16,5 @@ mod report_transport;
 mod scene;
 mod scene_bem;
 mod stress_map;
+mod surrogates;
 mod topography;

@@ -155,6 +155,34 @@ impl HeightMapSpec {
         &self,
         boundary: persson::bem::Boundary,
     ) -> Result<persson::bem::surface::GridSurface> {
+        self.grid_surface(boundary, self.detrend.map(Into::into))
+    }
+
+    /// As [`HeightMapSpec::bem_surface`], detrended as the spectrum is: the
+    /// given `detrend`, else the default of the map
+    /// ([`persson::topography::Conditioning::for_topography`]: the plane of a
+    /// map not measured periodic). For a comparison with surfaces of the
+    /// map's spectrum (`surrogates`), whose spectrum is of the conditioned map.
+    ///
+    /// # Errors
+    /// As [`HeightMapSpec::bem_surface`].
+    pub fn conditioned_surface(
+        &self,
+        boundary: persson::bem::Boundary,
+    ) -> Result<persson::bem::surface::GridSurface> {
+        let t = self.read()?;
+        let detrend = self.detrend.map_or_else(
+            || topo::Conditioning::for_topography(&t).detrend,
+            Into::into,
+        );
+        self.grid_surface(boundary, Some(detrend))
+    }
+
+    fn grid_surface(
+        &self,
+        boundary: persson::bem::Boundary,
+        detrend: Option<Detrend>,
+    ) -> Result<persson::bem::surface::GridSurface> {
         let t = self.read()?;
         let [ny, nx] = t.shape();
         let bad = |what: String| {
@@ -175,8 +203,8 @@ impl HeightMapSpec {
             return Err(bad(format!("sides {} × {} m", t.lx(), t.ly())));
         }
         persson::bem::check_memory(nx, boundary)?;
-        let heights = match self.detrend {
-            Some(d) => t.detrended(d.into()),
+        let heights = match detrend {
+            Some(d) => t.detrended(d),
             None => t.heights().to_vec(),
         };
         persson::bem::surface::GridSurface::new(nx, t.lx(), heights)
