@@ -53,6 +53,7 @@ import functools as _functools
 import warnings as _warnings
 
 from ._ensemble import ensemble
+from ._surrogates import surrogates
 
 
 def _renamed(f, **old_names):
@@ -123,6 +124,7 @@ __all__ = [
     "magnification",
     "mean_separation",
     "run_scene",
+    "surrogates",
     "separation",
     "separation_density",
     "spectrum_2d",

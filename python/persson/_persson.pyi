@@ -455,6 +455,24 @@ def ensemble(
 ) -> Report:
     """`persson compare ensemble --json`: the BEM on seeds × grids, here or on Dask
     (`client`: a dask.distributed Client or a scheduler address)."""
+def surrogates(
+    heights: ArrayLike,
+    size: float,
+    contact_modulus: float,
+    pressure: ArrayLike,
+    *,
+    count: int = 8,
+    kind: str = "phase",
+    iterations: int = 200,
+    seed: int = 1,
+    boundary: Boundary = "periodic",
+    tolerance: float = 1e-8,
+    spectrum: Optional[Spectrum] = None,
+    client: Any = None,
+    timeout: str = "10s",
+) -> Report:
+    """`persson surrogates --json`: the FFT-BEM on the map and on `count` surrogates
+    of its spectrum, here or on Dask (`client`)."""
 def conductance(
     spectrum: Spectrum,
     contact_modulus: float,

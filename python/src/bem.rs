@@ -51,7 +51,7 @@ pub(crate) fn options(
 
 /// A square height map (N × N, float64, C-contiguous) of side `size` as the
 /// solver's surface (one copy: the solver's own buffer).
-fn surface(heights: &Bound<'_, PyAny>, size: f64) -> PyResult<GridSurface> {
+pub(crate) fn surface(heights: &Bound<'_, PyAny>, size: f64) -> PyResult<GridSurface> {
     let a = floats("heights", heights)?;
     let ([rows, cols], values) = map("heights", &a)?;
     if rows != cols {

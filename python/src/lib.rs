@@ -19,6 +19,7 @@ mod reports;
 mod serde_probe;
 mod spectrum;
 mod state;
+mod surrogates;
 mod theory;
 mod to_python;
 mod transport;
@@ -45,6 +46,7 @@ fn _persson(m: &Bound<'_, PyModule>) -> PyResult<()> {
     bem::register(m)?;
     adhesion::register(m)?;
     ensemble::register(m)?;
+    surrogates::register(m)?;
     friction::register(m)?;
     transport::register(m)?;
     asperity::register(m)?;
