@@ -6,8 +6,9 @@
 //!   in a line stands for what legitimately varies (a time, an iteration
 //!   count, a residual); `...` on a line of its own for lines left out.
 //!   `> ` continues a command on the next line. The commands run in a scratch
-//!   directory that holds copies of `scenes/`, `tests/reference/data/` and
-//!   `docs/data/` (so they read what a user at the repository's root reads
+//!   directory that holds copies of `scenes/`, `tests/reference/data/`,
+//!   `tests/data/` (the instrument files) and `docs/data/` (so they read
+//!   what a user at the repository's root reads
 //!   and write their plots and tables there, not into the source tree).
 //! - ```` ```sh ```` blocks are shown but not run (a toolchain command, or a
 //!   reproduction that takes minutes); the line above each says why, as
@@ -135,6 +136,7 @@ fn commands_print_what_the_pages_show() {
         &root.join("tests/reference/data"),
         &scratch.join("tests/reference/data"),
     );
+    copy_dir(&root.join("tests/data"), &scratch.join("tests/data"));
     copy_dir(&root.join("docs/data"), &scratch.join("docs/data"));
     std::env::set_current_dir(&scratch).expect("enter the scratch directory");
 

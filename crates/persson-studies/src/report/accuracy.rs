@@ -19,6 +19,8 @@ pub enum Knob {
     Terms,
     /// A phase fraction (the blocked fraction a of a two-phase medium).
     Fraction,
+    /// A number of samples (surrogates K).
+    Count,
 }
 
 impl Knob {
@@ -29,6 +31,7 @@ impl Knob {
             Knob::Grid => ("grid", "N"),
             Knob::Terms => ("terms", "terms"),
             Knob::Fraction => ("fraction", "a"),
+            Knob::Count => ("count", "K"),
         }
     }
 }
@@ -104,7 +107,7 @@ impl Tabulate for AccuracyReport {
                 for r in &m.rows {
                     let setting = match m.knob {
                         Knob::Tolerance | Knob::Fraction => Cell::Num(r.setting),
-                        Knob::Grid | Knob::Terms => Cell::Int(r.setting as i64),
+                        Knob::Grid | Knob::Terms | Knob::Count => Cell::Int(r.setting as i64),
                     };
                     let mut row = vec![setting, Cell::Num(r.error)];
                     if bound {

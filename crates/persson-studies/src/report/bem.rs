@@ -28,6 +28,8 @@ const ROUGH_SEED: u64 = 2026;
 /// Mean pressure of the rough study, unit of E* (A/A0 ≈ 0.1 at rms slope 0.1).
 const ROUGH_PRESSURE: f64 = 5e-3;
 
+mod surrogates;
+
 /// Every BEM row of the accuracy report.
 ///
 /// # Errors
@@ -36,6 +38,7 @@ pub(super) fn accuracy(extent: Extent) -> Result<Vec<MethodAccuracy>> {
     let mut methods = hertz_grid(extent)?;
     methods.push(rough_grid(extent)?);
     methods.push(tolerance()?);
+    methods.extend(surrogates::accuracy(extent)?);
     Ok(methods)
 }
 

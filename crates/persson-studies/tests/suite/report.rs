@@ -146,6 +146,16 @@ fn accuracy_report_meets_its_tolerances_bounds_and_references() {
         for w in rough.rows.windows(2) {
             assert!(w[1].error < w[0].error, "rough A/A0 error grows with N");
         }
+        // The surrogates: K = 2 … 16, the standard error of their mean
+        // falls with K (as 1/√K, up to the scatter of sd), the time grows.
+        for name in ["surrogates-64", "surrogates-128"] {
+            let m = method(&report, name);
+            let k: Vec<f64> = m.rows.iter().map(|r| r.setting).collect();
+            assert_eq!(k, [2.0, 4.0, 8.0, 16.0], "{name}");
+            let (first, last) = (&m.rows[0], &m.rows[3]);
+            assert!(last.error < first.error && last.error > 0.0, "{name}");
+            assert!(last.seconds > first.seconds, "{name}");
+        }
         // The solver's tolerance: the pressure's energy-norm error is below
         // the tolerance asked (the residual ε it stops at bounds it here).
         for r in &method(&report, "bem-tolerance").rows {
