@@ -11,6 +11,12 @@ use super::files::{out_file, OutFile};
 use super::number::{count, number};
 use super::output::Format;
 
+/// The grid of the example's synthesised map.
+const EXAMPLE_GRID: usize = 64;
+
+/// The example's least load, Pa.
+const EXAMPLE_LEAST_PRESSURE: f64 = 1e6;
+
 /// Arguments of `persson surrogates`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
@@ -66,9 +72,14 @@ pub struct Args {
 pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
     let spectrum = spectrum_spec(&a.spectrum, &a.measured)?;
     let material = a.material.spec(a.spectrum.example)?;
-    let pressures = pressures(&a.pressure, a.spectrum.example)?;
-    // The example: a map synthesised from the example's spectrum.
-    let grid = a.grid.or((a.spectrum.example && a.measured.spec(None)?.is_none()).then_some(64));
+    let mut pressures = pressures(&a.pressure, a.spectrum.example)?;
+    // The example: a 64² map synthesised from the example's spectrum, at
+    // the example's loads from 1 MPa (below, it touches on a few nodes).
+    let example = a.spectrum.example && a.measured.spec(None)?.is_none();
+    let grid = a.grid.or(example.then_some(EXAMPLE_GRID));
+    if example && a.pressure.is_empty() {
+        pressures.retain(|&p| p >= EXAMPLE_LEAST_PRESSURE);
+    }
     let spec = SurrogatesOutput {
         count: Some(a.count),
         kind: Some(a.kind),

@@ -73,6 +73,16 @@ fn cases() -> Vec<Case> {
             outputs: &[("--plot", "svg", "")],
         },
         Case {
+            args: "surrogates --surface {d}/surf.npy --size 1e-3 --contact-modulus 1e9 \
+                   --pressure 1e6 --count 2",
+            input: Some("surf.npy"),
+            outputs: &[
+                ("--surfaces", "npy", ""),
+                ("--plot", "svg", ""),
+                ("--plot-distribution", "png", ""),
+            ],
+        },
+        Case {
             args:
                 "bem rough --surface {d}/surf.npy --size 1e-3 --contact-modulus 1e9 --pressure 1e6",
             input: Some("surf.npy"),

@@ -12,8 +12,15 @@ fn the_example_compares_a_random_map_with_its_surrogates() {
     assert_eq!(r["kind"], "phase");
     assert_eq!(r["grid"], 64);
     let points = r["points"].as_array().unwrap();
-    assert_eq!(points.len(), 6);
+    assert_eq!(points.len(), 4, "the example's loads from 1e6 Pa");
+    assert!(
+        r["warnings"].as_array().unwrap().is_empty(),
+        "{}",
+        r["warnings"]
+    );
     for p in points {
+        // The example's map is itself random: no load flagged.
+        assert_eq!(p["significant"], false, "{p}");
         let (a, m) = (
             p["map_contact_fraction"].as_f64().unwrap(),
             p["surrogate_contact_fraction"].as_f64().unwrap(),

@@ -27,6 +27,11 @@ pub use spec::*;
 /// which a warning says so (1 %).
 pub const SPECTRUM_TOLERANCE: f64 = 0.01;
 
+/// Contact nodes of the map below which a load is warned of as too coarse
+/// (its tail fit needs 10 pressures above the mean; its A/A0 a few dozen
+/// nodes to mean anything).
+pub const MIN_CONTACT_NODES: usize = 25;
+
 /// The study `surrogates`.
 pub struct Surrogates;
 
@@ -44,11 +49,29 @@ impl Study for Surrogates {
     }
 
     fn warnings(r: &SurrogatesReport) -> Vec<crate::warning::Warning> {
-        r.spectrum_mismatch
+        use crate::warning::Warning;
+        let nodes = |p: &SurrogatePoint| {
+            (p.map_contact_fraction * (r.grid * r.grid) as f64).round() as usize
+        };
+        let coarse: Vec<&SurrogatePoint> = r
+            .points
+            .iter()
+            .filter(|p| nodes(p) < MIN_CONTACT_NODES)
+            .collect();
+        let mut w: Vec<Warning> = r
+            .spectrum_mismatch
             .filter(|m| *m > SPECTRUM_TOLERANCE)
-            .map(|mismatch| crate::warning::Warning::SurrogateSpectrum { mismatch })
+            .map(|mismatch| Warning::SurrogateSpectrum { mismatch })
             .into_iter()
-            .collect()
+            .collect();
+        if !coarse.is_empty() {
+            w.push(Warning::CoarseContact {
+                nominal_pressure: coarse.iter().map(|p| p.nominal_pressure).collect(),
+                nodes: coarse.iter().map(|p| nodes(p)).collect(),
+                min_nodes: MIN_CONTACT_NODES,
+            });
+        }
+        w
     }
 
     fn files(s: &SurrogatesOutput) -> Vec<OutFile> {

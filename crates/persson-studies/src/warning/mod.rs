@@ -357,6 +357,16 @@ pub enum Warning {
         /// The largest relative difference over the radial bins.
         mismatch: f64,
     },
+    /// Loads at which the map touches on so few grid nodes that its A/A0,
+    /// patches and tail rest on too few points (`surrogates`).
+    CoarseContact {
+        /// σ0 of those loads.
+        nominal_pressure: Vec<f64>,
+        /// The map's contact nodes at each.
+        nodes: Vec<usize>,
+        /// The threshold.
+        min_nodes: usize,
+    },
     /// A height map's fourth moment depends on its pixel size
     /// ([`persson::asperity::moments::CURVATURE_RESOLUTION_RATIO`]).
     CurvatureUnresolved {
@@ -465,6 +475,7 @@ impl Warning {
             Warning::CurvatureUnresolved { .. } => "curvature_unresolved",
             Warning::FewPatches { .. } => "few_patches",
             Warning::SurrogateSpectrum { .. } => "surrogate_spectrum",
+            Warning::CoarseContact { .. } => "coarse_contact",
         }
     }
 }

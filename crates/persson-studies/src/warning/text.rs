@@ -379,6 +379,25 @@ fn text_of_rest(w: &Warning, f: &mut fmt::Formatter<'_>, mine: &mut bool) -> fmt
              may be the spectrum's; compare with kind = phase",
             number(*mismatch * 100.0, 3) + " %"
         ),
+        Warning::CoarseContact {
+            nominal_pressure,
+            nodes,
+            min_nodes,
+        } => write!(
+            f,
+            "at σ0 = {} the map touches on fewer than {min_nodes} grid nodes ({}): its A/A0, \
+             patches and tail rest on too few points there; use a finer map or larger loads",
+            nominal_pressure
+                .iter()
+                .map(|p| number(*p, 4))
+                .collect::<Vec<_>>()
+                .join(", "),
+            nodes
+                .iter()
+                .map(usize::to_string)
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
         Warning::MapNotPeriodic => write!(
             f,
             "the map is not periodic: its coarser copies are block averages, each a \
