@@ -60,7 +60,7 @@ const CONTAINERS: &[&str] = &[
 ];
 
 /// Prefixes of a quantity set beside the same quantity from elsewhere.
-const PREFIXES: &[&str] = &["bem_", "theory_"];
+const PREFIXES: &[&str] = &["bem_", "theory_", "map_", "surrogate_"];
 
 /// Suffixes of an error of the quantity they follow (`g_error_bound`).
 const ERROR_SUFFIXES: &[&str] = &["_error_bound", "_standard_error", "_error"];
