@@ -13,7 +13,8 @@
 //! | [`table`] | the one table type every report renders to, as aligned text or CSV, and the tables of the numerics' results |
 //! | [`output`] | the one output layer: every file a run writes is checked against its inputs and other outputs before computing, and written only when the whole run has succeeded |
 //! | [`warning`] | [`Warning`]: a remark on the input (a pressure near E*, a slope above 1, ζ beyond the band, a spectrum file's convention) that never changes a number, carried by the reports |
-//! | `plot` | (feature `plot`) figures as SVG or PNG from the typed reports |
+//! | [`plot`] | figures from the typed reports, as data in every build; drawn as SVG or PNG with the feature `plot` |
+//! | [`surrogates`] and the other study folders | one study each: spec, run, report, figures ([`study`]) |
 //!
 //! Conventions, units and names are those of the numerics crate (see its
 //! documentation): SI units, C(q) in Persson's normalisation, σ0 the nominal
