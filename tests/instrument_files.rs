@@ -793,3 +793,37 @@ fn transpose_reads_a_map_saved_in_ix_iy_order() {
     };
     error_of(&temp("scan.txt", b"0 1\n1 2\n2 4\n"), &lines, "transposed");
 }
+
+/// matrix-4.txt.gz (SurfaceTopography's example of a gzip-compressed
+/// export; its content is matrix-4.txt byte for byte, whose reading agrees
+/// with SurfaceTopography's above) reads to the same map, value for value;
+/// a gzip of another format by the name inside; a truncated stream is an
+/// error naming the file.
+#[test]
+fn gzip_compressed_text_reads_as_its_content() {
+    let plain = read::read(&data("matrix-4.txt"), &ReadOptions::default()).unwrap();
+    let gz = read::read(&data("matrix-4.txt.gz"), &ReadOptions::default()).unwrap();
+    assert_eq!(gz.shape(), plain.shape());
+    assert_eq!((gz.lx(), gz.ly()), (plain.lx(), plain.ly()));
+    assert_eq!(gz.heights(), plain.heights());
+    // A .npy inside (found by its inner name and its magic).
+    let npy = persson::io::npy::encode(2, 3, &[0.0, 1.0, 2.0, 1.0, 3.0, 5.0]).unwrap();
+    let mut packed = Vec::new();
+    {
+        use std::io::Write;
+        let mut e = flate2::write::GzEncoder::new(&mut packed, flate2::Compression::default());
+        e.write_all(&npy).unwrap();
+        e.finish().unwrap();
+    }
+    let o = ReadOptions {
+        size: Some(SizeSpec::PixelSize(1e-6)),
+        ..Default::default()
+    };
+    let t = read::read(&temp("map.npy.gz", &packed), &o).unwrap();
+    assert_eq!(t.shape(), [2, 3]);
+    assert_eq!(t.heights(), &[0.0, 1.0, 2.0, 1.0, 3.0, 5.0]);
+    // Truncated: an error naming the file, not a panic.
+    let bytes = std::fs::read(data("matrix-4.txt.gz")).unwrap();
+    let cut = temp("cut.txt.gz", &bytes[..bytes.len() / 2]);
+    error_of(&cut, &ReadOptions::default(), "gzip");
+}

@@ -10,8 +10,8 @@ use crate::error::{Error, Result};
 const UNSUPPORTED: &[&str] = &[
     "plux", "datx", "opd", "opdx", "mi", "nid", "frt", "bcrf", "bcr", "mnt", "lext", "vk3", "vk4",
     "vk6", "vk7", "zon", "zmg", "os3d", "oir", "poir", "jpk", "tmd", "top", "nms", "stp", "h5",
-    "hdf5", "mat", "tif", "tiff", "sdf", "ezd", "mdt", "xlsx", "xls", "zip", "gz", "hgt", "dzi",
-    "qep", "nmm", "ps", "wsxm",
+    "hdf5", "mat", "tif", "tiff", "sdf", "ezd", "mdt", "xlsx", "xls", "zip", "hgt", "dzi", "qep",
+    "nmm", "ps", "wsxm",
 ];
 
 /// Leading bytes of binary formats persson does not read, with their names.
@@ -21,7 +21,7 @@ const MAGICS: &[(&[u8], &str)] = &[
     (b"II*\x00", "TIFF"),
     (b"MM\x00*", "TIFF"),
     (b"MATLAB", "MATLAB .mat"),
-    (b"\x1f\x8b", "gzip-compressed"),
+    (b"\x1f\x8b", "gzip-compressed twice"),
     (b"VCA DATA", "Bruker .opdx"),
 ];
 
@@ -29,8 +29,8 @@ const MAGICS: &[(&[u8], &str)] = &[
 pub(crate) const READS: &str = "persson reads .npy, text (a matrix, XYZ triples or a line \
      scan, in .txt, .csv, .dat, .asc or .xyz), Gwyddion .gsf and .gwy, Digital Surf .sur, \
      Zygo MetroPro .dat, NetCDF .nc, Alicona .al3d, Sensofar .plu, Igor binary wave .ibw \
-     (Asylum Research), Bruker Nanoscope .spm/.di/.000 and ISO 25178-72 .x3p; export to GSF or x3p with Gwyddion or \
-     SurfaceTopography";
+     (Asylum Research), Bruker Nanoscope .spm/.di/.000 and ISO 25178-72 .x3p, each also gzip-compressed (.gz); \
+     export to GSF or x3p with Gwyddion or SurfaceTopography";
 
 fn unsupported(path: &Path, what: &str) -> Error {
     Error::parse(path, 0, 0, format!("unsupported format ({what}): {READS}"))

@@ -16,6 +16,7 @@
 //! | Sensofar `.plu` (topography, first layer) | `.plu`, `.apx` (no magic) | nx·Δx, ny·Δy | µm | 1000001 |
 //! | Bruker/Veeco Nanoscope (the first height channel) | `.spm`, `.di`, or `\*File list` (`.000`, `.001`, …) | `Scan Size` | the sensitivity's (`nm/V`) | – |
 //! | Igor binary wave `.ibw` v5 (Asylum Research; the first height channel) | `.ibw` | nx·sfA\[0\], ny·sfA\[1\] (no unit of x: the caller's) | `dataUnits` (none: the caller's, required) | NaN |
+//! | any of these, gzip-compressed (`matrix.txt.gz`) | the gzip magic; the inner format by the name without `.gz`, or content | as the inner format | as the inner format | as the inner format |
 //!
 //! # Axis order
 //! A row of a `.npy` array or text matrix runs along x: the array of
@@ -66,6 +67,7 @@ mod detect;
 mod di;
 mod gsf;
 mod gwy;
+mod gzip;
 mod header;
 mod ibw;
 mod line;
@@ -284,9 +286,22 @@ pub fn as_read(path: &Path, options: &ReadOptions) -> Result<AsRead> {
 
 /// The format's parser on `bytes`.
 fn parse(path: &Path, bytes: &[u8], options: &ReadOptions) -> Result<Raw> {
+    if bytes.starts_with(gzip::MAGIC) {
+        let inner = gzip::inflate(path, bytes)?;
+        return parse_named(path, &gzip::inner_name(path), &inner, options);
+    }
+    parse_named(path, path, bytes, options)
+}
+
+/// [`parse`] of `bytes` whose format `name` (its extension) or content
+/// tells; errors name `path`.
+fn parse_named(path: &Path, name: &Path, bytes: &[u8], options: &ReadOptions) -> Result<Raw> {
     let format = match options.format {
         Some(f) => f,
-        None => detect::format(path, bytes)?,
+        None => detect::format(name, bytes).map_err(|e| match e {
+            Error::Parse { message, .. } => Error::parse(path, 0, 0, message),
+            e => e,
+        })?,
     };
     let raw = match format {
         Format::Npy => {
