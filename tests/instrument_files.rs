@@ -827,3 +827,98 @@ fn gzip_compressed_text_reads_as_its_content() {
     let cut = temp("cut.txt.gz", &bytes[..bytes.len() / 2]);
     error_of(&cut, &ReadOptions::default(), "gzip");
 }
+
+/// ISO 25178-71 `.sdf`: `sdf-1.sdf` (the standard's ASCII example, from
+/// SurfaceTopography's test files) and `sdf-2-binary.sdf` (binary, int32,
+/// one undefined point; written by tests/reference/sdf_surface_topography.py)
+/// against SurfaceTopography 1.27.1 reading the same files (that script's
+/// output: heights in µm, row by row).
+#[test]
+fn iso_25178_71_sdf_ascii_and_binary() {
+    use persson::topography::{real_space_stats, Detrend};
+    const ST_SDF1: [f64; 28] = [
+        1.0, 0.99874, 0.99495, 0.98865, 0.97986, 0.96858, 1.0, 0.99874, 0.99748, 0.99369, 0.9874,
+        0.97862, 0.96736, 0.99874, 0.99495, 0.99369, 0.98993, 0.98366, 0.97491, 0.96369, 0.99495,
+        0.97986, 0.97862, 0.97491, 0.96874, 0.96012, 0.94907, 0.97986,
+    ];
+    let t = read::read(&data("sdf-1.sdf"), &ReadOptions::default()).unwrap();
+    assert_eq!(t.shape(), [4, 7]);
+    assert_eq!((t.lx(), t.ly()), (7e-6, 4e-6));
+    for (h, s) in t.heights().iter().zip(ST_SDF1) {
+        assert!(close(*h, s * 1e-6), "{h} against {s} µm");
+    }
+    // SurfaceTopography's rms height, gradient and Laplacian (µm, 1, 1/µm)
+    // after the plane: 0.010289929442289474, 0.015798188137048624,
+    // 0.01859834105505109.
+    let s = real_space_stats(&t, Detrend::Plane).unwrap();
+    for (got, want) in [
+        (s.rms_height, 0.010289929442289474e-6),
+        (s.rms_slope, 0.015798188137048624),
+        (s.rms_curvature.unwrap(), 0.01859834105505109e6),
+    ] {
+        assert!(
+            (got / want - 1.0).abs() < ST_AGREEMENT,
+            "{got} against {want}"
+        );
+    }
+    // Binary, int32 × 1e-9 m, 5 points × 3 profiles, Δ = 2 µm × 3 µm.
+    const ST_SDF2: [f64; 15] = [
+        0.01,
+        0.02,
+        0.035,
+        0.02,
+        0.01,
+        0.015,
+        f64::NAN,
+        0.04,
+        0.025,
+        0.012,
+        0.005,
+        0.008,
+        0.03,
+        0.018000000000000002,
+        0.007,
+    ];
+    let path = data("sdf-2-binary.sdf");
+    error_of(
+        &path,
+        &ReadOptions::default(),
+        "1 of 15 points are undefined",
+    );
+    let raw = read::as_read(&path, &ReadOptions::default()).unwrap();
+    assert_eq!((raw.nx, raw.ny), (5, 3));
+    // 5·(2e-6) rounds to 9.999999999999999e-6 (SurfaceTopography: 5·2.0 µm).
+    assert!(
+        close(raw.lx, 10e-6) && close(raw.ly, 9e-6),
+        "{} × {}",
+        raw.lx,
+        raw.ly
+    );
+    for (h, s) in raw.heights.iter().zip(ST_SDF2) {
+        assert!(
+            (h.is_nan() && s.is_nan()) || close(*h, s * 1e-6),
+            "{h} against {s} µm"
+        );
+    }
+    // Damaged copies: an error naming the file, never a panic.
+    let bytes = std::fs::read(&path).unwrap();
+    error_of(
+        &temp("cut.sdf", &bytes[..100]),
+        &ReadOptions::default(),
+        "truncated",
+    );
+    let mut compressed = bytes.clone();
+    compressed[78] = 1;
+    error_of(
+        &temp("packed.sdf", &compressed),
+        &ReadOptions::default(),
+        "Compression = 1",
+    );
+    let ascii = std::fs::read_to_string(data("sdf-1.sdf")).unwrap();
+    let short = ascii.replacen("NumPoints = 7", "NumPoints = 8", 1);
+    error_of(
+        &temp("short.sdf", short.as_bytes()),
+        &ReadOptions::default(),
+        "28 values",
+    );
+}

@@ -16,6 +16,7 @@
 //! | Sensofar `.plu` (topography, first layer) | `.plu`, `.apx` (no magic) | nx·Δx, ny·Δy | µm | 1000001 |
 //! | Bruker/Veeco Nanoscope (the first height channel) | `.spm`, `.di`, or `\*File list` (`.000`, `.001`, …) | `Scan Size` | the sensitivity's (`nm/V`) | – |
 //! | Igor binary wave `.ibw` v5 (Asylum Research; the first height channel) | `.ibw` | nx·sfA\[0\], ny·sfA\[1\] (no unit of x: the caller's) | `dataUnits` (none: the caller's, required) | NaN |
+//! | ISO 25178-71 `.sdf`, ASCII and binary (int16, int32, double) | `.sdf`, or `aISO-1.0`/`bISO-1.0` | NumPoints·Xscale, NumProfiles·Yscale | m (values × Zscale) | `BAD`, the int's minimum, NaN |
 //! | any of these, gzip-compressed (`matrix.txt.gz`) | the gzip magic; the inner format by the name without `.gz`, or content | as the inner format | as the inner format | as the inner format |
 //!
 //! # Axis order
@@ -74,6 +75,7 @@ mod line;
 mod metropro;
 mod netcdf;
 mod plu;
+mod sdf;
 mod sur;
 mod text;
 mod units;
@@ -129,6 +131,8 @@ pub enum Format {
     Ibw,
     /// Bruker/Veeco Nanoscope `.spm`, `.di`, `.000`, ….
     Nanoscope,
+    /// ISO 25178-71 `.sdf` (ASCII or binary).
+    Sdf,
 }
 
 /// How to read a topography.
@@ -321,6 +325,7 @@ fn parse_named(path: &Path, name: &Path, bytes: &[u8], options: &ReadOptions) ->
         Format::Plu => plu::parse(path, bytes)?,
         Format::Ibw => ibw::parse(path, bytes)?,
         Format::Nanoscope => di::parse(path, bytes)?,
+        Format::Sdf => sdf::parse(path, bytes)?,
     };
     Ok(raw)
 }

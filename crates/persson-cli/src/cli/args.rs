@@ -318,7 +318,7 @@ fn looks_like_height_map(path: &std::path::Path) -> bool {
         .map(|e| e.to_string_lossy().to_lowercase())
         .unwrap_or_default();
     if [
-        "npy", "x3p", "gsf", "xyz", "sdf", "opd", "datx", "plux", "tif", "tiff", "nc",
+        "npy", "x3p", "gsf", "xyz", "sdf", "opd", "datx", "plux", "tif", "tiff", "nc", "gz",
     ]
     .contains(&ext.as_str())
     {
