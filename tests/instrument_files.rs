@@ -922,3 +922,51 @@ fn iso_25178_71_sdf_ascii_and_binary() {
         "28 values",
     );
 }
+
+/// TrueMap `.tmd` (tmd-1.tmd, SurfaceTopography's example) against
+/// SurfaceTopography 1.27.1 reading it: 300 × 300 points of 18.9566 mm,
+/// heights in mm (h[ix, iy] there), and its rms height, gradient and
+/// Laplacian after the plane (mm, 1, 1/mm).
+#[test]
+fn truemap_tmd() {
+    use persson::topography::{real_space_stats, Detrend};
+    let t = read::read(&data("tmd-1.tmd"), &ReadOptions::default()).unwrap();
+    assert_eq!(t.shape(), [300, 300]);
+    assert!(close(t.lx(), 18.956600189208984e-3) && close(t.ly(), 18.956600189208984e-3));
+    let h = t.heights();
+    for ((ix, iy), st) in [
+        ((0, 0), 0.22351792454719543),
+        ((1, 0), 0.2231409251689911),
+        ((0, 1), 0.22296857833862305),
+        ((299, 299), 0.23054088652133942),
+        ((17, 123), 0.2641262114048004),
+    ] {
+        assert!(
+            close(h[iy * 300 + ix], st * 1e-3),
+            "({ix}, {iy}): {}",
+            h[iy * 300 + ix]
+        );
+    }
+    let s = real_space_stats(&t, Detrend::Plane).unwrap();
+    for (got, want) in [
+        (s.rms_height, 0.07434087951791002e-3),
+        (s.rms_slope, 0.1582928308184987),
+        (s.rms_curvature.unwrap(), 2.4424994287882655e3),
+    ] {
+        assert!(
+            (got / want - 1.0).abs() < ST_AGREEMENT,
+            "{got} against {want}"
+        );
+    }
+    let bytes = std::fs::read(data("tmd-1.tmd")).unwrap();
+    error_of(
+        &temp("cut.tmd", &bytes[..1000]),
+        &ReadOptions::default(),
+        "truncated",
+    );
+    error_of(
+        &temp("nocomment.tmd", &bytes[..40]),
+        &ReadOptions::default(),
+        "truncated",
+    );
+}

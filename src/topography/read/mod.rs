@@ -17,6 +17,7 @@
 //! | Bruker/Veeco Nanoscope (the first height channel) | `.spm`, `.di`, or `\*File list` (`.000`, `.001`, …) | `Scan Size` | the sensitivity's (`nm/V`) | – |
 //! | Igor binary wave `.ibw` v5 (Asylum Research; the first height channel) | `.ibw` | nx·sfA\[0\], ny·sfA\[1\] (no unit of x: the caller's) | `dataUnits` (none: the caller's, required) | NaN |
 //! | ISO 25178-71 `.sdf`, ASCII and binary (int16, int32, double) | `.sdf`, or `aISO-1.0`/`bISO-1.0` | NumPoints·Xscale, NumProfiles·Yscale | m (values × Zscale) | `BAD`, the int's minimum, NaN |
+//! | TrueMap `.tmd` v2 | `.tmd`, or `Binary TrueMap Data File v2.0` | Lx, Ly of the header (mm) | mm | NaN |
 //! | any of these, gzip-compressed (`matrix.txt.gz`) | the gzip magic; the inner format by the name without `.gz`, or content | as the inner format | as the inner format | as the inner format |
 //!
 //! # Axis order
@@ -78,6 +79,7 @@ mod plu;
 mod sdf;
 mod sur;
 mod text;
+mod tmd;
 mod units;
 mod x3p;
 mod xyz;
@@ -133,6 +135,8 @@ pub enum Format {
     Nanoscope,
     /// ISO 25178-71 `.sdf` (ASCII or binary).
     Sdf,
+    /// TrueMap `.tmd`.
+    TrueMap,
 }
 
 /// How to read a topography.
@@ -326,6 +330,7 @@ fn parse_named(path: &Path, name: &Path, bytes: &[u8], options: &ReadOptions) ->
         Format::Ibw => ibw::parse(path, bytes)?,
         Format::Nanoscope => di::parse(path, bytes)?,
         Format::Sdf => sdf::parse(path, bytes)?,
+        Format::TrueMap => tmd::parse(path, bytes)?,
     };
     Ok(raw)
 }
