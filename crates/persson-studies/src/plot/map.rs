@@ -5,7 +5,7 @@
 //!
 //! Like [`super::Figure`] a [`MapFigure`] is plain data, drawn
 //! into an `.svg` or `.png` file ([`super::Encode`]) or by
-//! [`render_map_svg_string`] into a string.
+//! [`super::render_svg_string`] into a string.
 //!
 //! Maps finer than [`MAP_CELLS`] per side are drawn in blocks of k × k
 //! nodes: the block's mean pressure, red when more than half of its nodes

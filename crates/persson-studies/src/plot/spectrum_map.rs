@@ -6,7 +6,7 @@
 //! *across* the lay in the q-plane: the drawn line runs along the lay and
 //! the bright band perpendicular to it. Like [`super::Figure`] a
 //! [`SpectrumMapFigure`] is plain data, drawn by [`super::render`] into an
-//! `.svg` or `.png` file (atomically) or by [`render_spectrum_map_svg_string`].
+//! `.svg` or `.png` file (atomically) or by [`super::render_svg_string`].
 //!
 //! Grids finer than [`super::map::MAP_CELLS`] per side are drawn in blocks,
 //! each the mean of log10 C over its positive values (grey where none is).

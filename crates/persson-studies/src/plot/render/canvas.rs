@@ -3,7 +3,7 @@
 //!
 //! Line figures go through [`super::prepare`] first; these figures have no
 //! layout step, so each implements [`Canvas`] (validate, then draw at `k`
-//! times its size) and [`render_canvas`] does the rest: the format from the
+//! times its size) and [`encode_canvas`] does the rest: the format from the
 //! extension, the font check and PNG supersampling, into the file's bytes
 //! ([`crate::plot::Encode`]).
 
@@ -30,6 +30,35 @@ pub(crate) trait Canvas {
     /// scale along).
     fn draw_on<DB: DrawingBackend>(&self, root: DrawingArea<DB, Shift>, k: u32) -> DrawResult<DB>;
 }
+
+/// [`crate::plot::Encode`] and [`Canvas`] for a figure type with a `size`
+/// field, an inherent `check` and a function `draw(root, &fig, k)`.
+macro_rules! canvas_figure {
+    ($figure:ty, $draw:ident) => {
+        impl crate::plot::Encode for $figure {
+            fn encode(&self, path: &std::path::Path) -> crate::Result<Vec<u8>> {
+                super::canvas::encode_canvas(self, path)
+            }
+        }
+
+        impl super::canvas::Canvas for $figure {
+            fn size(&self) -> (u32, u32) {
+                self.size
+            }
+            fn check(&self) -> crate::Result<()> {
+                <$figure>::check(self)
+            }
+            fn draw_on<DB: plotters::prelude::DrawingBackend>(
+                &self,
+                root: plotters::prelude::DrawingArea<DB, plotters::coord::Shift>,
+                k: u32,
+            ) -> super::canvas::DrawResult<DB> {
+                $draw(root, self, k)
+            }
+        }
+    };
+}
+pub(crate) use canvas_figure;
 
 /// The bytes of `fig` as the `.svg` or `.png` file `path` (by extension).
 ///

@@ -1,11 +1,9 @@
 //! Drawing the pressure map and its histogram ([`MapFigure`]) on a plotters backend.
 
-use std::path::Path;
-
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::canvas::{Canvas, DrawResult};
+use super::canvas::DrawResult;
 use crate::plot::map::{tick, MapFigure, MAP_CELLS, PRESSURE_LABEL};
 use crate::{Error, Result};
 
@@ -260,23 +258,7 @@ fn draw_histogram<DB: DrawingBackend>(
     Ok(())
 }
 
-impl crate::plot::Encode for MapFigure {
-    fn encode(&self, path: &Path) -> Result<Vec<u8>> {
-        super::canvas::encode_canvas(self, path)
-    }
-}
-
-impl Canvas for MapFigure {
-    fn size(&self) -> (u32, u32) {
-        self.size
-    }
-    fn check(&self) -> Result<()> {
-        MapFigure::check(self)
-    }
-    fn draw_on<DB: DrawingBackend>(&self, root: DrawingArea<DB, Shift>, k: u32) -> DrawResult<DB> {
-        draw_map(root, self, k)
-    }
-}
+super::canvas::canvas_figure!(MapFigure, draw_map);
 
 impl MapFigure {
     fn check(&self) -> Result<()> {

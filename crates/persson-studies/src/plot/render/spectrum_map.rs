@@ -1,11 +1,9 @@
 //! Drawing the 2-D spectrum ([`SpectrumMapFigure`]) on a plotters backend.
 
-use std::path::Path;
-
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::canvas::{Canvas, DrawResult};
+use super::canvas::DrawResult;
 use super::map::{colour_bar, font, viridis};
 use crate::plot::map::{tick, MAP_CELLS};
 use crate::plot::spectrum_map::SpectrumMapFigure;
@@ -121,23 +119,7 @@ fn draw_figure<DB: DrawingBackend>(
     Ok(())
 }
 
-impl crate::plot::Encode for SpectrumMapFigure {
-    fn encode(&self, path: &Path) -> Result<Vec<u8>> {
-        super::canvas::encode_canvas(self, path)
-    }
-}
-
-impl Canvas for SpectrumMapFigure {
-    fn size(&self) -> (u32, u32) {
-        self.size
-    }
-    fn check(&self) -> Result<()> {
-        SpectrumMapFigure::check(self)
-    }
-    fn draw_on<DB: DrawingBackend>(&self, root: DrawingArea<DB, Shift>, k: u32) -> DrawResult<DB> {
-        draw_figure(root, self, k)
-    }
-}
+super::canvas::canvas_figure!(SpectrumMapFigure, draw_figure);
 
 /// The fraction of the positive values below the colour scale's bottom
 /// (drawn in its lowest colour): one map's spectrum spans many decades,

@@ -1,33 +1,15 @@
 //! Drawing a stress field ([`FieldFigure`]) on a plotters backend.
 
-use std::path::Path;
-
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::canvas::{Canvas, DrawResult};
+use super::canvas::DrawResult;
 use super::map::{colour_bar, font, viridis};
 use crate::plot::map::{tick, MAP_CELLS};
 use crate::plot::stress_map::FieldFigure;
 use crate::{Error, Result};
 
-impl crate::plot::Encode for FieldFigure {
-    fn encode(&self, path: &Path) -> Result<Vec<u8>> {
-        super::canvas::encode_canvas(self, path)
-    }
-}
-
-impl Canvas for FieldFigure {
-    fn size(&self) -> (u32, u32) {
-        self.size
-    }
-    fn check(&self) -> Result<()> {
-        FieldFigure::check(self)
-    }
-    fn draw_on<DB: DrawingBackend>(&self, root: DrawingArea<DB, Shift>, k: u32) -> DrawResult<DB> {
-        draw_field(root, self, k)
-    }
-}
+super::canvas::canvas_figure!(FieldFigure, draw_field);
 
 /// The field and its colour bar, at `k` times the figure's size.
 fn draw_field<DB: DrawingBackend>(
