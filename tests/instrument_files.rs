@@ -923,41 +923,54 @@ fn iso_25178_71_sdf_ascii_and_binary() {
     );
 }
 
+/// `t` against SurfaceTopography's reading of the same file: heights
+/// `h[ix, iy]` and the rms height, gradient and Laplacian after the plane,
+/// all in SurfaceTopography's unit (`unit` metres); the rms values to `tol`.
+fn agrees_with_st(
+    t: &persson::topography::Topography,
+    unit: f64,
+    points: &[((usize, usize), f64)],
+    [height, gradient, laplacian]: [f64; 3],
+    tol: f64,
+) {
+    use persson::topography::{real_space_stats, Detrend};
+    let nx = t.shape()[1];
+    for &((ix, iy), st) in points {
+        let h = t.heights()[iy * nx + ix];
+        assert!(close(h, st * unit), "({ix}, {iy}): {h} against {st}");
+    }
+    let s = real_space_stats(t, Detrend::Plane).unwrap();
+    for (got, want) in [
+        (s.rms_height, height * unit),
+        (s.rms_slope, gradient),
+        (s.rms_curvature.unwrap(), laplacian / unit),
+    ] {
+        assert!((got / want - 1.0).abs() < tol, "{got} against {want}");
+    }
+}
+
 /// TrueMap `.tmd` (tmd-1.tmd, SurfaceTopography's example) against
 /// SurfaceTopography 1.27.1 reading it: 300 × 300 points of 18.9566 mm,
 /// heights in mm (h[ix, iy] there), and its rms height, gradient and
 /// Laplacian after the plane (mm, 1, 1/mm).
 #[test]
 fn truemap_tmd() {
-    use persson::topography::{real_space_stats, Detrend};
     let t = read::read(&data("tmd-1.tmd"), &ReadOptions::default()).unwrap();
     assert_eq!(t.shape(), [300, 300]);
     assert!(close(t.lx(), 18.956600189208984e-3) && close(t.ly(), 18.956600189208984e-3));
-    let h = t.heights();
-    for ((ix, iy), st) in [
-        ((0, 0), 0.22351792454719543),
-        ((1, 0), 0.2231409251689911),
-        ((0, 1), 0.22296857833862305),
-        ((299, 299), 0.23054088652133942),
-        ((17, 123), 0.2641262114048004),
-    ] {
-        assert!(
-            close(h[iy * 300 + ix], st * 1e-3),
-            "({ix}, {iy}): {}",
-            h[iy * 300 + ix]
-        );
-    }
-    let s = real_space_stats(&t, Detrend::Plane).unwrap();
-    for (got, want) in [
-        (s.rms_height, 0.07434087951791002e-3),
-        (s.rms_slope, 0.1582928308184987),
-        (s.rms_curvature.unwrap(), 2.4424994287882655e3),
-    ] {
-        assert!(
-            (got / want - 1.0).abs() < ST_AGREEMENT,
-            "{got} against {want}"
-        );
-    }
+    agrees_with_st(
+        &t,
+        1e-3,
+        &[
+            ((0, 0), 0.22351792454719543),
+            ((1, 0), 0.2231409251689911),
+            ((0, 1), 0.22296857833862305),
+            ((299, 299), 0.23054088652133942),
+            ((17, 123), 0.2641262114048004),
+        ],
+        [0.07434087951791002, 0.1582928308184987, 2.4424994287882655],
+        ST_AGREEMENT,
+    );
     let bytes = std::fs::read(data("tmd-1.tmd")).unwrap();
     error_of(
         &temp("cut.tmd", &bytes[..1000]),
@@ -968,5 +981,48 @@ fn truemap_tmd() {
         &temp("nocomment.tmd", &bytes[..40]),
         &ReadOptions::default(),
         "truncated",
+    );
+}
+
+/// BCRF (UTF-16 header, float32 values, nm and µm): `bcrf-1-crop.bcrf`,
+/// the first 8 rows of SurfaceTopography's 2.3 MB example (cut by
+/// tests/reference/bcrf_surface_topography.py), against SurfaceTopography
+/// 1.27.1 reading the cut file: 960 × 8 points of 1777404 nm × 14811.7067 nm,
+/// heights h[ix, iy] in nm, and its rms height, gradient and Laplacian after
+/// the plane (nm, 1, 1/nm).
+#[test]
+fn bcrf_unicode() {
+    let t = read::read(&data("bcrf-1-crop.bcrf"), &ReadOptions::default()).unwrap();
+    assert_eq!(t.shape(), [8, 960]);
+    assert!(close(t.lx(), 1777404e-9) && close(t.ly(), 14811.7067e-9));
+    // The plane removed from heights near 50.6 µm with a 9.4 nm rms: the
+    // fit cancels 3.7 digits (the case of ST_LARGE_OFFSET).
+    agrees_with_st(
+        &t,
+        1e-9,
+        &[
+            ((0, 0), 50628.37219238281),
+            ((1, 0), 50628.06701660156),
+            ((0, 1), 50628.61633300781),
+            ((959, 7), 50619.73190307617),
+            ((17, 5), 50626.50680541992),
+        ],
+        [
+            9.40584001220252,
+            0.008078266868992857,
+            8.959636020703598e-06,
+        ],
+        ST_LARGE_OFFSET,
+    );
+    let bytes = std::fs::read(data("bcrf-1-crop.bcrf")).unwrap();
+    error_of(
+        &temp("cut.bcrf", &bytes[..5000]),
+        &ReadOptions::default(),
+        "truncated",
+    );
+    error_of(
+        &temp("head.bcrf", &bytes[..300]),
+        &ReadOptions::default(),
+        "BCR",
     );
 }

@@ -3,15 +3,14 @@
 
 use std::path::Path;
 
-use super::{al3d, di, gsf, gwy, metropro, netcdf, sdf, sur, tmd, Format};
+use super::{al3d, bcr, di, gsf, gwy, metropro, netcdf, sdf, sur, tmd, Format};
 use crate::error::{Error, Result};
 
 /// Extensions of binary instrument formats persson does not read.
 const UNSUPPORTED: &[&str] = &[
-    "plux", "datx", "opd", "opdx", "mi", "nid", "frt", "bcrf", "bcr", "mnt", "lext", "vk3", "vk4",
-    "vk6", "vk7", "zon", "zmg", "os3d", "oir", "poir", "jpk", "top", "nms", "stp", "h5", "hdf5",
-    "mat", "tif", "tiff", "ezd", "mdt", "xlsx", "xls", "zip", "hgt", "dzi", "qep", "nmm", "ps",
-    "wsxm",
+    "plux", "datx", "opd", "opdx", "mi", "nid", "frt", "mnt", "lext", "vk3", "vk4", "vk6", "vk7",
+    "zon", "zmg", "os3d", "oir", "poir", "jpk", "top", "nms", "stp", "h5", "hdf5", "mat", "tif",
+    "tiff", "ezd", "mdt", "xlsx", "xls", "zip", "hgt", "dzi", "qep", "nmm", "ps", "wsxm",
 ];
 
 /// Leading bytes of binary formats persson does not read, with their names.
@@ -29,7 +28,7 @@ const MAGICS: &[(&[u8], &str)] = &[
 pub(crate) const READS: &str = "persson reads .npy, text (a matrix, XYZ triples or a line \
      scan, in .txt, .csv, .dat, .asc or .xyz), Gwyddion .gsf and .gwy, Digital Surf .sur, \
      Zygo MetroPro .dat, NetCDF .nc, Alicona .al3d, Sensofar .plu, Igor binary wave .ibw \
-     (Asylum Research), Bruker Nanoscope .spm/.di/.000, ISO 25178-71 .sdf, TrueMap .tmd and ISO 25178-72 .x3p, each also gzip-compressed (.gz); \
+     (Asylum Research), Bruker Nanoscope .spm/.di/.000, ISO 25178-71 .sdf, TrueMap .tmd, BCR-STM .bcr/.bcrf and ISO 25178-72 .x3p, each also gzip-compressed (.gz); \
      export to GSF or x3p with Gwyddion or SurfaceTopography";
 
 fn unsupported(path: &Path, what: &str) -> Error {
@@ -61,6 +60,7 @@ pub(crate) fn format(path: &Path, bytes: &[u8]) -> Result<Format> {
         Some("spm" | "di") => return Ok(Format::Nanoscope),
         Some("sdf") => return Ok(Format::Sdf),
         Some("tmd") => return Ok(Format::TrueMap),
+        Some("bcr" | "bcrf") => return Ok(Format::Bcr),
         Some(e) if UNSUPPORTED.contains(&e) => return Err(unsupported(path, &format!(".{e}"))),
         _ => {}
     }
@@ -81,6 +81,9 @@ pub(crate) fn format(path: &Path, bytes: &[u8]) -> Result<Format> {
     }
     if bytes.starts_with(sur::MAGIC) || bytes.starts_with(sur::MAGIC_COMPRESSED) {
         return Ok(Format::Sur);
+    }
+    if bcr::is_bcr(bytes) {
+        return Ok(Format::Bcr);
     }
     if bytes.starts_with(tmd::MAGIC) {
         return Ok(Format::TrueMap);

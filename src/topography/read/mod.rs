@@ -18,6 +18,7 @@
 //! | Igor binary wave `.ibw` v5 (Asylum Research; the first height channel) | `.ibw` | nx·sfA\[0\], ny·sfA\[1\] (no unit of x: the caller's) | `dataUnits` (none: the caller's, required) | NaN |
 //! | ISO 25178-71 `.sdf`, ASCII and binary (int16, int32, double) | `.sdf`, or `aISO-1.0`/`bISO-1.0` | NumPoints·Xscale, NumProfiles·Yscale | m (values × Zscale) | `BAD`, the int's minimum, NaN |
 //! | TrueMap `.tmd` v2 | `.tmd`, or `Binary TrueMap Data File v2.0` | Lx, Ly of the header (mm) | mm | NaN |
+//! | BCR-STM / BCRF (int16 or float32; Latin-1 or UTF-16 header) | `.bcr`, `.bcrf`, or `fileformat = bcr…` | `xlength`, `ylength` in `xunit` | `zunit` (values × `bit2nm`) | `voidpixels` |
 //! | any of these, gzip-compressed (`matrix.txt.gz`) | the gzip magic; the inner format by the name without `.gz`, or content | as the inner format | as the inner format | as the inner format |
 //!
 //! # Axis order
@@ -64,6 +65,7 @@
 //! [`ReadOptions::fill_undefined`] asks for harmonic interpolation.
 
 mod al3d;
+mod bcr;
 mod bin;
 mod detect;
 mod di;
@@ -137,6 +139,8 @@ pub enum Format {
     Sdf,
     /// TrueMap `.tmd`.
     TrueMap,
+    /// BCR-STM / BCRF `.bcr`, `.bcrf`.
+    Bcr,
 }
 
 /// How to read a topography.
@@ -331,6 +335,7 @@ fn parse_named(path: &Path, name: &Path, bytes: &[u8], options: &ReadOptions) ->
         Format::Nanoscope => di::parse(path, bytes)?,
         Format::Sdf => sdf::parse(path, bytes)?,
         Format::TrueMap => tmd::parse(path, bytes)?,
+        Format::Bcr => bcr::parse(path, bytes)?,
     };
     Ok(raw)
 }
