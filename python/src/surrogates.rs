@@ -139,17 +139,14 @@ impl SurrogatePlan {
         to_dict_warned(py, &r, &Surrogates::warnings(&r))
     }
 
-    /// Pickling (Dask): the settings as JSON (names and small integers),
-    /// the heights and the theory as floats.
+    /// Pickling (Dask): the settings as JSON (names and small integers; the
+    /// plan's serde form leaves the heights out), the heights, the other
+    /// floats and the theory as floats.
     fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<Bound<'py, PyAny>> {
         let py = slf.py();
         let p = slf.get();
-        let settings = Plan {
-            heights: Vec::new(),
-            ..p.plan.clone()
-        };
         let state = (
-            serde_json::to_string(&settings).map_err(json_error)?,
+            serde_json::to_string(&p.plan).map_err(json_error)?,
             p.plan.heights.clone(),
             p.plan.size,
             p.plan.contact_modulus,

@@ -63,7 +63,8 @@ pub struct AmplitudeAdjusted {
     pub surface: GridSurface,
     /// Iterations done.
     pub iterations: usize,
-    /// Whether the ranks stopped changing before the limit.
+    /// Whether the radial spectrum came within 1e-3 of the map's in every
+    /// shell before the limit.
     pub converged: bool,
     /// The largest relative difference of the radial spectrum from the map's
     /// over the bins of [`radial_mismatch`].
@@ -76,7 +77,7 @@ pub struct AmplitudeAdjusted {
 /// A constant map ([`Error::Inconsistent`] naming `heights`: it has no
 /// spectrum to keep).
 pub fn phase_randomised(map: &GridSurface, seed: u64) -> Result<GridSurface> {
-    check_not_constant(map)?;
+    check_map(map)?;
     let n = map.n;
     let target = transform(&map.heights, n);
     let mut rng = Pcg64Mcg::seed_from_u64(seed);
@@ -109,7 +110,7 @@ pub fn amplitude_adjusted(
     seed: u64,
     iterations: usize,
 ) -> Result<AmplitudeAdjusted> {
-    check_not_constant(map)?;
+    check_map(map)?;
     if iterations == 0 {
         return Err(Error::invalid("iterations", 0.0, ">= 1"));
     }
@@ -126,6 +127,8 @@ pub fn amplitude_adjusted(
     let mut r = shuffled(&map.heights, seed);
     let mut done = 0;
     let mut converged = false;
+    // The largest shell mismatch of `r` as it stands (set by every round).
+    let mut worst = f64::INFINITY;
     while done < iterations {
         // A round of IAAFT on the current amplitudes, until its ranks settle.
         let mut rank: Vec<usize> = Vec::new();
@@ -142,7 +145,7 @@ pub fn amplitude_adjusted(
         // so that what comes out has the map's power.
         let got: Vec<f64> = transform(&r, n).iter().map(|c| c.norm()).collect();
         let power = shells.power(&got);
-        let worst = relative_differences(&target_power, &power).fold(0.0, f64::max);
+        worst = relative_differences(&target_power, &power).fold(0.0, f64::max);
         if worst <= CORRECTED {
             converged = true;
             break;
@@ -155,15 +158,13 @@ pub fn amplitude_adjusted(
             }
         }
     }
-    let surface = GridSurface::new(n, map.size, r)?;
-    let spectrum_mismatch = radial_mismatch(map, &surface)?
-        .iter()
-        .fold(0.0, |m: f64, b| m.max(b.relative_difference));
+    // The corrections change the amplitudes, never `r`: the last round's
+    // mismatch is the surrogate's ([`radial_mismatch`]'s largest bin).
     Ok(AmplitudeAdjusted {
-        surface,
+        surface: GridSurface::new(n, map.size, r)?,
         iterations: done,
         converged,
-        spectrum_mismatch,
+        spectrum_mismatch: worst,
     })
 }
 
@@ -380,7 +381,11 @@ fn shuffled(heights: &[f64], seed: u64) -> Vec<f64> {
     v
 }
 
-fn check_not_constant(map: &GridSurface) -> Result<()> {
+/// The check every surrogate of `map` makes: a map that is not constant.
+///
+/// # Errors
+/// [`Error::Inconsistent`] naming `heights` for a constant map.
+pub fn check_map(map: &GridSurface) -> Result<()> {
     let first = map.heights.first().copied().unwrap_or(0.0);
     if map.heights.iter().all(|&h| h == first) {
         return Err(Error::Inconsistent {

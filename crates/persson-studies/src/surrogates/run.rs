@@ -19,7 +19,8 @@ use persson::bem::patches::{patch_statistics, pressure_tail, PatchOptions, TailS
 use persson::bem::rough::{solve, Observer, RoughOptions};
 use persson::bem::surface::GridSurface;
 use persson::bem::surrogate::{
-    amplitude_adjusted, height_moments, phase_randomised, student_t_975, DEFAULT_IAAFT_ITERATIONS,
+    amplitude_adjusted, check_map, height_moments, phase_randomised, student_t_975,
+    DEFAULT_IAAFT_ITERATIONS,
 };
 use persson::bem::{Options, Solution};
 use persson::error::{check, Error, Result};
@@ -50,7 +51,9 @@ pub struct Plan {
     pub grid: usize,
     /// Side L.
     pub size: f64,
-    /// The map's heights, row-major N × N.
+    /// The map's heights, row-major N × N (not in the serde form: a
+    /// process boundary carries them as floats, exactly, not as decimals).
+    #[serde(skip)]
     pub heights: Vec<f64>,
     /// Kind of surrogate.
     pub kind: SurrogateKindName,
@@ -142,7 +145,7 @@ impl Plan {
             boundary: spec.boundary.unwrap_or(BoundaryName::Periodic),
             tolerance,
         };
-        plan.surface(1)?;
+        check_map(surface)?;
         Ok(plan)
     }
 
