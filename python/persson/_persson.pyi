@@ -72,6 +72,7 @@ class Spectrum:
         window: Optional[Window] = None,
         fill_undefined: bool = False,
         q_max: Optional[float] = None,
+        channel: Optional[str] = None,
     ) -> Spectrum:
         """The spectrum of a measured surface file (the CLI's --surface)."""
     @staticmethod

@@ -417,9 +417,9 @@ impl Spectrum {
     /// The binned isotropic spectrum of a measured height map in a file
     /// (.npy, text matrix, .xyz, .gsf, .x3p, two-column line scan), as the
     /// CLI's `--surface FILE` with `--size`/`--pixel-size`, `--periodic`,
-    /// `--detrend`, `--window`, `--fill-undefined`, `--q-max`.
+    /// `--detrend`, `--window`, `--fill-undefined`, `--q-max`, `--channel`.
     #[staticmethod]
-    #[pyo3(signature = (path, *, size=None, pixel_size=None, periodic=false, detrend=None, window=None, fill_undefined=false, q_max=None))]
+    #[pyo3(signature = (path, *, size=None, pixel_size=None, periodic=false, detrend=None, window=None, fill_undefined=false, q_max=None, channel=None))]
     #[allow(clippy::too_many_arguments)]
     fn from_file(
         path: PathBuf,
@@ -430,6 +430,7 @@ impl Spectrum {
         window: Option<&str>,
         fill_undefined: bool,
         q_max: Option<f64>,
+        channel: Option<String>,
     ) -> PyResult<Self> {
         let size = match size.as_deref() {
             None => None,
@@ -450,6 +451,7 @@ impl Spectrum {
         spec.window = window.map(|w| name("window", w)).transpose()?;
         spec.fill_undefined = fill_undefined;
         spec.q_max = q_max;
+        spec.channel = channel;
         Self::from_spec(&SpectrumSpec::HeightMap(spec))
     }
 

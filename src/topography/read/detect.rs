@@ -3,14 +3,16 @@
 
 use std::path::Path;
 
-use super::{al3d, bcr, di, gsf, gwy, metropro, netcdf, sdf, sur, tmd, Format};
+use super::{
+    al3d, bcr, datx, di, frt, gsf, gwy, hdf5, metropro, mi, mitutoyo, mnt, netcdf, nid, nms, opdx,
+    park, sdf, sur, tmd, wsxm, wyko, Format,
+};
 use crate::error::{Error, Result};
 
 /// Extensions of binary instrument formats persson does not read.
 const UNSUPPORTED: &[&str] = &[
-    "plux", "datx", "opd", "opdx", "mi", "nid", "frt", "mnt", "lext", "vk3", "vk4", "vk6", "vk7",
-    "zon", "zmg", "os3d", "oir", "poir", "jpk", "top", "nms", "stp", "h5", "hdf5", "mat", "tif",
-    "tiff", "ezd", "mdt", "xlsx", "xls", "zip", "hgt", "dzi", "qep", "nmm", "ps", "wsxm",
+    "plux", "lext", "vk3", "vk4", "vk6", "vk7", "zon", "zmg", "os3d", "oir", "poir", "jpk", "mat",
+    "tif", "ezd", "mdt", "xls", "zip", "hgt", "dzi", "qep", "nmm", "ps",
 ];
 
 /// Leading bytes of binary formats persson does not read, with their names.
@@ -21,7 +23,6 @@ const MAGICS: &[(&[u8], &str)] = &[
     (b"MM\x00*", "TIFF"),
     (b"MATLAB", "MATLAB .mat"),
     (b"\x1f\x8b", "gzip-compressed twice"),
-    (b"VCA DATA", "Bruker .opdx"),
 ];
 
 /// What persson reads, for the error on a format it does not.
@@ -61,6 +62,18 @@ pub(crate) fn format(path: &Path, bytes: &[u8]) -> Result<Format> {
         Some("sdf") => return Ok(Format::Sdf),
         Some("tmd") => return Ok(Format::TrueMap),
         Some("bcr" | "bcrf") => return Ok(Format::Bcr),
+        Some("frt") => return Ok(Format::Frt),
+        Some("mi") => return Ok(Format::Mi),
+        Some("stp" | "top" | "wsxm") => return Ok(Format::Wsxm),
+        Some("opdx") => return Ok(Format::Opdx),
+        Some("tiff") => return Ok(Format::ParkTiff),
+        Some("xlsx") => return Ok(Format::Mitutoyo),
+        Some("mnt") => return Ok(Format::Mountains),
+        Some("opd") => return Ok(Format::Wyko),
+        Some("nid") => return Ok(Format::Nanosurf),
+        Some("nms") => return Ok(Format::NanoFocus),
+        Some("h5" | "hdf5") => return Ok(Format::Hdf5),
+        Some("datx") => return Ok(Format::Datx),
         Some(e) if UNSUPPORTED.contains(&e) => return Err(unsupported(path, &format!(".{e}"))),
         _ => {}
     }
@@ -96,6 +109,24 @@ pub(crate) fn format(path: &Path, bytes: &[u8]) -> Result<Format> {
     }
     if bytes.starts_with(al3d::MAGIC) {
         return Ok(Format::Al3d);
+    }
+    for (sniff, format) in [
+        (frt::sniff as fn(&[u8]) -> bool, Format::Frt),
+        (mi::sniff, Format::Mi),
+        (wsxm::sniff, Format::Wsxm),
+        (opdx::sniff, Format::Opdx),
+        (park::sniff, Format::ParkTiff),
+        (mitutoyo::sniff, Format::Mitutoyo),
+        (mnt::sniff, Format::Mountains),
+        (wyko::sniff, Format::Wyko),
+        (nid::sniff, Format::Nanosurf),
+        (nms::sniff, Format::NanoFocus),
+        (datx::sniff, Format::Datx),
+        (hdf5::sniff, Format::Hdf5),
+    ] {
+        if sniff(bytes) {
+            return Ok(format);
+        }
     }
     if bytes.starts_with(b"PK\x03\x04") {
         return Ok(Format::X3p);

@@ -67,22 +67,35 @@
 mod al3d;
 mod bcr;
 mod bin;
+mod channel;
+mod datx;
 mod detect;
 mod di;
+mod frt;
 mod gsf;
 mod gwy;
 mod gzip;
+mod hdf5;
 mod header;
 mod ibw;
 mod line;
 mod metropro;
+mod mi;
+mod mitutoyo;
+mod mnt;
 mod netcdf;
+mod nid;
+mod nms;
+mod opdx;
+mod park;
 mod plu;
 mod sdf;
 mod sur;
 mod text;
 mod tmd;
 mod units;
+mod wsxm;
+mod wyko;
 mod x3p;
 mod xyz;
 
@@ -141,6 +154,30 @@ pub enum Format {
     TrueMap,
     /// BCR-STM / BCRF `.bcr`, `.bcrf`.
     Bcr,
+    /// FRT MicroProf `.frt`.
+    Frt,
+    /// Molecular Imaging / Keysight `.mi`.
+    Mi,
+    /// WSxM `.stp`, `.top`.
+    Wsxm,
+    /// Bruker Dektak `.opdx`.
+    Opdx,
+    /// Park Systems `.tiff`.
+    ParkTiff,
+    /// Mitutoyo SurfTest `.xlsx`.
+    Mitutoyo,
+    /// Digital Surf Mountains `.mnt`.
+    Mountains,
+    /// Wyko `.opd`.
+    Wyko,
+    /// Nanosurf `.nid`.
+    Nanosurf,
+    /// NanoFocus `.nms`.
+    NanoFocus,
+    /// HDF5 `.h5` (a named or numbered data set).
+    Hdf5,
+    /// Zygo `.datx` (HDF5).
+    Datx,
 }
 
 /// How to read a topography.
@@ -167,6 +204,10 @@ pub struct ReadOptions {
     /// The size, given or stored, is that of the map as read, before the
     /// swap.
     pub transpose: bool,
+    /// The channel of a multi-channel file (a data set of an HDF5 file), by
+    /// name (case-insensitive) or by index from 0; default: the first
+    /// height channel.
+    pub channel: Option<String>,
 }
 
 /// The physical size a file stores, in its lateral unit.
@@ -336,6 +377,18 @@ fn parse_named(path: &Path, name: &Path, bytes: &[u8], options: &ReadOptions) ->
         Format::Sdf => sdf::parse(path, bytes)?,
         Format::TrueMap => tmd::parse(path, bytes)?,
         Format::Bcr => bcr::parse(path, bytes)?,
+        Format::Frt => frt::parse(path, bytes, options)?,
+        Format::Mi => mi::parse(path, bytes, options)?,
+        Format::Wsxm => wsxm::parse(path, bytes, options)?,
+        Format::Opdx => opdx::parse(path, bytes, options)?,
+        Format::ParkTiff => park::parse(path, bytes, options)?,
+        Format::Mitutoyo => mitutoyo::parse(path, bytes, options)?,
+        Format::Mountains => mnt::parse(path, bytes, options)?,
+        Format::Wyko => wyko::parse(path, bytes, options)?,
+        Format::Nanosurf => nid::parse(path, bytes, options)?,
+        Format::NanoFocus => nms::parse(path, bytes, options)?,
+        Format::Hdf5 => hdf5::parse(path, bytes, options)?,
+        Format::Datx => datx::parse(path, bytes, options)?,
     };
     Ok(raw)
 }

@@ -79,6 +79,10 @@ pub struct MapReadArgs {
     /// column; for arrays saved from SurfaceTopography's heights(), indexed [ix, iy]).
     #[arg(long, requires = "surface")]
     pub transpose: bool,
+    /// The channel of a multi-channel --surface file (a data set of an HDF5 file), by name
+    /// or index from 0 (default: the first height channel).
+    #[arg(long, requires = "surface", value_name = "NAME|INDEX")]
+    pub channel: Option<String>,
 }
 
 impl MapReadArgs {
@@ -96,6 +100,7 @@ impl MapReadArgs {
             height_unit: self.height_unit,
             lateral_unit: self.lateral_unit,
             transpose: self.transpose,
+            channel: self.channel.clone(),
             ..HeightMapSpec::new(file.to_path_buf())
         }
     }

@@ -140,6 +140,11 @@ pub struct HeightMapSpec {
     /// column: for arrays saved in SurfaceTopography's `[ix, iy]` order).
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub transpose: bool,
+    /// The channel of a multi-channel file (a data set of an HDF5 file), by
+    /// name (case-insensitive) or index from 0 (default: the first height
+    /// channel).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub channel: Option<String>,
     /// Tip radius R of the scanning probe, m: the band ends where the
     /// measured curvature is sharper than the tip (SurfaceTopography's
     /// reliability cut-off, safety factor 1/2).
@@ -172,6 +177,7 @@ impl HeightMapSpec {
             height_unit: None,
             lateral_unit: None,
             transpose: false,
+            channel: None,
             tip_radius: None,
         }
     }

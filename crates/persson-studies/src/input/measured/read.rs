@@ -76,6 +76,7 @@ impl HeightMapSpec {
             height_unit: self.height_unit.map(Into::into),
             lateral_unit: self.lateral_unit.map(Into::into),
             transpose: self.transpose,
+            channel: self.channel.clone(),
         };
         topo::read(&self.file, &options)
     }
