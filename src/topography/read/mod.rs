@@ -68,6 +68,7 @@ mod al3d;
 mod bcr;
 mod bin;
 mod channel;
+mod dataset;
 mod datx;
 mod detect;
 mod di;
@@ -104,6 +105,7 @@ use std::path::Path;
 use super::{fill, Layout, Note, Topography};
 use crate::error::{Error, Result};
 
+pub use dataset::{dataset, Dataset, DatasetMeasurement};
 pub use gsf::write_gsf;
 pub use units::LengthUnit;
 use units::Unit;
@@ -295,7 +297,8 @@ pub fn read(path: &Path, options: &ReadOptions) -> Result<Topography> {
 /// # Ok(()) }
 /// ```
 pub fn from_bytes(path: &Path, bytes: &[u8], options: &ReadOptions) -> Result<Topography> {
-    finish(path, parse(path, bytes, options)?, options)
+    let (raw, options) = parse(path, bytes, options)?;
+    finish(path, raw, &options)
 }
 
 /// A file's grid, size and heights as read: in metres, NaN where the file
@@ -323,7 +326,8 @@ pub struct AsRead {
 /// errors.
 pub fn as_read(path: &Path, options: &ReadOptions) -> Result<AsRead> {
     let bytes = crate::io::read(path)?;
-    let mut raw = parse(path, &bytes, options)?;
+    let (mut raw, options) = parse(path, &bytes, options)?;
+    let options = options.as_ref();
     let bad = |m: String| Error::parse(path, 0, 0, m);
     let (z, xy) = unit_factors(&raw, options).map_err(bad)?;
     raw.heights.iter_mut().for_each(|h| *h *= z);
@@ -337,13 +341,23 @@ pub fn as_read(path: &Path, options: &ReadOptions) -> Result<AsRead> {
     })
 }
 
-/// The format's parser on `bytes`.
-fn parse(path: &Path, bytes: &[u8], options: &ReadOptions) -> Result<Raw> {
+/// The format's parser on `bytes`, and the options the rest of reading
+/// takes (a dataset's measurement brings its own).
+fn parse<'o>(
+    path: &Path,
+    bytes: &[u8],
+    options: &'o ReadOptions,
+) -> Result<(Raw, std::borrow::Cow<'o, ReadOptions>)> {
     if bytes.starts_with(gzip::MAGIC) {
         let inner = gzip::inflate(path, bytes)?;
-        return parse_named(path, &gzip::inner_name(path), &inner, options);
+        let raw = parse_named(path, &gzip::inner_name(path), &inner, options)?;
+        return Ok((raw, std::borrow::Cow::Borrowed(options)));
     }
-    parse_named(path, path, bytes, options)
+    if options.format.is_none() && dataset::sniff(bytes) {
+        return dataset::parse(path, bytes, options);
+    }
+    let raw = parse_named(path, path, bytes, options)?;
+    Ok((raw, std::borrow::Cow::Borrowed(options)))
 }
 
 /// [`parse`] of `bytes` whose format `name` (its extension) or content

@@ -36,11 +36,16 @@ pub struct Args {
 
 /// Run `persson spectrum`.
 pub fn run(a: Args, files: &mut Files) -> anyhow::Result<()> {
-    if a.measured.surface.len() > 1 {
-        return multi_scale(&a, files);
-    }
-    if let Some(map) = a.measured.spec(a.q_max)? {
-        return measured(&a, &map, files);
+    use persson_studies::scene::SpectrumSpec;
+    match a.measured.spectrum_spec(a.q_max)? {
+        Some(SpectrumSpec::MultiScale { measurements }) => {
+            return multi_scale(&a, &measurements, files)
+        }
+        Some(SpectrumSpec::HeightMap(map)) if map.dataset_measurements()?.is_some() => {
+            return multi_scale(&a, &[map], files)
+        }
+        Some(SpectrumSpec::HeightMap(map)) => return measured(&a, &map, files),
+        _ => {}
     }
     let spec = a.spectrum.spec()?;
     let s = spec.build().map_err(|e| a.spectrum.psd_hint(e))?;
@@ -92,13 +97,14 @@ fn measured(
         .map_err(|e| e.context(format!("--surface {}", map.file.display())))
 }
 
-/// Several `--surface`: each measurement's band and the combined spectrum.
-fn multi_scale(a: &Args, files: &mut Files) -> anyhow::Result<()> {
-    use persson_studies::scene::SpectrumSpec;
-    let Some(SpectrumSpec::MultiScale { measurements }) = a.measured.spectrum_spec(a.q_max)? else {
-        anyhow::bail!("several --surface files expected");
-    };
-    let report = persson_studies::scene::multiscale::multi_scale(&measurements)?;
+/// Several `--surface`, or a dataset of several measurements: each
+/// measurement's band and the combined spectrum.
+fn multi_scale(
+    a: &Args,
+    measurements: &[persson_studies::scene::HeightMapSpec],
+    files: &mut Files,
+) -> anyhow::Result<()> {
+    let report = persson_studies::scene::multiscale::multi_scale(measurements)?;
     a.plot
         .draw(files, || persson_studies::scene::plot::multi_scale(&report))?;
     if let Some(path) = &a.psd_out {

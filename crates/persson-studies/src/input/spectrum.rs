@@ -181,6 +181,15 @@ impl HeightMapSpec {
             tip_radius: None,
         }
     }
+
+    /// The file as reports name it: with the channel read, `file#channel`
+    /// (a measurement of a dataset, a channel of a multi-channel file).
+    pub fn label(&self) -> PathBuf {
+        match &self.channel {
+            Some(c) => PathBuf::from(format!("{}#{c}", self.file.display())),
+            None => self.file.clone(),
+        }
+    }
 }
 
 impl SpectrumSpec {

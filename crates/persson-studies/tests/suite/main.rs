@@ -9,6 +9,7 @@ mod bem_fallback;
 mod bem_plot;
 mod compare;
 mod compare_bem;
+mod dataset;
 mod ensemble;
 mod plot;
 mod report;

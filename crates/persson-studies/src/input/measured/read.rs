@@ -81,6 +81,37 @@ impl HeightMapSpec {
         topo::read(&self.file, &options)
     }
 
+    /// A contact.engineering dataset named without a channel: its
+    /// measurements, each as this entry with the channel naming it and the
+    /// dataset's detrending (unless this entry gives one); `None` for any
+    /// other file.
+    ///
+    /// # Errors
+    /// As [`persson::topography::read::dataset`].
+    pub fn dataset_measurements(&self) -> Result<Option<Vec<HeightMapSpec>>> {
+        if self.channel.is_some() {
+            return Ok(None);
+        }
+        let Some(d) = topo::read::dataset(&self.file)? else {
+            return Ok(None);
+        };
+        Ok(Some(
+            d.measurements
+                .iter()
+                .map(|m| HeightMapSpec {
+                    channel: Some(m.name.clone()),
+                    detrend: self.detrend.or(Some(match m.detrend {
+                        Detrend::None => DetrendName::None,
+                        Detrend::Mean => DetrendName::Mean,
+                        Detrend::Plane => DetrendName::Plane,
+                        Detrend::Curvature => DetrendName::Curvature,
+                    })),
+                    ..self.clone()
+                })
+                .collect(),
+        ))
+    }
+
     /// Read and analyse the map: spectrum, statistics, Hurst fit.
     ///
     /// # Errors
@@ -111,6 +142,9 @@ impl HeightMapSpec {
     /// # Errors
     /// As [`HeightMapSpec::analyse`] and [`persson::topography::Psd::to_tabulated`].
     pub fn spectrum_described(&self) -> Result<Described<Tabulated>> {
+        if let Some(measurements) = self.dataset_measurements()? {
+            return crate::scene::multiscale::described(&measurements);
+        }
         let a = self.analyse()?;
         let s = a.psd.to_tabulated().map_err(|e| in_file(&self.file, e))?;
         Ok(Described {

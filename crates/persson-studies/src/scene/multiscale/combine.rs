@@ -13,6 +13,14 @@ use crate::warning::Warning;
 /// that a measurement has no reliable band.
 pub fn multi_scale(specs: &[HeightMapSpec]) -> Result<MultiScaleReport> {
     use persson::topography::{self as topo, AnalysisOptions, Measurement};
+    let mut expanded = Vec::with_capacity(specs.len());
+    for s in specs {
+        match s.dataset_measurements()? {
+            Some(ms) => expanded.extend(ms),
+            None => expanded.push(s.clone()),
+        }
+    }
+    let specs = &expanded[..];
     let maps: Vec<topo::Topography> = specs.iter().map(|s| s.read()).collect::<Result<_>>()?;
     let measurements: Vec<Measurement<'_>> = specs
         .iter()
@@ -31,14 +39,14 @@ pub fn multi_scale(specs: &[HeightMapSpec]) -> Result<MultiScaleReport> {
     let m = topo::multi_scale(&measurements, BINS_PER_DECADE).map_err(|e| name_file(specs, e))?;
     let mut warnings = Vec::new();
     for (s, c) in specs.iter().zip(&m.measurements) {
-        for w in crate::warning::of_measured(&s.file, &c.analysis) {
+        for w in crate::warning::of_measured(&s.label(), &c.analysis) {
             crate::warning::push(&mut warnings, Some(w));
         }
     }
     for g in &m.gaps {
         warnings.push(Warning::MeasurementGap {
-            below: specs[g.below].file.clone(),
-            above: specs[g.above].file.clone(),
+            below: specs[g.below].label(),
+            above: specs[g.above].label(),
             q_range: g.q_range,
         });
     }
@@ -47,7 +55,7 @@ pub fn multi_scale(specs: &[HeightMapSpec]) -> Result<MultiScaleReport> {
             .iter()
             .zip(&m.measurements)
             .map(|(s, c)| MeasurementBand {
-                file: s.file.clone(),
+                file: s.label(),
                 shape: c.analysis.shape,
                 pixel_size: c.analysis.pixel_size.clone(),
                 q_min: c.q_min,
