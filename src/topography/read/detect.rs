@@ -9,28 +9,45 @@ use super::{
 };
 use crate::error::{Error, Result};
 
-/// Extensions of binary instrument formats persson does not read.
+/// Extensions of binary instrument formats persson does not read (a `.zip`
+/// that is a contact.engineering dataset is read before this list is
+/// consulted; a `.tif` goes by its content: a Park Systems TIFF is read, a
+/// plain one is refused by `MAGICS`).
 const UNSUPPORTED: &[&str] = &[
     "plux", "lext", "vk3", "vk4", "vk6", "vk7", "zon", "zmg", "os3d", "oir", "poir", "jpk", "mat",
-    "tif", "ezd", "mdt", "xls", "zip", "hgt", "dzi", "qep", "nmm", "ps",
+    "ezd", "mdt", "xls", "zip", "npz", "hgt", "dzi", "qep", "nmm", "ps",
 ];
 
-/// Leading bytes of binary formats persson does not read, with their names.
+/// Leading bytes of binary formats persson does not read, with their names
+/// (checked after the formats it reads: an HDF5 file is read as `.h5` or
+/// `.datx`, a Park Systems TIFF as such).
 const MAGICS: &[(&[u8], &str)] = &[
     (b"GWYO", "Gwyddion 1 .gwy"),
-    (b"\x89HDF\r\n\x1a\n", "HDF5"),
     (b"II*\x00", "TIFF"),
     (b"MM\x00*", "TIFF"),
     (b"MATLAB", "MATLAB .mat"),
+    (b"VK3_", "Keyence .vk3"),
+    (b"VK4_", "Keyence .vk4"),
+    (b"VK6", "Keyence .vk6"),
+    (b"VK7", "Keyence .vk7"),
+    (b"KPK0", "Keyence .zon"),
+    (b"KPK1", "Keyence .zon"),
+    (b"Zeta-Instruments", "KLA Zeta .zmg"),
+    (b"OmniSurf3D", "OmniSurf3D .os3d"),
+    (b"\x01\xb0\x93\xff", "NT-MDT .mdt"),
     (b"\x1f\x8b", "gzip-compressed twice"),
 ];
 
 /// What persson reads, for the error on a format it does not.
 pub(crate) const READS: &str = "persson reads .npy, text (a matrix, XYZ triples or a line \
-     scan, in .txt, .csv, .dat, .asc or .xyz), Gwyddion .gsf and .gwy, Digital Surf .sur, \
-     Zygo MetroPro .dat, NetCDF .nc, Alicona .al3d, Sensofar .plu, Igor binary wave .ibw \
-     (Asylum Research), Bruker Nanoscope .spm/.di/.000, ISO 25178-71 .sdf, TrueMap .tmd, BCR-STM .bcr/.bcrf and ISO 25178-72 .x3p, each also gzip-compressed (.gz); \
-     export to GSF or x3p with Gwyddion or SurfaceTopography";
+     scan, in .txt, .csv, .dat, .asc or .xyz), Gwyddion .gsf and .gwy, Digital Surf .sur and \
+     Mountains .mnt, Zygo MetroPro .dat and .datx, NetCDF .nc, HDF5 .h5, Alicona .al3d, \
+     Sensofar .plu, Igor binary wave .ibw (Asylum Research), Bruker Nanoscope .spm/.di/.000, \
+     Bruker Dektak .opdx, Wyko .opd, FRT MicroProf .frt, Molecular Imaging .mi, WSxM \
+     .stp/.top, Nanosurf .nid, NanoFocus .nms, Park Systems .tiff, Mitutoyo SurfTest .xlsx, \
+     ISO 25178-71 .sdf, TrueMap .tmd, BCR-STM .bcr/.bcrf and ISO 25178-72 .x3p, each also \
+     gzip-compressed (.gz), and contact.engineering datasets (.zip); export to GSF or x3p \
+     with Gwyddion or SurfaceTopography";
 
 fn unsupported(path: &Path, what: &str) -> Error {
     Error::parse(path, 0, 0, format!("unsupported format ({what}): {READS}"))

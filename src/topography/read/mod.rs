@@ -19,7 +19,20 @@
 //! | ISO 25178-71 `.sdf`, ASCII and binary (int16, int32, double) | `.sdf`, or `aISO-1.0`/`bISO-1.0` | NumPoints·Xscale, NumProfiles·Yscale | m (values × Zscale) | `BAD`, the int's minimum, NaN |
 //! | TrueMap `.tmd` v2 | `.tmd`, or `Binary TrueMap Data File v2.0` | Lx, Ly of the header (mm) | mm | NaN |
 //! | BCR-STM / BCRF (int16 or float32; Latin-1 or UTF-16 header) | `.bcr`, `.bcrf`, or `fileformat = bcr…` | `xlength`, `ylength` in `xunit` | `zunit` (values × `bit2nm`) | `voidpixels` |
-//! | any of these, gzip-compressed (`matrix.txt.gz`) | the gzip magic; the inner format by the name without `.gz`, or content | as the inner format | as the inner format | as the inner format |
+//! | FRT MicroProf `.frt` v1.00/1.01 (block 0x000b topography; the images of block 0x007d by name) | `.frt`, or `FRTM_GLIDERV` | Lx, Ly of block 0x0067 (m) | m (values × z scale of block 0x006c); other channels: the caller's | value 1 |
+//! | Wyko `.opd` (array `Raw`/`RAW DATA`/`RAW_DATA`/`OPD`/`SAMPLE_DATA`; other arrays by name) | `.opd`, or `Directory` at byte 2 | nx·Pixel_size, ny·Pixel_size·Aspect (mm; no Pixel_size: the caller's) | mm (values × Wavelength/Mult·1e-6); other arrays: the caller's | not finite, ≥ 1e38 (f32), ≥ 32766 (i16) |
+//! | Bruker Dektak `.opdx`, profile or map (first channel of `1D_Channels`/`2D_Channels` `Height`, `PrimaryData2D` first) | `.opdx`, or `VCA DATA\x01\x00\x00\x55` | Extent·n/(n − 1) per axis, in its unit | the unit of `DataScale` (values × DataScale) | NaN |
+//! | Molecular Imaging / Keysight `.mi` (the first buffer in a length unit, or by `bufferLabel`) | `.mi`, or `fileType` | `xLength`, `yLength` (m) | `bufferUnit` (values × `bufferRange`/2³¹ or 2¹⁵) | – |
+//! | WSxM `.stp`, `.top` (double, float, int16) | `.stp`, `.top`, `.wsxm`, or `WSxM file copyright` | `X Amplitude`, `Y Amplitude` | the unit of `Z Amplitude` (int16 × Z Amplitude/(Maximum − Minimum)) | – |
+//! | Nanosurf `.nid` (the first channel in a length unit, or by `Frame (Dim2Name)`) | `.nid`, or `[DataSet]` | `Dim0Range`, `Dim1Range` | `Dim2Unit` (values × Dim2Range/2^bits + Dim2Min) | – |
+//! | NanoFocus `.nms` (`OM_MS_2.0`) | `.nms`, or `OM_MS_2.0` at byte 32 | nx·Δx, ny·Δy (nm) | µm (z_low … z_high over n_low … n_high) | intensity 0 |
+//! | Digital Surf Mountains `.mnt` (the measured surfaces; the first height channel) | `.mnt`, or an OLE file with a `ScopedContents` stream | nx·step_x, ny·step_y | the display unit of z | mask ≠ 9 |
+//! | Park Systems `.tiff` | `.tiff`, or a TIFF with Park's tag 50432 | Lx, Ly of the header (µm) | `data_unit` (empty: µm) | NaN |
+//! | Mitutoyo SurfTest `.xlsx` (line scan) | `.xlsx`, or a zip with `xl/workbook.xml` | n·Δ of column E (unit of the cut-off) | unit of the first roughness parameter | – |
+//! | HDF5 `.h5` (rank-2 numeric data sets; the first index along x) | `.h5`, `.hdf5`, or the HDF5 signature | from the caller | from the caller | NaN |
+//! | Zygo `.datx` (HDF5; the `/MetaData` surface) | `.datx`, or the HDF5 signature with `MetaData` in the first 4 kB | `nx·Δx`, `ny·Δy` from the X/Y converters (m) | `Unit` (MicroMeters, NanoMeters, …) | `No Data`, NaN |
+//! | contact.engineering dataset (a zip with `meta.yml` or `index.json`): one measurement, chosen by [`ReadOptions::channel`], read by its file's format | a zip holding `meta.yml` or `index.json` (any extension) | the file's, else `size` of the metadata (never the caller's) | the file's, else `unit` of the metadata (× `height_scale`) | as its file's format |
+//! | any of these but a dataset, gzip-compressed (`matrix.txt.gz`) | the gzip magic; the inner format by the name without `.gz`, or content | as the inner format | as the inner format | as the inner format |
 //!
 //! # Axis order
 //! A row of a `.npy` array or text matrix runs along x: the array of
@@ -56,9 +69,29 @@
 //! one of them but not the other needs the other from the caller.
 //!
 //! # Unsupported formats
-//! Binary instrument formats not in the table (`.datx`, `.opd`,
-//! `.vk4`, HDF5, …) are an error that names the format and says how to
-//! convert them.
+//! Binary instrument formats not in the table (Keyence `.vk3`/`.vk4`/`.vk6`/`.vk7`
+//! and `.zon`, Sensofar `.plux`, Olympus `.lext`, `.oir`/`.poir`, Digital
+//! Metrology `.os3d`, KLA Zeta `.zmg`, JPK `.jpk`, MATLAB `.mat`, Nanosurf
+//! easyScan `.ezd`, NT-MDT `.mdt`, Mahr `.qep`, SIOS NMM scans, NumPy
+//! `.npz`, SRTM `.hgt`, `.dzi`, a TIFF or zip archive of none of the
+//! formats above, …) are an error that names the format, says what persson
+//! reads and how to convert them.
+//!
+//! # Channels
+//! The readers of multi-channel formats (FRT, Wyko, Dektak OPDx, `.mi`,
+//! Nanosurf, Mountains, HDF5) list the file's channels and read one:
+//! [`ReadOptions::channel`] names it (case-insensitive) or gives its index
+//! from 0; without it, the first height channel (the one SurfaceTopography
+//! reads by default). A name or index the file does not have is an error
+//! listing its channels with their indices. FRT's and Wyko's intensity
+//! images are read, when named, as raw numbers with the height unit from
+//! the caller; a `.mi`, `.nid` or Park channel in a unit that is not a
+//! length is an error naming it. The one channel of a Park, Mitutoyo or
+//! `.datx` file answers to its name or 0. The other formats read their
+//! first height channel and do not consult `channel`. A contact.engineering
+//! dataset is read one measurement at a time: `channel` gives its name or
+//! its data file's name (exactly) or its index; without one, reading it is
+//! an error listing its measurements.
 //!
 //! Every error is an [`Error::Parse`] naming the file (and line where it
 //! helps); undefined points are an error with their count unless
