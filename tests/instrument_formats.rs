@@ -4,6 +4,8 @@
 //! file (`tests/reference/*_surface_topography.py`), then on damaged copies.
 #![cfg(feature = "topography")]
 
+#[path = "formats/channels.rs"]
+mod channels;
 #[path = "formats/dataset.rs"]
 mod dataset;
 #[path = "formats/frt_opd_opdx.rs"]
@@ -14,6 +16,8 @@ mod gzip_sdf_tmd_bcr;
 mod hdf5_datx;
 #[path = "formats/mi_wsxm_nid_nms.rs"]
 mod mi_wsxm_nid_nms;
+#[path = "formats/mutations.rs"]
+mod mutations;
 #[path = "formats/mnt_tiff_xlsx.rs"]
 mod mnt_tiff_xlsx;
 #[path = "formats/support.rs"]

@@ -26,8 +26,14 @@
 //! h[iy, ix] = that of raw[(ny − 1 − iy)·nx + ix]    (the file's first line is the top)
 //! ```
 //!
-//! The channel read is the first whose sensitivity is a length per volt
-//! (Height, ZSensor); none is an error naming the channels.
+//! Each image is a channel, named by the bracketed word of its
+//! `@2:Image Data` (`ZSensor`, `AmplitudeError`, `Phase`, `Height`, as
+//! SurfaceTopography names them), its index the image's position in the
+//! header from 0. [`ReadOptions::channel`] chooses one by name or index; a
+//! chosen channel whose sensitivity is not a length per volt (`Phase`,
+//! `AmplitudeError`) is an error. By default the channel read is the first
+//! whose sensitivity is a length per volt (Height, ZSensor); none is an
+//! error naming the channels.
 //!
 //! # References
 //! Bruker, "NanoScope Software 8 User Guide", "File Format" (the header
@@ -37,8 +43,9 @@
 use std::path::Path;
 
 use super::bin::{product, Bin};
+use super::channel::choose;
 use super::units::{LengthUnit, Unit};
-use super::{Raw, Stored};
+use super::{Raw, ReadOptions, Stored};
 use crate::error::Result;
 
 pub(crate) const MAGIC: &[u8] = b"\\*File list";
@@ -49,7 +56,7 @@ const MAX_HEADER: usize = 1 << 22;
 /// A section: its name and its `(key, value)` lines, keys in lower case.
 type Section = (String, Vec<(String, String)>);
 
-pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
+pub(crate) fn parse(path: &Path, b: &[u8], options: &ReadOptions) -> Result<Raw> {
     let f = Bin {
         bytes: b,
         path,
@@ -75,26 +82,63 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
     if images.is_empty() {
         return Err(f.bad("no image (\\*Ciao image list) in the header"));
     }
-    let mut names = Vec::new();
-    for image in images {
-        let get = |key: &str| -> Result<&str> {
-            image
-                .iter()
-                .find(|(k, _)| k == key)
-                .map(|(_, v)| v.as_str())
-                .ok_or_else(|| f.bad(format!("an image without \\{key}")))
-        };
-        let name = get("@2:image data")?;
-        let name = between(name, '[', ']').unwrap_or(name).to_string();
-        let z = get("@2:z scale")?;
-        match scale(&f, z, &scanner, &name)? {
-            Some((factor, unit)) => return channel(&f, &get, factor, unit, &name),
-            None => names.push(name),
+    let name_of = |image: &[(String, String)]| -> Result<String> {
+        let name = get(&f, image, "@2:image data")?;
+        Ok(between(name, '[', ']').unwrap_or(name).to_string())
+    };
+    let scale_of = |image: &[(String, String)], name: &str| {
+        scale(&f, get(&f, image, "@2:z scale")?, &scanner, name)
+    };
+    let Some(wanted) = options.channel.as_deref() else {
+        // The first height channel; an image before it that cannot be
+        // read is an error.
+        let mut names = Vec::new();
+        for &image in &images {
+            let name = name_of(image)?;
+            match scale_of(image, &name)? {
+                Some((factor, unit)) => {
+                    return channel(&f, &|k| get(&f, image, k), factor, unit, &name)
+                }
+                None => names.push(name),
+            }
         }
+        return Err(f.bad(format!(
+            "no height channel (a Z scale in a length per volt) among {names:?}"
+        )));
+    };
+    let names = images
+        .iter()
+        .map(|&image| name_of(image))
+        .collect::<Result<Vec<_>>>()?;
+    let mut scales: Vec<_> = images
+        .iter()
+        .zip(&names)
+        .map(|(&image, name)| scale_of(image, name))
+        .collect();
+    let list: Vec<(&str, bool)> = names
+        .iter()
+        .zip(&scales)
+        .map(|(n, s)| (n.as_str(), matches!(s, Ok(Some(_)))))
+        .collect();
+    let k = choose(&list, Some(wanted)).map_err(|m| f.bad(m))?;
+    let (image, name) = (images[k], &names[k]);
+    match scales.swap_remove(k)? {
+        Some((factor, unit)) => channel(&f, &|k| get(&f, image, k), factor, unit, name),
+        None => Err(f.bad(format!(
+            "channel \"{name}\": its Z scale {:?} is not in a length per volt: \
+             this channel is not a height map",
+            get(&f, image, "@2:z scale")?
+        ))),
     }
-    Err(f.bad(format!(
-        "no height channel (a Z scale in a length per volt) among {names:?}"
-    )))
+}
+
+/// The value of `key` in an image's section.
+fn get<'a>(f: &Bin, image: &'a [(String, String)], key: &str) -> Result<&'a str> {
+    image
+        .iter()
+        .find(|(k, _)| k == key)
+        .map(|(_, v)| v.as_str())
+        .ok_or_else(|| f.bad(format!("an image without \\{key}")))
 }
 
 /// The header's sections up to `\*File list end`.

@@ -19,12 +19,20 @@
 //! optional `/N/mask` field of the same shape marks undefined points (value
 //! > 0.5).
 //!
-//! The channel read is the first (in the file's order) whose values are
-//! lengths, as SurfaceTopography reads by default; a file without one, but
-//! with a channel whose unit is empty, reads that channel with the units
-//! the caller gives (Gwyddion's empty unit is "dimensionless": never taken
-//! for metres); channels with other units (`V`, `deg`) are an error naming
-//! them. Negative sizes are taken by their magnitude, as Gwyddion shows them.
+//! # Channels
+//! Every data field `/N/data` is a channel, named by its title
+//! (`/N/data/title`, e.g. `Height`, `Phase`), else `/N/data`; its index is
+//! its position among the data fields in the file's order (not `N`;
+//! SurfaceTopography numbers only the fields in units of length).
+//! [`ReadOptions::channel`] chooses one by name or index; a chosen channel
+//! whose values are not lengths (`deg`, `V`) is an error naming its unit.
+//! By default the channel read is the first (in the file's order) whose
+//! values are lengths, as SurfaceTopography reads by default; a file
+//! without one, but with a channel whose unit is empty, reads that channel
+//! with the units the caller gives (Gwyddion's empty unit is
+//! "dimensionless": never taken for metres); channels with other units are
+//! an error naming them. Negative sizes are taken by their magnitude, as
+//! Gwyddion shows them.
 //!
 //! # References
 //! Gwyddion user guide, "Gwyddion Native File Format"
@@ -33,8 +41,9 @@
 use std::path::Path;
 
 use super::bin::product;
+use super::channel;
 use super::units::Unit;
-use super::{Raw, Stored};
+use super::{Raw, ReadOptions, Stored};
 use crate::error::{Error, Result};
 
 /// The magic of Gwyddion 2 files (`GWYO`, Gwyddion 1, is not read).
@@ -192,7 +201,7 @@ impl<'b> Reader<'b> {
     }
 }
 
-pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
+pub(crate) fn parse(path: &Path, b: &[u8], options: &ReadOptions) -> Result<Raw> {
     let bad = |m: String| Error::parse(path, 0, 0, format!("Gwyddion .gwy: {m}"));
     if !b.starts_with(MAGIC) {
         return Err(bad(if b.starts_with(b"GWYO") {
@@ -213,42 +222,87 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
             top.kind
         )));
     }
-    let (index, field) = channel(&top).map_err(bad)?;
-    field_to_raw(&top, index, field).map_err(bad)
+    let fields = fields(&top);
+    let k = choose(&fields, options.channel.as_deref()).map_err(bad)?;
+    let (index, ref name, field) = fields[k];
+    field_to_raw(&top, index, name, field).map_err(bad)
 }
 
-/// A channel's index and data field: the first height channel, else the
-/// first without unit (module docs).
-fn channel<'o, 'b>(top: &'o Object<'b>) -> std::result::Result<(u64, &'o Object<'b>), String> {
-    let fields = top.items.iter().filter_map(|(k, v)| {
-        let index = k.strip_prefix('/')?.strip_suffix("/data")?.parse().ok()?;
-        match v {
-            Value::Object(o) if o.kind == "GwyDataField" => Some((index, o)),
-            _ => None,
-        }
-    });
-    let mut unitless = None;
-    let mut others = Vec::new();
-    for (index, f) in fields {
-        match Unit::declared("values", &unit(f, "si_unit_z")) {
-            Ok(Unit::Stated(..)) => return Ok((index, f)),
-            Ok(Unit::Unstated) => {
-                unitless.get_or_insert((index, f));
+/// The data fields `/N/data` in the file's order: `N`, the channel's name
+/// (its title, else `/N/data`) and the field.
+fn fields<'o, 'b>(top: &'o Object<'b>) -> Vec<(u64, String, &'o Object<'b>)> {
+    top.items
+        .iter()
+        .filter_map(|(k, v)| {
+            let index = k.strip_prefix('/')?.strip_suffix("/data")?.parse().ok()?;
+            match v {
+                Value::Object(o) if o.kind == "GwyDataField" => {
+                    let name = match top.get(&format!("/{index}/data/title")) {
+                        Some(Value::Text(t)) if !t.trim().is_empty() => t.trim().to_string(),
+                        _ => format!("/{index}/data"),
+                    };
+                    Some((index, name, o))
+                }
+                _ => None,
             }
-            Err(_) => others.push(format!("/{index}/data in {:?}", unit(f, "si_unit_z"))),
-        }
+        })
+        .collect()
+}
+
+/// The position among `fields` of the channel named `wanted`, else the
+/// first height channel, else the first without unit (module docs).
+fn choose(
+    fields: &[(u64, String, &Object)],
+    wanted: Option<&str>,
+) -> std::result::Result<usize, String> {
+    let units: Vec<(String, std::result::Result<Unit, String>)> = fields
+        .iter()
+        .map(|(_, _, f)| {
+            let z = unit(f, "si_unit_z");
+            let u = Unit::declared("values", &z);
+            (z, u)
+        })
+        .collect();
+    if wanted.is_some() {
+        let list: Vec<(&str, bool)> = fields
+            .iter()
+            .zip(&units)
+            .map(|((_, n, _), (_, u))| (n.as_str(), matches!(u, Ok(Unit::Stated(..)))))
+            .collect();
+        return channel::choose(&list, wanted);
     }
-    if let Some(c) = unitless {
-        return Ok(c);
+    if let Some(k) = units
+        .iter()
+        .position(|(_, u)| matches!(u, Ok(Unit::Stated(..))))
+    {
+        return Ok(k);
     }
-    Err(if others.is_empty() {
+    if let Some(k) = units.iter().position(|(_, u)| u == &Ok(Unit::Unstated)) {
+        return Ok(k);
+    }
+    Err(if fields.is_empty() {
         "the file has no data field (channel /N/data)".into()
     } else {
+        let others: Vec<String> = fields
+            .iter()
+            .zip(&units)
+            .map(|((i, n, _), (z, _))| format!("{} in {z:?}", label(*i, n)))
+            .collect();
         format!(
             "no channel holds heights (a unit of length): {}",
             others.join(", ")
         )
     })
+}
+
+/// A channel in the errors: `"Height" (/1/data)`, or `/1/data` untitled.
+fn label(index: u64, name: &str) -> String {
+    let key = format!("/{index}/data");
+    if name == key {
+        key
+    } else {
+        format!("\"{name}\" ({key})")
+    }
 }
 
 /// The `unitstr` of a `GwySIUnit` component, empty where absent.
@@ -294,12 +348,17 @@ fn values(field: &Object, n: usize, what: &str) -> std::result::Result<Vec<f64>,
         .collect())
 }
 
-fn field_to_raw(top: &Object, index: u64, f: &Object) -> std::result::Result<Raw, String> {
+fn field_to_raw(
+    top: &Object,
+    index: u64,
+    name: &str,
+    f: &Object,
+) -> std::result::Result<Raw, String> {
     let (nx, ny) = (int(f, "xres")?, int(f, "yres")?);
     let n = product(nx, ny, 8)
         .map(|b| b / 8)
         .ok_or_else(|| format!("xres × yres = {nx} × {ny} is too large"))?;
-    let what = format!("channel /{index}/data");
+    let what = format!("channel {}", label(index, name));
     let mut heights = values(f, n, &what)?;
     if let Some(Value::Object(m)) = top.get(&format!("/{index}/mask")) {
         let mask = values(m, n, &format!("mask /{index}/mask"))?;

@@ -17,11 +17,20 @@
 //!
 //! An AFM image is a wave of `nx × ny × channels` (Igor's first index is x);
 //! each channel's name is a 32-byte dimension label of the third dimension
-//! (after the dimension's own label). The channel read is the first whose
+//! (after the dimension's own label): `HeightTrace`, `HeightRetrace`,
+//! `AmplitudeTrace`, `PhaseTrace`, `ZSensorTrace`, …; channels without a
+//! label are `no name (1)`, `no name (2)`, … as SurfaceTopography names
+//! them. [`ReadOptions::channel`] chooses one by name or index (from 0, as
+//! SurfaceTopography's). By default the channel read is the first whose
 //! name contains `Height` or `ZSensor`; a wave without names reads its
 //! first channel; named channels none of which is a height are an error
-//! naming them. With SurfaceTopography's orientation (Igor's y runs
-//! upwards, the map's rows downwards):
+//! naming them. Asylum Research writes one data unit (`m`) for all the
+//! channels of a wave: a chosen channel is read in it only if its quantity
+//! is a length, by its `<name>Unit` in the wave's note, else by its name
+//! as SurfaceTopography 1.27 decides (`Height`, `ZSensor`, `Deflection`,
+//! `Amplitude`: lengths; `Phase`: deg, `Potential`: V, …); another is an
+//! error naming its unit. With SurfaceTopography's orientation (Igor's y
+//! runs upwards, the map's rows downwards):
 //!
 //! ```text
 //! h[iy, ix] = value[ix + nx·(ny − 1 − iy) + nx·ny·channel]   (dataUnits)
@@ -41,8 +50,9 @@
 use std::path::Path;
 
 use super::bin::{product, Bin};
-use super::units::Unit;
-use super::{Raw, Stored};
+use super::channel;
+use super::units::{not_a_length, LengthUnit, Unit};
+use super::{Raw, ReadOptions, Stored};
 use crate::error::Result;
 
 /// The binary header's size; the wave header follows.
@@ -122,7 +132,7 @@ fn wave_type(w: &Fields) -> Result<(usize, Kind)> {
     })
 }
 
-pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
+pub(crate) fn parse(path: &Path, b: &[u8], options: &ReadOptions) -> Result<Raw> {
     let f = Bin {
         bytes: b,
         path,
@@ -159,9 +169,8 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
     )?;
     // The sections after the wave: formula, note, extended units, labels.
     let mut at = BIN_HEADER.saturating_add(w.size(4, "wfmSize")?);
-    for (offset, what) in [(8, "formulaSize"), (12, "noteSize")] {
-        at = at.saturating_add(w.size(offset, what)?);
-    }
+    at = at.saturating_add(w.size(8, "formulaSize")?);
+    let note = section(&w, &mut at, 12, "the note")?;
     let data_units = section(&w, &mut at, 16, "the extended data units")?;
     let mut dim_units = Vec::new();
     for d in 0..4 {
@@ -176,8 +185,12 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
     for d in 0..4 {
         labels.push(section(&w, &mut at, 36 + 4 * d, "the dimension labels")?);
     }
-    let names: Vec<String> = labels[2].chunks(LABEL).skip(1).map(text).collect();
-    let channel = channel(f, &names, channels)?;
+    let names = names(labels[2], channels);
+    let list: Vec<(&str, bool)> = names.iter().map(|(n, h)| (n.as_str(), *h)).collect();
+    let channel = channel::choose(&list, options.channel.as_deref()).map_err(|m| f.bad(m))?;
+    if options.channel.is_some() {
+        asylum_length(f, note, labels[2], channel, &names[channel].0)?;
+    }
     let start = channel * nx * ny;
     let value = |k: usize| kind.decode(&values[(start + k) * item..(start + k + 1) * item], big);
     let mut heights = Vec::with_capacity(nx * ny);
@@ -272,22 +285,92 @@ fn text(b: &[u8]) -> String {
         .to_string()
 }
 
-/// The channel to read (module docs).
-fn channel(f: &Bin, names: &[String], channels: usize) -> Result<usize> {
-    let named: Vec<&String> = names.iter().take(channels).collect();
-    if named.iter().all(|n| n.is_empty()) {
-        return Ok(0);
+/// The channels: the labels of the third dimension after its own (31
+/// characters each), `no name (k)` for those without a label as
+/// SurfaceTopography names them, and whether each holds heights: its name
+/// contains `Height` or `ZSensor`, or no channel has a label.
+fn names(labels: &[u8], channels: usize) -> Vec<(String, bool)> {
+    let mut names: Vec<String> = labels
+        .chunks(LABEL)
+        .skip(1)
+        .take(channels)
+        .map(text)
+        .collect();
+    let unnamed = names.iter().all(|n| n.is_empty());
+    for k in 1..=channels - names.len() {
+        names.push(format!("no name ({k})"));
     }
-    named
-        .iter()
-        .position(|n| {
-            let n = n.to_ascii_lowercase();
-            n.contains("height") || n.contains("zsensor")
+    names
+        .into_iter()
+        .map(|n| {
+            let l = n.to_ascii_lowercase();
+            let height = unnamed || l.contains("height") || l.contains("zsensor");
+            (n, height)
         })
-        .ok_or_else(|| {
-            f.bad(format!(
-                "no height channel (Height…, ZSensor…) among {named:?}: export the height \
-                 channel"
-            ))
-        })
+        .collect()
+}
+
+/// The unit of an Asylum Research channel by the prefix of its name (after
+/// `Nap` or `DAC`, before `Trace`/`Retrace`), as SurfaceTopography 1.27
+/// reads it: the wave's data unit is that of the height channels, written
+/// for all its channels alike.
+const ASYLUM_UNITS: [(&str, Option<&str>); 11] = [
+    ("Height", Some("m")),
+    ("ZSensor", Some("m")),
+    ("Deflection", Some("m")),
+    ("Amplitude", Some("m")),
+    ("Phase", Some("deg")),
+    ("Current", Some("A")),
+    ("Frequency", Some("Hz")),
+    ("Capacitance", Some("F")),
+    ("Potential", Some("V")),
+    ("Count", None),
+    ("QFactor", None),
+];
+
+/// A channel the caller chose in a wave with a note (Asylum Research) is
+/// read only if its quantity is a length: its `<name>Unit` in the note,
+/// else by the prefix of its name (`ASYLUM_UNITS`, others are volts).
+fn asylum_length(f: &Bin, note: &[u8], labels: &[u8], k: usize, name: &str) -> Result<()> {
+    let note: String = note.iter().map(|&c| char::from(c)).collect();
+    let labelled = labels.chunks(LABEL).skip(1).nth(k).is_some();
+    if !labelled || !note.contains(':') {
+        return Ok(());
+    }
+    let mut base = name.trim_end_matches(|c: char| c.is_ascii_digit());
+    base = base.strip_suffix("Mod").unwrap_or(name);
+    for suffix in ["Trace", "Retrace"] {
+        if let Some(b) = base.strip_suffix(suffix) {
+            base = b;
+            break;
+        }
+    }
+    let key = format!("{base}Unit");
+    let noted = note.lines().find_map(|l| {
+        let (k, v) = l.split_once(':')?;
+        (k.trim() == key).then(|| v.trim().to_string())
+    });
+    let unit = match noted {
+        Some(u) => Some(u),
+        None => {
+            let b = ["DAC", "Nap"]
+                .iter()
+                .find_map(|p| base.strip_prefix(p))
+                .unwrap_or(base);
+            ASYLUM_UNITS
+                .iter()
+                .find(|(p, _)| b.starts_with(p))
+                .map_or(Some("V"), |(_, u)| *u)
+                .map(str::to_string)
+        }
+    };
+    let unit = unit.unwrap_or_default();
+    // Igor writes SI symbols: `A` is the ampere, never the ångström.
+    if unit != "A" && LengthUnit::parse(&unit).is_some() {
+        return Ok(());
+    }
+    Err(f.bad(not_a_length(
+        &format!("the values of channel \"{name}\""),
+        &unit,
+    )))
 }

@@ -403,6 +403,19 @@ fn parse_named(path: &Path, name: &Path, bytes: &[u8], options: &ReadOptions) ->
             e => e,
         })?,
     };
+    if let (Some(name), Some(wanted)) = (single_channel(format), options.channel.as_deref()) {
+        if wanted.trim() != "0" {
+            return Err(Error::parse(
+                path,
+                0,
+                0,
+                format!(
+                    "{name} files hold one channel: channel \"{wanted}\" does not exist \
+                     (give none, or 0)"
+                ),
+            ));
+        }
+    }
     let raw = match format {
         Format::Npy => {
             let m = crate::io::npy::parse(path, bytes)?;
@@ -413,14 +426,14 @@ fn parse_named(path: &Path, name: &Path, bytes: &[u8], options: &ReadOptions) ->
         Format::Gsf => gsf::parse(path, bytes)?,
         Format::X3p => x3p::parse(path, bytes)?,
         Format::LineScan => line::parse(path, &crate::io::text::rows(path, bytes)?)?,
-        Format::Gwy => gwy::parse(path, bytes)?,
+        Format::Gwy => gwy::parse(path, bytes, options)?,
         Format::Sur => sur::parse(path, bytes)?,
         Format::MetroPro => metropro::parse(path, bytes)?,
         Format::NetCdf => netcdf::parse(path, bytes)?,
         Format::Al3d => al3d::parse(path, bytes)?,
         Format::Plu => plu::parse(path, bytes)?,
-        Format::Ibw => ibw::parse(path, bytes)?,
-        Format::Nanoscope => di::parse(path, bytes)?,
+        Format::Ibw => ibw::parse(path, bytes, options)?,
+        Format::Nanoscope => di::parse(path, bytes, options)?,
         Format::Sdf => sdf::parse(path, bytes)?,
         Format::TrueMap => tmd::parse(path, bytes)?,
         Format::Bcr => bcr::parse(path, bytes)?,
@@ -438,6 +451,44 @@ fn parse_named(path: &Path, name: &Path, bytes: &[u8], options: &ReadOptions) ->
         Format::Datx => datx::parse(path, bytes, options)?,
     };
     Ok(raw)
+}
+
+/// The name of a format whose files hold one channel, for the error of
+/// [`ReadOptions::channel`] naming another; `None` for the formats whose
+/// readers choose among their channels (`channel::choose`). Every format is
+/// listed here, so a new one must say which it is.
+fn single_channel(format: Format) -> Option<&'static str> {
+    match format {
+        Format::Gwy
+        | Format::Ibw
+        | Format::Nanoscope
+        | Format::Frt
+        | Format::Mi
+        | Format::Opdx
+        | Format::ParkTiff
+        | Format::Mitutoyo
+        | Format::Mountains
+        | Format::Wyko
+        | Format::Nanosurf
+        | Format::Hdf5
+        | Format::Datx => None,
+        Format::Npy => Some("numpy .npy"),
+        Format::Text => Some("Text"),
+        Format::Xyz => Some("XYZ"),
+        Format::Gsf => Some("Gwyddion Simple Field .gsf"),
+        Format::X3p => Some("ISO 25178-72 .x3p"),
+        Format::LineScan => Some("Line scan"),
+        Format::Sur => Some("Digital Surf .sur"),
+        Format::MetroPro => Some("Zygo MetroPro .dat"),
+        Format::NetCdf => Some("NetCDF .nc"),
+        Format::Al3d => Some("Alicona .al3d"),
+        Format::Plu => Some("Sensofar .plu"),
+        Format::Sdf => Some("ISO 25178-71 .sdf"),
+        Format::TrueMap => Some("TrueMap .tmd"),
+        Format::Bcr => Some("BCR-STM/BCRF"),
+        Format::Wsxm => Some("WSxM"),
+        Format::NanoFocus => Some("NanoFocus .nms"),
+    }
 }
 
 /// Units, sizes, undefined points, transpose, validation; every error

@@ -18,7 +18,10 @@
 //! Lx = nx·Δx,  Ly = ny·Δy   (nm)
 //! ```
 //!
-//! A point whose intensity is 0 was not measured: undefined.
+//! A point whose intensity is 0 was not measured: undefined. The heights
+//! are the file's one channel (the intensity image only marks undefined
+//! points, as SurfaceTopography reads it): [`ReadOptions::channel`] may
+//! only be `0` (anything else is an error).
 //!
 //! # The units of Δx and of the heights
 //! Δx is in nanometres: the examples' Δx = 312.4999911618964 over

@@ -24,8 +24,10 @@
 //! offsets stored at bytes 466–477 are not added (a constant, removed by
 //! any detrending; SurfaceTopography does not add them either). Units are
 //! written in Latin-1 or code page 437 (`µm` as B5 or E6 followed by `m`).
-//! Only the first object of a multi-object file is read; a profile (type 0,
-//! ny = 1) is a line scan. Compressed files (`DSCOMPRESSED`) are refused,
+//! Only the first object of a multi-object file is read (as by
+//! SurfaceTopography, which names it `Default`): the file's one channel,
+//! so [`ReadOptions::channel`](super::ReadOptions::channel) may only be `0`
+//! (anything else is an error); a profile (type 0, ny = 1) is a line scan. Compressed files (`DSCOMPRESSED`) are refused,
 //! naming the format.
 //!
 //! # References

@@ -19,7 +19,11 @@
 //! integer scale uses the header's `Maximum` and `Minimum` (in the example
 //! `top-1.top` they equal the range of the values, 5927 to 6900); a header
 //! whose `Maximum` is not above its `Minimum` gives no scale and is an
-//! error. The file has one channel; no point is undefined.
+//! error. No point is undefined.
+//!
+//! A WSxM file holds one image (WSxM saves each channel and scan direction
+//! in a file of its own): [`ReadOptions::channel`] may only be `0`
+//! (anything else is an error).
 //!
 //! # References
 //! The layout as SurfaceTopography's `IO/WSXM.py` reads it.

@@ -58,8 +58,8 @@ pub fn multi_scale(specs: &[HeightMapSpec]) -> Result<MultiScaleReport> {
                 file: s.label(),
                 shape: c.analysis.shape,
                 pixel_size: c.analysis.pixel_size.clone(),
-                q_min: c.q_min,
-                q_max: c.q_max,
+                q_min: c.reliable.0,
+                q_max: c.reliable.1,
                 tip_cutoff_length: c.tip_cutoff_length,
                 rms_height: c.analysis.rms_height,
                 psd: BandSpectrum {

@@ -32,7 +32,7 @@ pub struct MeasurementBand {
     pub shape: [usize; 2],
     /// `[Δx, Δy]` or `[Δx]`, m.
     pub pixel_size: Vec<f64>,
-    /// Lower end of its bins, 1/m.
+    /// Lower end of its reliable band (the bins it contributes), 1/m.
     pub q_min: f64,
     /// Upper end of its reliable band, 1/m.
     pub q_max: f64,
