@@ -839,3 +839,55 @@ fn read_as_the_flags_say(file: &str, flags: &[&str]) -> Vec<f64> {
     }
     read(Path::new(file), &o).unwrap().heights().to_vec()
 }
+
+/// A contact.engineering dataset as `--surface`: `spectrum` shows each
+/// measurement's reliable band (named `dataset.zip#measurement`) and the
+/// combined spectrum; every other command takes the combined spectrum;
+/// `--channel` reads one measurement; a measurement it does not hold is an
+/// error naming the archive and listing the measurements.
+#[test]
+fn a_dataset_export_is_a_multi_scale_surface() {
+    let zip = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../tests/data/container-2.zip"
+    );
+    let s = json(&["spectrum", "--surface", zip, "--json"]);
+    let bands = s["measurements"].as_array().unwrap();
+    assert_eq!(bands.len(), 3);
+    assert!(bands[1]["file"]
+        .as_str()
+        .unwrap()
+        .ends_with("container-2.zip#gain_control_uncd_35.001"));
+    let q = s["q"].as_array().unwrap();
+    assert!(q.len() > 20, "{} bins", q.len());
+    let a = json(&[
+        "area",
+        "--surface",
+        zip,
+        "--contact-modulus",
+        "1e9",
+        "--pressure",
+        "1e6",
+        "--json",
+    ]);
+    let f = a["points"][0]["contact_fraction"].as_f64().unwrap();
+    assert!(f > 0.0 && f < 1.0, "{a}");
+    // One measurement, by name: the AFM map's own analysis.
+    let one = json(&[
+        "spectrum",
+        "--surface",
+        zip,
+        "--channel",
+        "gain_control_uncd_35.001",
+        "--json",
+    ]);
+    assert_eq!(one["shape"], serde_json::json!([512, 512]));
+    let (code, _, err) = persson(&["spectrum", "--surface", zip, "--channel", "AFM"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("container-2.zip")
+            && err.contains("no measurement \"AFM\"")
+            && err.contains("2: \"uncd_stylus_300um_5mar_3.txt\""),
+        "{err}"
+    );
+}
