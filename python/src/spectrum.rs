@@ -129,7 +129,13 @@ impl Spectrum {
         let own = std::mem::take(&mut s.warnings);
         s.warnings = match (&s.measured, spec) {
             (Some(m), _) => m.warnings(),
-            (None, SpectrumSpec::Sum { .. } | SpectrumSpec::MultiScale { .. }) => own,
+            // A dataset named as a height map is a multi-scale set.
+            (
+                None,
+                SpectrumSpec::Sum { .. }
+                | SpectrumSpec::MultiScale { .. }
+                | SpectrumSpec::HeightMap(_),
+            ) => own,
             (None, _) => vec![],
         };
         for w in persson_studies::scene::run::spectrum_warnings(spec, &s.shared) {
@@ -167,6 +173,9 @@ impl Spectrum {
             }
             // As HeightMapSpec::spectrum_described, keeping the notes.
             SpectrumSpec::HeightMap(m) => {
+                if let Some(measurements) = m.dataset_measurements().map_err(err)? {
+                    return Self::multi_scale(&measurements);
+                }
                 let a = m.analyse().map_err(err)?;
                 // The file's name in an error, as HeightMapSpec's (in_file).
                 if let Err(e) = a.psd.to_tabulated() {
@@ -179,22 +188,25 @@ impl Spectrum {
                 }
                 measured(a, &m.file)
             }
-            SpectrumSpec::MultiScale { measurements } => {
-                let d = persson_studies::scene::multiscale::described(measurements).map_err(err)?;
-                let mut s = Self::tabulated_spectrum(d.value, d.description, None);
-                for w in d.warnings {
-                    if !s.warnings.contains(&w) {
-                        s.warnings.push(w);
-                    }
-                }
-                Ok(s)
-            }
+            SpectrumSpec::MultiScale { measurements } => Self::multi_scale(measurements),
             SpectrumSpec::Sum { parts } => {
                 let parts: Vec<Spectrum> =
                     parts.iter().map(Self::from_spec).collect::<PyResult<_>>()?;
                 Self::sum_of(&parts)
             }
         }
+    }
+
+    /// The combined spectrum of several measurements, with their warnings.
+    fn multi_scale(measurements: &[persson_studies::scene::HeightMapSpec]) -> PyResult<Self> {
+        let d = persson_studies::scene::multiscale::described(measurements).map_err(err)?;
+        let mut s = Self::tabulated_spectrum(d.value, d.description, None);
+        for w in d.warnings {
+            if !s.warnings.contains(&w) {
+                s.warnings.push(w);
+            }
+        }
+        Ok(s)
     }
 
     /// The sum C = C1 + C2 + … of built spectra (two rough bodies).
@@ -415,7 +427,8 @@ impl Spectrum {
     }
 
     /// The binned isotropic spectrum of a measured height map in a file
-    /// (.npy, text matrix, .xyz, .gsf, .x3p, two-column line scan), as the
+    /// (every format of docs/surfaces.md; a contact.engineering dataset is
+    /// the combined spectrum of its measurements, `channel` reads one), as the
     /// CLI's `--surface FILE` with `--size`/`--pixel-size`, `--periodic`,
     /// `--detrend`, `--window`, `--fill-undefined`, `--q-max`, `--channel`.
     #[staticmethod]

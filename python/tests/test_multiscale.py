@@ -52,3 +52,21 @@ def test_combine_identical_measurements_is_the_measurement(tmp_path):
 def test_combine_needs_one_value_per_path(tmp_path):
     with pytest.raises(ValueError, match="one per path"):
         persson.Spectrum.combine([tmp_path / "a.npy", tmp_path / "b.npy"], pixel_sizes=[1e-6])
+
+
+def test_a_dataset_export_is_one_surface_and_channel_reads_one_measurement():
+    """contact.engineering's export of three measurements of one surface:
+    the combined spectrum spans them all; `channel` reads one of them."""
+    import pathlib
+
+    archive = pathlib.Path(__file__).resolve().parents[2] / "tests" / "data" / "container-2.zip"
+    whole = persson.Spectrum.from_file(archive)
+    afm = persson.Spectrum.from_file(archive, channel="gain_control_uncd_35.001")
+    stylus = persson.Spectrum.from_file(archive, channel="2")
+    # the stylus scan (0.3 mm) reaches lowest, the AFM map (100 nm) highest
+    # (each on its own bins: the first bins differ by less than one bin, 26 %)
+    assert whole.q_l == pytest.approx(stylus.q_l, rel=0.26)
+    assert stylus.q_s < afm.q_s and afm.q_l > stylus.q_l
+    assert whole.q_s < afm.q_s
+    with pytest.raises(ValueError, match='no measurement "AFM"'):
+        persson.Spectrum.from_file(archive, channel="AFM")
