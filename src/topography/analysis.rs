@@ -10,8 +10,8 @@
 //! with a [`Note`].
 
 use super::{
-    fit_hurst, fit_hurst_profile, isotropic_spectrum, profile_spectrum, real_space_stats, Bins,
-    Detrend, HurstFit, Layout, Note, ProfileSpectrum, Psd, Topography, Window,
+    fit_hurst, fit_hurst_profile, profile_spectrum, real_space_stats, Bins, Detrend, HurstFit,
+    Layout, Note, ProfileSpectrum, Psd, Topography, Window,
 };
 use crate::error::Result;
 
@@ -169,11 +169,22 @@ pub fn analyse(t: &Topography, options: &AnalysisOptions) -> Result<Analysis> {
     };
     let bins = options.bins.clone().unwrap_or_default();
     let mut notes = t.notes().to_vec();
-    let (psd, profile) = match t.layout() {
-        Layout::Map => (
-            isotropic_spectrum(t, conditioning, &bins, options.q_max)?,
-            None,
-        ),
+    let (psd, profile, real) = match t.layout() {
+        Layout::Map => {
+            // The trend is fitted once, and the statistics are taken from
+            // the spectrum's detrended rows as they are made (one pass).
+            let trend = super::condition::map_trend(t, conditioning.detrend);
+            let mut rows = super::stats::MapRows::new(t, trend.as_ref());
+            let psd = super::psd::map_spectrum(
+                t,
+                trend.as_ref(),
+                conditioning.window,
+                &bins,
+                options.q_max,
+                Some(&mut rows),
+            )?;
+            (psd, None, rows.finish())
+        }
         Layout::LineScans => {
             let p = profile_spectrum(t, conditioning, &bins, options.q_max)?;
             let c = p.to_isotropic()?;
@@ -183,10 +194,10 @@ pub fn analyse(t: &Topography, options: &AnalysisOptions) -> Result<Analysis> {
                     of: p.q.len(),
                 });
             }
-            (c.psd, Some(p))
+            let real = real_space_stats(t, conditioning.detrend)?;
+            (c.psd, Some(p), real)
         }
     };
-    let real = real_space_stats(t, conditioning.detrend)?;
     if real.rms_curvature.is_none() {
         notes.push(Note::CurvatureNotComputed {
             shape: t.shape(),

@@ -122,6 +122,50 @@ pub(crate) fn detrend_in_place(h: &mut [f64], nx: usize, ny: usize, layout: Layo
     }
 }
 
+/// Lanes of the partial sums below (independent additions the compiler
+/// can keep in vector registers).
+const LANES: usize = 4;
+
+/// `(Σ h, Σ h·p1, Σ h·p2)` of a row, in [`LANES`] partial sums.
+fn row_moments(row: &[f64], p1: &[f64], p2: &[f64]) -> [f64; 3] {
+    let mut s = [[0.0; LANES]; 3];
+    let (rows, p1s, p2s) = (
+        row.chunks_exact(LANES),
+        p1.chunks_exact(LANES),
+        p2.chunks_exact(LANES),
+    );
+    let tail = rows.remainder().len();
+    for ((v, a), b) in rows.zip(p1s).zip(p2s) {
+        for l in 0..LANES {
+            s[0][l] += v[l];
+            s[1][l] += v[l] * a[l];
+            s[2][l] += v[l] * b[l];
+        }
+    }
+    let k = row.len() - tail;
+    for i in k..row.len() {
+        s[0][0] += row[i];
+        s[1][0] += row[i] * p1[i];
+        s[2][0] += row[i] * p2[i];
+    }
+    s.map(|l| l.iter().sum())
+}
+
+/// Σ w² of a window row, in [`LANES`] partial sums.
+pub(crate) fn sum_squares(w: &[f64]) -> f64 {
+    let mut s = [0.0; LANES];
+    let mut chunks = w.chunks_exact(LANES);
+    for c in &mut chunks {
+        for l in 0..LANES {
+            s[l] += c[l] * c[l];
+        }
+    }
+    for v in chunks.remainder() {
+        s[0] += v * v;
+    }
+    s.iter().sum()
+}
+
 /// The least-squares trend of a map: `Σ_k coef_k P_a(u) P_b(v)`.
 pub(crate) struct MapTrend {
     /// P0, P1, P2 along x.
@@ -145,12 +189,7 @@ impl MapTrend {
         // One pass for all projections: Σ_iy P_b(v_iy) Σ_ix h P_a(u_ix).
         let mut num = vec![0.0; terms.len()];
         for (iy, row) in h.chunks_exact(nx).enumerate() {
-            let mut s = [0.0; 3];
-            for ((&v, p1), p2) in row.iter().zip(&bx[1]).zip(&bx[2]) {
-                s[0] += v;
-                s[1] += v * p1;
-                s[2] += v * p2;
-            }
+            let s = row_moments(row, &bx[1], &bx[2]);
             for (k, &(a, b)) in terms.iter().enumerate() {
                 num[k] += s[a] * by[b][iy];
             }
@@ -179,6 +218,73 @@ impl MapTrend {
     }
 }
 
+/// The trend `mode` of a map, fitted once for the spectrum and the
+/// statistics (`None` without detrending).
+pub(crate) fn map_trend(t: &Topography, mode: Detrend) -> Option<MapTrend> {
+    mode.degree()
+        .map(|d| MapTrend::fit(t.heights(), t.nx(), t.ny(), d))
+}
+
+/// Row `iy` of a map with the trend removed, into `out` (`nx` values): the
+/// same numbers as row `iy` of [`detrended`].
+pub(crate) fn detrended_row(t: &Topography, trend: Option<&MapTrend>, iy: usize, out: &mut [f64]) {
+    let nx = t.nx();
+    let src = &t.heights()[iy * nx..(iy + 1) * nx];
+    match trend {
+        Some(tr) => {
+            let c = tr.row(iy);
+            for (((d, s), p1), p2) in out.iter_mut().zip(src).zip(&tr.bx[1]).zip(&tr.bx[2]) {
+                *d = s - (c[0] + c[1] * p1 + c[2] * p2);
+            }
+        }
+        None => out.copy_from_slice(src),
+    }
+}
+
+/// The detrended rows of a map one at a time, in the window's order
+/// ([`super::window::for_rows`]: the centre row, then outwards a row below
+/// and a row above at a time): `f(iy, h, w)` for every row, `h` the row
+/// `iy` of [`detrended`] in a buffer of `nx` values that `f` may overwrite
+/// or swap for another of the same length, `w` the unnormalised window along
+/// it (`None` without a window). The conditioned row is `h·w`. Returns
+/// the window's mean square `⟨w²⟩` (1 without a window), which the caller
+/// divides the power by. No full-size copy.
+pub(crate) fn for_detrended_rows(
+    t: &Topography,
+    trend: Option<&MapTrend>,
+    window: super::Window,
+    mut f: impl FnMut(usize, &mut Vec<f64>, Option<&[f64]>),
+) -> f64 {
+    let (nx, ny) = (t.nx(), t.ny());
+    let mut buf = vec![0.0; nx];
+    let mut sum_w2 = 0.0;
+    super::window::for_rows(nx, ny, (t.lx(), t.ly()), window, |iy, w| {
+        buf.resize(nx, 0.0);
+        detrended_row(t, trend, iy, &mut buf);
+        if let Some(w) = w {
+            sum_w2 += sum_squares(w);
+        }
+        f(iy, &mut buf, w);
+    });
+    if window == super::Window::None {
+        1.0
+    } else {
+        sum_w2 / (nx * ny) as f64
+    }
+}
+
+/// `out = h·w` (`h` without a window).
+pub(crate) fn windowed(h: &[f64], w: Option<&[f64]>, out: &mut [f64]) {
+    match w {
+        Some(w) => {
+            for ((o, h), w) in out.iter_mut().zip(h).zip(w) {
+                *o = h * w;
+            }
+        }
+        None => out.copy_from_slice(h),
+    }
+}
+
 /// The conditioned heights of a map in one pass: `(h − trend)·w`, with the
 /// window's mean square `⟨w²⟩` returned instead of applied (the caller
 /// divides the power by it).
@@ -187,44 +293,12 @@ pub(crate) fn conditioned_map(
     mode: Detrend,
     window: super::Window,
 ) -> (Vec<f64>, f64) {
-    let (nx, ny) = (t.nx(), t.ny());
-    let h = t.heights();
-    let trend = mode.degree().map(|d| MapTrend::fit(h, nx, ny, d));
-    let mut out = vec![0.0; nx * ny];
-    let mut sum_w2 = 0.0;
-    super::window::for_rows(nx, ny, (t.lx(), t.ly()), window, |iy, w| {
-        let src = &h[iy * nx..(iy + 1) * nx];
-        let dst = &mut out[iy * nx..(iy + 1) * nx];
-        match (&trend, w) {
-            (Some(tr), Some(w)) => {
-                let c = tr.row(iy);
-                for ix in 0..nx {
-                    dst[ix] =
-                        (src[ix] - (c[0] + c[1] * tr.bx[1][ix] + c[2] * tr.bx[2][ix])) * w[ix];
-                }
-            }
-            (Some(tr), None) => {
-                let c = tr.row(iy);
-                for ix in 0..nx {
-                    dst[ix] = src[ix] - (c[0] + c[1] * tr.bx[1][ix] + c[2] * tr.bx[2][ix]);
-                }
-            }
-            (None, Some(w)) => {
-                for ix in 0..nx {
-                    dst[ix] = src[ix] * w[ix];
-                }
-            }
-            (None, None) => dst.copy_from_slice(src),
-        }
-        if let Some(w) = w {
-            sum_w2 += w.iter().map(|v| v * v).sum::<f64>();
-        }
+    let nx = t.nx();
+    let trend = map_trend(t, mode);
+    let mut out = vec![0.0; nx * t.ny()];
+    let mean_w2 = for_detrended_rows(t, trend.as_ref(), window, |iy, h, w| {
+        windowed(h, w, &mut out[iy * nx..(iy + 1) * nx])
     });
-    let mean_w2 = if window == super::Window::None {
-        1.0
-    } else {
-        sum_w2 / (nx * ny) as f64
-    };
     (out, mean_w2)
 }
 

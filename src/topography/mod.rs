@@ -65,6 +65,34 @@ pub use window::Window;
 
 use crate::error::{Error, Result};
 
+/// `(min, max, all finite)` of the heights in one pass, in lanes the
+/// compiler can keep in vector registers (a NaN is neither min nor max, as
+/// with `f64::min`; it clears `all finite`).
+fn span(h: &[f64]) -> (f64, f64, bool) {
+    const LANES: usize = 4;
+    let (mut lo, mut hi) = ([f64::INFINITY; LANES], [f64::NEG_INFINITY; LANES]);
+    let mut finite = [true; LANES];
+    let mut chunks = h.chunks_exact(LANES);
+    for c in &mut chunks {
+        for l in 0..LANES {
+            let v = c[l];
+            lo[l] = if v < lo[l] { v } else { lo[l] };
+            hi[l] = if v > hi[l] { v } else { hi[l] };
+            finite[l] &= v.abs() < f64::INFINITY;
+        }
+    }
+    for &v in chunks.remainder() {
+        lo[0] = if v < lo[0] { v } else { lo[0] };
+        hi[0] = if v > hi[0] { v } else { hi[0] };
+        finite[0] &= v.abs() < f64::INFINITY;
+    }
+    (
+        lo.iter().fold(f64::INFINITY, |a, &b| a.min(b)),
+        hi.iter().fold(f64::NEG_INFINITY, |a, &b| a.max(b)),
+        finite.iter().all(|&f| f),
+    )
+}
+
 /// How the heights are laid out.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "kebab-case")]
@@ -190,7 +218,14 @@ impl Topography {
                 ),
             });
         }
-        if let Some(k) = self.heights.iter().position(|h| !h.is_finite()) {
+        // One pass for the three checks: finite, not all equal, the span.
+        let (lo, hi, finite) = span(&self.heights);
+        if !finite {
+            let k = self
+                .heights
+                .iter()
+                .position(|h| !h.is_finite())
+                .unwrap_or(0);
             return Err(Error::invalid(
                 format!("height[{}, {}]", k / self.nx, k % self.nx),
                 self.heights[k],
@@ -198,7 +233,7 @@ impl Topography {
             ));
         }
         let h0 = self.heights[0];
-        if self.heights.iter().all(|&h| h == h0) {
+        if lo == hi {
             return Err(Error::Inconsistent {
                 name: "heights".into(),
                 requirement: format!(
@@ -208,7 +243,7 @@ impl Topography {
                 ),
             });
         }
-        self.check_scales()
+        self.check_scales(lo, hi)
     }
 
     /// Refuse heights (or a pixel size) whose statistics overflow: heights
@@ -223,14 +258,9 @@ impl Topography {
     /// is at most B = √(f64::MAX/n)/(8n) (the factor n for the spectrum's
     /// sum, 8 for the stencils' and π√2's constants), decided on
     /// logarithms. The heights are named unless the pixel size is the
-    /// further from 1 in order of magnitude of the two.
-    fn check_scales(&self) -> Result<()> {
-        let (lo, hi) = self
-            .heights
-            .iter()
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &h| {
-                (a.min(h), b.max(h))
-            });
+    /// further from 1 in order of magnitude of the two. `lo`, `hi`: the
+    /// smallest and largest height.
+    fn check_scales(&self, lo: f64, hi: f64) -> Result<()> {
         let ln_span = (0.5 * hi - 0.5 * lo).ln() + std::f64::consts::LN_2;
         let d = match self.layout {
             Layout::Map => self.dx().min(self.dy()),

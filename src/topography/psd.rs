@@ -25,11 +25,15 @@
 //! isotropic C(q) by [`crate::spectrum::Convention::Profile1D`].
 //!
 //! # Memory and time
-//! The conditioned copy of the heights (N doubles) and the half spectrum of
-//! the row transforms (≈ N doubles) are the only large buffers; the column
-//! transforms run in blocks that stay in cache and are binned at once, the
-//! full spectrum is never stored. Measured on a 4096² map: see
-//! `examples/topography_speed.rs`.
+//! The half spectrum of the row transforms (≈ N doubles) is the only large
+//! buffer: each row is detrended and windowed into a row buffer and
+//! transformed at once (no conditioned copy of the map), the column
+//! transforms run in blocks that stay in cache and are binned at once
+//! (the bin moves by a step along a column, never searched), the full
+//! spectrum is never stored. [`super::analyse`] takes the real-space
+//! statistics from the same detrended rows. Measured on a 4096² map: see
+//! `examples/topography_speed.rs`; the whole `persson spectrum` process
+//! against SurfaceTopography: `scripts/spectrum_speed.py`.
 //!
 //! # References
 //! Jacobs, Junge & Pastewka, Surf. Topogr.: Metrol. Prop. 5, 013001 (2017);
@@ -44,7 +48,7 @@ use crate::error::{check, Error, Result};
 use crate::spectrum::{Convention, Tabulated};
 
 /// Bytes of a block of spectrum columns transformed together (stays in L2).
-const BLOCK_BYTES: usize = 1 << 18;
+const BLOCK_BYTES: usize = 1 << 19;
 
 /// How the radial average is binned.
 #[derive(Debug, Clone, PartialEq)]
@@ -234,6 +238,63 @@ impl Binner {
         self.m[2] += wc * q2 * q2;
     }
 
+    /// Add the modes `z` of one spectrum column, `|q|² = qx2 + ky2[i]`,
+    /// `C = factor·|z|²`, each of weight `weight`; the same bins as [`Binner::add`]
+    /// mode by mode. Along a column |q| rises to the Nyquist row and falls
+    /// after it, so the bin index moves by a step or two, never searched,
+    /// and a run of modes in one bin is summed before it is added.
+    fn add_column(&mut self, z: &[Complex64], ky2: &[f64], qx2: f64, factor: f64, weight: f64) {
+        let Binner {
+            edges: e,
+            w: bw,
+            sq: bsq,
+            sc: bsc,
+            m: bm,
+        } = self;
+        let ne = e.len();
+        // A run of `n` modes of bin `run − 1` into the bin's sums.
+        let mut flush = |run: usize, n: usize, sq: f64, sc: f64| {
+            if run != usize::MAX && n > 0 {
+                let b = run - 1;
+                bw[b] += weight * n as f64;
+                bsq[b] += weight * sq;
+                bsc[b] += weight * sc;
+            }
+        };
+        // `i` = number of edges below q (`partition_point`): bin i − 1.
+        let mut i = 0;
+        let (mut run, mut n, mut sq, mut sc) = (usize::MAX, 0usize, 0.0, 0.0);
+        let mut m = [0.0; 3];
+        for (z, ky2) in z.iter().zip(ky2) {
+            let q = (qx2 + ky2).sqrt();
+            while i < ne && e[i] < q {
+                i += 1;
+            }
+            while i > 0 && e[i - 1] >= q {
+                i -= 1;
+            }
+            if i == 0 || i >= ne {
+                continue;
+            }
+            if i != run {
+                flush(run, n, sq, sc);
+                (run, n, sq, sc) = (i, 0, 0.0, 0.0);
+            }
+            let c = factor * z.norm_sqr();
+            let q2 = q * q;
+            n += 1;
+            sq += q;
+            sc += c;
+            m[0] += c;
+            m[1] += c * q2;
+            m[2] += c * q2 * q2;
+        }
+        flush(run, n, sq, sc);
+        for (a, b) in bm.iter_mut().zip(m) {
+            *a += weight * b;
+        }
+    }
+
     /// `(q̄, C̄, count)` of the non-empty bins.
     fn finish(&self) -> (Vec<f64>, Vec<f64>, Vec<usize>) {
         let mut out = (Vec::new(), Vec::new(), Vec::new());
@@ -293,13 +354,29 @@ pub fn isotropic_spectrum(
     bins: &Bins,
     q_max: Option<f64>,
 ) -> Result<Psd> {
-    use std::f64::consts::TAU;
     if t.layout() != Layout::Map {
         return Err(Error::Inconsistent {
             name: "layout".into(),
             requirement: "a 2D map for the radial average (line scans: profile_spectrum)".into(),
         });
     }
+    let trend = condition::map_trend(t, conditioning.detrend);
+    map_spectrum(t, trend.as_ref(), conditioning.window, bins, q_max, None)
+}
+
+/// [`isotropic_spectrum`] of a map with its trend already fitted
+/// ([`condition::map_trend`]), so that [`super::analyse`] fits it once for
+/// the spectrum and the statistics; with `stats`, the detrended rows are
+/// handed to it as they are made (the statistics in the same pass).
+pub(crate) fn map_spectrum(
+    t: &Topography,
+    trend: Option<&condition::MapTrend>,
+    window: super::Window,
+    bins: &Bins,
+    q_max: Option<f64>,
+    mut stats: Option<&mut super::stats::MapRows>,
+) -> Result<Psd> {
+    use std::f64::consts::TAU;
     let (nx, ny) = (t.nx(), t.ny());
     let (lx, ly) = (t.lx(), t.ly());
     let (q_min, nyquist) = t.band();
@@ -307,22 +384,39 @@ pub fn isotropic_spectrum(
     let q_lo = (TAU / lx).min(TAU / ly);
     let mut binner = Binner::new(bins.edges(q_lo, q_hi)?);
 
-    let (mut h, mean_w2) = condition::conditioned_map(t, conditioning.detrend, conditioning.window);
-
-    // Row transforms into the half spectrum, ny × nc row-major.
+    // Each conditioned row straight into its row transform. The half
+    // spectrum (ny × nc) is the only full-size buffer, stored by blocks of
+    // `width` columns, each block its ny rows one after the other: a row's
+    // transform goes out in one piece per block, and the column pass reads
+    // a block as one stretch of memory (not ny rows far apart).
     let nc = nx / 2 + 1;
+    let width = (BLOCK_BYTES / (16 * ny)).clamp(1, nc);
     let r2c = crate::fft::real_forward(nx);
-    let mut spec = vec![Complex64::new(0.0, 0.0); ny * nc];
+    // (re, im) pairs of f64: zeroed by the allocator (fresh pages from the
+    // system), not filled with zeros by a first pass over 16·ny·nc bytes.
+    let mut spec = vec![0.0; 2 * ny * nc];
+    let mut input = vec![0.0; nx];
+    let mut out = r2c.make_output_vec();
     let mut rscratch = r2c.make_scratch_vec();
-    for (row, out) in h.chunks_exact_mut(nx).zip(spec.chunks_exact_mut(nc)) {
-        crate::fft::forward_row(&*r2c, row, out, &mut rscratch);
-    }
-    drop(h);
+    let mean_w2 = condition::for_detrended_rows(t, trend, window, |iy, h, w| {
+        condition::windowed(h, w, &mut input);
+        if let Some(s) = stats.as_deref_mut() {
+            s.push(iy, h);
+        }
+        crate::fft::forward_row(&*r2c, &mut input, &mut out, &mut rscratch);
+        for (b, part) in out.chunks(width).enumerate() {
+            let start = 2 * (b * width * ny + iy * part.len());
+            let dst = &mut spec[start..start + 2 * part.len()];
+            for (d, z) in dst.chunks_exact_mut(2).zip(part) {
+                d[0] = z.re;
+                d[1] = z.im;
+            }
+        }
+    });
 
-    // Column transforms in blocks, binned at once.
+    // Column transforms block by block, binned at once.
     let fft = crate::fft::complex(ny, false);
     let mut scratch = vec![Complex64::new(0.0, 0.0); fft.get_inplace_scratch_len()];
-    let width = (BLOCK_BYTES / (16 * ny)).clamp(1, nc);
     let mut block = vec![Complex64::new(0.0, 0.0); width * ny];
     let factor = lx * ly / (TAU * TAU * (nx as f64).powi(2) * (ny as f64).powi(2) * mean_w2);
     // q as SurfaceTopography computes it: (2π n/L)/n · k.
@@ -336,30 +430,30 @@ pub fn isotropic_spectrum(
             (dqy * k).powi(2)
         })
         .collect();
-    let mut c0 = 0;
-    while c0 < nc {
-        let w = width.min(nc - c0);
-        for (iy, row) in spec.chunks_exact(nc).enumerate() {
-            for c in 0..w {
-                block[c * ny + iy] = row[c0 + c];
+    for (b, part) in spec.chunks(2 * width * ny).enumerate() {
+        let w = part.len() / (2 * ny);
+        for (iy, row) in part.chunks_exact(2 * w).enumerate() {
+            for (c, z) in row.chunks_exact(2).enumerate() {
+                block[c * ny + iy] = Complex64::new(z[0], z[1]);
             }
         }
         fft.process_with_scratch(&mut block[..w * ny], &mut scratch);
         for c in 0..w {
-            let kx = c0 + c;
+            let kx = b * width + c;
             // A half-spectrum column stands for itself and its conjugate,
             // except k_x = 0 and (even nx) the Nyquist column.
             let weight = if kx == 0 || 2 * kx == nx { 1.0 } else { 2.0 };
             let qx2 = (dqx * kx as f64).powi(2);
-            for (iy, z) in block[c * ny..(c + 1) * ny].iter().enumerate() {
-                if kx == 0 && iy == 0 {
-                    continue;
-                }
-                let q = (qx2 + ky2[iy]).sqrt();
-                binner.add(q, factor * z.norm_sqr(), weight);
-            }
+            // The mode (0, 0) is the mean: left out.
+            let first = usize::from(kx == 0);
+            binner.add_column(
+                &block[c * ny + first..(c + 1) * ny],
+                &ky2[first..],
+                qx2,
+                factor,
+                weight,
+            );
         }
-        c0 += w;
     }
     let (q, c, count) = binner.finish();
     if q.is_empty() {

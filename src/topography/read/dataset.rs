@@ -100,6 +100,12 @@ pub(crate) fn sniff(bytes: &[u8]) -> bool {
 /// unknown unit or detrend mode, a size or scale that is not a positive
 /// number.
 pub fn dataset(path: &Path) -> Result<Option<Dataset>> {
+    // The zip magic first: a map is not read twice (128 MB of a 4096² .npy).
+    let mut magic = [0u8; 4];
+    let opened = std::fs::File::open(path).and_then(|mut f| f.read_exact(&mut magic));
+    if opened.is_ok() && &magic != b"PK\x03\x04" {
+        return Ok(None);
+    }
     let bytes = crate::io::read(path)?;
     if sniff(&bytes) {
         meta(path, &bytes).map(Some)
