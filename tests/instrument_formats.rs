@@ -16,9 +16,9 @@ mod gzip_sdf_tmd_bcr;
 mod hdf5_datx;
 #[path = "formats/mi_wsxm_nid_nms.rs"]
 mod mi_wsxm_nid_nms;
-#[path = "formats/mutations.rs"]
-mod mutations;
 #[path = "formats/mnt_tiff_xlsx.rs"]
 mod mnt_tiff_xlsx;
+#[path = "formats/mutations.rs"]
+mod mutations;
 #[path = "formats/support.rs"]
 mod support;

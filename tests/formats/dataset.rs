@@ -135,7 +135,7 @@ fn index_json_squeezed_files_and_broken_archives() {
         .unwrap()
         .is_none());
 
-    let broken: [(&str, String, &str); 5] = [
+    let broken: [(&str, String, &str); 6] = [
         (
             "nofile.zip",
             index.replace("\"m.txt\"", "\"gone.txt\""),
@@ -160,6 +160,11 @@ fn index_json_squeezed_files_and_broken_archives() {
             "two.zip",
             index.replace("]}]}", "]}, {\"name\": \"t\"}]}"),
             "lists 2 surfaces (s, t)",
+        ),
+        (
+            "nounit.zip",
+            index.replacen("\"unit\": \"um\", ", "", 1),
+            "measurement \"m\" (m.txt): neither the file nor the dataset's metadata give the unit",
         ),
     ];
     for (name, meta, needle) in broken {

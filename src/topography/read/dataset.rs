@@ -329,6 +329,15 @@ pub(crate) fn parse<'o>(
     };
     let mut raw = super::parse_named(path, Path::new(&m.file), &data, &inner).map_err(in_member)?;
     let meta_unit = || m.unit.map(|u| Unit::Stated(u.to_string(), u));
+    let lateral_unstated = raw.size.as_ref().is_none_or(|s| s.unit == Unit::Unstated);
+    if m.unit.is_none() && (raw.height_unit == Unit::Unstated || lateral_unstated) {
+        return Err(in_member(Error::parse(
+            path,
+            0,
+            0,
+            "neither the file nor the dataset's metadata give the unit of its heights or              size (a dataset's measurements are combined in metres: a unit is needed)",
+        )));
+    }
     if raw.height_unit == Unit::Unstated && !raw.require_units {
         if !m.squeezed && m.height_scale != 1.0 {
             raw.heights.iter_mut().for_each(|h| *h *= m.height_scale);
