@@ -4,6 +4,8 @@
 //! file (`tests/reference/*_surface_topography.py`), then on damaged copies.
 #![cfg(feature = "topography")]
 
+#[path = "formats/archives.rs"]
+mod archives;
 #[path = "formats/channels.rs"]
 mod channels;
 #[path = "formats/dataset.rs"]

@@ -38,6 +38,7 @@ use std::path::Path;
 
 use yaml_rust2::{Yaml, YamlLoader};
 
+use super::archive::{self, Archive};
 use super::units::{LengthUnit, Unit};
 use super::{Raw, ReadOptions, Stored};
 use crate::error::{Error, Result};
@@ -233,24 +234,9 @@ fn measurement(t: &Yaml) -> std::result::Result<DatasetMeasurement, String> {
     })
 }
 
-/// An archive member, whole.
-fn member(zip: &mut zip::ZipArchive<Cursor<&[u8]>>, path: &Path, name: &str) -> Result<Vec<u8>> {
-    let mut data = Vec::new();
-    zip.by_name(name)
-        .map_err(|e| {
-            bad(
-                path,
-                format!("the archive has no readable member {name:?}: {e}"),
-            )
-        })?
-        .read_to_end(&mut data)
-        .map_err(|e| {
-            bad(
-                path,
-                format!("member {name:?} is unreadable or truncated: {e}"),
-            )
-        })?;
-    Ok(data)
+/// An archive member, whole (bounded: [`archive::member`]).
+fn member(zip: &mut Archive, path: &Path, name: &str) -> Result<Vec<u8>> {
+    archive::member(zip, path, FORMAT, name, archive::MAX_MEMBER)
 }
 
 /// The measurement `options.channel` names: by name, data file or index.

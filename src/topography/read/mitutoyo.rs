@@ -31,9 +31,10 @@
 //! reads it.
 
 use std::collections::HashMap;
-use std::io::{Cursor, Read};
+use std::io::Cursor;
 use std::path::Path;
 
+use super::archive::{self, Archive};
 use super::units::{LengthUnit, Unit};
 use super::{channel, line, Raw, ReadOptions};
 use crate::error::{Error, Result};
@@ -42,11 +43,11 @@ use crate::io::text::{Row, Rows};
 const FORMAT: &str = "Mitutoyo SurfTest .xlsx";
 /// The workbook's part, which an .xlsx has and an .x3p has not.
 const WORKBOOK: &str = "xl/workbook.xml";
-/// No part of a SurfTest export is larger once inflated (the sheets of the
-/// examples are ~1 MB); a bound against zip bombs.
-const MAX_PART: u64 = 1 << 28;
-
-type Archive<'b> = zip::ZipArchive<Cursor<&'b [u8]>>;
+/// The largest part read (an instrument's line scan sheet is a few MB; a
+/// part's tree takes ~14× its text).
+const MAX_PART: u64 = 1 << 25;
+/// The most XML nodes parsed from one part (~20 per measured point).
+const MAX_NODES: u32 = 1 << 24;
 
 /// Whether `bytes` are a zip archive holding `xl/workbook.xml`.
 pub(crate) fn sniff(bytes: &[u8]) -> bool {
@@ -97,33 +98,17 @@ pub(crate) fn parse(path: &Path, bytes: &[u8], options: &ReadOptions) -> Result<
 
 /// A part of the archive, whole (at most [`MAX_PART`] bytes), as text.
 fn part(zip: &mut Archive, path: &Path, name: &str) -> Result<String> {
-    let mut text = String::new();
-    zip.by_name(name)
-        .map_err(|e| {
-            bad(
-                path,
-                format!("the archive has no readable part {name:?}: {e}"),
-            )
-        })?
-        .take(MAX_PART + 1)
-        .read_to_string(&mut text)
-        .map_err(|e| {
-            bad(
-                path,
-                format!("part {name:?} is unreadable or truncated: {e}"),
-            )
-        })?;
-    if text.len() as u64 > MAX_PART {
-        return Err(bad(
-            path,
-            format!("part {name:?} inflates beyond {MAX_PART} bytes"),
-        ));
-    }
-    Ok(text)
+    let bytes = archive::member(zip, path, FORMAT, name, MAX_PART)?;
+    String::from_utf8(bytes).map_err(|_| bad(path, format!("part {name:?} is not UTF-8")))
 }
 
 fn xml<'t>(path: &Path, name: &str, text: &'t str) -> Result<roxmltree::Document<'t>> {
-    roxmltree::Document::parse(text).map_err(|e| bad(path, format!("{name}: {e}")))
+    let options = roxmltree::ParsingOptions {
+        nodes_limit: MAX_NODES,
+        ..Default::default()
+    };
+    roxmltree::Document::parse_with_options(text, options)
+        .map_err(|e| bad(path, format!("{name}: {e}")))
 }
 
 /// The texts of `xl/sharedStrings.xml`, in order (a rich-text item is the

@@ -98,6 +98,7 @@
 //! [`ReadOptions::fill_undefined`] asks for harmonic interpolation.
 
 mod al3d;
+mod archive;
 mod bcr;
 mod bin;
 mod channel;
@@ -450,6 +451,21 @@ fn parse_named(path: &Path, name: &Path, bytes: &[u8], options: &ReadOptions) ->
         Format::Hdf5 => hdf5::parse(path, bytes, options)?,
         Format::Datx => datx::parse(path, bytes, options)?,
     };
+    // Every reader's grid and values agree (a guard for `as_read`, which
+    // hands them out as they are).
+    if raw.nx.checked_mul(raw.ny) != Some(raw.heights.len()) {
+        return Err(Error::parse(
+            path,
+            0,
+            0,
+            format!(
+                "{nx} × {ny} points, {n} values read: the file is inconsistent",
+                nx = raw.nx,
+                ny = raw.ny,
+                n = raw.heights.len()
+            ),
+        ));
+    }
     Ok(raw)
 }
 

@@ -26,7 +26,7 @@
 //! ISO 25178-72:2017 (ISO 5436-2:2012); the openGPS X3P library and its
 //! sample files (sourceforge.net/p/open-gps); Gwyddion's `opengps.c`.
 
-use std::io::{Cursor, Read};
+use std::io::Cursor;
 use std::path::Path;
 
 use roxmltree::Node;
@@ -41,7 +41,11 @@ fn child<'a, 'i>(n: Node<'a, 'i>, name: &str) -> Option<Node<'a, 'i>> {
         .find(|c| c.is_element() && c.tag_name().name() == name)
 }
 
-type Archive<'b> = zip::ZipArchive<Cursor<&'b [u8]>>;
+use super::archive::{self, Archive};
+
+/// The largest main.xml parsed (its tree takes ~14× the text; a list of
+/// Datum values of a large map fits).
+const MAX_XML: u64 = 1 << 28;
 
 /// Access to `main.xml` by element paths, with errors naming the file.
 struct Xml<'a, 'i> {
@@ -201,15 +205,9 @@ fn layout(x: &Xml) -> Result<Declared> {
     })
 }
 
-/// An archive member, whole.
+/// An archive member, whole (bounded: [`archive::member`]).
 fn member(zip: &mut Archive, path: &Path, name: &str) -> Result<Vec<u8>> {
-    let bad = |m: String| Error::parse(path, 0, 0, m);
-    let mut data = Vec::new();
-    zip.by_name(name)
-        .map_err(|e| bad(format!("the archive has no readable member {name:?}: {e}")))?
-        .read_to_end(&mut data)
-        .map_err(|e| bad(format!("member {name:?} is unreadable or truncated: {e}")))?;
-    Ok(data)
+    archive::member(zip, path, "ISO 25178-72 .x3p", name, archive::MAX_MEMBER)
 }
 
 /// The raw values from the binary member or the XML data list (NaN for an
@@ -283,17 +281,20 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
     let bad = |m: String| Error::parse(path, 0, 0, m);
     let mut zip = zip::ZipArchive::new(Cursor::new(b))
         .map_err(|e| bad(format!("not a readable .x3p (zip) archive: {e}")))?;
-    let mut xml = String::new();
-    zip.by_name("main.xml")
-        .map_err(|e| {
-            bad(format!(
-                "not an .x3p: the zip archive has no readable main.xml ({e}); \
-                 {}",
-                super::detect::READS
-            ))
-        })?
-        .read_to_string(&mut xml)
-        .map_err(|e| bad(format!("main.xml is unreadable or truncated: {e}")))?;
+    if zip.index_for_name("main.xml").is_none() {
+        return Err(bad(format!(
+            "not an .x3p: the zip archive has no main.xml; {}",
+            super::detect::READS
+        )));
+    }
+    let xml = String::from_utf8(archive::member(
+        &mut zip,
+        path,
+        "ISO 25178-72 .x3p",
+        "main.xml",
+        MAX_XML,
+    )?)
+    .map_err(|_| bad("main.xml is not UTF-8".into()))?;
     let doc = roxmltree::Document::parse(&xml).map_err(|e| bad(format!("main.xml: {e}")))?;
     let x = Xml {
         root: doc.root_element(),
