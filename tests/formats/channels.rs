@@ -246,3 +246,62 @@ fn single_channel_formats_take_none_or_0() {
         }
     }
 }
+
+/// A wave of one point per channel is refused before its channels are
+/// named; a wave of many unnamed channels names them on demand and lists
+/// at most 20 in an error.
+#[test]
+fn ibw_many_channels() {
+    let bytes = std::fs::read(data("10x10-one_channel_without_name.ibw")).unwrap();
+    let dims = |d: [i32; 3]| {
+        let mut b = bytes.clone();
+        for (k, n) in d.iter().enumerate() {
+            b[132 + 4 * k..136 + 4 * k].copy_from_slice(&n.to_le_bytes());
+        }
+        b
+    };
+    let p = temp("points.ibw", &dims([1, 1, 100]));
+    let e = error_of(&p, &ReadOptions::default(), "need at least 2 of each");
+    assert!(e.contains("Igor binary wave .ibw"), "{e}");
+    let p = temp("channels.ibw", &dims([2, 2, 25]));
+    let o = ReadOptions {
+        height_unit: Some(LengthUnit::Metre),
+        size: Some(persson::topography::read::SizeSpec::PixelSize(1.0)),
+        channel: Some("no name (25)".into()),
+        ..Default::default()
+    };
+    let r = read(&p, &o);
+    assert_eq!((r.nx, r.ny), (2, 2));
+    let e = error_of(
+        &p,
+        &ReadOptions {
+            channel: Some("no name (26)".into()),
+            ..o
+        },
+        "19: \"no name (20)\" … and 5 more",
+    );
+    assert!(e.contains("Igor binary wave .ibw"), "{e}");
+}
+
+/// An Asylum Research channel's unit is its `<base>Unit` in the note, the
+/// base without the trailing digits, `Mod` and `Trace`/`Retrace`
+/// (`LateralMod2` → `LateralUnit`), not the prefix table's volts.
+#[test]
+fn ibw_asylum_unit_of_a_numbered_channel() {
+    let bytes = std::fs::read(data("spot_1-1000nm.ibw")).unwrap();
+    let at = |b: &[u8], s: &[u8]| b.windows(s.len()).rposition(|w| w == s).unwrap();
+    let mut b = bytes.clone();
+    let k = at(&b, b"LateralUnit: V");
+    b[k..k + 14].copy_from_slice(b"LateralUnit: m");
+    let k = at(&b, b"PhaseTrace\0");
+    b[k..k + 11].copy_from_slice(b"LateralMod2");
+    let p = temp("lateral.ibw", &b);
+    let r = read(&p, &channel("LateralMod2"));
+    assert!(same(&r, &read(&p, &channel("4"))));
+    // Without the note's unit: volts, by the name.
+    let k = at(&b, b"LateralUnit: m");
+    b[k..k + 14].copy_from_slice(b"LateralUnit: V");
+    let p = temp("lateral-v.ibw", &b);
+    let e = error_of(&p, &channel("LateralMod2"), "not a unit of length");
+    assert!(e.contains("\"V\"") && e.contains("LateralMod2"), "{e}");
+}

@@ -260,3 +260,188 @@ fn datx_float32_vlen_chunked() {
         assert!(e.contains("cut-"), "{e}");
     }
 }
+
+/// The result of reading `bytes` as `name` with channel `channel`, a panic
+/// turned into a test failure naming the case.
+fn read_without_panic(
+    name: &str,
+    bytes: &[u8],
+    channel: Option<&str>,
+    case: &str,
+) -> Option<String> {
+    let o = ReadOptions {
+        fill_undefined: true,
+        channel: channel.map(str::to_string),
+        ..Default::default()
+    };
+    let path = std::path::Path::new(name);
+    match std::panic::catch_unwind(|| read::from_bytes(path, bytes, &o)) {
+        Ok(Ok(_)) => None,
+        Ok(Err(e)) => {
+            let e = e.to_string();
+            assert!(e.contains(name), "{case}: {e:?} does not name {name}");
+            assert!(!e.contains('\n'), "{case}: {e:?} is not one line");
+            Some(e)
+        }
+        Err(_) => panic!("{case}: reading {name} panicked"),
+    }
+}
+
+/// Files on which rustyhdf5-format panicked (found by a review's fuzzing):
+/// the original with these bytes set, cut to a length. Chunk addresses of
+/// all ones (`address + size` wrapped, chunked_read.rs:69), a layout of
+/// dimensionality 0 (chunked_read.rs:340), fixed-array parameters
+/// (fixed_array.rs:129–147), a global heap collection's size
+/// (global_heap.rs:81). Each is an error naming the file and saying what
+/// is damaged, never a panic nor the dependency's `Debug` form.
+#[test]
+fn hdf5_datx_crash_cases() {
+    #[allow(clippy::type_complexity)]
+    let cases: &[(&str, Option<usize>, &[(usize, u8)])] = &[
+        (
+            "datx-float32.datx",
+            None,
+            &[
+                (2296, 0xff),
+                (2297, 0xff),
+                (2298, 0xff),
+                (2299, 0xff),
+                (2300, 0xff),
+                (2301, 0xff),
+                (2302, 0xff),
+                (2303, 0xff),
+            ],
+        ),
+        (
+            "datx-float32.datx",
+            Some(5687),
+            &[(905, 0xff), (906, 0xff), (3049, 0x10)],
+        ),
+        (
+            "h5-chunked-deflate-v0.h5",
+            None,
+            &[
+                (1001, 0x08),
+                (5536, 0xf7),
+                (5537, 0xff),
+                (5538, 0xff),
+                (5539, 0xff),
+                (5540, 0xff),
+                (5541, 0xff),
+                (5542, 0xff),
+                (5543, 0xff),
+            ],
+        ),
+        (
+            "h5-chunked-deflate-v0.h5",
+            None,
+            &[
+                (372, 0x40),
+                (4826, 0x00),
+                (4827, 0x00),
+                (4828, 0x00),
+                (7206, 0x08),
+            ],
+        ),
+        ("h5-chunked-deflate.h5", None, &[(1121, 0xff), (1122, 0xff)]),
+        (
+            "h5-chunked-deflate.h5",
+            Some(2549),
+            &[(1559, 0xff), (1560, 0xff), (1561, 0xff), (1562, 0x7f)],
+        ),
+        (
+            "h5-chunked-deflate.h5",
+            None,
+            &[
+                (1596, 0xf7),
+                (1597, 0xff),
+                (1598, 0xff),
+                (1599, 0xff),
+                (1600, 0xff),
+                (1601, 0xff),
+                (1602, 0xff),
+                (1603, 0xff),
+                (2202, 0x58),
+            ],
+        ),
+        (
+            "h5-chunked-deflate.h5",
+            None,
+            &[
+                (1560, 0xff),
+                (1561, 0xff),
+                (1562, 0x00),
+                (1847, 0x20),
+                (2141, 0x00),
+                (2219, 0x00),
+                (2220, 0x00),
+                (2221, 0x00),
+                (2222, 0x00),
+            ],
+        ),
+        (
+            "h5-chunked-deflate.h5",
+            None,
+            &[
+                (1130, 0xff),
+                (1131, 0xff),
+                (1132, 0xff),
+                (1133, 0xff),
+                (1134, 0xff),
+                (1135, 0xff),
+                (1136, 0xff),
+                (1137, 0xff),
+                (2216, 0xc9),
+                (2625, 0x02),
+            ],
+        ),
+    ];
+    for (i, (file, cut, patch)) in cases.iter().enumerate() {
+        let mut b = std::fs::read(data(file)).unwrap();
+        for &(at, v) in *patch {
+            b[at] = v;
+        }
+        b.truncate(cut.unwrap_or(b.len()));
+        for channel in [None, Some("1")] {
+            let case = format!("case {i} ({file}, channel {channel:?})");
+            if let Some(e) = read_without_panic(file, &b, channel, &case) {
+                // Checked before the dependency is called, not its caught panic.
+                assert!(
+                    !e.contains("{ ") && !e.contains("Eof") && !e.contains("reader failed"),
+                    "{case}: {e}"
+                );
+            }
+        }
+    }
+}
+
+/// The small `.h5` and `.datx` files with, every 13 bytes, one byte set to
+/// each of 0x00, 0xff, flipped, and eight bytes of all ones, and cut every
+/// 97 bytes: an error naming the file or a reading, never a panic.
+#[test]
+fn hdf5_datx_mutations_never_panic() {
+    for file in [
+        "h5-chunked-deflate.h5",
+        "datx-float32.datx",
+        "datx-float64.datx",
+    ] {
+        let bytes = std::fs::read(data(file)).unwrap();
+        for at in (0..bytes.len()).step_by(13) {
+            for kind in 0..4 {
+                let mut b = bytes.clone();
+                match kind {
+                    0 => b[at] = 0,
+                    1 => b[at] = 0xff,
+                    2 => b[at] ^= 0xa5,
+                    _ => b[at..(at + 8).min(bytes.len())].fill(0xff),
+                }
+                for channel in [None, Some("1")] {
+                    read_without_panic(file, &b, channel, &format!("{file} byte {at} kind {kind}"));
+                }
+            }
+        }
+        for n in (0..bytes.len()).step_by(97) {
+            read_without_panic(file, &bytes[..n], None, &format!("{file} cut at {n}"));
+        }
+    }
+}

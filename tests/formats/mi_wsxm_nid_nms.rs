@@ -441,3 +441,45 @@ fn nanofocus_nms() {
     dx[1376..1384].copy_from_slice(&(-1.0f64).to_le_bytes());
     error_of(&temp("dx.nms", &dx), &ReadOptions::default(), "Δx = -1");
 }
+
+/// Counts and repeated labels are read in time linear in the header, and
+/// an error lists at most 20 channels.
+#[test]
+fn huge_counts_and_many_channels() {
+    // A group count far beyond the channels there are: only the
+    // `Gr<i>-Ch<j>` keys present are walked.
+    let p = temp(
+        "nid-count.nid",
+        b"[DataSet]\r\nGroupCount=1\r\nGr0-Count=18446744073709551615\r\n#!",
+    );
+    error_of(&p, &ReadOptions::default(), "Nanosurf .nid");
+    error_of(&p, &ReadOptions::default(), "no data channel");
+
+    // 60 000 buffers of one label: named at once, the error cut short.
+    let mut mi = b"fileType      Image\nxPixels       2\nyPixels       2\n\
+                   xLength       1e-6\nyLength       1e-6\n"
+        .to_vec();
+    for _ in 0..60_000 {
+        mi.extend_from_slice(b"bufferLabel   a\nbufferUnit    V\n");
+    }
+    mi.extend_from_slice(b"data          BINARY\n");
+    let p = temp("many.mi", &mi);
+    let e = error_of(&p, &ReadOptions::default(), "… and 59980 more");
+    assert!(e.contains("Molecular Imaging .mi"), "{e}");
+    assert!(e.contains("19: \"a\"") && !e.contains("20: \"a\""), "{e}");
+    assert!(e.len() < 2000, "{} bytes", e.len());
+
+    // .nms: nx × ny fits in a usize, the 2 bytes of each height do not.
+    let mut nms = std::fs::read(data("nms-1-crop.nms")).unwrap();
+    nms[1368..1372].copy_from_slice(&4294836226u32.to_le_bytes());
+    nms[1372..1376].copy_from_slice(&2147549185u32.to_le_bytes());
+    nms[1416..1420].copy_from_slice(&0i32.to_le_bytes());
+    let p = temp("wrap.nms", &nms);
+    let e = error_of(&p, &ReadOptions::default(), "too large");
+    assert!(e.contains("NanoFocus .nms"), "{e}");
+    // With the intensity image: past the end, not wrapped around.
+    nms[1368..1372].copy_from_slice(&65536u32.to_le_bytes());
+    nms[1372..1376].copy_from_slice(&65536u32.to_le_bytes());
+    nms[1416..1420].copy_from_slice(&1i32.to_le_bytes());
+    error_of(&temp("big.nms", &nms), &ReadOptions::default(), "truncated");
+}

@@ -1,33 +1,51 @@
 //! The channel of a multi-channel file: the one the caller names (by name,
 //! case-insensitive, or by index from 0), else the first height channel.
 
+use std::borrow::Cow;
+
+/// How many channels an error lists; the others are counted.
+const LISTED: usize = 20;
+
 /// The index of the channel to read among `channels` (name, whether it
 /// holds heights), or an error naming the channels there are.
 ///
 /// `wanted` is matched by name first, so a channel named `"1"` is found by
 /// its name; a number that names no channel is its index.
 pub(crate) fn choose(channels: &[(&str, bool)], wanted: Option<&str>) -> Result<usize, String> {
+    choose_among(
+        channels.len(),
+        |i| Cow::Borrowed(channels[i].0),
+        |i| channels[i].1,
+        wanted,
+    )
+}
+
+/// [`choose`] among `n` channels whose names and kinds are made on demand
+/// (`name(i)`, `height(i)`), so that a file of many channels costs no
+/// list of them.
+pub(crate) fn choose_among<'n>(
+    n: usize,
+    name: impl Fn(usize) -> Cow<'n, str>,
+    height: impl Fn(usize) -> bool,
+    wanted: Option<&str>,
+) -> Result<usize, String> {
     let names = || {
-        channels
-            .iter()
-            .enumerate()
-            .map(|(i, (n, _))| format!("{i}: \"{n}\""))
+        let mut s = (0..n.min(LISTED))
+            .map(|i| format!("{i}: \"{}\"", name(i)))
             .collect::<Vec<_>>()
-            .join(", ")
+            .join(", ");
+        if n > LISTED {
+            s.push_str(&format!(" … and {} more", n - LISTED));
+        }
+        s
     };
     match wanted {
-        Some(w) => channels
-            .iter()
-            .position(|(n, _)| n.eq_ignore_ascii_case(w.trim()))
-            .or_else(|| {
-                w.trim()
-                    .parse::<usize>()
-                    .ok()
-                    .filter(|&i| i < channels.len())
-            })
+        Some(w) => (0..n)
+            .position(|i| name(i).eq_ignore_ascii_case(w.trim()))
+            .or_else(|| w.trim().parse::<usize>().ok().filter(|&i| i < n))
             .ok_or_else(|| format!("no channel \"{w}\": the file has {}", names())),
-        None => channels.iter().position(|&(_, h)| h).ok_or_else(|| {
-            if channels.is_empty() {
+        None => (0..n).position(height).ok_or_else(|| {
+            if n == 0 {
                 "the file has no data channel".to_string()
             } else {
                 format!(
@@ -62,5 +80,17 @@ mod tests {
             "{e}"
         );
         assert!(choose(&[], None).unwrap_err().contains("no data channel"));
+    }
+
+    #[test]
+    fn long_lists_are_cut() {
+        let names: Vec<String> = (0..1000).map(|i| format!("c{i}")).collect();
+        let c: Vec<(&str, bool)> = names.iter().map(|n| (n.as_str(), false)).collect();
+        let e = choose(&c, Some("nope")).unwrap_err();
+        assert!(e.contains("19: \"c19\" … and 980 more"), "{e}");
+        assert!(!e.contains("c20"), "{e}");
+        let e = choose(&c, None).unwrap_err();
+        assert!(e.contains("… and 980 more"), "{e}");
+        assert_eq!(choose(&c, Some("C999")), Ok(999));
     }
 }

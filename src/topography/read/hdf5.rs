@@ -27,17 +27,42 @@
 //! largest ratio) is refused before anything is allocated; others are
 //! checked against the file's length.
 //!
+//! # Damaged files
+//! `rustyhdf5-format` 1.93 panics on some damaged files instead of
+//! returning an error: a chunk address near `u64::MAX` wraps `address +
+//! size` and a slice panics (`chunked_read.rs:69`), a chunked layout of
+//! dimensionality 0 underflows `ndims - 1` (`chunked_read.rs:340`), a
+//! fixed-array data block address past the end or a `max_nelmts_bits` of
+//! 64 or more (`fixed_array.rs:129–147`), a global heap collection size
+//! that overflows `offset + size` (`global_heap.rs:81`, with overflow
+//! checks on). Those are checked here before the crate is called (the
+//! chunk index is walked first and every chunk checked against the file),
+//! and, as a backstop, every call into the crate on file data runs under
+//! [`std::panic::catch_unwind`]: a panic is an error naming the file and
+//! "HDF5: damaged …". A panic hook installed once (chaining to the one
+//! before it) keeps such a caught panic's message off stderr, on the
+//! thread that catches it only.
+//!
 //! # References
 //! The HDF5 file format specification 3.0 (The HDF Group); SurfaceTopography's
 //! `IO/H5.py` (the channels, their order and the axis order).
 
+use std::cell::{Cell, RefCell};
+use std::collections::HashMap;
+use std::panic::{self, AssertUnwindSafe};
 use std::path::Path;
+use std::rc::Rc;
+use std::sync::Once;
 
+use rustyhdf5_format::chunked_read::{self, ChunkInfo};
 use rustyhdf5_format::data_layout::DataLayout;
 use rustyhdf5_format::data_read;
 use rustyhdf5_format::dataspace::Dataspace;
 use rustyhdf5_format::datatype::Datatype as CrateType;
+use rustyhdf5_format::error::FormatError;
+use rustyhdf5_format::extensible_array::{self, ExtensibleArrayHeader};
 use rustyhdf5_format::filter_pipeline::FilterPipeline;
+use rustyhdf5_format::fixed_array::{self, FixedArrayHeader};
 use rustyhdf5_format::global_heap::GlobalHeapCollection;
 use rustyhdf5_format::message_type::MessageType;
 use rustyhdf5_format::object_header::ObjectHeader;
@@ -55,6 +80,47 @@ pub(crate) const MAGIC: &[u8] = b"\x89HDF\r\n\x1a\n";
 const DEFLATE_RATIO: usize = 1032;
 /// Deepest group nesting followed (a loop of hard links ends here).
 const MAX_DEPTH: usize = 32;
+
+thread_local! {
+    /// Whether this thread is inside [`quiet_catch`] (its panics are caught).
+    static CATCHING: Cell<bool> = const { Cell::new(false) };
+}
+
+/// Runs `f` (a call into `rustyhdf5-format` on file data), a panic caught
+/// and its message not printed (see the module docs).
+fn quiet_catch<T>(f: impl FnOnce() -> T) -> std::thread::Result<T> {
+    static HOOK: Once = Once::new();
+    HOOK.call_once(|| {
+        let previous = panic::take_hook();
+        panic::set_hook(Box::new(move |info| {
+            if !CATCHING.with(Cell::get) {
+                previous(info);
+            }
+        }));
+    });
+    let outer = CATCHING.with(|c| c.replace(true));
+    let result = panic::catch_unwind(AssertUnwindSafe(f));
+    CATCHING.with(|c| c.set(outer));
+    result
+}
+
+/// `f`, a call into `rustyhdf5-format` reading `what`: its error or panic
+/// as an error naming the file (through `f.bad`).
+fn guarded<T>(
+    bin: &Bin,
+    what: &str,
+    f: impl FnOnce() -> std::result::Result<T, FormatError>,
+) -> Result<T> {
+    match quiet_catch(f) {
+        Ok(Ok(v)) => Ok(v),
+        Ok(Err(e)) => Err(bin.bad(format!("{what}: {e}"))),
+        Err(_) => Err(bin.bad(if bin.format == "HDF5" {
+            format!("damaged {what} (the HDF5 reader failed on it)")
+        } else {
+            format!("HDF5: damaged {what} (the HDF5 reader failed on it)")
+        })),
+    }
+}
 
 /// Whether `bytes` start as this format's files do (the HDF5 signature at 0).
 pub(crate) fn sniff(bytes: &[u8]) -> bool {
@@ -173,6 +239,9 @@ pub(crate) struct Attr {
 pub(crate) struct H5<'b> {
     pub f: Bin<'b>,
     sb: Superblock,
+    /// Global heap collections parsed so far, by address (a table of
+    /// variable-length strings refers to one collection row after row).
+    heaps: RefCell<HashMap<usize, Rc<GlobalHeapCollection>>>,
 }
 
 impl<'b> H5<'b> {
@@ -186,8 +255,12 @@ impl<'b> H5<'b> {
         if !sniff(bytes) {
             return Err(f.bad("not an HDF5 file (no HDF5 signature at its start)"));
         }
-        let sb = Superblock::parse(bytes, 0).map_err(|e| f.bad(format!("superblock: {e:?}")))?;
-        Ok(H5 { f, sb })
+        let sb = guarded(&f, "superblock", || Superblock::parse(bytes, 0))?;
+        Ok(H5 {
+            f,
+            sb,
+            heaps: RefCell::default(),
+        })
     }
 
     pub(crate) fn bad(&self, message: impl std::fmt::Display) -> Error {
@@ -208,8 +281,9 @@ impl<'b> H5<'b> {
                     "truncated: an object header at {address} is past the end"
                 ))
             })?;
-        ObjectHeader::parse(self.f.bytes, at, self.sb.offset_size, self.sb.length_size)
-            .map_err(|e| self.bad(format!("object header at {address}: {e:?}")))
+        guarded(&self.f, &format!("object header at {address}"), || {
+            ObjectHeader::parse(self.f.bytes, at, self.sb.offset_size, self.sb.length_size)
+        })
     }
 
     /// The members of the group `header` (name, header address), by name.
@@ -217,15 +291,19 @@ impl<'b> H5<'b> {
         let (os, ls) = (self.sb.offset_size, self.sb.length_size);
         let bytes = self.f.bytes;
         let entries = if let Some(m) = message(header, MessageType::SymbolTable) {
-            let stm = SymbolTableMessage::parse(&m.data, os)
-                .map_err(|e| self.bad(format!("symbol table: {e:?}")))?;
-            group_v1::resolve_v1_group_entries(bytes, &stm, os, ls)
+            let stm = guarded(&self.f, "symbol table", || {
+                SymbolTableMessage::parse(&m.data, os)
+            })?;
+            guarded(&self.f, "group", || {
+                group_v1::resolve_v1_group_entries(bytes, &stm, os, ls)
+            })?
         } else if is_group(header) {
-            group_v2::resolve_v2_group_entries(bytes, header, os, ls)
+            guarded(&self.f, "group", || {
+                group_v2::resolve_v2_group_entries(bytes, header, os, ls)
+            })?
         } else {
             return Ok(Vec::new());
-        }
-        .map_err(|e| self.bad(format!("group: {e:?}")))?;
+        };
         let mut out: Vec<(String, u64)> = entries
             .into_iter()
             .map(|e| (e.name, e.object_header_address))
@@ -354,8 +432,9 @@ impl<'b> H5<'b> {
                 "{name}: layout message version 5 (HDF5 2.0) is not read"
             )));
         }
-        let layout = DataLayout::parse(&layout_msg.data, os, ls)
-            .map_err(|e| self.bad(format!("{name}: layout: {e:?}")))?;
+        let layout = guarded(&self.f, &format!("{name}: layout"), || {
+            DataLayout::parse(&layout_msg.data, os, ls)
+        })?;
         let limit = match layout {
             DataLayout::Chunked { .. } => self.f.bytes.len().saturating_mul(DEFLATE_RATIO),
             _ => self.f.bytes.len(),
@@ -381,31 +460,44 @@ impl<'b> H5<'b> {
             }
         }
         let pipeline = match message(header, MessageType::FilterPipeline) {
-            Some(m) => Some(
+            Some(m) => Some(guarded(&self.f, &format!("{name}: filters"), || {
                 FilterPipeline::parse(&m.data)
-                    .map_err(|e| self.bad(format!("{name}: filters: {e:?}")))?,
-            ),
+            })?),
             None => None,
         };
         let crate_type = CrateType::Opaque {
             size: size as u32,
             tag: Vec::new(),
         };
-        let dataspace = Dataspace::parse(
-            message(header, MessageType::Dataspace).map_or(&[][..], |m| &m.data),
-            ls,
-        )
-        .map_err(|e| self.bad(format!("{name}: dataspace: {e:?}")))?;
-        let raw = data_read::read_raw_data_full(
-            self.f.bytes,
-            &layout,
-            &dataspace,
-            &crate_type,
-            pipeline.as_ref(),
-            os,
-            ls,
-        )
-        .map_err(|e| self.bad(format!("{name}: data: {e:?}")))?;
+        let dataspace = guarded(&self.f, &format!("{name}: dataspace"), || {
+            Dataspace::parse(
+                message(header, MessageType::Dataspace).map_or(&[][..], |m| &m.data),
+                ls,
+            )
+        })?;
+        if dataspace.dimensions.len() != shape.len()
+            || dataspace
+                .dimensions
+                .iter()
+                .zip(&shape)
+                .any(|(&a, &b)| a != b as u64)
+        {
+            return Err(self.bad(format!("{name}: damaged dataspace")));
+        }
+        if let DataLayout::Chunked { .. } = layout {
+            self.check_chunks(&layout, &shape, size, limit, name)?;
+        }
+        let raw = guarded(&self.f, &format!("{name}: data"), || {
+            data_read::read_raw_data_full(
+                self.f.bytes,
+                &layout,
+                &dataspace,
+                &crate_type,
+                pipeline.as_ref(),
+                os,
+                ls,
+            )
+        })?;
         if raw.len() != total {
             return Err(self.bad(format!(
                 "{name}: {} bytes of data, {total} expected",
@@ -413,6 +505,125 @@ impl<'b> H5<'b> {
             )));
         }
         Ok((shape, ty, raw))
+    }
+
+    /// Checks a chunked layout where `rustyhdf5-format` would panic on it:
+    /// `rank + 1` chunk dimensions, none 0, a chunk of at most `limit`
+    /// bytes, the chunk index in the file and sound (a fixed array's page
+    /// bits under 64), every chunk's bytes in the file and its offsets in
+    /// the data set.
+    fn check_chunks(
+        &self,
+        layout: &DataLayout,
+        shape: &[usize],
+        size: usize,
+        limit: usize,
+        name: &str,
+    ) -> Result<()> {
+        let DataLayout::Chunked {
+            chunk_dimensions: dims,
+            btree_address,
+            version,
+            chunk_index_type,
+            ..
+        } = layout
+        else {
+            return Ok(());
+        };
+        let damaged = |what: &str| self.bad(format!("{name}: damaged chunked layout ({what})"));
+        let (os, ls) = (self.sb.offset_size, self.sb.length_size);
+        let len = self.f.bytes.len();
+        if dims.len() != shape.len() + 1 {
+            return Err(damaged(&format!(
+                "{} chunk dimensions for rank {}",
+                dims.len(),
+                shape.len()
+            )));
+        }
+        if dims.contains(&0) {
+            return Err(damaged("a chunk dimension is 0"));
+        }
+        let spatial = &dims[..shape.len()];
+        spatial
+            .iter()
+            .try_fold(size, |a, &d| a.checked_mul(d as usize))
+            .filter(|&n| n <= limit && n <= u32::MAX as usize)
+            .ok_or_else(|| damaged("a chunk is larger than the file allows"))?;
+        let Some(address) = *btree_address else {
+            return Ok(()); // the crate's error: no address
+        };
+        let at = usize::try_from(address)
+            .ok()
+            .filter(|&a| a < len)
+            .ok_or_else(|| damaged(&format!("its chunk index at {address} is past the end")))?;
+        let bytes = self.f.bytes;
+        let what = format!("{name}: chunk index");
+        let ds: Vec<u64> = shape.iter().map(|&n| n as u64).collect();
+        let chunks: Vec<ChunkInfo> = match (version, chunk_index_type) {
+            (3, _) => guarded(&self.f, &what, || {
+                chunked_read::collect_chunk_info(bytes, address, dims.len(), os, ls)
+            })?,
+            (4, Some(3)) => {
+                let h = guarded(&self.f, &what, || {
+                    FixedArrayHeader::parse(bytes, at, os, ls)
+                })?;
+                let block_end = usize::try_from(h.data_block_address)
+                    .ok()
+                    .and_then(|a| a.checked_add(6 + usize::from(os)));
+                if h.max_nelmts_bits >= 64 || block_end.is_none_or(|e| e > len) {
+                    return Err(damaged("its fixed array"));
+                }
+                guarded(&self.f, &what, || {
+                    fixed_array::read_fixed_array_chunks(
+                        bytes,
+                        &h,
+                        &ds,
+                        spatial,
+                        size as u32,
+                        os,
+                        ls,
+                    )
+                })?
+            }
+            (4, Some(4)) => {
+                let h = guarded(&self.f, &what, || {
+                    ExtensibleArrayHeader::parse(bytes, at, os, ls)
+                })?;
+                if h.max_nelmts_bits >= 64
+                    || h.max_dblk_nelmts_bits >= 64
+                    || usize::try_from(h.index_block_address).is_ok_and(|a| a >= len)
+                {
+                    return Err(damaged("its extensible array"));
+                }
+                guarded(&self.f, &what, || {
+                    extensible_array::read_extensible_array_chunks(
+                        bytes,
+                        &h,
+                        &ds,
+                        spatial,
+                        size as u32,
+                        os,
+                        ls,
+                    )
+                })?
+            }
+            _ => return Ok(()), // single chunk, implicit: checked by the crate
+        };
+        for c in &chunks {
+            let end = usize::try_from(c.address)
+                .ok()
+                .and_then(|a| a.checked_add(c.chunk_size as usize));
+            if end.is_none_or(|e| e > len) {
+                return Err(self.bad(format!(
+                    "truncated: {name}'s chunk of {} bytes at {} is past the end",
+                    c.chunk_size, c.address
+                )));
+            }
+            if c.offsets.iter().zip(&ds).any(|(&o, &n)| o >= n.max(1)) {
+                return Err(damaged("a chunk's offset is outside the data set"));
+            }
+        }
+        Ok(())
     }
 
     /// A numeric data set as f64 (shape, values in storage order).
@@ -532,8 +743,7 @@ impl<'b> H5<'b> {
                     .ok()
                     .filter(|&a| a < self.f.bytes.len())
                     .ok_or_else(cut)?;
-                let heap = GlobalHeapCollection::parse(self.f.bytes, at, self.sb.length_size)
-                    .map_err(|e| self.bad(format!("global heap: {e:?}")))?;
+                let heap = self.global_heap(at)?;
                 let object = u16::try_from(index)
                     .ok()
                     .and_then(|i| heap.get_object(i))
@@ -545,6 +755,36 @@ impl<'b> H5<'b> {
             }
             other => Err(self.bad(format!("{other:?} is not a string type"))),
         }
+    }
+}
+
+impl H5<'_> {
+    /// The global heap collection at `at` (< the file's length), parsed once.
+    fn global_heap(&self, at: usize) -> Result<Rc<GlobalHeapCollection>> {
+        if let Some(h) = self.heaps.borrow().get(&at) {
+            return Ok(Rc::clone(h));
+        }
+        let ls = usize::from(self.sb.length_size);
+        // The collection's size: `at + size` must not overflow.
+        let size = self
+            .f
+            .bytes
+            .get(at + 8..)
+            .and_then(|b| b.get(..ls))
+            .map(|b| b.iter().rev().fold(0u64, |a, &x| (a << 8) | u64::from(x)));
+        if size.is_some_and(|n| {
+            usize::try_from(n)
+                .ok()
+                .and_then(|n| at.checked_add(n))
+                .is_none()
+        }) {
+            return Err(self.bad(format!("damaged global heap at {at}")));
+        }
+        let heap = Rc::new(guarded(&self.f, &format!("global heap at {at}"), || {
+            GlobalHeapCollection::parse(self.f.bytes, at, self.sb.length_size)
+        })?);
+        self.heaps.borrow_mut().insert(at, Rc::clone(&heap));
+        Ok(heap)
     }
 }
 

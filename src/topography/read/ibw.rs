@@ -47,6 +47,7 @@
 //! (`IgorBin.h`: `BinHeader5`, `WaveHeader5`); the layout as
 //! SurfaceTopography's `IO/IBW.py` (through igor2) reads it.
 
+use std::borrow::Cow;
 use std::path::Path;
 
 use super::bin::{product, Bin};
@@ -155,6 +156,12 @@ pub(crate) fn parse(path: &Path, b: &[u8], options: &ReadOptions) -> Result<Raw>
             "the wave has dimensions {dims:?}: an image (nx × ny, or nx × ny × channels) is read"
         )));
     }
+    // Before anything per channel: a map needs 2 × 2 points.
+    if nx < 2 || ny < 2 {
+        return Err(f.bad(format!(
+            "the map has {ny} row(s) and {nx} column(s): need at least 2 of each"
+        )));
+    }
     let channels = channels.max(1);
     let points = product(nx, ny, channels).filter(|&p| p == npnts);
     let Some(points) = points else {
@@ -185,11 +192,17 @@ pub(crate) fn parse(path: &Path, b: &[u8], options: &ReadOptions) -> Result<Raw>
     for d in 0..4 {
         labels.push(section(&w, &mut at, 36 + 4 * d, "the dimension labels")?);
     }
-    let names = names(labels[2], channels);
-    let list: Vec<(&str, bool)> = names.iter().map(|(n, h)| (n.as_str(), *h)).collect();
-    let channel = channel::choose(&list, options.channel.as_deref()).map_err(|m| f.bad(m))?;
+    let labelled = labels_of(labels[2], channels);
+    let unnamed = labelled.iter().all(|n| n.is_empty());
+    let channel = channel::choose_among(
+        channels,
+        |k| name(&labelled, k),
+        |k| holds_heights(&labelled, unnamed, k),
+        options.channel.as_deref(),
+    )
+    .map_err(|m| f.bad(m))?;
     if options.channel.is_some() {
-        asylum_length(f, note, labels[2], channel, &names[channel].0)?;
+        asylum_length(f, note, labels[2], channel, &name(&labelled, channel))?;
     }
     let start = channel * nx * ny;
     let value = |k: usize| kind.decode(&values[(start + k) * item..(start + k + 1) * item], big);
@@ -285,29 +298,36 @@ fn text(b: &[u8]) -> String {
         .to_string()
 }
 
-/// The channels: the labels of the third dimension after its own (31
-/// characters each), `no name (k)` for those without a label as
-/// SurfaceTopography names them, and whether each holds heights: its name
-/// contains `Height` or `ZSensor`, or no channel has a label.
-fn names(labels: &[u8], channels: usize) -> Vec<(String, bool)> {
-    let mut names: Vec<String> = labels
+/// The channels' labels: those of the third dimension after its own (31
+/// characters each). SurfaceTopography names the channels without a label
+/// `no name (k)` ([`name`]); a channel holds heights if its name contains
+/// `Height` or `ZSensor`, or no channel has a label ([`holds_heights`]).
+fn labels_of(labels: &[u8], channels: usize) -> Vec<String> {
+    labels
         .chunks(LABEL)
         .skip(1)
         .take(channels)
         .map(text)
-        .collect();
-    let unnamed = names.iter().all(|n| n.is_empty());
-    for k in 1..=channels - names.len() {
-        names.push(format!("no name ({k})"));
-    }
-    names
-        .into_iter()
-        .map(|n| {
-            let l = n.to_ascii_lowercase();
-            let height = unnamed || l.contains("height") || l.contains("zsensor");
-            (n, height)
-        })
         .collect()
+}
+
+/// The name of channel `k`, made on demand: a wave of many channels
+/// without labels costs no list of names.
+fn name(labelled: &[String], k: usize) -> Cow<'_, str> {
+    match labelled.get(k) {
+        Some(n) => Cow::Borrowed(n.as_str()),
+        None => Cow::Owned(format!("no name ({})", k - labelled.len() + 1)),
+    }
+}
+
+/// Whether channel `k` holds heights (see [`labels_of`]); `unnamed`: no
+/// channel has a label.
+fn holds_heights(labelled: &[String], unnamed: bool, k: usize) -> bool {
+    if unnamed {
+        return true;
+    }
+    let l = name(labelled, k).to_ascii_lowercase();
+    l.contains("height") || l.contains("zsensor")
 }
 
 /// The unit of an Asylum Research channel by the prefix of its name (after
@@ -338,7 +358,7 @@ fn asylum_length(f: &Bin, note: &[u8], labels: &[u8], k: usize, name: &str) -> R
         return Ok(());
     }
     let mut base = name.trim_end_matches(|c: char| c.is_ascii_digit());
-    base = base.strip_suffix("Mod").unwrap_or(name);
+    base = base.strip_suffix("Mod").unwrap_or(base);
     for suffix in ["Trace", "Retrace"] {
         if let Some(b) = base.strip_suffix(suffix) {
             base = b;
@@ -346,7 +366,8 @@ fn asylum_length(f: &Bin, note: &[u8], labels: &[u8], k: usize, name: &str) -> R
         }
     }
     let key = format!("{base}Unit");
-    let noted = note.lines().find_map(|l| {
+    // Igor ends the note's lines with CR.
+    let noted = note.split(['\r', '\n']).find_map(|l| {
         let (k, v) = l.split_once(':')?;
         (k.trim() == key).then(|| v.trim().to_string())
     });

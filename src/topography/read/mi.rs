@@ -30,6 +30,7 @@
 //! The layout as SurfaceTopography's `IO/MI.py` reads it (which scales the
 //! values the same way and converts the sizes to the unit of the heights).
 
+use std::collections::HashMap;
 use std::path::Path;
 
 use super::bin::{product, Bin};
@@ -125,10 +126,14 @@ fn header(f: &Bin) -> Result<Header> {
 
 /// The buffers' names: the label, with the direction where labels repeat.
 fn names(buffers: &[Buffer]) -> Vec<String> {
+    let mut count: HashMap<&str, usize> = HashMap::new();
+    for b in buffers {
+        *count.entry(b.label.as_str()).or_default() += 1;
+    }
     buffers
         .iter()
         .map(|b| {
-            let repeated = buffers.iter().filter(|o| o.label == b.label).count() > 1;
+            let repeated = count[b.label.as_str()] > 1;
             if repeated && !b.direction.is_empty() {
                 format!("{} ({})", b.label, b.direction)
             } else {

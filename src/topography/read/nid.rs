@@ -38,6 +38,7 @@
 //! The layout as SurfaceTopography's `IO/EZD.py` reads it (after Gwyddion's
 //! `ezdfile.c`).
 
+use std::collections::HashMap;
 use std::path::Path;
 
 use super::bin::{product, Bin};
@@ -116,41 +117,66 @@ fn blocks<'h>(f: &Bin, ini: &'h Ini) -> Result<Vec<Block<'h>>> {
             .map_err(|_| f.bad(format!("{what}: {key} = {v:?} is not a count")))
     };
     let groups = int(top, "GroupCount", "[DataSet]")?;
+    // The channels `Gr<i>-Ch<j>` there are, in the order of the data (the
+    // first of a repeated key, as `get` finds it): walking all the indices
+    // the counts allow would take as long as the counts say.
+    let mut keys: Vec<(usize, usize, &str)> = top
+        .iter()
+        .filter_map(|(k, v)| {
+            let (i, j) = k.strip_prefix("Gr")?.split_once("-Ch")?;
+            let index = |s: &str| s.parse::<usize>().ok().filter(|n| n.to_string() == s);
+            Some((index(i)?, index(j)?, v.as_str()))
+        })
+        .filter(|&(i, _, _)| i < groups)
+        .collect();
+    keys.sort_by_key(|&(i, j, _)| (i, j));
+    keys.dedup_by_key(|&mut (i, j, _)| (i, j));
+    // The sections by name (the first of a repeated name, as `Ini::section`
+    // finds it), for many channels in as many sections.
+    let mut sections: HashMap<&str, &[(String, String)]> = HashMap::new();
+    for (n, s) in &ini.0 {
+        sections.entry(n.as_str()).or_insert(s.as_slice());
+    }
     let mut out = Vec::new();
     let mut offset = 0usize;
-    for i in 0..groups {
-        for j in 0..int(top, &format!("Gr{i}-Count"), "[DataSet]")? {
-            let Some(name) = get(top, &format!("Gr{i}-Ch{j}")) else {
-                continue;
-            };
-            let what = format!("[{name}]");
-            let meta = ini
-                .section(name)
-                .ok_or_else(|| f.bad(format!("the header has no {what}")))?;
-            if get(meta, "SaveMode") != Some("Binary") {
-                return Err(f.bad(format!("{what}: only SaveMode=Binary is read")));
-            }
-            let (nx, ny) = (int(meta, "Points", &what)?, int(meta, "Lines", &what)?);
-            let bits = int(meta, "SaveBits", &what)?;
-            if ![8, 16, 32].contains(&bits) {
-                return Err(f.bad(format!("{what}: SaveBits = {bits} (8, 16 or 32 are read)")));
-            }
-            let len = product(nx, ny, bits / 8)
-                .ok_or_else(|| f.bad(format!("{what}: {nx} × {ny} points are too many")))?;
-            let frame = get(meta, "Frame").unwrap_or("");
-            let dim2 = get(meta, "Dim2Name").unwrap_or("");
-            out.push(Block {
-                name: format!("{frame} ({dim2})"),
-                meta,
-                offset,
-                nx,
-                ny,
-                bits,
-            });
-            offset = offset
-                .checked_add(len)
-                .ok_or_else(|| f.bad("the data blocks are too large"))?;
+    let mut group = None;
+    for (i, j, name) in keys {
+        let count = match group {
+            Some((g, c)) if g == i => c,
+            _ => int(top, &format!("Gr{i}-Count"), "[DataSet]")?,
+        };
+        group = Some((i, count));
+        if j >= count {
+            continue;
         }
+        let what = format!("[{name}]");
+        let meta = sections
+            .get(name)
+            .copied()
+            .ok_or_else(|| f.bad(format!("the header has no {what}")))?;
+        if get(meta, "SaveMode") != Some("Binary") {
+            return Err(f.bad(format!("{what}: only SaveMode=Binary is read")));
+        }
+        let (nx, ny) = (int(meta, "Points", &what)?, int(meta, "Lines", &what)?);
+        let bits = int(meta, "SaveBits", &what)?;
+        if ![8, 16, 32].contains(&bits) {
+            return Err(f.bad(format!("{what}: SaveBits = {bits} (8, 16 or 32 are read)")));
+        }
+        let len = product(nx, ny, bits / 8)
+            .ok_or_else(|| f.bad(format!("{what}: {nx} × {ny} points are too many")))?;
+        let frame = get(meta, "Frame").unwrap_or("");
+        let dim2 = get(meta, "Dim2Name").unwrap_or("");
+        out.push(Block {
+            name: format!("{frame} ({dim2})"),
+            meta,
+            offset,
+            nx,
+            ny,
+            bits,
+        });
+        offset = offset
+            .checked_add(len)
+            .ok_or_else(|| f.bad("the data blocks are too large"))?;
     }
     Ok(out)
 }
@@ -202,7 +228,8 @@ pub(crate) fn parse(path: &Path, bytes: &[u8], options: &ReadOptions) -> Result<
     let at = start
         .checked_add(b.offset)
         .ok_or_else(|| f.bad("the data blocks are too large"))?;
-    let data = f.slice(at, b.nx * b.ny * item, &format!("the data of {what}"))?;
+    let len = product(b.nx, b.ny, item).ok_or_else(|| f.bad("the data blocks are too large"))?;
+    let data = f.slice(at, len, &format!("the data of {what}"))?;
     let scale = range / 2f64.powi(b.bits as i32);
     let offset = min + if signed { range / 2.0 } else { 0.0 };
     let value = |c: &[u8]| -> f64 {

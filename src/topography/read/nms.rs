@@ -113,11 +113,13 @@ pub(crate) fn parse(path: &Path, bytes: &[u8], _options: &ReadOptions) -> Result
         }
     }
     let intensity = f.i32(1416, "the intensity flag")? > 0;
-    let n =
-        product(nx, ny, 1).ok_or_else(|| f.bad(format!("nx × ny = {nx} × {ny} is too large")))?;
-    let values = f.slice(HEADER, 2 * n, "the heights")?;
+    let too_large = || f.bad(format!("nx × ny = {nx} × {ny} is too large"));
+    let n = product(nx, ny, 1).ok_or_else(too_large)?;
+    let bytes = product(nx, ny, 2).ok_or_else(too_large)?;
+    let values = f.slice(HEADER, bytes, "the heights")?;
     let light = if intensity {
-        Some(f.slice(HEADER + 2 * n, n, "the intensity image")?)
+        let at = HEADER.checked_add(bytes).ok_or_else(too_large)?;
+        Some(f.slice(at, n, "the intensity image")?)
     } else {
         None
     };
