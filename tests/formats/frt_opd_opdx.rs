@@ -463,3 +463,126 @@ fn dektak_opdx_damaged() {
         "NumPoints = 3002",
     );
 }
+
+/// A Wyko `Image` (not heights) without `Pixel_size`: neither unit is
+/// stated, so the caller must give them (never metres by default).
+#[test]
+fn wyko_opd_image_without_pixel_size_needs_units() {
+    let mut b = std::fs::read(data("opd-1-crop.opd")).unwrap();
+    let k = b.windows(10).position(|w| w == b"Pixel_size").unwrap();
+    b[k] = b'p';
+    let path = temp("nopix.opd", &b);
+    error_of(&path, &channel("Image"), "give the height unit");
+    let o = ReadOptions {
+        height_unit: Some(LengthUnit::Nanometre),
+        size: Some(read::SizeSpec::PixelSize(1e-6)),
+        ..channel("Image")
+    };
+    read::as_read(&path, &o).unwrap();
+}
+
+/// A Dektak `DataScale` that is NaN, infinite or zero; a quantity whose
+/// value runs past its declared length.
+#[test]
+fn dektak_opdx_bad_data_scale_and_overrunning_quantity() {
+    let bytes = std::fs::read(data("opdx-3.opdx")).unwrap();
+    let k = bytes.windows(9).position(|w| w == b"DataScale").unwrap() + 9;
+    // Type 0x13 (a quantity), a 1-byte length of 49, the f64 value.
+    assert_eq!(bytes[k..k + 3], [0x13, 1, 49]);
+    for (name, v) in [
+        ("nan.opdx", f64::NAN),
+        ("inf.opdx", f64::INFINITY),
+        ("zero.opdx", 0.0),
+    ] {
+        let mut b = bytes.clone();
+        b[k + 3..k + 11].copy_from_slice(&v.to_le_bytes());
+        let e = error_of(&temp(name, &b), &ReadOptions::default(), "DataScale");
+        assert!(e.contains("not a finite, non-zero scale"), "{e}");
+        assert!(e.contains("Dektak .opdx"), "{e}");
+    }
+    // 20 bytes declared; the value and its two names take 29.
+    let mut b = bytes.clone();
+    b[k + 2] = 20;
+    let e = error_of(
+        &temp("overrun.opdx", &b),
+        &ReadOptions::default(),
+        "runs on to byte",
+    );
+    assert!(e.contains("Dektak .opdx"), "{e}");
+}
+
+/// Mountains `.mnt` and Park `.tiff` (whose other tests are in
+/// mnt_tiff_xlsx.rs): a looping FAT chain, a NaN origin; NaN or infinite
+/// gain, scale and offset.
+#[test]
+fn mountains_mnt_fat_loop_and_park_tiff_nonfinite_fields() {
+    let bytes = std::fs::read(data("mnt-1-crop.mnt")).unwrap();
+    let u32_at = |b: &[u8], at: usize| u32::from_le_bytes(b[at..at + 4].try_into().unwrap());
+    // The directory's first sector made its own successor in the FAT, the
+    // file padded to 2 MB: an error at once, found by content too.
+    let sector = 1usize << u16::from_le_bytes([bytes[0x1E], bytes[0x1F]]);
+    let fat = (u32_at(&bytes, 0x4C) as usize + 1) * sector;
+    let dir = u32_at(&bytes, 0x30);
+    let mut b = bytes.clone();
+    let at = fat + 4 * dir as usize;
+    b[at..at + 4].copy_from_slice(&dir.to_le_bytes());
+    b.resize(2 << 20, 0);
+    let start = std::time::Instant::now();
+    let e = error_of(&temp("loop.mnt", &b), &ReadOptions::default(), "has a loop");
+    assert!(
+        e.contains("Digital Surf Mountains .mnt") && e.contains("more than its"),
+        "{e}"
+    );
+    let noext = read::read(&temp("loop-mnt-noext", &b), &ReadOptions::default());
+    assert!(noext.is_err());
+    assert!(start.elapsed().as_secs() < 2, "{:?}", start.elapsed());
+    // A NaN origin (tag 0005, 8 bytes) of the x scale: the first after
+    // the first unit µm (04, then UTF-16LE).
+    let um = [4, 0xb5, 0, b'm', 0];
+    let unit = bytes.windows(5).position(|w| w == um).unwrap();
+    let tag = [5, 0, 8, 0, 0, 0, 0, 0, 0, 0];
+    let k = unit + bytes[unit..].windows(10).position(|w| w == tag).unwrap() + 10;
+    let mut b = bytes.clone();
+    b[k..k + 8].copy_from_slice(&f64::NAN.to_le_bytes());
+    let e = error_of(
+        &temp("origin.mnt", &b),
+        &ReadOptions::default(),
+        "origin of",
+    );
+    assert!(e.contains("not finite"), "{e}");
+
+    // Park: the header (tag 50435) found through the first IFD.
+    let bytes = std::fs::read(data("example_ps-crop.tiff")).unwrap();
+    let ifd = u32_at(&bytes, 4) as usize;
+    let n = usize::from(u16::from_le_bytes([bytes[ifd], bytes[ifd + 1]]));
+    let header = (0..n)
+        .map(|i| ifd + 2 + 12 * i)
+        .find(|&e| u16::from_le_bytes([bytes[e], bytes[e + 1]]) == 50435)
+        .map(|e| u32_at(&bytes, e + 8) as usize)
+        .unwrap();
+    for (at, field) in [
+        (220, "data gain"),
+        (228, "data scale factor"),
+        (236, "data offset"),
+    ] {
+        for v in [f64::NAN, f64::NEG_INFINITY] {
+            let mut b = bytes.clone();
+            b[header + at..header + at + 8].copy_from_slice(&v.to_le_bytes());
+            let e = error_of(&temp("field.tiff", &b), &ReadOptions::default(), field);
+            assert!(
+                e.contains("not finite") && e.contains("Park Systems"),
+                "{e}"
+            );
+        }
+    }
+    // Finite, but overflowing together.
+    let mut b = bytes.clone();
+    for at in [220, 228] {
+        b[header + at..header + at + 8].copy_from_slice(&1e308f64.to_le_bytes());
+    }
+    error_of(
+        &temp("overflow.tiff", &b),
+        &ReadOptions::default(),
+        "overflows",
+    );
+}

@@ -144,6 +144,8 @@ pub(crate) fn parse(path: &Path, b: &[u8], options: &ReadOptions) -> Result<Raw>
             resolution: f64::EPSILON,
         }),
         height_unit: if scale.is_some() { m() } else { Unit::Unstated },
+        // A non-height channel has no unit: the caller must give it.
+        require_units: scale.is_none(),
         ..Raw::map(im.nx, im.ny, heights(im, scale))
     })
 }

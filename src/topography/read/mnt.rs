@@ -78,7 +78,7 @@ pub(crate) fn sniff(bytes: &[u8]) -> bool {
         format: FORMAT,
     };
     bytes.starts_with(OLE_MAGIC)
-        && Cfb::open(&f).is_ok_and(|c| c.find(&f, STREAM).is_ok_and(|e| e.is_some()))
+        && Cfb::open_directory(&f).is_ok_and(|c| c.find(&f, STREAM).is_ok_and(|e| e.is_some()))
 }
 
 pub(crate) fn parse(path: &Path, b: &[u8], options: &ReadOptions) -> Result<Raw> {
@@ -132,7 +132,20 @@ struct Stream {
 }
 
 impl Cfb {
+    /// The compound file with its mini FAT and mini stream.
     fn open(f: &Bin) -> Result<Cfb> {
+        let mut cfb = Cfb::open_directory(f)?;
+        let mini_fat = cfb.chain(f, f.u32(0x3C, "first mini FAT sector")?, None)?;
+        cfb.mini_fat = mini_fat.chunks_exact(4).map(le_u32).collect();
+        let root = cfb
+            .entry(f, 0)?
+            .ok_or_else(|| f.bad("the compound file has no root entry"))?;
+        cfb.mini_stream = cfb.chain(f, root.start, Some(root.size))?;
+        Ok(cfb)
+    }
+
+    /// The header, the FAT and the directory only (no stream is read).
+    fn open_directory(f: &Bin) -> Result<Cfb> {
         f.slice(0, 512, "the compound file's header")?;
         let shift = f.u16(0x1E, "sector shift")?;
         let mini_shift = f.u16(0x20, "mini sector shift")?;
@@ -164,6 +177,7 @@ impl Cfb {
             difat.push(f.u32(0x4C + 4 * i, "the DIFAT")?);
         }
         let mut next = f.u32(0x44, "first DIFAT sector")?;
+        // Each DIFAT sector adds per_sector - 1 > 0 entries: this ends.
         while difat.len() < fat_sectors {
             let at = cfb.offset(f, next, "a DIFAT sector")?;
             for i in 0..per_sector - 1 {
@@ -179,20 +193,15 @@ impl Cfb {
             cfb.fat.extend(sector.chunks_exact(4).map(le_u32));
         }
         cfb.directory = cfb.chain(f, f.u32(0x30, "first directory sector")?, None)?;
-        let mini_fat = cfb.chain(f, f.u32(0x3C, "first mini FAT sector")?, None)?;
-        cfb.mini_fat = mini_fat.chunks_exact(4).map(le_u32).collect();
-        let root = cfb
-            .entry(f, 0)?
-            .ok_or_else(|| f.bad("the compound file has no root entry"))?;
-        cfb.mini_stream = cfb.chain(f, root.start, Some(root.size))?;
         Ok(cfb)
     }
 
     /// The file offset of sector `s`.
     fn offset(&self, f: &Bin, s: u32, what: &str) -> Result<usize> {
-        let at = (s as usize + 1)
-            .checked_mul(self.sector)
-            .filter(|&at| at < f.bytes.len())
+        let at = (u64::from(s) + 1)
+            .checked_mul(self.sector as u64)
+            .filter(|&at| at < f.bytes.len() as u64)
+            .and_then(|at| usize::try_from(at).ok())
             .ok_or_else(|| f.bad(format!("truncated: {what} is sector {s}, past the end")))?;
         Ok(at)
     }
@@ -201,10 +210,14 @@ impl Cfb {
     fn chain(&self, f: &Bin, start: u32, size: Option<u64>) -> Result<Vec<u8>> {
         let mut out = Vec::new();
         let mut s = start;
+        // A chain longer than the file has sectors visits one twice.
+        let sectors = f.bytes.len() / self.sector;
         let mut steps = 0;
         while s != END_OF_CHAIN && size.is_none_or(|n| (out.len() as u64) < n) {
-            if steps > self.fat.len() {
-                return Err(f.bad("the compound file's FAT has a loop"));
+            if steps >= sectors {
+                return Err(f.bad(format!(
+                    "the compound file's FAT has a loop (a chain of more than its {sectors} sectors)"
+                )));
             }
             let at = self.offset(f, s, "a stream")?;
             out.extend_from_slice(f.slice(at, self.sector, "a stream's sector")?);
@@ -278,14 +291,16 @@ impl Cfb {
         }
         let mut out = Vec::new();
         let mut s = e.start;
+        let sectors = self.mini_stream.len() / self.mini_sector;
+        let mut steps = 0;
         while (out.len() as u64) < e.size {
-            if out.len() > self.mini_stream.len() {
+            if steps >= sectors {
                 return Err(f.bad("the compound file's mini FAT has a loop"));
             }
-            let at = s as usize * self.mini_sector;
-            let sector = self
-                .mini_stream
-                .get(at..at + self.mini_sector)
+            steps += 1;
+            let sector = (s as usize)
+                .checked_mul(self.mini_sector)
+                .and_then(|at| self.mini_stream.get(at..at.checked_add(self.mini_sector)?))
                 .ok_or_else(|| {
                     f.bad(format!(
                         "truncated: mini sector {s} is past the mini stream"
@@ -414,14 +429,18 @@ impl Scale {
                 "the scale of {what} is incomplete (step {step}, unit {unit:?})"
             )));
         }
+        let origin = at(f, b, &[5])?
+            .map(|v| f64_of(f, v, "an origin"))
+            .transpose()?
+            .unwrap_or(0.0);
+        if !origin.is_finite() {
+            return Err(f.bad(format!("the origin of {what} is {origin}, not finite")));
+        }
         Ok(Scale {
             step,
             unit,
             display_unit: at(f, b, &[3])?.and_then(text).filter(|u| !u.is_empty()),
-            origin: at(f, b, &[5])?
-                .map(|v| f64_of(f, v, "an origin"))
-                .transpose()?
-                .unwrap_or(0.0),
+            origin,
         })
     }
 
@@ -551,7 +570,20 @@ impl Surface<'_> {
             return Err(f.bad(format!("heights of {item} bytes each: 2 or 4 are read")));
         };
         if let Some(mask) = self.mask {
-            let (m, _) = array(f, mask, (nx + 2) * (ny + 2), "the mask")?;
+            let bordered = (nx.checked_add(2), ny.checked_add(2));
+            let cells = match bordered {
+                (Some(a), Some(b)) => a.checked_mul(b),
+                _ => None,
+            }
+            .ok_or_else(|| {
+                f.bad(format!(
+                    "a mask of ({nx} + 2) × ({ny} + 2) bytes is too large"
+                ))
+            })?;
+            let (m, item) = array(f, mask, cells, "the mask")?;
+            if item != 1 {
+                return Err(f.bad(format!("the mask has {item} bytes per point, not 1")));
+            }
             for (iy, row) in m.chunks_exact(nx + 2).skip(1).take(ny).enumerate() {
                 for (ix, &v) in row[1..=nx].iter().enumerate() {
                     if v != MASK_MEASURED {
@@ -610,12 +642,15 @@ fn array(f: &Bin, object: &[u8], count: usize, what: &str) -> Result<(Vec<u8>, u
     let mut filled = 0;
     let mut at = 8;
     while at < data.len() {
-        let first = d.u32(at, "a block's first element")? as usize
-            | (d.u32(at + 4, "a block's first element")? as usize) << 32;
+        let first = u64::from(d.u32(at, "a block's first element")?)
+            | u64::from(d.u32(at + 4, "a block's first element")?) << 32;
         let n = d.u32(at + 8, "a block's size")? as usize;
         let packed = d.u32(at + 12, "a block's compressed size")? as usize;
         let z = d.slice(at + 16, packed, "a compressed block")?;
-        let start = first.checked_mul(item).filter(|&s| s <= total);
+        let start = usize::try_from(first)
+            .ok()
+            .and_then(|s| s.checked_mul(item))
+            .filter(|&s| s <= total);
         let end = start
             .and_then(|s| n.checked_mul(item)?.checked_add(s))
             .filter(|&e| e <= total);

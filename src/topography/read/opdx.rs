@@ -214,6 +214,12 @@ fn value(c: &mut Cursor, kind: u8, what: &str) -> Result<Value> {
                 let symbol = c.name(what)?;
                 Value::Quantity(c.f64(what)?, symbol)
             };
+            if c.at > stop {
+                return Err(c.f.bad(format!(
+                    "{what}: a quantity of {n} bytes runs on to byte {} (its length ends at {stop})",
+                    c.at
+                )));
+            }
             c.at = stop;
             q
         }
@@ -321,6 +327,16 @@ fn length(f: &Bin, m: &Manifest, key: &str, what: &str) -> Result<(f64, Unit)> {
     }
 }
 
+/// `{prefix}/DataScale`: a finite, non-zero length, and its unit.
+fn data_scale(f: &Bin, m: &Manifest, prefix: &str) -> Result<(f64, Unit)> {
+    let key = format!("{prefix}/DataScale");
+    let (scale, unit) = length(f, m, &key, "the heights")?;
+    if !scale.is_finite() || scale == 0.0 {
+        return Err(f.bad(format!("{key} = {scale}: not a finite, non-zero scale")));
+    }
+    Ok((scale, unit))
+}
+
 /// The size of `n` points whose first and last are `extent` apart.
 fn size(extent: f64, n: usize) -> f64 {
     if n > 1 {
@@ -346,7 +362,7 @@ fn profile(f: &Bin, m: &Manifest, options: &ReadOptions) -> Result<Raw> {
     let prefix = format!("/1D_Data/{}", chosen(f, &names, options)?);
     let n = count(f, m, &format!("{prefix}/NumPoints"))?;
     let (extent, x_unit) = length(f, m, &format!("{prefix}/Extent"), "the positions")?;
-    let (scale, h_unit) = length(f, m, &format!("{prefix}/DataScale"), "the heights")?;
+    let (scale, h_unit) = data_scale(f, m, &prefix)?;
     let key = format!("{prefix}/Array");
     let Value::Array(at, len) = *get(f, m, &key)? else {
         return Err(f.bad(format!("{key}: not an array of doubles")));
@@ -406,7 +422,7 @@ fn map(f: &Bin, m: &Manifest, options: &ReadOptions) -> Result<Raw> {
         &format!("{prefix}/Dimension2Extent"),
         "the x positions",
     )?;
-    let (scale, h_unit) = length(f, m, &format!("{prefix}/DataScale"), "the heights")?;
+    let (scale, h_unit) = data_scale(f, m, &prefix)?;
     let key = format!("{prefix}/Matrix");
     let Value::Matrix(at, len, mx, my) = *get(f, m, &key)? else {
         return Err(f.bad(format!("{key}: not a matrix")));

@@ -83,10 +83,13 @@ struct Entry {
 fn first_ifd(f: &Bin) -> Result<Vec<Entry>> {
     let at = f.u32(4, "the offset of the first directory")? as usize;
     let n = usize::from(f.u16(at, "the number of directory entries")?);
-    f.slice(at + 2, n * 12, "the first directory")?;
+    let entries = at
+        .checked_add(2)
+        .ok_or_else(|| f.bad(format!("the first directory at {at} is past the end")))?;
+    f.slice(entries, n * 12, "the first directory")?;
     (0..n)
         .map(|i| {
-            let e = at + 2 + 12 * i;
+            let e = entries + 12 * i;
             Ok(Entry {
                 tag: f.u16(e, "a tag")?,
                 kind: f.u16(e + 2, "a tag's type")?,
@@ -166,70 +169,136 @@ pub(crate) fn parse(path: &Path, b: &[u8], options: &ReadOptions) -> Result<Raw>
         )));
     }
     let version = long(&f, tag(TAG_VERSION, "version")?, "version")?;
-    let header_len = match version {
-        VERSION_1 => HEADER_V1,
-        VERSION_2 => HEADER_V2,
-        v => return Err(f.bad(format!("version {v:#010x}: versions 1 and 2 are read"))),
-    };
-    let header = value(&f, tag(TAG_HEADER, "header")?, "the header")?;
     let h = Bin {
-        bytes: header,
+        bytes: value(&f, tag(TAG_HEADER, "header")?, "the header")?,
         path,
         format: FORMAT,
     };
-    h.slice(0, header_len, "the header (tag 50435)")?;
-    let image_type = h.u32(0, "image type")?;
-    if image_type == 1 {
-        return Err(f.bad("a line profile (image type 1) is not read"));
-    }
-    let name = utf16(h.slice(4, 64, "source name")?);
-    let unit_text = match utf16(h.slice(244, 16, "data unit")?) {
-        u if u.is_empty() => "um".to_string(),
-        u => u,
-    };
-    let is_height = LengthUnit::parse(&unit_text).is_some();
-    channel::choose(&[(&name, is_height)], options.channel.as_deref()).map_err(|m| f.bad(m))?;
-    let height_unit =
-        Unit::declared(&format!("the heights of {name:?}"), &unit_text).map_err(|m| f.bad(m))?;
-    let (nx, ny) = (h.u32(100, "nx")? as usize, h.u32(104, "ny")? as usize);
-    if nx == 0 || ny == 0 {
-        return Err(f.bad(format!("nx × ny = {nx} × {ny}: both must be > 0")));
-    }
-    let data_type = if version == VERSION_2 {
-        h.u32(348, "data type")?
-    } else {
-        0
-    };
-    let item = match data_type {
-        0 => 2,
-        1 | 2 => 4,
-        t => {
-            return Err(f.bad(format!(
-                "data type {t}: 0 (int16), 1 (int32), 2 (float32) are read"
-            )))
-        }
-    };
-    let len = product(nx, ny, item)
+    let header = Header::read(&f, &h, version, options)?;
+    let (nx, ny) = (header.nx, header.ny);
+    let len = product(nx, ny, header.item)
         .ok_or_else(|| f.bad(format!("nx × ny = {nx} × {ny} is too large")))?;
-    let data = value(&f, tag(TAG_DATA, "data")?, "the data")?;
     let d = Bin {
-        bytes: data,
+        bytes: value(&f, tag(TAG_DATA, "data")?, "the data")?,
         path,
         format: FORMAT,
     };
     let data = d.slice(0, len, "the data (tag 50434)")?;
-    let f64_at = |at: usize, what: &str| -> Result<f64> {
-        let s = h.slice(at, 8, what)?;
-        Ok(f64::from_le_bytes([
-            s[0], s[1], s[2], s[3], s[4], s[5], s[6], s[7],
-        ]))
-    };
-    let gain = f64_at(220, "data gain")?;
-    let scale = f64_at(228, "data scale factor")?;
-    let scale = if scale == 0.0 { 1.0 } else { scale };
-    let offset = f64_at(236, "data offset")?;
-    let (lx, ly) = (f64_at(140, "Lx")?, f64_at(148, "Ly")?);
-    let values: Vec<f64> = match data_type {
+    let (gain, scale, offset) = (header.gain, header.scale, header.offset);
+    let values = values(data, header.data_type);
+    let largest = values
+        .iter()
+        .filter(|r| r.is_finite())
+        .fold(0.0f64, |m, r| m.max(r.abs()));
+    if [largest, -largest]
+        .iter()
+        .any(|&r| !(gain * (scale * r + offset)).is_finite())
+    {
+        return Err(f.bad(format!(
+            "data gain {gain:e} · (scale factor {scale:e} · {largest} + offset {offset:e}) \
+             overflows: not a finite height"
+        )));
+    }
+    // The first row of the file is the bottom one: y up.
+    let heights = values
+        .chunks_exact(nx)
+        .rev()
+        .flatten()
+        .map(|&r| gain * (scale * r + offset))
+        .collect();
+    Ok(Raw {
+        size: Some(Stored {
+            lx: header.lx,
+            ly: header.ly,
+            unit: Unit::Stated("µm".into(), LengthUnit::Micrometre),
+            resolution: 4.0 * f64::EPSILON,
+        }),
+        height_unit: header.height_unit,
+        ..Raw::map(nx, ny, heights)
+    })
+}
+
+/// The fields of the header (tag 50435) that are read.
+struct Header {
+    height_unit: Unit,
+    nx: usize,
+    ny: usize,
+    data_type: u32,
+    /// Bytes per value.
+    item: usize,
+    gain: f64,
+    scale: f64,
+    offset: f64,
+    lx: f64,
+    ly: f64,
+}
+
+impl Header {
+    /// The header `h` of a file of `version`; chooses its channel.
+    fn read(f: &Bin, h: &Bin, version: u32, options: &ReadOptions) -> Result<Header> {
+        let header_len = match version {
+            VERSION_1 => HEADER_V1,
+            VERSION_2 => HEADER_V2,
+            v => return Err(f.bad(format!("version {v:#010x}: versions 1 and 2 are read"))),
+        };
+        h.slice(0, header_len, "the header (tag 50435)")?;
+        if h.u32(0, "image type")? == 1 {
+            return Err(f.bad("a line profile (image type 1) is not read"));
+        }
+        let name = utf16(h.slice(4, 64, "source name")?);
+        let unit_text = match utf16(h.slice(244, 16, "data unit")?) {
+            u if u.is_empty() => "um".to_string(),
+            u => u,
+        };
+        let is_height = LengthUnit::parse(&unit_text).is_some();
+        channel::choose(&[(&name, is_height)], options.channel.as_deref()).map_err(|m| f.bad(m))?;
+        let height_unit = Unit::declared(&format!("the heights of {name:?}"), &unit_text)
+            .map_err(|m| f.bad(m))?;
+        let (nx, ny) = (h.u32(100, "nx")? as usize, h.u32(104, "ny")? as usize);
+        if nx == 0 || ny == 0 {
+            return Err(f.bad(format!("nx × ny = {nx} × {ny}: both must be > 0")));
+        }
+        let data_type = if version == VERSION_2 {
+            h.u32(348, "data type")?
+        } else {
+            0
+        };
+        let item = match data_type {
+            0 => 2,
+            1 | 2 => 4,
+            t => {
+                return Err(f.bad(format!(
+                    "data type {t}: 0 (int16), 1 (int32), 2 (float32) are read"
+                )))
+            }
+        };
+        let f64_at = |at: usize, what: &str| -> Result<f64> {
+            let s = h.slice(at, 8, what)?;
+            let v = f64::from_le_bytes([s[0], s[1], s[2], s[3], s[4], s[5], s[6], s[7]]);
+            if !v.is_finite() {
+                return Err(f.bad(format!("the {what} is {v}, not finite")));
+            }
+            Ok(v)
+        };
+        let scale = f64_at(228, "data scale factor")?;
+        Ok(Header {
+            height_unit,
+            nx,
+            ny,
+            data_type,
+            item,
+            gain: f64_at(220, "data gain")?,
+            scale: if scale == 0.0 { 1.0 } else { scale },
+            offset: f64_at(236, "data offset")?,
+            lx: f64_at(140, "Lx")?,
+            ly: f64_at(148, "Ly")?,
+        })
+    }
+}
+
+/// The raw values of `data` (int16, int32 or float32 by `data_type`).
+fn values(data: &[u8], data_type: u32) -> Vec<f64> {
+    match data_type {
         0 => data
             .chunks_exact(2)
             .map(|c| f64::from(i16::from_le_bytes([c[0], c[1]])))
@@ -242,23 +311,5 @@ pub(crate) fn parse(path: &Path, b: &[u8], options: &ReadOptions) -> Result<Raw>
             .chunks_exact(4)
             .map(|c| f64::from(f32::from_le_bytes([c[0], c[1], c[2], c[3]])))
             .collect(),
-    };
-    // The first row of the file is the bottom one: y up.
-    let heights = values
-        .chunks_exact(nx)
-        .rev()
-        .flatten()
-        .map(|&r| gain * (scale * r + offset))
-        .collect();
-    let um = Unit::Stated("µm".into(), LengthUnit::Micrometre);
-    Ok(Raw {
-        size: Some(Stored {
-            lx,
-            ly,
-            unit: um,
-            resolution: 4.0 * f64::EPSILON,
-        }),
-        height_unit,
-        ..Raw::map(nx, ny, heights)
-    })
+    }
 }

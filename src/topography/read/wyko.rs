@@ -137,6 +137,8 @@ pub(crate) fn parse(path: &Path, b: &[u8], options: &ReadOptions) -> Result<Raw>
         heights(values, nx, ny, item, height.then_some(factor)),
     );
     raw.height_unit = if height { mm() } else { Unit::Unstated };
+    // A non-height array (an image) has no unit: the caller must give it.
+    raw.require_units = !height;
     raw.size = pixel.map(|p| Stored {
         lx: nx as f64 * p,
         ly: ny as f64 * p * aspect,
