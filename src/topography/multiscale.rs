@@ -290,24 +290,13 @@ fn floor(m: &Measurement<'_>) -> Result<Option<f64>> {
     }
     let nyquist = t.band().1;
     let top = nyquist * std::f64::consts::SQRT_2;
-    let options = AnalysisOptions {
-        q_max: Some(top),
-        bins: Some(Bins::Edges(vec![nyquist * (1.0 + 1e-9), top])),
-        ..m.options.clone()
+    let defaults = super::Conditioning::for_topography(t);
+    let conditioning = super::Conditioning {
+        detrend: m.options.detrend.unwrap_or(defaults.detrend),
+        window: m.options.window.unwrap_or(defaults.window),
     };
-    let psd = super::isotropic_spectrum(
-        t,
-        super::Conditioning {
-            detrend: options
-                .detrend
-                .unwrap_or(super::Conditioning::for_topography(t).detrend),
-            window: options
-                .window
-                .unwrap_or(super::Conditioning::for_topography(t).window),
-        },
-        options.bins.as_ref().unwrap_or(&Bins::default()),
-        options.q_max,
-    )?;
+    let corners = Bins::Edges(vec![nyquist * (1.0 + 1e-9), top]);
+    let psd = super::isotropic_spectrum(t, conditioning, &corners, Some(top))?;
     Ok(psd.c.first().copied().filter(|c| *c > 0.0))
 }
 
