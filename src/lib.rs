@@ -128,7 +128,9 @@
 //! | [`reference`](mod@reference) | closed-form Hertz contacts (ball and cylinder): the smooth starts of the stress distributions and the BEM's validation |
 //! | `bem` | (feature `bem`) the FFT boundary-element solver: elastic kernels, surface synthesis, the Polonsky–Keer, preconditioned, saturated and adhesive loops, Hertz validation, Reynolds flow on the gap (feature `flow`) |
 //! | `topography` | (feature `topography`) measured surfaces: the instrument file readers, detrending, windows, radially averaged spectra, statistics |
-//! | [`io`] | grid file I/O: the one `.npy` reader and writer, the one text reader, atomic writes |
+//! | [`names`] | the closed sets of names (boundary, window, cohesive law, …): each value's name and description, serde by name |
+//! | [`io`] | grid file I/O: the one `.npy` reader and writer, the one text reader, atomic writes, input files held in memory (a host without a file system) |
+//! | [`clock`] | the solvers' wall-clock time on every target (a host without a clock, e.g. a browser, gives its own) |
 //! | [`error`] | the crate's [`Error`] and [`Result`]; [`Estimate`] is a value with its error bound, which many functions return |
 //!
 //! ## References
@@ -156,6 +158,7 @@ pub mod adhesion;
 pub mod asperity;
 #[cfg(feature = "bem")]
 pub mod bem;
+pub mod clock;
 pub mod conductance;
 pub mod corrected;
 pub mod error;
@@ -167,6 +170,7 @@ pub mod io;
 pub mod kappa;
 pub mod leakage;
 pub mod material;
+pub mod names;
 mod quad;
 pub mod reference;
 pub mod separation;

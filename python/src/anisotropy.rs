@@ -3,8 +3,8 @@
 //! ([`persson::topography::anisotropy`], as `persson anisotropy --json`).
 
 use numpy::IntoPyArray;
+use persson::names::{Detrend, Window};
 use persson::topography::{self as topo, Conditioning, Topography};
-use persson_studies::scene::{DetrendName, WindowName};
 use pyo3::prelude::*;
 
 use crate::arrays::{float_list, floats, map};
@@ -42,11 +42,11 @@ fn conditioning(
     window: Option<&str>,
 ) -> PyResult<Conditioning> {
     let d = Conditioning::for_topography(t);
-    let detrend: Option<DetrendName> = detrend.map(|v| name("detrend", v)).transpose()?;
-    let window: Option<WindowName> = window.map(|v| name("window", v)).transpose()?;
+    let detrend: Option<Detrend> = detrend.map(|v| name("detrend", v)).transpose()?;
+    let window: Option<Window> = window.map(|v| name("window", v)).transpose()?;
     Ok(Conditioning {
-        detrend: detrend.map_or(d.detrend, Into::into),
-        window: window.map_or(d.window, Into::into),
+        detrend: detrend.unwrap_or(d.detrend),
+        window: window.unwrap_or(d.window),
     })
 }
 

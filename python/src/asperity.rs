@@ -4,7 +4,6 @@
 use persson::bem::patches::{Connectivity, PatchOptions};
 use persson::bem::Boundary;
 use persson_studies::bem_detail::{self, PatchReport};
-use persson_studies::scene::BoundaryName;
 use pyo3::prelude::*;
 use pyo3::types::PyList;
 
@@ -30,7 +29,7 @@ fn field(pressure: &Bound<'_, PyAny>) -> PyResult<(usize, Vec<f64>)> {
 }
 
 fn boundary(b: &str) -> PyResult<Boundary> {
-    Ok(name::<BoundaryName>("boundary", b)?.into())
+    name::<Boundary>("boundary", b)
 }
 
 /// `bem rough --patches` of one pressure field (N × N, side `size`): the

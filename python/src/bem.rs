@@ -9,11 +9,11 @@ use persson::bem::rough::{self, RoughOptions, SurfaceOrigin};
 use persson::bem::surface::{synthesize as synth, GridSurface};
 use persson::bem::{check_memory, Boundary, Control, Operator, Options, Solver};
 use persson::error::check;
+use persson::names::Named;
 use persson_studies::bem_detail::{
     adhesive_controlled_path, adhesive_sphere, adhesive_warnings, sphere_warnings,
     AdhesiveIteration, LawKind, PathControl,
 };
-use persson_studies::scene::BoundaryName;
 use persson_studies::validation::{self, ComparisonConfig, SweepSettings, UserData, UserHistogram};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -32,7 +32,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
 }
 
 fn boundary(b: &str) -> PyResult<Boundary> {
-    Ok(name::<BoundaryName>("boundary", b)?.into())
+    name::<Boundary>("boundary", b)
 }
 
 pub(crate) fn options(
@@ -270,13 +270,13 @@ fn bem_rough<'py>(
 
 /// The cohesive law named by `adhesion`.
 fn law_kind(adhesion: &str) -> PyResult<LawKind> {
-    match adhesion {
-        "maugis" => Ok(LawKind::Maugis),
-        "exponential" => Ok(LawKind::Exponential),
-        other => Err(value_error(format!(
-            "adhesion {other:?}: one of 'maugis', 'exponential'"
-        ))),
-    }
+    LawKind::from_name(adhesion).ok_or_else(|| {
+        let names: Vec<_> = LawKind::names().map(|n| format!("'{n}'")).collect();
+        value_error(format!(
+            "adhesion {adhesion:?}: one of {}",
+            names.join(", ")
+        ))
+    })
 }
 
 /// `bem_rough`'s surface arguments: heights, size, spectrum, grid, seed.

@@ -6,15 +6,14 @@ use std::sync::Arc;
 
 use numpy::ndarray::Zip;
 use persson::spectrum::{Spectrum as _, Tabulated};
-use persson::topography::{self as topo, AnalysisOptions, Note, Topography};
+use persson::topography::Note;
 use persson::{Estimate, Result};
-use persson_studies::scene::{
-    ConventionName, DetrendName, HeightMapSpec, Sides, SpectrumSpec, WindowName, EXAMPLE,
-};
+use persson_studies::scene::{ConventionName, HeightMapSpec, Sides, SpectrumSpec, EXAMPLE};
 use pyo3::prelude::*;
 
-use crate::arrays::{floats, map, output};
-use crate::convert::{err, name, to_dict, to_dict_warned, value_error};
+use crate::arrays::{floats, output};
+use crate::convert::{err, name, to_dict_warned, value_error};
+use crate::height_map::{analysis, heights_topography, sides_from_pixel};
 use crate::state::{estimate, note_of_state, note_state, recipe_state, NoteState, Recipe};
 
 /// A spectrum shared between Python objects and the library's reports.
@@ -82,168 +81,12 @@ pub struct Measured {
 }
 
 impl Measured {
-    fn warnings(&self) -> Vec<persson_studies::Warning> {
+    pub(crate) fn warnings(&self) -> Vec<persson_studies::Warning> {
         persson_studies::warning::of_notes(&self.file, &self.notes)
     }
 }
 
 impl Spectrum {
-    /// A tabulated spectrum with its warnings: a measured map's first (as
-    /// the CLI lists them), then a slope above 1.
-    fn tabulated_spectrum(
-        t: Tabulated,
-        description: Option<String>,
-        measured: Option<Measured>,
-    ) -> Self {
-        let points = t.points().collect();
-        let mut warnings = measured
-            .as_ref()
-            .map(Measured::warnings)
-            .unwrap_or_default();
-        let steep = t
-            .rms_slope(t.q_min(), t.q_max())
-            .ok()
-            .and_then(|m| persson_studies::Warning::steep_slope(m.value));
-        if let Some(w) = steep {
-            if !warnings.contains(&w) {
-                warnings.push(w);
-            }
-        }
-        Spectrum {
-            shared: Shared(Arc::new(t)),
-            breaks: vec![],
-            description,
-            recipe: Recipe::Points(points),
-            warnings,
-            measured,
-        }
-    }
-}
-
-impl Spectrum {
-    fn from_spec(spec: &SpectrumSpec) -> PyResult<Self> {
-        let mut s = Self::from_spec_quiet(spec)?;
-        // As the CLI's surface (RoughContact): a measured map's warnings
-        // first (a sum's or a multi-scale set's: those its parts gave), then
-        // the spectrum's own.
-        let own = std::mem::take(&mut s.warnings);
-        s.warnings = match (&s.measured, spec) {
-            (Some(m), _) => m.warnings(),
-            // A dataset named as a height map is a multi-scale set.
-            (
-                None,
-                SpectrumSpec::Sum { .. }
-                | SpectrumSpec::MultiScale { .. }
-                | SpectrumSpec::HeightMap(_),
-            ) => own,
-            (None, _) => vec![],
-        };
-        for w in persson_studies::scene::run::spectrum_warnings(spec, &s.shared) {
-            if !s.warnings.contains(&w) {
-                s.warnings.push(w);
-            }
-        }
-        Ok(s)
-    }
-
-    fn from_spec_quiet(spec: &SpectrumSpec) -> PyResult<Self> {
-        match spec {
-            SpectrumSpec::SelfAffine { .. } | SpectrumSpec::Stretched { .. } => {
-                let built = spec.build_described().map_err(err)?;
-                Ok(Spectrum {
-                    shared: Shared(Arc::from(built.value)),
-                    breaks: spec.breaks(),
-                    description: built.description,
-                    recipe: Recipe::SelfAffine(
-                        serde_json::to_string(spec).map_err(|e| value_error(e.to_string()))?,
-                    ),
-                    warnings: vec![],
-                    measured: None,
-                })
-            }
-            // As SpectrumSpec::build, keeping the concrete Tabulated.
-            SpectrumSpec::Tabulated {
-                file,
-                convention,
-                size,
-            } => {
-                let t =
-                    Tabulated::from_csv(file, convention.with(*size).map_err(err)?).map_err(err)?;
-                Ok(Self::tabulated_spectrum(t, None, None))
-            }
-            // As HeightMapSpec::spectrum_described, keeping the notes.
-            SpectrumSpec::HeightMap(m) => {
-                if let Some(measurements) = m.dataset_measurements().map_err(err)? {
-                    return Self::multi_scale(&measurements);
-                }
-                let a = m.analyse().map_err(err)?;
-                // The file's name in an error, as HeightMapSpec's (in_file).
-                if let Err(e) = a.psd.to_tabulated() {
-                    let name = m.file.display().to_string();
-                    return Err(err(if e.to_string().contains(&name) {
-                        e
-                    } else {
-                        persson::Error::parse(&m.file, 0, 0, e.to_string())
-                    }));
-                }
-                measured(a, &m.file)
-            }
-            SpectrumSpec::MultiScale { measurements } => Self::multi_scale(measurements),
-            SpectrumSpec::Sum { parts } => {
-                let parts: Vec<Spectrum> =
-                    parts.iter().map(Self::from_spec).collect::<PyResult<_>>()?;
-                Self::sum_of(&parts)
-            }
-        }
-    }
-
-    /// The combined spectrum of several measurements, with their warnings.
-    fn multi_scale(measurements: &[persson_studies::scene::HeightMapSpec]) -> PyResult<Self> {
-        let d = persson_studies::scene::multiscale::described(measurements).map_err(err)?;
-        let mut s = Self::tabulated_spectrum(d.value, d.description, None);
-        for w in d.warnings {
-            if !s.warnings.contains(&w) {
-                s.warnings.push(w);
-            }
-        }
-        Ok(s)
-    }
-
-    /// The sum C = C1 + C2 + … of built spectra (two rough bodies).
-    fn sum_of(parts: &[Spectrum]) -> PyResult<Self> {
-        let sum = persson::spectrum::Sum::new(
-            parts
-                .iter()
-                .map(|p| Box::new(p.shared.clone()) as Box<dyn persson::Spectrum>)
-                .collect(),
-        )
-        .map_err(err)?;
-        let mut warnings: Vec<persson_studies::Warning> = Vec::new();
-        for w in parts
-            .iter()
-            .flat_map(|p| p.warnings.clone())
-            .chain(persson_studies::Warning::sum_bands(&sum))
-        {
-            if !warnings.contains(&w) {
-                warnings.push(w);
-            }
-        }
-        let mut breaks: Vec<f64> = parts.iter().flat_map(|p| p.breaks.clone()).collect();
-        breaks.sort_by(f64::total_cmp);
-        breaks.dedup();
-        Ok(Spectrum {
-            shared: Shared(Arc::new(sum)),
-            breaks,
-            description: Some(format!(
-                "two rough bodies, C = C1 + C2 ({} spectra)",
-                parts.len()
-            )),
-            recipe: Recipe::Sum(parts.iter().map(|p| p.recipe.clone()).collect()),
-            warnings,
-            measured: None,
-        })
-    }
-
     /// The library's surface: this spectrum on a body of contact modulus E*.
     pub fn contact(
         &self,
@@ -267,78 +110,6 @@ impl Spectrum {
             q_max.unwrap_or(self.shared.q_max()),
         )
     }
-}
-
-fn heights_topography(
-    heights: &Bound<'_, PyAny>,
-    sides: impl FnOnce([usize; 2]) -> PyResult<(f64, f64)>,
-    periodic: bool,
-) -> PyResult<Topography> {
-    let a = floats("heights", heights)?;
-    if a.as_array().ndim() == 1 {
-        let v = a.as_array();
-        let nx = v.len();
-        let (lx, _) = sides([1, nx])?;
-        let h: Vec<f64> = v.iter().copied().collect();
-        return Topography::line_scans(nx, 1, lx, h, periodic).map_err(err);
-    }
-    let ([ny, nx], values) = map("heights", &a)?;
-    let (lx, ly) = sides([ny, nx])?;
-    Topography::map(nx, ny, lx, ly, values.to_vec(), periodic).map_err(err)
-}
-
-fn pixel_sides(pixel_size: &Bound<'_, PyAny>) -> PyResult<(f64, Option<f64>)> {
-    let d = crate::arrays::float_list("pixel_size", pixel_size)?;
-    match d[..] {
-        [dx] => Ok((dx, None)),
-        [dx, dy] => Ok((dx, Some(dy))),
-        _ => Err(value_error(format!(
-            "pixel_size: {} values, expected Δ or (Δx, Δy)",
-            d.len()
-        ))),
-    }
-}
-
-fn analysis(
-    t: &Topography,
-    detrend: Option<&str>,
-    window: Option<&str>,
-    q_max: Option<f64>,
-) -> PyResult<topo::Analysis> {
-    let detrend: Option<DetrendName> = detrend.map(|d| name("detrend", d)).transpose()?;
-    let window: Option<WindowName> = window.map(|w| name("window", w)).transpose()?;
-    let options = AnalysisOptions {
-        detrend: detrend.map(Into::into),
-        window: window.map(Into::into),
-        q_max,
-        bins: None,
-    };
-    topo::analyse(t, &options).map_err(err)
-}
-
-/// The spectrum of a measured map's analysis, described and with its
-/// warnings, `file` naming the input (a path, or `(array)`, `(topography)`).
-fn measured(a: topo::Analysis, file: &Path) -> PyResult<Spectrum> {
-    let s = a.psd.to_tabulated().map_err(err)?;
-    let description = Some(persson_studies::scene::describe(file, &a));
-    let notes = Measured {
-        file: file.to_path_buf(),
-        notes: a.notes,
-    };
-    Ok(Spectrum::tabulated_spectrum(s, description, Some(notes)))
-}
-
-/// The map's sides from its pixel size, as the file readers compute them
-/// (Lx = nx·Δx, Ly = ny·Δy).
-fn sides_from_pixel(
-    pixel_size: &Bound<'_, PyAny>,
-) -> PyResult<impl FnOnce([usize; 2]) -> PyResult<(f64, f64)>> {
-    let (dx, dy) = pixel_sides(pixel_size)?;
-    persson::error::check::positive("pixel_size", dx).map_err(err)?;
-    if let Some(dy) = dy {
-        persson::error::check::positive("pixel_size", dy).map_err(err)?;
-    }
-    Ok(move |[ny, nx]: [usize; 2]| Ok((nx as f64 * dx, ny as f64 * dy.unwrap_or(dx))))
 }
 
 #[pymethods]
@@ -521,8 +292,10 @@ impl Spectrum {
             each("pixel_sizes", pixel_sizes)?,
             each("tip_radii", tip_radii)?,
         );
-        let detrend: Option<DetrendName> = detrend.map(|d| name("detrend", d)).transpose()?;
-        let window: Option<WindowName> = window.map(|w| name("window", w)).transpose()?;
+        let detrend: Option<persson::names::Detrend> =
+            detrend.map(|d| name("detrend", d)).transpose()?;
+        let window: Option<persson::names::Window> =
+            window.map(|w| name("window", w)).transpose()?;
         let measurements = paths
             .into_iter()
             .enumerate()
@@ -560,7 +333,7 @@ impl Spectrum {
     ) -> PyResult<Self> {
         let t = heights_topography(heights, sides_from_pixel(pixel_size)?, periodic)?;
         let a = py.detach(|| analysis(&t, detrend, window, q_max))?;
-        measured(a, Path::new("(array)"))
+        Self::from_analysis(a, Path::new("(array)"))
     }
 
     /// The spectrum of a SurfaceTopography `Topography` (or anything with
@@ -612,7 +385,7 @@ impl Spectrum {
             periodic,
         )?;
         let a = py.detach(|| analysis(&t, detrend, window, q_max))?;
-        measured(a, Path::new("(topography)"))
+        Self::from_analysis(a, Path::new("(topography)"))
     }
 
     /// C(q) in m⁴ at the wavevectors q (1/m; a number or an array), 0
@@ -793,23 +566,4 @@ impl Spectrum {
                 .unwrap_or_default()
         )
     }
-}
-
-/// `persson spectrum --surface FILE --json` for a height map given as an
-/// array: shape, pixel size, real-space and spectral rms values, the Hurst
-/// fit and the binned spectrum `psd` (Persson's normalisation).
-#[pyfunction]
-#[pyo3(signature = (heights, pixel_size, *, periodic=false, detrend=None, window=None, q_max=None))]
-pub fn analyse_height_map<'py>(
-    py: Python<'py>,
-    heights: &Bound<'py, PyAny>,
-    pixel_size: &Bound<'py, PyAny>,
-    periodic: bool,
-    detrend: Option<&str>,
-    window: Option<&str>,
-    q_max: Option<f64>,
-) -> PyResult<Bound<'py, PyAny>> {
-    let t = heights_topography(heights, sides_from_pixel(pixel_size)?, periodic)?;
-    let a = py.detach(|| analysis(&t, detrend, window, q_max))?;
-    to_dict(py, &a)
 }

@@ -7,14 +7,21 @@ use crate::special::erfcx;
 use crate::spectrum::Spectrum;
 
 /// Whether the work of adhesion acts on the true (sloped) surface area.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
-#[serde(rename_all = "kebab-case")]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum AreaEnhancement {
     /// Δγ acts on A_true = A0 ∫₀^∞ e^{−x}(1 + ξ²x)^{1/2} dx (Persson & Tosatti 2001).
     #[default]
     Slopes,
     /// Δγ acts on the projected area only (A_true = A0).
     None,
+}
+
+crate::names::named! {
+    AreaEnhancement, "area_enhancement",
+    "Whether the work of adhesion acts on the true (sloped) surface area." {
+        Slopes = "slopes": "Δγ on the true area of Gaussian slopes (Persson & Tosatti 2001).",
+        None = "none": "Δγ on the projected area only.",
+    }
 }
 
 /// The adhesion problem for one spectrum, E* and work of adhesion Δγ.

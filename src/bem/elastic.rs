@@ -2,7 +2,7 @@
 //! otherwise the preconditioned loop with the plain one as its fallback (or
 //! the plain loop alone).
 
-use std::time::Instant;
+use crate::clock::Instant;
 
 use super::polonsky_keer;
 use super::preconditioned::{self, Cap, Outcome};

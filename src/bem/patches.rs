@@ -48,15 +48,7 @@ use super::kernel::Boundary;
 use crate::asperity::gaussian::{phi, scaled_tail_moment, Order};
 use crate::error::{check, Error, Result};
 
-/// Which neighbours join cells into one patch.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Connectivity {
-    /// Edge neighbours only.
-    Four,
-    /// Edge and corner neighbours.
-    Eight,
-}
+pub use crate::names::Connectivity;
 
 /// Settings of [`patch_statistics`].
 #[derive(Debug, Clone, Copy, PartialEq)]

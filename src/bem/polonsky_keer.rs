@@ -24,8 +24,8 @@
 //!
 //! [`Method::Plain`]: super::Method::Plain
 
+use crate::clock::Instant;
 use std::cell::Cell;
-use std::time::Instant;
 
 use super::driver::{drive, Check, Limits, Measured, Step};
 use super::problem::{Options, Problem};

@@ -57,15 +57,7 @@ use serde::Serialize;
 use super::Solution;
 use crate::error::{check, Error, Result};
 
-/// Direction of the mean flow.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum FlowDirection {
-    /// Along the second index j of `f[i·N + j]` (within a row).
-    X,
-    /// Along the first index i (across rows).
-    Y,
-}
+pub use crate::leakage::FlowDirection;
 
 /// A gap field on the BEM grid: `N × N` row-major gaps ≥ 0 (m), 0 in contact.
 #[derive(Debug, Clone, PartialEq)]
@@ -184,7 +176,7 @@ pub struct ReynoldsFlow {
 /// ```
 pub fn flow(field: &GapField, viscosity: f64, direction: FlowDirection) -> Result<ReynoldsFlow> {
     check::positive("viscosity", viscosity)?;
-    let start = std::time::Instant::now();
+    let start = crate::clock::Instant::now();
     let n = field.n;
     let g_max = field.gap.iter().cloned().fold(0.0, f64::max);
     let scale = if g_max > 0.0 { g_max } else { 1.0 };

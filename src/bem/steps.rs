@@ -409,7 +409,7 @@ pub(crate) fn finish_elastic(
     ws: &mut Workspace,
     stats: &GapStats,
     (iterations, residual): (usize, f64),
-    start: std::time::Instant,
+    start: crate::clock::Instant,
 ) -> Solution {
     let load = problem.target_total().is_some();
     let shift = if load && stats.count > 0 {

@@ -48,15 +48,19 @@ const SERIES_MAX_TERMS: usize = 400;
 const MIN_POINTS: usize = 3;
 
 /// The unit of a master curve's frequency column.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
-#[serde(rename_all = "kebab-case")]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum FrequencyUnit {
     /// Angular frequency ω in rad/s.
-    #[serde(rename = "rad/s")]
     RadPerSecond,
     /// Frequency f in Hz (ω = 2π f).
-    #[serde(rename = "Hz")]
     Hertz,
+}
+
+crate::names::named! {
+    FrequencyUnit, "frequency_unit", "The unit of a master curve's frequency column." {
+        RadPerSecond = "rad/s": "Angular frequency ω in rad/s.",
+        Hertz = "Hz": "Frequency f in Hz (ω = 2π f).",
+    }
 }
 
 /// A master curve E′(ω), E″(ω) at the reference temperature, log-log

@@ -214,8 +214,7 @@ pub enum HorizontalShift {
 }
 
 /// The vertical shift b_T(T).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
-#[serde(rename_all = "kebab-case")]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum VerticalShift {
     /// b_T = 1.
@@ -224,6 +223,15 @@ pub enum VerticalShift {
     Entropic,
     /// b_T from the shift table's third column.
     Table,
+}
+
+crate::names::named! {
+    VerticalShift, "vertical_shift",
+    "The vertical shift b_T of time–temperature superposition." {
+        None = "none": "b_T = 1.",
+        Entropic = "entropic": "b_T = T/T_ref (entropic elasticity).",
+        Table = "table": "b_T from the shift table's third column.",
+    }
 }
 
 /// Time–temperature superposition of the reference master curve.

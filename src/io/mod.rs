@@ -8,7 +8,7 @@
 //! |---|---|---|
 //! | numpy `.npy`, float32/float64, either byte order, C or Fortran order, rank 2 | [`npy::parse`] | [`npy::write`] (atomic) |
 //! | text: rows of numbers, header lines, `#` comments | [`text::rows`], [`text::matrix`] | – |
-//! | any bytes | [`read`] (read-only) | [`write_atomic`] |
+//! | any bytes | [`read`] (read-only; [`mount`]ed files first) | [`write_atomic`] |
 //!
 //! # Conventions
 //! A [`Matrix`] is row-major, `values[row·cols + col]`, with `rows × cols`
@@ -22,8 +22,11 @@
 //! then renames it over the target: a failed write leaves any existing file
 //! untouched and no partial file behind.
 
+mod memory;
 pub mod npy;
 pub mod text;
+
+pub use memory::{mount, unmount_all};
 
 use std::fs::OpenOptions;
 use std::path::{Path, PathBuf};
@@ -162,7 +165,27 @@ pub fn check_writable(path: &Path) -> Result<()> {
 /// # Errors
 /// [`Error::Io`] naming `path`.
 pub fn read(path: &Path) -> Result<Vec<u8>> {
+    if let Some(bytes) = memory::get(path) {
+        return Ok(bytes.to_vec());
+    }
     std::fs::read(path).map_err(|source| io_error(path, source))
+}
+
+/// The first `n` bytes of an input file (fewer if it is shorter), without
+/// reading the rest: a format's magic.
+///
+/// # Errors
+/// [`Error::Io`] naming `path`.
+pub fn read_head(path: &Path, n: usize) -> Result<Vec<u8>> {
+    use std::io::Read;
+    if let Some(bytes) = memory::get(path) {
+        return Ok(bytes[..n.min(bytes.len())].to_vec());
+    }
+    let mut head = Vec::with_capacity(n);
+    std::fs::File::open(path)
+        .and_then(|f| f.take(n as u64).read_to_end(&mut head))
+        .map_err(|source| io_error(path, source))?;
+    Ok(head)
 }
 
 fn io_error(path: &Path, source: std::io::Error) -> Error {

@@ -54,6 +54,39 @@ use crate::error::{check, Error, Result};
 /// Default percolation threshold a_c of the critical junction (Dapp et al. 2012).
 pub const DEFAULT_PERCOLATION_THRESHOLD: f64 = 0.42;
 
+/// The fluid of a seal: what a [`Drive`] drives.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Fluid {
+    /// An incompressible liquid ([`Drive::Liquid`]).
+    Liquid,
+    /// An isothermal ideal gas ([`Drive::Gas`]).
+    Gas,
+}
+
+crate::names::named! {
+    Fluid, "fluid", "The fluid of a seal." {
+        Liquid = "liquid": "Incompressible liquid, driven by ΔP.",
+        Gas = "gas": "Isothermal ideal gas from P_a to P_b (Q at P_b).",
+    }
+}
+
+/// Direction of the mean flow through a seal on a grid `f[i·N + j]` (the
+/// BEM's Reynolds flow, `bem::reynolds` with the feature `flow`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FlowDirection {
+    /// Along the second index j of `f[i·N + j]` (within a row).
+    X,
+    /// Along the first index i (across rows).
+    Y,
+}
+
+crate::names::named! {
+    FlowDirection, "direction", "Direction of the mean flow on the grid." {
+        X = "x": "Along the second index j of `f[i·N + j]`.",
+        Y = "y": "Along the first index i.",
+    }
+}
+
 /// What drives the flow through the seal.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 #[serde(rename_all = "snake_case", tag = "fluid")]
@@ -74,6 +107,14 @@ pub enum Drive {
 }
 
 impl Drive {
+    /// The fluid driven.
+    pub fn fluid(&self) -> Fluid {
+        match self {
+            Drive::Liquid { .. } => Fluid::Liquid,
+            Drive::Gas { .. } => Fluid::Gas,
+        }
+    }
+
     /// Check the pressures.
     ///
     /// # Errors

@@ -17,31 +17,9 @@
 
 use super::{Layout, Topography};
 
-/// The least-squares trend removed before the spectrum and the statistics.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Detrend {
-    /// Heights as they are.
-    None,
-    /// The mean height.
-    Mean,
-    /// The least-squares plane (tilt and offset); a line per profile for line scans.
-    Plane,
-    /// The least-squares quadratic (`x², xy, y²` as well); per profile for line scans.
-    Curvature,
-}
+pub use crate::names::Detrend;
 
 impl Detrend {
-    /// The name as on the command line (`none`, `mean`, `plane`, `curvature`).
-    pub fn name(self) -> &'static str {
-        match self {
-            Detrend::None => "none",
-            Detrend::Mean => "mean",
-            Detrend::Plane => "plane",
-            Detrend::Curvature => "curvature",
-        }
-    }
-
     /// Polynomial degree, `None` for no detrending.
     fn degree(self) -> Option<usize> {
         match self {
@@ -49,21 +27,6 @@ impl Detrend {
             Detrend::Mean => Some(0),
             Detrend::Plane => Some(1),
             Detrend::Curvature => Some(2),
-        }
-    }
-}
-
-impl std::str::FromStr for Detrend {
-    type Err = String;
-    fn from_str(s: &str) -> Result<Self, String> {
-        match s {
-            "none" => Ok(Detrend::None),
-            "mean" => Ok(Detrend::Mean),
-            "plane" => Ok(Detrend::Plane),
-            "curvature" => Ok(Detrend::Curvature),
-            _ => Err(format!(
-                "unknown detrend {s:?}: one of none, mean, plane, curvature"
-            )),
         }
     }
 }

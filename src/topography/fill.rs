@@ -148,7 +148,7 @@ struct Level {
 }
 
 /// Sparse rows (the interpolation from a coarse level, one row per fine
-/// unknown, or its transpose).
+/// unknown, or its transpose; the off-diagonal part of a coarse operator).
 struct Rows {
     start: Vec<u32>,
     col: Vec<u32>,
@@ -306,33 +306,37 @@ impl Level {
     /// The next coarser level (the unknowns at even grid indices; along x
     /// only for line scans) and the interpolation from it.
     fn coarsen(&self, line: bool) -> (Rows, Level) {
-        // Along one axis: the coarse size, whether it wraps, and the coarse
-        // points (with weights) a fine index interpolates from.
-        let axis = |g: usize, wrap: bool| -> (usize, bool) {
-            if wrap && g.is_multiple_of(2) {
-                (g / 2, g / 2 > 2)
-            } else {
-                (g.div_ceil(2), false)
-            }
-        };
-        let weights = |i: usize, g: usize, cg: usize, wrap: bool| -> ([(usize, f64); 2], usize) {
-            if i.is_multiple_of(2) {
-                ([(i / 2, 1.0), (0, 0.0)], 1)
-            } else if i + 1 < g {
-                ([(i / 2, 0.5), (i / 2 + 1, 0.5)], 2)
-            } else if wrap {
-                ([(i / 2, 0.5), (0, 0.5)], 2)
-            } else {
-                debug_assert!(i / 2 < cg);
-                ([(i / 2, 1.0), (0, 0.0)], 1)
-            }
-        };
-        let (cgx, cwrap_x) = axis(self.gx, self.wrap_x);
+        let (cgx, cwrap_x) = coarse_axis(self.gx, self.wrap_x);
         let (cgy, cwrap_y) = if line {
             (self.gy, false)
         } else {
-            axis(self.gy, self.wrap_y)
+            coarse_axis(self.gy, self.wrap_y)
         };
+        let (index, pos) = self.coarse_unknowns(line, cgx, cgy);
+        let nc = pos.len();
+        let p = self.interpolation(line, cgx, cgy, &index);
+        let (diag, off) = self.galerkin(&p, nc);
+        let coarse = Level {
+            gx: cgx,
+            gy: cgy,
+            wrap_x: cwrap_x,
+            wrap_y: cwrap_y,
+            pos,
+            inv_diag: diag.iter().map(|d| 1.0 / d).collect(),
+            diag,
+            start: off.start,
+            col: off.col,
+            val: off.val,
+            order: (0..nc as u32).collect(),
+        };
+        (p, coarse)
+    }
+
+    /// The unknowns of the coarse grid (`cgx × cgy`): those of this level at
+    /// even grid indices (along x only for line scans). Returns the coarse
+    /// grid's unknown numbers (`u32::MAX` where a point is not one) and the
+    /// unknowns' coarse grid positions.
+    fn coarse_unknowns(&self, line: bool, cgx: usize, cgy: usize) -> (Vec<u32>, Vec<u32>) {
         let mut index = vec![u32::MAX; cgx * cgy];
         let mut pos = Vec::new();
         for &k in &self.pos {
@@ -344,8 +348,14 @@ impl Level {
                 pos.push(c as u32);
             }
         }
-        let nc = pos.len();
-        // The interpolation P: one row per fine unknown.
+        (index, pos)
+    }
+
+    /// The interpolation P from the coarse grid (`cgx × cgy`, its unknowns
+    /// numbered by `index`): one row per unknown of this level, the products
+    /// of the weights along x and y of [`axis_weights`], terms from a coarse
+    /// point that is not an unknown dropped.
+    fn interpolation(&self, line: bool, cgx: usize, cgy: usize, index: &[u32]) -> Rows {
         let mut p = Rows {
             start: Vec::with_capacity(self.n() + 1),
             col: Vec::with_capacity(4 * self.n()),
@@ -355,11 +365,11 @@ impl Level {
         for &k in &self.pos {
             let k = k as usize;
             let (i, j) = (k % self.gx, k / self.gx);
-            let (xs, nxs) = weights(i, self.gx, cgx, self.wrap_x);
+            let (xs, nxs) = axis_weights(i, self.gx, cgx, self.wrap_x);
             let (ys, nys) = if line {
                 ([(j, 1.0), (0, 0.0)], 1)
             } else {
-                weights(j, self.gy, cgy, self.wrap_y)
+                axis_weights(j, self.gy, cgy, self.wrap_y)
             };
             for &(cj, wy) in &ys[..nys] {
                 for &(ci, wx) in &xs[..nxs] {
@@ -372,9 +382,16 @@ impl Level {
             }
             p.start.push(p.col.len() as u32);
         }
-        // Pᵀ A P, row by row (a dense accumulator over the coarse unknowns):
-        // row c₁ sums w₁ a_uv w₂ over the fine u interpolating from c₁, their
-        // neighbours v (and u itself) and the coarse c₂ v interpolates from.
+        p
+    }
+
+    /// The Galerkin product Pᵀ A P on `nc` coarse unknowns: its diagonal and
+    /// its nonzero off-diagonal entries, row by row.
+    ///
+    /// A dense accumulator over the coarse unknowns: row c₁ sums w₁ a_uv w₂
+    /// over the fine u interpolating from c₁, their neighbours v (and u
+    /// itself) and the coarse c₂ v interpolates from.
+    fn galerkin(&self, p: &Rows, nc: usize) -> (Vec<f64>, Rows) {
         let pt = p.transpose(nc);
         let mut acc = vec![0.0; nc];
         let mut seen = vec![false; nc];
@@ -413,20 +430,36 @@ impl Level {
             touched.clear();
             start.push(col.len() as u32);
         }
-        let coarse = Level {
-            gx: cgx,
-            gy: cgy,
-            wrap_x: cwrap_x,
-            wrap_y: cwrap_y,
-            pos,
-            inv_diag: diag.iter().map(|d| 1.0 / d).collect(),
-            diag,
-            start,
-            col,
-            val,
-            order: (0..nc as u32).collect(),
-        };
-        (p, coarse)
+        (diag, Rows { start, col, val })
+    }
+}
+
+/// One axis of the next coarser grid: its size and whether it wraps. An
+/// axis that wraps with an even size halves (and keeps wrapping while over 2
+/// points); any other keeps its even indices, the last one included.
+fn coarse_axis(g: usize, wrap: bool) -> (usize, bool) {
+    if wrap && g.is_multiple_of(2) {
+        (g / 2, g / 2 > 2)
+    } else {
+        (g.div_ceil(2), false)
+    }
+}
+
+/// The coarse points (index, weight) that index `i` of an axis of `g` points
+/// interpolates from, and how many of the two are used: an even index its
+/// own coarse point; an odd one the mean of its two even neighbours (across
+/// the edge when the axis wraps); past the last even index of a non-periodic
+/// axis, that last coarse point (of `cg`).
+fn axis_weights(i: usize, g: usize, cg: usize, wrap: bool) -> ([(usize, f64); 2], usize) {
+    if i.is_multiple_of(2) {
+        ([(i / 2, 1.0), (0, 0.0)], 1)
+    } else if i + 1 < g {
+        ([(i / 2, 0.5), (i / 2 + 1, 0.5)], 2)
+    } else if wrap {
+        ([(i / 2, 0.5), (0, 0.5)], 2)
+    } else {
+        debug_assert!(i / 2 < cg);
+        ([(i / 2, 1.0), (0, 0.0)], 1)
     }
 }
 

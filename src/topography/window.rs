@@ -20,28 +20,9 @@
 
 use super::Layout;
 
-/// The window applied before the Fourier transform.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Window {
-    /// No window (periodic surfaces).
-    None,
-    /// Hann (raised cosine).
-    Hann,
-    /// Blackman (lower side lobes, wider main lobe).
-    Blackman,
-}
+pub use crate::names::Window;
 
 impl Window {
-    /// The name as on the command line (`none`, `hann`, `blackman`).
-    pub fn name(self) -> &'static str {
-        match self {
-            Window::None => "none",
-            Window::Hann => "hann",
-            Window::Blackman => "blackman",
-        }
-    }
-
     /// The window as a function of `t ∈ [0, 1]`, `t = r/r_max` (radial) or
     /// `|2i/n − 1|` (1D), unnormalised.
     fn shape(self, t: f64) -> f64 {
@@ -53,18 +34,6 @@ impl Window {
             Window::None => 1.0,
             Window::Hann => 0.5 + 0.5 * (PI * t).cos(),
             Window::Blackman => 0.42 + 0.5 * (PI * t).cos() + 0.08 * (2.0 * PI * t).cos(),
-        }
-    }
-}
-
-impl std::str::FromStr for Window {
-    type Err = String;
-    fn from_str(s: &str) -> Result<Self, String> {
-        match s {
-            "none" => Ok(Window::None),
-            "hann" => Ok(Window::Hann),
-            "blackman" => Ok(Window::Blackman),
-            _ => Err(format!("unknown window {s:?}: one of none, hann, blackman")),
         }
     }
 }

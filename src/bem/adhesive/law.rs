@@ -2,6 +2,7 @@
 //! exponential, with their bounds.
 
 use crate::error::{check, Error, Result};
+use crate::names::LawKind;
 
 /// Shortest cohesive length ℓ = E*Δγ/σ_c² ([`CohesiveLaw::cohesive_length`])
 /// that counts as resolved, in grid spacings L/N (below it a study warns).
@@ -77,7 +78,29 @@ fn check_law(work_of_adhesion: f64, adhesion_range: f64) -> Result<()> {
     )
 }
 
+impl LawKind {
+    /// The law of this kind with work of adhesion Δγ = `work_of_adhesion`
+    /// and range ρ = `adhesion_range`.
+    ///
+    /// # Errors
+    /// As [`CohesiveLaw::maugis`].
+    pub fn law(self, work_of_adhesion: f64, adhesion_range: f64) -> Result<CohesiveLaw> {
+        match self {
+            LawKind::Maugis => CohesiveLaw::maugis(work_of_adhesion, adhesion_range),
+            LawKind::Exponential => CohesiveLaw::exponential(work_of_adhesion, adhesion_range),
+        }
+    }
+}
+
 impl CohesiveLaw {
+    /// The law's kind.
+    pub fn kind(&self) -> LawKind {
+        match self {
+            CohesiveLaw::Maugis { .. } => LawKind::Maugis,
+            CohesiveLaw::Exponential { .. } => LawKind::Exponential,
+        }
+    }
+
     /// The Maugis–Dugdale law.
     ///
     /// # Errors

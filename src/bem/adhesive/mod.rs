@@ -149,10 +149,13 @@
 mod checks;
 mod gap;
 mod law;
+mod path;
 mod pcg;
 mod plain;
 
+pub use crate::names::LawKind;
 pub use law::{CohesiveLaw, MAX_PEAK_ATTRACTION, RESOLVED_COHESIVE_LENGTH};
+pub use path::PathControl;
 
 use super::kernel::{Boundary, Operator, Padded};
 use super::problem::Method;
@@ -538,6 +541,24 @@ impl AdhesiveSolver {
         opts: &AdhesiveOptions,
     ) -> Result<AdhesiveSequence> {
         self.walk(approaches, |s, d| s.solve_approach(heights, law, d, opts))
+    }
+
+    /// [`AdhesiveSolver::sequence`] or [`AdhesiveSolver::sequence_approach`],
+    /// as `control` prescribes.
+    ///
+    /// # Errors
+    /// As those.
+    pub fn path(
+        &mut self,
+        heights: &[f64],
+        law: &CohesiveLaw,
+        control: PathControl<'_>,
+        opts: &AdhesiveOptions,
+    ) -> Result<AdhesiveSequence> {
+        match control {
+            PathControl::MeanGap(g) => self.sequence(heights, law, g, opts),
+            PathControl::Approach(d) => self.sequence_approach(heights, law, d, opts),
+        }
     }
 
     /// The one path walk behind [`AdhesiveSolver::sequence`] and

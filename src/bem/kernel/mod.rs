@@ -38,39 +38,7 @@ use crate::error::{check, Error, Result};
 mod padded;
 pub(crate) use padded::Padded;
 
-/// Boundary condition of the elastic half-space at the edges of the grid.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Boundary {
-    /// The grid is one period of an infinite periodic system.
-    Periodic,
-    /// The grid is a window of an infinite half-space, loaded only inside it.
-    Free,
-}
-
-impl Boundary {
-    /// `periodic` or `free`, as on the command line and in scenes.
-    pub fn name(self) -> &'static str {
-        match self {
-            Boundary::Periodic => "periodic",
-            Boundary::Free => "free",
-        }
-    }
-}
-
-impl std::str::FromStr for Boundary {
-    type Err = Error;
-    fn from_str(s: &str) -> Result<Self> {
-        match s {
-            "periodic" => Ok(Boundary::Periodic),
-            "free" => Ok(Boundary::Free),
-            _ => Err(Error::Inconsistent {
-                name: "boundary".into(),
-                requirement: format!("one of periodic, free; got {s:?}"),
-            }),
-        }
-    }
-}
+pub use crate::names::Boundary;
 
 /// A planned compliance operator `u = 𝒢 p` on an `N × N` grid.
 ///

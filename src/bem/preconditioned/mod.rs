@@ -104,8 +104,8 @@
 //!
 //! [`Method::Preconditioned`]: super::Method::Preconditioned
 
+use crate::clock::Instant;
 use std::cell::Cell;
-use std::time::Instant;
 
 use super::driver::{drive, Check, Limits, Measured, Step};
 use super::problem::{Options, Problem};

@@ -68,7 +68,7 @@
 //! L. Frérot, G. Anciaux, V. Rey, S. Pham-Ba & J.-F. Molinari, J. Open
 //! Source Softw. 5, 2121 (2020), doi:10.21105/joss.02121 (Tamaas).
 
-use std::time::Instant;
+use crate::clock::Instant;
 
 mod fista;
 mod measure;

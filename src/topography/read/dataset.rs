@@ -33,7 +33,7 @@
 //! from 0); [`dataset()`] lists them for a multi-scale spectrum.
 
 use std::borrow::Cow;
-use std::io::{Cursor, Read};
+use std::io::Cursor;
 use std::path::Path;
 
 use yaml_rust2::{Yaml, YamlLoader};
@@ -102,9 +102,7 @@ pub(crate) fn sniff(bytes: &[u8]) -> bool {
 /// number.
 pub fn dataset(path: &Path) -> Result<Option<Dataset>> {
     // The zip magic first: a map is not read twice (128 MB of a 4096² .npy).
-    let mut magic = [0u8; 4];
-    let opened = std::fs::File::open(path).and_then(|mut f| f.read_exact(&mut magic));
-    if opened.is_ok() && &magic != b"PK\x03\x04" {
+    if crate::io::read_head(path, 4).is_ok_and(|magic| magic != b"PK\x03\x04") {
         return Ok(None);
     }
     let bytes = crate::io::read(path)?;

@@ -3,7 +3,8 @@
 //! area against nominal pressure (tension ≤ 0 allowed) and the pull-off
 //! stress, from Persson's theory (the scene output `adhesion`).
 
-use persson_studies::scene::{AdhesionOutput, AreaEnhancementName};
+use persson::adhesion::AreaEnhancement;
+use persson_studies::scene::{by_name, AdhesionOutput};
 
 use super::args::{measured_contact, MaterialArgs, MeasuredArgs, SpectrumArgs};
 use super::output::Format;
@@ -31,8 +32,8 @@ pub struct Args {
     #[arg(long, default_value_t = persson_studies::scene::DEFAULT_STICKINESS_POINTS, allow_hyphen_values = true, value_parser = super::number::count)]
     points: usize,
     /// Whether Δγ acts on the true (sloped) area or the projected one.
-    #[arg(long, value_enum, default_value_t = AreaEnhancementName::Slopes)]
-    area_enhancement: AreaEnhancementName,
+    #[arg(long, value_parser = by_name::<AreaEnhancement>(), default_value_t = AreaEnhancement::Slopes)]
+    area_enhancement: AreaEnhancement,
     /// Range Δr of the adhesive interaction (m): adds the Pastewka–Robbins criterion.
     #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
     adhesion_range: Option<f64>,

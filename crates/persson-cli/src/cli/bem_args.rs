@@ -167,8 +167,8 @@ pub struct RoughArgs {
     pub read: MapReadArgs,
     /// Least-squares trend removed from the --surface heights before the
     /// solve (default: none, the heights as read).
-    #[arg(long, value_enum, requires = "surface")]
-    pub detrend: Option<persson_studies::scene::DetrendName>,
+    #[arg(long, requires = "surface", value_parser = persson_studies::scene::by_name::<persson::names::Detrend>())]
+    pub detrend: Option<persson::names::Detrend>,
     /// Grid side N for a synthesised surface.
     #[arg(long, conflicts_with = "surface", allow_hyphen_values = true, value_parser = super::number::count)]
     pub grid: Option<usize>,

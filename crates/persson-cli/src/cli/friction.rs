@@ -3,10 +3,10 @@
 //! Phys. 115, 3840 (2001); J. Phys.: Condens. Matter 18, 7789 (2006)).
 
 use anyhow::bail;
+use persson::friction::{FrequencyUnit, VerticalShift};
 use persson_studies::friction::Friction;
 use persson_studies::scene::{
-    friction, FrequencyUnitName, FrictionOutput, RubberSpec, StandardLinearSolidSpec,
-    VelocityRange, VerticalShiftName, WlfSpec,
+    by_name, friction, FrictionOutput, RubberSpec, StandardLinearSolidSpec, VelocityRange, WlfSpec,
 };
 use persson_studies::study::{Context, Inputs, Reads, Study};
 
@@ -22,8 +22,8 @@ pub struct RubberArgs {
     #[arg(long, value_name = "FILE", group = "modulus", value_parser = in_file)]
     master_curve: Option<InFile>,
     /// Unit of the --master-curve frequency column.
-    #[arg(long, value_enum, requires = "master_curve")]
-    frequency_unit: Option<FrequencyUnitName>,
+    #[arg(long, requires = "master_curve", value_parser = by_name::<FrequencyUnit>())]
+    frequency_unit: Option<FrequencyUnit>,
     /// Prony series (generalised Maxwell): rows E_k (Pa), τ_k (s); a row with τ = inf is E∞.
     #[arg(long, value_name = "FILE", group = "modulus", value_parser = in_file)]
     prony: Option<InFile>,
@@ -42,8 +42,8 @@ pub struct RubberArgs {
     #[arg(long, allow_hyphen_values = true, value_parser = number)]
     reference_temperature: Option<f64>,
     /// Vertical shift b_T.
-    #[arg(long, value_enum)]
-    vertical_shift: Option<VerticalShiftName>,
+    #[arg(long, value_parser = by_name::<VerticalShift>())]
+    vertical_shift: Option<VerticalShift>,
     /// Poisson ratio ν of the rubber.
     #[arg(long, default_value = "0.5", allow_hyphen_values = true, value_parser = number)]
     poisson: f64,

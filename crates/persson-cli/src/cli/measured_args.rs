@@ -6,9 +6,8 @@
 use anyhow::bail;
 
 use super::files::{in_file, InFile};
-use persson_studies::scene::{
-    DetrendName, HeightMapSpec, LengthUnitName, Sides, SpectrumSpec, WindowName,
-};
+use persson::names::{Detrend, Window};
+use persson_studies::scene::{by_name, HeightMapSpec, LengthUnitName, Sides, SpectrumSpec};
 
 /// A measured surface as the spectrum (`--surface FILE` and its conditioning),
 /// flattened next to [`SpectrumArgs`]; the scene's `height_map` spectrum.
@@ -38,11 +37,11 @@ pub struct MeasuredArgs {
     )]
     pub size: Vec<f64>,
     /// Least-squares detrending of the --surface (default: plane, none if --periodic).
-    #[arg(long, value_enum, requires = "surface")]
-    pub detrend: Option<DetrendName>,
+    #[arg(long, requires = "surface", value_parser = by_name::<Detrend>())]
+    pub detrend: Option<Detrend>,
     /// Window before the spectrum (default: hann, none if --periodic).
-    #[arg(long, value_enum, requires = "surface")]
-    pub window: Option<WindowName>,
+    #[arg(long, requires = "surface", value_parser = by_name::<Window>())]
+    pub window: Option<Window>,
     /// The --surface map is periodic (no detrending or window by default).
     #[arg(long, requires = "surface")]
     pub periodic: bool,

@@ -36,8 +36,8 @@ pub enum Source {
 pub fn hint(w: &Warning, source: Source) -> Option<&'static str> {
     use persson_studies::scene::ConventionName;
     match (w, source) {
+        (_, Source::Scene) => w.scene_hint(),
         (Warning::BandLimited { .. }, Source::Flags) => Some("--grid"),
-        (Warning::BandLimited { .. }, Source::Scene) => Some("outputs.bem.grid"),
         (
             Warning::PsdConvention {
                 convention: ConventionName::Persson,
@@ -45,15 +45,7 @@ pub fn hint(w: &Warning, source: Source) -> Option<&'static str> {
             },
             Source::Flags,
         ) => Some("--psd-convention surface-topography"),
-        (
-            Warning::PsdConvention {
-                convention: ConventionName::Persson,
-                ..
-            },
-            Source::Scene,
-        ) => Some("spectrum.convention: \"surface-topography\""),
         (Warning::RisingSpectrum { .. }, Source::Flags) => Some("--surface FILE"),
-        (Warning::RisingSpectrum { .. }, Source::Scene) => Some("spectrum.kind: \"height_map\""),
         _ => None,
     }
 }

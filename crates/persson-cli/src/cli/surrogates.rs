@@ -2,7 +2,8 @@
 //! surfaces of its spectrum? The FFT-BEM on the map and on K surrogates;
 //! the scene output `surrogates`.
 
-use persson_studies::input::{BoundaryName, SurrogateKindName};
+use persson::bem::Boundary;
+use persson_studies::input::{by_name, SurrogateKindName};
 use persson_studies::study::{Context, Inputs, Reads};
 use persson_studies::surrogates::{Surrogates, SurrogatesOutput};
 
@@ -49,8 +50,8 @@ pub struct Args {
     #[arg(long, conflicts_with = "surface", allow_hyphen_values = true, value_parser = super::bem_args::seed)]
     map_seed: Option<u64>,
     /// Boundary condition of every solve.
-    #[arg(long, default_value = "periodic")]
-    boundary: BoundaryName,
+    #[arg(long, default_value = "periodic", value_parser = by_name::<Boundary>())]
+    boundary: Boundary,
     /// Relative tolerance ε of every solve.
     #[arg(long, default_value = "1e-8", allow_hyphen_values = true, value_parser = number)]
     tolerance: f64,

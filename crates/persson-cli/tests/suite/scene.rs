@@ -5,7 +5,7 @@
 use std::path::{Path, PathBuf};
 
 use persson::Error;
-use persson_studies::scene::{BoundaryName, ConventionName, StartName};
+use persson_studies::scene::{ConventionName, StartName};
 use persson_studies::scene::{Scene, TheoryName};
 use persson_studies::table::number;
 
@@ -161,8 +161,22 @@ fn closed_sets_are_spelled_as_on_the_command_line() {
             assert_eq!(back, v);
         }
     }
+    /// The numerics' closed sets, through the studies' value parser.
+    fn check_named<T: persson::names::Named + Send + Sync + serde::Serialize + std::fmt::Debug>() {
+        use clap::builder::TypedValueParser;
+        let parser = persson_studies::scene::by_name::<T>();
+        let clap: Vec<_> = parser
+            .possible_values()
+            .unwrap()
+            .map(|v| v.get_name().to_string())
+            .collect();
+        assert_eq!(clap, T::names().collect::<Vec<_>>());
+        for &(v, name, _) in T::VALUES {
+            assert_eq!(serde_json::to_string(&v).unwrap(), format!("\"{name}\""));
+        }
+    }
     check(ConventionName::ALL, ConventionName::name);
-    check(BoundaryName::ALL, BoundaryName::name);
+    check_named::<persson::bem::Boundary>();
     check(StartName::ALL, StartName::name);
     check(TheoryName::ALL, TheoryName::name);
     assert_eq!(ConventionName::Profile1d.name(), "profile1d");

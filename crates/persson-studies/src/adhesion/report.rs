@@ -3,8 +3,8 @@
 
 use serde::Serialize;
 
-use crate::input::AreaEnhancementName;
 use crate::table::{number, Cell, Table, Tabulate};
+use persson::adhesion::AreaEnhancement;
 use persson::adhesion::{AdhesivePoint, PastewkaRobbins, Stickiness};
 
 use crate::table::{input_digits, surface_prefix};
@@ -23,7 +23,7 @@ pub struct AdhesionReport {
     /// Δγ (J/m²).
     pub work_of_adhesion: f64,
     /// Whether Δγ acts on the true or the projected area.
-    pub area_enhancement: AreaEnhancementName,
+    pub area_enhancement: AreaEnhancement,
     /// rms slope over [q_l, q_s].
     pub rms_slope: f64,
     /// Magnification ζ of the contact points.

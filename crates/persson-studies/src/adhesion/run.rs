@@ -42,7 +42,7 @@ pub fn adhesion(
         surface.contact_modulus,
         out.work_of_adhesion,
     )?
-    .with_area_enhancement(enhancement.into());
+    .with_area_enhancement(enhancement);
     let zeta_max = model.zeta_max();
     let zeta = out.zeta.unwrap_or(zeta_max);
     if !(zeta.is_finite() && zeta >= 1.0 && zeta <= zeta_max * (1.0 + 1e-12)) {

@@ -3,7 +3,8 @@
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
-use crate::input::AreaEnhancementName;
+use crate::input::ByName;
+use persson::adhesion::AreaEnhancement;
 
 /// Adhesion from Persson's theory (Persson & Tosatti, J. Chem. Phys. 115,
 /// 5597 (2001); Persson, Eur. Phys. J. E 8, 385 (2002)): the energy balance
@@ -23,7 +24,8 @@ pub struct AdhesionOutput {
     pub points: Option<usize>,
     /// Whether Δγ acts on the true (sloped) area (`slopes`, default) or the projected one (`none`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub area_enhancement: Option<AreaEnhancementName>,
+    #[schemars(with = "Option<ByName<AreaEnhancement>>")]
+    pub area_enhancement: Option<AreaEnhancement>,
     /// Range Δr of the adhesive interaction, m: adds the Pastewka–Robbins criterion.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub adhesion_range: Option<f64>,

@@ -60,7 +60,6 @@ fn from_map(
     }
     let detrend = map
         .detrend
-        .map(Into::into)
         .unwrap_or(Conditioning::for_topography(&t).detrend);
     let h = t.detrended(detrend);
     let d = t.pixel_size();

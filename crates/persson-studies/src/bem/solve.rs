@@ -8,9 +8,10 @@ use persson::error::{check, Error, Result};
 
 use super::spec::BemOutput;
 use crate::bem_detail::{Details, SubsurfaceOptions, DEFAULT_POISSON};
-use crate::input::{BoundaryName, SpectrumSpec};
+use crate::input::SpectrumSpec;
 use crate::naming::prefix;
 use crate::naming::required;
+use persson::names::Boundary;
 
 /// The rigid surface of a BEM output (`section`, e.g. `outputs.bem.`): the
 /// height map, or synthesised from the spectrum on `grid` nodes with `seed`.
@@ -54,7 +55,7 @@ pub(crate) fn bem_surface(
 /// Missing or invalid inputs; a solve that fails.
 pub fn bem_rough(ctx: &crate::study::Context<'_>, b: &BemOutput) -> Result<(RoughReport, Details)> {
     let named = |e: Error| prefix("outputs.bem.", e);
-    let boundary = b.boundary.unwrap_or(BoundaryName::Periodic).into();
+    let boundary = b.boundary.unwrap_or(Boundary::Periodic);
     let tol = check::tolerance("tolerance", b.tolerance.unwrap_or(1e-10)).map_err(named)?;
     let bins = crate::validation::check_bins(b.bins.unwrap_or(crate::validation::DEFAULT_BINS))
         .map_err(named)?;
@@ -114,7 +115,7 @@ fn details(
                 ));
             }
             Some(PatchOptions {
-                connectivity: p.connectivity.unwrap_or_default().into(),
+                connectivity: p.connectivity.unwrap_or_default(),
                 boundary: grid.2,
                 bins_per_decade,
             })

@@ -5,7 +5,8 @@ use std::path::PathBuf;
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
-use crate::input::{BoundaryName, ConnectivityName};
+use crate::input::ByName;
+use persson::names::{Boundary, Connectivity};
 
 /// FFT-BEM rough contact: the surface is synthesised from the scene's
 /// spectrum (side 2π/q_l, `grid` nodes, `seed`) or read from its height map.
@@ -20,7 +21,8 @@ pub struct BemOutput {
     pub seed: Option<u64>,
     /// Boundary condition (default `periodic`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub boundary: Option<BoundaryName>,
+    #[schemars(with = "Option<ByName<Boundary>>")]
+    pub boundary: Option<Boundary>,
     /// Solver tolerance ε (default 1e-10).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tolerance: Option<f64>,
@@ -54,7 +56,8 @@ pub struct BemOutput {
 pub struct PatchesOutput {
     /// Neighbourhood of a patch (default `four`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub connectivity: Option<ConnectivityName>,
+    #[schemars(with = "Option<ByName<Connectivity>>")]
+    pub connectivity: Option<Connectivity>,
     /// Log bins per decade of the patch-area distribution (default 5).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub bins_per_decade: Option<usize>,

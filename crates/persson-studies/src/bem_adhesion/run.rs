@@ -4,8 +4,8 @@ use persson::error::{check, Error, Result};
 
 use super::spec::BemAdhesionOutput;
 use crate::bem::solve::bem_surface;
-use crate::input::BoundaryName;
 use crate::naming::prefix;
+use persson::names::Boundary;
 
 pub use crate::bem_detail::{adhesive_warnings as warnings, AdhesiveBemReport as Report};
 
@@ -24,16 +24,11 @@ pub fn bem_adhesion(
 ) -> Result<crate::bem_detail::AdhesiveBemReport> {
     use crate::bem_detail::{adhesive_controlled_path, PathControl};
     let named = |e: Error| prefix("outputs.bem_adhesion.", e);
-    let boundary_name = a.boundary.unwrap_or(BoundaryName::Periodic);
+    let boundary = a.boundary.unwrap_or(Boundary::Periodic);
     let tol = check::tolerance("tolerance", a.tolerance.unwrap_or(1e-10)).map_err(named)?;
-    let control =
-        PathControl::new(&a.mean_gap, &a.approach, boundary_name.into()).map_err(named)?;
+    let control = PathControl::new(&a.mean_gap, &a.approach, boundary).map_err(named)?;
     let e_star = ctx.build_material()?.contact_modulus();
-    let surf = bem_surface(
-        ctx,
-        ("outputs.bem_adhesion.", a.grid, a.seed),
-        boundary_name.into(),
-    )?;
+    let surf = bem_surface(ctx, ("outputs.bem_adhesion.", a.grid, a.seed), boundary)?;
     let options = persson::bem::adhesive::AdhesiveOptions {
         tolerance: tol,
         ..Default::default()
@@ -41,9 +36,9 @@ pub fn bem_adhesion(
     adhesive_controlled_path(
         &surf.heights,
         (surf.n, surf.size, e_star),
-        boundary_name.into(),
+        boundary,
         (
-            a.adhesion.unwrap_or_default().into(),
+            a.adhesion.unwrap_or_default(),
             a.work_of_adhesion,
             a.adhesion_range,
         ),

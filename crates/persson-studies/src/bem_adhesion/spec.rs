@@ -3,7 +3,8 @@
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
-use crate::input::{AdhesionLawName, BoundaryName};
+use crate::input::ByName;
+use persson::names::{Boundary, LawKind};
 
 /// The adhesive FFT-BEM (Rey, Anciaux & Molinari, Comput. Mech. 60, 69
 /// (2017)) on the scene's surface along a path in and out: per point the
@@ -20,7 +21,8 @@ pub struct BemAdhesionOutput {
     pub seed: Option<u64>,
     /// Boundary condition (default `periodic`; `free` needs `approach`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub boundary: Option<BoundaryName>,
+    #[schemars(with = "Option<ByName<Boundary>>")]
+    pub boundary: Option<Boundary>,
     /// Solver tolerance ε (default 1e-10).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tolerance: Option<f64>,
@@ -30,7 +32,8 @@ pub struct BemAdhesionOutput {
     pub adhesion_range: f64,
     /// Cohesive law (default `maugis`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub adhesion: Option<AdhesionLawName>,
+    #[schemars(with = "Option<ByName<LawKind>>")]
+    pub adhesion: Option<LawKind>,
     /// Mean gaps ḡ of the path, m, in order (periodic).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub mean_gap: Vec<f64>,

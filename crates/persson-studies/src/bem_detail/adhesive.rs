@@ -20,32 +20,9 @@ use persson::bem::adhesive::{
     AdhesiveOptions, AdhesivePoint, AdhesiveSequence, AdhesiveSolver, CohesiveLaw,
     RESOLVED_COHESIVE_LENGTH,
 };
+pub use persson::bem::adhesive::{LawKind, PathControl};
 use persson::bem::{Boundary, Method, Operator};
 use persson::error::{check, Error, Result};
-
-/// The cohesive law of an adhesive BEM path, by name.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum LawKind {
-    /// Maugis–Dugdale: constant attraction Δγ/ρ for gaps below ρ.
-    Maugis,
-    /// Exponential: attraction (Δγ/ρ) e^{−g/ρ}.
-    Exponential,
-}
-
-impl LawKind {
-    /// The law with work of adhesion `work_of_adhesion` (J/m²) and range
-    /// `adhesion_range` (m).
-    ///
-    /// # Errors
-    /// Either not finite and > 0 (each named).
-    pub fn law(self, work_of_adhesion: f64, adhesion_range: f64) -> Result<CohesiveLaw> {
-        match self {
-            LawKind::Maugis => CohesiveLaw::maugis(work_of_adhesion, adhesion_range),
-            LawKind::Exponential => CohesiveLaw::exponential(work_of_adhesion, adhesion_range),
-        }
-    }
-}
 
 /// The iteration of an adhesive BEM path, by name.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -119,60 +96,6 @@ pub struct AdhesiveBemReport {
     pub pull_off_stress: f64,
 }
 
-/// What an adhesive path prescribes, point by point.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum PathControl<'a> {
-    /// Mean gaps ḡ (m): periodic only, stable on the whole curve.
-    MeanGap(&'a [f64]),
-    /// Approaches δ of the rigid surface from first touch (m; δ < 0 is a
-    /// separation): periodic or free. Under approach control the free
-    /// boundary's curve is stable too (the rigid surface is held), but a
-    /// periodic δ must keep ḡ = max h − mean h − δ > 0.
-    Approach(&'a [f64]),
-}
-
-impl<'a> PathControl<'a> {
-    /// The path of the lists given (`mean_gap` or `approach`, exactly one
-    /// non-empty) on `boundary`: the one check of the command line, the
-    /// scene and Python. Mean gaps must be finite and > 0, approaches finite.
-    ///
-    /// # Errors
-    /// [`Error::Inconsistent`] naming `mean_gap` / `approach` for both or
-    /// neither given, or mean gaps on the free boundary (it runs under
-    /// approach control); [`Error::InvalidParameter`] naming `mean_gap[i]` or
-    /// `approach[i]`.
-    pub fn new(mean_gap: &'a [f64], approach: &'a [f64], boundary: Boundary) -> Result<Self> {
-        for (i, &g) in mean_gap.iter().enumerate() {
-            check::positive(&format!("mean_gap[{i}]"), g)?;
-        }
-        for (i, &d) in approach.iter().enumerate() {
-            if !d.is_finite() {
-                return Err(Error::invalid(format!("approach[{i}]"), d, "finite (m)"));
-            }
-        }
-        match (mean_gap.is_empty(), approach.is_empty()) {
-            (false, false) => Err(Error::Inconsistent {
-                name: "mean_gap and approach".into(),
-                requirement: "give one of the two".into(),
-            }),
-            (false, true) if boundary != Boundary::Periodic => Err(Error::Inconsistent {
-                name: "mean_gap and boundary".into(),
-                requirement: "mean gaps need a periodic boundary: the free one runs under \
-                              approach control (give approach instead)"
-                    .into(),
-            }),
-            (false, true) => Ok(PathControl::MeanGap(mean_gap)),
-            (true, false) => Ok(PathControl::Approach(approach)),
-            (true, true) => Err(Error::Inconsistent {
-                name: "mean_gap or approach".into(),
-                requirement: "the adhesive BEM runs along a path: give mean gaps (m) or \
-                              approaches (m)"
-                    .into(),
-            }),
-        }
-    }
-}
-
 /// Solve the adhesive contact of the periodic surface `heights` (N × N,
 /// side `size`, m) against a flat half-space of modulus `contact_modulus` at
 /// each of `mean_gaps` (m) in order.
@@ -235,10 +158,7 @@ pub fn adhesive_controlled_path(
         points,
         pull_off_pressure,
         ..
-    } = match control {
-        PathControl::MeanGap(g) => solver.sequence(heights, &law, g, options)?,
-        PathControl::Approach(d) => solver.sequence_approach(heights, &law, d, options)?,
-    };
+    } = solver.path(heights, &law, control, options)?;
     Ok(AdhesiveBemReport {
         grid: n,
         size,

@@ -124,6 +124,15 @@ impl Details {
 }
 
 impl persson::bem::rough::Observer for Details {
+    fn iteration(&mut self, p: persson::bem::rough::RoughProgress) {
+        crate::study::progress::report(&crate::study::progress::Progress {
+            study: "bem",
+            step: p.index,
+            steps: p.total,
+            iteration: p.iteration.iteration,
+            residual: p.iteration.residual,
+        });
+    }
     fn solution(&mut self, index: usize, solution: &Solution) -> Result<()> {
         Details::solution(self, index, solution)
     }

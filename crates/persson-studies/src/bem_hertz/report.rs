@@ -32,7 +32,7 @@ pub struct BemHertzRow {
 #[non_exhaustive]
 pub struct BemHertzReport {
     /// Boundary condition.
-    pub boundary: crate::input::BoundaryName,
+    pub boundary: persson::names::Boundary,
     /// Solver tolerance.
     pub tolerance: f64,
     /// One row per grid.

@@ -5,8 +5,8 @@ use persson::error::{check, Error, Result};
 
 use super::report::{BemHertzReport, BemHertzRow};
 use super::spec::BemHertzOutput;
-use crate::input::BoundaryName;
 use crate::naming::prefix;
+use persson::names::Boundary;
 
 /// `outputs.bem_hertz`: η per grid.
 ///
@@ -14,8 +14,7 @@ use crate::naming::prefix;
 /// A grid too large for memory; a tolerance out of range; a solve that fails.
 pub fn bem_hertz(h: &BemHertzOutput) -> Result<BemHertzReport> {
     let named = |e: Error| prefix("outputs.bem_hertz.", e);
-    let boundary_name = h.boundary.unwrap_or(BoundaryName::Free);
-    let boundary = boundary_name.into();
+    let boundary = h.boundary.unwrap_or(Boundary::Free);
     let tol = check::tolerance("tolerance", h.tolerance.unwrap_or(1e-12)).map_err(named)?;
     let grids = if h.grids.is_empty() {
         vec![64, 128, 256]
@@ -31,7 +30,7 @@ pub fn bem_hertz(h: &BemHertzOutput) -> Result<BemHertzReport> {
         .map(|&n| {
             check_memory(n, boundary).map_err(named)?;
             let r = hertz::validate(&hertz::HertzCase::new(n, boundary), &opts).map_err(named)?;
-            let reference = hertz::lecture_eta(n).filter(|_| boundary_name == BoundaryName::Free);
+            let reference = hertz::lecture_eta(n).filter(|_| boundary == Boundary::Free);
             Ok(BemHertzRow {
                 grid: n,
                 energy_error: r.energy_error,
@@ -58,7 +57,7 @@ pub fn bem_hertz(h: &BemHertzOutput) -> Result<BemHertzReport> {
         None => None,
     };
     Ok(BemHertzReport {
-        boundary: boundary_name,
+        boundary,
         tolerance: tol,
         rows,
         plastic,

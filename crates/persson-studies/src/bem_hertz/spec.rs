@@ -3,7 +3,8 @@
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
-use crate::input::BoundaryName;
+use crate::input::ByName;
+use persson::names::Boundary;
 
 /// FFT-BEM Hertz convergence: sphere R = L, a = 0.1 L, E* = 1 (Molinari,
 /// EPFL lecture "From single asperity to multi asperity contact", Table 1).
@@ -15,7 +16,8 @@ pub struct BemHertzOutput {
     pub grids: Vec<usize>,
     /// Boundary condition (default `free`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub boundary: Option<BoundaryName>,
+    #[schemars(with = "Option<ByName<Boundary>>")]
+    pub boundary: Option<Boundary>,
     /// Solver tolerance ε (default 1e-12).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tolerance: Option<f64>,

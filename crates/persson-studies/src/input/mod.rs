@@ -1,14 +1,17 @@
 //! The inputs of a calculation, shared by every study: the material, the
 //! roughness (a spectrum or a measured height map), the rubber, and the
-//! closed sets of names, with serde enums spelled as on the command line
-//! (`periodic`, `surface-topography`, `yang-persson`). The same enums are the
-//! CLI's value enums, so a scene and a flag accept exactly the same strings.
+//! closed sets of names, spelled as on the command line (`periodic`,
+//! `surface-topography`, `yang-persson`): the numerics' own enums where the
+//! set is one of theirs ([`persson::names::Named`], through [`ByName`] and
+//! the value parser `by_name`), the `names!` enums here otherwise. A scene
+//! and a flag accept exactly the same strings.
 //!
 //! | module | what it holds |
 //! |---|---|
 //! | this one | the material ([`MaterialSpec`]) and the built-in example |
 //! | `spectrum` | the roughness: self-affine, tabulated or a measured height map |
-//! | `names` | the closed sets (convention, boundary, start, theory, detrend, window) |
+//! | `names` | the studies' closed sets (convention, length unit, start, theory, surrogate kind) |
+//! | `by_name` | the numerics' closed sets ([`persson::names::Named`]: boundary, window, …) in the scene schema and on the command line |
 //! | `rubber` | the rubber and the `friction` output |
 
 use schemars::JsonSchema;
@@ -52,11 +55,13 @@ macro_rules! names {
     };
 }
 
+mod by_name;
 mod measured;
 mod names;
 mod rubber;
 mod spectrum;
 
+pub use by_name::*;
 #[cfg(feature = "topography")]
 pub use measured::describe;
 pub use names::*;

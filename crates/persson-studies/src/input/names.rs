@@ -1,6 +1,9 @@
-//! The closed sets of a scene, spelled as on the command line: the
-//! convention of a spectrum file, the BEM's boundary, the stress start, the
-//! area theory, and the detrending and window of a measured surface.
+//! The closed sets of a scene that are the studies' own, spelled as on the
+//! command line: the convention of a spectrum file (whose `grid` takes the
+//! side L), the unit of a file's lengths, the stress start, the area theory
+//! (Persson's and the asperity ones) and the kind of surrogate. The
+//! numerics' closed sets (boundary, window, …) are their own types, by
+//! [`super::ByName`].
 
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
@@ -64,70 +67,6 @@ names! {
         Pm = "pm",
         /// Ångström (1e-10 m).
         Angstrom = "angstrom",
-    }
-}
-
-names! {
-    /// Boundary condition of the FFT-BEM.
-    BoundaryName {
-        /// Periodic surface (the rough-contact default).
-        Periodic = "periodic",
-        /// Free (non-periodic) surface, zero-padded (the Hertz default).
-        Free = "free",
-    }
-}
-
-#[cfg(feature = "bem")]
-impl From<BoundaryName> for persson::bem::Boundary {
-    fn from(b: BoundaryName) -> Self {
-        match b {
-            BoundaryName::Periodic => persson::bem::Boundary::Periodic,
-            BoundaryName::Free => persson::bem::Boundary::Free,
-        }
-    }
-}
-
-names! {
-    /// Cohesive law of the adhesive FFT-BEM.
-    #[derive(Default)]
-    AdhesionLawName {
-        /// Maugis–Dugdale: attraction Δγ/ρ for gaps below ρ.
-        #[default]
-        Maugis = "maugis",
-        /// Exponential: attraction (Δγ/ρ) e^{−g/ρ}.
-        Exponential = "exponential",
-    }
-}
-
-#[cfg(feature = "bem")]
-impl From<AdhesionLawName> for crate::bem_detail::LawKind {
-    fn from(l: AdhesionLawName) -> Self {
-        match l {
-            AdhesionLawName::Maugis => crate::bem_detail::LawKind::Maugis,
-            AdhesionLawName::Exponential => crate::bem_detail::LawKind::Exponential,
-        }
-    }
-}
-
-names! {
-    /// Neighbourhood of a contact patch.
-    #[derive(Default)]
-    ConnectivityName {
-        /// Edge neighbours only.
-        #[default]
-        Four = "four",
-        /// Edge and corner neighbours.
-        Eight = "eight",
-    }
-}
-
-#[cfg(feature = "bem")]
-impl From<ConnectivityName> for persson::bem::patches::Connectivity {
-    fn from(c: ConnectivityName) -> Self {
-        match c {
-            ConnectivityName::Four => persson::bem::patches::Connectivity::Four,
-            ConnectivityName::Eight => persson::bem::patches::Connectivity::Eight,
-        }
     }
 }
 
@@ -219,53 +158,6 @@ impl TheorySpec {
                 gamma: None,
             })
             .collect()
-    }
-}
-
-names! {
-    /// Least-squares detrending of a measured surface.
-    DetrendName {
-        /// Heights as they are.
-        None = "none",
-        /// The mean height.
-        Mean = "mean",
-        /// The least-squares plane.
-        Plane = "plane",
-        /// The least-squares quadratic.
-        Curvature = "curvature",
-    }
-}
-
-names! {
-    /// Window applied before the spectrum of a measured surface.
-    WindowName {
-        /// No window.
-        None = "none",
-        /// Radial Hann window.
-        Hann = "hann",
-        /// Radial Blackman window.
-        Blackman = "blackman",
-    }
-}
-
-names! {
-    /// Whether the work of adhesion acts on the true (sloped) surface area.
-    #[derive(Default)]
-    AreaEnhancementName {
-        /// Δγ on the true area of Gaussian slopes (Persson & Tosatti 2001).
-        #[default]
-        Slopes = "slopes",
-        /// Δγ on the projected area only.
-        None = "none",
-    }
-}
-
-impl From<AreaEnhancementName> for persson::adhesion::AreaEnhancement {
-    fn from(a: AreaEnhancementName) -> Self {
-        match a {
-            AreaEnhancementName::Slopes => persson::adhesion::AreaEnhancement::Slopes,
-            AreaEnhancementName::None => persson::adhesion::AreaEnhancement::None,
-        }
     }
 }
 

@@ -18,49 +18,6 @@ use persson::friction::{
 /// 20 °C, where its modulus does not depend on T and T only labels results.
 pub const DEFAULT_REFERENCE_TEMPERATURE: f64 = 293.15;
 
-names! {
-    /// The unit of a master curve's frequency column.
-    FrequencyUnitName {
-        /// Angular frequency ω in rad/s.
-        RadPerSecond = "rad/s",
-        /// Frequency f in Hz (ω = 2π f).
-        Hertz = "Hz",
-    }
-}
-
-impl From<FrequencyUnitName> for FrequencyUnit {
-    fn from(u: FrequencyUnitName) -> Self {
-        match u {
-            FrequencyUnitName::RadPerSecond => FrequencyUnit::RadPerSecond,
-            FrequencyUnitName::Hertz => FrequencyUnit::Hertz,
-        }
-    }
-}
-
-names! {
-    /// The vertical shift b_T of time–temperature superposition.
-    #[derive(Default)]
-    VerticalShiftName {
-        /// b_T = 1.
-        #[default]
-        None = "none",
-        /// b_T = T/T_ref (entropic elasticity).
-        Entropic = "entropic",
-        /// b_T from the shift table's third column.
-        Table = "table",
-    }
-}
-
-impl From<VerticalShiftName> for VerticalShift {
-    fn from(v: VerticalShiftName) -> Self {
-        match v {
-            VerticalShiftName::None => VerticalShift::None,
-            VerticalShiftName::Entropic => VerticalShift::Entropic,
-            VerticalShiftName::Table => VerticalShift::Table,
-        }
-    }
-}
-
 /// A standard linear solid E(t) = E∞ + (E0 − E∞) e^{−t/τ}.
 #[derive(Debug, Clone, Copy, PartialEq, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
@@ -96,7 +53,8 @@ pub struct RubberSpec {
     pub master_curve: Option<PathBuf>,
     /// Unit of the master curve's first column (required with it: `rad/s` or `Hz`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub frequency_unit: Option<FrequencyUnitName>,
+    #[schemars(with = "Option<super::ByName<FrequencyUnit>>")]
+    pub frequency_unit: Option<FrequencyUnit>,
     /// A Prony series: rows E_k (Pa), τ_k (s); a row with τ = inf gives E∞.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub prony: Option<PathBuf>,
@@ -115,7 +73,8 @@ pub struct RubberSpec {
     pub reference_temperature: Option<f64>,
     /// The vertical shift b_T (default `none`; `table` is the shift table's third column).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub vertical_shift: Option<VerticalShiftName>,
+    #[schemars(with = "Option<super::ByName<VerticalShift>>")]
+    pub vertical_shift: Option<VerticalShift>,
     /// Poisson ratio ν (default 0.5).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub poisson: Option<f64>,
@@ -176,7 +135,7 @@ impl RubberSpec {
             let unit = self
                 .frequency_unit
                 .ok_or_else(|| required("frequency_unit (rad/s or Hz, with master_curve)"))?;
-            return Ok(MasterCurve::from_file(file, unit.into())?.into());
+            return Ok(MasterCurve::from_file(file, unit)?.into());
         }
         if self.frequency_unit.is_some() {
             return Err(Error::Inconsistent {
@@ -246,7 +205,7 @@ impl RubberSpec {
             )?,
         };
         match self.vertical_shift {
-            Some(v) => shift.with_vertical(v.into()),
+            Some(v) => shift.with_vertical(v),
             None => Ok(shift),
         }
     }

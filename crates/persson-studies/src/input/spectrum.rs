@@ -6,8 +6,9 @@ use std::path::PathBuf;
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
-use super::{ConventionName, DetrendName, LengthUnitName, WindowName};
+use super::{ByName, ConventionName, LengthUnitName};
 use persson::error::Result;
+use persson::names::{Detrend, Window};
 use persson::spectrum::{Amplitude, SelfAffine, Spectrum, Sum, Tabulated};
 
 /// A value built from a scene's entry, with what was assumed to build it in
@@ -118,10 +119,12 @@ pub struct HeightMapSpec {
     pub periodic: bool,
     /// Detrending (default: plane for non-periodic maps, none for periodic ones).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub detrend: Option<DetrendName>,
+    #[schemars(with = "Option<ByName<Detrend>>")]
+    pub detrend: Option<Detrend>,
     /// Window (default: hann for non-periodic maps, none for periodic ones).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub window: Option<WindowName>,
+    #[schemars(with = "Option<ByName<Window>>")]
+    pub window: Option<Window>,
     /// Fill undefined points by harmonic interpolation instead of failing.
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub fill_undefined: bool,

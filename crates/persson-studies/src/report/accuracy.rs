@@ -1,6 +1,6 @@
 //! The error-against-time report: each method's knob, its rows and the table.
 
-use std::time::Instant;
+use persson::clock::Instant;
 
 use serde::Serialize;
 

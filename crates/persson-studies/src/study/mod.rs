@@ -36,6 +36,7 @@ use crate::output::Files;
 use crate::table::Tabulate;
 use crate::warning::Warning;
 
+pub mod progress;
 mod registry;
 
 pub(crate) use registry::studies;

@@ -2,8 +2,9 @@
 
 use serde::Serialize;
 
-use crate::input::{BoundaryName, SurrogateKindName};
+use crate::input::SurrogateKindName;
 use crate::table::{number, Cell, Table, Tabulate};
+use persson::names::Boundary;
 
 /// The map against its surrogates (scene output `surrogates`).
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -25,7 +26,7 @@ pub struct SurrogatesReport {
     /// Side L of the map (m).
     pub size: f64,
     /// Boundary condition of every solve.
-    pub boundary: BoundaryName,
+    pub boundary: Boundary,
     /// Solver tolerance of every solve.
     pub tolerance: f64,
     /// E* (Pa).

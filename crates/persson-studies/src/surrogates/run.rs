@@ -11,7 +11,7 @@
 //! spectrum, even for a map that was not measured periodic (its edge step
 //! is in that spectrum, and in the surrogates as power on the axes).
 
-use std::time::Instant;
+use persson::clock::Instant;
 
 use serde::{Deserialize, Serialize};
 
@@ -29,8 +29,9 @@ use persson::theory::Persson;
 
 use super::report::{HeightMoments, SurrogatePoint, SurrogatesReport, Tail};
 use super::spec::SurrogatesOutput;
-use crate::input::{BoundaryName, SurrogateKindName};
+use crate::input::SurrogateKindName;
 use crate::naming::prefix;
+use persson::names::Boundary;
 
 /// Surrogates when `count` is not given.
 pub const DEFAULT_COUNT: usize = 8;
@@ -68,7 +69,7 @@ pub struct Plan {
     /// σ0 of the solves, in the scene's order.
     pub pressures: Vec<f64>,
     /// Boundary of every solve.
-    pub boundary: BoundaryName,
+    pub boundary: Boundary,
     /// Tolerance of every solve.
     pub tolerance: f64,
 }
@@ -142,7 +143,7 @@ impl Plan {
             iterations,
             contact_modulus,
             pressures: pressures.to_vec(),
-            boundary: spec.boundary.unwrap_or(BoundaryName::Periodic),
+            boundary: spec.boundary.unwrap_or(Boundary::Periodic),
             tolerance,
         };
         check_map(surface)?;
@@ -188,7 +189,7 @@ impl Plan {
     /// As [`Plan::surface`] and [`solve`].
     pub fn solve(&self, index: usize) -> Result<Solved> {
         let (surface, adjusted) = self.surface(index)?;
-        let boundary = self.boundary.into();
+        let boundary = self.boundary;
         let options = RoughOptions {
             boundary,
             solver: Options {
@@ -435,7 +436,7 @@ pub fn surrogates(
 ) -> Result<SurrogatesReport> {
     let start = Instant::now();
     let named = |e: Error| prefix("outputs.surrogates.", e);
-    let boundary = spec.boundary.unwrap_or(BoundaryName::Periodic).into();
+    let boundary = spec.boundary.unwrap_or(Boundary::Periodic);
     // A measured map conditioned as its spectrum is (the plane of a map not
     // measured periodic removed): its tilt would otherwise be a ridge at
     // the periodic BEM's edge, and power on the surrogates' axes.

@@ -5,7 +5,8 @@ use std::path::PathBuf;
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
-use crate::input::{BoundaryName, SurrogateKindName};
+use crate::input::{ByName, SurrogateKindName};
+use persson::names::Boundary;
 
 /// Surrogates of the contact: does the scene's height map make contact like
 /// random surfaces with the same periodic spectrum? The FFT-BEM on the map
@@ -35,7 +36,8 @@ pub struct SurrogatesOutput {
     pub map_seed: Option<u64>,
     /// Boundary condition of every solve (default `periodic`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub boundary: Option<BoundaryName>,
+    #[schemars(with = "Option<ByName<Boundary>>")]
+    pub boundary: Option<Boundary>,
     /// Solver tolerance ε of every solve (default 1e-8).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tolerance: Option<f64>,

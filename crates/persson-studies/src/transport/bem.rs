@@ -14,7 +14,7 @@ use persson::error::{check, Result};
 use persson::spectrum::Spectrum;
 use persson::Estimate;
 
-use super::report::{BemFlow, BemTransportPoint, BemTransportReport, Direction};
+use super::report::{BemFlow, BemTransportPoint, BemTransportReport};
 use super::request::TransportRequest;
 use super::spec::TransportBem;
 
@@ -119,10 +119,7 @@ impl<'a> TransportObserver<'a> {
             for direction in [FlowDirection::X, FlowDirection::Y] {
                 let f = flow(&field, seal.viscosity, direction)?;
                 p.flows.push(BemFlow {
-                    direction: match direction {
-                        FlowDirection::X => Direction::X,
-                        FlowDirection::Y => Direction::Y,
-                    },
+                    direction,
                     percolates: f.percolates,
                     effective_flow_conductivity: f.effective_flow_conductivity,
                     effective_flow_conductivity_error_bound: f

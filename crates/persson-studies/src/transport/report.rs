@@ -11,7 +11,9 @@ cfg_feature! {
 
 use crate::table::{number, Table, Tabulate};
 use persson::conductance::ConductancePoint;
-use persson::leakage::{CriticalJunctionPoint, EffectiveMediumPoint, LeakStatus};
+use persson::leakage::{
+    CriticalJunctionPoint, EffectiveMediumPoint, FlowDirection, Fluid, LeakStatus,
+};
 
 use crate::table::{input_digits, surface_prefix};
 
@@ -109,16 +111,6 @@ pub struct LeakageReport {
     pub warnings: Vec<crate::warning::Warning>,
 }
 
-/// The fluid of a seal.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Fluid {
-    /// Incompressible liquid, driven by ΔP.
-    Liquid,
-    /// Isothermal ideal gas from P_a to P_b (Q at P_b).
-    Gas,
-}
-
 /// Both theories of the leak rate at one load.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 #[non_exhaustive]
@@ -203,23 +195,12 @@ pub struct BemTransportPoint {
     pub flows: Vec<BemFlow>,
 }
 
-/// Direction of the mean flow on the BEM's grid (persson's
-/// `bem::reynolds::FlowDirection`, which needs the feature `flow`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Direction {
-    /// Along the second index j of `f[i·N + j]`.
-    X,
-    /// Along the first index i.
-    Y,
-}
-
 /// Reynolds flow on the BEM's gap in one direction.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 #[non_exhaustive]
 pub struct BemFlow {
     /// `x` or `y`.
-    pub direction: Direction,
+    pub direction: FlowDirection,
     /// Whether the non-contact region connects inlet and outlet.
     pub percolates: bool,
     /// σ_eff, m³/(Pa s).

@@ -10,7 +10,7 @@ use persson::leakage::{
 };
 
 use super::report::{
-    BemTransportPoint, BemTransportReport, ConductanceReport, Fluid, LeakagePoint, LeakageReport,
+    BemTransportPoint, BemTransportReport, ConductanceReport, LeakagePoint, LeakageReport,
 };
 use super::spec::{ConductanceOutput, LeakageOutput, TransportBem};
 use crate::contact::RoughContact;
@@ -293,17 +293,13 @@ pub fn leakage(
         sealed_warning("effective-medium", &em_sealed, Some(0.5)),
     );
     let (rms_height, rms_slope) = band_values(surface)?;
-    let (pressure_drop, inlet, outlet, fluid) = match seal.drive {
-        Drive::Liquid { pressure_drop } => (Some(pressure_drop), None, None, Fluid::Liquid),
+    let fluid = seal.drive.fluid();
+    let (pressure_drop, inlet, outlet) = match seal.drive {
+        Drive::Liquid { pressure_drop } => (Some(pressure_drop), None, None),
         Drive::Gas {
             inlet_pressure,
             outlet_pressure,
-        } => (
-            None,
-            Some(inlet_pressure),
-            Some(outlet_pressure),
-            Fluid::Gas,
-        ),
+        } => (None, Some(inlet_pressure), Some(outlet_pressure)),
     };
     Ok(LeakageReport {
         warnings,

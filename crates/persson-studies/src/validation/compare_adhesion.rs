@@ -254,7 +254,7 @@ pub(super) fn compare_adhesion(
         tolerance: sweep.options.tolerance.max(1e-10),
         max_iterations: sweep.options.max_iterations.max(20_000),
     };
-    let start = std::time::Instant::now();
+    let start = persson::clock::Instant::now();
     let mut per_work = Vec::with_capacity(t.work_of_adhesion.len());
     for &dg in &t.work_of_adhesion {
         let rho = t

@@ -54,9 +54,10 @@ use persson::spectrum::Spectrum;
 use super::continuum::extrapolate;
 use super::resolution::SweepConfig;
 use crate::scene::transport::TransportRequest;
-use crate::scene::{BemTransportPoint, Fluid};
+use crate::scene::BemTransportPoint;
 use crate::table::number;
 use crate::warning::Warning;
+use persson::leakage::Fluid;
 
 /// How the BEM's stiffness is computed (shown in the tables and the JSON).
 pub const STIFFNESS_METHOD: &str =
@@ -417,8 +418,12 @@ fn seed_mean(
 
 /// σ_eff of the flow along `x` (true) or y of one point (0 without flows).
 fn sigma(p: &BemTransportPoint, x: bool) -> f64 {
-    use crate::scene::Direction;
-    let want = if x { Direction::X } else { Direction::Y };
+    use persson::leakage::FlowDirection;
+    let want = if x {
+        FlowDirection::X
+    } else {
+        FlowDirection::Y
+    };
     p.flows
         .iter()
         .find(|f| f.direction == want)
@@ -484,7 +489,7 @@ pub(super) fn compare_transport(
     t.validate(None, None)?;
     let a_c = t.percolation_threshold;
     let th = theory(band, e_star, pressures, t)?;
-    let start = std::time::Instant::now();
+    let start = persson::clock::Instant::now();
     let raw = bem_points(&surfaces, e_star, pressures, sweep, &t.request)?;
     let seconds = start.elapsed().as_secs_f64();
     let np = pressures.len();
@@ -542,10 +547,7 @@ pub(super) fn compare_transport(
         TransportComparison {
             stiffness_method: STIFFNESS_METHOD,
             flow_method: seal.map(|_| FLOW_METHOD),
-            fluid: seal.map(|s| match s.drive {
-                Drive::Liquid { .. } => Fluid::Liquid,
-                Drive::Gas { .. } => Fluid::Gas,
-            }),
+            fluid: seal.map(|s| s.drive.fluid()),
             viscosity: seal.map(|s| s.viscosity),
             pressure_drop: seal.and_then(|s| match s.drive {
                 Drive::Liquid { pressure_drop } => Some(pressure_drop),

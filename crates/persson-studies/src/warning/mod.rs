@@ -432,6 +432,21 @@ impl Warning {
 }
 
 impl Warning {
+    /// What to change in a scene to act on the warning (its field and
+    /// value), where one field does it: the text `persson run` prints after
+    /// the warning, in brackets, and the browser page too.
+    pub fn scene_hint(&self) -> Option<&'static str> {
+        match self {
+            Warning::BandLimited { .. } => Some("outputs.bem.grid"),
+            Warning::PsdConvention {
+                convention: ConventionName::Persson,
+                ..
+            } => Some("spectrum.convention: \"surface-topography\""),
+            Warning::RisingSpectrum { .. } => Some("spectrum.kind: \"height_map\""),
+            _ => None,
+        }
+    }
+
     /// The kind of the warning, as in its JSON (`high_pressure`, `steep_slope`,
     /// `zeta_beyond_band`, `band_limited`, `psd_convention`,
     /// `rising_spectrum`, `clipped_band`, `map_not_periodic`, `resampled`,

@@ -6,8 +6,9 @@
 use std::io::Read;
 use std::path::{Path, PathBuf};
 
+use persson::names::Detrend;
 use persson_studies::scene::multiscale::multi_scale;
-use persson_studies::scene::{DetrendName, HeightMapSpec, LengthUnitName};
+use persson_studies::scene::{HeightMapSpec, LengthUnitName};
 
 fn container() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../../tests/data/container-2.zip")
@@ -46,9 +47,9 @@ fn a_dataset_combines_as_its_measurements_read_one_by_one() {
         ..HeightMapSpec::new(file.to_path_buf())
     };
     let by_one = multi_scale(&[
-        one(&files[0], Some(LengthUnitName::Nm), DetrendName::Plane),
-        one(&files[1], None, DetrendName::Plane),
-        one(&files[2], Some(LengthUnitName::Mm), DetrendName::Curvature),
+        one(&files[0], Some(LengthUnitName::Nm), Detrend::Plane),
+        one(&files[1], None, Detrend::Plane),
+        one(&files[2], Some(LengthUnitName::Mm), Detrend::Curvature),
     ])
     .unwrap();
     assert_eq!(whole.q, by_one.q);
@@ -77,7 +78,7 @@ fn a_dataset_combines_as_its_measurements_read_one_by_one() {
     }
     // A detrending given for the dataset replaces the metadata's.
     let mean = HeightMapSpec {
-        detrend: Some(DetrendName::Mean),
+        detrend: Some(Detrend::Mean),
         ..HeightMapSpec::new(container())
     };
     let m = multi_scale(&[mean]).unwrap();

@@ -27,8 +27,8 @@ pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Resul
     };
     let defaults = Conditioning::for_topography(&t);
     let conditioning = Conditioning {
-        detrend: detrend.map_or(defaults.detrend, Into::into),
-        window: window.map_or(defaults.window, Into::into),
+        detrend: detrend.unwrap_or(defaults.detrend),
+        window: window.unwrap_or(defaults.window),
     };
     let report = anisotropy(&t, conditioning).map_err(|e| anyhow::anyhow!("{}: {e}", label.0))?;
     if let Some(path) = &a.spectrum_2d {

@@ -5,20 +5,9 @@ use persson::error::{Error, Result};
 use persson::spectrum::Tabulated;
 
 use super::in_file;
-use crate::input::{Described, DetrendName, HeightMapSpec, LengthUnitName, Sides, WindowName};
+use crate::input::{Described, HeightMapSpec, LengthUnitName, Sides};
 
-use persson::topography::{self as topo, Analysis, AnalysisOptions, Detrend, Topography, Window};
-
-impl From<DetrendName> for Detrend {
-    fn from(d: DetrendName) -> Self {
-        match d {
-            DetrendName::None => Detrend::None,
-            DetrendName::Mean => Detrend::Mean,
-            DetrendName::Plane => Detrend::Plane,
-            DetrendName::Curvature => Detrend::Curvature,
-        }
-    }
-}
+use persson::topography::{self as topo, Analysis, AnalysisOptions, Topography};
 
 impl From<LengthUnitName> for topo::LengthUnit {
     fn from(u: LengthUnitName) -> Self {
@@ -29,16 +18,6 @@ impl From<LengthUnitName> for topo::LengthUnit {
             LengthUnitName::Nm => topo::LengthUnit::Nanometre,
             LengthUnitName::Pm => topo::LengthUnit::Picometre,
             LengthUnitName::Angstrom => topo::LengthUnit::Angstrom,
-        }
-    }
-}
-
-impl From<WindowName> for Window {
-    fn from(w: WindowName) -> Self {
-        match w {
-            WindowName::None => Window::None,
-            WindowName::Hann => Window::Hann,
-            WindowName::Blackman => Window::Blackman,
         }
     }
 }
@@ -100,12 +79,7 @@ impl HeightMapSpec {
                 .iter()
                 .map(|m| HeightMapSpec {
                     channel: Some(m.name.clone()),
-                    detrend: self.detrend.or(Some(match m.detrend {
-                        Detrend::None => DetrendName::None,
-                        Detrend::Mean => DetrendName::Mean,
-                        Detrend::Plane => DetrendName::Plane,
-                        Detrend::Curvature => DetrendName::Curvature,
-                    })),
+                    detrend: self.detrend.or(Some(m.detrend)),
                     ..self.clone()
                 })
                 .collect(),
@@ -129,8 +103,8 @@ impl HeightMapSpec {
             (a, b) => a.or(b),
         };
         let options = AnalysisOptions {
-            detrend: self.detrend.map(Into::into),
-            window: self.window.map(Into::into),
+            detrend: self.detrend,
+            window: self.window,
             q_max,
             bins: None,
         };
@@ -190,7 +164,7 @@ impl HeightMapSpec {
         &self,
         boundary: persson::bem::Boundary,
     ) -> Result<persson::bem::surface::GridSurface> {
-        self.grid_surface(boundary, self.detrend.map(Into::into))
+        self.grid_surface(boundary, self.detrend)
     }
 
     /// As [`HeightMapSpec::bem_surface`], detrended as the spectrum is: the
@@ -206,17 +180,16 @@ impl HeightMapSpec {
         boundary: persson::bem::Boundary,
     ) -> Result<persson::bem::surface::GridSurface> {
         let t = self.read()?;
-        let detrend = self.detrend.map_or_else(
-            || topo::Conditioning::for_topography(&t).detrend,
-            Into::into,
-        );
+        let detrend = self
+            .detrend
+            .unwrap_or_else(|| topo::Conditioning::for_topography(&t).detrend);
         self.grid_surface(boundary, Some(detrend))
     }
 
     fn grid_surface(
         &self,
         boundary: persson::bem::Boundary,
-        detrend: Option<Detrend>,
+        detrend: Option<topo::Detrend>,
     ) -> Result<persson::bem::surface::GridSurface> {
         let t = self.read()?;
         let [ny, nx] = t.shape();

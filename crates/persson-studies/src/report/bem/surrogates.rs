@@ -1,7 +1,7 @@
 //! The surrogates' row of the accuracy report: how many surrogates a user
 //! needs, and what they cost.
 
-use std::time::Instant;
+use persson::clock::Instant;
 
 use persson::bem::surface::synthesize;
 use persson::error::Result;

@@ -28,8 +28,8 @@ pub fn multi_scale(specs: &[HeightMapSpec]) -> Result<MultiScaleReport> {
         .map(|(s, t)| Measurement {
             topography: t,
             options: AnalysisOptions {
-                detrend: s.detrend.map(Into::into),
-                window: s.window.map(Into::into),
+                detrend: s.detrend,
+                window: s.window,
                 q_max: s.q_max,
                 bins: None,
             },
