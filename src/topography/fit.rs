@@ -142,6 +142,7 @@ mod tests {
             rms_height: 0.0,
             rms_slope: 0.0,
             rms_curvature: 0.0,
+            corner_mean: None,
         };
         let f = fit_hurst(&psd, psd.q_min, psd.q_max).unwrap();
         assert!((f.hurst - h).abs() < 1e-12, "{}", f.hurst);

@@ -16,7 +16,8 @@
 //! 1 MPa from the combined spectrum was 33–52 % below that of the whole
 //! surface's spectrum, at every seed):
 //! - **the noise and aliasing floor** at the short-wavelength end. A map's
-//!   floor `C_f` is the mean C of its corner modes, `π/Δ < |q| < √2·π/Δ`,
+//!   floor `C_f` is the mean C of its corner modes, `π/Δ < |q| ≤ √2·π/Δ`
+//!   (summed while its spectrum is binned, from the same transform),
 //!   where a self-affine surface has least power: white noise of variance
 //!   σ² gives `σ²Δ²/(2π)²` there (a test checks it), and point sampling
 //!   adds the aliased power. The reliable band ends at the first bin whose C
@@ -110,7 +111,7 @@ pub struct Contribution {
     /// artefact at the smallest scale).
     pub tip_cutoff_length: Option<f64>,
     /// The floor of a map's spectrum: the mean C of its corner modes,
-    /// `π/Δ < |q| < √2·π/Δ`, m⁴ (white noise and aliased power; `None` for
+    /// `π/Δ < |q| ≤ √2·π/Δ`, m⁴ (white noise and aliased power; `None` for
     /// line scans).
     pub floor: Option<f64>,
     /// The bins it contributes to the combined spectrum: its reliable band
@@ -191,36 +192,47 @@ pub fn multi_scale(measurements: &[Measurement<'_>], per_decade: usize) -> Resul
         vec![0.0; nb],
         vec![0usize; nb],
     );
-    // The measurements are analysed in parallel (one thread each): they are
-    // independent and the FFTs of large maps dominate the time.
-    let analyses: Vec<Result<Analysis>> = std::thread::scope(|scope| {
-        let handles: Vec<_> = measurements
+    // The measurements are analysed in parallel (one thread each) where the
+    // platform has threads: they are independent and the FFTs of large maps
+    // dominate the time. A browser's module has one thread.
+    let analyse = |i: usize, (m, &(lo, hi, _)): (&Measurement<'_>, &(f64, f64, Option<f64>))| {
+        analyse_on(m, &edges, lo, hi).map_err(|e| numbered(i, e))
+    };
+    let analyses: Vec<Result<Analysis>> = if std::thread::available_parallelism().is_err() {
+        measurements
             .iter()
             .zip(&bands)
             .enumerate()
-            .map(|(i, (m, &(lo, hi, _)))| {
-                let edges = &edges;
-                scope.spawn(move || analyse_on(m, edges, lo, hi).map_err(|e| numbered(i, e)))
-            })
-            .collect();
-        handles
-            .into_iter()
-            .map(|h| {
-                h.join().unwrap_or_else(|_| {
-                    Err(Error::Inconsistent {
-                        name: "multi-scale analysis".into(),
-                        requirement: "a measurement's analysis panicked".into(),
+            .map(|(i, mb)| analyse(i, mb))
+            .collect()
+    } else {
+        std::thread::scope(|scope| {
+            let handles: Vec<_> = measurements
+                .iter()
+                .zip(&bands)
+                .enumerate()
+                .map(|(i, mb)| scope.spawn(move || analyse(i, mb)))
+                .collect();
+            handles
+                .into_iter()
+                .map(|h| {
+                    h.join().unwrap_or_else(|_| {
+                        Err(Error::Inconsistent {
+                            name: "multi-scale analysis".into(),
+                            requirement: "a measurement's analysis panicked".into(),
+                        })
                     })
                 })
-            })
-            .collect()
-    });
+                .collect()
+        })
+    };
     let analyses = analyses.into_iter().collect::<Result<Vec<Analysis>>>()?;
-    let floors = measurements
+    // A map's floor comes from the transform of its analysis (the corner
+    // modes, binned in the same pass); line scans have none.
+    let floors: Vec<Option<f64>> = analyses
         .iter()
-        .enumerate()
-        .map(|(i, m)| floor(m).map_err(|e| numbered(i, e)))
-        .collect::<Result<Vec<_>>>()?;
+        .map(|a| a.psd.corner_mean.filter(|c| *c > 0.0))
+        .collect();
     let tops: Vec<f64> = analyses
         .iter()
         .zip(&bands)
@@ -278,26 +290,6 @@ pub fn multi_scale(measurements: &[Measurement<'_>], per_decade: usize) -> Resul
         ),
         measurements: contributions,
     })
-}
-
-/// A map's spectral floor: the mean C of its corner modes beyond the
-/// Nyquist wavevector, `π/Δ < |q| < √2·π/Δ` (conditioned as its
-/// spectrum); `None` for line scans.
-fn floor(m: &Measurement<'_>) -> Result<Option<f64>> {
-    let t = m.topography;
-    if t.layout() != super::Layout::Map {
-        return Ok(None);
-    }
-    let nyquist = t.band().1;
-    let top = nyquist * std::f64::consts::SQRT_2;
-    let defaults = super::Conditioning::for_topography(t);
-    let conditioning = super::Conditioning {
-        detrend: m.options.detrend.unwrap_or(defaults.detrend),
-        window: m.options.window.unwrap_or(defaults.window),
-    };
-    let corners = Bins::Edges(vec![nyquist * (1.0 + 1e-9), top]);
-    let psd = super::isotropic_spectrum(t, conditioning, &corners, Some(top))?;
-    Ok(psd.c.first().copied().filter(|c| *c > 0.0))
 }
 
 /// The top of a measurement's reliable band (module docs): the lower edge

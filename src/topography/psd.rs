@@ -140,6 +140,13 @@ pub struct Psd {
     pub rms_slope: f64,
     /// `sqrt(Σ |q|⁴ C Δq_x Δq_y)`, 1/m (line scans: `√(8/3) · sqrt(Σ q⁴ C_1D Δq)`).
     pub rms_curvature: f64,
+    /// Maps: the mean C of the corner modes of the Fourier grid, those
+    /// beyond the Nyquist wavevector, `π/Δ < |q| ≤ √2·π/Δ` (`π/Δ` =
+    /// [`Topography::band`]'s upper end; in the bins or not), m⁴: a map's
+    /// floor of white noise and aliased power ([`super::multi_scale`]).
+    /// `None` for line scans and maps without such a mode.
+    #[serde(skip)]
+    pub(crate) corner_mean: Option<f64>,
 }
 
 impl Psd {
@@ -207,6 +214,10 @@ struct Binner {
     sq: Vec<f64>,
     sc: Vec<f64>,
     m: [f64; 3],
+    /// The corner band `(lo, hi]` of [`Psd::corner_mean`] (empty: none)
+    /// and the weight and weighted C of its modes.
+    corner: (f64, f64),
+    corner_sums: (f64, f64),
 }
 
 impl Binner {
@@ -218,6 +229,8 @@ impl Binner {
             sq: vec![0.0; n],
             sc: vec![0.0; n],
             m: [0.0; 3],
+            corner: (f64::INFINITY, f64::INFINITY),
+            corner_sums: (0.0, 0.0),
         }
     }
 
@@ -242,7 +255,8 @@ impl Binner {
     /// `C = factor·|z|²`, each of weight `weight`; the same bins as [`Binner::add`]
     /// mode by mode. Along a column |q| rises to the Nyquist row and falls
     /// after it, so the bin index moves by a step or two, never searched,
-    /// and a run of modes in one bin is summed before it is added.
+    /// and a run of modes in one bin is summed before it is added. The
+    /// modes in the corner band are summed apart, in the same pass.
     fn add_column(&mut self, z: &[Complex64], ky2: &[f64], qx2: f64, factor: f64, weight: f64) {
         let Binner {
             edges: e,
@@ -250,7 +264,11 @@ impl Binner {
             sq: bsq,
             sc: bsc,
             m: bm,
+            corner: (corner_lo, corner_hi),
+            corner_sums,
         } = self;
+        let (corner_lo, corner_hi) = (*corner_lo, *corner_hi);
+        let (mut corner_n, mut corner_c) = (0usize, 0.0);
         let ne = e.len();
         // A run of `n` modes of bin `run − 1` into the bin's sums.
         let mut flush = |run: usize, n: usize, sq: f64, sc: f64| {
@@ -267,6 +285,10 @@ impl Binner {
         let mut m = [0.0; 3];
         for (z, ky2) in z.iter().zip(ky2) {
             let q = (qx2 + ky2).sqrt();
+            if q > corner_lo && q <= corner_hi {
+                corner_n += 1;
+                corner_c += factor * z.norm_sqr();
+            }
             while i < ne && e[i] < q {
                 i += 1;
             }
@@ -293,6 +315,14 @@ impl Binner {
         for (a, b) in bm.iter_mut().zip(m) {
             *a += weight * b;
         }
+        corner_sums.0 += weight * corner_n as f64;
+        corner_sums.1 += weight * corner_c;
+    }
+
+    /// The mean C of the corner band's modes (`None`: no mode).
+    fn corner_mean(&self) -> Option<f64> {
+        let (w, c) = self.corner_sums;
+        (w > 0.0).then(|| c / w)
     }
 
     /// `(q̄, C̄, count)` of the non-empty bins.
@@ -383,6 +413,9 @@ pub(crate) fn map_spectrum(
     let q_hi = band_max(nyquist, q_max, q_min)?;
     let q_lo = (TAU / lx).min(TAU / ly);
     let mut binner = Binner::new(bins.edges(q_lo, q_hi)?);
+    // The corner modes beyond Nyquist ([`Psd::corner_mean`]); the factor
+    // leaves out the modes on the Nyquist circle itself (on the axes).
+    binner.corner = (nyquist * (1.0 + 1e-9), nyquist * std::f64::consts::SQRT_2);
 
     // Each conditioned row straight into its row transform. The half
     // spectrum (ny × nc) is the only full-size buffer, stored by blocks of
@@ -472,6 +505,7 @@ pub(crate) fn map_spectrum(
         rms_height: (binner.m[0] * cell).sqrt(),
         rms_slope: (binner.m[1] * cell).sqrt(),
         rms_curvature: (binner.m[2] * cell).sqrt(),
+        corner_mean: binner.corner_mean(),
     })
 }
 
@@ -567,6 +601,7 @@ impl ProfileSpectrum {
                 rms_height: self.rms_height,
                 rms_slope: self.rms_slope_profile * 2f64.sqrt(),
                 rms_curvature: self.rms_curvature_profile * (8.0f64 / 3.0).sqrt(),
+                corner_mean: None,
             },
             left_out,
         })
