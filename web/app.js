@@ -367,6 +367,7 @@ $("bem_run").addEventListener("click", async () => {
   $("bem_run").disabled = true;
   $("bem_stop").disabled = false;
   $("bem_progress").value = 0;
+  $("bem_status").textContent = "starting…";
   $("status").textContent = "solving the BEM…";
   onProgress = (p) => {
     $("bem_progress").value = (p.step + Math.min(p.iteration, 50) / 50) / p.steps;

@@ -319,6 +319,22 @@ await check("the BEM can be stopped, and the page computes again", async () => {
   assert.match(await status(), /^computed in/);
 });
 
+await check("the BEM on the user's own map (WSxM .top, 256²) equals persson run", async () => {
+  const top = path.join(repo, "tests/data/top-1.top");
+  await page.check("input[name=kind][value=height_map]");
+  await page.setInputFiles("#map_file", top);
+  await page.uncheck("#fill_undefined");
+  await page.click("#bem_run");
+  await page.waitForFunction(() => /solved|stopped/.test(document.getElementById("bem_status").textContent) || document.getElementById("err-general").textContent, null, { timeout: 120000 });
+  assert.match(await page.$eval("#bem_status", (e) => e.textContent), /solved/, await page.$eval("#err-general", (e) => e.textContent));
+  try {
+    const r = await sameAsCli([top]);
+    assert.match(r.stdout, /top-1\.top/);
+  } finally {
+    await page.check("input[name=kind][value=self_affine]");
+  }
+});
+
 await check("downloads: scene, report and CSV", async () => {
   const report = JSON.parse(await downloaded("report.json"));
   assert.ok(report.area, "report.json has the area");
