@@ -24,7 +24,8 @@ function startWorker() {
   worker.onerror = (e) => showGeneral(`the module could not be loaded: ${e.message || e}`);
 }
 
-function compute(scene, files) {
+// Run `scene` (its text) with `files` ([{name, bytes}]) in the module.
+export function compute(scene, files) {
   const id = nextId++;
   return ready.then(() => new Promise((resolve, reject) => {
     pending.set(id, { resolve, reject });

@@ -7,7 +7,7 @@
 //
 //   node web/tests/page.test.mjs <page dir> <persson binary> <node_modules dir>
 import { createServer } from "node:http";
-import { readFile, writeFile, mkdtemp, copyFile } from "node:fs/promises";
+import { readFile, writeFile, mkdtemp, copyFile, readdir } from "node:fs/promises";
 import { execFileSync, spawnSync } from "node:child_process";
 import { createRequire } from "node:module";
 import { tmpdir } from "node:os";
@@ -223,6 +223,39 @@ await check("a real instrument file (FRT MicroProf .frt): its error, then its nu
   const r = await sameAsCli([frt]);
   assert.match(r.stdout, /frt-2\.frt/);
   await plotsDrawn();
+});
+
+await check("every file of tests/data reads in the browser as persson run reads it", async () => {
+  const dir = path.join(repo, "tests/data");
+  const names = (await readdir(dir)).filter((n) => !/^(README|LICENSE)/.test(n)).sort();
+  let read = 0;
+  const refused = [];
+  // Each file as it is, and where that is refused, with a unit and a size given.
+  const tries = names.flatMap((name) => [[name, {}], [name, { height_unit: "um", size: 1e-4 }]]);
+  const readNames = new Set();
+  for (const [name, extra] of tries) {
+    if (readNames.has(name)) continue;
+    const file = path.join(dir, name);
+    const scene = JSON.stringify({ schema: 1, spectrum: { kind: "height_map", file: name, fill_undefined: true, ...extra }, outputs: { spectrum: {} } }, null, 2) + "\n";
+    const bytes = (await readFile(file)).toString("base64");
+    const { outcome } = await page.evaluate(async ({ scene, name, bytes }) => {
+      const raw = Uint8Array.from(atob(bytes), (c) => c.charCodeAt(0));
+      return (await import("./app.js")).compute(scene, [{ name, bytes: raw.buffer }]);
+    }, { scene, name, bytes });
+    const r = await cli(scene, [file]);
+    if (r.status === 0) {
+      assert.equal(outcome.status, "ok", `${name}: ${outcome.error}`);
+      sameDigits(outcome.text, r.stdout);
+      read++;
+      readNames.add(name);
+    } else {
+      const cliLine = r.stderr.split("\n").find((l) => l.startsWith("persson: error: "));
+      assert.equal(`persson: error: ${outcome.error}`, cliLine, name);
+      if (Object.keys(extra).length) refused.push(name);
+    }
+  }
+  console.log(`     ${names.length} files: ${read} read alike, ${refused.length} refused with the same message (${refused.join(", ")})`);
+  assert.ok(read >= 40, `read: ${read}`);
 });
 
 await check("a truncated file is an error naming it; the page stays usable", async () => {
