@@ -270,6 +270,15 @@ await check("a truncated file is an error naming it; the page stays usable", asy
   const cliLine = r.stderr.split("\n").find((l) => l.startsWith("persson: error: "));
   assert.equal(`persson: error: ${shown}`, cliLine);
   assert.match(shown, /truncated\.frt/);
+  // A format no reader knows: the CLI's message, naming the file.
+  const odd = path.join(path.dirname(cut), "scan.vk4");
+  await writeFile(odd, Buffer.from("VK4_\0\0\0\0 not really a Keyence file"));
+  await page.setInputFiles("#map_file", odd);
+  await compute();
+  const unknown = await page.$eval("#err-for-map_file", (e) => e.textContent);
+  const r2 = await cli(await page.evaluate(async () => (await import("./app.js")).scene(false)), [odd]);
+  assert.equal(`persson: error: ${unknown}`, r2.stderr.split("\n").find((l) => l.startsWith("persson: error: ")));
+  assert.match(unknown, /scan\.vk4/);
   await page.setInputFiles("#map_file", frt);
   await compute();
   assert.match(await status(), /^computed in/);
