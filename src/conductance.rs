@@ -118,7 +118,7 @@ impl Conductivity {
     }
 
     /// κ_s = κ1κ2/(κ1 + κ2) (1/κ_s = 1/κ1 + 1/κ2), without overflow.
-    pub fn series(&self) -> f64 {
+    pub(crate) fn series(&self) -> f64 {
         let (a, b) = (self.conductivity, self.conductivity2);
         let (lo, hi) = if a < b { (a, b) } else { (b, a) };
         lo / (1.0 + lo / hi)

@@ -205,7 +205,7 @@ impl Theory {
     }
 
     /// The theory's name as in [`THEORY_NAMES`].
-    pub fn name(&self) -> &'static str {
+    pub(crate) fn name(&self) -> &'static str {
         match self {
             Theory::Original => "original",
             Theory::YangPersson { .. } => "yang-persson",

@@ -185,7 +185,7 @@ pub mod check {
     }
 
     /// `v` finite and `≥ lo`.
-    pub fn at_least(name: &str, v: f64, lo: f64) -> Result<f64> {
+    pub(crate) fn at_least(name: &str, v: f64, lo: f64) -> Result<f64> {
         if v.is_finite() && v >= lo {
             Ok(v)
         } else {

@@ -42,12 +42,12 @@ use crate::error::{Error, Result};
 use crate::spectrum::Spectrum;
 
 /// 1 + 16/π − 3√3, the α-coefficient of the summit height variance (McCool's 0.8968).
-pub const SUMMIT_VARIANCE_COEFFICIENT: f64 = 1.0 + 16.0 / std::f64::consts::PI - 3.0 * SQRT_3;
+const SUMMIT_VARIANCE_COEFFICIENT: f64 = 1.0 + 16.0 / std::f64::consts::PI - 3.0 * SQRT_3;
 
 const SQRT_3: f64 = 1.732_050_807_568_877_2;
 
 /// Smallest bandwidth parameter of an isotropic surface (a ring spectrum).
-pub const MIN_BANDWIDTH_PARAMETER: f64 = 1.5;
+const MIN_BANDWIDTH_PARAMETER: f64 = 1.5;
 
 /// Rounding allowance when checking α ≥ 3/2 (moments from sums or quadrature).
 const BANDWIDTH_ROUNDING: f64 = 1e-9;

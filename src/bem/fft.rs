@@ -51,7 +51,7 @@ use crate::fft::{complex, forward_row, real_forward, real_inverse, LENGTHS};
 const BLOCK_BYTES: usize = 1 << 18;
 
 /// A consumer of the rows of an inverse transform: `(row index, row)`.
-pub type RowSink<'a> = &'a mut dyn FnMut(usize, &[f64]);
+type RowSink<'a> = &'a mut dyn FnMut(usize, &[f64]);
 
 /// A planned 2-D real FFT of an `n × n` grid whose first `rows` rows are live.
 pub struct Fft2 {
@@ -118,12 +118,12 @@ impl Fft2 {
     }
 
     /// Grid side `n`.
-    pub fn n(&self) -> usize {
+    pub(crate) fn n(&self) -> usize {
         self.n
     }
 
     /// Number of half-spectrum columns, `n/2 + 1`.
-    pub fn nc(&self) -> usize {
+    pub(crate) fn nc(&self) -> usize {
         self.n / 2 + 1
     }
 

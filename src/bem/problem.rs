@@ -261,7 +261,7 @@ impl<'a> Problem<'a> {
     }
 
     /// The rigid heights `h` (unit of L).
-    pub fn heights(&self) -> &'a [f64] {
+    pub(crate) fn heights(&self) -> &'a [f64] {
         self.heights
     }
 
@@ -271,7 +271,7 @@ impl<'a> Problem<'a> {
     }
 
     /// Number of nodes N².
-    pub fn nodes(&self) -> usize {
+    pub(crate) fn nodes(&self) -> usize {
         self.n * self.n
     }
 
@@ -281,13 +281,13 @@ impl<'a> Problem<'a> {
     }
 
     /// What is prescribed.
-    pub fn control(&self) -> Control {
+    pub(crate) fn control(&self) -> Control {
         self.control
     }
 
     /// The prescribed total `N² p̄` under load control (`None` under
     /// penetration control).
-    pub fn target_total(&self) -> Option<f64> {
+    pub(crate) fn target_total(&self) -> Option<f64> {
         match self.control {
             Control::MeanPressure(pm) => Some(pm * self.nodes() as f64),
             Control::Penetration(_) => None,
@@ -295,7 +295,7 @@ impl<'a> Problem<'a> {
     }
 
     /// The prescribed mean pressure p̄ (`None` under penetration control).
-    pub fn target_mean(&self) -> Option<f64> {
+    pub(crate) fn target_mean(&self) -> Option<f64> {
         match self.control {
             Control::MeanPressure(pm) => Some(pm),
             Control::Penetration(_) => None,
@@ -304,7 +304,7 @@ impl<'a> Problem<'a> {
 
     /// The approach δ: the prescribed one, 0 under load control (whose gap
     /// is shifted by its contact level instead).
-    pub fn penetration(&self) -> f64 {
+    pub(crate) fn penetration(&self) -> f64 {
         match self.control {
             Control::MeanPressure(_) => 0.0,
             Control::Penetration(d) => d,
@@ -312,12 +312,12 @@ impl<'a> Problem<'a> {
     }
 
     /// Gap offset `o = max h − δ`: the gap is `g = 𝒢p − (h − o)`.
-    pub fn offset(&self) -> f64 {
+    pub(crate) fn offset(&self) -> f64 {
         self.h_max - self.penetration()
     }
 
     /// Highest height `max h`.
-    pub fn h_max(&self) -> f64 {
+    pub(crate) fn h_max(&self) -> f64 {
         self.h_max
     }
 
@@ -327,12 +327,12 @@ impl<'a> Problem<'a> {
     }
 
     /// Standard deviation of the heights σ_h (the scale of ε).
-    pub fn sigma_h(&self) -> f64 {
+    pub(crate) fn sigma_h(&self) -> f64 {
         self.sigma_h
     }
 
     /// A flat surface (σ_h = 0): no iteration is needed.
-    pub fn is_flat(&self) -> bool {
+    pub(crate) fn is_flat(&self) -> bool {
         self.sigma_h == 0.0
     }
 

@@ -201,7 +201,7 @@ impl LoadPath<'_, '_> {
     /// Start every solve cold instead (`warm = false`; the set-up is still
     /// shared): for comparisons and for callers whose
     /// `Options::warm_start` is off.
-    pub fn warm(self, warm: bool) -> Self {
+    pub(crate) fn warm(self, warm: bool) -> Self {
         LoadPath { warm, ..self }
     }
 
@@ -217,7 +217,7 @@ impl LoadPath<'_, '_> {
     ///
     /// # Errors
     /// As [`Solver::solve`].
-    pub fn solve_observed(
+    pub(crate) fn solve_observed(
         &mut self,
         control: Control,
         opts: &Options,

@@ -332,7 +332,7 @@ pub fn expected_rms(spectrum: &dyn Spectrum, n: usize, size: f64) -> (f64, f64) 
 
 /// [`expected_rms`] of [`synthesize_2d`]'s surfaces (the sums run over the
 /// whole plane, so the frame does not matter).
-pub fn expected_rms_2d(spectrum: &dyn Spectrum2d, n: usize, size: f64) -> (f64, f64) {
+fn expected_rms_2d(spectrum: &dyn Spectrum2d, n: usize, size: f64) -> (f64, f64) {
     let dq = std::f64::consts::TAU / size;
     let (mut h2, mut s2) = (0.0, 0.0);
     for i in 0..n {

@@ -66,7 +66,7 @@ pub struct Fields<'a> {
 
 impl Workspace {
     /// The workspace of the operator's grid (4 N² values).
-    pub fn new(op: Operator) -> Self {
+    pub(crate) fn new(op: Operator) -> Self {
         let n2 = op.n() * op.n();
         Workspace {
             op,
@@ -81,7 +81,7 @@ impl Workspace {
     }
 
     /// The compliance operator.
-    pub fn operator(&mut self) -> &mut Operator {
+    pub(crate) fn operator(&mut self) -> &mut Operator {
         &mut self.op
     }
 
@@ -91,7 +91,7 @@ impl Workspace {
     }
 
     /// Forget the previous solution (the next start is cold).
-    pub fn forget(&mut self) {
+    pub(crate) fn forget(&mut self) {
         self.warm = false;
     }
 
@@ -159,7 +159,7 @@ impl Workspace {
 
     /// Continue from the pressure in the workspace (a loop handing over to
     /// another, e.g. a fallback): rescaled to the load, not reset.
-    pub fn resume(&mut self, problem: &Problem) {
+    pub(crate) fn resume(&mut self, problem: &Problem) {
         self.warm = true;
         // A rescaling needs no transform: it cannot fail.
         let _ = self.start(problem, Start::Rescaled);
@@ -240,7 +240,7 @@ pub enum Start {
 /// cold. Measured on the rough case (256², six loads from 0.005 E*, tol
 /// 1e-10, iterations of the last five solves, predicted / cold): 116 / 153
 /// at ratio 1.05, 146 / 167 at 1.2, 199 / 175 at 1.5 (rescaled: 132, 180, 198).
-pub const PREDICT_RATIO: f64 = 1.3;
+const PREDICT_RATIO: f64 = 1.3;
 
 /// The load-path predictor: a uniform increment Δδ of the approach on the
 /// previous contact set C raises its pressure by Δδ·𝒜⁻¹1_C, where 𝒜 is 𝒢
@@ -339,7 +339,7 @@ pub enum Displacement {
 
 impl Finish {
     /// An elastic loop's finish.
-    pub fn elastic(
+    pub(crate) fn elastic(
         gap_shift: f64,
         approach: f64,
         contact: usize,

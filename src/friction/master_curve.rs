@@ -193,7 +193,7 @@ impl MasterCurve {
     }
 
     /// The table (ω in rad/s, E′, E″), in increasing ω.
-    pub fn points(&self) -> impl Iterator<Item = (f64, f64, f64)> + '_ {
+    pub(crate) fn points(&self) -> impl Iterator<Item = (f64, f64, f64)> + '_ {
         (0..self.omega.len()).map(|i| (self.omega[i], self.storage[i], self.loss[i]))
     }
 
@@ -209,7 +209,7 @@ impl MasterCurve {
 
     /// E(ω) by log-log interpolation, held at the end values outside the table
     /// (ω in rad/s, any sign: E(−ω) = conj E(ω)).
-    pub fn modulus(&self, omega: f64) -> Modulus {
+    pub(crate) fn modulus(&self, omega: f64) -> Modulus {
         let w = omega.abs();
         let n = self.omega.len();
         let (e1, e2) = if w <= self.omega[0] {
@@ -229,7 +229,7 @@ impl MasterCurve {
 
     /// A(w), B(w) exactly (module docs) with the parts from outside the table;
     /// O(number of points below w).
-    pub fn angular(&self, w: f64) -> AngularIntegrals {
+    pub(crate) fn angular(&self, w: f64) -> AngularIntegrals {
         self.angular_ln(w.ln())
     }
 

@@ -208,7 +208,7 @@ impl Prony {
     ///
     /// # Errors
     /// As [`Prony::from_file`], without the I/O errors.
-    pub fn from_bytes(path: &Path, bytes: &[u8]) -> Result<Self> {
+    pub(crate) fn from_bytes(path: &Path, bytes: &[u8]) -> Result<Self> {
         let rows = parse_rows(path, bytes, &["E_k", "tau_k"], 0)?;
         let mut relaxed = None;
         let mut terms = Vec::new();
@@ -330,7 +330,7 @@ pub enum Viscoelastic {
 
 impl Viscoelastic {
     /// E(ω) at the reference temperature (ω in rad/s, any sign).
-    pub fn modulus(&self, omega: f64) -> Modulus {
+    pub(crate) fn modulus(&self, omega: f64) -> Modulus {
         match self {
             Viscoelastic::Prony(p) => p.modulus(omega),
             Viscoelastic::MasterCurve(m) => m.modulus(omega),
@@ -339,7 +339,7 @@ impl Viscoelastic {
 
     /// A(w), B(w) (module docs) at the reference temperature, exactly (a
     /// closed form, or the master curve's per-segment series), w ≥ 0 in rad/s.
-    pub fn angular(&self, w: f64) -> AngularIntegrals {
+    pub(crate) fn angular(&self, w: f64) -> AngularIntegrals {
         match self {
             Viscoelastic::Prony(p) => p.angular(w),
             Viscoelastic::MasterCurve(m) => m.angular(w),
@@ -368,7 +368,7 @@ impl Viscoelastic {
 
     /// The tabulated frequency range (rad/s) of a master curve; `None` for a
     /// Prony series.
-    pub fn frequency_range(&self) -> Option<(f64, f64)> {
+    pub(crate) fn frequency_range(&self) -> Option<(f64, f64)> {
         match self {
             Viscoelastic::Prony(_) => None,
             Viscoelastic::MasterCurve(m) => Some(m.frequency_range()),

@@ -185,7 +185,7 @@ impl Spectrum for Band<'_> {
 /// Everything the leakage and P(u) need at one magnification.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 #[non_exhaustive]
-pub struct MagnifiedPoint {
+pub(crate) struct MagnifiedPoint {
     /// Magnification ζ.
     pub zeta: f64,
     /// A(ζ)/A0.
@@ -206,7 +206,7 @@ pub struct MagnifiedPoint {
 }
 
 /// The magnification-resolved interface of one spectrum, E* and σ0.
-pub struct Magnified<'a> {
+pub(crate) struct Magnified<'a> {
     spectrum: &'a dyn Spectrum,
     contact_modulus: f64,
     pressure: f64,
@@ -222,7 +222,7 @@ impl<'a> Magnified<'a> {
     /// so large that G = (E*/σ0)²⟨|∇h|²⟩/8 overflows f64 (naming
     /// `nominal_pressure` or `contact_modulus`, E* when it is beyond 1e±30,
     /// `error::ratio_culprit`).
-    pub fn new(
+    pub(crate) fn new(
         spectrum: &'a dyn Spectrum,
         contact_modulus: f64,
         pressure: f64,
@@ -250,12 +250,12 @@ impl<'a> Magnified<'a> {
     }
 
     /// Full magnification q_s/q_l.
-    pub fn zeta_max(&self) -> f64 {
+    pub(crate) fn zeta_max(&self) -> f64 {
         self.spectrum.q_max() / self.spectrum.q_min()
     }
 
     /// G(ζ) with its error.
-    pub fn g(&self, zeta: f64) -> Result<Estimate> {
+    pub(crate) fn g(&self, zeta: f64) -> Result<Estimate> {
         let q_l = self.spectrum.q_min();
         let m = self.spectrum.moment(3, q_l, zeta * q_l)?;
         let f = self.g_factor();
@@ -266,7 +266,7 @@ impl<'a> Magnified<'a> {
     }
 
     /// (A(ζ)/A0, −dA/dζ /A0).
-    pub fn area(&self, zeta: f64) -> Result<(f64, f64)> {
+    pub(crate) fn area(&self, zeta: f64) -> Result<(f64, f64)> {
         let g = self.g(zeta)?.value;
         if g <= 0.0 {
             return Ok((1.0, 0.0));
@@ -283,7 +283,7 @@ impl<'a> Magnified<'a> {
     ///
     /// # Errors
     /// ζ outside [1, q_s/q_l]; quadrature failure.
-    pub fn point(&self, zeta: f64) -> Result<MagnifiedPoint> {
+    pub(crate) fn point(&self, zeta: f64) -> Result<MagnifiedPoint> {
         let zeta_max = self.zeta_max();
         if !(zeta.is_finite() && (1.0..=zeta_max).contains(&zeta)) {
             return Err(Error::invalid(
@@ -601,7 +601,7 @@ impl Magnified<'_> {
     ///
     /// # Errors
     /// `fraction` outside (0, 1); moment failures.
-    pub fn zeta_at_fraction(&self, fraction: f64) -> Result<Option<Estimate>> {
+    pub(crate) fn zeta_at_fraction(&self, fraction: f64) -> Result<Option<Estimate>> {
         check::open("percolation_threshold", fraction, 0.0, 1.0)?;
         let x = erf_inverse(fraction);
         let g_c = 0.25 / (x * x);

@@ -30,7 +30,7 @@
 //! `rule_tolerance` on the weight ∫(−A′)dζ (closed form, cheap: at low load
 //! all of it sits just above ζ = 1) and then on the volume ∫(−A′)u1 dζ
 //! (relative to ū). u1 is computed at the 15 Kronrod nodes of each panel
-//! (one vector q-integral each, [`magnified::Magnified::point`]), and every
+//! (one vector q-integral each, `Magnified::point`), and every
 //! result — P_nc(u) at a u, or ∫ P_nc(u) f(u) du — comes with the summed
 //! per-panel difference of the two rules plus the propagated errors of u1 as
 //! its error bound (P_nc(u) at u ≪ ū, where narrow Gaussians of the largest
@@ -66,10 +66,10 @@ pub use table::{SeparationTable, TableOptions};
 pub const DEFAULT_TOLERANCE: f64 = 1e-9;
 
 /// Default agreement of the Gauss and Kronrod ζ-rules per panel.
-pub const DEFAULT_RULE_TOLERANCE: f64 = 1e-10;
+const DEFAULT_RULE_TOLERANCE: f64 = 1e-10;
 
 /// Default number of ζ-panels per decade of magnification.
-pub const DEFAULT_PANELS_PER_DECADE: usize = 3;
+const DEFAULT_PANELS_PER_DECADE: usize = 3;
 
 /// Gauss–Kronrod G7/K15 abscissae on [−1, 1] (non-negative half, descending;
 /// the odd-indexed ones are the Gauss nodes).
@@ -392,7 +392,7 @@ impl SeparationDensity {
     }
 
     /// σ0.
-    pub fn nominal_pressure(&self) -> f64 {
+    pub(crate) fn nominal_pressure(&self) -> f64 {
         self.nominal_pressure
     }
 

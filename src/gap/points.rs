@@ -239,7 +239,7 @@ impl PointSet {
 
     /// Largest separation of the points of weight above 1e−20, m (near
     /// ζ = 1, u1 grows without bound while −A′ vanishes faster).
-    pub fn largest_separation(&self) -> f64 {
+    pub(crate) fn largest_separation(&self) -> f64 {
         self.points
             .iter()
             .filter(|p| p.kronrod > NEGLIGIBLE_POINT)

@@ -43,7 +43,7 @@ use crate::spectrum::Spectrum;
 pub(crate) const X_LOW: f64 = 6.5;
 
 /// Default ζ-panels per unit of s = ln m3.
-pub const DEFAULT_ZETA_PANELS_PER_UNIT: f64 = 0.5;
+const DEFAULT_ZETA_PANELS_PER_UNIT: f64 = 0.5;
 
 /// Default ζ-panels per unit of s of the load curves' table
 /// ([`crate::gap::DensityOptions::table_panels_per_unit`]): their error is
@@ -58,7 +58,7 @@ pub const DEFAULT_CURVE_PANELS_PER_UNIT: f64 = 0.35;
 const FULL_BAND_PANELS: usize = 8;
 
 /// Default q-panels per segment of a ζ-node's band.
-pub const DEFAULT_Q_PANELS: usize = 2;
+const DEFAULT_Q_PANELS: usize = 2;
 
 /// Accuracy knobs of [`SeparationTable`].
 #[derive(Debug, Clone, PartialEq)]

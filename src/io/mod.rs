@@ -48,7 +48,7 @@ pub struct Matrix {
 impl Matrix {
     /// The transpose: `cols × rows`, element `(i, j)` of the result is
     /// element `(j, i)` of `self`.
-    pub fn transposed(&self) -> Matrix {
+    pub(crate) fn transposed(&self) -> Matrix {
         let mut t = vec![0.0; self.values.len()];
         for i in 0..self.rows {
             for j in 0..self.cols {

@@ -22,7 +22,7 @@ use super::Matrix;
 use crate::error::{Error, Result};
 
 /// The first six bytes of every `.npy` file.
-pub const MAGIC: &[u8] = b"\x93NUMPY";
+pub(crate) const MAGIC: &[u8] = b"\x93NUMPY";
 
 /// Byte order and item size of the stored floats.
 #[derive(Clone, Copy)]

@@ -56,7 +56,7 @@ pub struct Rows {
 
 impl Rows {
     /// The number of cells of the first line of numbers.
-    pub fn columns(&self) -> usize {
+    pub(crate) fn columns(&self) -> usize {
         self.rows.first().map_or(0, |r| r.values.len())
     }
 

@@ -112,7 +112,7 @@ pub fn serialize<T: Named, S: Serializer>(
 /// # Errors
 /// Another name, or not a unit variant.
 #[doc(hidden)]
-pub fn deserialize<'de, T: Named, D: Deserializer<'de>>(
+pub(crate) fn deserialize<'de, T: Named, D: Deserializer<'de>>(
     d: D,
     ty: &'static str,
     names: &'static [&'static str],

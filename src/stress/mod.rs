@@ -353,7 +353,7 @@ impl<'a> Solver<'a> {
     }
 
     /// How the density is evaluated.
-    pub fn method(&self) -> DensityMethod {
+    pub(crate) fn method(&self) -> DensityMethod {
         match &self.density {
             Density::Start => DensityMethod::StartCondition,
             Density::Series(s) => DensityMethod::SineSeries { terms: s.len() },

@@ -394,7 +394,7 @@ impl Topography {
     /// A map with its axes swapped: `nx' = ny`, `Lx' = Ly`, and height
     /// `(ix, iy)` of the result is height `(iy, ix)` of `self` (line scans
     /// are returned as they are).
-    pub fn transposed(&self) -> Self {
+    pub(crate) fn transposed(&self) -> Self {
         if self.layout != Layout::Map {
             return self.clone();
         }

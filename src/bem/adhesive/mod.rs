@@ -411,7 +411,7 @@ impl AdhesiveSolver {
     }
 
     /// Forget the last solution: the next solve starts from the rigid gap.
-    pub fn forget(&mut self) {
+    pub(crate) fn forget(&mut self) {
         self.warm = false;
     }
 

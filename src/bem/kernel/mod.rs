@@ -119,7 +119,7 @@ impl Operator {
     }
 
     /// Boundary condition.
-    pub fn boundary(&self) -> Boundary {
+    pub(crate) fn boundary(&self) -> Boundary {
         self.boundary
     }
 
@@ -331,7 +331,7 @@ impl Operator {
     /// to `u` by direct summation: `m·N²` operations instead of two FFTs.
     /// Returns `false` (and leaves `u` alone) for the free operator, which
     /// keeps no real-space kernel.
-    pub fn add_sparse(&self, idx: &[usize], c: &[f64], u: &mut [f64]) -> bool {
+    pub(crate) fn add_sparse(&self, idx: &[usize], c: &[f64], u: &mut [f64]) -> bool {
         if self.spatial.is_empty() {
             return false;
         }
@@ -464,7 +464,7 @@ pub(crate) fn signed(k: usize, n: usize) -> i64 {
 /// ∫∫_cell = I(x+½, y+½) − I(x−½, y+½) − I(x+½, y−½) + I(x−½, y−½)
 /// ```
 /// At the centre of the cell the value is 4 asinh(1) = 3.5255.
-pub fn love_cell(x: f64, y: f64) -> f64 {
+pub(crate) fn love_cell(x: f64, y: f64) -> f64 {
     corner(x + 0.5, y + 0.5) - corner(x - 0.5, y + 0.5) - corner(x + 0.5, y - 0.5)
         + corner(x - 0.5, y - 0.5)
 }

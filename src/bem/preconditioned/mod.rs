@@ -335,7 +335,7 @@ impl Conjugacy {
     /// β (restarted when the direction would not descend) and the mean μ
     /// removed from the direction under load control; `None` if even the
     /// preconditioned residual does not descend.
-    pub fn next(&mut self, pc: &Precond, load: bool) -> Option<(f64, f64)> {
+    pub(crate) fn next(&mut self, pc: &Precond, load: bool) -> Option<(f64, f64)> {
         let free = pc.free.max(1.0);
         let mean = |beta: f64| {
             if load {

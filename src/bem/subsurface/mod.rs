@@ -69,10 +69,10 @@ use super::kernel::Boundary;
 use crate::error::{check, Error, Result};
 
 /// Number of independent stress components (xx, yy, zz, xy, xz, yz).
-pub const COMPONENTS: usize = green::COMPONENTS;
+pub(crate) const COMPONENTS: usize = green::COMPONENTS;
 
 /// The six stress components at one point, xx, yy, zz, xy, xz, yz.
-pub type Tensor = [f64; COMPONENTS];
+type Tensor = [f64; COMPONENTS];
 
 /// The stress on one plane z = depth.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
