@@ -343,6 +343,19 @@ await check("the BEM at 128² with progress equals persson run", async () => {
   await writeFile(path.join(dir, "scene.json"), scene);
   bemBrowserMs = solves(JSON.parse(await downloaded("report.json")));
   bemNativeMs = solves(JSON.parse(execFileSync(persson, ["run", "scene.json", "--json"], { cwd: dir, encoding: "utf8", stdio: ["ignore", "pipe", "ignore"] })));
+  // PERSSON_WEB_BENCH=K: the same scene K more times each way, the best and the median.
+  const k = Number(process.env.PERSSON_WEB_BENCH || 0);
+  if (k > 0) {
+    const web = [], native = [];
+    for (let i = 0; i < k; i++) {
+      const { outcome } = await page.evaluate(async (s) => (await import("./app.js")).compute(s, []), scene);
+      web.push(solves(outcome.report));
+      native.push(solves(JSON.parse(execFileSync(persson, ["run", "scene.json", "--json"], { cwd: dir, encoding: "utf8", stdio: ["ignore", "pipe", "ignore"] }))));
+    }
+    const stat = (v) => { const s = [...v].sort((a, b) => a - b); return [s[0], s[s.length >> 1]]; };
+    const [wb, wm] = stat(web), [nb, nm] = stat(native);
+    console.log(`     bench, ${k} runs each: browser best ${wb.toFixed(0)} ms, median ${wm.toFixed(0)} ms; native best ${nb.toFixed(0)} ms, median ${nm.toFixed(0)} ms; ratio of bests ${(wb / nb).toFixed(2)}, of medians ${(wm / nm).toFixed(2)}`);
+  }
   await plotsDrawn();
   const titles = await page.$$eval("#figures svg title", (ts) => ts.map((t) => t.textContent));
   assert.ok(titles.some((t) => /theory and the FFT-BEM/.test(t)), titles.join("; "));
