@@ -171,7 +171,6 @@ await check("hover shows the value under the pointer", async () => {
 await check("a bad field shows the CLI's error next to it, nothing computed", async () => {
   await page.fill("#contact_modulus", "-1");
   await compute();
-  const scene = await page.evaluate(() => null);
   const shown = await page.$eval("#err-for-contact_modulus", (e) => e.textContent);
   const general = await page.$eval("#err-general", (e) => e.textContent);
   // The scene the page ran: rebuild it as the form says and run it natively.
@@ -183,7 +182,6 @@ await check("a bad field shows the CLI's error next to it, nothing computed", as
   assert.equal(`persson: error: ${shown}`, cliLine);
   assert.match(shown, /material\.contact_modulus/);
   assert.equal(await status(), "not computed");
-  void scene;
 });
 
 await check("a field that is not a number: the CLI's message, under that field", async () => {
