@@ -220,7 +220,7 @@ def area(
 ) -> Report:
     """`persson area --json`."""
 def magnification(
-    spectrum: Spectrum, contact_modulus: float, pressure: float, zeta: Optional[ArrayLike] = None, *, points: int = 21
+    spectrum: Spectrum, contact_modulus: float, pressure: float, zeta: Optional[ArrayLike] = None, *, points: int = 41
 ) -> Report:
     """`persson magnification --json`."""
 def kappa_report(

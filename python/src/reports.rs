@@ -76,7 +76,7 @@ fn area<'py>(
 /// `persson magnification --json`: G(ζ) and A/A0 against magnification at
 /// one nominal pressure; ζ from `zeta`, else `points` log-spaced from 1 to q_s/q_l.
 #[pyfunction]
-#[pyo3(signature = (spectrum, contact_modulus, pressure, zeta=None, *, points=21))]
+#[pyo3(signature = (spectrum, contact_modulus, pressure, zeta=None, *, points=41))]
 fn magnification<'py>(
     py: Python<'py>,
     spectrum: &Spectrum,

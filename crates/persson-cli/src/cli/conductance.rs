@@ -9,8 +9,10 @@ use persson_studies::transport::Conductance;
 use super::args::{measured_contact, pressures, MaterialArgs, MeasuredArgs, SpectrumArgs};
 use super::number::number;
 use super::output::Format;
+use super::spec_args::{SpecArgs, SpecFlags};
 
-/// Arguments of `persson conductance`.
+/// Arguments of `persson conductance`: the shared ones, the gap table as a
+/// file, and the rest of the spec ([`ConductanceOutput`]) derived from it.
 #[derive(clap::Args, Debug)]
 pub struct Args {
     #[command(flatten)]
@@ -22,47 +24,28 @@ pub struct Args {
     /// Nominal (mean) pressure σ0, Pa; repeatable or comma-separated.
     #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = number)]
     pressure: Vec<f64>,
-    /// Thermal conductivities κ1[,κ2] of the two bodies, W/(m K) (one value: both).
-    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = number)]
-    conductivity: Vec<f64>,
-    /// Electrical resistivities ρ1[,ρ2] of the two bodies, Ω m (one value: both).
-    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = number)]
-    resistivity: Vec<f64>,
-    /// Gap conductance by gas conduction α(u) = κ_gas/(u + 2ℓ): κ_gas in W/(m K).
-    #[arg(long, requires = "mean_free_path", allow_hyphen_values = true, value_parser = number)]
-    gas_conductivity: Option<f64>,
-    /// The temperature-jump length ℓ of the gas law, m.
-    #[arg(long, requires = "gas_conductivity", allow_hyphen_values = true, value_parser = number)]
-    mean_free_path: Option<f64>,
     /// Gap conductance from a table α(u): a text file of two columns, u (m)
     /// ascending and α (W/(m² K)); `#` starts a comment.
-    #[arg(long, conflicts_with = "gas_conductivity", value_name = "FILE", value_parser = super::files::in_file)]
+    #[arg(long, value_name = "FILE", value_parser = super::files::in_file)]
     gap_table: Option<super::files::InFile>,
-    /// Relative tolerance of the wavevector integrals.
-    #[arg(long, default_value = "1e-9", allow_hyphen_values = true, value_parser = number)]
-    tolerance: f64,
+    #[command(flatten)]
+    spec: SpecArgs<ConductanceOutput>,
     #[command(flatten)]
     format: Format,
-    /// Also draw h(σ0) on log axes into this file (.svg or .png).
-    #[command(flatten)]
-    plot: super::plot::PlotArg,
+}
+
+/// The gap table is a file here (a list of pairs in a scene); the BEM beside
+/// the theory is `persson bem rough --conductivity`.
+impl SpecFlags for ConductanceOutput {
+    const OWN: &'static [&'static str] = &["gap_table", "bem"];
 }
 
 /// Run `persson conductance`.
 pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
     let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
     let pressures = pressures(&a.pressure, a.spectrum.example)?;
-    let gap_table = a.gap_table.as_deref().map(read_gap_table).transpose()?;
-    let mut out = ConductanceOutput {
-        conductivity: a.conductivity.clone(),
-        resistivity: a.resistivity.clone(),
-        gas_conductivity: a.gas_conductivity,
-        mean_free_path: a.mean_free_path,
-        gap_table,
-        tolerance: Some(a.tolerance),
-        bem: None,
-        plot: a.plot.path(),
-    };
+    let mut out = a.spec.spec()?;
+    out.gap_table = a.gap_table.as_deref().map(read_gap_table).transpose()?;
     // The example's heat path where the flags name none.
     let none = out.conductivity.is_empty()
         && out.resistivity.is_empty()

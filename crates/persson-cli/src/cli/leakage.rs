@@ -7,8 +7,10 @@ use persson_studies::scene::LeakageOutput;
 use super::args::{measured_contact, pressures, MaterialArgs, MeasuredArgs, SpectrumArgs};
 use super::number::number;
 use super::output::Format;
+use super::spec_args::{SpecArgs, SpecFlags};
 
-/// Arguments of `persson leakage`.
+/// Arguments of `persson leakage`: the shared ones, and the spec's
+/// ([`LeakageOutput`]) derived from it.
 #[derive(clap::Args, Debug)]
 pub struct Args {
     #[command(flatten)]
@@ -21,18 +23,14 @@ pub struct Args {
     #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = number)]
     pressure: Vec<f64>,
     #[command(flatten)]
-    seal: SealArgs,
-    /// Percolation threshold a_c of the critical junction, in (0, 1).
-    #[arg(long, default_value = "0.42", allow_hyphen_values = true, value_parser = number)]
-    percolation_threshold: f64,
-    /// Relative tolerance of the wavevector integrals.
-    #[arg(long, default_value = "1e-9", allow_hyphen_values = true, value_parser = number)]
-    tolerance: f64,
+    spec: SpecArgs<LeakageOutput>,
     #[command(flatten)]
     format: Format,
-    /// Also draw Q(σ0) on log axes into this file (.svg or .png).
-    #[command(flatten)]
-    plot: super::plot::PlotArg,
+}
+
+/// The BEM beside the theories is `persson bem rough --leakage`.
+impl SpecFlags for LeakageOutput {
+    const OWN: &'static [&'static str] = &["bem"];
 }
 
 /// The seal and its fluid (shared with `bem rough --leakage`).
@@ -97,11 +95,17 @@ impl SealArgs {
 }
 
 /// Run `persson leakage`.
-pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
-    let mut out = a
-        .seal
-        .output(a.percolation_threshold, a.tolerance, a.spectrum.example)?;
-    out.plot = a.plot.path();
+pub fn run(mut a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
+    if a.spectrum.example {
+        // The example's water seal where the fluid or its drive is not given.
+        let water = LeakageOutput::example();
+        a.spec.or_number("viscosity", water.viscosity);
+        if !a.spec.has("inlet_pressure") {
+            a.spec
+                .or_number("pressure_drop", water.pressure_drop.unwrap_or_default());
+        }
+    }
+    let out = a.spec.spec()?;
     let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
     let pressures = pressures(&a.pressure, a.spectrum.example)?;
     let ctx = persson_studies::study::Context::with_contact(surface, &pressures);

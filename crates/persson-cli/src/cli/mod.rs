@@ -34,6 +34,7 @@ cfg_feature! {
 mod report;
 mod run;
 mod separation;
+mod spec_args;
 mod spectrum;
 mod stress;
 mod study;

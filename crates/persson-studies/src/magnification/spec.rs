@@ -9,7 +9,7 @@ use serde::{Deserialize, Serialize};
 #[derive(Debug, Clone, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct MagnificationOutput {
-    /// Nominal pressure σ0.
+    /// Nominal (mean) pressure σ0, same unit as E*.
     pub nominal_pressure: f64,
     /// Explicit magnifications ζ ≥ 1 (default: `points` log-spaced from 1 to q_s/q_l).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]

@@ -61,9 +61,11 @@ pub struct LeakageOutput {
     /// Outlet pressure P_b of a gas, Pa (absolute, below P_a).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub outlet_pressure: Option<f64>,
-    /// Seal width L_x along the flow, m.
+    /// Seal width L_x along the flow, m (default 1e-3).
+    #[serde(default = "one_millimetre")]
     pub seal_width: f64,
-    /// Seal length L_y across the flow, m.
+    /// Seal length L_y across the flow (an O-ring's circumference), m (default 1e-3).
+    #[serde(default = "one_millimetre")]
     pub seal_length: f64,
     /// Percolation threshold a_c of the critical junction in (0, 1) (default 0.42).
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -93,6 +95,12 @@ pub struct TransportBem {
     /// Solver tolerance ε of the contact and of the stiffness's CG (default 1e-10).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tolerance: Option<f64>,
+}
+
+/// A seal's side where none is given: 1 mm (the command line's and Python's
+/// default too).
+fn one_millimetre() -> f64 {
+    1e-3
 }
 
 impl LeakageOutput {

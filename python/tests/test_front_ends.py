@@ -1,0 +1,88 @@
+"""One declaration per study: the Python keywords against the study's spec.
+
+A study's spec (its section of the scene file) is the one declaration its
+front-ends follow: the scene schema is generated from it, the command line
+derives its flags from it, and here every field of the spec must be a keyword
+of the study's Python function with the spec's default. The schema file is the
+one `persson run` validates scenes against (regenerated from the specs by the
+Rust tests).
+"""
+
+import inspect
+import json
+import math
+import pathlib
+import re
+
+import pytest
+
+import persson
+
+SCHEMA = (
+    pathlib.Path(__file__).resolve().parents[2]
+    / "crates"
+    / "persson-studies"
+    / "schema"
+    / "scene.schema.json"
+)
+
+# (function, spec, keywords named otherwise, fields that are not keywords and why)
+STUDIES = [
+    ("area", "AreaOutput", {}, {"plot": "a figure: Python plots itself"}),
+    (
+        "magnification",
+        "MagnificationOutput",
+        {"nominal_pressure": "pressure"},
+        {"plot": "a figure", "plot_g": "a figure"},
+    ),
+    ("adhesion", "AdhesionOutput", {}, {}),
+    (
+        "conductance",
+        "ConductanceOutput",
+        {},
+        {"plot": "a figure", "bem": "compare(..., conductivity=...) is the BEM beside it"},
+    ),
+    (
+        "leakage",
+        "LeakageOutput",
+        {},
+        {"plot": "a figure", "bem": "compare(..., leakage=True) is the BEM beside it"},
+    ),
+    ("separation", "SeparationOutput", {}, {}),
+    ("separation_density", "SeparationDensityOutput", {}, {}),
+]
+
+
+def spec(name):
+    with open(SCHEMA, encoding="utf-8") as f:
+        return json.load(f)["$defs"][name]
+
+
+def stated_default(field):
+    """The default a field's schema gives, or its description states."""
+    if "default" in field:
+        return field["default"]
+    m = re.search(r"\(default ([-+0-9.e]+)\)", field.get("description", ""))
+    return float(m.group(1)) if m else None
+
+
+@pytest.mark.parametrize("function, name, renamed, not_keywords", STUDIES)
+def test_every_field_of_the_spec_is_a_keyword_with_its_default(
+    function, name, renamed, not_keywords
+):
+    params = inspect.signature(getattr(persson, function)).parameters
+    fields = spec(name)["properties"]
+    for field, schema in fields.items():
+        if field in not_keywords:
+            assert field not in params
+            continue
+        keyword = renamed.get(field, field)
+        assert keyword in params, f"{function}() has no keyword for {name}.{field}"
+        want = stated_default(schema)
+        got = params[keyword].default
+        if want is None or got is inspect.Parameter.empty or got is None:
+            continue
+        if isinstance(want, float):
+            assert math.isclose(got, want, rel_tol=1e-12), (function, field, got, want)
+        else:
+            assert got == want, (function, field, got, want)
