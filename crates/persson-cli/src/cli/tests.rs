@@ -349,3 +349,11 @@ fn a_left_out_feature_is_named_with_the_build_that_has_it() {
     assert!(e.contains("the feature `bem`"), "{e}");
     assert!(e.contains("--features full"), "{e}");
 }
+
+/// clap's own consistency checks on the whole command line, with the flags
+/// the studies' specs derive: no flag declared twice (a spec's field named
+/// as a shared flag), every default among its values.
+#[test]
+fn the_command_line_is_consistent() {
+    Cli::command().debug_assert();
+}
