@@ -51,6 +51,11 @@ impl SolverArgs {
 
 #[derive(clap::Args, Debug)]
 pub struct HertzArgs {
+    /// The built-in example, which is this command's defaults: a ball of
+    /// radius 1 on a free 256² grid of side 1, E* = 1, contact radius 0.1
+    /// (every command takes --example).
+    #[arg(long)]
+    pub example: bool,
     /// Grid side N (nodes per side), at least 8; with --yield-stress a list
     /// (comma-separated or repeated) for the plastic disc's convergence.
     #[arg(long, value_delimiter = ',', default_value = "256", allow_hyphen_values = true, value_parser = super::number::count)]
