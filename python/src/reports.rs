@@ -185,6 +185,7 @@ fn separation<'py>(
     let surface = spectrum.contact(contact_modulus)?;
     let out = SeparationOutput {
         tolerance: Some(tolerance),
+        ..Default::default()
     };
     let r = py
         .detach(|| run::separation(&surface, &pressures, &out, &[]))

@@ -48,7 +48,12 @@ STUDIES = [
         {},
         {"plot": "a figure", "bem": "compare(..., leakage=True) is the BEM beside it"},
     ),
-    ("separation", "SeparationOutput", {}, {}),
+    (
+        "separation",
+        "SeparationOutput",
+        {},
+        {"plot": "a figure", "plot_area": "a figure", "plot_points": "a figure's points"},
+    ),
     ("separation_density", "SeparationDensityOutput", {}, {}),
 ]
 

@@ -14,6 +14,7 @@ use super::args::{spectrum_spec, MeasuredArgs, SpectrumArgs};
 use super::files::{in_file, InFile};
 use super::number::number;
 use super::output::{print_warned, Format};
+use super::spec_args::{SpecArgs, SpecFlags};
 
 /// The rubber: its modulus, temperature shift, Poisson ratio and thermal data.
 #[derive(clap::Args, Debug)]
@@ -67,43 +68,22 @@ pub struct Args {
     measured: MeasuredArgs,
     #[command(flatten)]
     rubber: RubberArgs,
-    /// Background temperature T, K; repeatable or comma-separated (default T_ref).
-    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = number)]
-    temperature: Vec<f64>,
     /// Nominal (mean) pressure σ0, Pa; repeatable or comma-separated.
     #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = number)]
     pressure: Vec<f64>,
-    /// Sliding velocity v, m/s; repeatable or comma-separated.
-    #[arg(long, value_delimiter = ',', conflicts_with = "velocity_range",
-          allow_hyphen_values = true, value_parser = number)]
-    velocity: Vec<f64>,
     /// Log-spaced velocities VMIN,VMAX,N (m/s).
     #[arg(long, value_name = "VMIN,VMAX,N", value_delimiter = ',', allow_hyphen_values = true,
           value_parser = number)]
     velocity_range: Vec<f64>,
-    /// Upper cut-off q1 of the friction integrals, 1/m (default q_s).
-    #[arg(long, conflicts_with = "q1_rms_slope", allow_hyphen_values = true, value_parser = number)]
-    q1: Option<f64>,
-    /// q1 where the rms slope of the roughness from q_l reaches this value (Lorenz et al. 2011).
-    #[arg(long, allow_hyphen_values = true, value_parser = number)]
-    q1_rms_slope: Option<f64>,
-    /// γ of S(q) = γ + (1 − γ) P(q)².
-    #[arg(long, default_value = "0.5", allow_hyphen_values = true, value_parser = number)]
-    gamma: f64,
-    /// Relative tolerance of μ, G and the flash temperature.
-    #[arg(long, default_value = "1e-8", allow_hyphen_values = true, value_parser = number)]
-    tolerance: f64,
-    /// Magnifications per decade of the profiles in --json.
-    #[arg(long, default_value_t = 4, allow_hyphen_values = true, value_parser = super::number::count)]
-    points_per_decade: usize,
-    /// Also with the flash temperature (needs --thermal-conductivity, --density, --heat-capacity).
-    #[arg(long)]
-    flash_temperature: bool,
+    #[command(flatten)]
+    spec: SpecArgs<FrictionOutput>,
     #[command(flatten)]
     format: Format,
-    /// Also draw μ against v, with A/A0 on a second panel, into this file (.svg or .png).
-    #[command(flatten)]
-    plot: super::plot::PlotArg,
+}
+
+/// The velocity range is three numbers here (an object in a scene).
+impl SpecFlags for FrictionOutput {
+    const OWN: &'static [&'static str] = &["velocity_range"];
 }
 
 impl RubberArgs {
@@ -162,12 +142,13 @@ impl RubberArgs {
 
 /// Run `persson friction`.
 pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
+    let given = a.spec.spec()?;
     let thermal = [
         a.rubber.thermal_conductivity,
         a.rubber.density,
         a.rubber.heat_capacity,
     ];
-    if a.flash_temperature && thermal.iter().any(Option::is_none) {
+    if given.flash_temperature && thermal.iter().any(Option::is_none) {
         bail!("--flash-temperature needs --thermal-conductivity, --density and --heat-capacity");
     }
     let spectrum = spectrum_spec(&a.spectrum, &a.measured)?;
@@ -180,45 +161,18 @@ pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Resul
         }
         (p, _) => p.to_vec(),
     };
-    let velocity_range = match a.velocity_range.as_slice() {
-        [] => None,
-        &[lo, hi, n] => {
-            if !(n.fract() == 0.0 && n >= 1.0 && n <= persson_studies::scene::MAX_VELOCITIES as f64)
-            {
-                bail!(
-                    "--velocity-range: N = {n} must be a whole number in 1..={}",
-                    persson_studies::scene::MAX_VELOCITIES
-                );
-            }
-            Some(VelocityRange {
-                velocity_min: lo,
-                velocity_max: hi,
-                points: n as usize,
-            })
-        }
-        v => bail!(
-            "--velocity-range: three values VMIN,VMAX,N, got {}",
-            v.len()
-        ),
-    };
-    let velocity_range = velocity_range.or_else(|| {
-        (example && a.velocity.is_empty())
+    let velocity_range = velocity_range(&a.velocity_range)?.or_else(|| {
+        (example && given.velocity.is_empty())
             .then_some(persson_studies::friction::EXAMPLE_VELOCITY_RANGE)
     });
-    if a.velocity.is_empty() && velocity_range.is_none() {
-        bail!("no velocity: give --velocity V (m/s; repeatable or comma-separated) or --velocity-range VMIN,VMAX,N");
+    match (given.velocity.is_empty(), velocity_range.is_none()) {
+        (true, true) => bail!("no velocity: give --velocity V (m/s; repeatable or comma-separated) or --velocity-range VMIN,VMAX,N"),
+        (false, false) => bail!("--velocity and --velocity-range: give one of them"),
+        _ => {}
     }
     let out = FrictionOutput {
-        velocity: a.velocity.clone(),
         velocity_range,
-        temperature: a.temperature.clone(),
-        q1: a.q1,
-        q1_rms_slope: a.q1_rms_slope,
-        gamma: Some(a.gamma),
-        tolerance: Some(a.tolerance),
-        points_per_decade: Some(a.points_per_decade),
-        flash_temperature: a.flash_temperature,
-        plot: a.plot.path(),
+        ..given
     };
     let report =
         friction(&spectrum, &rubber, &pressure, &out).map_err(|e| a.spectrum.psd_hint(e))?;
@@ -231,4 +185,26 @@ pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Resul
     let ctx = Context::new(inputs, Reads::NOTHING)?;
     Friction::write(&out, &report, &ctx, std::path::Path::new(""), files)?;
     print_warned(&report, &Friction::warnings(&report), &a.format)
+}
+
+/// `--velocity-range VMIN,VMAX,N` as the scene's object.
+fn velocity_range(v: &[f64]) -> anyhow::Result<Option<VelocityRange>> {
+    match *v {
+        [] => Ok(None),
+        [lo, hi, n] => {
+            let max = persson_studies::scene::MAX_VELOCITIES;
+            if !(n.fract() == 0.0 && n >= 1.0 && n <= max as f64) {
+                bail!("--velocity-range: N = {n} must be a whole number in 1..={max}");
+            }
+            Ok(Some(VelocityRange {
+                velocity_min: lo,
+                velocity_max: hi,
+                points: n as usize,
+            }))
+        }
+        _ => bail!(
+            "--velocity-range: three values VMIN,VMAX,N, got {}",
+            v.len()
+        ),
+    }
 }
