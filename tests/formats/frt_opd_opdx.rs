@@ -187,6 +187,65 @@ fn frt_microprof_undefined_points() {
         .all(|v| v.is_finite()));
 }
 
+/// The start and size of each block of an FRT file (version 1.00), by tag.
+fn frt_blocks(b: &[u8]) -> Vec<(u16, usize, usize)> {
+    let count = u16::from_le_bytes([b[16], b[17]]);
+    let mut at = 18;
+    let mut out = Vec::new();
+    for _ in 0..count {
+        let tag = u16::from_le_bytes([b[at], b[at + 1]]);
+        let size = u32::from_le_bytes(b[at + 2..at + 6].try_into().unwrap()) as usize;
+        out.push((tag, at + 6, size));
+        at += 6 + size;
+    }
+    out
+}
+
+/// Values outside the file's range of valid values (block 0x0070, [5,
+/// 65529] here) are undefined, as the value 1 is: the row of zeros that ends
+/// `frt-1.frt` is not a row of heights at 0 m. With the range widened to
+/// hold 0, the same value reads as 0 m; the intensity channel is not a
+/// height and keeps its counts.
+#[test]
+fn frt_microprof_values_outside_the_valid_range_are_undefined() {
+    let bytes = std::fs::read(data("frt-1-crop.frt")).unwrap();
+    let blocks = frt_blocks(&bytes);
+    let find = |tag: u16| blocks.iter().find(|b| b.0 == tag).copied().unwrap();
+    let (_, valid, _) = find(0x0070);
+    assert_eq!(&bytes[valid..valid + 8], [5, 0, 0, 0, 0xf9, 0xff, 0, 0]);
+    // The first stored value (the last row here, x = 0) set to 0, 3 and 65530.
+    let (_, topography, _) = find(0x000b);
+    let with = |raw: u16, range: Option<[u8; 8]>| {
+        let mut b = bytes.clone();
+        b[topography..topography + 2].copy_from_slice(&raw.to_le_bytes());
+        if let Some(r) = range {
+            b[valid..valid + 8].copy_from_slice(&r);
+        }
+        let p = temp(&format!("valid-{raw}-{}.frt", range.is_some()), &b);
+        read::as_read(&p, &ReadOptions::default()).unwrap()
+    };
+    let last_row_first = |r: &read::AsRead| r.heights[(r.ny - 1) * r.nx];
+    for raw in [0, 3, 65530] {
+        let r = with(raw, None);
+        assert!(last_row_first(&r).is_nan(), "{raw}");
+        assert_eq!(r.heights.iter().filter(|v| v.is_nan()).count(), 1);
+    }
+    let wide = [0, 0, 0, 0, 0xff, 0xff, 0, 0];
+    assert_eq!(last_row_first(&with(0, Some(wide))), 0.0);
+    // The value 1 stays undefined whatever the range.
+    assert!(last_row_first(&with(1, Some(wide))).is_nan());
+    // A damaged range block is an error naming it.
+    let mut short = bytes.clone();
+    let at = valid - 4;
+    short[at..at + 4].copy_from_slice(&4u32.to_le_bytes());
+    let cut: Vec<u8> = short[..valid + 4]
+        .iter()
+        .chain(&short[valid + 8..])
+        .copied()
+        .collect();
+    error_of(&temp("short-range.frt", &cut), &ReadOptions::default(), "block 0x0070 has 4 bytes");
+}
+
 /// Damaged FRT files: errors naming the file and the format.
 #[test]
 fn frt_microprof_damaged() {

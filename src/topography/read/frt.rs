@@ -10,6 +10,7 @@
 //! 0x0066  u32 nx, u32 ny, u32 bits per value (16 or 32)
 //! 0x0067  f64 Lx, f64 Ly (m), f64 x, y offset, f64 factor, u32 scan direction
 //! 0x006c  u32 range, f64 z scale (m per count)
+//! 0x0070  u32 first valid, u32 last valid value
 //! 0x000b  ny rows of nx values (u16 or i32), x fastest: the topography
 //! 0x007d  u16 × 4 buffer ids, then images, each
 //!         u32 data type, u32 nx, u32 ny, u32 bits, ny rows of nx values
@@ -17,8 +18,18 @@
 //!
 //! The first stored row is the bottom line of the image (y = Ly): row
 //! `ny − 1 − iy` of the file is row `iy` here, as SurfaceTopography and
-//! Gwyddion orient it. A value of 1 is undefined (NaN). Heights are
-//! `value × z scale` in metres.
+//! Gwyddion orient it. Heights are `value × z scale` in metres.
+//!
+//! # Undefined points
+//! A height value outside the file's range of valid values (block 0x0070,
+//! `[5, 65529]` in the example files) is undefined (NaN), and so is the
+//! value 1 in every channel, with or without that block. The sensor writes 1
+//! where it lost the surface; `frt-1.frt` of SurfaceTopography's examples
+//! also ends in a row of 500 zeros. SurfaceTopography 1.27 and Gwyddion 2.61
+//! mark only the value 1, and so read that row as heights of 0 m, 79 µm
+//! below the rest of the scan (about 40 rms heights away): a step that
+//! dominates the spectrum's long wavelengths. Here the row is undefined,
+//! which a user fills (`fill_undefined`) or crops.
 //!
 //! # Channels
 //! The topography of block 0x000b, named `Topography`, then each image of
@@ -79,6 +90,7 @@ struct Blocks<'b> {
     scale: Option<&'b [u8]>,
     single: Option<&'b [u8]>,
     multi: Option<&'b [u8]>,
+    valid: Option<&'b [u8]>,
 }
 
 pub(crate) fn parse(path: &Path, b: &[u8], options: &ReadOptions) -> Result<Raw> {
@@ -135,6 +147,16 @@ pub(crate) fn parse(path: &Path, b: &[u8], options: &ReadOptions) -> Result<Raw>
         .ok_or_else(|| f.bad("no block 0x0067 (the scan size)"))?;
     let lx = f64::from_le_bytes(array(&f, s, 0, "Lx of block 0x0067")?);
     let ly = f64::from_le_bytes(array(&f, s, 8, "Ly of block 0x0067")?);
+    let valid = match (im.height, blocks.valid) {
+        (true, Some(v)) => {
+            let w = v
+                .get(..8)
+                .ok_or_else(|| f.bad(format!("block 0x0070 has {} bytes, needs 8", v.len())))?;
+            let at = |k: usize| i64::from(u32::from_le_bytes([w[k], w[k + 1], w[k + 2], w[k + 3]]));
+            at(0)..=at(4)
+        }
+        _ => i64::MIN..=i64::MAX,
+    };
     let m = || Unit::Stated("m".into(), LengthUnit::Metre);
     Ok(Raw {
         size: Some(Stored {
@@ -146,7 +168,7 @@ pub(crate) fn parse(path: &Path, b: &[u8], options: &ReadOptions) -> Result<Raw>
         height_unit: if scale.is_some() { m() } else { Unit::Unstated },
         // A non-height channel has no unit: the caller must give it.
         require_units: scale.is_none(),
-        ..Raw::map(im.nx, im.ny, heights(im, scale))
+        ..Raw::map(im.nx, im.ny, heights(im, scale, &valid))
     })
 }
 
@@ -193,6 +215,7 @@ fn blocks<'b>(f: &Bin<'b>) -> Result<Blocks<'b>> {
             0x006c => found.scale = Some(data),
             0x000b => found.single = Some(data),
             0x007d => found.multi = Some(data),
+            0x0070 => found.valid = Some(data),
             _ => {}
         }
         at += head + size;
@@ -295,8 +318,8 @@ fn type_name(kind: u32) -> String {
 }
 
 /// The values of `im`, row `ny − 1 − iy` of the file as row `iy`, times
-/// `scale`; 1 is NaN.
-fn heights(im: &Image, scale: Option<f64>) -> Vec<f64> {
+/// `scale`; 1 and a value outside `valid` are NaN.
+fn heights(im: &Image, scale: Option<f64>, valid: &std::ops::RangeInclusive<i64>) -> Vec<f64> {
     let value = |k: usize| -> i64 {
         if im.bits == 16 {
             i64::from(u16::from_le_bytes([im.data[2 * k], im.data[2 * k + 1]]))
@@ -305,12 +328,13 @@ fn heights(im: &Image, scale: Option<f64>) -> Vec<f64> {
             i64::from(i32::from_le_bytes([c[0], c[1], c[2], c[3]]))
         }
     };
+    let defined = |v: i64| v != UNDEFINED && valid.contains(&v);
     let mut h = Vec::with_capacity(im.nx * im.ny);
     for iy in 0..im.ny {
         let row = (im.ny - 1 - iy) * im.nx;
         h.extend((0..im.nx).map(|ix| match value(row + ix) {
-            UNDEFINED => f64::NAN,
-            v => v as f64 * scale.unwrap_or(1.0),
+            v if defined(v) => v as f64 * scale.unwrap_or(1.0),
+            _ => f64::NAN,
         }));
     }
     h
