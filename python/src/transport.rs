@@ -1,4 +1,4 @@
-//! What passes through the interface (issue 23): the contact conductance and
+//! What passes through the interface: the contact conductance and
 //! the leak rate of a seal against load, as dicts of numpy arrays (the
 //! `points` of `persson conductance --json` and `persson leakage --json`).
 

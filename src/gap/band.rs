@@ -27,8 +27,7 @@
 //! 1/(19·19!) and 1/19! ≈ 8e−18 of M_0, so the tail costs a few multiply-adds
 //! per term instead of an exp, a log and a Chebyshev sum per node. The nodes
 //! before the tail (x ≥ 1) are summed directly, E1 by
-//! [`super::fast_e1`]; those with x ≥ 745 (e^{−x} underflows) are left out,
-//! as before.
+//! [`super::fast_e1`]; those with x ≥ 745 (e^{−x} underflows) are left out.
 
 use super::fast_e1::{e1_fast, e1_fast_pair};
 use crate::special::EULER_GAMMA;

@@ -124,18 +124,19 @@
 //! (the largest symbol of 𝒦 times the input, M² the grid's nodes). Far out of
 //! contact under the exponential law the force is ~e^{−g/ρ} and both sums
 //! of ε shrink with it, while the numerator cannot fall below the round-off
-//! of subtracting 𝒦h's O(1) pressures: those points (21 of 62 on the λ = 3
-//! sphere path of the tests) ran to `max_iterations` with either iteration
-//! before. The floor lies far below tolerance × scale wherever the force is
-//! within ~1e-5 of the contact pressures.
+//! of subtracting 𝒦h's O(1) pressures: without this floor, those points
+//! (21 of 62 on the λ = 3 sphere path of the tests) would run to
+//! `max_iterations` with either iteration. The floor lies far below
+//! tolerance × scale wherever the force is within ~1e-5 of the contact
+//! pressures.
 //!
 //! A detached state, where no node touches or attracts (Maugis–Dugdale with
 //! every gap ≥ ρ, or Δγ = 0 out of contact), has no force at all: its
 //! residual and its scale are both round-off, so ε is 0/0 and the iteration
 //! cannot stop. Its exact solution is the rigid gap shifted to ḡ (𝒦 of a
 //! constant is 0, p̄ = 0); the solver returns it (0 iterations) whenever the
-//! iterate is detached and that rigid gap is detached too. These were the
-//! Maugis–Dugdale solves that never converged before.
+//! iterate is detached and that rigid gap is detached too, so that these
+//! Maugis–Dugdale solves end.
 //!
 //! # References
 //! - L. Rey, G. Anciaux, J.-F. Molinari, *Normal adhesive contact on rough

@@ -1,4 +1,4 @@
-//! The transport entries of the accuracy report (issue 23): Barber's
+//! The transport entries of the accuracy report Barber's
 //! identity on Holm's circular spot through the BEM's stiffness solve
 //! (feature `bem`), Reynolds flow against its closed forms (feature `flow`),
 //! and the two-phase Bruggeman medium against σ1(1 − 2a).

@@ -1,5 +1,5 @@
 //! What passes through the interface: the scene outputs `conductance` and
-//! `leakage` (issue 23), and the BEM solve a scene may set beside the theory.
+//! `leakage`, and the BEM solve a scene may set beside the theory.
 
 use std::path::PathBuf;
 

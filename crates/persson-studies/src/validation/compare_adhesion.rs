@@ -1,6 +1,5 @@
 //! `persson compare --work-of-adhesion`: Persson's adhesive contact theory
-//! against the adhesive FFT-BEM on the surfaces of the resolution sweep
-//! (issue 24).
+//! against the adhesive FFT-BEM on the surfaces of the resolution sweep.
 //!
 //! # What is compared, per work of adhesion Δγ
 //! - **The BEM** ([`persson::bem::adhesive`], gap-based

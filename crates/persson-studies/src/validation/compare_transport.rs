@@ -1,6 +1,6 @@
 //! `persson compare --leakage / --conductance`: the leak rate and the contact
 //! conductance of Persson's theory against the FFT-BEM on the surfaces of the
-//! resolution sweep (issue 23).
+//! resolution sweep.
 //!
 //! # What is compared, per load σ0
 //! - **Conductance.** The theory's stiffness K/A0 = −dσ0/dū

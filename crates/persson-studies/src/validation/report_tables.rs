@@ -31,7 +31,8 @@ impl Tabulate for Comparison {
         tables.extend(self.distribution_table());
         tables.extend(self.data_table());
         tables.push(self.solves_table());
-        // Last, so that the other tables keep their places (issue 27).
+        // Last, so that the other tables keep their places (their indices are
+        // part of the report's JSON).
         tables.push(super::patches::patch_table(
             &self.patches,
             &self.nominal_pressure,
