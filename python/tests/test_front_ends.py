@@ -55,6 +55,14 @@ STUDIES = [
         {"plot": "a figure", "plot_area": "a figure", "plot_points": "a figure's points"},
     ),
     ("separation_density", "SeparationDensityOutput", {}, {}),
+    (
+        "friction",
+        "FrictionOutput",
+        {},
+        {"plot": "a figure", "velocity_range": "velocity takes any array"},
+    ),
+    ("theories", "TheoriesOutput", {}, {"plot": "a figure"}),
+    ("bem_hertz", "BemHertzOutput", {}, {}),
 ]
 
 

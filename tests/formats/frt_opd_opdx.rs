@@ -243,7 +243,11 @@ fn frt_microprof_values_outside_the_valid_range_are_undefined() {
         .chain(&short[valid + 8..])
         .copied()
         .collect();
-    error_of(&temp("short-range.frt", &cut), &ReadOptions::default(), "block 0x0070 has 4 bytes");
+    error_of(
+        &temp("short-range.frt", &cut),
+        &ReadOptions::default(),
+        "block 0x0070 has 4 bytes",
+    );
 }
 
 /// Damaged FRT files: errors naming the file and the format.

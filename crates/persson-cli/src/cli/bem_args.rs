@@ -8,7 +8,9 @@ use persson::error::check;
 use super::args::{MaterialArgs, SpectrumArgs};
 use super::files::{in_file, out_file, InFile, OutFile};
 use super::measured_args::MapReadArgs;
+use super::number::number;
 use super::output::Format;
+use persson_studies::scene::LeakageOutput;
 
 /// Arguments of `persson bem`.
 #[derive(clap::Args, Debug)]
@@ -257,7 +259,7 @@ pub struct TransportArgs {
     #[arg(long)]
     pub leakage: bool,
     #[command(flatten)]
-    pub seal: super::leakage::SealArgs,
+    pub seal: SealArgs,
     /// Write the gap field each leak rate was computed on as .npy (N×N
     /// float64, 0 in contact); `_k` is added before the extension when several
     /// pressures are given.
@@ -344,5 +346,67 @@ pub fn seed(s: &str) -> Result<u64, String> {
             "must be an integer from 0 to 18446744073709551615 (a seed), got {v}"
         )),
         Err(_) => Err(format!("`{s}` is not a seed: give an integer >= 0")),
+    }
+}
+
+/// The seal and its fluid of `bem rough --leakage` and `compare --leakage`
+/// (`persson leakage` derives its flags from the spec `LeakageOutput`).
+#[derive(clap::Args, Debug, Clone)]
+pub struct SealArgs {
+    /// Dynamic viscosity η of the fluid, Pa s.
+    #[arg(long, allow_hyphen_values = true, value_parser = number)]
+    pub viscosity: Option<f64>,
+    /// Pressure drop ΔP across the seal, Pa (a liquid).
+    #[arg(long, allow_hyphen_values = true, value_parser = number, conflicts_with_all = ["inlet_pressure", "outlet_pressure"])]
+    pub pressure_drop: Option<f64>,
+    /// Inlet pressure P_a of a gas (isothermal, ideal), Pa absolute.
+    #[arg(long, requires = "outlet_pressure", allow_hyphen_values = true, value_parser = number)]
+    pub inlet_pressure: Option<f64>,
+    /// Outlet pressure P_b of a gas, Pa absolute (below P_a); Q is the flow at P_b.
+    #[arg(long, requires = "inlet_pressure", allow_hyphen_values = true, value_parser = number)]
+    pub outlet_pressure: Option<f64>,
+    /// Seal width L_x along the flow, m.
+    #[arg(long, default_value = "1e-3", allow_hyphen_values = true, value_parser = number)]
+    pub seal_width: f64,
+    /// Seal length L_y across the flow (e.g. an O-ring's circumference), m.
+    #[arg(long, default_value = "1e-3", allow_hyphen_values = true, value_parser = number)]
+    pub seal_length: f64,
+}
+
+impl SealArgs {
+    /// The scene's `leakage` output for these flags; with `example`, the example's water seal
+    /// ([`LeakageOutput::example`]) where the fluid or its drive is not given.
+    pub fn output(
+        &self,
+        percolation_threshold: f64,
+        tolerance: f64,
+        example: bool,
+    ) -> anyhow::Result<LeakageOutput> {
+        // The example's water seal stands in for what is not given.
+        let water = example.then(LeakageOutput::example);
+        let Some(viscosity) = self.viscosity.or(water.as_ref().map(|w| w.viscosity)) else {
+            anyhow::bail!("no --viscosity: give the fluid's dynamic viscosity η in Pa s");
+        };
+        let pressure_drop = match (&water, self.inlet_pressure) {
+            (Some(w), None) => self.pressure_drop.or(w.pressure_drop),
+            _ => self.pressure_drop,
+        };
+        if pressure_drop.is_none() && self.inlet_pressure.is_none() {
+            anyhow::bail!(
+                "no --pressure-drop: give ΔP in Pa (a liquid), or --inlet-pressure and --outlet-pressure (a gas)"
+            );
+        }
+        Ok(LeakageOutput {
+            viscosity,
+            pressure_drop,
+            inlet_pressure: self.inlet_pressure,
+            outlet_pressure: self.outlet_pressure,
+            seal_width: self.seal_width,
+            seal_length: self.seal_length,
+            percolation_threshold: Some(percolation_threshold),
+            tolerance: Some(tolerance),
+            bem: None,
+            plot: None,
+        })
     }
 }

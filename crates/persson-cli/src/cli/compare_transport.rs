@@ -5,7 +5,7 @@
 use persson_studies::scene::transport::{self, TransportRequest};
 use persson_studies::validation::TransportCompareConfig;
 
-use super::leakage::SealArgs;
+use super::bem_args::SealArgs;
 use super::number::number;
 
 /// `compare --leakage / --conductance` (flattened into `compare`'s flags).

@@ -15,7 +15,7 @@ use persson::names::Boundary;
 pub fn bem_hertz(h: &BemHertzOutput) -> Result<BemHertzReport> {
     let named = |e: Error| prefix("outputs.bem_hertz.", e);
     let boundary = h.boundary.unwrap_or(Boundary::Free);
-    let tol = check::tolerance("tolerance", h.tolerance.unwrap_or(1e-12)).map_err(named)?;
+    let tol = check::tolerance("tolerance", h.tolerance.unwrap_or(1e-10)).map_err(named)?;
     let grids = if h.grids.is_empty() {
         vec![64, 128, 256]
     } else {

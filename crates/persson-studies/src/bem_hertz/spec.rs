@@ -18,7 +18,7 @@ pub struct BemHertzOutput {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schemars(with = "Option<ByName<Boundary>>")]
     pub boundary: Option<Boundary>,
-    /// Solver tolerance ε (default 1e-12).
+    /// Solver tolerance ε (default 1e-10, as `persson bem hertz` and Python).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tolerance: Option<f64>,
     /// Yield stress σY (unit of E*; the peak pressure is p₀ = 0.2/π ≈ 0.0637):
