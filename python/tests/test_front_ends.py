@@ -63,6 +63,18 @@ STUDIES = [
     ),
     ("theories", "TheoriesOutput", {}, {"plot": "a figure"}),
     ("bem_hertz", "BemHertzOutput", {}, {}),
+    (
+        "surrogates",
+        "SurrogatesOutput",
+        {},
+        {
+            "grid": "Python passes the heights",
+            "map_seed": "Python passes the heights",
+            "surfaces": "Python returns the surrogates",
+            "plot": "a figure",
+            "plot_distribution": "a figure",
+        },
+    ),
 ]
 
 

@@ -8,11 +8,11 @@
 //! | field's schema | flag |
 //! |---|---|
 //! | number | `--field X`, a plain SI number ([`super::number::number`]) |
-//! | integer | `--field N` ([`super::number::count`]) |
+//! | integer | `--field N` ([`super::number::count`]); a 64-bit one, a seed ([`super::bem_args::seed`]) |
 //! | array of numbers | `--field X,Y,…`, repeatable |
 //! | boolean | `--field`, a switch |
 //! | one of named values | `--field NAME`, the values and their descriptions listed |
-//! | string named `plot` or `plot_*` | `--field FILE.svg\|png`, an output file ([`super::files`]) |
+//! | string named `plot` or `plot_*`, or listed in [`SpecFlags::OUTPUTS`] | `--field FILE.svg\|png` (or the listed value name), an output file ([`super::files`]) |
 //! | other string | `--field TEXT` |
 //!
 //! The flag is the field's name in kebab case (`yield_stress` →
@@ -43,6 +43,9 @@ pub trait SpecFlags: JsonSchema + DeserializeOwned {
     const RENAMED: &'static [(&'static str, &'static str)] = &[];
     /// Further names a flag answers to: (field, alias).
     const ALIASES: &'static [(&'static str, &'static str)] = &[];
+    /// Fields that name a file the study writes, other than its figures
+    /// (`plot`, `plot_*`): (field, value name with its extensions).
+    const OUTPUTS: &'static [(&'static str, &'static str)] = &[];
 }
 
 /// The flags of the spec `T` (module docs); [`SpecArgs::spec`] builds it.
@@ -62,6 +65,14 @@ impl<T: SpecFlags> SpecArgs<T> {
     /// example's values).
     pub fn or_number(&mut self, name: &str, v: f64) -> &mut Self {
         self.given.entry(name.into()).or_insert(Given::Number(v));
+        self
+    }
+
+    /// Give the field `name` the count `n` unless a flag gave it.
+    pub fn or_count(&mut self, name: &str, n: usize) -> &mut Self {
+        self.given
+            .entry(name.into())
+            .or_insert(Given::Count(n as u64));
         self
     }
 
@@ -93,10 +104,12 @@ fn flag_of<T: SpecFlags>(field: &str) -> String {
 enum Kind {
     Number,
     Count,
+    Seed,
     Numbers,
     Switch,
     Choice(Vec<(String, String)>),
-    Plot,
+    /// An output file, with its value name (`FILE.svg|png`).
+    Output(&'static str),
     Text,
 }
 
@@ -123,7 +136,7 @@ fn fields<T: SpecFlags>() -> Vec<Field> {
         .iter()
         .filter(|(name, _)| !T::OWN.contains(&name.as_str()))
         .map(|(name, p)| Field {
-            kind: kind(name, p, &root),
+            kind: kind::<T>(name, p, &root),
             help: one_line(p.get("description").and_then(Value::as_str).unwrap_or("")),
             default: p.get("default").and_then(|d| match d {
                 Value::String(s) => Some(s.clone()),
@@ -185,7 +198,7 @@ fn type_of(p: &Value) -> Option<&str> {
 }
 
 /// What the flag of the field `name` with schema `p` takes.
-fn kind(name: &str, p: &Value, root: &Value) -> Kind {
+fn kind<T: SpecFlags>(name: &str, p: &Value, root: &Value) -> Kind {
     let p = resolve(p, root);
     if let Some(choices) = p.get("oneOf").and_then(Value::as_array) {
         let named = choices
@@ -205,12 +218,17 @@ fn kind(name: &str, p: &Value, root: &Value) -> Kind {
             .collect();
         return Kind::Choice(named);
     }
+    let output = T::OUTPUTS.iter().find(|(f, _)| *f == name).map(|(_, v)| *v);
     match type_of(p) {
         Some("number") => Kind::Number,
+        Some("integer") if p.get("format").and_then(Value::as_str) == Some("uint64") => Kind::Seed,
         Some("integer") => Kind::Count,
         Some("boolean") => Kind::Switch,
         Some("array") => Kind::Numbers,
-        Some("string") if name == "plot" || name.starts_with("plot_") => Kind::Plot,
+        Some("string") if output.is_some() => Kind::Output(output.unwrap_or_default()),
+        Some("string") if name == "plot" || name.starts_with("plot_") => {
+            Kind::Output("FILE.svg|png")
+        }
         _ => Kind::Text,
     }
 }
@@ -228,6 +246,9 @@ fn arg<T: SpecFlags>(f: &Field) -> Arg {
     a = match &f.kind {
         Kind::Number => a.value_parser(number).allow_hyphen_values(true),
         Kind::Count => a.value_parser(count).allow_hyphen_values(true),
+        Kind::Seed => a
+            .value_parser(super::bem_args::seed)
+            .allow_hyphen_values(true),
         Kind::Numbers => a
             .value_parser(number)
             .allow_hyphen_values(true)
@@ -239,10 +260,10 @@ fn arg<T: SpecFlags>(f: &Field) -> Arg {
                 |(v, h)| clap::builder::PossibleValue::new(v.clone()).help(h.clone()),
             )))
         }
-        Kind::Plot => a.value_parser(out_file).value_name("FILE.svg|png"),
+        Kind::Output(name) => a.value_parser(out_file).value_name(*name),
         Kind::Text => a,
     };
-    if !matches!(f.kind, Kind::Plot) {
+    if !matches!(f.kind, Kind::Output(_)) {
         a = a.value_name(value_name);
     }
     // A default the help already states is not repeated by clap.
@@ -277,6 +298,10 @@ impl Given {
                 let n = m.try_get_one::<usize>(id).map_err(typed)?;
                 n.map(|v| Given::Count(*v as u64))
             }
+            Kind::Seed => m
+                .try_get_one::<u64>(id)
+                .map_err(typed)?
+                .map(|v| Given::Count(*v)),
             Kind::Numbers => m
                 .try_get_many::<f64>(id)
                 .map_err(typed)?
@@ -290,7 +315,7 @@ impl Given {
                 .try_get_one::<String>(id)
                 .map_err(typed)?
                 .map(|v| Given::Text(v.clone())),
-            Kind::Plot => match m.try_get_one::<OutFile>(id).map_err(typed)? {
+            Kind::Output(_) => match m.try_get_one::<OutFile>(id).map_err(typed)? {
                 Some(p) => {
                     let s = p
                         .to_str()
@@ -436,6 +461,30 @@ mod tests {
         assert_eq!(s.tolerance, Some(1e-3));
         let alias: AreaOutput = parse(&["--theory-tolerance", "1e-4"]).unwrap();
         assert_eq!(alias.tolerance, Some(1e-4));
+    }
+
+    #[test]
+    fn seeds_and_output_files() {
+        use persson_studies::surrogates::SurrogatesOutput;
+        let s: SurrogatesOutput = parse(&[
+            "--seed",
+            "18446744073709551615",
+            "--surfaces",
+            "s.npy",
+            "--kind",
+            "amplitude-adjusted",
+        ])
+        .unwrap();
+        assert_eq!(s.seed, Some(u64::MAX));
+        assert_eq!(s.surfaces.as_deref(), Some(std::path::Path::new("s.npy")));
+        let cmd = SpecArgs::<SurrogatesOutput>::augment_args(Command::new("t"));
+        let names = |id: &str| {
+            let a = cmd.get_arguments().find(|a| a.get_id() == id).unwrap();
+            a.get_value_names().unwrap()[0].to_string()
+        };
+        assert_eq!(names("surfaces"), "FILE.npy");
+        assert_eq!(names("plot_distribution"), "FILE.svg|png");
+        assert!(parse::<SurrogatesOutput>(&["--seed", "-1"]).is_err());
     }
 
     #[test]

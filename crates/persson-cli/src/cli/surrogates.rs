@@ -2,14 +2,12 @@
 //! surfaces of its spectrum? The FFT-BEM on the map and on K surrogates;
 //! the scene output `surrogates`.
 
-use persson::bem::Boundary;
-use persson_studies::input::{by_name, SurrogateKindName};
 use persson_studies::study::{Context, Inputs, Reads};
 use persson_studies::surrogates::{Surrogates, SurrogatesOutput};
 
 use super::args::{pressures, spectrum_spec, MaterialArgs, MeasuredArgs, SpectrumArgs};
-use super::files::{out_file, OutFile};
-use super::number::{count, number};
+use super::number::number;
+use super::spec_args::{SpecArgs, SpecFlags};
 use super::output::Format;
 
 /// The grid of the example's synthesised map.
@@ -30,70 +28,32 @@ pub struct Args {
     /// Nominal (mean) pressure σ0, Pa; repeatable or comma-separated.
     #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = number)]
     pressure: Vec<f64>,
-    /// Number K of surrogates (at least 2).
-    #[arg(long, default_value = "8", allow_hyphen_values = true, value_parser = count)]
-    count: usize,
-    /// Kind of surrogate: `phase` (random phases, Gaussian heights) or
-    /// `amplitude-adjusted` (the map's own heights, IAAFT).
-    #[arg(long, default_value = "phase")]
-    kind: SurrogateKindName,
-    /// Most IAAFT iterations of an amplitude-adjusted surrogate.
-    #[arg(long, default_value = "200", allow_hyphen_values = true, value_parser = count)]
-    iterations: usize,
-    /// Seed of the first surrogate (surrogate k uses seed + k − 1).
-    #[arg(long, default_value = "1", allow_hyphen_values = true, value_parser = super::bem_args::seed)]
-    seed: u64,
-    /// Without --surface: the grid N of a map synthesised from the spectrum flags.
-    #[arg(long, conflicts_with = "surface", allow_hyphen_values = true, value_parser = count)]
-    grid: Option<usize>,
-    /// Without --surface: the seed of that map.
-    #[arg(long, conflicts_with = "surface", allow_hyphen_values = true, value_parser = super::bem_args::seed)]
-    map_seed: Option<u64>,
-    /// Boundary condition of every solve.
-    #[arg(long, default_value = "periodic", value_parser = by_name::<Boundary>())]
-    boundary: Boundary,
-    /// Relative tolerance ε of every solve.
-    #[arg(long, default_value = "1e-8", allow_hyphen_values = true, value_parser = number)]
-    tolerance: f64,
-    /// Write each surrogate as .npy; `_k` (k = 1 … K) is added before the extension.
-    #[arg(long, value_name = "FILE.npy", value_parser = out_file)]
-    surfaces: Option<OutFile>,
-    /// Draw the pressure distributions of the map and the surrogates at the
-    /// largest pressure (.svg or .png).
-    #[arg(long, value_name = "FILE.svg|png", value_parser = out_file)]
-    plot_distribution: Option<OutFile>,
+    #[command(flatten)]
+    spec: SpecArgs<SurrogatesOutput>,
     #[command(flatten)]
     format: Format,
-    /// Also draw A/A0 against σ0, the map beside the surrogates' band (.svg or .png).
-    #[command(flatten)]
-    plot: super::plot::PlotArg,
+}
+
+/// The surrogates are written as `.npy`.
+impl SpecFlags for SurrogatesOutput {
+    const OUTPUTS: &'static [(&'static str, &'static str)] = &[("surfaces", "FILE.npy")];
 }
 
 /// Run `persson surrogates`.
-pub fn run(a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
+pub fn run(mut a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
     let spectrum = spectrum_spec(&a.spectrum, &a.measured)?;
     let material = a.material.spec(a.spectrum.example)?;
     let mut pressures = pressures(&a.pressure, a.spectrum.example)?;
     // The example: a 64² map synthesised from the example's spectrum, at
     // the example's loads from 1 MPa (below, it touches on a few nodes).
     let example = a.spectrum.example && a.measured.spec(None)?.is_none();
-    let grid = a.grid.or(example.then_some(EXAMPLE_GRID));
-    if example && a.pressure.is_empty() {
-        pressures.retain(|&p| p >= EXAMPLE_LEAST_PRESSURE);
+    if example {
+        a.spec.or_count("grid", EXAMPLE_GRID);
+        if a.pressure.is_empty() {
+            pressures.retain(|&p| p >= EXAMPLE_LEAST_PRESSURE);
+        }
     }
-    let spec = SurrogatesOutput {
-        count: Some(a.count),
-        kind: Some(a.kind),
-        iterations: Some(a.iterations),
-        seed: Some(a.seed),
-        grid,
-        map_seed: a.map_seed,
-        boundary: Some(a.boundary),
-        tolerance: Some(a.tolerance),
-        surfaces: a.surfaces.as_deref().map(std::path::Path::to_path_buf),
-        plot: a.plot.path(),
-        plot_distribution: a.plot_distribution.as_deref().map(std::path::Path::to_path_buf),
-    };
+    let spec = a.spec.spec()?;
     let inputs = Inputs {
         spectrum: Some(&spectrum),
         material: Some(&material),

@@ -441,7 +441,17 @@ pub fn surrogates(
     // measured periodic removed): its tilt would otherwise be a ridge at
     // the periodic BEM's edge, and power on the surrogates' axes.
     let map = match ctx.inputs.spectrum {
-        Some(crate::input::SpectrumSpec::HeightMap(m)) => m.conditioned_surface(boundary)?,
+        Some(crate::input::SpectrumSpec::HeightMap(m)) => {
+            if spec.grid.is_some() || spec.map_seed.is_some() {
+                return Err(named(Error::Inconsistent {
+                    name: "grid / map_seed".into(),
+                    requirement: "only for a map synthesised from a spectrum (a height map \
+                                  has its own grid)"
+                        .into(),
+                }));
+            }
+            m.conditioned_surface(boundary)?
+        }
         _ => crate::bem::solve::bem_surface(
             ctx,
             ("outputs.surrogates.", spec.grid, spec.map_seed),

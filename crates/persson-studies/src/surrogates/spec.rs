@@ -24,7 +24,7 @@ pub struct SurrogatesOutput {
     /// Most IAAFT iterations of an amplitude-adjusted surrogate (default 200).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub iterations: Option<usize>,
-    /// Seed of the first surrogate; surrogate k uses seed + k (default 1).
+    /// Seed of the first surrogate; surrogate k (k = 1 … K) uses seed + k − 1 (default 1).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub seed: Option<u64>,
     /// Grid side N of a map synthesised from the scene's spectrum (a height
