@@ -40,7 +40,7 @@ pub fn run(mut a: Args, files: &mut persson_studies::output::Files) -> anyhow::R
         _ => a.pressure.clone(),
     };
     if example {
-        a.spec.or_number(
+        a.spec.or(
             "work_of_adhesion",
             persson_studies::adhesion::EXAMPLE_WORK_OF_ADHESION,
         );

@@ -180,7 +180,7 @@ pub struct RoughArgs {
     #[arg(long, conflicts_with = "surface", allow_hyphen_values = true, value_parser = super::number::count)]
     pub grid: Option<usize>,
     /// Seed of the synthesised surface (Pcg64Mcg, value-stable).
-    #[arg(long, default_value = "1", conflicts_with = "surface", allow_hyphen_values = true, value_parser = seed)]
+    #[arg(long, default_value = "1", conflicts_with = "surface", allow_hyphen_values = true, value_parser = super::number::seed)]
     pub seed: u64,
     #[command(flatten)]
     pub spectrum: SpectrumArgs,
@@ -335,19 +335,6 @@ impl MaterialArgs {
     }
 }
 
-/// As [`super::number::count`], for a seed (an integer from 0 to 2⁶⁴ − 1).
-pub fn seed(s: &str) -> Result<u64, String> {
-    let t = s.trim();
-    if let Ok(v) = t.parse::<u64>() {
-        return Ok(v);
-    }
-    match t.parse::<f64>() {
-        Ok(v) => Err(format!(
-            "must be an integer from 0 to 18446744073709551615 (a seed), got {v}"
-        )),
-        Err(_) => Err(format!("`{s}` is not a seed: give an integer >= 0")),
-    }
-}
 
 /// The seal and its fluid of `bem rough --leakage` and `compare --leakage`
 /// (`persson leakage` derives its flags from the spec `LeakageOutput`).

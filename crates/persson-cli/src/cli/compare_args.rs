@@ -41,7 +41,7 @@ pub struct BemArgs {
     #[arg(long, value_name = "K", allow_hyphen_values = true, value_parser = super::number::count)]
     pub seeds: Option<usize>,
     /// First seed (Pcg64Mcg, value-stable) [default: 1].
-    #[arg(long, value_name = "SEED", allow_hyphen_values = true, value_parser = super::bem_args::seed)]
+    #[arg(long, value_name = "SEED", allow_hyphen_values = true, value_parser = super::number::seed)]
     pub seed: Option<u64>,
     /// Exponent α of A(N) = A∞ + c N^−α (Campañá & Müser 2007: 0.7).
     #[arg(long, default_value_t = DEFAULT_ALPHA, allow_hyphen_values = true, conflicts_with = "fit_alpha", value_parser = super::number::number)]
@@ -198,7 +198,7 @@ pub struct EnsembleArgs {
     #[arg(long, value_name = "K", default_value_t = 4, allow_hyphen_values = true, value_parser = super::number::count)]
     pub seeds: usize,
     /// First seed (Pcg64Mcg, value-stable).
-    #[arg(long, value_name = "SEED", default_value_t = 1, allow_hyphen_values = true, value_parser = super::bem_args::seed)]
+    #[arg(long, value_name = "SEED", default_value_t = 1, allow_hyphen_values = true, value_parser = super::number::seed)]
     pub seed: u64,
     /// Pixels of the coarsest grid per shortest wavelength 2π/q_s: q_s is clipped to
     /// N_coarsest q_l / this (with a warning).

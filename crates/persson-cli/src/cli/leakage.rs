@@ -38,10 +38,10 @@ pub fn run(mut a: Args, files: &mut persson_studies::output::Files) -> anyhow::R
     if a.spectrum.example {
         // The example's water seal where the fluid or its drive is not given.
         let water = LeakageOutput::example();
-        a.spec.or_number("viscosity", water.viscosity);
+        a.spec.or("viscosity", water.viscosity);
         if !a.spec.has("inlet_pressure") {
             a.spec
-                .or_number("pressure_drop", water.pressure_drop.unwrap_or_default());
+                .or("pressure_drop", water.pressure_drop.unwrap_or_default());
         }
     }
     let out = a.spec.spec()?;

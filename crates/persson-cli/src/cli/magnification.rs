@@ -32,7 +32,7 @@ pub fn run(mut a: Args, files: &mut persson_studies::output::Files) -> anyhow::R
     let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
     if a.spectrum.example {
         a.spec
-            .or_number("nominal_pressure", super::args::example::PRESSURES[3]);
+            .or("nominal_pressure", super::args::example::PRESSURES[3]);
     }
     let ctx = persson_studies::study::Context::with_contact(surface, &[]);
     super::study::run::<persson_studies::magnification::Magnification>(

@@ -70,3 +70,17 @@ pub fn count(s: &str) -> Result<usize, String> {
         Err(_) => Err(format!("`{s}` is not a count: give an integer >= 0")),
     }
 }
+
+/// As [`count`], for a seed (an integer from 0 to 2⁶⁴ − 1).
+pub fn seed(s: &str) -> Result<u64, String> {
+    let t = s.trim();
+    if let Ok(v) = t.parse::<u64>() {
+        return Ok(v);
+    }
+    match t.parse::<f64>() {
+        Ok(v) => Err(format!(
+            "must be an integer from 0 to 18446744073709551615 (a seed), got {v}"
+        )),
+        Err(_) => Err(format!("`{s}` is not a seed: give an integer >= 0")),
+    }
+}

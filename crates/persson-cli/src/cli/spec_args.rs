@@ -8,7 +8,7 @@
 //! | field's schema | flag |
 //! |---|---|
 //! | number | `--field X`, a plain SI number ([`super::number::number`]) |
-//! | integer | `--field N` ([`super::number::count`]); a 64-bit one, a seed ([`super::bem_args::seed`]) |
+//! | integer | `--field N` ([`super::number::count`]); a 64-bit one, a seed ([`super::number::seed`]) |
 //! | array of numbers | `--field X,Y,…`, repeatable |
 //! | boolean | `--field`, a switch |
 //! | one of named values | `--field NAME`, the values and their descriptions listed |
@@ -61,18 +61,10 @@ impl<T: SpecFlags> SpecArgs<T> {
         self.given.contains_key(name)
     }
 
-    /// Give the field `name` the number `v` unless a flag gave it (the
-    /// example's values).
-    pub fn or_number(&mut self, name: &str, v: f64) -> &mut Self {
-        self.given.entry(name.into()).or_insert(Given::Number(v));
-        self
-    }
-
-    /// Give the field `name` the count `n` unless a flag gave it.
-    pub fn or_count(&mut self, name: &str, n: usize) -> &mut Self {
-        self.given
-            .entry(name.into())
-            .or_insert(Given::Count(n as u64));
+    /// Give the field `name` the value `v` (a number or a count) unless a
+    /// flag gave it: the built-in example's values.
+    pub fn or(&mut self, name: &str, v: impl Into<Given>) -> &mut Self {
+        self.given.entry(name.into()).or_insert(v.into());
         self
     }
 
@@ -247,7 +239,7 @@ fn arg<T: SpecFlags>(f: &Field) -> Arg {
         Kind::Number => a.value_parser(number).allow_hyphen_values(true),
         Kind::Count => a.value_parser(count).allow_hyphen_values(true),
         Kind::Seed => a
-            .value_parser(super::bem_args::seed)
+            .value_parser(super::number::seed)
             .allow_hyphen_values(true),
         Kind::Numbers => a
             .value_parser(number)
@@ -275,7 +267,7 @@ fn arg<T: SpecFlags>(f: &Field) -> Arg {
 
 /// One field's value as given: what serde reads it as.
 #[derive(Debug, Clone, PartialEq)]
-enum Given {
+pub enum Given {
     Number(f64),
     Count(u64),
     Numbers(Vec<f64>),
@@ -325,6 +317,18 @@ impl Given {
                 None => None,
             },
         })
+    }
+}
+
+impl From<f64> for Given {
+    fn from(v: f64) -> Self {
+        Given::Number(v)
+    }
+}
+
+impl From<usize> for Given {
+    fn from(n: usize) -> Self {
+        Given::Count(n as u64)
     }
 }
 

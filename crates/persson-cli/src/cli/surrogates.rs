@@ -48,7 +48,7 @@ pub fn run(mut a: Args, files: &mut persson_studies::output::Files) -> anyhow::R
     // the example's loads from 1 MPa (below, it touches on a few nodes).
     let example = a.spectrum.example && a.measured.spec(None)?.is_none();
     if example {
-        a.spec.or_count("grid", EXAMPLE_GRID);
+        a.spec.or("grid", EXAMPLE_GRID);
         if a.pressure.is_empty() {
             pressures.retain(|&p| p >= EXAMPLE_LEAST_PRESSURE);
         }
