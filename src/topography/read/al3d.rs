@@ -44,11 +44,7 @@ const INVALID_RELATIVE: f64 = 1.5e-7;
 const MAX_TAGS: usize = 10_000;
 
 pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
-    let f = Bin {
-        bytes: b,
-        path,
-        format: "Alicona .al3d",
-    };
+    let f = Bin::new(b, path, "Alicona .al3d");
     if b.len() < MAGIC.len() && MAGIC.starts_with(b) {
         return Err(f.bad("truncated within the magic AliconaImaging"));
     }
@@ -104,7 +100,7 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
     }
     let (dx, rx) = number("PixelSizeXMeter")?;
     let (dy, ry) = number("PixelSizeYMeter")?;
-    let metres = || Unit::Stated("m".into(), LengthUnit::Metre);
+    let metres = || Unit::of(LengthUnit::Metre);
     Ok(Raw {
         size: Some(Stored {
             lx: nx as f64 * dx,

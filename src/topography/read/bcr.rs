@@ -44,24 +44,16 @@ fn utf16(s: &str) -> Vec<u8> {
 }
 
 pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
-    let f = Bin {
-        bytes: b,
-        path,
-        format: "BCR-STM/BCRF",
-    };
+    let f = Bin::new(b, path, "BCR-STM/BCRF");
     let wide = b.starts_with(&utf16(MAGIC));
     if !wide && !b.starts_with(MAGIC.as_bytes()) {
         return Err(f.bad("the file does not start with fileformat = bcrstm or bcrf"));
     }
     let text = |bytes: &[u8]| -> String {
         if wide {
-            let units: Vec<u16> = bytes
-                .chunks_exact(2)
-                .map(|c| u16::from_le_bytes([c[0], c[1]]))
-                .collect();
-            String::from_utf16_lossy(&units)
+            String::from_utf16_lossy(&super::bin::utf16_units(bytes))
         } else {
-            bytes.iter().map(|&c| char::from(c)).collect()
+            super::bin::latin1(bytes)
         }
     };
     // The header's length is one of its first fields.

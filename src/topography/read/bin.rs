@@ -15,6 +15,15 @@ pub(crate) struct Bin<'b> {
 }
 
 impl<'b> Bin<'b> {
+    /// `bytes` of the file `path` in `format`.
+    pub fn new(bytes: &'b [u8], path: &'b Path, format: &'static str) -> Self {
+        Bin {
+            bytes,
+            path,
+            format,
+        }
+    }
+
     /// An error naming the file and the format.
     pub fn bad(&self, message: impl std::fmt::Display) -> Error {
         Error::parse(self.path, 0, 0, format!("{}: {message}", self.format))
@@ -81,4 +90,16 @@ impl<'b> Bin<'b> {
 /// `a × b` (× `c`) as a count of values, or `None` on overflow.
 pub(crate) fn product(a: usize, b: usize, item: usize) -> Option<usize> {
     a.checked_mul(b)?.checked_mul(item)
+}
+
+/// The UTF-16LE code units of `b` (an odd last byte left out).
+pub(crate) fn utf16_units(b: &[u8]) -> Vec<u16> {
+    b.chunks_exact(2)
+        .map(|c| u16::from_le_bytes([c[0], c[1]]))
+        .collect()
+}
+
+/// `b` read as Latin-1: every byte is its own code point.
+pub(crate) fn latin1(b: &[u8]) -> String {
+    b.iter().map(|&c| char::from(c)).collect()
 }

@@ -97,7 +97,7 @@ pub(crate) fn parse(path: &Path, bytes: &[u8], options: &ReadOptions) -> Result<
             }
         })
         .collect();
-    let metres = || Unit::Stated("m".into(), LengthUnit::Metre);
+    let metres = || Unit::of(LengthUnit::Metre);
     Ok(Raw {
         size: Some(Stored {
             lx: nx as f64 * dx,

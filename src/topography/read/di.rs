@@ -57,11 +57,7 @@ const MAX_HEADER: usize = 1 << 22;
 type Section = (String, Vec<(String, String)>);
 
 pub(crate) fn parse(path: &Path, b: &[u8], options: &ReadOptions) -> Result<Raw> {
-    let f = Bin {
-        bytes: b,
-        path,
-        format: "Nanoscope .spm/.di",
-    };
+    let f = Bin::new(b, path, "Nanoscope .spm/.di");
     if b.len() < MAGIC.len() && MAGIC.starts_with(b) {
         return Err(f.bad("truncated within the first line \\*File list"));
     }

@@ -94,11 +94,7 @@ struct Blocks<'b> {
 }
 
 pub(crate) fn parse(path: &Path, b: &[u8], options: &ReadOptions) -> Result<Raw> {
-    let f = Bin {
-        bytes: b,
-        path,
-        format: "FRT MicroProf .frt",
-    };
+    let f = Bin::new(b, path, "FRT MicroProf .frt");
     if !b.starts_with(MAGIC) {
         return Err(f.bad("the file does not start with FRTM_GLIDERV"));
     }
@@ -157,7 +153,7 @@ pub(crate) fn parse(path: &Path, b: &[u8], options: &ReadOptions) -> Result<Raw>
         }
         _ => i64::MIN..=i64::MAX,
     };
-    let m = || Unit::Stated("m".into(), LengthUnit::Metre);
+    let m = || Unit::of(LengthUnit::Metre);
     Ok(Raw {
         size: Some(Stored {
             lx,

@@ -155,7 +155,7 @@ mod tests {
         );
         let w = h.width.unwrap();
         assert_eq!(w.value, 12.34);
-        assert_eq!(w.unit, Unit::Stated("µm".into(), LengthUnit::Micrometre));
+        assert_eq!(w.unit, Unit::of(LengthUnit::Micrometre));
         assert!((w.relative_resolution - 0.01 / 12.34).abs() < 1e-15);
         assert_eq!(h.height.unwrap().value, 5678.9);
         assert_eq!(h.value_unit.as_deref(), Some("m"));

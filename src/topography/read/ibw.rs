@@ -134,11 +134,7 @@ fn wave_type(w: &Fields) -> Result<(usize, Kind)> {
 }
 
 pub(crate) fn parse(path: &Path, b: &[u8], options: &ReadOptions) -> Result<Raw> {
-    let f = Bin {
-        bytes: b,
-        path,
-        format: "Igor binary wave .ibw",
-    };
+    let f = Bin::new(b, path, "Igor binary wave .ibw");
     let big = big_endian(&f)?;
     let w = Fields { f, big };
     let f = &w.f;

@@ -46,11 +46,7 @@ const INVALID: i32 = 2_147_483_640;
 const F32_RESOLUTION: f64 = 1.2e-7;
 
 pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
-    let f = Bin {
-        bytes: b,
-        path,
-        format: "Zygo MetroPro .dat",
-    };
+    let f = Bin::new(b, path, "Zygo MetroPro .dat");
     let magic = f.slice(0, 4, "the magic")?;
     let Some(kind) = MAGICS.iter().position(|m| *m == magic) else {
         return Err(f.bad("the file does not start with a MetroPro magic (88 1B 03 6F–71)"));
@@ -86,7 +82,7 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
         })
         .collect();
     let dx = f64::from(f.be_f32(184, "lateral resolution")?);
-    let metres = || Unit::Stated("m".into(), LengthUnit::Metre);
+    let metres = || Unit::of(LengthUnit::Metre);
     let size = if dx > 0.0 && dx.is_finite() {
         Some(Stored {
             lx: nx as f64 * dx,

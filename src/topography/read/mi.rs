@@ -33,7 +33,7 @@
 use std::collections::HashMap;
 use std::path::Path;
 
-use super::bin::{product, Bin};
+use super::bin::{latin1, product, Bin};
 use super::channel;
 use super::units::{not_a_length, LengthUnit, Unit};
 use super::{Raw, ReadOptions, Stored};
@@ -73,10 +73,6 @@ impl Header {
             .find(|(k, _)| k == key)
             .map(|(_, v)| v.as_str())
     }
-}
-
-fn latin1(b: &[u8]) -> String {
-    b.iter().map(|&c| char::from(c)).collect()
 }
 
 fn header(f: &Bin) -> Result<Header> {
@@ -144,11 +140,7 @@ fn names(buffers: &[Buffer]) -> Vec<String> {
 }
 
 pub(crate) fn parse(path: &Path, bytes: &[u8], options: &ReadOptions) -> Result<Raw> {
-    let f = Bin {
-        bytes,
-        path,
-        format: FORMAT,
-    };
+    let f = Bin::new(bytes, path, FORMAT);
     if !sniff(bytes) {
         return Err(f.bad("the file does not start with `fileType`"));
     }
@@ -245,7 +237,7 @@ pub(crate) fn parse(path: &Path, bytes: &[u8], options: &ReadOptions) -> Result<
         size: Some(Stored {
             lx,
             ly,
-            unit: Unit::Stated("m".into(), LengthUnit::Metre),
+            unit: Unit::of(LengthUnit::Metre),
             resolution,
         }),
         height_unit,

@@ -72,21 +72,13 @@ const END_OF_CHAIN: u32 = 0xFFFF_FFFE;
 
 /// Whether `bytes` are a compound file holding a `ScopedContents` stream.
 pub(crate) fn sniff(bytes: &[u8]) -> bool {
-    let f = Bin {
-        bytes,
-        path: Path::new(""),
-        format: FORMAT,
-    };
+    let f = Bin::new(bytes, Path::new(""), FORMAT);
     bytes.starts_with(OLE_MAGIC)
         && Cfb::open_directory(&f).is_ok_and(|c| c.find(&f, STREAM).is_ok_and(|e| e.is_some()))
 }
 
 pub(crate) fn parse(path: &Path, b: &[u8], options: &ReadOptions) -> Result<Raw> {
-    let f = Bin {
-        bytes: b,
-        path,
-        format: FORMAT,
-    };
+    let f = Bin::new(b, path, FORMAT);
     if !b.starts_with(OLE_MAGIC) {
         return Err(f.bad("the file is not a compound (OLE) file: no D0 CF 11 E0 magic"));
     }
@@ -95,11 +87,7 @@ pub(crate) fn parse(path: &Path, b: &[u8], options: &ReadOptions) -> Result<Raw>
         .find(&f, STREAM)?
         .ok_or_else(|| f.bad(format!("the compound file has no {STREAM} stream")))?;
     let stream = cfb.read(&f, &entry)?;
-    let s = Bin {
-        bytes: &stream,
-        path,
-        format: FORMAT,
-    };
+    let s = Bin::new(&stream, path, FORMAT);
     let body = s.slice(8, stream.len().saturating_sub(8), "the document")?;
     let surfaces = surfaces(&s, body)?;
     let channels: Vec<(&str, bool)> = surfaces
@@ -241,11 +229,7 @@ impl Cfb {
 
     /// Directory entry `i` (`None` for an unused one).
     fn entry(&self, f: &Bin, i: usize) -> Result<Option<Stream>> {
-        let d = Bin {
-            bytes: &self.directory,
-            path: f.path,
-            format: FORMAT,
-        };
+        let d = Bin::new(&self.directory, f.path, FORMAT);
         let at = i * 128;
         if d.slice(at + 66, 1, "a directory entry")?[0] == 0 {
             return Ok(None);
@@ -269,7 +253,7 @@ impl Cfb {
         let wanted: Vec<u16> = name.encode_utf16().collect();
         for (i, e) in self.directory.chunks_exact(128).enumerate() {
             let len = usize::from(u16::from_le_bytes([e[64], e[65]]));
-            let units: Vec<u16> = e[..len.min(64)].chunks_exact(2).map(le_u16).collect();
+            let units = super::bin::utf16_units(&e[..len.min(64)]);
             if e[66] == 2 && units.strip_suffix(&[0]).unwrap_or(&units) == wanted {
                 return self.entry(f, i);
             }
@@ -396,8 +380,7 @@ fn text(v: &[u8]) -> Option<String> {
     if rest.len() % 2 != 0 {
         return None;
     }
-    let units: Vec<u16> = rest.chunks_exact(2).map(le_u16).collect();
-    String::from_utf16(&units)
+    String::from_utf16(&super::bin::utf16_units(rest))
         .ok()
         .map(|s| s.trim_end_matches('\0').to_string())
 }
@@ -621,11 +604,7 @@ fn array(f: &Bin, object: &[u8], count: usize, what: &str) -> Result<(Vec<u8>, u
         return Err(f.bad(format!("{what}: {stated} values for a grid of {count}")));
     }
     let data = need(f, object, &[2, 2], what)?;
-    let d = Bin {
-        bytes: data,
-        path: f.path,
-        format: FORMAT,
-    };
+    let d = Bin::new(data, f.path, FORMAT);
     let total = d.u32(0, what)? as u64 | (u64::from(d.u32(4, what)?) << 32);
     let total = usize::try_from(total).unwrap_or(usize::MAX);
     if total % count != 0 || total / count > 8 {

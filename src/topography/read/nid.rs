@@ -182,11 +182,7 @@ fn blocks<'h>(f: &Bin, ini: &'h Ini) -> Result<Vec<Block<'h>>> {
 }
 
 pub(crate) fn parse(path: &Path, bytes: &[u8], options: &ReadOptions) -> Result<Raw> {
-    let f = Bin {
-        bytes,
-        path,
-        format: FORMAT,
-    };
+    let f = Bin::new(bytes, path, FORMAT);
     if !sniff(bytes) {
         return Err(f.bad("the file does not start with [DataSet]"));
     }

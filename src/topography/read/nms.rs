@@ -74,11 +74,7 @@ fn f64_at(f: &Bin, at: usize, what: &str) -> Result<f64> {
 }
 
 pub(crate) fn parse(path: &Path, bytes: &[u8], _options: &ReadOptions) -> Result<Raw> {
-    let f = Bin {
-        bytes,
-        path,
-        format: FORMAT,
-    };
+    let f = Bin::new(bytes, path, FORMAT);
     let version = f.slice(VERSION_AT, VERSION.len(), "the version")?;
     if version != VERSION {
         return Err(f.bad(format!(
@@ -140,10 +136,10 @@ pub(crate) fn parse(path: &Path, bytes: &[u8], _options: &ReadOptions) -> Result
         size: Some(Stored {
             lx: nx as f64 * dx,
             ly: ny as f64 * dy,
-            unit: Unit::Stated("nm".into(), LengthUnit::Nanometre),
+            unit: Unit::of(LengthUnit::Nanometre),
             resolution: F64_RESOLUTION,
         }),
-        height_unit: Unit::Stated("µm".into(), LengthUnit::Micrometre),
+        height_unit: Unit::of(LengthUnit::Micrometre),
         ..Raw::map(nx, ny, heights)
     })
 }

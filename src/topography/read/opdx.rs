@@ -277,11 +277,7 @@ fn names(c: &Cursor, at: usize, n: usize, what: &str) -> Result<Vec<String>> {
 }
 
 pub(crate) fn parse(path: &Path, b: &[u8], options: &ReadOptions) -> Result<Raw> {
-    let f = Bin {
-        bytes: b,
-        path,
-        format: "Bruker Dektak .opdx",
-    };
+    let f = Bin::new(b, path, "Bruker Dektak .opdx");
     if !b.starts_with(MAGIC) {
         return Err(f.bad("the file does not start with VCA DATA"));
     }

@@ -57,11 +57,7 @@ const HEADER_V2: usize = 352;
 /// Whether `bytes` are a little-endian TIFF whose first IFD holds Park's
 /// magic tag.
 pub(crate) fn sniff(bytes: &[u8]) -> bool {
-    let f = Bin {
-        bytes,
-        path: Path::new(""),
-        format: FORMAT,
-    };
+    let f = Bin::new(bytes, Path::new(""), FORMAT);
     bytes.starts_with(TIFF_LE)
         && first_ifd(&f).is_ok_and(|ifd| {
             ifd.iter()
@@ -133,21 +129,13 @@ fn long(f: &Bin, e: &Entry, what: &str) -> Result<u32> {
 
 /// A fixed-length UTF-16LE text field, NUL- and space-trimmed.
 fn utf16(b: &[u8]) -> String {
-    let units: Vec<u16> = b
-        .chunks_exact(2)
-        .map(|c| u16::from_le_bytes([c[0], c[1]]))
-        .collect();
-    String::from_utf16_lossy(&units)
+    String::from_utf16_lossy(&super::bin::utf16_units(b))
         .trim_matches(|c: char| c == '\0' || c == ' ')
         .to_string()
 }
 
 pub(crate) fn parse(path: &Path, b: &[u8], options: &ReadOptions) -> Result<Raw> {
-    let f = Bin {
-        bytes: b,
-        path,
-        format: FORMAT,
-    };
+    let f = Bin::new(b, path, FORMAT);
     if b.starts_with(b"MM\0*") {
         return Err(f.bad("a big-endian TIFF: Park Systems writes little-endian (II) files"));
     }
@@ -169,20 +157,16 @@ pub(crate) fn parse(path: &Path, b: &[u8], options: &ReadOptions) -> Result<Raw>
         )));
     }
     let version = long(&f, tag(TAG_VERSION, "version")?, "version")?;
-    let h = Bin {
-        bytes: value(&f, tag(TAG_HEADER, "header")?, "the header")?,
+    let h = Bin::new(
+        value(&f, tag(TAG_HEADER, "header")?, "the header")?,
         path,
-        format: FORMAT,
-    };
+        FORMAT,
+    );
     let header = Header::read(&f, &h, version, options)?;
     let (nx, ny) = (header.nx, header.ny);
     let len = product(nx, ny, header.item)
         .ok_or_else(|| f.bad(format!("nx × ny = {nx} × {ny} is too large")))?;
-    let d = Bin {
-        bytes: value(&f, tag(TAG_DATA, "data")?, "the data")?,
-        path,
-        format: FORMAT,
-    };
+    let d = Bin::new(value(&f, tag(TAG_DATA, "data")?, "the data")?, path, FORMAT);
     let data = d.slice(0, len, "the data (tag 50434)")?;
     let (gain, scale, offset) = (header.gain, header.scale, header.offset);
     let values = values(data, header.data_type);
@@ -210,7 +194,7 @@ pub(crate) fn parse(path: &Path, b: &[u8], options: &ReadOptions) -> Result<Raw>
         size: Some(Stored {
             lx: header.lx,
             ly: header.ly,
-            unit: Unit::Stated("µm".into(), LengthUnit::Micrometre),
+            unit: Unit::of(LengthUnit::Micrometre),
             resolution: 4.0 * f64::EPSILON,
         }),
         height_unit: header.height_unit,

@@ -42,11 +42,7 @@ const UNDEFINED: f32 = 1_000_001.0;
 const F32_RESOLUTION: f64 = 1.2e-7;
 
 pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
-    let f = Bin {
-        bytes: b,
-        path,
-        format: "Sensofar .plu",
-    };
+    let f = Bin::new(b, path, "Sensofar .plu");
     f.slice(0, LAYERS + 8, "the header")?;
     let kind = f.u32(428, "measurement type")?;
     if kind != TOPOGRAPHY {
@@ -80,7 +76,7 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
         .collect();
     let dx = f64::from(f.f32(404, "µm per pixel along x")?);
     let dy = f64::from(f.f32(408, "µm per pixel along y")?);
-    let micrometres = || Unit::Stated("µm".into(), LengthUnit::Micrometre);
+    let micrometres = || Unit::of(LengthUnit::Micrometre);
     Ok(Raw {
         size: Some(Stored {
             lx: nx as f64 * dx,

@@ -54,11 +54,7 @@ struct Header {
 }
 
 pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
-    let f = Bin {
-        bytes: b,
-        path,
-        format: FORMAT,
-    };
+    let f = Bin::new(b, path, FORMAT);
     let (header, heights) = if b.starts_with(MAGIC_ASCII) {
         ascii(&f)?
     } else if b.starts_with(MAGIC_BINARY) {
@@ -66,7 +62,7 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
     } else {
         return Err(f.bad("the file starts with neither aISO-1.0 nor bISO-1.0"));
     };
-    let metres = || Unit::Stated("m".into(), LengthUnit::Metre);
+    let metres = || Unit::of(LengthUnit::Metre);
     Ok(Raw {
         size: Some(Stored {
             lx: header.nx as f64 * header.dx,

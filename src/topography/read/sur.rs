@@ -50,11 +50,7 @@ const HEADER: usize = 512;
 const F32_RESOLUTION: f64 = 1.2e-7;
 
 pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
-    let f = Bin {
-        bytes: b,
-        path,
-        format: "Digital Surf .sur",
-    };
+    let f = Bin::new(b, path, "Digital Surf .sur");
     if b.starts_with(MAGIC_COMPRESSED) {
         return Err(f.bad("compressed (DSCOMPRESSED) files are not read: save it uncompressed"));
     }

@@ -97,7 +97,7 @@ fn matrix(path: &Path, rows: Rows, h: &Header) -> Result<Raw> {
     match (&h.value_unit, h.to_metres) {
         (_, Some(f)) => {
             raw.heights.iter_mut().for_each(|v| *v *= f);
-            raw.height_unit = Unit::Stated("m".into(), LengthUnit::Metre);
+            raw.height_unit = Unit::of(LengthUnit::Metre);
         }
         (Some(u), None) => {
             raw.height_unit = Unit::declared("the heights", u).map_err(bad)?;
@@ -117,7 +117,7 @@ fn size(h: &Header, nx: usize, ny: usize) -> std::result::Result<Option<Stored>,
         lx,
         ly,
         unit: if stated {
-            Unit::Stated("m".into(), LengthUnit::Metre)
+            Unit::of(LengthUnit::Metre)
         } else {
             Unit::Unstated
         },

@@ -28,11 +28,7 @@ pub(crate) const MAGIC: &[u8] = b"Binary TrueMap Data File v2.0";
 const MAGIC_FIELD: usize = 32;
 
 pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
-    let f = Bin {
-        bytes: b,
-        path,
-        format: "TrueMap .tmd",
-    };
+    let f = Bin::new(b, path, "TrueMap .tmd");
     if !b.starts_with(MAGIC) {
         return Err(f.bad("the file does not start with Binary TrueMap Data File v2.0"));
     }
@@ -65,7 +61,7 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
         .chunks_exact(4)
         .map(|c| f64::from(f32::from_le_bytes([c[0], c[1], c[2], c[3]])))
         .collect();
-    let mm = || Unit::Stated("mm".into(), LengthUnit::Millimetre);
+    let mm = || Unit::of(LengthUnit::Millimetre);
     Ok(Raw {
         size: Some(Stored {
             lx,

@@ -120,6 +120,12 @@ pub(crate) enum Unit {
 }
 
 impl Unit {
+    /// `u`, stated by its symbol: the unit a format fixes (`.sdf` in
+    /// metres, `.tmd` in millimetres).
+    pub(crate) fn of(u: LengthUnit) -> Unit {
+        Unit::Stated(u.symbol().to_string(), u)
+    }
+
     /// The unit of a declared unit field (`ZUnits`, `Value units`, `data
     /// unit`): empty is unstated, a length is stated, anything else (a phase
     /// in `deg`, a signal in `V`) is an error message naming it.

@@ -100,11 +100,7 @@ fn amount(f: &Bin, what: &str, text: &str) -> Result<(f64, String, LengthUnit, f
 }
 
 pub(crate) fn parse(path: &Path, bytes: &[u8], _options: &ReadOptions) -> Result<Raw> {
-    let f = Bin {
-        bytes,
-        path,
-        format: FORMAT,
-    };
+    let f = Bin::new(bytes, path, FORMAT);
     // The three lines before the header: its size is on the third.
     let head: String = bytes.iter().take(200).map(|&c| char::from(c)).collect();
     let size_line = head

@@ -70,11 +70,7 @@ struct Block<'b> {
 }
 
 pub(crate) fn parse(path: &Path, b: &[u8], options: &ReadOptions) -> Result<Raw> {
-    let f = Bin {
-        bytes: b,
-        path,
-        format: "Wyko .opd",
-    };
+    let f = Bin::new(b, path, "Wyko .opd");
     if !sniff(b) {
         return Err(f.bad("the file does not start with its Directory entry"));
     }
@@ -130,7 +126,7 @@ pub(crate) fn parse(path: &Path, b: &[u8], options: &ReadOptions) -> Result<Raw>
             d.len()
         ))
     })?;
-    let mm = || Unit::Stated("mm".into(), LengthUnit::Millimetre);
+    let mm = || Unit::of(LengthUnit::Millimetre);
     let mut raw = Raw::map(
         nx,
         ny,

@@ -318,7 +318,7 @@ pub(crate) fn parse(path: &Path, b: &[u8]) -> Result<Raw> {
             }
         })
         .collect();
-    let metres = || Unit::Stated("m".into(), LengthUnit::Metre);
+    let metres = || Unit::of(LengthUnit::Metre);
     Ok(Raw {
         nx: l.nx,
         ny: l.ny,

@@ -41,11 +41,7 @@ pub(crate) struct H5<'b> {
 impl<'b> H5<'b> {
     /// The file's superblock (at offset 0).
     pub(crate) fn open(path: &'b Path, bytes: &'b [u8], format: &'static str) -> Result<Self> {
-        let f = Bin {
-            bytes,
-            path,
-            format,
-        };
+        let f = Bin::new(bytes, path, format);
         if !sniff(bytes) {
             return Err(f.bad("not an HDF5 file (no HDF5 signature at its start)"));
         }
