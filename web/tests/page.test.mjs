@@ -75,14 +75,16 @@ const downloaded = (name) => page.evaluate(async (n) => {
 const shownText = () => page.$eval("#text", (e) => e.textContent);
 const status = () => page.$eval("#status", (e) => e.textContent);
 
+// Compute the form. Two runs may end with the same status (`computed in
+// 12 ms` twice), so the status is cleared first and the wait is for this
+// run's: set to "computing…" by the click, then to its outcome.
 async function compute() {
-  const before = await page.$eval("#status", (e) => e.textContent);
+  await page.$eval("#status", (e) => { e.textContent = ""; });
   await page.click("#run");
-  await page.waitForFunction((b) => {
+  await page.waitForFunction(() => {
     const s = document.getElementById("status").textContent;
-    return s !== "computing…" && s !== b || s.startsWith("not computed");
-  }, before);
-  await page.waitForFunction(() => !/computing/.test(document.getElementById("status").textContent));
+    return s !== "" && !/computing/.test(s);
+  });
 }
 
 // One unit in the last digit a number is printed with (`2.8e-13` → 1e-14).
