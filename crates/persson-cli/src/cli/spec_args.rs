@@ -113,12 +113,13 @@ struct Field {
     default: Option<String>,
 }
 
-/// The spec's schema, its definitions inlined where a field refers to one.
+/// The spec's JSON Schema (the definitions it refers to under `$defs`).
 fn schema<T: JsonSchema>() -> Value {
     schemars::schema_for!(T).to_value()
 }
 
-/// The fields of `T` that are not the command's own, in the schema's order.
+/// The fields of `T` that are not the command's own, in the schema's
+/// (alphabetical) order.
 fn fields<T: SpecFlags>() -> Vec<Field> {
     let root = schema::<T>();
     let Some(props) = root.get("properties").and_then(Value::as_object) else {
