@@ -7,44 +7,58 @@ use persson_studies::scene::run;
 
 use super::args::{MeasuredArgs, SpectrumArgs};
 use super::output::{print_warned, Format};
+use super::spec_args::{SpecArgs, SpecFlags};
+use persson_studies::scene::SpectrumOutput;
 
-/// Arguments of `persson spectrum`.
+/// Arguments of `persson spectrum`: the shared ones, the spec's
+/// ([`SpectrumOutput`]) derived from it, and the measured spectrum's CSV.
 #[derive(clap::Args, Debug)]
 pub struct Args {
     #[command(flatten)]
     spectrum: SpectrumArgs,
     #[command(flatten)]
     measured: MeasuredArgs,
-    /// Lower end of the q range for the moments (default q_l), 1/m.
-    #[arg(long, allow_hyphen_values = true, conflicts_with = "surface", value_parser = super::number::number)]
-    q_min: Option<f64>,
+    #[command(flatten)]
+    spec: SpecArgs<SpectrumOutput>,
     /// Upper end of the q range for the moments (default q_s), 1/m; with
     /// --surface the upper end of the band (default the Nyquist wavevector π/Δ).
     #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
     q_max: Option<f64>,
-    /// Number of log-spaced q values in the C(q) table.
-    #[arg(long, default_value_t = 11, conflicts_with = "surface", allow_hyphen_values = true, value_parser = super::number::count)]
-    points: usize,
     /// Write the --surface spectrum as CSV (q, c; Persson), which --psd reads back as is.
     #[arg(long, value_name = "FILE.csv", requires = "surface", value_parser = super::files::out_file)]
     psd_out: Option<super::files::OutFile>,
     #[command(flatten)]
     format: Format,
-    #[command(flatten)]
-    plot: super::plot::PlotArg,
+}
+
+/// `--q-max` ends a measured surface's band too (the height map's `q_max`
+/// in a scene), so the command declares it.
+impl SpecFlags for SpectrumOutput {
+    const OWN: &'static [&'static str] = &["q_max"];
 }
 
 /// Run `persson spectrum`.
 pub fn run(a: Args, files: &mut Files) -> anyhow::Result<()> {
     use persson_studies::scene::SpectrumSpec;
-    match a.measured.spectrum_spec(a.q_max)? {
+    let out = SpectrumOutput {
+        q_max: a.q_max,
+        ..a.spec.spec()?
+    };
+    let surface = !a.measured.surface.is_empty();
+    if surface && (a.spec.has("q_min") || a.spec.has("points")) {
+        anyhow::bail!(
+            "--q-min and --points are for a spectrum of flags or a table: a --surface's band \
+             and bins are its own (--q-max ends its band)"
+        );
+    }
+    match a.measured.spectrum_spec(out.q_max)? {
         Some(SpectrumSpec::MultiScale { measurements }) => {
-            return multi_scale(&a, &measurements, files)
+            return multi_scale(&a, &out, &measurements, files)
         }
         Some(SpectrumSpec::HeightMap(map)) if map.dataset_measurements()?.is_some() => {
-            return multi_scale(&a, &[map], files)
+            return multi_scale(&a, &out, &[map], files)
         }
-        Some(SpectrumSpec::HeightMap(map)) => return measured(&a, &map, files),
+        Some(SpectrumSpec::HeightMap(map)) => return measured(&a, &out, &map, files),
         _ => {}
     }
     let spec = a.spectrum.spec()?;
@@ -57,14 +71,15 @@ pub fn run(a: Args, files: &mut Files) -> anyhow::Result<()> {
             format!("{example} (the given flags replace parts of it)")
         }
     });
-    let mut report = run::spectrum(s.as_ref(), description, a.q_min, a.q_max, a.points)?;
+    let mut report = run::spectrum(s.as_ref(), description, out.q_min, out.q_max, out.points)?;
     for w in run::spectrum_warnings(&spec, s.as_ref()) {
         if !report.warnings.contains(&w) {
             report.warnings.push(w);
         }
     }
-    a.plot
-        .draw(files, || persson_studies::scene::plot::spectrum(&report))?;
+    super::plot::draw(files, out.plot.as_deref(), || {
+        persson_studies::scene::plot::spectrum(&report)
+    })?;
     print_warned(&report, &report.warnings, &a.format)
 }
 
@@ -72,6 +87,7 @@ pub fn run(a: Args, files: &mut Files) -> anyhow::Result<()> {
 #[cfg(feature = "topography")]
 fn measured(
     a: &Args,
+    out: &SpectrumOutput,
     map: &persson_studies::scene::HeightMapSpec,
     files: &mut Files,
 ) -> anyhow::Result<()> {
@@ -79,7 +95,7 @@ fn measured(
     if let Some(path) = &a.psd_out {
         files.write(path, report.psd.to_csv().as_bytes())?;
     }
-    a.plot.draw(files, || {
+    super::plot::draw(files, out.plot.as_deref(), || {
         persson_studies::scene::plot::measured_spectrum(&report)
     })?;
     let warnings = persson_studies::warning::of_measured(&map.file, &report);
@@ -90,6 +106,7 @@ fn measured(
 #[cfg(not(feature = "topography"))]
 fn measured(
     _: &Args,
+    _: &SpectrumOutput,
     map: &persson_studies::scene::HeightMapSpec,
     _: &mut Files,
 ) -> anyhow::Result<()> {
@@ -101,12 +118,14 @@ fn measured(
 /// measurement's band and the combined spectrum.
 fn multi_scale(
     a: &Args,
+    out: &SpectrumOutput,
     measurements: &[persson_studies::scene::HeightMapSpec],
     files: &mut Files,
 ) -> anyhow::Result<()> {
     let report = persson_studies::scene::multiscale::multi_scale(measurements)?;
-    a.plot
-        .draw(files, || persson_studies::scene::plot::multi_scale(&report))?;
+    super::plot::draw(files, out.plot.as_deref(), || {
+        persson_studies::scene::plot::multi_scale(&report)
+    })?;
     if let Some(path) = &a.psd_out {
         use persson::io::csv_number as num;
         let mut text = String::from(
