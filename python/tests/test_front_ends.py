@@ -64,6 +64,29 @@ STUDIES = [
     ("theories", "TheoriesOutput", {}, {"plot": "a figure"}),
     ("bem_hertz", "BemHertzOutput", {}, {}),
     (
+        "stress",
+        "StressOutput",
+        {},
+        {
+            "zeta": "the physical mode is stress_physical()",
+            "peak_pressure": "the physical mode is stress_physical()",
+            "ball": "the physical mode is stress_physical()",
+            "cylinder": "the physical mode is stress_physical()",
+            "yield_stress": "the physical mode is stress_physical()",
+            "plot": "a figure",
+        },
+    ),
+    (
+        "stress_physical",
+        "StressOutput",
+        {},
+        {
+            "g": "the dimensionless mode is stress()",
+            "yield_ratio": "the dimensionless mode is stress()",
+            "plot": "a figure",
+        },
+    ),
+    (
         "surrogates",
         "SurrogatesOutput",
         {},
