@@ -20,11 +20,6 @@ pub struct PlotArg {
 }
 
 impl PlotArg {
-    /// The `--plot` file, as a study's spec names it.
-    pub fn path(&self) -> Option<std::path::PathBuf> {
-        self.plot.as_deref().map(Path::to_path_buf)
-    }
-
     /// Stages the figure made by `build` for the `--plot` file, if given.
     pub fn draw<F: persson_studies::plot::Encode>(
         &self,

@@ -61,8 +61,9 @@ impl<T: SpecFlags> SpecArgs<T> {
         self.given.contains_key(name)
     }
 
-    /// Give the field `name` the value `v` (a number or a count) unless a
-    /// flag gave it: the built-in example's values.
+    /// Give the field `name` the value `v` (a number, numbers, a count or a
+    /// name) unless a flag gave it: the built-in example's values, what a
+    /// command's own flags imply.
     pub fn or(&mut self, name: &str, v: impl Into<Given>) -> &mut Self {
         self.given.entry(name.into()).or_insert(v.into());
         self
@@ -324,6 +325,18 @@ impl Given {
 impl From<f64> for Given {
     fn from(v: f64) -> Self {
         Given::Number(v)
+    }
+}
+
+impl From<&str> for Given {
+    fn from(s: &str) -> Self {
+        Given::Text(s.to_string())
+    }
+}
+
+impl From<Vec<f64>> for Given {
+    fn from(v: Vec<f64>) -> Self {
+        Given::Numbers(v)
     }
 }
 

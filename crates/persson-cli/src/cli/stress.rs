@@ -5,10 +5,11 @@
 
 use persson::stress::{Start, TabulatedStart};
 use persson::Error;
-use persson_studies::scene::{run, BallSpec, CylinderSpec, StartName, StressOutput};
+use persson_studies::scene::{run, BallSpec, CylinderSpec, StressOutput};
 
 use super::args::{measured_contact, MaterialArgs, MeasuredArgs, SpectrumArgs};
 use super::output::{print_warned, Format};
+use super::spec_args::{SpecArgs, SpecFlags};
 
 /// The flags of the physical mode; `--g`, `--table`, `--yield-ratio` and
 /// `--sigma-ratio` belong to the dimensionless one.
@@ -24,20 +25,20 @@ const PHYSICAL: [&str; 9] = [
     "yield_stress",
 ];
 
-/// Arguments of `persson stress`.
+/// The flags of a contact that sets its own start (a ball, a cylinder, a
+/// flat punch): not with `--start`, `--g` or `--yield-ratio`.
+const OWN_START: [&str; 3] = ["start", "g", "yield_ratio"];
+
+/// Arguments of `persson stress`: the spec's ([`StressOutput`]) derived
+/// from it, and the command's own: a tabulated start, the contact bodies as
+/// flags, σ/σH where to evaluate.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Start condition P(σ, ζ = 1).
-    #[arg(
-        long,
-        value_enum,
-        required_unless_present_any = ["table", "ball_radius", "cylinder_radius", "flat", "example"],
-        conflicts_with_all = ["table", "ball_radius", "cylinder_radius", "flat"]
-    )]
-    start: Option<StartName>,
-    /// A tabulated start instead: a file of two columns σ/σH, σH P0 (comma or
-    /// blank separated, `#` comments), piecewise linear, σH = the last σ.
-    #[arg(long, conflicts_with_all = PHYSICAL, value_parser = super::files::in_file)]
+    #[command(flatten)]
+    spec: SpecArgs<StressOutput>,
+    /// A tabulated start instead of --start: a file of two columns σ/σH, σH P0
+    /// (comma or blank separated, `#` comments), piecewise linear, σH = the last σ.
+    #[arg(long, conflicts_with_all = PHYSICAL, conflicts_with = "start", value_parser = super::files::in_file)]
     table: Option<super::files::InFile>,
     /// How far ∫ P0 dσ of a --table may be from 1.
     #[arg(
@@ -48,27 +49,9 @@ pub struct Args {
         value_parser = super::number::number,
     )]
     table_normalisation: f64,
-    /// Dimensionless mode: G(ζ) (Persson, Bucher & Chiaia 2002, Eq. 2, with σ0 the
-    /// nominal mean pressure).
-    #[arg(
-        long,
-        allow_hyphen_values = true,
-        value_parser = super::number::number,
-        conflicts_with_all = PHYSICAL
-    )]
-    g: Option<f64>,
-    /// Dimensionless mode: σY/σH, the yield stress in units of the peak pressure
-    /// (absent: elastic).
-    #[arg(
-        long,
-        allow_hyphen_values = true,
-        value_parser = super::number::number,
-        conflicts_with_all = PHYSICAL
-    )]
-    yield_ratio: Option<f64>,
     /// Physical mode: a Hertz ball of radius R (m), with --load F (N).
     #[arg(long, requires = "load", allow_hyphen_values = true, value_parser = super::number::number,
-          conflicts_with_all = ["cylinder_radius", "flat", "peak_pressure"])]
+          conflicts_with_all = ["cylinder_radius", "flat", "peak_pressure"], conflicts_with_all = OWN_START)]
     ball_radius: Option<f64>,
     /// Load F on the ball, N (a cylinder takes --load-per-length, N/m).
     #[arg(long, requires = "ball_radius", allow_hyphen_values = true, value_parser = super::number::number,
@@ -76,30 +59,18 @@ pub struct Args {
     load: Option<f64>,
     /// Physical mode: a Hertz cylinder of radius R (m), with --load-per-length F' (N/m).
     #[arg(long, requires = "load_per_length", allow_hyphen_values = true, value_parser = super::number::number,
-          conflicts_with_all = ["flat", "peak_pressure"])]
+          conflicts_with_all = ["flat", "peak_pressure"], conflicts_with_all = OWN_START)]
     cylinder_radius: Option<f64>,
     /// Load per unit length F' on the cylinder, N/m (a ball takes --load, N).
     #[arg(long, requires = "cylinder_radius", allow_hyphen_values = true, value_parser = super::number::number,
           conflicts_with_all = ["ball_radius", "flat", "peak_pressure"])]
     load_per_length: Option<f64>,
     /// Physical mode: a flat punch (uniform start) at the nominal pressure --pressure σ0 (Pa).
-    #[arg(long, requires = "pressure", conflicts_with = "peak_pressure")]
+    #[arg(long, requires = "pressure", conflicts_with = "peak_pressure", conflicts_with_all = OWN_START)]
     flat: bool,
     /// Nominal pressure σ0 of the --flat punch, Pa.
     #[arg(long, requires = "flat", allow_hyphen_values = true, value_parser = super::number::number)]
     pressure: Option<f64>,
-    /// Physical mode: the --start's peak pressure σH (Pa), instead of a ball, a
-    /// cylinder or a flat punch (Persson, Bucher & Chiaia's rail–wheel: --start
-    /// cylinder --peak-pressure 542e6).
-    #[arg(long, requires = "start", allow_hyphen_values = true, value_parser = super::number::number)]
-    peak_pressure: Option<f64>,
-    /// Physical mode: magnifications ζ ≥ 1, comma-separated (default q_s/q_l, full
-    /// magnification).
-    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = super::number::number)]
-    zeta: Vec<f64>,
-    /// Physical mode: yield stress σY (Pa) above the peak pressure (absent: elastic).
-    #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
-    yield_stress: Option<f64>,
     #[command(flatten)]
     spectrum: SpectrumArgs,
     #[command(flatten)]
@@ -117,24 +88,14 @@ pub struct Args {
         value_parser = super::number::number,
     )]
     sigma_ratio: Vec<f64>,
-    /// Number of evenly spaced σ (at least 2): when --sigma-ratio is not given; in
-    /// the physical mode from 0 to σY, or (elastic) to σH plus four standard
-    /// deviations of the widest curve.
-    #[arg(long, default_value_t = 201, allow_hyphen_values = true, value_parser = super::number::count)]
-    points: usize,
-    /// Absolute tolerance of σH P and of the fractions.
-    #[arg(
-        long,
-        alias = "tol",
-        default_value = "1e-12",
-        allow_hyphen_values = true,
-        value_parser = super::number::number,
-    )]
-    tolerance: f64,
     #[command(flatten)]
     format: Format,
-    #[command(flatten)]
-    plot: super::plot::PlotArg,
+}
+
+/// A ball and a cylinder are flags here (objects in a scene).
+impl SpecFlags for StressOutput {
+    const OWN: &'static [&'static str] = &["ball", "cylinder"];
+    const ALIASES: &'static [(&'static str, &'static str)] = &[("tolerance", "tol")];
 }
 
 /// Run `persson stress`.
@@ -142,96 +103,99 @@ pub fn run(mut a: Args, files: &mut persson_studies::output::Files) -> anyhow::R
     // The example: a flat punch at σ0 = 1 MPa on the example surface, its
     // P(σ, ζ) at four magnifications.
     let contact = a.ball_radius.is_some() || a.cylinder_radius.is_some() || a.flat;
-    if a.spectrum.example && !contact && a.start.is_none() && a.table.is_none() && a.g.is_none() {
+    let given = |a: &Args, f: &str| a.spec.has(f);
+    let chosen = ["start", "g", "peak_pressure"].iter().any(|f| given(&a, f));
+    if a.spectrum.example && !contact && !chosen && a.table.is_none() {
         a.flat = true;
         a.pressure = Some(super::args::example::PRESSURES[2]);
-        if a.zeta.is_empty() {
-            a.zeta = vec![10.0, 100.0, 1e3, 1e4];
-        }
+        a.spec.or("zeta", vec![10.0, 100.0, 1e3, 1e4]);
     }
-    if a.ball_radius.is_some() || a.cylinder_radius.is_some() || a.flat || a.peak_pressure.is_some()
+    if a.ball_radius.is_some()
+        || a.cylinder_radius.is_some()
+        || a.flat
+        || given(&a, "peak_pressure")
     {
-        return physical(&a, files);
+        return physical(a, files);
     }
-    if a.spectrum.is_given() || !a.measured.surface.is_empty() || !a.zeta.is_empty() {
+    if a.spectrum.is_given() || !a.measured.surface.is_empty() || given(&a, "zeta") {
         anyhow::bail!(
             "a spectrum, --surface or --zeta needs a physical contact: --ball-radius R --load F, \
              --cylinder-radius R --load-per-length F, --flat --pressure P, or --start S \
              --peak-pressure P (without them, --g G gives the dimensionless distribution)"
         );
     }
-    let Some(g) = a.g else {
+    if !given(&a, "g") {
         anyhow::bail!(
             "no G: give --g G (dimensionless), or a physical contact: --ball-radius R --load F, \
              --cylinder-radius R --load-per-length F, --flat --pressure P, or --start S \
              --peak-pressure P"
         );
-    };
-    let start = match (a.start, &a.table) {
-        (Some(s), _) => Start::from(s),
-        (None, Some(path)) => {
+    }
+    let table = match &a.table {
+        Some(path) => {
             let (s, p) = read_table(path)?;
-            Start::Tabulated(
-                TabulatedStart::new(&s, &p, a.table_normalisation)
-                    .map_err(|e| anyhow::anyhow!("--table {}: {e}", path.display()))?,
-            )
+            let t = TabulatedStart::new(&s, &p, a.table_normalisation)
+                .map_err(|e| anyhow::anyhow!("--table {}: {e}", path.display()))?;
+            // The table stands for the start the spec requires.
+            a.spec.or("start", "flat");
+            Some(Start::Tabulated(t))
         }
-        (None, None) => anyhow::bail!("give --start or --table"),
+        None if given(&a, "start") => None,
+        None => anyhow::bail!("give --start or --table"),
     };
+    let spec = a.spec.spec()?;
+    // The physical mode's fields (`--yield-stress`) are refused here as in
+    // a scene.
+    spec.check_mode()?;
+    let start = table.unwrap_or_else(|| Start::from(spec.start));
     let report = run::stress_dimensionless(
         &start,
-        &[g],
-        a.yield_ratio,
-        a.tolerance,
+        &spec.g,
+        spec.yield_ratio,
+        spec.tolerance,
         &a.sigma_ratio,
-        a.points,
+        spec.points,
     )?;
-    a.plot
-        .draw(files, || persson_studies::scene::plot::stress(&report))?;
+    super::plot::draw(files, spec.plot.as_deref(), || {
+        persson_studies::scene::plot::stress(&report)
+    })?;
     print_warned(&report, &report.warnings, &a.format)
 }
 
 /// The physical mode: the scene's `stress` output with `zeta`, on the surface
 /// of the spectrum (or `--surface`) and material flags.
-fn physical(a: &Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
+fn physical(mut a: Args, files: &mut persson_studies::output::Files) -> anyhow::Result<()> {
     let surface = measured_contact(&a.spectrum, &a.measured, &a.material)?;
-    let (start, ball, cylinder, peak_pressure) =
-        match (a.ball_radius, a.cylinder_radius, a.peak_pressure, a.start) {
-            (Some(radius), ..) => (
-                StartName::Hertz,
-                a.load.map(|load| BallSpec { radius, load }),
-                None,
-                None,
-            ),
-            (_, Some(radius), ..) => (
-                StartName::Cylinder,
-                None,
-                a.load_per_length.map(|load_per_length| CylinderSpec {
-                    radius,
-                    load_per_length,
-                }),
-                None,
-            ),
-            (_, _, Some(p), Some(start)) => (start, None, None, Some(p)),
-            _ => (StartName::Flat, None, None, a.pressure),
-        };
-    let zeta = if a.zeta.is_empty() {
-        vec![surface.spectrum.q_max() / surface.spectrum.q_min()]
-    } else {
-        a.zeta.clone()
+    let (ball, cylinder) = match (a.ball_radius, a.cylinder_radius) {
+        (Some(radius), _) => {
+            a.spec.or("start", "hertz");
+            (a.load.map(|load| BallSpec { radius, load }), None)
+        }
+        (_, Some(radius)) => {
+            a.spec.or("start", "cylinder");
+            let c = a.load_per_length.map(|load_per_length| CylinderSpec {
+                radius,
+                load_per_length,
+            });
+            (None, c)
+        }
+        _ if a.flat => {
+            a.spec.or("start", "flat");
+            if let Some(p) = a.pressure {
+                a.spec.or("peak_pressure", p);
+            }
+            (None, None)
+        }
+        _ => (None, None),
     };
+    a.spec.or(
+        "zeta",
+        vec![surface.spectrum.q_max() / surface.spectrum.q_min()],
+    );
     let out = StressOutput {
-        start,
-        g: vec![],
-        yield_ratio: None,
-        zeta,
-        peak_pressure,
         ball,
         cylinder,
-        yield_stress: a.yield_stress,
-        points: a.points,
-        tolerance: a.tolerance,
-        plot: a.plot.path(),
+        ..a.spec.spec()?
     };
     let ctx = persson_studies::study::Context::with_contact(surface, &[]);
     super::study::run::<persson_studies::stress::Stress>(&ctx, &out, files, &a.format)

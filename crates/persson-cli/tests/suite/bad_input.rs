@@ -127,7 +127,8 @@ fn cases() -> Vec<(String, String)> {
         ("stress --example --cylinder-radius 0.5 --load-per-length 0".into(), "load"),
         ("stress --example --flat --pressure 1e6 --yield-stress 1e5".into(), "yield_stress = 100000: must be finite and > the peak pressure 1e6"),
         ("stress --example --start hertz --peak-pressure 1e6 --zeta 0.5".into(), "zeta"),
-        ("stress --example --zeta 10 --g 1".into(), "cannot be used with"),
+        ("stress --example --zeta 10 --g 1".into(), "--zeta needs a physical contact"),
+        ("stress --example --peak-pressure 5e8".into(), "no start: give --start X"),
         ("stress --example --start hertz --g 1".into(), "needs a physical contact"),
         ("stress --example --ball-radius 0.01".into(), "--load"),
         // usage errors: one line with the prefix, the usage hint after it
