@@ -94,8 +94,7 @@ named! {
 impl std::str::FromStr for Detrend {
     type Err = String;
     fn from_str(s: &str) -> std::result::Result<Self, String> {
-        Detrend::from_name(s)
-            .ok_or_else(|| format!("unknown detrend {s:?}: one of {}", listed::<Detrend>()))
+        named_or_message(s)
     }
 }
 
@@ -121,12 +120,37 @@ named! {
 impl std::str::FromStr for Window {
     type Err = String;
     fn from_str(s: &str) -> std::result::Result<Self, String> {
-        Window::from_name(s)
-            .ok_or_else(|| format!("unknown window {s:?}: one of {}", listed::<Window>()))
+        named_or_message(s)
     }
+}
+
+/// `T` by its name, or a message naming the set and its names
+/// (`unknown window "hamming": one of none, hann, blackman`).
+fn named_or_message<T: Named>(s: &str) -> std::result::Result<T, String> {
+    T::from_name(s).ok_or_else(|| format!("unknown {} {s:?}: one of {}", T::SET, listed::<T>()))
 }
 
 /// `a, b, c`: the names of `T`.
 fn listed<T: Named>() -> String {
     T::names().collect::<Vec<_>>().join(", ")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_name_parses_and_an_unknown_one_lists_the_set() {
+        assert_eq!("hann".parse::<Window>(), Ok(Window::Hann));
+        assert_eq!("curvature".parse::<Detrend>(), Ok(Detrend::Curvature));
+        assert_eq!(
+            "hamming".parse::<Window>(),
+            Err("unknown window \"hamming\": one of none, hann, blackman".to_string())
+        );
+        assert_eq!(
+            "cubic".parse::<Detrend>(),
+            Err("unknown detrend \"cubic\": one of none, mean, plane, curvature".to_string())
+        );
+        assert!("torus".parse::<Boundary>().is_err());
+    }
 }
