@@ -14,6 +14,7 @@
 //! | one of named values | `--field NAME`, the values and their descriptions listed |
 //! | string named `plot` or `plot_*`, or listed in [`SpecFlags::OUTPUTS`] | `--field FILE.svg\|png` (or the listed value name), an output file ([`super::files`]) |
 //! | other string | `--field TEXT` |
+//! | object, array of objects | none: the command declares it ([`SpecFlags::OWN`]); building the command line panics otherwise, which its test finds |
 //!
 //! The flag is the field's name in kebab case (`yield_stress` →
 //! `--yield-stress`); its argument id is the field's name, which is what
@@ -213,17 +214,27 @@ fn kind<T: SpecFlags>(name: &str, p: &Value, root: &Value) -> Kind {
         return Kind::Choice(named);
     }
     let output = T::OUTPUTS.iter().find(|(f, _)| *f == name).map(|(_, v)| *v);
+    let plot = name == "plot" || name.starts_with("plot_");
+    let items = p.get("items").map(|i| type_of(resolve(i, root)));
     match type_of(p) {
         Some("number") => Kind::Number,
         Some("integer") if p.get("format").and_then(Value::as_str) == Some("uint64") => Kind::Seed,
         Some("integer") => Kind::Count,
         Some("boolean") => Kind::Switch,
-        Some("array") => Kind::Numbers,
-        Some("string") if output.is_some() => Kind::Output(output.unwrap_or_default()),
-        Some("string") if name == "plot" || name.starts_with("plot_") => {
-            Kind::Output("FILE.svg|png")
-        }
-        _ => Kind::Text,
+        Some("array") if items == Some(Some("number")) => Kind::Numbers,
+        Some("string") => match output {
+            Some(value_name) => Kind::Output(value_name),
+            None if plot => Kind::Output("FILE.svg|png"),
+            None => Kind::Text,
+        },
+        // A list of objects, a nested object: no flag says it; the command
+        // declares its own (`SpecFlags::OWN`). The command line is built,
+        // and this found, by the test `the_command_line_is_consistent`.
+        other => panic!(
+            "{}: field `{name}` ({}) has no derived flag: list it in SpecFlags::OWN",
+            std::any::type_name::<T>(),
+            other.unwrap_or("untyped")
+        ),
     }
 }
 
@@ -503,6 +514,22 @@ mod tests {
         assert_eq!(names("surfaces"), "FILE.npy");
         assert_eq!(names("plot_distribution"), "FILE.svg|png");
         assert!(parse::<SurrogatesOutput>(&["--seed", "-1"]).is_err());
+    }
+
+    /// A spec with a nested object the command did not declare its own.
+    #[derive(serde::Deserialize, schemars::JsonSchema)]
+    #[allow(dead_code)]
+    struct Nested {
+        inner: Option<MagnificationOutput>,
+    }
+    impl SpecFlags for Nested {}
+
+    #[test]
+    #[should_panic(
+        expected = "field `inner` (object) has no derived flag: list it in SpecFlags::OWN"
+    )]
+    fn a_field_no_flag_can_say_must_be_the_commands_own() {
+        SpecArgs::<Nested>::augment_args(Command::new("t"));
     }
 
     #[test]
