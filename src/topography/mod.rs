@@ -53,7 +53,8 @@ pub use anisotropy::{anisotropy, spectrum_2d, Anisotropy, Spectrum2dMap, STR_THR
 pub use condition::Detrend;
 pub use fit::{fit_hurst, fit_hurst_profile, HurstFit};
 pub use multiscale::{
-    multi_scale, tip_radius_cutoff, Contribution, Gap, Measurement, MultiScale, TIP_SAFETY_FACTOR,
+    multi_scale, tip_radius_cutoff, Contribution, Gap, Measurement, MultiScale, LOW_MODES,
+    TIP_SAFETY_FACTOR,
 };
 pub use note::Note;
 pub use psd::{
