@@ -124,7 +124,7 @@ impl Spectrum {
 
     /// The combined spectrum of several measurements, with their warnings.
     fn multi_scale(measurements: &[persson_studies::scene::HeightMapSpec]) -> PyResult<Self> {
-        let d = persson_studies::scene::multiscale::described(measurements).map_err(err)?;
+        let d = persson_studies::input::multiscale::described(measurements).map_err(err)?;
         let mut s = Self::tabulated_spectrum(d.value, d.description, None);
         for w in d.warnings {
             if !s.warnings.contains(&w) {

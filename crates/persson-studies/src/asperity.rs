@@ -33,7 +33,7 @@ use std::path::{Path, PathBuf};
 
 use serde::Serialize;
 
-use crate::input::TheoryName;
+use crate::naming::names::TheoryName;
 use crate::table::number;
 use crate::warning::Warning;
 use persson::asperity::{
@@ -50,14 +50,6 @@ const GW_RELATIVE_ERROR: f64 = 1e-13;
 /// A BGT point's relative error per unit of its integrals' tolerance (the
 /// summit-table path is tested to 1e-12 against the direct integrals).
 const BUSH_ERROR_FACTOR: f64 = 10.0;
-
-/// Whether `t` is one of the asperity theories (overlap, GW, BGT).
-pub fn is_asperity(t: TheoryName) -> bool {
-    matches!(
-        t,
-        TheoryName::Overlap | TheoryName::GreenwoodWilliamson | TheoryName::Bush
-    )
-}
 
 /// Where the moments of a surface come from.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -335,6 +327,14 @@ pub fn warnings(model: &AsperityModel, points: &[AsperityPoint]) -> Vec<Warning>
                 theory: model.theory,
                 bandwidth_parameter,
                 threshold,
+                message: format!(
+                    "Nayak's bandwidth parameter α = m0 m4/m2² = {} of the surface is below {}: \
+                     few, broad summits whose heights differ from the surface heights, so the \
+                     {} theory's summit picture is poor",
+                    number(bandwidth_parameter, 4),
+                    number(threshold, 4),
+                    model.theory
+                ),
             }),
             Validity::CurvatureUnresolved {
                 curvature_resolution_ratio,
@@ -345,6 +345,14 @@ pub fn warnings(model: &AsperityModel, points: &[AsperityPoint]) -> Vec<Warning>
                         file: file.clone(),
                         curvature_resolution_ratio,
                         threshold,
+                        message: format!(
+                            "{}: the fourth moment m4 is not resolved by the map's pixels (m4 \
+                             over 2 pixels is {} of m4 over one, below {}): the summit density \
+                             and curvature are those of the pixel scale",
+                            file.display(),
+                            number(curvature_resolution_ratio, 4),
+                            number(threshold, 4)
+                        ),
                     });
                 }
             }
@@ -367,54 +375,16 @@ pub fn warnings(model: &AsperityModel, points: &[AsperityPoint]) -> Vec<Warning>
             contact_fraction: first.contact_fraction,
             count: coalesced.len(),
             threshold,
+            message: format!(
+                "the {} theory's A/A0 exceeds {} at {} nominal pressure(s), from σ0 = {} \
+                 (A/A0 = {}): its contacts coalesce there, which it treats as independent",
+                model.theory,
+                number(threshold, 4),
+                coalesced.len(),
+                number(first.nominal_pressure, 6),
+                number(first.contact_fraction, 4)
+            ),
         });
     }
     w
-}
-
-/// The text of the asperity warnings (called by [`Warning`]'s `Display`).
-pub(crate) fn describe(w: &Warning, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-    let n = |v: f64| number(v, 4);
-    match w {
-        Warning::SmallBandwidth {
-            theory,
-            bandwidth_parameter,
-            threshold,
-        } => write!(
-            f,
-            "Nayak's bandwidth parameter α = m0 m4/m2² = {} of the surface is below {}: few, \
-             broad summits whose heights differ from the surface heights, so the {theory} \
-             theory's summit picture is poor",
-            n(*bandwidth_parameter),
-            n(*threshold)
-        ),
-        Warning::Coalescence {
-            theory,
-            nominal_pressure,
-            contact_fraction,
-            count,
-            threshold,
-        } => write!(
-            f,
-            "the {theory} theory's A/A0 exceeds {} at {count} nominal pressure(s), from σ0 = {} \
-             (A/A0 = {}): its contacts coalesce there, which it treats as independent",
-            n(*threshold),
-            number(*nominal_pressure, 6),
-            n(*contact_fraction)
-        ),
-        Warning::CurvatureUnresolved {
-            file,
-            curvature_resolution_ratio,
-            threshold,
-        } => write!(
-            f,
-            "{}: the fourth moment m4 is not resolved by the map's pixels (m4 over 2 pixels is \
-             {} of m4 over one, below {}): the summit density and curvature are those of the \
-             pixel scale",
-            file.display(),
-            n(*curvature_resolution_ratio),
-            n(*threshold)
-        ),
-        _ => Ok(()),
-    }
 }

@@ -7,7 +7,7 @@ use persson::material::Material;
 use persson::spectrum::Spectrum;
 use persson::theory::Persson;
 
-use crate::input::{HeightMapSpec, MaterialSpec, SpectrumSpec, EXAMPLE};
+use crate::input::{spectrum_warnings, HeightMapSpec, MaterialSpec, SpectrumSpec, EXAMPLE};
 use crate::naming::prefix;
 use crate::warning::{self, Warning};
 
@@ -94,32 +94,4 @@ impl RoughContact {
     pub(crate) fn band(&self) -> (f64, f64) {
         (self.spectrum.q_min(), self.spectrum.q_max())
     }
-}
-
-/// The warnings a spectrum gives whatever is computed from it: the
-/// normalisation a spectrum file was read in (and a C(q) that rises, as a
-/// height profile would), and an rms slope over the band above 1.
-pub fn spectrum_warnings(spec: &SpectrumSpec, s: &dyn Spectrum) -> Vec<Warning> {
-    let mut w = Vec::new();
-    if let SpectrumSpec::Tabulated {
-        file, convention, ..
-    } = spec
-    {
-        w.push(Warning::PsdConvention {
-            file: file.clone(),
-            convention: *convention,
-        });
-        let (c_first, c_last) = (s.c(s.q_min()), s.c(s.q_max()));
-        if c_last >= c_first {
-            w.push(Warning::RisingSpectrum {
-                file: file.clone(),
-                c_first,
-                c_last,
-            });
-        }
-    }
-    if let Ok(m) = s.rms_slope(s.q_min(), s.q_max()) {
-        warning::push(&mut w, Warning::steep_slope(m.value));
-    }
-    w
 }

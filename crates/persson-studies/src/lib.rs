@@ -14,6 +14,8 @@
 //! | [`output`] | the one output layer: every file a run writes is checked against its inputs and other outputs before computing, and written only when the whole run has succeeded |
 //! | [`warning`] | [`Warning`]: a remark on the input (a pressure near E*, a slope above 1, ζ beyond the band, a spectrum file's convention) that never changes a number, carried by the reports |
 //! | [`plot`] | figures from the typed reports, as data in every build; drawn as SVG or PNG with the feature `plot` |
+//! | [`input`], [`naming`], [`contact`] | what every study reads: the material, the roughness (one map, several measurements combined, a spectrum), the rubber; the closed sets of names; the rough contact built once from them |
+//! | [`progress`] | the hook through which a long study reports its progress to a front-end that runs scenes |
 //! | [`surrogates`] and the other study folders | one study each: spec, run, report, figures ([`study`]) |
 //!
 //! Conventions, units and names are those of the numerics crate (see its
@@ -54,6 +56,7 @@ pub mod magnification;
 pub mod naming;
 pub mod output;
 pub mod plot;
+pub mod progress;
 pub mod report;
 pub mod scene;
 pub mod separation;

@@ -1,6 +1,6 @@
 //! What the host page provides: a clock and a progress display.
 
-use persson_studies::study::progress::Progress;
+use persson_studies::progress::Progress;
 
 #[cfg(target_arch = "wasm32")]
 #[link(wasm_import_module = "env")]

@@ -75,7 +75,7 @@ pub fn run(text: &str) -> Outcome {
 
 fn compute(text: &str) -> persson::Result<Done> {
     let scene = Scene::parse(Path::new(SCENE), text)?;
-    let report = persson_studies::study::progress::observe(crate::host::progress, || scene.run())?;
+    let report = persson_studies::progress::observe(crate::host::progress, || scene.run())?;
     let tables = report.tables();
     let mut warnings = report.warnings.clone();
     warnings.extend(not_computed(&tables));

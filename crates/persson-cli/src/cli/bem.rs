@@ -77,7 +77,7 @@ fn hertz_subsurface(h: &HertzArgs, files: &mut Files) -> anyhow::Result<()> {
     let r = r?;
     super::plot::draw(files, h.stress_plot.as_deref(), || {
         let section = persson_studies::bem_detail::hertz_section(&r)?;
-        Ok(persson_studies::plot::stress_map::hertz_section_figure(
+        Ok(persson_studies::bem_detail::hertz_section_figure(
             &r, &section,
         ))
     })?;
@@ -269,7 +269,7 @@ fn write_planes(
     if let Some(path) = &a.detail.stress_plot {
         use persson_studies::plot::Encode;
         let unit = if e_star == 1.0 { "E*" } else { "Pa" };
-        let planes = persson_studies::plot::stress_map::planes(
+        let planes = persson_studies::bem_detail::planes(
             &details.maps,
             (n, size),
             &a.detail.depth,

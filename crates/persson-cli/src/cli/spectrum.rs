@@ -122,7 +122,7 @@ fn multi_scale(
     measurements: &[persson_studies::scene::HeightMapSpec],
     files: &mut Files,
 ) -> anyhow::Result<()> {
-    let report = persson_studies::scene::multiscale::multi_scale(measurements)?;
+    let report = persson_studies::input::multiscale::multi_scale(measurements)?;
     super::plot::draw(files, out.plot.as_deref(), || {
         persson_studies::scene::plot::multi_scale(&report)
     })?;

@@ -157,7 +157,7 @@ pub(crate) fn theory_heading(theory: TheoryName, gamma: Option<f64>) -> String {
 
 impl Tabulate for AreaReport {
     fn tables(&self) -> Vec<Table> {
-        if crate::asperity::is_asperity(self.theory) {
+        if self.theory.is_asperity() {
             return vec![self.asperity_table()];
         }
         let mut t = Table::new(

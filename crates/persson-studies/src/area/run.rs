@@ -19,7 +19,7 @@ pub fn area(surface: &RoughContact, pressures: &[f64], out: &AreaOutput) -> Resu
             "nominal_pressure (a non-empty list, for outputs.area)",
         ));
     }
-    if crate::asperity::is_asperity(out.theory) {
+    if out.theory.is_asperity() {
         return super::asperity::area(surface, pressures, out);
     }
     if out.yield_stress.is_some() {

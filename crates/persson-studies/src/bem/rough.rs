@@ -133,7 +133,7 @@ fn plots(b: &BemOutput, r: &Report, ctx: &Context<'_>, dir: &Path, out: &mut Fil
         })?;
     }
     if let Some(p) = &s.plot {
-        let planes = crate::plot::stress_map::planes(
+        let planes = crate::bem_detail::planes(
             &r.stress_maps,
             (r.rough.grid, r.rough.size),
             &s.depth,

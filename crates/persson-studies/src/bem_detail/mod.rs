@@ -30,6 +30,7 @@
 //! - K. L. Johnson, *Contact Mechanics* (CUP 1985), §3.4, §4.2.
 
 mod adhesive;
+mod figures;
 mod section;
 mod solves;
 
@@ -40,6 +41,7 @@ pub use adhesive::{
     AdhesiveBemReport, AdhesiveIteration, AdhesiveSphereReport, LawKind, PathControl,
     SpherePullOff,
 };
+pub use figures::{hertz_section_figure, planes};
 pub use section::{hertz_section, VerticalSection};
 pub use solves::{indexed, Details, StressMap, SubsurfaceOptions, DEFAULT_POISSON};
 

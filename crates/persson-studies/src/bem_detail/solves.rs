@@ -125,7 +125,7 @@ impl Details {
 
 impl persson::bem::rough::Observer for Details {
     fn iteration(&mut self, p: persson::bem::rough::RoughProgress) {
-        crate::study::progress::report(&crate::study::progress::Progress {
+        crate::progress::report(&crate::progress::Progress {
             study: "bem",
             step: p.index,
             steps: p.total,

@@ -11,7 +11,7 @@ use persson::friction::{
 use persson::spectrum::Spectrum;
 
 use super::{FrictionOutput, FrictionReport};
-use crate::contact::spectrum_warnings;
+use crate::input::spectrum_warnings;
 use crate::input::{RubberSpec, SpectrumSpec};
 use crate::naming::prefix;
 use crate::naming::required;

@@ -10,9 +10,10 @@
 //! |---|---|
 //! | this one | the material ([`MaterialSpec`]) and the built-in example |
 //! | `spectrum` | the roughness: self-affine, tabulated or a measured height map |
-//! | `names` | the studies' closed sets (convention, length unit, start, theory, surrogate kind) |
+//! | `crate::naming::names` (re-exported) | the studies' closed sets (convention, length unit, start, theory, surrogate kind) |
 //! | `by_name` | the numerics' closed sets ([`persson::names::Named`]: boundary, window, …) in the scene schema and on the command line |
 //! | `rubber` | the rubber and the `friction` output |
+//! | `multiscale` | one spectrum from several measurements of a surface, with each one's band |
 
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
@@ -22,49 +23,16 @@ use persson::material::{Body, Material};
 
 use crate::naming::required;
 
-/// Defines a closed set of names: serde and (feature `clap`) clap spell each
-/// variant as its string, the same in scenes and on the command line.
-macro_rules! names {
-    ($(#[$m:meta])* $name:ident { $($(#[$vm:meta])* $v:ident = $s:literal),+ $(,)? }) => {
-        $(#[$m])*
-        #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, JsonSchema)]
-        #[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
-        pub enum $name {
-            $(
-                $(#[$vm])*
-                #[serde(rename = $s)]
-                #[cfg_attr(feature = "clap", value(name = $s))]
-                $v
-            ),+
-        }
-
-        impl $name {
-            /// Every value, in order.
-            pub const ALL: &'static [$name] = &[$($name::$v),+];
-            /// The name as in scene files and on the command line.
-            pub fn name(self) -> &'static str {
-                match self { $($name::$v => $s),+ }
-            }
-        }
-
-        impl std::fmt::Display for $name {
-            fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-                f.write_str(self.name())
-            }
-        }
-    };
-}
-
 mod by_name;
 mod measured;
-mod names;
+pub mod multiscale;
 mod rubber;
 mod spectrum;
 
+pub use crate::naming::names::*;
 pub use by_name::*;
 #[cfg(feature = "topography")]
 pub use measured::describe;
-pub use names::*;
 pub use rubber::*;
 pub use spectrum::*;
 

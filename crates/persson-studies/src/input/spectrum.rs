@@ -11,6 +11,8 @@ use persson::error::Result;
 use persson::names::{Detrend, Window};
 use persson::spectrum::{Amplitude, SelfAffine, Spectrum, Sum, Tabulated};
 
+use crate::warning::{self, Warning};
+
 /// A value built from a scene's entry, with what was assumed to build it in
 /// words (a measured surface's detrending, window, periodicity and band),
 /// for report titles.
@@ -261,7 +263,7 @@ impl SpectrumSpec {
                     .collect::<Result<_>>()?,
             )?)),
             SpectrumSpec::MultiScale { measurements } => Ok(Box::new(
-                crate::scene::multiscale::described(measurements)?.value,
+                crate::input::multiscale::described(measurements)?.value,
             )),
             SpectrumSpec::Stretched {
                 spectrum,
@@ -300,7 +302,7 @@ impl SpectrumSpec {
                     let d = p.build_described().map_err(|e| in_part(i, e))?;
                     described.extend(d.description);
                     warnings.extend(d.warnings);
-                    for w in crate::scene::run::spectrum_warnings(p, d.value.as_ref()) {
+                    for w in spectrum_warnings(p, d.value.as_ref()) {
                         crate::warning::push(&mut warnings, Some(w));
                     }
                     built.push(d.value);
@@ -316,7 +318,7 @@ impl SpectrumSpec {
                 })
             }
             SpectrumSpec::MultiScale { measurements } => {
-                let d = crate::scene::multiscale::described(measurements)?;
+                let d = crate::input::multiscale::described(measurements)?;
                 Ok(Described {
                     value: Box::new(d.value),
                     description: d.description,
@@ -367,4 +369,32 @@ impl SpectrumSpec {
 /// An error of the `i`-th part of a sum, named `parts[i].<field>`.
 fn in_part(i: usize, e: persson::Error) -> persson::Error {
     crate::naming::prefix(&format!("parts[{i}]."), e)
+}
+
+/// The warnings a spectrum gives whatever is computed from it: the
+/// normalisation a spectrum file was read in (and a C(q) that rises, as a
+/// height profile would), and an rms slope over the band above 1.
+pub fn spectrum_warnings(spec: &SpectrumSpec, s: &dyn Spectrum) -> Vec<Warning> {
+    let mut w = Vec::new();
+    if let SpectrumSpec::Tabulated {
+        file, convention, ..
+    } = spec
+    {
+        w.push(Warning::PsdConvention {
+            file: file.clone(),
+            convention: *convention,
+        });
+        let (c_first, c_last) = (s.c(s.q_min()), s.c(s.q_max()));
+        if c_last >= c_first {
+            w.push(Warning::RisingSpectrum {
+                file: file.clone(),
+                c_first,
+                c_last,
+            });
+        }
+    }
+    if let Ok(m) = s.rms_slope(s.q_min(), s.q_max()) {
+        warning::push(&mut w, Warning::steep_slope(m.value));
+    }
+    w
 }

@@ -33,7 +33,6 @@ use persson::spectrum::Spectrum;
 use crate::output::Files;
 
 mod list;
-pub mod multiscale;
 pub mod plot;
 pub mod report;
 pub mod run;

@@ -21,7 +21,7 @@ pub use crate::transport::{conductance_figure as conductance, leakage_figure as 
 ///
 /// # Errors
 /// A spectrum with no positive point.
-pub fn multi_scale(r: &crate::scene::multiscale::MultiScaleReport) -> Result<Figure> {
+pub fn multi_scale(r: &crate::input::multiscale::MultiScaleReport) -> Result<Figure> {
     let mut fig = plot::spectrum(&r.q, &r.c, None)?;
     fig.title = format!(
         "Power spectrum C(q) combined from {} measurements",

@@ -3,7 +3,8 @@
 
 pub use crate::adhesion::adhesion;
 pub use crate::area::area;
-pub use crate::contact::{spectrum_warnings, RoughContact};
+pub use crate::contact::RoughContact;
+pub use crate::input::spectrum_warnings;
 pub use crate::kappa::kappa;
 pub use crate::magnification::magnification;
 pub use crate::separation::separation;

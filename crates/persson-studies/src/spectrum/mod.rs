@@ -2,7 +2,7 @@
 
 use persson::error::Result;
 
-use crate::contact::spectrum_warnings;
+use crate::input::spectrum_warnings;
 use crate::input::{SpectrumSpec, EXAMPLE};
 
 mod plot;

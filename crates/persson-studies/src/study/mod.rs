@@ -36,7 +36,6 @@ use crate::output::Files;
 use crate::table::Tabulate;
 use crate::warning::Warning;
 
-pub mod progress;
 mod registry;
 
 pub(crate) use registry::studies;

@@ -22,7 +22,7 @@
 use serde::Serialize;
 
 use crate::asperity::{warnings, AsperityModel, AsperityParameters, AsperitySettings};
-use crate::scene::TheoryName;
+use crate::naming::names::TheoryName;
 use crate::table::{Cell, Table};
 use crate::warning::Warning;
 use persson::spectrum::Spectrum;

@@ -53,8 +53,8 @@ use persson::spectrum::Spectrum;
 
 use super::continuum::extrapolate;
 use super::resolution::SweepConfig;
-use crate::scene::transport::TransportRequest;
-use crate::scene::BemTransportPoint;
+use crate::transport::TransportRequest;
+use crate::transport::BemTransportPoint;
 use crate::table::number;
 use crate::warning::Warning;
 use persson::leakage::Fluid;
@@ -387,7 +387,7 @@ fn bem_points(
     let mut out: Vec<Vec<Vec<BemTransportPoint>>> = vec![Vec::new(); config.grids.len()];
     for &seed in surfaces.seeds(&config.seeds) {
         for (gi, surface) in surfaces.on_grids(config, seed)?.iter().enumerate() {
-            let r = crate::scene::transport_bem::transport(
+            let r = crate::transport::bem::transport(
                 surface,
                 Some(seed),
                 e_star,

@@ -186,6 +186,12 @@ impl PatchCollector {
             nominal_pressure,
             count,
             min_patches: MIN_PATCHES,
+            message: format!(
+                "at {count} (grid, σ0) point(s), from N = {grid}, σ0 = {}, a solve has fewer \
+                 than {MIN_PATCHES} contact patches or too few occupied bins: the patch-area \
+                 exponent τ there is rough or absent",
+                number(nominal_pressure, 4)
+            ),
         });
         (
             PatchComparison {
@@ -199,24 +205,6 @@ impl PatchCollector {
     }
 }
 
-/// The text of the `few_patches` warning (called by [`Warning`]'s `Display`).
-pub(crate) fn describe(w: &Warning, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-    match w {
-        Warning::FewPatches {
-            grid,
-            nominal_pressure,
-            count,
-            min_patches,
-        } => write!(
-            f,
-            "at {count} (grid, σ0) point(s), from N = {grid}, σ0 = {}, a solve has fewer \
-             than {min_patches} contact patches or too few occupied bins: the patch-area \
-             exponent τ there is rough or absent",
-            number(*nominal_pressure, 4)
-        ),
-        _ => Ok(()),
-    }
-}
 
 /// The table "Contact patches": per grid and σ0 the count, the largest
 /// patch's share and τ.
@@ -289,6 +277,7 @@ mod tests {
                 count: 1,
                 min_patches: MIN_PATCHES,
                 nominal_pressure,
+                ..
             }) => assert_eq!(nominal_pressure, 0.5),
             other => panic!("{other:?}"),
         }

@@ -15,12 +15,17 @@
 //! ```text
 //! {"kind": "steep_slope", "rms_slope": 1.2e5, "message": "rms slope h'_rms = 120000 is above 1: …"}
 //! ```
+//!
+//! The text of the shared warnings is written here (`text.rs`); a warning
+//! that belongs to one study carries its text in a `message` field, written
+//! by that study when it raises it (the asperity theories' three, the patch
+//! count of `compare`), so this module imports no study.
 
 use std::path::PathBuf;
 
 use serde::{Serialize, Serializer};
 
-use crate::input::ConventionName;
+use crate::naming::names::ConventionName;
 
 mod text;
 cfg_feature! {
@@ -316,17 +321,20 @@ pub enum Warning {
     /// theories' threshold ([`persson::asperity::moments::SMALL_BANDWIDTH`]).
     SmallBandwidth {
         /// The asperity theory.
-        theory: crate::input::TheoryName,
+        theory: crate::naming::names::TheoryName,
         /// α = m0 m4/m2².
         bandwidth_parameter: f64,
         /// The threshold.
         threshold: f64,
+        /// Its text, written by the study that raises it (module `asperity`).
+        #[serde(skip)]
+        message: String,
     },
     /// An asperity theory's A/A0 is above the fraction where its contacts
     /// coalesce ([`persson::asperity::COALESCENCE_FRACTION`]).
     Coalescence {
         /// The asperity theory.
-        theory: crate::input::TheoryName,
+        theory: crate::naming::names::TheoryName,
         /// The first σ0 above the threshold.
         nominal_pressure: f64,
         /// Its A/A0.
@@ -335,10 +343,12 @@ pub enum Warning {
         count: usize,
         /// The threshold.
         threshold: f64,
+        /// Its text, written by the study that raises it (module `asperity`).
+        #[serde(skip)]
+        message: String,
     },
-    /// `compare`'s patch-area exponent τ rests on fewer than
-    /// [`crate::validation::patches::MIN_PATCHES`] patches, or could not be
-    /// fitted, in some solves.
+    /// `compare`'s patch-area exponent τ rests on fewer than `min_patches`
+    /// patches, or could not be fitted, in some solves.
     FewPatches {
         /// The first grid where it happens.
         grid: usize,
@@ -348,6 +358,9 @@ pub enum Warning {
         count: usize,
         /// The threshold.
         min_patches: usize,
+        /// Its text, written by the study that raises it (module `validation::patches`).
+        #[serde(skip)]
+        message: String,
     },
     /// Amplitude-adjusted surrogates whose radial spectrum stays off the
     /// map's (a map whose spectrum falls below what rearranging its heights
@@ -376,6 +389,9 @@ pub enum Warning {
         curvature_resolution_ratio: f64,
         /// The threshold.
         threshold: f64,
+        /// Its text, written by the study that raises it (module `asperity`).
+        #[serde(skip)]
+        message: String,
     },
 }
 

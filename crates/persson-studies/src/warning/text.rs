@@ -4,7 +4,7 @@
 use std::fmt;
 
 use super::{Warning, HIGH_PRESSURE_RATIO};
-use crate::input::ConventionName;
+use crate::naming::names::ConventionName;
 use crate::table::number;
 
 impl fmt::Display for Warning {
@@ -365,13 +365,11 @@ fn text_of_rest(w: &Warning, f: &mut fmt::Formatter<'_>, mine: &mut bool) -> fmt
                 n(*nominal_pressure)
             )
         }
-        Warning::SmallBandwidth { .. }
-        | Warning::Coalescence { .. }
-        | Warning::CurvatureUnresolved { .. } => crate::asperity::describe(w, f),
-        #[cfg(feature = "bem")]
-        Warning::FewPatches { .. } => crate::validation::patches::describe(w, f),
-        #[cfg(not(feature = "bem"))]
-        Warning::FewPatches { count, .. } => write!(f, "{count} solve(s) with few patches"),
+        // Written by the study that raises them.
+        Warning::SmallBandwidth { message, .. }
+        | Warning::Coalescence { message, .. }
+        | Warning::CurvatureUnresolved { message, .. }
+        | Warning::FewPatches { message, .. } => f.write_str(message),
         Warning::SurrogateSpectrum { mismatch } => write!(
             f,
             "the amplitude-adjusted surrogates' radial spectrum differs from the map's by up \

@@ -7,7 +7,7 @@ use std::io::Read;
 use std::path::{Path, PathBuf};
 
 use persson::names::Detrend;
-use persson_studies::scene::multiscale::multi_scale;
+use persson_studies::input::multiscale::multi_scale;
 use persson_studies::scene::{HeightMapSpec, LengthUnitName};
 
 fn container() -> PathBuf {

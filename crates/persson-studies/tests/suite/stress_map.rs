@@ -4,9 +4,10 @@
 
 use persson::bem::hertz::HertzCase;
 use persson::bem::{Boundary, Options};
+use persson_studies::bem_detail::hertz_section_figure;
 use persson_studies::bem_detail::{hertz_section, hertz_subsurface};
 use persson_studies::plot::render;
-use persson_studies::plot::stress_map::{hertz_section_figure, von_mises_plane, FieldFigure};
+use persson_studies::plot::stress_map::{von_mises_plane, FieldFigure};
 
 /// Johnson (1985) §3.4 for ν = 0.3: on the axis σ_vM = σ_r − σ_z = 2τ,
 /// largest 2 · 0.3107 p0 at z = 0.4807 a (golden section on the closed

@@ -117,7 +117,7 @@ impl HeightMapSpec {
     /// As [`HeightMapSpec::analyse`] and [`persson::topography::Psd::to_tabulated`].
     pub fn spectrum_described(&self) -> Result<Described<Tabulated>> {
         if let Some(measurements) = self.dataset_measurements()? {
-            return crate::scene::multiscale::described(&measurements);
+            return crate::input::multiscale::described(&measurements);
         }
         let a = self.analyse()?;
         let s = a.psd.to_tabulated().map_err(|e| in_file(&self.file, e))?;

@@ -10,7 +10,7 @@ use persson::error::Result;
 use persson::spectrum::Tabulated;
 use serde::Serialize;
 
-use super::schema::{Described, HeightMapSpec};
+use super::{Described, HeightMapSpec};
 use crate::table::{number, Cell, Table, Tabulate};
 use crate::warning::Warning;
 

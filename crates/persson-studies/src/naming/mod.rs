@@ -1,8 +1,12 @@
 //! How an error names its input: the scene's field under its section
 //! (`outputs.area.zeta`, `spectrum.hurst`), the names the command line maps
-//! to its flags.
+//! to its flags; and the studies' closed sets of names ([`names`]: the
+//! convention of a spectrum file, a length unit, the stress start, the area
+//! theory, the kind of surrogate), which `input` re-exports.
 
 use persson::error::Error;
+
+pub mod names;
 
 /// A missing input.
 pub fn required(what: &str) -> Error {

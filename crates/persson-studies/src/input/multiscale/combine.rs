@@ -2,7 +2,7 @@
 
 use persson::error::{Error, Result};
 
-use super::super::schema::HeightMapSpec;
+use super::super::HeightMapSpec;
 use super::{BandSpectrum, MeasurementBand, MultiScaleReport, BINS_PER_DECADE};
 use crate::warning::Warning;
 

@@ -2,7 +2,7 @@
 
 use persson::error::Result;
 
-use super::super::schema::HeightMapSpec;
+use super::super::HeightMapSpec;
 use super::MultiScaleReport;
 
 /// Without the feature `topography` measured surfaces cannot be read.

@@ -3,16 +3,49 @@
 //! side L), the unit of a file's lengths, the stress start, the area theory
 //! (Persson's and the asperity ones) and the kind of surrogate. The
 //! numerics' closed sets (boundary, window, …) are their own types, by
-//! [`super::ByName`].
+//! [`crate::input::ByName`].
 
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
-use crate::naming::required;
+use super::required;
 use persson::corrected::Theory;
 use persson::error::{Error, Result};
 use persson::spectrum::Convention;
 use persson::stress::Start;
+
+/// Defines a closed set of names: serde and (feature `clap`) clap spell each
+/// variant as its string, the same in scenes and on the command line.
+macro_rules! names {
+    ($(#[$m:meta])* $name:ident { $($(#[$vm:meta])* $v:ident = $s:literal),+ $(,)? }) => {
+        $(#[$m])*
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, JsonSchema)]
+        #[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
+        pub enum $name {
+            $(
+                $(#[$vm])*
+                #[serde(rename = $s)]
+                #[cfg_attr(feature = "clap", value(name = $s))]
+                $v
+            ),+
+        }
+
+        impl $name {
+            /// Every value, in order.
+            pub const ALL: &'static [$name] = &[$($name::$v),+];
+            /// The name as in scene files and on the command line.
+            pub fn name(self) -> &'static str {
+                match self { $($name::$v => $s),+ }
+            }
+        }
+
+        impl std::fmt::Display for $name {
+            fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                f.write_str(self.name())
+            }
+        }
+    };
+}
 
 names! {
     /// Normalisation of a tabulated spectrum.
@@ -117,6 +150,18 @@ names! {
     }
 }
 
+impl TheoryName {
+    /// Whether this is one of the asperity theories (overlap, Greenwood–
+    /// Williamson, Bush–Gibson–Thomas; module `asperity`), not one of
+    /// Persson's.
+    pub fn is_asperity(self) -> bool {
+        matches!(
+            self,
+            TheoryName::Overlap | TheoryName::GreenwoodWilliamson | TheoryName::Bush
+        )
+    }
+}
+
 /// A theory and (corrected theories) its γ.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
@@ -135,7 +180,7 @@ impl TheorySpec {
     /// γ given for `original`, or out of the theory's range; an asperity
     /// theory (it is not one of Persson's, see [`crate::asperity`]).
     pub fn build(&self) -> Result<Theory> {
-        if crate::asperity::is_asperity(self.theory) {
+        if self.theory.is_asperity() {
             return Err(Error::Inconsistent {
                 name: "theory".into(),
                 requirement: format!(
@@ -152,7 +197,7 @@ impl TheorySpec {
     pub fn all() -> Vec<TheorySpec> {
         TheoryName::ALL
             .iter()
-            .filter(|&&t| !crate::asperity::is_asperity(t))
+            .filter(|&&t| !t.is_asperity())
             .map(|&theory| TheorySpec {
                 theory,
                 gamma: None,
