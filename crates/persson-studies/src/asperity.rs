@@ -323,37 +323,29 @@ pub fn warnings(model: &AsperityModel, points: &[AsperityPoint]) -> Vec<Warning>
             Validity::SmallBandwidth {
                 bandwidth_parameter,
                 threshold,
-            } => w.push(Warning::SmallBandwidth {
-                theory: model.theory,
-                bandwidth_parameter,
-                threshold,
-                message: format!(
-                    "Nayak's bandwidth parameter α = m0 m4/m2² = {} of the surface is below {}: \
-                     few, broad summits whose heights differ from the surface heights, so the \
-                     {} theory's summit picture is poor",
-                    number(bandwidth_parameter, 4),
-                    number(threshold, 4),
-                    model.theory
-                ),
-            }),
+            } => w.push(
+                Warning::SmallBandwidth {
+                    theory: model.theory,
+                    bandwidth_parameter,
+                    threshold,
+                    message: String::new(),
+                }
+                .described(describe),
+            ),
             Validity::CurvatureUnresolved {
                 curvature_resolution_ratio,
                 threshold,
             } => {
                 if let MomentSource::HeightMap { file } = &model.source {
-                    w.push(Warning::CurvatureUnresolved {
-                        file: file.clone(),
-                        curvature_resolution_ratio,
-                        threshold,
-                        message: format!(
-                            "{}: the fourth moment m4 is not resolved by the map's pixels (m4 \
-                             over 2 pixels is {} of m4 over one, below {}): the summit density \
-                             and curvature are those of the pixel scale",
-                            file.display(),
-                            number(curvature_resolution_ratio, 4),
-                            number(threshold, 4)
-                        ),
-                    });
+                    w.push(
+                        Warning::CurvatureUnresolved {
+                            file: file.clone(),
+                            curvature_resolution_ratio,
+                            threshold,
+                            message: String::new(),
+                        }
+                        .described(describe),
+                    );
                 }
             }
             _ => {}
@@ -369,22 +361,67 @@ pub fn warnings(model: &AsperityModel, points: &[AsperityPoint]) -> Vec<Warning>
         })
         .collect();
     if let Some(&(first, threshold)) = coalesced.first() {
-        w.push(Warning::Coalescence {
-            theory: model.theory,
-            nominal_pressure: first.nominal_pressure,
-            contact_fraction: first.contact_fraction,
-            count: coalesced.len(),
-            threshold,
-            message: format!(
-                "the {} theory's A/A0 exceeds {} at {} nominal pressure(s), from σ0 = {} \
-                 (A/A0 = {}): its contacts coalesce there, which it treats as independent",
-                model.theory,
-                number(threshold, 4),
-                coalesced.len(),
-                number(first.nominal_pressure, 6),
-                number(first.contact_fraction, 4)
-            ),
-        });
+        w.push(
+            Warning::Coalescence {
+                theory: model.theory,
+                nominal_pressure: first.nominal_pressure,
+                contact_fraction: first.contact_fraction,
+                count: coalesced.len(),
+                threshold,
+                message: String::new(),
+            }
+            .described(describe),
+        );
     }
     w
+}
+
+/// The text of the asperity warnings ([`Warning::described`]).
+pub(crate) fn describe(w: &Warning, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+    let n = |v: f64| number(v, 4);
+    match w {
+        Warning::SmallBandwidth {
+            theory,
+            bandwidth_parameter,
+            threshold,
+            ..
+        } => write!(
+            f,
+            "Nayak's bandwidth parameter α = m0 m4/m2² = {} of the surface is below {}: few, \
+             broad summits whose heights differ from the surface heights, so the {theory} \
+             theory's summit picture is poor",
+            n(*bandwidth_parameter),
+            n(*threshold)
+        ),
+        Warning::Coalescence {
+            theory,
+            nominal_pressure,
+            contact_fraction,
+            count,
+            threshold,
+            ..
+        } => write!(
+            f,
+            "the {theory} theory's A/A0 exceeds {} at {count} nominal pressure(s), from σ0 = {} \
+             (A/A0 = {}): its contacts coalesce there, which it treats as independent",
+            n(*threshold),
+            number(*nominal_pressure, 6),
+            n(*contact_fraction)
+        ),
+        Warning::CurvatureUnresolved {
+            file,
+            curvature_resolution_ratio,
+            threshold,
+            ..
+        } => write!(
+            f,
+            "{}: the fourth moment m4 is not resolved by the map's pixels (m4 over 2 pixels is \
+             {} of m4 over one, below {}): the summit density and curvature are those of the \
+             pixel scale",
+            file.display(),
+            n(*curvature_resolution_ratio),
+            n(*threshold)
+        ),
+        _ => Ok(()),
+    }
 }

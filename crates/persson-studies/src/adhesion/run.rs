@@ -81,11 +81,15 @@ pub fn adhesion(
     if let Some(pr) = pastewka_robbins.as_ref().filter(|pr| !pr.short_range) {
         warning::push(
             &mut warnings,
-            Some(Warning::LongAdhesionRange {
-                adhesion_range: pr.adhesion_range,
-                rms_slope: pr.rms_slope,
-                rms_curvature: pr.rms_curvature,
-            }),
+            Some(
+                Warning::LongAdhesionRange {
+                    adhesion_range: pr.adhesion_range,
+                    rms_slope: pr.rms_slope,
+                    rms_curvature: pr.rms_curvature,
+                    message: String::new(),
+                }
+                .described(describe),
+            ),
         );
     }
     Ok(AdhesionReport {
@@ -116,11 +120,15 @@ fn flag_warnings(points: &[AdhesivePoint], tolerance: f64) -> Vec<Warning> {
         .iter()
         .max_by(|a, b| a.nominal_pressure.total_cmp(&b.nominal_pressure))
     {
-        out.push(Warning::BeyondPullOff {
-            nominal_pressure: first.nominal_pressure,
-            pull_off_stress: first.pull_off_stress,
-            count: detached.len(),
-        });
+        out.push(
+            Warning::BeyondPullOff {
+                nominal_pressure: first.nominal_pressure,
+                pull_off_stress: first.pull_off_stress,
+                count: detached.len(),
+                message: String::new(),
+            }
+            .described(describe),
+        );
     }
     let missed: Vec<&AdhesivePoint> = points
         .iter()
@@ -134,11 +142,65 @@ fn flag_warnings(points: &[AdhesivePoint], tolerance: f64) -> Vec<Warning> {
                     .max(p.tensile_fraction_error_bound)
             })
             .fold(0.0, f64::max);
-        out.push(Warning::AdhesionToleranceNotMet {
-            tolerance,
-            error_bound: worst,
-            count: missed.len(),
-        });
+        out.push(
+            Warning::AdhesionToleranceNotMet {
+                tolerance,
+                error_bound: worst,
+                count: missed.len(),
+                message: String::new(),
+            }
+            .described(describe),
+        );
     }
     out
+}
+
+/// The text of the `adhesion` study's warnings ([`Warning::described`]).
+pub(crate) fn describe(w: &Warning, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+    let n = |v: f64| crate::table::number(v, 6);
+    match w {
+        Warning::BeyondPullOff {
+            nominal_pressure,
+            pull_off_stress,
+            count,
+            ..
+        } => write!(
+            f,
+            "{} at or below −σ_p, minus the pull-off stress σ_p = {} (the highest: \
+             σ0 = {}): nothing is in contact there (A/A0 = 0)",
+            if *count > 1 {
+                format!("{count} nominal pressures are")
+            } else {
+                "a nominal pressure is".to_string()
+            },
+            n(*pull_off_stress),
+            n(*nominal_pressure)
+        ),
+        Warning::AdhesionToleranceNotMet {
+            tolerance,
+            error_bound,
+            count,
+            ..
+        } => write!(
+            f,
+            "{count} adhesive contact fraction(s) did not reach the tolerance {} at the \
+             largest mesh: error estimate up to {} (reported with each point)",
+            n(*tolerance),
+            n(*error_bound)
+        ),
+        Warning::LongAdhesionRange {
+            adhesion_range,
+            rms_slope,
+            rms_curvature,
+            ..
+        } => write!(
+            f,
+            "the adhesion range Δr = {} is not short against g₀ = (16/3) h'²_rms/h''_rms \
+             = {} (Δr/g₀ ≥ 0.1): the Pastewka–Robbins criterion assumes short-ranged \
+             adhesion",
+            n(*adhesion_range),
+            n(16.0 / 3.0 * rms_slope * rms_slope / rms_curvature)
+        ),
+        _ => Ok(()),
+    }
 }

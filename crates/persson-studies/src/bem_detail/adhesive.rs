@@ -202,11 +202,15 @@ fn path_warnings(
         let (_, adhesion_range) = law.parameters();
         let cohesive_length = law.cohesive_length(contact_modulus);
         if adhesion_range < spacing || cohesive_length < RESOLVED_COHESIVE_LENGTH * spacing {
-            out.push(Warning::CohesiveZoneUnresolved {
-                adhesion_range,
-                cohesive_length,
-                grid_spacing: spacing,
-            });
+            out.push(
+                Warning::CohesiveZoneUnresolved {
+                    adhesion_range,
+                    cohesive_length,
+                    grid_spacing: spacing,
+                    message: String::new(),
+                }
+                .described(describe),
+            );
         }
     }
     let gaps = |f: &dyn Fn(&AdhesivePoint) -> bool| -> Vec<f64> {
@@ -214,16 +218,24 @@ fn path_warnings(
     };
     let fell_back = gaps(&|p| p.fallback.is_some());
     if !fell_back.is_empty() {
-        out.push(Warning::AdhesiveFallback {
-            mean_gap: fell_back,
-        });
+        out.push(
+            Warning::AdhesiveFallback {
+                mean_gap: fell_back,
+                message: String::new(),
+            }
+            .described(describe),
+        );
     }
     let unconverged = gaps(&|p| !p.converged);
     if !unconverged.is_empty() {
-        out.push(Warning::AdhesiveNotConverged {
-            mean_gap: unconverged,
-            tolerance,
-        });
+        out.push(
+            Warning::AdhesiveNotConverged {
+                mean_gap: unconverged,
+                tolerance,
+                message: String::new(),
+            }
+            .described(describe),
+        );
     }
     out
 }
@@ -486,4 +498,67 @@ pub fn sphere_warnings(r: &AdhesiveSphereReport) -> Vec<Warning> {
         }
     }
     out
+}
+
+/// The text of the adhesive BEM's warnings ([`Warning::described`]).
+pub(crate) fn describe(w: &Warning, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+    let n = |v: f64| crate::table::number(v, 6);
+    match w {
+        Warning::CohesiveZoneUnresolved {
+            adhesion_range,
+            cohesive_length,
+            grid_spacing,
+            ..
+        } => {
+            if adhesion_range < grid_spacing {
+                write!(
+                    f,
+                    "the adhesion range ρ = {} is below the grid spacing L/N = {}",
+                    n(*adhesion_range),
+                    n(*grid_spacing)
+                )?;
+            } else {
+                write!(
+                    f,
+                    "the cohesive length E*Δγ/σ_c² = E*ρ²/Δγ = {} spans only {:.1} grid \
+                     spacings L/N = {}",
+                    n(*cohesive_length),
+                    cohesive_length / grid_spacing,
+                    n(*grid_spacing)
+                )?;
+            }
+            write!(
+                f,
+                ": the cohesive zone is not resolved and the pull-off depends on the grid \
+                 (and, for Maugis–Dugdale, on the solver's path: several solutions are \
+                 stationary); refine the grid or lengthen the range"
+            )
+        }
+        Warning::AdhesiveFallback { mean_gap, .. } => write!(
+            f,
+            "the preconditioned adhesive solver stalled at mean gap ḡ = {} and the plain \
+             iteration finished: same tolerance, more time",
+            mean_gap
+                .iter()
+                .map(|&g| n(g))
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
+        Warning::AdhesiveNotConverged {
+            mean_gap,
+            tolerance,
+            ..
+        } => write!(
+            f,
+            "the adhesive solve at mean gap ḡ = {} stopped short of the tolerance {} \
+             (iteration limit): its numbers are not converged",
+            mean_gap
+                .iter()
+                .map(|&g| n(g))
+                .collect::<Vec<_>>()
+                .join(", "),
+            n(*tolerance)
+        ),
+        _ => Ok(()),
+    }
 }

@@ -197,39 +197,51 @@ pub fn friction_warnings(points: &[FrictionPoint], rubber: &Rubber) -> Vec<Warni
         .collect();
     if let Some(first) = outside.first() {
         let max = |f: fn(&TableExcursion) -> f64| outside.iter().map(f).fold(0.0, f64::max);
-        w.push(Warning::MasterCurveRange {
-            frequency_range: (first.frequency_min, first.frequency_max),
-            decades_below: max(|e| e.decades_below),
-            decades_above: max(|e| e.decades_above),
-            friction_fraction: max(|e| e.friction_fraction),
-            count: outside.len(),
-            of: points.len(),
-        });
+        w.push(
+            Warning::MasterCurveRange {
+                frequency_range: (first.frequency_min, first.frequency_max),
+                decades_below: max(|e| e.decades_below),
+                decades_above: max(|e| e.decades_above),
+                friction_fraction: max(|e| e.friction_fraction),
+                count: outside.len(),
+                of: points.len(),
+                message: String::new(),
+            }
+            .described(describe),
+        );
     }
     let failed: Vec<f64> = results()
         .filter(|r| !r.converged)
         .map(|r| relative(r.friction_coefficient_error_bound, r.friction_coefficient))
         .collect();
     if !failed.is_empty() {
-        w.push(Warning::FrictionNotConverged {
-            count: failed.len(),
-            of: points.len()
-                * if points.iter().any(|p| p.flash.is_some()) {
-                    2
-                } else {
-                    1
-                },
-            relative_error_bound: failed.iter().copied().fold(0.0, f64::max),
-        });
+        w.push(
+            Warning::FrictionNotConverged {
+                count: failed.len(),
+                of: points.len()
+                    * if points.iter().any(|p| p.flash.is_some()) {
+                        2
+                    } else {
+                        1
+                    },
+                relative_error_bound: failed.iter().copied().fold(0.0, f64::max),
+                message: String::new(),
+            }
+            .described(describe),
+        );
     }
     let hottest = results()
         .filter_map(|r| r.shift_table_extended_to)
         .fold(f64::NEG_INFINITY, f64::max);
     if let (true, HorizontalShift::Table(t)) = (hottest.is_finite(), rubber.shift().horizontal()) {
-        w.push(Warning::ShiftTableExtended {
-            temperature_max: t.temperature_range().1,
-            temperature: hottest,
-        });
+        w.push(
+            Warning::ShiftTableExtended {
+                temperature_max: t.temperature_range().1,
+                temperature: hottest,
+                message: String::new(),
+            }
+            .described(describe),
+        );
     }
     w
 }
@@ -243,5 +255,55 @@ fn relative(err: f64, value: f64) -> f64 {
         err.abs()
     } else {
         (err / value).abs()
+    }
+}
+
+/// The text of the rubber-friction warnings ([`Warning::described`]).
+pub(crate) fn describe(w: &Warning, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+    let n = |v: f64| crate::table::number(v, 3);
+    match w {
+        Warning::MasterCurveRange {
+            frequency_range,
+            decades_below,
+            decades_above,
+            friction_fraction,
+            count,
+            of,
+            ..
+        } => write!(
+            f,
+            "the master curve (ω = {} … {} rad/s) was sampled outside its range at {count} of \
+             {of} points, up to {} decade(s) below and {} above (a_T q v; held at its end \
+             values there): up to {} % of μ comes from there (extend the master curve, or \
+             narrow the velocities, temperatures or q1)",
+            n(frequency_range.0),
+            n(frequency_range.1),
+            n(*decades_below),
+            n(*decades_above),
+            n(100.0 * friction_fraction)
+        ),
+        Warning::FrictionNotConverged {
+            count,
+            of,
+            relative_error_bound,
+            ..
+        } => write!(
+            f,
+            "the friction integrals did not reach the tolerance at {count} of {of} points \
+             (relative error bound of μ up to {}; see friction_coefficient_error_bound)",
+            n(*relative_error_bound)
+        ),
+        Warning::ShiftTableExtended {
+            temperature_max,
+            temperature,
+            ..
+        } => write!(
+            f,
+            "the flash temperature heated the rubber to {} K, beyond the shift table's last \
+             row at {} K: a_T was extended linearly in ln a_T there",
+            n(*temperature),
+            n(*temperature_max)
+        ),
+        _ => Ok(()),
     }
 }

@@ -18,6 +18,8 @@ mod spec;
 
 use crate::output::Files;
 use crate::study::{draw, plot_file, Context, Inputs, OutFile, Reads, Study};
+use crate::table::number;
+use crate::warning::Warning;
 pub use plot::{area as figure, distribution as distribution_figure};
 pub use report::*;
 pub use run::*;
@@ -48,8 +50,7 @@ impl Study for Surrogates {
         surrogates(ctx, s)
     }
 
-    fn warnings(r: &SurrogatesReport) -> Vec<crate::warning::Warning> {
-        use crate::warning::Warning;
+    fn warnings(r: &SurrogatesReport) -> Vec<Warning> {
         let nodes = |p: &SurrogatePoint| {
             (p.map_contact_fraction * (r.grid * r.grid) as f64).round() as usize
         };
@@ -61,15 +62,25 @@ impl Study for Surrogates {
         let mut w: Vec<Warning> = r
             .spectrum_mismatch
             .filter(|m| *m > SPECTRUM_TOLERANCE)
-            .map(|mismatch| Warning::SurrogateSpectrum { mismatch })
+            .map(|mismatch| {
+                Warning::SurrogateSpectrum {
+                    mismatch,
+                    message: String::new(),
+                }
+                .described(describe)
+            })
             .into_iter()
             .collect();
         if !coarse.is_empty() {
-            w.push(Warning::CoarseContact {
-                nominal_pressure: coarse.iter().map(|p| p.nominal_pressure).collect(),
-                nodes: coarse.iter().map(|p| nodes(p)).collect(),
-                min_nodes: MIN_CONTACT_NODES,
-            });
+            w.push(
+                Warning::CoarseContact {
+                    nominal_pressure: coarse.iter().map(|p| p.nominal_pressure).collect(),
+                    nodes: coarse.iter().map(|p| nodes(p)).collect(),
+                    min_nodes: MIN_CONTACT_NODES,
+                    message: String::new(),
+                }
+                .described(describe),
+            );
         }
         w
     }
@@ -121,4 +132,38 @@ fn write_surfaces(r: &SurrogatesReport, path: &Path, out: &mut Files) -> Result<
         out.write(&p, &persson::io::npy::encode(r.grid, r.grid, h)?)?;
     }
     Ok(())
+}
+
+/// The text of `surrogates`'s warnings ([`Warning::described`]).
+pub(crate) fn describe(w: &Warning, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+    match w {
+        Warning::SurrogateSpectrum { mismatch, .. } => write!(
+            f,
+            "the amplitude-adjusted surrogates' radial spectrum differs from the map's by up \
+             to {} in some bins (their heights are the map's exactly): part of a difference \
+             may be the spectrum's; compare with kind = phase",
+            number(*mismatch * 100.0, 3) + " %"
+        ),
+        Warning::CoarseContact {
+            nominal_pressure,
+            nodes,
+            min_nodes,
+            ..
+        } => write!(
+            f,
+            "at σ0 = {} the map touches on fewer than {min_nodes} grid nodes ({}): its A/A0, \
+             patches and tail rest on too few points there; use a finer map or larger loads",
+            nominal_pressure
+                .iter()
+                .map(|p| number(*p, 4))
+                .collect::<Vec<_>>()
+                .join(", "),
+            nodes
+                .iter()
+                .map(usize::to_string)
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
+        _ => Ok(()),
+    }
 }

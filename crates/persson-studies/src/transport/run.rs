@@ -377,13 +377,17 @@ pub fn sealed_bem(points: &[BemTransportPoint]) -> Option<Warning> {
 
 fn sealed_warning(method: &str, sealed: &[(f64, f64)], threshold: Option<f64>) -> Option<Warning> {
     let first = sealed.iter().copied().min_by(|a, b| a.0.total_cmp(&b.0))?;
-    Some(Warning::Sealed {
-        method: method.into(),
-        nominal_pressure: first.0,
-        count: sealed.len(),
-        contact_fraction: first.1,
-        percolation_threshold: threshold,
-    })
+    Some(
+        Warning::Sealed {
+            method: method.into(),
+            nominal_pressure: first.0,
+            count: sealed.len(),
+            contact_fraction: first.1,
+            percolation_threshold: threshold,
+            message: String::new(),
+        }
+        .described(describe),
+    )
 }
 
 /// The FFT-BEM beside a theory (feature `flow`).
@@ -400,4 +404,38 @@ fn bem(
         b,
         request,
     )
+}
+
+/// The text of `leakage` and its comparison with the BEM's warnings ([`Warning::described`]).
+pub(crate) fn describe(w: &Warning, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+    let n = |v: f64| crate::table::number(v, 6);
+    match w {
+        Warning::Sealed {
+            method,
+            nominal_pressure,
+            count,
+            contact_fraction,
+            percolation_threshold,
+            ..
+        } => {
+            let why = match percolation_threshold {
+                Some(a) => format!(
+                    "A/A0 = {} is at or above the percolation threshold {}",
+                    n(*contact_fraction),
+                    n(*a)
+                ),
+                None => format!(
+                    "A/A0 = {}, no open path joins inlet and outlet",
+                    n(*contact_fraction)
+                ),
+            };
+            write!(
+                f,
+                "the contact already percolates at {count} load(s) from σ0 = {} ({why}): \
+                 the {method} leak rate is 0 there",
+                n(*nominal_pressure)
+            )
+        }
+        _ => Ok(()),
+    }
 }

@@ -703,8 +703,7 @@ fn sealed_warnings(points: &[TransportComparedPoint], a_c: f64) -> Vec<Warning> 
             nominal_pressure: first.nominal_pressure,
             count: hits.len(),
             contact_fraction: first.bem_contact_fraction,
-            percolation_threshold: threshold,
-        });
+            percolation_threshold: threshold, message: String::new(), }.described(crate::transport::describe));
     }
     out
 }

@@ -185,14 +185,7 @@ impl PatchCollector {
             grid,
             nominal_pressure,
             count,
-            min_patches: MIN_PATCHES,
-            message: format!(
-                "at {count} (grid, σ0) point(s), from N = {grid}, σ0 = {}, a solve has fewer \
-                 than {MIN_PATCHES} contact patches or too few occupied bins: the patch-area \
-                 exponent τ there is rough or absent",
-                number(nominal_pressure, 4)
-            ),
-        });
+            min_patches: MIN_PATCHES, message: String::new(), }.described(describe));
         (
             PatchComparison {
                 connectivity: self.options.connectivity,
@@ -243,6 +236,26 @@ pub fn patch_table(p: &PatchComparison, pressures: &[f64]) -> Table {
         }
     }
     t
+}
+
+/// The text of the `few_patches` warning ([`Warning::described`]).
+pub(crate) fn describe(w: &Warning, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+    match w {
+        Warning::FewPatches {
+            grid,
+            nominal_pressure,
+            count,
+            min_patches,
+            ..
+        } => write!(
+            f,
+            "at {count} (grid, σ0) point(s), from N = {grid}, σ0 = {}, a solve has fewer \
+             than {min_patches} contact patches or too few occupied bins: the patch-area \
+             exponent τ there is rough or absent",
+            number(*nominal_pressure, 4)
+        ),
+        _ => Ok(()),
+    }
 }
 
 #[cfg(test)]

@@ -39,6 +39,9 @@ cfg_feature! {
     pub use measured::{of_measured, of_notes};
 }
 
+/// A study's text of its warnings ([`Warning::described`]).
+pub type Describe = fn(&Warning, &mut std::fmt::Formatter<'_>) -> std::fmt::Result;
+
 /// σ0 above this fraction of E* is warned of ([`Warning::HighPressure`]).
 pub const HIGH_PRESSURE_RATIO: f64 = 0.1;
 
@@ -191,6 +194,9 @@ pub enum Warning {
         pull_off_stress: f64,
         /// How many of the pressures are beyond it.
         count: usize,
+        /// Its text, written by the study that raises it (module `adhesion`).
+        #[serde(skip)]
+        message: String,
     },
     /// Adhesive contact fractions whose error estimate exceeds the tolerance
     /// at the largest mesh allowed.
@@ -201,6 +207,9 @@ pub enum Warning {
         error_bound: f64,
         /// How many points missed it.
         count: usize,
+        /// Its text, written by the study that raises it (module `adhesion`).
+        #[serde(skip)]
+        message: String,
     },
     /// The adhesion range is not short against g₀ = (16/3) h'²_rms/h''_rms
     /// (Δr/g₀ ≥ 0.1), as the Pastewka–Robbins criterion assumes.
@@ -211,6 +220,9 @@ pub enum Warning {
         rms_slope: f64,
         /// h''_rms over the band, 1/m.
         rms_curvature: f64,
+        /// Its text, written by the study that raises it (module `adhesion`).
+        #[serde(skip)]
+        message: String,
     },
     /// The spectra of two (or more) rough bodies cover bands more than
     /// [`SUM_BAND_RATIO`] apart: outside their common band the sum is one
@@ -252,12 +264,18 @@ pub enum Warning {
         cohesive_length: f64,
         /// L/N, m.
         grid_spacing: f64,
+        /// Its text, written by the study that raises it (module `bem_detail`).
+        #[serde(skip)]
+        message: String,
     },
     /// The adhesive BEM's preconditioned iteration stalled at these mean gaps
     /// and the plain one finished: the same tolerance, more time.
     AdhesiveFallback {
         /// ḡ of the solves that fell back, m.
         mean_gap: Vec<f64>,
+        /// Its text, written by the study that raises it (module `bem_detail`).
+        #[serde(skip)]
+        message: String,
     },
     /// Adhesive BEM solves that stopped short of the tolerance (iteration limit).
     AdhesiveNotConverged {
@@ -265,6 +283,9 @@ pub enum Warning {
         mean_gap: Vec<f64>,
         /// The tolerance ε asked for.
         tolerance: f64,
+        /// Its text, written by the study that raises it (module `bem_detail`).
+        #[serde(skip)]
+        message: String,
     },
     /// Rubber friction sampled a master curve outside its frequency range,
     /// where it is held at its end values.
@@ -281,6 +302,9 @@ pub enum Warning {
         count: usize,
         /// Points in all.
         of: usize,
+        /// Its text, written by the study that raises it (module `friction`).
+        #[serde(skip)]
+        message: String,
     },
     /// Rubber friction whose integrals did not reach the tolerance at some
     /// points (their error bounds say how far off).
@@ -291,6 +315,9 @@ pub enum Warning {
         of: usize,
         /// The largest relative error bound of μ among them.
         relative_error_bound: f64,
+        /// Its text, written by the study that raises it (module `friction`).
+        #[serde(skip)]
+        message: String,
     },
     /// The flash temperature heated the rubber beyond a shift table's last
     /// row: a_T was extended linearly in ln a_T.
@@ -299,6 +326,9 @@ pub enum Warning {
         temperature_max: f64,
         /// The highest temperature reached, K.
         temperature: f64,
+        /// Its text, written by the study that raises it (module `friction`).
+        #[serde(skip)]
+        message: String,
     },
     /// The contact already percolates at these loads: no channel crosses
     /// the seal, the leak rate of `method` is 0 there (a result, not an error).
@@ -316,6 +346,9 @@ pub enum Warning {
         /// finds no open path).
         #[serde(skip_serializing_if = "Option::is_none")]
         percolation_threshold: Option<f64>,
+        /// Its text, written by the study that raises it (module `transport`).
+        #[serde(skip)]
+        message: String,
     },
     /// Nayak's bandwidth parameter α of the surface is below the asperity
     /// theories' threshold ([`persson::asperity::moments::SMALL_BANDWIDTH`]).
@@ -369,6 +402,9 @@ pub enum Warning {
     SurrogateSpectrum {
         /// The largest relative difference over the radial bins.
         mismatch: f64,
+        /// Its text, written by the study that raises it (module `surrogates`).
+        #[serde(skip)]
+        message: String,
     },
     /// Loads at which the map touches on so few grid nodes that its A/A0,
     /// patches and tail rest on too few points (`surrogates`).
@@ -379,6 +415,9 @@ pub enum Warning {
         nodes: Vec<usize>,
         /// The threshold.
         min_nodes: usize,
+        /// Its text, written by the study that raises it (module `surrogates`).
+        #[serde(skip)]
+        message: String,
     },
     /// A height map's fourth moment depends on its pixel size
     /// ([`persson::asperity::moments::CURVATURE_RESOLUTION_RATIO`]).
@@ -396,6 +435,47 @@ pub enum Warning {
 }
 
 impl Warning {
+    /// This warning with its text written by `describe`, the function of the
+    /// study that raises it (module docs): kept in its `message` field, which
+    /// [`std::fmt::Display`] prints. A shared warning, which has no such
+    /// field, is returned as it is.
+    pub fn described(mut self, describe: Describe) -> Self {
+        struct Text<'a>(&'a Warning, Describe);
+        impl std::fmt::Display for Text<'_> {
+            fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                (self.1)(self.0, f)
+            }
+        }
+        let text = Text(&self, describe).to_string();
+        if let Some(m) = self.message_mut() {
+            *m = text;
+        }
+        self
+    }
+
+    /// The `message` of a warning whose text is its study's.
+    fn message_mut(&mut self) -> Option<&mut String> {
+        match self {
+            Warning::SmallBandwidth { message, .. }
+            | Warning::Coalescence { message, .. }
+            | Warning::CurvatureUnresolved { message, .. }
+            | Warning::FewPatches { message, .. }
+            | Warning::BeyondPullOff { message, .. }
+            | Warning::AdhesionToleranceNotMet { message, .. }
+            | Warning::LongAdhesionRange { message, .. }
+            | Warning::CohesiveZoneUnresolved { message, .. }
+            | Warning::AdhesiveFallback { message, .. }
+            | Warning::AdhesiveNotConverged { message, .. }
+            | Warning::MasterCurveRange { message, .. }
+            | Warning::FrictionNotConverged { message, .. }
+            | Warning::ShiftTableExtended { message, .. }
+            | Warning::Sealed { message, .. }
+            | Warning::SurrogateSpectrum { message, .. }
+            | Warning::CoarseContact { message, .. } => Some(message),
+            _ => None,
+        }
+    }
+
     /// [`Warning::HighPressure`] when some σ0 is above [`HIGH_PRESSURE_RATIO`] E*.
     pub fn high_pressure(pressures: &[f64], contact_modulus: f64) -> Option<Self> {
         let above: Vec<f64> = pressures
@@ -594,6 +674,33 @@ pub fn not_computed(tables: &[crate::table::Table]) -> Vec<Warning> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A study's warning carries the text its study writes: printed, and in
+    /// JSON as `message` beside its fields (not twice); a shared warning is
+    /// left as it is.
+    #[test]
+    fn a_study_writes_its_warnings_text() {
+        let w = Warning::Sealed {
+            method: "bem".into(),
+            nominal_pressure: 2e6,
+            count: 3,
+            contact_fraction: 0.5,
+            percolation_threshold: None,
+            message: String::new(),
+        }
+        .described(crate::transport::describe);
+        assert_eq!(
+            w.to_string(),
+            "the contact already percolates at 3 load(s) from σ0 = 2e6 (A/A0 = 0.5, no open \
+             path joins inlet and outlet): the bem leak rate is 0 there"
+        );
+        let json = serde_json::to_value(&w).unwrap();
+        assert_eq!(json["kind"], "sealed");
+        assert_eq!(json["message"], w.to_string());
+        assert_eq!(json.as_object().unwrap().len(), 6, "{json}");
+        let shared = Warning::MapNotPeriodic;
+        assert_eq!(shared.clone().described(crate::transport::describe), shared);
+    }
 
     #[test]
     fn one_line_and_serialised_with_its_kind() {

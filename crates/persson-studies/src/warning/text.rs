@@ -179,45 +179,6 @@ fn text_of_theories(w: &Warning, f: &mut fmt::Formatter<'_>, mine: &mut bool) ->
             n(q_range.0),
             n(q_range.1)
         ),
-        Warning::BeyondPullOff {
-            nominal_pressure,
-            pull_off_stress,
-            count,
-        } => write!(
-            f,
-            "{} at or below −σ_p, minus the pull-off stress σ_p = {} (the highest: \
-             σ0 = {}): nothing is in contact there (A/A0 = 0)",
-            if *count > 1 {
-                format!("{count} nominal pressures are")
-            } else {
-                "a nominal pressure is".to_string()
-            },
-            n(*pull_off_stress),
-            n(*nominal_pressure)
-        ),
-        Warning::AdhesionToleranceNotMet {
-            tolerance,
-            error_bound,
-            count,
-        } => write!(
-            f,
-            "{count} adhesive contact fraction(s) did not reach the tolerance {} at the \
-             largest mesh: error estimate up to {} (reported with each point)",
-            n(*tolerance),
-            n(*error_bound)
-        ),
-        Warning::LongAdhesionRange {
-            adhesion_range,
-            rms_slope,
-            rms_curvature,
-        } => write!(
-            f,
-            "the adhesion range Δr = {} is not short against g₀ = (16/3) h'²_rms/h''_rms \
-             = {} (Δr/g₀ ≥ 0.1): the Pastewka–Robbins criterion assumes short-ranged \
-             adhesion",
-            n(*adhesion_range),
-            n(16.0 / 3.0 * rms_slope * rms_slope / rms_curvature)
-        ),
         Warning::SumBands { bands, ratio } => {
             let b: Vec<String> = bands
                 .iter()
@@ -273,62 +234,6 @@ fn text_of_solves(w: &Warning, f: &mut fmt::Formatter<'_>, mine: &mut bool) -> f
                     .join(", ")
             )
         }
-        Warning::CohesiveZoneUnresolved {
-            adhesion_range,
-            cohesive_length,
-            grid_spacing,
-        } => {
-            if adhesion_range < grid_spacing {
-                write!(
-                    f,
-                    "the adhesion range ρ = {} is below the grid spacing L/N = {}",
-                    n(*adhesion_range),
-                    n(*grid_spacing)
-                )?;
-            } else {
-                write!(
-                    f,
-                    "the cohesive length E*Δγ/σ_c² = E*ρ²/Δγ = {} spans only {:.1} grid \
-                     spacings L/N = {}",
-                    n(*cohesive_length),
-                    cohesive_length / grid_spacing,
-                    n(*grid_spacing)
-                )?;
-            }
-            write!(
-                f,
-                ": the cohesive zone is not resolved and the pull-off depends on the grid \
-                 (and, for Maugis–Dugdale, on the solver's path: several solutions are \
-                 stationary); refine the grid or lengthen the range"
-            )
-        }
-        Warning::AdhesiveFallback { mean_gap } => write!(
-            f,
-            "the preconditioned adhesive solver stalled at mean gap ḡ = {} and the plain \
-             iteration finished: same tolerance, more time",
-            mean_gap
-                .iter()
-                .map(|&g| n(g))
-                .collect::<Vec<_>>()
-                .join(", ")
-        ),
-        Warning::AdhesiveNotConverged {
-            mean_gap,
-            tolerance,
-        } => write!(
-            f,
-            "the adhesive solve at mean gap ḡ = {} stopped short of the tolerance {} \
-             (iteration limit): its numbers are not converged",
-            mean_gap
-                .iter()
-                .map(|&g| n(g))
-                .collect::<Vec<_>>()
-                .join(", "),
-            n(*tolerance)
-        ),
-        Warning::MasterCurveRange { .. }
-        | Warning::FrictionNotConverged { .. }
-        | Warning::ShiftTableExtended { .. } => friction(f, w),
         _ => {
             *mine = false;
             Ok(())
@@ -338,64 +243,24 @@ fn text_of_solves(w: &Warning, f: &mut fmt::Formatter<'_>, mine: &mut bool) -> f
 
 /// The text of the warnings of this group; `mine` set to false for the others.
 fn text_of_rest(w: &Warning, f: &mut fmt::Formatter<'_>, mine: &mut bool) -> fmt::Result {
-    let n = |v: f64| number(v, 6);
     match w {
-        Warning::Sealed {
-            method,
-            nominal_pressure,
-            count,
-            contact_fraction,
-            percolation_threshold,
-        } => {
-            let why = match percolation_threshold {
-                Some(a) => format!(
-                    "A/A0 = {} is at or above the percolation threshold {}",
-                    n(*contact_fraction),
-                    n(*a)
-                ),
-                None => format!(
-                    "A/A0 = {}, no open path joins inlet and outlet",
-                    n(*contact_fraction)
-                ),
-            };
-            write!(
-                f,
-                "the contact already percolates at {count} load(s) from σ0 = {} ({why}): \
-                 the {method} leak rate is 0 there",
-                n(*nominal_pressure)
-            )
-        }
-        // Written by the study that raises them.
+        // Written by the study that raises them (Warning::described).
         Warning::SmallBandwidth { message, .. }
         | Warning::Coalescence { message, .. }
         | Warning::CurvatureUnresolved { message, .. }
-        | Warning::FewPatches { message, .. } => f.write_str(message),
-        Warning::SurrogateSpectrum { mismatch } => write!(
-            f,
-            "the amplitude-adjusted surrogates' radial spectrum differs from the map's by up \
-             to {} in some bins (their heights are the map's exactly): part of a difference \
-             may be the spectrum's; compare with kind = phase",
-            number(*mismatch * 100.0, 3) + " %"
-        ),
-        Warning::CoarseContact {
-            nominal_pressure,
-            nodes,
-            min_nodes,
-        } => write!(
-            f,
-            "at σ0 = {} the map touches on fewer than {min_nodes} grid nodes ({}): its A/A0, \
-             patches and tail rest on too few points there; use a finer map or larger loads",
-            nominal_pressure
-                .iter()
-                .map(|p| number(*p, 4))
-                .collect::<Vec<_>>()
-                .join(", "),
-            nodes
-                .iter()
-                .map(usize::to_string)
-                .collect::<Vec<_>>()
-                .join(", ")
-        ),
+        | Warning::FewPatches { message, .. }
+        | Warning::BeyondPullOff { message, .. }
+        | Warning::AdhesionToleranceNotMet { message, .. }
+        | Warning::LongAdhesionRange { message, .. }
+        | Warning::CohesiveZoneUnresolved { message, .. }
+        | Warning::AdhesiveFallback { message, .. }
+        | Warning::AdhesiveNotConverged { message, .. }
+        | Warning::MasterCurveRange { message, .. }
+        | Warning::FrictionNotConverged { message, .. }
+        | Warning::ShiftTableExtended { message, .. }
+        | Warning::Sealed { message, .. }
+        | Warning::SurrogateSpectrum { message, .. }
+        | Warning::CoarseContact { message, .. } => f.write_str(message),
         Warning::MapNotPeriodic => write!(
             f,
             "the map is not periodic: its coarser copies are block averages, each a \
@@ -406,53 +271,6 @@ fn text_of_rest(w: &Warning, f: &mut fmt::Formatter<'_>, mine: &mut bool) -> fmt
             *mine = false;
             Ok(())
         }
-    }
-}
-
-/// The text of the rubber-friction warnings.
-fn friction(f: &mut fmt::Formatter<'_>, w: &Warning) -> fmt::Result {
-    let n = |v: f64| number(v, 3);
-    match w {
-        Warning::MasterCurveRange {
-            frequency_range,
-            decades_below,
-            decades_above,
-            friction_fraction,
-            count,
-            of,
-        } => write!(
-            f,
-            "the master curve (ω = {} … {} rad/s) was sampled outside its range at {count} of \
-             {of} points, up to {} decade(s) below and {} above (a_T q v; held at its end \
-             values there): up to {} % of μ comes from there (extend the master curve, or \
-             narrow the velocities, temperatures or q1)",
-            n(frequency_range.0),
-            n(frequency_range.1),
-            n(*decades_below),
-            n(*decades_above),
-            n(100.0 * friction_fraction)
-        ),
-        Warning::FrictionNotConverged {
-            count,
-            of,
-            relative_error_bound,
-        } => write!(
-            f,
-            "the friction integrals did not reach the tolerance at {count} of {of} points \
-             (relative error bound of μ up to {}; see friction_coefficient_error_bound)",
-            n(*relative_error_bound)
-        ),
-        Warning::ShiftTableExtended {
-            temperature_max,
-            temperature,
-        } => write!(
-            f,
-            "the flash temperature heated the rubber to {} K, beyond the shift table's last \
-             row at {} K: a_T was extended linearly in ln a_T there",
-            n(*temperature),
-            n(*temperature_max)
-        ),
-        _ => Ok(()),
     }
 }
 
