@@ -434,6 +434,49 @@ pub enum Warning {
     },
 }
 
+/// The warnings whose text is their study's (module docs): their `message`,
+/// read by `Display` and written by [`Warning::described`].
+macro_rules! study_text {
+    ($($v:ident),+ $(,)?) => {
+        impl Warning {
+            /// The text its study wrote, for a study's warning.
+            fn message(&self) -> Option<&str> {
+                match self {
+                    $(Warning::$v { message, .. })|+ => Some(message),
+                    _ => None,
+                }
+            }
+
+            /// The same, to write.
+            fn message_mut(&mut self) -> Option<&mut String> {
+                match self {
+                    $(Warning::$v { message, .. })|+ => Some(message),
+                    _ => None,
+                }
+            }
+        }
+    };
+}
+
+study_text!(
+    SmallBandwidth,
+    Coalescence,
+    CurvatureUnresolved,
+    FewPatches,
+    BeyondPullOff,
+    AdhesionToleranceNotMet,
+    LongAdhesionRange,
+    CohesiveZoneUnresolved,
+    AdhesiveFallback,
+    AdhesiveNotConverged,
+    MasterCurveRange,
+    FrictionNotConverged,
+    ShiftTableExtended,
+    Sealed,
+    SurrogateSpectrum,
+    CoarseContact,
+);
+
 impl Warning {
     /// This warning with its text written by `describe`, the function of the
     /// study that raises it (module docs): kept in its `message` field, which
@@ -451,29 +494,6 @@ impl Warning {
             *m = text;
         }
         self
-    }
-
-    /// The `message` of a warning whose text is its study's.
-    fn message_mut(&mut self) -> Option<&mut String> {
-        match self {
-            Warning::SmallBandwidth { message, .. }
-            | Warning::Coalescence { message, .. }
-            | Warning::CurvatureUnresolved { message, .. }
-            | Warning::FewPatches { message, .. }
-            | Warning::BeyondPullOff { message, .. }
-            | Warning::AdhesionToleranceNotMet { message, .. }
-            | Warning::LongAdhesionRange { message, .. }
-            | Warning::CohesiveZoneUnresolved { message, .. }
-            | Warning::AdhesiveFallback { message, .. }
-            | Warning::AdhesiveNotConverged { message, .. }
-            | Warning::MasterCurveRange { message, .. }
-            | Warning::FrictionNotConverged { message, .. }
-            | Warning::ShiftTableExtended { message, .. }
-            | Warning::Sealed { message, .. }
-            | Warning::SurrogateSpectrum { message, .. }
-            | Warning::CoarseContact { message, .. } => Some(message),
-            _ => None,
-        }
     }
 
     /// [`Warning::HighPressure`] when some σ0 is above [`HIGH_PRESSURE_RATIO`] E*.

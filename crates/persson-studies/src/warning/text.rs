@@ -11,6 +11,10 @@ impl fmt::Display for Warning {
     /// The text of the group the warning is in (each group a function, in
     /// the order of the variants).
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        // A study's warning: the text its study wrote (Warning::described).
+        if let Some(text) = self.message() {
+            return f.write_str(text);
+        }
         type Text = fn(&Warning, &mut fmt::Formatter<'_>, &mut bool) -> fmt::Result;
         const GROUPS: [Text; 4] = [
             text_of_inputs,
@@ -244,23 +248,6 @@ fn text_of_solves(w: &Warning, f: &mut fmt::Formatter<'_>, mine: &mut bool) -> f
 /// The text of the warnings of this group; `mine` set to false for the others.
 fn text_of_rest(w: &Warning, f: &mut fmt::Formatter<'_>, mine: &mut bool) -> fmt::Result {
     match w {
-        // Written by the study that raises them (Warning::described).
-        Warning::SmallBandwidth { message, .. }
-        | Warning::Coalescence { message, .. }
-        | Warning::CurvatureUnresolved { message, .. }
-        | Warning::FewPatches { message, .. }
-        | Warning::BeyondPullOff { message, .. }
-        | Warning::AdhesionToleranceNotMet { message, .. }
-        | Warning::LongAdhesionRange { message, .. }
-        | Warning::CohesiveZoneUnresolved { message, .. }
-        | Warning::AdhesiveFallback { message, .. }
-        | Warning::AdhesiveNotConverged { message, .. }
-        | Warning::MasterCurveRange { message, .. }
-        | Warning::FrictionNotConverged { message, .. }
-        | Warning::ShiftTableExtended { message, .. }
-        | Warning::Sealed { message, .. }
-        | Warning::SurrogateSpectrum { message, .. }
-        | Warning::CoarseContact { message, .. } => f.write_str(message),
         Warning::MapNotPeriodic => write!(
             f,
             "the map is not periodic: its coarser copies are block averages, each a \
