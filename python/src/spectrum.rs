@@ -259,9 +259,10 @@ impl Spectrum {
     }
 
     /// One spectrum from several measurements of one surface in files (the
-    /// CLI's repeated --surface): each contributes its reliable band (its
-    /// size down to Nyquist, `q_max`, or the tip-radius cut-off), and C is
-    /// the mode-weighted mean over the overlaps. `sizes`, `pixel_sizes`,
+    /// CLI's repeated --surface): each contributes its reliable band (from
+    /// 8 modes of its size, where a window's main lobe no longer biases C,
+    /// to Nyquist, `q_max`, the tip-radius cut-off or its noise floor), and
+    /// C is the mode-weighted mean over the overlaps. `sizes`, `pixel_sizes`,
     /// `tip_radii`: one value per file (None where the file says).
     #[staticmethod]
     #[pyo3(signature = (paths, *, sizes=None, pixel_sizes=None, tip_radii=None, periodic=false, detrend=None, window=None, q_max=None))]
