@@ -52,14 +52,14 @@ def ensemble(
     pressure,
     *,
     grid=64,
-    levels=2,
+    levels=3,
     seeds=4,
     seed=1,
     pixels_per_wavelength=4.0,
     tolerance=1e-10,
     max_iterations=10000,
     client=None,
-    threads=1,
+    threads=0,
     timeout=CONNECT_TIMEOUT,
 ):
     """The FFT-BEM on an ensemble of surfaces: seeds ``seed … seed + seeds − 1``

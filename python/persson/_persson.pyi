@@ -444,14 +444,14 @@ def ensemble(
     pressure: ArrayLike,
     *,
     grid: int = 64,
-    levels: int = 2,
+    levels: int = 3,
     seeds: int = 4,
     seed: int = 1,
     pixels_per_wavelength: float = 4.0,
     tolerance: float = 1e-10,
     max_iterations: int = 10000,
     client: Any = None,
-    threads: int = 1,
+    threads: int = 0,
     timeout: str = "10s",
 ) -> Report:
     """`persson compare ensemble --json`: the BEM on seeds × grids, here or on Dask

@@ -207,23 +207,15 @@ fn bem_rough<'py>(
         }
         let range = adhesion_range
             .ok_or_else(|| value_error("adhesion_range: required with work_of_adhesion"))?;
-        let (by_gap, values) = match (mean_gap, approach) {
-            (Some(_), Some(_)) => {
-                return Err(value_error("approach: give mean_gap or approach, not both"))
-            }
-            (Some(_), None) if b != Boundary::Periodic => {
-                return Err(value_error(
-                    "mean_gap: with boundary='free' the adhesive BEM runs under approach control (approach=[…])",
-                ))
-            }
-            (Some(g), None) => (true, float_list("mean_gap", g)?),
-            (None, Some(d)) => (false, float_list("approach", d)?),
-            (None, None) => {
-                return Err(value_error(
-                    "mean_gap: required with work_of_adhesion (or approach)",
-                ))
-            }
+        let list = |name: &str, v: Option<&Bound<'py, PyAny>>| -> PyResult<Vec<f64>> {
+            v.map(|v| float_list(name, v))
+                .transpose()
+                .map(Option::unwrap_or_default)
         };
+        let (gaps, approaches) = (list("mean_gap", mean_gap)?, list("approach", approach)?);
+        // The one check of a path's lists (the command line's and the
+        // scene's), every value before any solve.
+        let control = PathControl::new(&gaps, &approaches, b).map_err(err)?;
         let kind = law_kind(adhesion)?;
         let iteration = AdhesiveIteration::parse(adhesive_iteration).map_err(err)?;
         let opts = persson::bem::adhesive::AdhesiveOptions {
@@ -233,11 +225,6 @@ fn bem_rough<'py>(
         let (s, _) = grid_surface(py, source, b)?;
         let r = py
             .detach(|| {
-                let control = if by_gap {
-                    PathControl::MeanGap(&values)
-                } else {
-                    PathControl::Approach(&values)
-                };
                 adhesive_controlled_path(
                     &s.heights,
                     (s.n, s.size, contact_modulus),
@@ -481,6 +468,18 @@ fn compare<'py>(
     let Seed(seed) = seed;
     if seeds < 1 {
         return Err(value_error("seeds: must be at least 1"));
+    }
+    // As the command line refuses --grid/--seed/--seeds with --surface and
+    // --periodic without it: nothing given is silently left unused.
+    if heights.is_some() && (grid != 256 || seeds != 1 || seed != 1) {
+        return Err(value_error(
+            "grid, seed, seeds: for a synthesised surface; a height map (heights) sets its own grid and is one surface",
+        ));
+    }
+    if heights.is_none() && periodic {
+        return Err(value_error(
+            "periodic: for a height map (heights); a synthesised surface is periodic",
+        ));
     }
     let mut config = ComparisonConfig::new(contact_modulus);
     config.nominal_pressure = pressure

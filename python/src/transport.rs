@@ -287,11 +287,13 @@ pub(crate) fn compare_transport(
 ) -> PyResult<Option<persson_studies::validation::TransportCompareConfig>> {
     let conductance =
         k.conductivity.is_some() || k.resistivity.is_some() || k.gas_conductivity.is_some();
-    let seal_given =
-        k.viscosity.is_some() || k.pressure_drop.is_some() || k.inlet_pressure.is_some();
+    let seal_given = k.viscosity.is_some()
+        || k.pressure_drop.is_some()
+        || k.inlet_pressure.is_some()
+        || k.outlet_pressure.is_some();
     if seal_given && !k.leakage {
         return Err(value_error(
-            "viscosity / pressure_drop / inlet_pressure: add leakage=True to compare the leak rate",
+            "viscosity / pressure_drop / inlet_pressure / outlet_pressure: add leakage=True to compare the leak rate",
         ));
     }
     if !k.leakage && !conductance {

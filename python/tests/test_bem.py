@@ -115,6 +115,32 @@ def test_compare_on_a_map_matches_cli(tmp_path, periodic):
     same(r, cli, drop=("seconds", "surface"))
 
 
+def test_compare_refuses_what_it_would_ignore():
+    """As the command line: `grid`/`seed`/`seeds` are for a synthesised
+    surface, `periodic` for a height map, `outlet_pressure` for the leakage
+    comparison; given where they do nothing, they are refused, named."""
+    h = persson.synthesize(spectrum(), 32, seed=6)
+    s = persson.Spectrum.from_height_map(h, 1.0 / 32)
+    for bad in [dict(grid=64), dict(seed=2), dict(seeds=2)]:
+        with pytest.raises(ValueError, match="grid, seed, seeds"):
+            persson.compare(s, 1.0, [0.01], heights=h, size=1.0, **bad)
+    with pytest.raises(ValueError, match="periodic"):
+        persson.compare(spectrum(), 1.0, [0.01], grid=32, levels=2, periodic=True)
+    with pytest.raises(ValueError, match="outlet_pressure"):
+        persson.compare(spectrum(), 1.0, [0.01], grid=32, levels=2, outlet_pressure=1e5)
+
+
+def test_adhesive_path_is_checked_before_any_solve():
+    """Every mean gap is checked first, named by its index, as the command
+    line and the scene do (`PathControl::new`)."""
+    with pytest.raises(ValueError, match=r"mean_gap\[1\]"):
+        persson.bem_rough(1.0, spectrum=spectrum(), grid=32, work_of_adhesion=2e-4,
+                          adhesion_range=0.05, mean_gap=[4e-3, -1e-3])
+    with pytest.raises(ValueError, match="mean_gap and approach"):
+        persson.bem_rough(1.0, spectrum=spectrum(), grid=32, work_of_adhesion=2e-4,
+                          adhesion_range=0.05, mean_gap=[4e-3], approach=[1e-3])
+
+
 def test_scene_with_bem_matches_cli(tmp_path):
     import pathlib
     path = pathlib.Path(__file__).resolve().parents[2] / "scenes" / "bem_rough.json"

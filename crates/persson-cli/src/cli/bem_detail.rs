@@ -14,7 +14,7 @@ use serde::Serialize;
 use super::bem_args::DetailArgs;
 
 /// The patch and stress studies `args` asks for, on an `n × n` grid of side
-/// `size`; the depths are checked here, before any solve.
+/// `size`; checked here, before any solve ([`Details::new`]).
 pub fn details(
     args: &DetailArgs,
     (n, size, boundary): (usize, f64, Boundary),
@@ -36,8 +36,13 @@ pub fn details(
         tensile_yield_stress: args.tensile_yield_stress,
         keep_maps: args.stress_plot.is_some() || args.stress_field.is_some(),
     });
-    Details::new((n, size, boundary), pressures, patches, subsurface)
-        .map_err(|e| anyhow::anyhow!("--depth: {e}"))
+    // The library names the field; the command line's blame names its flag.
+    Ok(Details::new(
+        (n, size, boundary),
+        pressures,
+        patches,
+        subsurface,
+    )?)
 }
 
 /// The load curve (with its transport values, if asked) with the patch and

@@ -122,6 +122,45 @@ fn bad_depths_name_the_flag() {
     }
 }
 
+/// The other studies' bad values name their own flag, before any solve
+/// (a progress bar or a table would show a solve): patches' bins per decade
+/// 0, a tensile yield stress not > 0.
+#[test]
+fn bad_study_settings_name_their_flag_before_any_solve() {
+    let base = [
+        "bem",
+        "rough",
+        "--example",
+        "--grid",
+        "32",
+        "--pressure",
+        "1e7",
+    ];
+    for (extra, flag) in [
+        (
+            &["--patches", "--bins-per-decade", "0"][..],
+            "--bins-per-decade",
+        ),
+        (
+            &[
+                "--subsurface",
+                "--depth",
+                "1e-5",
+                "--tensile-yield-stress",
+                "-1",
+            ][..],
+            "--tensile-yield-stress",
+        ),
+    ] {
+        let args: Vec<&str> = base.iter().chain(extra).copied().collect();
+        let (code, out, err) = persson(&args);
+        assert_eq!(code, 2, "{extra:?}: {err}");
+        assert!(err.contains(flag), "{extra:?}: {err}");
+        assert!(!err.contains("--depth:"), "{extra:?}: {err}");
+        assert!(out.is_empty(), "{extra:?}: {out}");
+    }
+}
+
 #[test]
 #[cfg(feature = "plot")]
 fn stress_plots_are_drawn_beside_the_npy() {

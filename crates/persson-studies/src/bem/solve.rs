@@ -74,9 +74,11 @@ pub fn bem_rough(ctx: &crate::study::Context<'_>, b: &BemOutput) -> Result<(Roug
         boundary,
         solver: Options {
             tolerance: tol,
+            max_iterations: b
+                .max_iterations
+                .unwrap_or(Options::default().max_iterations),
             warm_start: true,
             yield_stress: b.yield_stress,
-            ..Options::default()
         },
         bins: b.histogram.as_ref().map(|_| bins),
         ..RoughOptions::default()
@@ -105,23 +107,11 @@ fn details(
     b: &BemOutput,
     grid: (usize, f64, persson::bem::Boundary),
 ) -> Result<Details> {
-    let patches = match &b.patches {
-        Some(p) => {
-            let bins_per_decade = p.bins_per_decade.unwrap_or(5);
-            if bins_per_decade == 0 {
-                return Err(prefix(
-                    "outputs.bem.patches.",
-                    Error::invalid("bins_per_decade", 0.0, ">= 1"),
-                ));
-            }
-            Some(PatchOptions {
-                connectivity: p.connectivity.unwrap_or_default(),
-                boundary: grid.2,
-                bins_per_decade,
-            })
-        }
-        None => None,
-    };
+    let patches = b.patches.as_ref().map(|p| PatchOptions {
+        connectivity: p.connectivity.unwrap_or_default(),
+        boundary: grid.2,
+        bins_per_decade: p.bins_per_decade.unwrap_or(5),
+    });
     let subsurface = b.subsurface.as_ref().map(|s| SubsurfaceOptions {
         depth: s.depth.clone(),
         poisson: ctx
@@ -134,6 +124,18 @@ fn details(
         // Kept for the .npy files and for the maps drawn beside the plot.
         keep_maps: s.stress_field.is_some() || s.plot.is_some(),
     });
-    Details::new(grid, ctx.nominal_pressure(), patches, subsurface)
-        .map_err(|e| prefix("outputs.bem.subsurface.", e))
+    Details::new(grid, ctx.nominal_pressure(), patches, subsurface).map_err(|e| {
+        let patches = matches!(
+            &e,
+            Error::InvalidParameter { name, .. } if name == "bins_per_decade"
+        );
+        prefix(
+            if patches {
+                "outputs.bem.patches."
+            } else {
+                "outputs.bem.subsurface."
+            },
+            e,
+        )
+    })
 }

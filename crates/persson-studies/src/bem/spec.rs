@@ -26,6 +26,10 @@ pub struct BemOutput {
     /// Solver tolerance ε (default 1e-10).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tolerance: Option<f64>,
+    /// Iterations allowed per solve (default 10000, as the command line's
+    /// `--max-iterations`); a solve that needs more fails, saying so.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_iterations: Option<usize>,
     /// Write the pressure histograms P(σ) as one CSV (nominal_pressure,
     /// sigma_low, sigma_high, density; each pressure's bins integrate to its A/A0).
     #[serde(default, skip_serializing_if = "Option::is_none")]

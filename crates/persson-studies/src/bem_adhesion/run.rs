@@ -29,9 +29,13 @@ pub fn bem_adhesion(
     let control = PathControl::new(&a.mean_gap, &a.approach, boundary).map_err(named)?;
     let e_star = ctx.build_material()?.contact_modulus();
     let surf = bem_surface(ctx, ("outputs.bem_adhesion.", a.grid, a.seed), boundary)?;
+    // The command line's and Python's default, not the library's 20 000:
+    // every front-end stops a path at the same iteration.
     let options = persson::bem::adhesive::AdhesiveOptions {
         tolerance: tol,
-        ..Default::default()
+        max_iterations: a
+            .max_iterations
+            .unwrap_or(persson::bem::Options::default().max_iterations),
     };
     adhesive_controlled_path(
         &surf.heights,

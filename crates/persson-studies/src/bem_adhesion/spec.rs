@@ -26,6 +26,10 @@ pub struct BemAdhesionOutput {
     /// Solver tolerance ε (default 1e-10).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tolerance: Option<f64>,
+    /// Iterations allowed per solve (default 10000, as the command line's
+    /// `--max-iterations`); a solve that needs more fails, saying so.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_iterations: Option<usize>,
     /// Work of adhesion Δγ, J/m² (> 0).
     pub work_of_adhesion: f64,
     /// Range ρ of the cohesive law, m (> 0).

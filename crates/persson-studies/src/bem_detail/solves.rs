@@ -60,14 +60,19 @@ impl Details {
     /// `pressures`; the depths are checked here, before any solve.
     ///
     /// # Errors
-    /// A depth out of (0, L] (named `depth`); no depth; a tensile yield
-    /// stress not finite and > 0.
+    /// Patches' bins per decade 0 (named `bins_per_decade`); a depth out of
+    /// (0, L] (named `depth`); no depth; a tensile yield stress not finite
+    /// and > 0 (named `tensile_yield_stress`): the one check of the command
+    /// line and the scene, before any solve.
     pub fn new(
         (n, size, boundary): (usize, f64, Boundary),
         pressures: &[f64],
         patches: Option<PatchOptions>,
         subsurface: Option<SubsurfaceOptions>,
     ) -> Result<Self> {
+        if patches.as_ref().is_some_and(|p| p.bins_per_decade == 0) {
+            return Err(persson::Error::invalid("bins_per_decade", 0.0, ">= 1"));
+        }
         if let Some(s) = &subsurface {
             check_depths(&s.depth, size)?;
             if let Some(y) = s.tensile_yield_stress {

@@ -326,6 +326,20 @@ mod bem {
             (r#"{"bem": {"grid": 4}}"#, "outputs.bem.grid"),
             (r#"{"bem": {"grid": 32, "bins": 0}}"#, "outputs.bem.bins"),
             (r#"{"bem_hertz": {"grids": [4]}}"#, "outputs.bem_hertz.grid"),
+            (
+                r#"{"bem": {"grid": 32, "patches": {"bins_per_decade": 0}}}"#,
+                "outputs.bem.patches.bins_per_decade",
+            ),
+            (
+                r#"{"bem": {"grid": 32, "subsurface": {"depth": [0.1], "tensile_yield_stress": -1}}}"#,
+                "outputs.bem.subsurface.tensile_yield_stress",
+            ),
+            // The iteration limit is the scene's too: 2 iterations do not
+            // reach 1e-10, and the solve says so.
+            (
+                r#"{"bem": {"grid": 32, "max_iterations": 2}}"#,
+                "2 iterations",
+            ),
         ];
         for (out, needle) in cases {
             let e = parse(&rough(out)).unwrap().run().unwrap_err().to_string();
