@@ -16,10 +16,12 @@
 //! {"kind": "steep_slope", "rms_slope": 1.2e5, "message": "rms slope h'_rms = 120000 is above 1: …"}
 //! ```
 //!
-//! The text of the shared warnings is written here (`text.rs`); a warning
-//! that belongs to one study carries its text in a `message` field, written
-//! by that study when it raises it (the asperity theories' three, the patch
-//! count of `compare`), so this module imports no study.
+//! The text of the shared warnings (the inputs', the spectrum's, the BEM
+//! solver's) is written here (`text.rs`); a warning that belongs to one
+//! study (adhesion, the adhesive BEM, friction, leakage, surrogates, the
+//! asperity theories, `compare`'s patches) carries its text in a `message`
+//! field, written by that study's `describe` when it raises it
+//! ([`Warning::described`]), so this module imports no study.
 
 use std::path::PathBuf;
 
