@@ -209,6 +209,9 @@ fn rough_contact(a: &RoughArgs, files: &mut Files) -> anyhow::Result<()> {
     super::plot::draw(files, a.plot.as_deref(), || {
         persson_studies::plot::map::rough_map(&report)
     })?;
+    super::plot::draw(files, a.area_plot.as_deref(), || {
+        persson_studies::bem::figures::bem(&report)
+    })?;
     if let Some(path) = &a.histogram {
         // The report's own histogram table: every pressure in one CSV.
         if let Some(t) = report
@@ -221,7 +224,7 @@ fn rough_contact(a: &RoughArgs, files: &mut Files) -> anyhow::Result<()> {
     }
     let mut warnings = a.spectrum.file_warnings();
     warnings.extend(persson_studies::warning::of_rough(&report));
-    write_planes(
+    write_details(
         a,
         &details,
         (surface.n, surface.size, e_star),
@@ -251,9 +254,11 @@ fn rough_contact(a: &RoughArgs, files: &mut Files) -> anyhow::Result<()> {
     }
 }
 
-/// The von Mises map of every plane below every solve: `--stress-field`
-/// (.npy) and `--stress-plot` (a colour map), `_k_j` added to each name.
-fn write_planes(
+/// The figures and files of the detail studies: the patch-area
+/// distribution (`--patches-plot`), the depth profiles (`--stress-plot`)
+/// and the von Mises map of every plane below every solve (`--stress-field`
+/// .npy, `--stress-plot` colour maps, `_k_j` added to each name).
+fn write_details(
     a: &RoughArgs,
     details: &Details,
     (n, size, e_star): (usize, f64, f64),
@@ -265,6 +270,13 @@ fn write_planes(
             let p = persson_studies::bem_detail::indexed(path, m.index, m.depth_index);
             files.write(&p, &npy::encode(n, n, &m.von_mises_stress)?)?;
         }
+    }
+    use persson_studies::bem::figures;
+    if let (Some(path), Some(p)) = (&a.detail.patches_plot, &details.patches) {
+        super::plot::draw(files, Some(path), || figures::patch_areas(p))?;
+    }
+    if let (Some(path), Some(s)) = (&a.detail.stress_plot, &details.subsurface) {
+        super::plot::draw(files, Some(path), || figures::subsurface_profiles(s))?;
     }
     if let Some(path) = &a.detail.stress_plot {
         use persson_studies::plot::Encode;

@@ -137,6 +137,10 @@ pub struct DetailArgs {
     /// Log bins per decade of the patch-area distribution.
     #[arg(long, default_value = "5", requires = "patches", allow_hyphen_values = true, value_parser = super::number::count)]
     pub bins_per_decade: usize,
+    /// Draw the log-binned patch-area distribution n(A) of each solve on log
+    /// axes (.svg or .png; a scene's `outputs.bem.patches.plot`).
+    #[arg(long, requires = "patches", value_name = "FILE.svg|png", value_parser = out_file)]
+    pub patches_plot: Option<OutFile>,
     /// Report the stress below the surface on the planes of --depth.
     #[arg(long, requires = "depth")]
     pub subsurface: bool,
@@ -152,8 +156,10 @@ pub struct DetailArgs {
     /// (pressure k, depth j) is added before the extension.
     #[arg(long, requires = "subsurface", value_parser = out_file)]
     pub stress_field: Option<OutFile>,
-    /// Draw the von Mises stress of each plane as a colour map (.svg or
-    /// .png); `_k_j` (pressure k, depth j) is added before the extension.
+    /// Draw the depth profiles of the largest von Mises stress and maximum
+    /// shear of each solve (.svg or .png), and beside it each plane's von
+    /// Mises map as a colour map (`_k_j` added: pressure k, depth j), as a
+    /// scene's `outputs.bem.subsurface.plot`.
     #[arg(long, requires = "subsurface", value_name = "FILE.svg|png", value_parser = out_file)]
     pub stress_plot: Option<OutFile>,
 }
@@ -225,9 +231,14 @@ pub struct RoughArgs {
     pub wide: bool,
     /// Also draw the pressure map of the load in partial contact whose A/A0 is
     /// nearest 0.1 (plastic nodes in red with --yield-stress) and its histogram
-    /// P(σ) (the plastic δ-peak at σY as a labelled bar) into this file (.svg or .png).
+    /// P(σ) (the plastic δ-peak at σY as a labelled bar) into this file (.svg or .png;
+    /// a scene's `outputs.bem.pressure_plot`).
     #[arg(long, value_name = "FILE.svg|png", value_parser = out_file)]
     pub plot: Option<OutFile>,
+    /// Also draw A/A0 against the load with the Bush linear law into this
+    /// file (.svg or .png; a scene's `outputs.bem.plot`).
+    #[arg(long, value_name = "FILE.svg|png", value_parser = out_file)]
+    pub area_plot: Option<OutFile>,
     #[command(flatten)]
     pub transport: TransportArgs,
     #[command(flatten)]

@@ -91,9 +91,11 @@ fn cases() -> Vec<Case> {
                 ("--histogram", "csv", ""),
                 ("--surface-out", "npy", ""),
                 ("--plot", "svg", ""),
+                ("--area-plot", "svg", ""),
                 ("--gap-field", "npy", "--conductivity 50"),
                 ("--stress-field", "npy", "--subsurface --depth 1e-5"),
                 ("--stress-plot", "svg", "--subsurface --depth 1e-5"),
+                ("--patches-plot", "svg", "--patches"),
             ],
         },
         Case {

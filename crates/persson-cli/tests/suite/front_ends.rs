@@ -161,3 +161,68 @@ fn a_scene_is_refused_where_the_command_line_is_naming_its_field() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// The figures of the rough BEM are both front-ends': a scene's
+/// `outputs.bem.plot` is `bem rough --area-plot`, its `pressure_plot` is
+/// `bem rough --plot`, `patches.plot` is `--patches-plot` and
+/// `subsurface.plot` is `--stress-plot` (the depth profiles and each
+/// plane's map), byte for byte (the same surface, loads and solver).
+#[test]
+#[cfg(feature = "plot")]
+fn the_rough_bem_draws_the_same_figures_from_a_scene_and_flags() {
+    let dir = std::env::temp_dir().join(format!("persson-bem-figures-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let s = scene(serde_json::json!({
+        "nominal_pressure": [1e6, 3e6],
+        "outputs": {"bem": {"grid": 32, "plot": "area.svg", "pressure_plot": "map.svg",
+                            "patches": {"plot": "patches.svg"},
+                            "subsurface": {"depth": [1e-5], "plot": "stress.svg"}}}
+    }));
+    let path = dir.join("s.json");
+    std::fs::write(&path, s.to_string()).unwrap();
+    let (code, _, err) = persson(&[
+        "run",
+        path.to_str().unwrap(),
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let (area, map) = (dir.join("cli-area.svg"), dir.join("cli-map.svg"));
+    let mut args: Vec<&str> = vec!["bem", "rough"];
+    args.extend(SA.split_whitespace());
+    let (patches, stress) = (dir.join("cli-patches.svg"), dir.join("cli-stress.svg"));
+    let (area_s, map_s) = (area.to_str().unwrap(), map.to_str().unwrap());
+    let (patches_s, stress_s) = (patches.to_str().unwrap(), stress.to_str().unwrap());
+    args.extend([
+        "--contact-modulus",
+        "1e9",
+        "--grid",
+        "32",
+        "--pressure",
+        "1e6,3e6",
+        "--area-plot",
+        area_s,
+        "--plot",
+        map_s,
+        "--patches",
+        "--patches-plot",
+        patches_s,
+        "--subsurface",
+        "--depth",
+        "1e-5",
+        "--stress-plot",
+        stress_s,
+    ]);
+    let (code, _, err) = persson(&args);
+    assert_eq!(code, 0, "{err}");
+    let read = |p: std::path::PathBuf| std::fs::read(p).unwrap();
+    assert_eq!(read(dir.join("area.svg")), read(area));
+    assert_eq!(read(dir.join("map.svg")), read(map));
+    assert_eq!(read(dir.join("patches.svg")), read(patches.clone()));
+    assert_eq!(read(dir.join("stress.svg")), read(stress.clone()));
+    for k in 0..2 {
+        let plane = |name: &str| dir.join(format!("{name}_{k}_0.svg"));
+        assert_eq!(read(plane("stress")), read(plane("cli-stress")), "{k}");
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}

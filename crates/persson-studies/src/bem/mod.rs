@@ -48,6 +48,7 @@ impl Study for Bem {
         };
         [
             plot_file(Self::KEY, "plot", b.plot.as_ref()),
+            plot_file(Self::KEY, "pressure_plot", b.pressure_plot.as_ref()),
             plot_file(
                 Self::KEY,
                 "patches.plot",

@@ -119,6 +119,9 @@ fn plots(b: &BemOutput, r: &Report, ctx: &Context<'_>, dir: &Path, out: &mut Fil
     draw(out, dir, b.plot.as_ref(), || {
         plot::bem(&r.rough).map(Box::new)
     })?;
+    draw(out, dir, b.pressure_plot.as_ref(), || {
+        crate::plot::map::rough_map(&r.rough).map(Box::new)
+    })?;
     if let (Some(p), Some(pr)) = (&b.patches, &r.patches) {
         draw(out, dir, p.plot.as_ref(), || {
             plot::patch_areas(pr).map(Box::new)

@@ -84,7 +84,13 @@ pub fn bem_rough(ctx: &crate::study::Context<'_>, b: &BemOutput) -> Result<(Roug
         ..RoughOptions::default()
     };
     let mut details = details(ctx, b, (surf.n, surf.size, boundary))?;
-    let report = rough::rough_contact(
+    // The pressure map is kept only for its figure.
+    let solve = if b.pressure_plot.is_some() {
+        rough::rough_contact_mapped
+    } else {
+        rough::rough_contact
+    };
+    let report = solve(
         &surf,
         source,
         e_star,

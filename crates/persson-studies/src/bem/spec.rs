@@ -37,9 +37,15 @@ pub struct BemOutput {
     /// Number of histogram bins (default 50).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub bins: Option<usize>,
-    /// Draw A/A0 against load with the Bush linear law (.svg or .png).
+    /// Draw A/A0 against load with the Bush linear law (.svg or .png;
+    /// `bem rough --area-plot`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub plot: Option<PathBuf>,
+    /// Draw the pressure map of the load in partial contact whose A/A0 is
+    /// nearest 0.1 (plastic nodes in red with `yield_stress`) and its
+    /// histogram P(σ) (.svg or .png; `bem rough --plot`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pressure_plot: Option<PathBuf>,
     /// Yield stress σY (unit of E*): pressures bounded by 0 ≤ p ≤ σY; each
     /// point reports the elastic and plastic fractions, the histogram keeps
     /// the plastic peak at σY as its own row.
