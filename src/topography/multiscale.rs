@@ -194,41 +194,7 @@ pub fn multi_scale(measurements: &[Measurement<'_>], per_decade: usize) -> Resul
         vec![0.0; nb],
         vec![0usize; nb],
     );
-    // The measurements are analysed in parallel (one thread each) where the
-    // platform has threads: they are independent and the FFTs of large maps
-    // dominate the time. A browser's module has one thread.
-    let analyse = |i: usize, (m, &(lo, hi, _)): (&Measurement<'_>, &(f64, f64, Option<f64>))| {
-        analyse_on(m, &edges, lo, hi).map_err(|e| numbered(i, e))
-    };
-    let analyses: Vec<Result<Analysis>> = if std::thread::available_parallelism().is_err() {
-        measurements
-            .iter()
-            .zip(&bands)
-            .enumerate()
-            .map(|(i, mb)| analyse(i, mb))
-            .collect()
-    } else {
-        std::thread::scope(|scope| {
-            let handles: Vec<_> = measurements
-                .iter()
-                .zip(&bands)
-                .enumerate()
-                .map(|(i, mb)| scope.spawn(move || analyse(i, mb)))
-                .collect();
-            handles
-                .into_iter()
-                .map(|h| {
-                    h.join().unwrap_or_else(|_| {
-                        Err(Error::Inconsistent {
-                            name: "multi-scale analysis".into(),
-                            requirement: "a measurement's analysis panicked".into(),
-                        })
-                    })
-                })
-                .collect()
-        })
-    };
-    let analyses = analyses.into_iter().collect::<Result<Vec<Analysis>>>()?;
+    let analyses = analyse_all(measurements, &bands, &edges)?;
     // A map's floor comes from the transform of its analysis (the corner
     // modes, binned in the same pass); line scans have none.
     let floors: Vec<Option<f64>> = analyses
@@ -308,6 +274,49 @@ pub fn multi_scale(measurements: &[Measurement<'_>], per_decade: usize) -> Resul
         ),
         measurements: contributions,
     })
+}
+
+/// Each measurement's analysis on the common bins wholly below its cut-off,
+/// in parallel (one thread each) where the platform has threads: they are
+/// independent and the FFTs of large maps dominate the time. A browser's
+/// module has one thread.
+fn analyse_all(
+    measurements: &[Measurement<'_>],
+    bands: &[(f64, f64, Option<f64>)],
+    edges: &[f64],
+) -> Result<Vec<Analysis>> {
+    let analyse = |i: usize, (m, &(lo, hi, _)): (&Measurement<'_>, &(f64, f64, Option<f64>))| {
+        analyse_on(m, edges, lo, hi).map_err(|e| numbered(i, e))
+    };
+    let analyses: Vec<Result<Analysis>> = if std::thread::available_parallelism().is_err() {
+        measurements
+            .iter()
+            .zip(bands)
+            .enumerate()
+            .map(|(i, mb)| analyse(i, mb))
+            .collect()
+    } else {
+        std::thread::scope(|scope| {
+            let handles: Vec<_> = measurements
+                .iter()
+                .zip(bands)
+                .enumerate()
+                .map(|(i, mb)| scope.spawn(move || analyse(i, mb)))
+                .collect();
+            handles
+                .into_iter()
+                .map(|h| {
+                    h.join().unwrap_or_else(|_| {
+                        Err(Error::Inconsistent {
+                            name: "multi-scale analysis".into(),
+                            requirement: "a measurement's analysis panicked".into(),
+                        })
+                    })
+                })
+                .collect()
+        })
+    };
+    analyses.into_iter().collect()
 }
 
 /// The top of a measurement's reliable band (module docs): the lower edge
