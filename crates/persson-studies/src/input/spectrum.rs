@@ -262,9 +262,9 @@ impl SpectrumSpec {
                     .map(|(i, p)| p.build().map_err(|e| in_part(i, e)))
                     .collect::<Result<_>>()?,
             )?)),
-            SpectrumSpec::MultiScale { measurements } => Ok(Box::new(
-                crate::input::multiscale::described(measurements)?.value,
-            )),
+            SpectrumSpec::MultiScale { measurements } => {
+                Ok(Box::new(super::multiscale::described(measurements)?.value))
+            }
             SpectrumSpec::Stretched {
                 spectrum,
                 anisotropy,
@@ -303,12 +303,12 @@ impl SpectrumSpec {
                     described.extend(d.description);
                     warnings.extend(d.warnings);
                     for w in spectrum_warnings(p, d.value.as_ref()) {
-                        crate::warning::push(&mut warnings, Some(w));
+                        warning::push(&mut warnings, Some(w));
                     }
                     built.push(d.value);
                 }
                 let sum = Sum::new(built)?;
-                crate::warning::push(&mut warnings, crate::Warning::sum_bands(&sum));
+                warning::push(&mut warnings, Warning::sum_bands(&sum));
                 Ok(Described {
                     value: Box::new(sum),
                     description: (!described.is_empty()).then(|| {
@@ -318,7 +318,7 @@ impl SpectrumSpec {
                 })
             }
             SpectrumSpec::MultiScale { measurements } => {
-                let d = crate::input::multiscale::described(measurements)?;
+                let d = super::multiscale::described(measurements)?;
                 Ok(Described {
                     value: Box::new(d.value),
                     description: d.description,
