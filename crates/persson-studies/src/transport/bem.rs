@@ -10,13 +10,14 @@ use persson::bem::stiffness::{contact_stiffness, StiffnessOptions};
 use persson::bem::surface::{synthesize, GridSurface};
 use persson::bem::{check_memory, Boundary, Operator, Options, Solution};
 use persson::conductance::{electrical_conductance, gap_conductance_of_field, thermal_conductance};
-use persson::error::{check, Result};
-use persson::spectrum::Spectrum;
+use persson::error::{check, Error, Result};
 use persson::Estimate;
 
 use super::report::{BemFlow, BemTransportPoint, BemTransportReport};
 use super::request::TransportRequest;
 use super::spec::TransportBem;
+use crate::contact::RoughContact;
+use crate::naming::required;
 
 /// Default solver tolerance of the contact and of the stiffness's CG.
 pub const DEFAULT_TOLERANCE: f64 = 1e-10;
@@ -202,27 +203,43 @@ pub fn transport(
     })
 }
 
-/// [`transport`] on a surface synthesised from `spectrum` (side 2π/q_l).
+/// [`transport`] on the scene's rigid surface: its height map (periodic),
+/// else a surface synthesised from its spectrum (side 2π/q_l) on `b.grid`
+/// nodes with `b.seed`, as `outputs.bem` solves (`bem rough --surface` and
+/// `bem rough --grid` on the command line).
 ///
 /// # Errors
-/// A grid too large for memory; as [`transport`].
-pub fn synthesised(
-    spectrum: &dyn Spectrum,
-    contact_modulus: f64,
+/// A grid or seed beside a height map, no grid beside a spectrum; a map that
+/// is not square; a grid too large for memory; as [`transport`].
+pub fn on_contact(
+    contact: &RoughContact,
     pressures: &[f64],
     b: &TransportBem,
     request: &TransportRequest,
 ) -> Result<BemTransportReport> {
-    check_memory(b.grid, Boundary::Periodic)?;
-    let seed = b.seed.unwrap_or(1);
-    let size = std::f64::consts::TAU / spectrum.q_min();
-    let surface = synthesize(spectrum, b.grid, size, seed)?;
-    transport(
-        &surface,
-        Some(seed),
-        contact_modulus,
-        pressures,
-        b.tolerance.unwrap_or(DEFAULT_TOLERANCE),
-        request,
-    )
+    let tolerance = b.tolerance.unwrap_or(DEFAULT_TOLERANCE);
+    let e_star = contact.contact_modulus;
+    let (surface, seed) = match &contact.height_map {
+        Some(m) => {
+            let given = [("grid", b.grid.is_some()), ("seed", b.seed.is_some())];
+            if let Some((name, _)) = given.iter().find(|g| g.1) {
+                return Err(Error::Inconsistent {
+                    name: (*name).into(),
+                    requirement: "not used with a height map (its file sets the grid)".into(),
+                });
+            }
+            (m.bem_surface(Boundary::Periodic)?, None)
+        }
+        None => {
+            let n = b
+                .grid
+                .ok_or_else(|| required("grid (for a surface synthesised from the spectrum)"))?;
+            check_memory(n, Boundary::Periodic)?;
+            let seed = b.seed.unwrap_or(1);
+            let spectrum = contact.spectrum.as_ref();
+            let size = std::f64::consts::TAU / spectrum.q_min();
+            (synthesize(spectrum, n, size, seed)?, Some(seed))
+        }
+    };
+    transport(&surface, seed, e_star, pressures, tolerance, request)
 }

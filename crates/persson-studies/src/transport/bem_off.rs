@@ -2,7 +2,7 @@
 //! asking for them is an error naming the feature.
 
 use persson::error::{Error, Result};
-use persson::spectrum::Spectrum;
+use crate::contact::RoughContact;
 
 use super::report::BemTransportReport;
 use super::request::TransportRequest;
@@ -19,9 +19,8 @@ fn left_out() -> Error {
 ///
 /// # Errors
 /// Always.
-pub fn synthesised(
-    _: &dyn Spectrum,
-    _: f64,
+pub fn on_contact(
+    _: &RoughContact,
     _: &[f64],
     _: &TransportBem,
     _: &TransportRequest,

@@ -12,7 +12,7 @@ use persson::leakage::{
 use super::report::{
     BemTransportPoint, BemTransportReport, ConductanceReport, LeakagePoint, LeakageReport,
 };
-use super::spec::{ConductanceOutput, LeakageOutput, TransportBem};
+use super::spec::{ConductanceOutput, LeakageOutput};
 use crate::contact::RoughContact;
 use crate::naming::prefix;
 use crate::naming::required;
@@ -195,7 +195,7 @@ pub fn conductance(
     let request = TransportRequest::new(kappa, rho, law, None);
     let bem = out
         .bem
-        .map(|b| bem(surface, pressures, &b, &request))
+        .map(|b| super::bem::on_contact(surface, pressures, &b, &request))
         .transpose()
         .map_err(|e| prefix("bem.", e))?;
     let (rms_height, rms_slope) = band_values(surface)?;
@@ -261,7 +261,7 @@ pub fn leakage(
     let request = TransportRequest::new(None, None, None, Some(seal));
     let bem = out
         .bem
-        .map(|b| bem(surface, pressures, &b, &request))
+        .map(|b| super::bem::on_contact(surface, pressures, &b, &request))
         .transpose()
         .map_err(|e| prefix("bem.", e))?;
     let mut warnings = surface_warnings(surface, pressures, bem.as_ref());
@@ -387,22 +387,6 @@ fn sealed_warning(method: &str, sealed: &[(f64, f64)], threshold: Option<f64>) -
             message: String::new(),
         }
         .described(describe),
-    )
-}
-
-/// The FFT-BEM beside a theory (feature `flow`).
-fn bem(
-    surface: &RoughContact,
-    pressures: &[f64],
-    b: &TransportBem,
-    request: &TransportRequest,
-) -> Result<BemTransportReport> {
-    super::bem::synthesised(
-        surface.spectrum.as_ref(),
-        surface.contact_modulus,
-        pressures,
-        b,
-        request,
     )
 }
 

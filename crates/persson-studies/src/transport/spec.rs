@@ -82,14 +82,18 @@ pub struct LeakageOutput {
     pub plot: Option<PathBuf>,
 }
 
-/// The FFT-BEM beside a transport theory: a surface synthesised from the
-/// scene's spectrum (side 2π/q_l, periodic), solved at the scene's pressures.
+/// The FFT-BEM beside a transport theory, solved at the scene's pressures on
+/// the scene's height map (periodic) or, with a spectrum, on a surface
+/// synthesised from it (side 2π/q_l, periodic).
 #[derive(Debug, Clone, Copy, Default, Deserialize, Serialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct TransportBem {
-    /// Grid side N (q_s should be resolved: N ≥ 8 q_s/q_l or so).
-    pub grid: usize,
-    /// Seed of the synthesised surface (default 1).
+    /// Grid side N of the synthesised surface (q_s should be resolved: N ≥ 8
+    /// q_s/q_l or so); required with a spectrum, refused with a height map
+    /// (its file sets the grid).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub grid: Option<usize>,
+    /// Seed of the synthesised surface (default 1; refused with a height map).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub seed: Option<u64>,
     /// Solver tolerance ε of the contact and of the stiffness's CG (default 1e-10).

@@ -216,6 +216,67 @@ mod bem {
         assert!(e.contains("outputs.bem.grid"), "{e}");
     }
 
+    /// A scene's conductance and leakage solve the BEM on the scene's height
+    /// map, as `outputs.bem` and `bem rough --surface` do: the same values as
+    /// the synthesised surface the map was written from, and a grid or seed
+    /// beside the map is refused.
+    #[cfg(feature = "flow")]
+    #[test]
+    fn transport_bem_solves_on_the_height_map() {
+        let q = std::f64::consts::TAU;
+        let spec = SelfAffine::new(q, 2.0 * q, 8.0 * q, 0.8, Amplitude::RmsSlope(0.1)).unwrap();
+        let surf = synthesize(&spec, 32, 1.0, 9).unwrap();
+        let map = tmp("transport_map.npy");
+        npy::write(&map, 32, 32, &surf.heights).unwrap();
+        let scene_path = tmp("transport_scene.json");
+        let outputs = r#"{ "conductance": { "conductivity": [1, 1], "bem": BEM },
+            "leakage": { "viscosity": 1e-3, "pressure_drop": 1, "bem": BEM } }"#;
+        let text = r#"{
+          "schema": 1,
+          "material": { "contact_modulus": 1.0 },
+          "spectrum": { "kind": "height_map", "file": "transport_map.npy", "size": 1.0 },
+          "nominal_pressure": [0.001, 0.003, 0.01],
+          "outputs": OUTPUTS }"#
+            .replace("OUTPUTS", outputs);
+        std::fs::write(&scene_path, text.replace("BEM", "{}")).unwrap();
+        let on_map = Scene::read(&scene_path).unwrap().run().unwrap();
+        let synthesised = parse(&rough(&outputs.replace("BEM", r#"{"grid": 32, "seed": 9}"#)))
+            .unwrap()
+            .run()
+            .unwrap();
+        let bem = |r: &persson_studies::scene::SceneReport| {
+            let c = r.conductance.as_ref().unwrap().bem.clone().unwrap();
+            let l = r.leakage.as_ref().unwrap().bem.clone().unwrap();
+            (c, l)
+        };
+        let (map_c, map_l) = bem(&on_map);
+        let (syn_c, syn_l) = bem(&synthesised);
+        assert_eq!((map_c.grid, map_c.seed), (32, None));
+        assert_eq!((syn_c.grid, syn_c.seed), (32, Some(9)));
+        let close = |a: f64, b: f64| (a - b).abs() <= SAME_SOLVE_TOL * b.abs();
+        for (a, b) in map_c.points.iter().zip(&syn_c.points) {
+            assert!(close(a.stiffness, b.stiffness), "{a:?} {b:?}");
+        }
+        for (a, b) in map_l.points.iter().zip(&syn_l.points) {
+            let (qa, qb) = (a.leak_rate.unwrap(), b.leak_rate.unwrap());
+            assert!(close(qa, qb), "{qa} {qb}");
+        }
+        assert_eq!(map_l.points.len(), 3);
+        for (given, name) in [(r#"{"grid": 32}"#, "grid"), (r#"{"seed": 9}"#, "seed")] {
+            std::fs::write(&scene_path, text.replace("BEM", given)).unwrap();
+            let e = Scene::read(&scene_path).unwrap().run().unwrap_err().to_string();
+            assert!(e.contains(&format!("outputs.conductance.bem.{name}")), "{e}");
+            assert!(e.contains("height map"), "{e}");
+        }
+        // A spectrum without a grid names the missing field.
+        let e = parse(&rough(&outputs.replace("BEM", "{}")))
+            .unwrap()
+            .run()
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("outputs.conductance.bem.grid"), "{e}");
+    }
+
     /// Σ patch areas = A/A0 L²: a sum of ≤ 32² cell areas (rounding).
     const AREA_SUM: f64 = 1e-12;
 
