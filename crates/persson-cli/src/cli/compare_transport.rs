@@ -22,16 +22,17 @@ pub struct TransportArgs {
     #[arg(long, default_value = "0.42", allow_hyphen_values = true, value_parser = number)]
     pub percolation_threshold: f64,
     /// Also compare the contact conductance: Barber's identity on the theory's and
-    /// the BEM's stiffness (needs --conductivity and/or --resistivity, or a gas law).
+    /// the BEM's stiffness (needs --conductivity and/or --resistivity, or a gas
+    /// law, each of which asks for the comparison alone, as in `bem rough`).
     #[arg(long)]
     pub conductance: bool,
-    /// Thermal conductivities κ1[,κ2] of the two bodies, W/(m K) (with --conductance).
+    /// Thermal conductivities κ1[,κ2] of the two bodies, W/(m K).
     #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = number)]
     pub conductivity: Vec<f64>,
-    /// Electrical resistivities ρ1[,ρ2] of the two bodies, Ω m (with --conductance).
+    /// Electrical resistivities ρ1[,ρ2] of the two bodies, Ω m.
     #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = number)]
     pub resistivity: Vec<f64>,
-    /// Gap conductance by gas conduction κ_gas/(u + 2ℓ): κ_gas, W/(m K) (with --conductance).
+    /// Gap conductance by gas conduction κ_gas/(u + 2ℓ): κ_gas, W/(m K).
     #[arg(long, requires = "mean_free_path", allow_hyphen_values = true, value_parser = number)]
     pub gas_conductivity: Option<f64>,
     /// Temperature-jump length ℓ of the gas law, m.
@@ -56,17 +57,12 @@ impl TransportArgs {
         let conductance_flags = !self.conductivity.is_empty()
             || !self.resistivity.is_empty()
             || self.gas_conductivity.is_some();
-        if conductance_flags && !self.conductance {
-            anyhow::bail!(
-                "--conductivity / --resistivity / --gas-conductivity: add --conductance to compare the conductance"
-            );
-        }
         if self.conductance && !conductance_flags {
             anyhow::bail!(
                 "--conductance: give --conductivity κ1[,κ2] (W/(m K)) and/or --resistivity ρ1[,ρ2] (Ω m), or --gas-conductivity with --mean-free-path"
             );
         }
-        if !self.leakage && !self.conductance {
+        if !self.leakage && !conductance_flags {
             return Ok(None);
         }
         let seal = if self.leakage {

@@ -180,7 +180,7 @@ fn text_tables_with_the_flags() {
         "1e-3",
         "--pressure-drop",
         "1e5",
-        "--conductance",
+        // --conductivity alone asks for the conductance, as in `bem rough`.
         "--conductivity",
         "50",
     ]);
@@ -245,7 +245,7 @@ fn bad_flags_name_the_flag() {
         ("--leakage --pressure-drop 1e5", "--viscosity"),
         ("--viscosity 1e-3 --pressure-drop 1e5", "--leakage"),
         ("--conductance", "--conductivity"),
-        ("--conductivity 50", "--conductance"),
+        ("--conductivity 0", "--conductivity"),
         ("--conductance --conductivity 0", "--conductivity"),
         ("--conductance --resistivity -1e-7", "--resistivity"),
         ("--conductance --conductivity 1,2,3", "--conductivity"),

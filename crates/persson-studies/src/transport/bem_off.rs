@@ -1,8 +1,8 @@
 //! The FFT-BEM's transport values in a build without the feature `flow`:
 //! asking for them is an error naming the feature.
 
-use persson::error::{Error, Result};
 use crate::contact::RoughContact;
+use persson::error::{Error, Result};
 
 use super::report::BemTransportReport;
 use super::request::TransportRequest;

@@ -240,10 +240,12 @@ mod bem {
             .replace("OUTPUTS", outputs);
         std::fs::write(&scene_path, text.replace("BEM", "{}")).unwrap();
         let on_map = Scene::read(&scene_path).unwrap().run().unwrap();
-        let synthesised = parse(&rough(&outputs.replace("BEM", r#"{"grid": 32, "seed": 9}"#)))
-            .unwrap()
-            .run()
-            .unwrap();
+        let synthesised = parse(&rough(
+            &outputs.replace("BEM", r#"{"grid": 32, "seed": 9}"#),
+        ))
+        .unwrap()
+        .run()
+        .unwrap();
         let bem = |r: &persson_studies::scene::SceneReport| {
             let c = r.conductance.as_ref().unwrap().bem.clone().unwrap();
             let l = r.leakage.as_ref().unwrap().bem.clone().unwrap();
@@ -264,8 +266,15 @@ mod bem {
         assert_eq!(map_l.points.len(), 3);
         for (given, name) in [(r#"{"grid": 32}"#, "grid"), (r#"{"seed": 9}"#, "seed")] {
             std::fs::write(&scene_path, text.replace("BEM", given)).unwrap();
-            let e = Scene::read(&scene_path).unwrap().run().unwrap_err().to_string();
-            assert!(e.contains(&format!("outputs.conductance.bem.{name}")), "{e}");
+            let e = Scene::read(&scene_path)
+                .unwrap()
+                .run()
+                .unwrap_err()
+                .to_string();
+            assert!(
+                e.contains(&format!("outputs.conductance.bem.{name}")),
+                "{e}"
+            );
             assert!(e.contains("height map"), "{e}");
         }
         // A spectrum without a grid names the missing field.
