@@ -352,7 +352,7 @@ def bem_rough(
     `--adhesive-iteration`)."""
 def bem_hertz(
     *,
-    grid: int = 256,
+    grid: Optional[int] = None,
     boundary: Boundary = "free",
     size: float = 1.0,
     radius: float = 1.0,
@@ -362,11 +362,13 @@ def bem_hertz(
     max_iterations: int = 10000,
     yield_stress: Optional[float] = None,
     grids: Optional[Sequence[int]] = None,
+    subsurface: bool = False,
+    poisson: Optional[float] = None,
     work_of_adhesion: Optional[float] = None,
     adhesion_range: Optional[float] = None,
-    adhesion: Literal["maugis", "exponential"] = "maugis",
+    adhesion: Optional[Literal["maugis", "exponential"]] = None,
 ) -> Report:
-    """`persson bem hertz --json`; with `yield_stress`, `bem hertz --yield-stress` on `grids`."""
+    """`persson bem hertz --json`, a scene's `bem_hertz`: one grid (default 256) the validation, several η per grid; `yield_stress` adds the plastic disc, `subsurface` the stress on the axis, `work_of_adhesion` the adhesive sphere."""
 def contact_patches(
     pressure: FloatArray,
     size: float,

@@ -4,22 +4,20 @@
 
 use std::path::{Path, PathBuf};
 
-use persson::bem::hertz::{self, HertzCase};
 use persson::bem::rough::{self, RoughOptions, SurfaceOrigin};
 use persson::bem::surface::{synthesize as synth, GridSurface};
 use persson::bem::{check_memory, Boundary, Control, Operator, Options, Solver};
 use persson::error::check;
 use persson::names::Named;
 use persson_studies::bem_detail::{
-    adhesive_controlled_path, adhesive_sphere, adhesive_warnings, sphere_warnings,
-    AdhesiveIteration, LawKind, PathControl,
+    adhesive_controlled_path, adhesive_warnings, AdhesiveIteration, LawKind, PathControl,
 };
 use persson_studies::validation::{self, ComparisonConfig, SweepSettings, UserData, UserHistogram};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::arrays::{float_list, floats, map, square};
-use crate::convert::{err, name, to_dict, to_dict_warned, value_error, Seed};
+use crate::convert::{err, name, to_dict_warned, value_error, Seed};
 use crate::spectrum::Spectrum;
 
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -310,24 +308,28 @@ fn grid_surface(
     }
 }
 
-/// `persson bem hertz --json`: the BEM against the Hertz closed form (a
-/// ball of radius `radius` on a grid of side `size`, load from the contact
-/// radius, default 0.1 L): energy-norm error η, contact radius and peak pressure.
+/// `persson bem hertz --json`, a scene's `bem_hertz`: the Hertz ball on the
+/// FFT-BEM (a ball of radius `radius` on a grid of side `size`, load from the
+/// contact radius, default 0.1 L). On one grid (`grid`, or `grids` of one;
+/// default 256) the validation against Hertz's closed form: energy-norm
+/// error η, contact radius and peak pressure; on several `grids`, η per
+/// grid.
+///
+/// With `yield_stress` σY (unit of `contact_modulus`): beside η, the plastic
+/// disc (pressure capped at σY) on each grid, under `plastic`.
+///
+/// With `subsurface` (one grid): the stress on the contact's axis against
+/// Johnson's closed forms, for Poisson ratio `poisson` (default 0.3).
 ///
 /// With `work_of_adhesion` Δγ and `adhesion_range` ρ (`boundary="periodic"`):
-/// `persson bem hertz --work-of-adhesion --json`, the adhesive sphere's pull-off
-/// on each of `grids` against JKR and DMT.
-///
-/// With `yield_stress` σY (unit of `contact_modulus`): `persson bem hertz --yield-stress
-/// --json`, the plastic disc (pressure capped at σY) on each of `grids`
-/// (default `[grid]`): its radius and convergence, the fractions and the
-/// plastic displacement.
+/// the adhesive sphere's pull-off on each grid against JKR and DMT, with the
+/// cohesive law `adhesion` (default `"maugis"`).
 #[pyfunction]
-#[pyo3(signature = (*, grid=256, boundary="free", size=1.0, radius=1.0, contact_modulus=1.0, contact_radius=None, tolerance=1e-10, max_iterations=10_000, yield_stress=None, grids=None, work_of_adhesion=None, adhesion_range=None, adhesion="maugis"))]
+#[pyo3(signature = (*, grid=None, boundary="free", size=1.0, radius=1.0, contact_modulus=1.0, contact_radius=None, tolerance=1e-10, max_iterations=10_000, yield_stress=None, grids=None, subsurface=false, poisson=None, work_of_adhesion=None, adhesion_range=None, adhesion=None))]
 #[allow(clippy::too_many_arguments)]
 fn bem_hertz<'py>(
     py: Python<'py>,
-    grid: usize,
+    grid: Option<usize>,
     boundary: &str,
     size: f64,
     radius: f64,
@@ -337,69 +339,40 @@ fn bem_hertz<'py>(
     max_iterations: usize,
     yield_stress: Option<f64>,
     grids: Option<Vec<usize>>,
+    subsurface: bool,
+    poisson: Option<f64>,
     work_of_adhesion: Option<f64>,
     adhesion_range: Option<f64>,
-    adhesion: &str,
+    adhesion: Option<&str>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let grids = grids.unwrap_or_else(|| vec![grid]);
-    if let Some(dg) = work_of_adhesion {
-        if yield_stress.is_some() || contact_radius.is_some() {
-            return Err(value_error(
-                "work_of_adhesion: the adhesive sphere runs its own path; yield_stress and contact_radius do not apply",
-            ));
-        }
-        if self::boundary(boundary)? != Boundary::Periodic {
-            return Err(value_error(
-                "boundary: the adhesive sphere is solved on a periodic cell (give boundary='periodic')",
-            ));
-        }
-        let range = adhesion_range
-            .ok_or_else(|| value_error("adhesion_range: required with work_of_adhesion"))?;
-        let opts = persson::bem::adhesive::AdhesiveOptions {
-            tolerance: check::tolerance("tolerance", tolerance).map_err(err)?,
-            max_iterations,
-        };
-        let kind = law_kind(adhesion)?;
-        let r = py
-            .detach(|| {
-                adhesive_sphere(
-                    &grids,
-                    (size, radius, contact_modulus),
-                    (kind, dg, range),
-                    &opts,
-                )
-            })
-            .map_err(err)?;
-        return to_dict_warned(py, &r, &sphere_warnings(&r));
-    }
-    if yield_stress.is_none() && grids != [grid] {
-        return Err(value_error(
-            "grids: a list of grids only with yield_stress (give grid without it)",
-        ));
-    }
-    let case = HertzCase {
-        grid,
-        boundary: self::boundary(boundary)?,
-        size,
-        radius,
-        e_star: contact_modulus,
-        contact_radius: contact_radius.unwrap_or(0.1 * size),
+    use persson_studies::bem_hertz::{BemHertz, BemHertzOutput};
+    use persson_studies::study::{Context, Study};
+    let grids = match (grid, grids) {
+        (Some(_), Some(_)) => return Err(value_error("grid, grids: give one of them")),
+        (Some(n), None) => vec![n],
+        (None, g) => g.unwrap_or_default(),
     };
-    let opts = options(tolerance, max_iterations, None)?;
-    if let Some(y) = yield_stress {
-        let case = HertzCase {
-            grid: grids.first().copied().unwrap_or(grid),
-            ..case
-        };
-        let r = py
-            .detach(|| hertz::plastic_disc(&case, &grids, y, &opts, &mut |_, _| {}))
-            .map_err(err)?;
-        return to_dict(py, &r);
-    }
+    let spec = BemHertzOutput {
+        grids,
+        boundary: Some(self::boundary(boundary)?),
+        size: Some(size),
+        radius: Some(radius),
+        contact_modulus: Some(contact_modulus),
+        contact_radius,
+        tolerance: Some(tolerance),
+        max_iterations: Some(max_iterations),
+        yield_stress,
+        subsurface,
+        poisson,
+        stress_plot: None,
+        work_of_adhesion,
+        adhesion_range,
+        adhesion: adhesion.map(law_kind).transpose()?,
+    };
     let r = py
-        .detach(|| validation::hertz(&case, &opts, &mut |_| {}))
+        .detach(|| BemHertz::run(&Context::nothing(), &spec))
         .map_err(err)?;
-    to_dict(py, &r)
+    to_dict_warned(py, &r, &BemHertz::warnings(&r))
 }
 
 /// `persson compare --json`: every theory against the BEM at `levels`

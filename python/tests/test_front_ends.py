@@ -62,7 +62,12 @@ STUDIES = [
         {"plot": "a figure", "velocity_range": "velocity takes any array"},
     ),
     ("theories", "TheoriesOutput", {}, {"plot": "a figure"}),
-    ("bem_hertz", "BemHertzOutput", {}, {}),
+    (
+        "bem_hertz",
+        "BemHertzOutput",
+        {},
+        {"stress_plot": "a figure: Python plots itself"},
+    ),
     (
         "stress",
         "StressOutput",

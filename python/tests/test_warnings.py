@@ -81,5 +81,11 @@ def test_yield_stress_compare_and_plastic_disc_match_cli():
     assert r["yield_stress"] == 0.05
     cli = run_cli("bem", "hertz", "--grid", "16,32", "--yield-stress", 0.05)
     same(persson.bem_hertz(grids=[16, 32], yield_stress=0.05), cli)
+    # Several grids without a yield stress: η per grid, as the CLI and a
+    # scene's bem_hertz give it; grid and grids together are refused.
+    cli = run_cli("bem", "hertz", "--grid", "16,32")
+    r = persson.bem_hertz(grids=[16, 32])
+    same(r, cli)
+    assert [row["grid"] for row in r["rows"]] == [16, 32]
     with pytest.raises(ValueError, match="grids"):
-        persson.bem_hertz(grids=[16, 32])
+        persson.bem_hertz(grid=16, grids=[16, 32])

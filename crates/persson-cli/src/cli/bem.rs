@@ -4,10 +4,9 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::Context;
-use persson::bem::hertz::{self, HertzCase};
 use persson::bem::rough::{self, Observer, RoughOptions, RoughProgress, SurfaceOrigin};
 use persson::bem::surface::synthesize;
-use persson::bem::{check_memory, Options, Solution, MIN_GRID};
+use persson::bem::{check_memory, Options, Solution};
 use persson::error::check;
 use persson::io::npy;
 use persson_studies::table::Tabulate;
@@ -15,7 +14,7 @@ use persson_studies::table::Tabulate;
 pub use super::bem_args::{Args, SolverArgs};
 use super::bem_args::{Cmd, HertzArgs, RoughArgs};
 use super::bem_detail::{details, RoughWithDetails};
-use super::output::{print, print_narrowed};
+use super::output::print_narrowed;
 use super::progress::Progress;
 use persson_studies::bem_detail::Details;
 use persson_studies::output::Files;
@@ -23,76 +22,32 @@ use persson_studies::output::Files;
 /// Run `persson bem`.
 pub fn run(a: Args, files: &mut Files) -> anyhow::Result<()> {
     match a.cmd {
-        Cmd::Hertz(h) if h.subsurface => hertz_subsurface(&h, files),
-        Cmd::Hertz(h) if h.work_of_adhesion.is_some() => adhesive_hertz(&h),
-        Cmd::Hertz(h) => {
-            let grid = match (h.grid.as_slice(), h.yield_stress) {
-                (_, Some(y)) => return plastic_disc(&h, y),
-                ([n], None) => *n,
-                (_, None) => anyhow::bail!(
-                    "--grid {}: one grid side without --yield-stress (a list only with --yield-stress)",
-                    h.grid.iter().map(usize::to_string).collect::<Vec<_>>().join(",")
-                ),
-            };
-            let case = hertz_case(&h, grid);
-            let mut bar = Progress::spinner(&format!("Hertz {grid}²"));
-            let r = persson_studies::validation::hertz(&case, &h.solver.options()?, &mut |it| {
-                bar.update(0, &|| "Hertz".into(), it)
-            });
-            bar.finish();
-            print(&r?, &h.format)
-        }
+        Cmd::Hertz(h) => hertz(&h, files),
         Cmd::Rough(r) => rough_contact(&r, files),
     }
 }
 
-/// `persson bem hertz --yield-stress Y`: the plastic disc on each grid.
-fn plastic_disc(h: &HertzArgs, y: f64) -> anyhow::Result<()> {
-    let case = hertz_case(h, h.grid.first().copied().unwrap_or(MIN_GRID));
-    let mut bar = Progress::solves(h.grid.len(), None);
-    let grids = &h.grid;
-    let r = hertz::plastic_disc(&case, grids, y, &h.solver.options()?, &mut |k, it| {
-        bar.update(k, &|| format!("Hertz σY {}²", grids[k]), it)
-    });
-    bar.finish();
-    print_narrowed(&r?, &[], &h.format, h.wide)
-}
-
-/// `persson bem hertz --subsurface`: the stress on the contact's axis.
-fn hertz_subsurface(h: &HertzArgs, files: &mut Files) -> anyhow::Result<()> {
-    let grid = match h.grid.as_slice() {
-        [n] => *n,
-        _ => anyhow::bail!("--grid: one grid side with --subsurface"),
-    };
-    check_memory(grid, h.boundary)?;
-    let case = hertz_case(h, grid);
-    let mut bar = Progress::spinner(&format!("Hertz {grid}²"));
-    let r = persson_studies::bem_detail::hertz_subsurface(
-        &case,
-        &h.solver.options()?,
-        h.poisson,
-        &mut |it| bar.update(0, &|| "Hertz".into(), it),
+/// `persson bem hertz`: the study `bem_hertz`, with a bar over its solves.
+fn hertz(h: &HertzArgs, files: &mut Files) -> anyhow::Result<()> {
+    use persson_studies::bem_hertz::BemHertz;
+    use persson_studies::study::{Context, Study};
+    let spec = h.spec.spec()?;
+    let bar = std::rc::Rc::new(std::cell::RefCell::new(None::<Progress>));
+    let shown = std::rc::Rc::clone(&bar);
+    let report = persson_studies::progress::observe(
+        move |p| {
+            let mut bar = shown.borrow_mut();
+            let bar = bar.get_or_insert_with(|| Progress::solves(p.steps, None));
+            bar.step(p, &|| format!("Hertz {}/{}", p.step + 1, p.steps));
+        },
+        || BemHertz::run(&Context::nothing(), &spec),
     );
-    bar.finish();
-    let r = r?;
-    super::plot::draw(files, h.stress_plot.as_deref(), || {
-        let section = persson_studies::bem_detail::hertz_section(&r)?;
-        Ok(persson_studies::bem_detail::hertz_section_figure(
-            &r, &section,
-        ))
-    })?;
-    print(&r, &h.format)
-}
-
-fn hertz_case(h: &HertzArgs, grid: usize) -> HertzCase {
-    HertzCase {
-        grid,
-        boundary: h.boundary,
-        size: h.size,
-        radius: h.radius,
-        e_star: h.contact_modulus,
-        contact_radius: h.contact_radius.unwrap_or(0.1 * h.size),
+    if let Some(b) = bar.borrow().as_ref() {
+        b.finish();
     }
+    let report = report?;
+    BemHertz::write(&spec, &report, &Context::nothing(), Path::new(""), files)?;
+    print_narrowed(&report, &BemHertz::warnings(&report), &h.format, h.wide)
 }
 
 /// The CLI's view of the solves: progress, and the pressure and gap fields
@@ -362,33 +317,6 @@ fn adhesive_rough(a: &RoughArgs, work_of_adhesion: f64, files: &mut Files) -> an
     let mut warnings = a.spectrum.file_warnings();
     warnings.extend(adhesive_warnings(&report));
     print_narrowed(&report, &warnings, &a.format, a.wide)
-}
-
-/// `bem hertz --work-of-adhesion`: the adhesive sphere's pull-off on each grid.
-fn adhesive_hertz(h: &HertzArgs) -> anyhow::Result<()> {
-    use persson_studies::bem_detail::{adhesive_sphere, sphere_warnings};
-    let dg = h.work_of_adhesion.unwrap_or(0.0);
-    let range = h
-        .adhesion_range
-        .context("--work-of-adhesion needs --adhesion-range")?;
-    if h.boundary != persson::bem::Boundary::Periodic {
-        anyhow::bail!(
-            "--boundary {}: the adhesive sphere of `bem hertz` is solved on a periodic cell \
-             (give --boundary periodic)",
-            h.boundary.name()
-        );
-    }
-    let options = persson::bem::adhesive::AdhesiveOptions {
-        tolerance: check::tolerance("tolerance", h.solver.tolerance)?,
-        max_iterations: h.solver.max_iterations,
-    };
-    let report = adhesive_sphere(
-        &h.grid,
-        (h.size, h.radius, h.contact_modulus),
-        (law_kind(&h.adhesion), dg, range),
-        &options,
-    )?;
-    print_narrowed(&report, &sphere_warnings(&report), &h.format, h.wide)
 }
 
 /// The cohesive law named by `--adhesion`.

@@ -10,7 +10,9 @@ use super::files::{in_file, out_file, InFile, OutFile};
 use super::measured_args::MapReadArgs;
 use super::number::number;
 use super::output::Format;
-use persson_studies::scene::LeakageOutput;
+use persson_studies::scene::{BemHertzOutput, LeakageOutput};
+
+use super::spec_args::{SpecArgs, SpecFlags};
 
 /// Arguments of `persson bem`.
 #[derive(clap::Args, Debug)]
@@ -21,7 +23,8 @@ pub struct Args {
 
 #[derive(clap::Subcommand, Debug)]
 pub enum Cmd {
-    /// Hertz validation: energy-norm error η, fitted contact radius and peak pressure.
+    /// The Hertz ball: the validation (η, fitted contact radius and peak pressure), η per
+    /// grid, the plastic disc, the stress on the axis or the adhesive sphere.
     Hertz(HertzArgs),
     /// Rough contact: contact fraction and mean separation at each nominal pressure.
     Rough(Box<RoughArgs>),
@@ -51,6 +54,8 @@ impl SolverArgs {
     }
 }
 
+/// Arguments of `persson bem hertz`: the study `bem_hertz`'s spec, from
+/// which every flag is derived, and the output's.
 #[derive(clap::Args, Debug)]
 pub struct HertzArgs {
     /// The built-in example, which is this command's defaults: a ball of
@@ -58,69 +63,21 @@ pub struct HertzArgs {
     /// (every command takes --example).
     #[arg(long)]
     pub example: bool,
-    /// Grid side N (nodes per side), at least 8; with --yield-stress a list
-    /// (comma-separated or repeated) for the plastic disc's convergence.
-    #[arg(long, value_delimiter = ',', default_value = "256", allow_hyphen_values = true, value_parser = super::number::count)]
-    pub grid: Vec<usize>,
-    /// Boundary condition of the elastic half-space: free (an isolated contact, zero-padded to 2N) or periodic.
-    #[arg(long, default_value = "free")]
-    pub boundary: Boundary,
-    /// Side L of the square domain.
-    #[arg(long, default_value = "1", allow_hyphen_values = true, value_parser = super::number::number)]
-    pub size: f64,
-    /// Ball radius R (unit of L).
-    #[arg(long, default_value = "1", allow_hyphen_values = true, value_parser = super::number::number)]
-    pub radius: f64,
-    /// Contact modulus E*.
-    #[arg(
-        long,
-        alias = "modulus",
-        default_value = "1",
-        allow_hyphen_values = true, value_parser = super::number::number)]
-    pub contact_modulus: f64,
-    /// Hertz contact radius a that sets the load (default 0.1 L).
-    #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
-    pub contact_radius: Option<f64>,
-    /// Yield stress σY (unit of E*, below the Hertz peak pressure p₀ = 2E*a/(πR)
-    /// for a plastic zone): report the plastic disc's radius per grid instead of η.
-    #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
-    pub yield_stress: Option<f64>,
-    /// Report the stress below the surface on the contact's axis (z/a = 0.05 …
-    /// 2) against Johnson's closed forms, instead of η.
-    #[arg(long, conflicts_with = "yield_stress")]
-    pub subsurface: bool,
-    /// Poisson ratio ν of the body, for --subsurface (the contact needs only E*).
-    #[arg(long, default_value = "0.3", allow_hyphen_values = true, value_parser = super::number::number)]
-    pub poisson: f64,
-    /// With --subsurface, also draw the von Mises stress σ_vM/p0 on the
-    /// vertical section through the axis (z/a ≤ 2, |r|/a ≤ 3) as a colour map.
-    #[arg(long, requires = "subsurface", value_name = "FILE.svg|png", value_parser = out_file)]
-    pub stress_plot: Option<OutFile>,
-    /// Work of adhesion Δγ (unit of E* L): the adhesive sphere instead, its
-    /// pull-off force on each --grid against JKR (1.5πRΔγ) and DMT (2πRΔγ),
-    /// on a periodic cell under mean-gap control.
-    #[arg(
-        long,
-        requires = "adhesion_range",
-        conflicts_with_all = ["yield_stress", "subsurface", "contact_radius"],
-        allow_hyphen_values = true,
-        value_parser = super::number::number
-    )]
-    pub work_of_adhesion: Option<f64>,
-    /// Range ρ of the cohesive law (unit of L).
-    #[arg(long, requires = "work_of_adhesion", allow_hyphen_values = true, value_parser = super::number::number)]
-    pub adhesion_range: Option<f64>,
-    /// Cohesive law of the adhesive sphere.
-    #[arg(long, default_value = "maugis", value_parser = ["maugis", "exponential"])]
-    pub adhesion: String,
     #[command(flatten)]
-    pub solver: SolverArgs,
+    pub spec: SpecArgs<BemHertzOutput>,
     /// Text tables with every column (default: each fits 100 characters, the
     /// solver's columns of a wider table left out and named).
     #[arg(long)]
     pub wide: bool,
     #[command(flatten)]
     pub format: Format,
+}
+
+impl SpecFlags for BemHertzOutput {
+    const RENAMED: &'static [(&'static str, &'static str)] = &[("grids", "grid")];
+    const ALIASES: &'static [(&'static str, &'static str)] =
+        &[("contact_modulus", "modulus"), ("grids", "grids")];
+    const OUTPUTS: &'static [(&'static str, &'static str)] = &[("stress_plot", "FILE.svg|png")];
 }
 
 /// What `bem rough` reports besides the load curve: contact patches and the

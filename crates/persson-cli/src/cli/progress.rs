@@ -1,4 +1,4 @@
-//! The one progress display of long solves on stderr: a bar or spinner on a
+//! The one progress display of long solves on stderr: a bar on a
 //! terminal (feature `progress`), and for long runs whose stderr is a file
 //! one line per solve.
 
@@ -20,15 +20,6 @@ pub struct Progress {
 }
 
 impl Progress {
-    /// A spinner for a single solve described by `what`.
-    pub fn spinner(what: &str) -> Self {
-        Progress {
-            bar: Bar::spinner(what),
-            log: None,
-            last: None,
-        }
-    }
-
     /// A bar over `total` solves; with `log_prefix`, when stderr is not a
     /// terminal, one line per solve (for long runs written to a log).
     pub fn solves(total: usize, log_prefix: Option<&'static str>) -> Self {
@@ -44,12 +35,7 @@ impl Progress {
 
     /// One solver iteration of solve number `done` (from 0), described by `what`.
     pub fn update(&mut self, done: usize, what: &dyn Fn() -> String, it: Iteration) {
-        if let Some((prefix, total)) = self.log {
-            if self.last != Some(done) {
-                self.last = Some(done);
-                eprintln!("{prefix}: solve {}/{total}: {}", done + 1, what());
-            }
-        }
+        self.log(done, what);
         if it.iteration.is_multiple_of(10) {
             self.bar.show(done, &|| {
                 format!(
@@ -60,6 +46,27 @@ impl Progress {
                     it.contact_fraction
                 )
             });
+        }
+    }
+
+    /// An iteration a study reported through its progress hook
+    /// ([`persson_studies::progress`]), described by `what`.
+    pub fn step(&mut self, p: &persson_studies::progress::Progress, what: &dyn Fn() -> String) {
+        self.log(p.step, what);
+        if p.iteration.is_multiple_of(10) {
+            self.bar.show(p.step, &|| {
+                format!("{}: iteration {} ε {:.1e}", what(), p.iteration, p.residual)
+            });
+        }
+    }
+
+    /// The per-solve log line of solve `done`, once, when logging.
+    fn log(&mut self, done: usize, what: &dyn Fn() -> String) {
+        if let Some((prefix, total)) = self.log {
+            if self.last != Some(done) {
+                self.last = Some(done);
+                eprintln!("{prefix}: solve {}/{total}: {}", done + 1, what());
+            }
         }
     }
 

@@ -10,6 +10,7 @@
 //! | number | `--field X`, a plain SI number ([`super::number::number`]) |
 //! | integer | `--field N` ([`super::number::count`]); a 64-bit one, a seed ([`super::number::seed`]) |
 //! | array of numbers | `--field X,Y,…`, repeatable |
+//! | array of integers | `--field N,M,…`, repeatable |
 //! | boolean | `--field`, a switch |
 //! | one of named values | `--field NAME`, the values and their descriptions listed |
 //! | string named `plot` or `plot_*`, or listed in [`SpecFlags::OUTPUTS`] | `--field FILE.svg\|png` (or the listed value name), an output file ([`super::files`]) |
@@ -100,6 +101,7 @@ enum Kind {
     Count,
     Seed,
     Numbers,
+    Counts,
     Switch,
     Choice(Vec<(String, String)>),
     /// An output file, with its value name (`FILE.svg|png`).
@@ -222,6 +224,7 @@ fn kind<T: SpecFlags>(name: &str, p: &Value, root: &Value) -> Kind {
         Some("integer") => Kind::Count,
         Some("boolean") => Kind::Switch,
         Some("array") if items == Some(Some("number")) => Kind::Numbers,
+        Some("array") if items == Some(Some("integer")) => Kind::Counts,
         Some("string") => match output {
             Some(value_name) => Kind::Output(value_name),
             None if plot => Kind::Output("FILE.svg|png"),
@@ -259,6 +262,11 @@ fn arg<T: SpecFlags>(f: &Field) -> Arg {
             .allow_hyphen_values(true)
             .value_delimiter(',')
             .action(ArgAction::Append),
+        Kind::Counts => a
+            .value_parser(count)
+            .allow_hyphen_values(true)
+            .value_delimiter(',')
+            .action(ArgAction::Append),
         Kind::Switch => return a.action(ArgAction::SetTrue),
         Kind::Choice(named) => {
             a.value_parser(clap::builder::PossibleValuesParser::new(named.iter().map(
@@ -284,6 +292,7 @@ pub enum Given {
     Number(f64),
     Count(u64),
     Numbers(Vec<f64>),
+    Counts(Vec<u64>),
     Switch(bool),
     Text(String),
 }
@@ -311,6 +320,10 @@ impl Given {
                 .try_get_many::<f64>(id)
                 .map_err(typed)?
                 .map(|v| Given::Numbers(v.copied().collect())),
+            Kind::Counts => m
+                .try_get_many::<usize>(id)
+                .map_err(typed)?
+                .map(|v| Given::Counts(v.map(|n| *n as u64).collect())),
             Kind::Switch => m
                 .try_get_one::<bool>(id)
                 .map_err(typed)?
@@ -372,6 +385,7 @@ impl<'de> de::Deserializer<'de> for Given {
             Given::Number(x) => v.visit_f64(x),
             Given::Count(n) => v.visit_u64(n),
             Given::Numbers(xs) => v.visit_seq(de::value::SeqDeserializer::new(xs.into_iter())),
+            Given::Counts(ns) => v.visit_seq(de::value::SeqDeserializer::new(ns.into_iter())),
             Given::Switch(b) => v.visit_bool(b),
             Given::Text(s) => v.visit_string(s),
         }

@@ -80,7 +80,7 @@ mod cli {
         assert_eq!(code, 0, "{err}");
         for needle in [
             "--tolerance",
-            "[default: 1e-10]",
+            "(default 1e-10)",
             "--max-iterations",
             "--contact-modulus",
         ] {

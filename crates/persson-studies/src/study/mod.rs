@@ -192,6 +192,20 @@ impl<'a> Context<'a> {
         Ok(Context { inputs, contact })
     }
 
+    /// The context of a study that reads none of the scene's inputs
+    /// ([`Reads::NOTHING`]: `bem_hertz`, whose spec says everything).
+    pub fn nothing() -> Context<'static> {
+        Context {
+            inputs: Inputs {
+                spectrum: None,
+                material: None,
+                rubber: None,
+                nominal_pressure: &[],
+            },
+            contact: None,
+        }
+    }
+
     /// The context of a rough contact built by the caller (the command
     /// line's, from its flags or a measured surface) and its pressures.
     pub fn with_contact(contact: RoughContact, nominal_pressure: &'a [f64]) -> Self {

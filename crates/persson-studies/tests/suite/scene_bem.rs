@@ -39,6 +39,7 @@ mod bem {
     use persson::bem::{hertz, Boundary, Control, Operator, Options, Solver};
     use persson::io::npy;
     use persson::spectrum::{Amplitude, SelfAffine};
+    use persson_studies::scene::BemHertzReport;
 
     /// Two runs of the same deterministic solve agree bit for bit; this
     /// allows for the summation order of a different code path only.
@@ -57,7 +58,9 @@ mod bem {
             .run()
             .unwrap();
         assert!(r.area.is_none() && r.bem.is_none(), "only bem_hertz");
-        let h = r.bem_hertz.unwrap();
+        let BemHertzReport::Convergence(h) = r.bem_hertz.unwrap() else {
+            panic!("several grids: η per grid")
+        };
         assert_eq!(h.boundary.name(), "free");
         let rows = h.rows;
         assert_eq!(rows.len(), 2);
@@ -83,10 +86,79 @@ mod bem {
         .unwrap()
         .bem_hertz
         .unwrap();
+        let BemHertzReport::Validation(p) = p else {
+            panic!("one grid: the validation")
+        };
         assert_eq!(p.boundary.name(), "periodic");
         assert_eq!(
-            p.rows[0].energy_error_published, None,
+            p.energy_error_published, None,
             "the lecture lists the free boundary only"
+        );
+    }
+
+    /// A scene's `bem_hertz` takes every input of `persson bem hertz` (one
+    /// spec for both): the ball, the subsurface with its figure, the
+    /// adhesive sphere; fields of one result beside another are refused,
+    /// both named.
+    #[test]
+    fn bem_hertz_takes_the_ball_the_subsurface_and_adhesion() {
+        let run = |spec: &str| {
+            parse(&format!(
+                r#"{{"schema": 1, "outputs": {{"bem_hertz": {spec}}}}}"#
+            ))
+            .unwrap()
+            .run()
+            .map(|r| r.bem_hertz.unwrap())
+        };
+        let ball = r#"{"grids": [32], "boundary": "periodic", "size": 2, "radius": 3,
+            "contact_modulus": 5, "contact_radius": 0.3}"#;
+        let BemHertzReport::Validation(v) = run(ball).unwrap() else {
+            panic!("one grid: the validation")
+        };
+        // Hertz's p₀ = 2E*a/(πR) (Johnson, Contact Mechanics, Eq. 4.24).
+        let p0 = 2.0 * 5.0 * 0.3 / (std::f64::consts::PI * 3.0);
+        assert!((v.hertz_peak_pressure - p0).abs() <= 1e-15 * p0);
+        assert_eq!((v.size, v.radius, v.contact_modulus), (2.0, 3.0, 5.0));
+        let BemHertzReport::Subsurface(a) = run(r#"{"grids": [32], "subsurface": true}"#).unwrap()
+        else {
+            panic!("the axis")
+        };
+        // Johnson's σ_z on the axis, within the 32² grid's 1 % of p₀.
+        assert!(a.stress_error < 0.01, "{}", a.stress_error);
+        let sphere = r#"{"grids": [16], "boundary": "periodic", "work_of_adhesion": 1e-4,
+            "adhesion_range": 0.05}"#;
+        assert!(matches!(run(sphere).unwrap(), BemHertzReport::Adhesive(_)));
+        for (spec, names) in [
+            (r#"{"stress_plot": "x.svg"}"#, ["stress_plot", "subsurface"]),
+            (r#"{"poisson": 0.3}"#, ["poisson", "subsurface"]),
+            (
+                r#"{"subsurface": true, "yield_stress": 0.05}"#,
+                ["yield_stress", "subsurface"],
+            ),
+            (
+                r#"{"adhesion_range": 0.05}"#,
+                ["adhesion_range", "work_of_adhesion"],
+            ),
+            (
+                r#"{"work_of_adhesion": 1e-4, "adhesion_range": 0.05, "subsurface": true}"#,
+                ["subsurface", "work_of_adhesion"],
+            ),
+            (
+                r#"{"grids": [16, 32], "subsurface": true}"#,
+                ["grids", "grids"],
+            ),
+        ] {
+            let e = run(spec).unwrap_err().to_string();
+            for n in names {
+                assert!(e.contains(&format!("outputs.bem_hertz.{n}")), "{spec}: {e}");
+            }
+        }
+        let e = run(r#"{"work_of_adhesion": 1e-4, "adhesion_range": 0.05}"#)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("outputs.bem_hertz.boundary") && e.contains("periodic"),
+            "{e}"
         );
     }
 

@@ -1,16 +1,9 @@
-//! The terminal's progress bar or spinner (indicatif).
+//! The terminal's progress bar (indicatif).
 
-/// A bar over solves, or a spinner.
+/// A bar over solves.
 pub struct Bar(indicatif::ProgressBar);
 
 impl Bar {
-    /// A spinner labelled `what`.
-    pub fn spinner(what: &str) -> Self {
-        let bar = indicatif::ProgressBar::new_spinner();
-        bar.set_message(what.to_string());
-        Bar(bar)
-    }
-
     /// A bar over `total` solves.
     pub fn solves(total: usize) -> Self {
         let bar = indicatif::ProgressBar::new(total as u64);

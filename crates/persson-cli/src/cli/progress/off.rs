@@ -4,10 +4,6 @@
 pub struct Bar;
 
 impl Bar {
-    pub fn spinner(_: &str) -> Self {
-        Bar
-    }
-
     pub fn solves(_: usize) -> Self {
         Bar
     }

@@ -4,7 +4,8 @@
 
 pub use crate::adhesion::AdhesionReport;
 pub use crate::area::{AreaReport, LoadPoint};
-pub use crate::bem_hertz::{BemHertzReport, BemHertzRow};
+#[cfg(feature = "bem")]
+pub use crate::bem_hertz::{BemHertzReport, BemHertzRow, BemHertzTable};
 pub use crate::friction::FrictionReport;
 pub use crate::kappa::{KappaReport, LinearPoint};
 pub use crate::magnification::MagnificationReport;
