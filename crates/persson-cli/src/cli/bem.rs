@@ -6,13 +6,13 @@ use std::path::{Path, PathBuf};
 use anyhow::Context;
 use persson::bem::rough::{self, Observer, RoughOptions, RoughProgress, SurfaceOrigin};
 use persson::bem::surface::synthesize;
-use persson::bem::{check_memory, Options, Solution};
+use persson::bem::{check_memory, Solution};
 use persson::error::check;
 use persson::io::npy;
 use persson_studies::table::Tabulate;
 
 pub use super::bem_args::{Args, SolverArgs};
-use super::bem_args::{Cmd, HertzArgs, RoughArgs};
+use super::bem_args::{Cmd, HertzArgs, RoughArgs, RoughSettings};
 use super::bem_detail::{details, RoughWithDetails};
 use super::output::print_narrowed;
 use super::progress::Progress;
@@ -98,23 +98,20 @@ fn rough_contact(a: &RoughArgs, files: &mut Files) -> anyhow::Result<()> {
         eprintln!("persson: {}", persson_studies::scene::EXAMPLE);
     }
     let pressures = super::args::pressures(&a.pressure, a.spectrum.example)?;
-    // Before any computation: the transport flags, the bins.
-    let request = super::bem_transport::request(a)?;
-    persson_studies::validation::check_bins(a.bins)?;
+    // Before any computation: the settings, the transport flags.
+    let set = a.settings()?;
+    let request = super::bem_transport::request(a, &set)?;
     let options = RoughOptions {
-        boundary: a.boundary,
-        solver: Options {
-            yield_stress: a.yield_stress,
-            ..a.solver.options()?
-        },
-        bins: a.histogram.as_ref().map(|_| a.bins),
+        boundary: set.boundary,
+        solver: set.options,
+        bins: set.spec.histogram.as_ref().map(|_| set.bins),
         ..RoughOptions::default()
     };
     let e_star = a.material.build(a.spectrum.example)?.contact_modulus();
-    let (surface, source) = rough_surface(a)?;
+    let (surface, source) = rough_surface(a, &set)?;
     let details = details(
         &a.detail,
-        (surface.n, surface.size, a.boundary),
+        (surface.n, surface.size, set.boundary),
         a.material.poisson,
         &pressures,
     )?;
@@ -136,9 +133,9 @@ fn rough_contact(a: &RoughArgs, files: &mut Files) -> anyhow::Result<()> {
         request,
         (surface.n, surface.size, e_star),
         &pressures,
-        a.solver.tolerance,
+        set.options.tolerance,
     )?;
-    let report = if a.plot.is_some() {
+    let report = if set.spec.pressure_plot.is_some() {
         rough::rough_contact_mapped(
             &surface,
             source,
@@ -161,13 +158,13 @@ fn rough_contact(a: &RoughArgs, files: &mut Files) -> anyhow::Result<()> {
     solves.bar.finish();
     let (files, details) = (solves.files, solves.details);
     let report = report?;
-    super::plot::draw(files, a.plot.as_deref(), || {
+    super::plot::draw(files, set.spec.pressure_plot.as_deref(), || {
         persson_studies::plot::map::rough_map(&report)
     })?;
-    super::plot::draw(files, a.area_plot.as_deref(), || {
+    super::plot::draw(files, set.spec.plot.as_deref(), || {
         persson_studies::bem::figures::bem(&report)
     })?;
-    if let Some(path) = &a.histogram {
+    if let Some(path) = &set.spec.histogram {
         // The report's own histogram table: every pressure in one CSV.
         if let Some(t) = report
             .tables()
@@ -256,29 +253,31 @@ fn write_details(
 /// or a spectrum synthesised.
 fn rough_surface(
     a: &RoughArgs,
+    set: &RoughSettings,
 ) -> anyhow::Result<(persson::bem::surface::GridSurface, SurfaceOrigin)> {
     Ok(if let Some(path) = &a.surface {
         let mut map = a.read.spec(path, 0);
         map.size = a.size.map(persson_studies::scene::Sides::One);
         map.detrend = a.detrend;
         (
-            map.bem_surface(a.boundary)?,
+            map.bem_surface(set.boundary)?,
             SurfaceOrigin::height_map(path),
         )
     } else {
         // The example's surface on 128² nodes unless --grid says otherwise.
-        let n = a
+        let n = set
+            .spec
             .grid
             .or(a.spectrum.example.then_some(128))
             .context("no surface: give --surface FILE, or spectrum flags with --grid N")?;
-        check_memory(n, a.boundary)?;
+        check_memory(n, set.boundary)?;
         let spectrum = a.spectrum.build()?;
         let size = check::positive(
             "size",
             a.size.unwrap_or(std::f64::consts::TAU / spectrum.q_min()),
         )?;
-        let s = synthesize(spectrum.as_ref(), n, size, a.seed)?;
-        (s, SurfaceOrigin::synthesised(spectrum.as_ref(), a.seed)?)
+        let s = synthesize(spectrum.as_ref(), n, size, set.seed)?;
+        (s, SurfaceOrigin::synthesised(spectrum.as_ref(), set.seed)?)
     })
 }
 
@@ -291,24 +290,25 @@ fn adhesive_rough(a: &RoughArgs, work_of_adhesion: f64, files: &mut Files) -> an
     let range = ad
         .adhesion_range
         .context("--work-of-adhesion needs --adhesion-range")?;
-    let control = PathControl::new(&ad.mean_gap, &ad.approach, a.boundary)?;
+    let set = a.settings()?;
+    let control = PathControl::new(&ad.mean_gap, &ad.approach, set.boundary)?;
     if a.spectrum.example {
         eprintln!("persson: {}", persson_studies::scene::EXAMPLE);
     }
     let e_star = a.material.build(a.spectrum.example)?.contact_modulus();
-    let (surface, _) = rough_surface(a)?;
+    let (surface, _) = rough_surface(a, &set)?;
     if let Some(path) = &a.surface_out {
         files.write(path, &npy::encode(surface.n, surface.n, &surface.heights)?)?;
     }
     let kind = law_kind(&ad.adhesion);
     let options = persson::bem::adhesive::AdhesiveOptions {
-        tolerance: check::tolerance("tolerance", a.solver.tolerance)?,
-        max_iterations: a.solver.max_iterations,
+        tolerance: set.options.tolerance,
+        max_iterations: set.options.max_iterations,
     };
     let report = adhesive_controlled_path(
         &surface.heights,
         (surface.n, surface.size, e_star),
-        a.boundary,
+        set.boundary,
         (kind, work_of_adhesion, range),
         control,
         &options,

@@ -10,7 +10,7 @@ use super::files::{in_file, out_file, InFile, OutFile};
 use super::measured_args::MapReadArgs;
 use super::number::number;
 use super::output::Format;
-use persson_studies::scene::{BemHertzOutput, LeakageOutput};
+use persson_studies::scene::{BemHertzOutput, BemOutput, LeakageOutput};
 
 use super::spec_args::{SpecArgs, SpecFlags};
 
@@ -139,12 +139,6 @@ pub struct RoughArgs {
     /// solve (default: none, the heights as read).
     #[arg(long, requires = "surface", value_parser = persson_studies::scene::by_name::<persson::names::Detrend>())]
     pub detrend: Option<persson::names::Detrend>,
-    /// Grid side N for a synthesised surface.
-    #[arg(long, conflicts_with = "surface", allow_hyphen_values = true, value_parser = super::number::count)]
-    pub grid: Option<usize>,
-    /// Seed of the synthesised surface (Pcg64Mcg, value-stable).
-    #[arg(long, default_value = "1", conflicts_with = "surface", allow_hyphen_values = true, value_parser = super::number::seed)]
-    pub seed: u64,
     #[command(flatten)]
     pub spectrum: SpectrumArgs,
     #[command(flatten)]
@@ -156,46 +150,19 @@ pub struct RoughArgs {
         allow_hyphen_values = true,
         required_unless_present_any = ["example", "work_of_adhesion"], value_parser = super::number::number)]
     pub pressure: Vec<f64>,
-    /// Boundary condition of the elastic half-space: periodic (the grid is one period) or free.
-    #[arg(long, default_value = "periodic")]
-    pub boundary: Boundary,
+    #[command(flatten)]
+    pub spec: SpecArgs<BemOutput>,
     /// Write each pressure field as .npy (N×N float64); `_k` is added before
     /// the extension when several pressures are given.
     #[arg(long, value_parser = out_file)]
     pub pressure_field: Option<OutFile>,
-    /// Write the histograms P(σ) of every solve into one CSV (nominal_pressure,
-    /// sigma_low, sigma_high, density; each pressure's bins integrate to its
-    /// A/A0). With --yield-stress the bins stop at σY and integrate to A_el/A0;
-    /// the δ-peak at σY is one more row per pressure (sigma_low = sigma_high = σY,
-    /// empty density) with its weight A_pl/A0 in the column plastic_fraction.
-    #[arg(long, value_parser = out_file)]
-    pub histogram: Option<OutFile>,
-    /// Number of histogram bins.
-    #[arg(long, default_value_t = persson_studies::validation::DEFAULT_BINS, allow_hyphen_values = true, value_parser = super::number::count)]
-    pub bins: usize,
     /// Write the (synthesised or read) surface heights as .npy.
     #[arg(long, value_parser = out_file)]
     pub surface_out: Option<OutFile>,
-    /// Yield stress σY (hardness, unit of the pressure): pressures are bounded by
-    /// 0 ≤ p ≤ σY and each point reports the elastic and plastic fractions.
-    #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
-    pub yield_stress: Option<f64>,
-    #[command(flatten)]
-    pub solver: SolverArgs,
     /// Text tables with every column (default: each fits 100 characters, the
     /// solver's columns of a wider table left out and named).
     #[arg(long)]
     pub wide: bool,
-    /// Also draw the pressure map of the load in partial contact whose A/A0 is
-    /// nearest 0.1 (plastic nodes in red with --yield-stress) and its histogram
-    /// P(σ) (the plastic δ-peak at σY as a labelled bar) into this file (.svg or .png;
-    /// a scene's `outputs.bem.pressure_plot`).
-    #[arg(long, value_name = "FILE.svg|png", value_parser = out_file)]
-    pub plot: Option<OutFile>,
-    /// Also draw A/A0 against the load with the Bush linear law into this
-    /// file (.svg or .png; a scene's `outputs.bem.plot`).
-    #[arg(long, value_name = "FILE.svg|png", value_parser = out_file)]
-    pub area_plot: Option<OutFile>,
     #[command(flatten)]
     pub transport: TransportArgs,
     #[command(flatten)]
@@ -204,6 +171,65 @@ pub struct RoughArgs {
     pub adhesion: AdhesionBemArgs,
     #[command(flatten)]
     pub format: Format,
+}
+
+/// `bem rough`'s flags of the scene's `bem` spec: `--plot` is its
+/// `pressure_plot` and `--area-plot` its `plot` (the command line's names
+/// since 0.3); the patches and the subsurface are [`DetailArgs`].
+impl SpecFlags for BemOutput {
+    const OWN: &'static [&'static str] = &["patches", "subsurface"];
+    const RENAMED: &'static [(&'static str, &'static str)] =
+        &[("plot", "area-plot"), ("pressure_plot", "plot")];
+    const OUTPUTS: &'static [(&'static str, &'static str)] = &[
+        ("histogram", "FILE.csv"),
+        ("pressure_plot", "FILE.svg|png"),
+    ];
+}
+
+/// `bem rough`'s solve, from the scene's `bem` spec its flags give: the
+/// spec's defaults resolved once.
+pub struct RoughSettings {
+    /// The spec as given.
+    pub spec: BemOutput,
+    /// The boundary (default periodic).
+    pub boundary: Boundary,
+    /// The seed of a synthesised surface (default 1).
+    pub seed: u64,
+    /// The solver's options (warm-started along the pressures), with the
+    /// yield stress.
+    pub options: Options,
+    /// Histogram bins (default 50), checked.
+    pub bins: usize,
+}
+
+impl RoughArgs {
+    /// The settings of the solves, checked before any computation; a grid or
+    /// seed beside `--surface` is refused (the file sets the grid).
+    pub fn settings(&self) -> anyhow::Result<RoughSettings> {
+        let spec = self.spec.spec()?;
+        if self.surface.is_some() && (spec.grid.is_some() || spec.seed.is_some()) {
+            anyhow::bail!("--grid / --seed: not with --surface (the file sets the grid)");
+        }
+        let tolerance = spec.tolerance.unwrap_or(1e-10);
+        let options = Options {
+            tolerance: check::tolerance("tolerance", tolerance)?,
+            max_iterations: spec
+                .max_iterations
+                .unwrap_or(Options::default().max_iterations),
+            warm_start: true,
+            yield_stress: spec.yield_stress,
+        };
+        let bins = persson_studies::validation::check_bins(
+            spec.bins.unwrap_or(persson_studies::validation::DEFAULT_BINS),
+        )?;
+        Ok(RoughSettings {
+            boundary: spec.boundary.unwrap_or(Boundary::Periodic),
+            seed: spec.seed.unwrap_or(1),
+            options,
+            bins,
+            spec,
+        })
+    }
 }
 
 /// The BEM's conductance and leak rate per load (`bem rough`, feature `flow`).
@@ -244,7 +270,7 @@ pub struct AdhesionBemArgs {
         long,
         requires = "adhesion_range",
         conflicts_with_all = [
-            "pressure", "yield_stress", "plot", "histogram", "pressure_field", "patches",
+            "pressure", "yield_stress", "pressure_plot", "plot", "histogram", "pressure_field", "patches",
             "subsurface", "leakage", "conductivity", "resistivity", "gas_conductivity", "gap_field",
         ],
         allow_hyphen_values = true,

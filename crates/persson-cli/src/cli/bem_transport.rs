@@ -10,10 +10,10 @@ use persson_studies::scene::transport_bem::TransportObserver;
 use persson_studies::scene::{BemTransportPoint, RoughTransportReport};
 use persson_studies::Warning;
 
-use super::bem_args::RoughArgs;
+use super::bem_args::{RoughArgs, RoughSettings};
 
 /// The transport values the flags ask for (`None`: none).
-pub fn request(a: &RoughArgs) -> anyhow::Result<Option<TransportRequest>> {
+pub fn request(a: &RoughArgs, set: &RoughSettings) -> anyhow::Result<Option<TransportRequest>> {
     let t = &a.transport;
     let seal_flags = t.seal.viscosity.is_some()
         || t.seal.pressure_drop.is_some()
@@ -45,10 +45,10 @@ pub fn request(a: &RoughArgs) -> anyhow::Result<Option<TransportRequest>> {
         }
         return Ok(None);
     }
-    if a.boundary != Boundary::Periodic {
+    if set.boundary != Boundary::Periodic {
         bail!("--leakage / --conductivity / --resistivity / --gas-conductivity: need --boundary periodic (the stiffness and the flow of the periodic cell)");
     }
-    if a.yield_stress.is_some() {
+    if set.options.yield_stress.is_some() {
         bail!("--leakage / --conductivity / --resistivity / --gas-conductivity: not with --yield-stress (Barber's identity and the stiffness solve are elastic)");
     }
     if cfg!(not(feature = "flow")) {

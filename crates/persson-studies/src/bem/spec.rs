@@ -26,8 +26,8 @@ pub struct BemOutput {
     /// Solver tolerance ε (default 1e-10).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tolerance: Option<f64>,
-    /// Iterations allowed per solve (default 10000, as the command line's
-    /// `--max-iterations`); a solve that needs more fails, saying so.
+    /// Iterations allowed per solve (default 10000); a solve that needs more
+    /// fails, saying so.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub max_iterations: Option<usize>,
     /// Write the pressure histograms P(σ) as one CSV (nominal_pressure,
@@ -37,13 +37,13 @@ pub struct BemOutput {
     /// Number of histogram bins (default 50).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub bins: Option<usize>,
-    /// Draw A/A0 against load with the Bush linear law (.svg or .png;
-    /// `bem rough --area-plot`).
+    /// Draw A/A0 against load with the Bush linear law (.svg or .png; on
+    /// the command line `--area-plot`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub plot: Option<PathBuf>,
     /// Draw the pressure map of the load in partial contact whose A/A0 is
     /// nearest 0.1 (plastic nodes in red with `yield_stress`) and its
-    /// histogram P(σ) (.svg or .png; `bem rough --plot`).
+    /// histogram P(σ) (.svg or .png; on the command line `--plot`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub pressure_plot: Option<PathBuf>,
     /// Yield stress σY (unit of E*): pressures bounded by 0 ≤ p ≤ σY; each
