@@ -63,6 +63,18 @@ STUDIES = [
     ),
     ("theories", "TheoriesOutput", {}, {"plot": "a figure"}),
     (
+        "bem_rough",
+        "BemOutput",
+        {},
+        {
+            "histogram": "Python returns the histogram: bins switches it on",
+            "plot": "a figure",
+            "pressure_plot": "a figure",
+            "patches": "contact_patches() on the returned pressure",
+            "subsurface": "subsurface_stress() on the returned pressure",
+        },
+    ),
+    (
         "bem_hertz",
         "BemHertzOutput",
         {},
