@@ -12,7 +12,7 @@ use persson::names::Named;
 use persson_studies::bem_detail::{
     adhesive_controlled_path, adhesive_warnings, AdhesiveIteration, LawKind, PathControl,
 };
-use persson_studies::validation::{self, ComparisonConfig, SweepSettings, UserData, UserHistogram};
+use persson_studies::validation::{self, ComparisonConfig, SweepSpec, UserData, UserHistogram};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -439,9 +439,6 @@ fn compare<'py>(
     adhesion: &str,
 ) -> PyResult<Bound<'py, PyAny>> {
     let Seed(seed) = seed;
-    if seeds < 1 {
-        return Err(value_error("seeds: must be at least 1"));
-    }
     // As the command line refuses --grid/--seed/--seeds with --surface and
     // --periodic without it: nothing given is silently left unused.
     if heights.is_some() && (grid != 256 || seeds != 1 || seed != 1) {
@@ -459,14 +456,19 @@ fn compare<'py>(
         .map(|p| float_list("pressure", p))
         .transpose()?
         .unwrap_or_default();
-    config.sweep = SweepSettings {
-        grid,
-        levels,
-        seeds: (0..seeds as u64).map(|k| seed + k).collect(),
+    config.sweep = SweepSpec {
+        grid: Some(grid),
+        levels: Some(levels),
+        seeds: Some(seeds),
+        seed: Some(seed),
         alpha,
-        pixels_per_wavelength,
-        options: options(tolerance, max_iterations, yield_stress)?,
-    };
+        fit_alpha: alpha.is_none(),
+        pixels_per_wavelength: Some(pixels_per_wavelength),
+        tolerance: Some(tolerance),
+        max_iterations: Some(max_iterations),
+    }
+    .settings(yield_stress)
+    .map_err(err)?;
     let read = |p: &Option<PathBuf>| p.as_deref().map(UserData::from_csv).transpose();
     config.data = read(&data).map_err(err)?;
     config.data_histogram = (data_histogram.as_deref().map(UserHistogram::from_csv))

@@ -62,6 +62,7 @@ STUDIES = [
         {"plot": "a figure", "velocity_range": "velocity takes any array"},
     ),
     ("theories", "TheoriesOutput", {}, {"plot": "a figure"}),
+    ("compare", "SweepSpec", {}, {"fit_alpha": "alpha=None fits α"}),
     (
         "bem_rough",
         "BemOutput",

@@ -12,7 +12,7 @@ use persson_studies::validation::{
 };
 
 pub use super::compare_args::Args;
-use super::compare_args::{BemArgs, EnsembleArgs, KappaArgs, MainArgs, Study};
+use super::compare_args::{EnsembleArgs, KappaArgs, MainArgs, Study};
 use super::output::{print_narrowed, print_warned};
 use super::progress::Progress;
 use persson_studies::Warning;
@@ -31,7 +31,7 @@ fn warn_clipped(
     band: &validation::ResolvedBand,
     q_l: f64,
     coarsest: usize,
-    bem: &BemArgs,
+    pixels_per_wavelength: f64,
 ) -> Option<Warning> {
     match (band.clipped, band.q_s_requested) {
         (true, Some(q)) => Some(Warning::ClippedBand {
@@ -39,7 +39,7 @@ fn warn_clipped(
             q_s: band.q_s,
             q_l,
             grid: coarsest,
-            pixels_per_wavelength: bem.pixels_per_wavelength,
+            pixels_per_wavelength,
         }),
         _ => None,
     }
@@ -66,7 +66,7 @@ fn compare(a: &MainArgs, files: &mut Files) -> anyhow::Result<()> {
         eprintln!("persson: {}", persson_studies::scene::EXAMPLE);
     }
     let map = a.measured.spec(a.spectrum.q_s)?;
-    if let (Some(_), Some(flag)) = (&map, a.bem.unused_with_surface()) {
+    if let (Some(_), Some(flag)) = (&map, a.bem.unused_with_surface()?) {
         anyhow::bail!("{flag} is not used with --surface: the map sets the grid");
     }
     if map.is_some() && a.spectrum.anisotropy.is_some() {
@@ -81,8 +81,7 @@ fn compare(a: &MainArgs, files: &mut Files) -> anyhow::Result<()> {
     };
     let mut config = ComparisonConfig::new(a.material.build(a.spectrum.example)?.contact_modulus());
     config.nominal_pressure = a.pressure.clone();
-    config.sweep = a.bem.settings()?;
-    config.sweep.options.yield_stress = a.yield_stress;
+    config.sweep = a.bem.settings(a.yield_stress)?;
     config.data = a.data.as_deref().map(UserData::from_csv).transpose()?;
     config.data_histogram = a
         .data_histogram
@@ -132,13 +131,13 @@ fn kappa_study(a: &KappaArgs, files: &mut Files) -> anyhow::Result<()> {
         rms_slope: a.rms_slope,
         contact_modulus: a.contact_modulus,
         nominal_pressure: a.pressure.clone(),
-        sweep: a.bem.settings()?,
+        sweep: a.bem.settings(None)?,
     };
     let warnings: Vec<Warning> = warn_clipped(
         &config.sweep.band(a.q_l, a.q_s)?,
         a.q_l,
         config.sweep.grids()?[0],
-        &a.bem,
+        config.sweep.pixels_per_wavelength,
     )
     .into_iter()
     .collect();

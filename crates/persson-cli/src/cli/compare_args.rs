@@ -1,13 +1,14 @@
 //! The flags of `persson compare` and `persson compare kappa`.
 
 use persson_studies::validation::{
-    SweepSettings, DEFAULT_ALPHA, DEFAULT_LEVELS, DEFAULT_PIXELS_PER_WAVELENGTH,
+    SweepSettings, SweepSpec, DEFAULT_LEVELS, DEFAULT_PIXELS_PER_WAVELENGTH,
 };
 
 use super::args::{MaterialArgs, MeasuredArgs, SpectrumArgs};
 use super::bem::SolverArgs;
 use super::files::{in_file, out_file, InFile, OutFile};
 use super::output::Format;
+use super::spec_args::{SpecArgs, SpecFlags};
 
 /// Arguments of `persson compare`.
 #[derive(clap::Args, Debug)]
@@ -28,58 +29,29 @@ pub enum Study {
     Ensemble(Box<EnsembleArgs>),
 }
 
-/// BEM knobs shared by `compare` and `compare kappa`.
+/// The BEM side of `compare` and `compare kappa`: the flags of the spec
+/// [`SweepSpec`], every one derived from it.
 #[derive(clap::Args, Debug, Clone)]
 pub struct BemArgs {
-    /// Finest grid side N; the BEM runs on N/4, N/2 and N (see --levels) [default: 256].
-    #[arg(long, value_name = "N", allow_hyphen_values = true, value_parser = super::number::count)]
-    pub grid: Option<usize>,
-    /// Number of grids, each half the next (≥ 2).
-    #[arg(long, default_value_t = DEFAULT_LEVELS, allow_hyphen_values = true, value_parser = super::number::count)]
-    pub levels: usize,
-    /// Number of realisations (seeds first-seed … first-seed + K − 1); A is averaged [default: 1].
-    #[arg(long, value_name = "K", allow_hyphen_values = true, value_parser = super::number::count)]
-    pub seeds: Option<usize>,
-    /// First seed (Pcg64Mcg, value-stable) [default: 1].
-    #[arg(long, value_name = "SEED", allow_hyphen_values = true, value_parser = super::number::seed)]
-    pub seed: Option<u64>,
-    /// Exponent α of A(N) = A∞ + c N^−α (Campañá & Müser 2007: 0.7).
-    #[arg(long, default_value_t = DEFAULT_ALPHA, allow_hyphen_values = true, conflicts_with = "fit_alpha", value_parser = super::number::number)]
-    pub alpha: f64,
-    /// Fit α from three grids (Richardson) instead of fixing it.
-    #[arg(long)]
-    pub fit_alpha: bool,
-    /// Pixels of the coarsest grid per shortest wavelength 2π/q_s: q_s is clipped to
-    /// N_coarsest q_l / this (with a warning).
-    #[arg(long, default_value_t = DEFAULT_PIXELS_PER_WAVELENGTH, allow_hyphen_values = true, value_parser = super::number::number)]
-    pub pixels_per_wavelength: f64,
     #[command(flatten)]
-    pub solver: SolverArgs,
+    pub spec: SpecArgs<SweepSpec>,
 }
 
+impl SpecFlags for SweepSpec {}
+
 impl BemArgs {
-    /// The flags a measured map makes meaningless, if given.
-    pub fn unused_with_surface(&self) -> Option<&'static str> {
-        [
-            (self.grid.is_some(), "--grid"),
-            (self.seed.is_some(), "--seed"),
-            (self.seeds.is_some(), "--seeds"),
-        ]
-        .into_iter()
-        .find_map(|(given, flag)| given.then_some(flag))
+    /// The flag a measured map makes meaningless, if given.
+    pub fn unused_with_surface(&self) -> anyhow::Result<Option<String>> {
+        Ok(self
+            .spec
+            .spec()?
+            .unused_with_surface()
+            .map(|field| format!("--{field}")))
     }
 
-    pub fn settings(&self) -> anyhow::Result<SweepSettings> {
-        let (count, first) = (self.seeds.unwrap_or(1), self.seed.unwrap_or(1));
-        anyhow::ensure!(count >= 1, "--seeds must be at least 1");
-        Ok(SweepSettings {
-            grid: self.grid.unwrap_or(256),
-            levels: self.levels,
-            seeds: (0..count as u64).map(|k| first + k).collect(),
-            alpha: (!self.fit_alpha).then_some(self.alpha),
-            pixels_per_wavelength: self.pixels_per_wavelength,
-            options: self.solver.options()?,
-        })
+    /// The sweep's settings, with the solver's yield stress.
+    pub fn settings(&self, yield_stress: Option<f64>) -> anyhow::Result<SweepSettings> {
+        Ok(self.spec.spec()?.settings(yield_stress)?)
     }
 }
 
