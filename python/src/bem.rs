@@ -502,9 +502,21 @@ fn compare<'py>(
             spectrum.breaks.clone()
         },
     )?;
+    let r = compare_on(py, spectrum, (heights, size, periodic), &config)?;
+    crate::convert::to_dict_warned(py, &r, &r.warnings)
+}
+
+/// `compare`'s run: on a synthesised surface, or on the map `heights` of
+/// side `size` (periodic or free).
+fn compare_on(
+    py: Python<'_>,
+    spectrum: &Spectrum,
+    (heights, size, periodic): (Option<&Bound<'_, PyAny>>, Option<f64>, bool),
+    config: &ComparisonConfig,
+) -> PyResult<validation::Comparison> {
     let s = &spectrum.shared;
-    let r = match heights {
-        None => py.detach(|| validation::compare(s, &config, &mut |_| {})),
+    match heights {
+        None => py.detach(|| validation::compare(s, config, &mut |_| {})),
         Some(h) => {
             let size = size.ok_or_else(|| value_error("size: required with heights"))?;
             let map = surface(h, size)?;
@@ -515,12 +527,11 @@ fn compare<'py>(
             };
             py.detach(|| -> persson::Result<_> {
                 check_memory(map.n, b)?;
-                validation::compare_surface(s, &map, b, &config, &mut |_| {})
+                validation::compare_surface(s, &map, b, config, &mut |_| {})
             })
         }
     }
-    .map_err(err)?;
-    crate::convert::to_dict_warned(py, &r, &r.warnings)
+    .map_err(err)
 }
 
 /// `compare`'s adhesion settings: Δγ (one or a list), the range and the law.

@@ -119,7 +119,14 @@ STUDIES = [
 ]
 
 
+# Specs that are not a section of a scene, each in its own generated file.
+OTHER_SPECS = {"SweepSpec": SCHEMA.parent / "sweep.schema.json"}
+
+
 def spec(name):
+    if name in OTHER_SPECS:
+        with open(OTHER_SPECS[name], encoding="utf-8") as f:
+            return json.load(f)
     with open(SCHEMA, encoding="utf-8") as f:
         return json.load(f)["$defs"][name]
 

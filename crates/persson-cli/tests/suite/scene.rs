@@ -422,6 +422,27 @@ fn report_keys_are_snake_case() {
     }
 }
 
+/// The JSON Schema of `compare`'s sweep in
+/// crates/persson-studies/schema/sweep.schema.json is the one its type
+/// generates (regenerate with PERSSON_WRITE_SCHEMA=1): Python's tests check
+/// `compare`'s keywords against it.
+#[cfg(feature = "bem")]
+#[test]
+fn sweep_schema_file_is_generated_from_the_type() {
+    let path =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../persson-studies/schema/sweep.schema.json");
+    let want = persson_studies::validation::sweep_schema();
+    if std::env::var_os("PERSSON_WRITE_SCHEMA").is_some() {
+        std::fs::write(&path, &want).unwrap();
+    }
+    let got = std::fs::read_to_string(&path).unwrap_or_default();
+    assert!(
+        got == want,
+        "crates/persson-studies/schema/sweep.schema.json is stale: run \
+         PERSSON_WRITE_SCHEMA=1 cargo test -p persson-cli --test suite"
+    );
+}
+
 /// The JSON Schema in crates/persson-studies/schema/scene.schema.json (apart
 /// from the scenes, so that `persson run scenes/*.json` runs every file) is
 /// the one the types generate (regenerate with PERSSON_WRITE_SCHEMA=1).
