@@ -300,7 +300,7 @@ fn adhesive_rough(a: &RoughArgs, work_of_adhesion: f64, files: &mut Files) -> an
     if let Some(path) = &a.surface_out {
         files.write(path, &npy::encode(surface.n, surface.n, &surface.heights)?)?;
     }
-    let kind = law_kind(&ad.adhesion);
+    let kind = ad.adhesion;
     let options = persson::bem::adhesive::AdhesiveOptions {
         tolerance: set.options.tolerance,
         max_iterations: set.options.max_iterations,
@@ -317,14 +317,6 @@ fn adhesive_rough(a: &RoughArgs, work_of_adhesion: f64, files: &mut Files) -> an
     let mut warnings = a.spectrum.file_warnings();
     warnings.extend(adhesive_warnings(&report));
     print_narrowed(&report, &warnings, &a.format, a.wide)
-}
-
-/// The cohesive law named by `--adhesion`.
-fn law_kind(name: &str) -> persson_studies::bem_detail::LawKind {
-    match name {
-        "exponential" => persson_studies::bem_detail::LawKind::Exponential,
-        _ => persson_studies::bem_detail::LawKind::Maugis,
-    }
 }
 
 /// `dir/name.ext` → `dir/name_k.ext` when `k` is given.

@@ -282,8 +282,8 @@ pub struct AdhesionBemArgs {
     #[arg(long, requires = "work_of_adhesion", allow_hyphen_values = true, value_parser = super::number::number)]
     pub adhesion_range: Option<f64>,
     /// Cohesive law of the adhesive BEM.
-    #[arg(long, default_value = "maugis", value_parser = ["maugis", "exponential"])]
-    pub adhesion: String,
+    #[arg(long, default_value = "maugis", value_parser = persson_studies::scene::by_name::<persson::names::LawKind>())]
+    pub adhesion: persson::names::LawKind,
     /// Mean gaps ḡ of the adhesive path, m, solved in the order given (in and
     /// out for a loading–unloading curve); comma-separated or repeated.
     #[arg(long, value_delimiter = ',', requires = "work_of_adhesion", allow_hyphen_values = true, value_parser = super::number::number)]

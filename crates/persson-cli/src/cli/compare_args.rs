@@ -213,8 +213,8 @@ pub struct AdhesionCompareArgs {
     #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
     pub adhesion_range: Option<f64>,
     /// Cohesive law of the adhesive BEM.
-    #[arg(long, default_value = "maugis", value_parser = ["maugis", "exponential"])]
-    pub adhesion: String,
+    #[arg(long, default_value = "maugis", value_parser = persson_studies::scene::by_name::<persson::names::LawKind>())]
+    pub adhesion: persson::names::LawKind,
 }
 
 impl AdhesionCompareArgs {
@@ -224,7 +224,6 @@ impl AdhesionCompareArgs {
         &self,
     ) -> anyhow::Result<Option<persson_studies::validation::compare_adhesion::AdhesionCompareConfig>>
     {
-        use persson_studies::bem_detail::LawKind;
         use persson_studies::validation::compare_adhesion::AdhesionCompareConfig;
         if self.work_of_adhesion.is_empty() {
             if self.adhesion_range.is_some() {
@@ -244,11 +243,7 @@ impl AdhesionCompareArgs {
         }
         let mut c = AdhesionCompareConfig::new(self.work_of_adhesion.clone());
         c.adhesion_range = self.adhesion_range;
-        c.adhesion = if self.adhesion == "exponential" {
-            LawKind::Exponential
-        } else {
-            LawKind::Maugis
-        };
+        c.adhesion = self.adhesion;
         Ok(Some(c))
     }
 }
