@@ -8,7 +8,6 @@ use persson::error::check;
 use super::args::{MaterialArgs, SpectrumArgs};
 use super::files::{in_file, out_file, InFile, OutFile};
 use super::measured_args::MapReadArgs;
-use super::number::number;
 use super::output::Format;
 use persson_studies::scene::{BemHertzOutput, BemOutput, LeakageOutput};
 
@@ -330,31 +329,43 @@ impl MaterialArgs {
 }
 
 
-/// The seal and its fluid of `bem rough --leakage` and `compare --leakage`
-/// (`persson leakage` derives its flags from the spec `LeakageOutput`).
+/// The seal and its fluid of `bem rough --leakage` and `compare --leakage`:
+/// the flags of `persson leakage`'s spec [`LeakageOutput`] (the fluid, its
+/// drive and the seal's sides), without the theory's own knobs.
 #[derive(clap::Args, Debug, Clone)]
 pub struct SealArgs {
-    /// Dynamic viscosity η of the fluid, Pa s.
-    #[arg(long, allow_hyphen_values = true, value_parser = number)]
-    pub viscosity: Option<f64>,
-    /// Pressure drop ΔP across the seal, Pa (a liquid).
-    #[arg(long, allow_hyphen_values = true, value_parser = number, conflicts_with_all = ["inlet_pressure", "outlet_pressure"])]
-    pub pressure_drop: Option<f64>,
-    /// Inlet pressure P_a of a gas (isothermal, ideal), Pa absolute.
-    #[arg(long, requires = "outlet_pressure", allow_hyphen_values = true, value_parser = number)]
-    pub inlet_pressure: Option<f64>,
-    /// Outlet pressure P_b of a gas, Pa absolute (below P_a); Q is the flow at P_b.
-    #[arg(long, requires = "inlet_pressure", allow_hyphen_values = true, value_parser = number)]
-    pub outlet_pressure: Option<f64>,
-    /// Seal width L_x along the flow, m.
-    #[arg(long, default_value = "1e-3", allow_hyphen_values = true, value_parser = number)]
-    pub seal_width: f64,
-    /// Seal length L_y across the flow (e.g. an O-ring's circumference), m.
-    #[arg(long, default_value = "1e-3", allow_hyphen_values = true, value_parser = number)]
-    pub seal_length: f64,
+    #[command(flatten)]
+    pub spec: SpecArgs<Seal>,
+}
+
+/// [`LeakageOutput`] through the seal's flags alone: the percolation
+/// threshold, the tolerance, the BEM and the figure are the command's.
+#[derive(Debug, Clone, serde::Deserialize)]
+#[serde(transparent)]
+pub struct Seal(pub LeakageOutput);
+
+impl schemars::JsonSchema for Seal {
+    fn schema_name() -> std::borrow::Cow<'static, str> {
+        LeakageOutput::schema_name()
+    }
+
+    fn json_schema(generator: &mut schemars::SchemaGenerator) -> schemars::Schema {
+        LeakageOutput::json_schema(generator)
+    }
+}
+
+impl SpecFlags for Seal {
+    const OWN: &'static [&'static str] = &["percolation_threshold", "tolerance", "bem", "plot"];
 }
 
 impl SealArgs {
+    /// Whether the fluid or its drive was given.
+    pub fn given(&self) -> bool {
+        ["viscosity", "pressure_drop", "inlet_pressure", "outlet_pressure"]
+            .iter()
+            .any(|f| self.spec.has(f))
+    }
+
     /// The scene's `leakage` output for these flags; with `example`, the example's water seal
     /// ([`LeakageOutput::example`]) where the fluid or its drive is not given.
     pub fn output(
@@ -363,31 +374,19 @@ impl SealArgs {
         tolerance: f64,
         example: bool,
     ) -> anyhow::Result<LeakageOutput> {
-        // The example's water seal stands in for what is not given.
-        let water = example.then(LeakageOutput::example);
-        let Some(viscosity) = self.viscosity.or(water.as_ref().map(|w| w.viscosity)) else {
-            anyhow::bail!("no --viscosity: give the fluid's dynamic viscosity η in Pa s");
-        };
-        let pressure_drop = match (&water, self.inlet_pressure) {
-            (Some(w), None) => self.pressure_drop.or(w.pressure_drop),
-            _ => self.pressure_drop,
-        };
-        if pressure_drop.is_none() && self.inlet_pressure.is_none() {
-            anyhow::bail!(
-                "no --pressure-drop: give ΔP in Pa (a liquid), or --inlet-pressure and --outlet-pressure (a gas)"
-            );
+        let mut spec = self.spec.clone();
+        if example {
+            let water = LeakageOutput::example();
+            spec.or("viscosity", water.viscosity);
+            if !spec.has("inlet_pressure") {
+                spec.or("pressure_drop", water.pressure_drop.unwrap_or_default());
+            }
         }
+        let Seal(out) = spec.spec()?;
         Ok(LeakageOutput {
-            viscosity,
-            pressure_drop,
-            inlet_pressure: self.inlet_pressure,
-            outlet_pressure: self.outlet_pressure,
-            seal_width: self.seal_width,
-            seal_length: self.seal_length,
             percolation_threshold: Some(percolation_threshold),
             tolerance: Some(tolerance),
-            bem: None,
-            plot: None,
+            ..out
         })
     }
 }

@@ -15,12 +15,9 @@ use super::bem_args::{RoughArgs, RoughSettings};
 /// The transport values the flags ask for (`None`: none).
 pub fn request(a: &RoughArgs, set: &RoughSettings) -> anyhow::Result<Option<TransportRequest>> {
     let t = &a.transport;
-    let seal_flags = t.seal.viscosity.is_some()
-        || t.seal.pressure_drop.is_some()
-        || t.seal.inlet_pressure.is_some();
-    if seal_flags && !t.leakage {
+    if t.seal.given() && !t.leakage {
         bail!(
-            "--viscosity / --pressure-drop / --inlet-pressure: add --leakage to compute the flow"
+            "--viscosity / --pressure-drop / --inlet-pressure / --outlet-pressure: add --leakage to compute the flow"
         );
     }
     let seal = if t.leakage {

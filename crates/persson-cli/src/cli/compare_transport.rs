@@ -44,12 +44,7 @@ impl TransportArgs {
     /// The transport comparison the flags ask for (`None`: none), checked
     /// before any solve; `breaks` are the spectrum's kinks.
     pub fn config(&self, breaks: Vec<f64>) -> anyhow::Result<Option<TransportCompareConfig>> {
-        let s = &self.seal;
-        let seal_flags = s.viscosity.is_some()
-            || s.pressure_drop.is_some()
-            || s.inlet_pressure.is_some()
-            || s.outlet_pressure.is_some();
-        if seal_flags && !self.leakage {
+        if self.seal.given() && !self.leakage {
             anyhow::bail!(
                 "--viscosity / --pressure-drop / --inlet-pressure / --outlet-pressure: add --leakage to compare the leak rate"
             );
@@ -66,7 +61,7 @@ impl TransportArgs {
             return Ok(None);
         }
         let seal = if self.leakage {
-            let out = s.output(self.percolation_threshold, 1e-9, false)?;
+            let out = self.seal.output(self.percolation_threshold, 1e-9, false)?;
             Some(transport::seal(&out)?)
         } else {
             None
