@@ -9,7 +9,8 @@ use super::args::{MaterialArgs, SpectrumArgs};
 use super::files::{in_file, out_file, InFile, OutFile};
 use super::measured_args::MapReadArgs;
 use super::output::Format;
-use persson_studies::scene::{BemHertzOutput, BemOutput, LeakageOutput};
+use persson_studies::scene::transport::{self, TransportRequest};
+use persson_studies::scene::{BemHertzOutput, BemOutput, ConductanceOutput, LeakageOutput};
 
 use super::spec_args::{SpecArgs, SpecFlags};
 
@@ -234,19 +235,8 @@ impl RoughArgs {
 /// The BEM's conductance and leak rate per load (`bem rough`, feature `flow`).
 #[derive(clap::Args, Debug, Clone)]
 pub struct TransportArgs {
-    /// Thermal conductivities κ1[,κ2] of the two bodies, W/(m K): the thermal
-    /// conductance of each solve (Barber's identity on its exact stiffness).
-    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = super::number::number)]
-    pub conductivity: Vec<f64>,
-    /// Electrical resistivities ρ1[,ρ2] of the two bodies, Ω m: the electrical conductance.
-    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = super::number::number)]
-    pub resistivity: Vec<f64>,
-    /// Gap conductance by gas conduction κ_gas/(g + 2ℓ) over the gap: κ_gas, W/(m K).
-    #[arg(long, requires = "mean_free_path", allow_hyphen_values = true, value_parser = super::number::number)]
-    pub gas_conductivity: Option<f64>,
-    /// Temperature-jump length ℓ of the gas law, m.
-    #[arg(long, requires = "gas_conductivity", allow_hyphen_values = true, value_parser = super::number::number)]
-    pub mean_free_path: Option<f64>,
+    #[command(flatten)]
+    pub conductance: ConductanceArgs,
     /// Reynolds flow on each solve's gap along x and y, and the seal's leak
     /// rate (needs --viscosity and --pressure-drop, or a gas's pressures).
     #[arg(long)]
@@ -328,6 +318,59 @@ impl MaterialArgs {
     }
 }
 
+
+/// The bodies and the gas of `bem rough`'s and `compare`'s conductance: the
+/// flags of `persson conductance`'s spec [`ConductanceOutput`] (the
+/// conductivities, the resistivities, the gas law), without the theory's own
+/// knobs.
+#[derive(clap::Args, Debug, Clone)]
+pub struct ConductanceArgs {
+    #[command(flatten)]
+    pub spec: SpecArgs<Conductances>,
+}
+
+/// [`ConductanceOutput`] through the bodies' and the gas's flags alone.
+#[derive(Debug, Clone, serde::Deserialize)]
+#[serde(transparent)]
+pub struct Conductances(pub ConductanceOutput);
+
+impl schemars::JsonSchema for Conductances {
+    fn schema_name() -> std::borrow::Cow<'static, str> {
+        ConductanceOutput::schema_name()
+    }
+
+    fn json_schema(generator: &mut schemars::SchemaGenerator) -> schemars::Schema {
+        ConductanceOutput::json_schema(generator)
+    }
+}
+
+impl SpecFlags for Conductances {
+    const OWN: &'static [&'static str] = &["gap_table", "tolerance", "bem", "plot"];
+}
+
+impl ConductanceArgs {
+    /// Whether a conductivity, a resistivity or the gas law was given.
+    pub fn given(&self) -> bool {
+        ["conductivity", "resistivity", "gas_conductivity", "mean_free_path"]
+            .iter()
+            .any(|f| self.spec.has(f))
+    }
+
+    /// The transport request of these flags (κ, ρ, the gap law, each
+    /// checked and named as the spec's field) with `seal`.
+    pub fn request(
+        &self,
+        seal: Option<persson::leakage::Seal>,
+    ) -> anyhow::Result<TransportRequest> {
+        let Conductances(c) = self.spec.spec()?;
+        Ok(TransportRequest::new(
+            transport::conductivity(&c.conductivity)?,
+            transport::resistivity(&c.resistivity)?,
+            transport::gap_law(c.gas_conductivity, c.mean_free_path, None)?,
+            seal,
+        ))
+    }
+}
 
 /// The seal and its fluid of `bem rough --leakage` and `compare --leakage`:
 /// the flags of `persson leakage`'s spec [`LeakageOutput`] (the fluid, its

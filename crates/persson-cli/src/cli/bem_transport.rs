@@ -28,12 +28,7 @@ pub fn request(a: &RoughArgs, set: &RoughSettings) -> anyhow::Result<Option<Tran
     } else {
         None
     };
-    let request = TransportRequest::new(
-        transport::conductivity(&t.conductivity)?,
-        transport::resistivity(&t.resistivity)?,
-        transport::gap_law(t.gas_conductivity, t.mean_free_path, None)?,
-        seal,
-    );
+    let request = t.conductance.request(seal)?;
     if request == TransportRequest::default() {
         if t.gap_field.is_some() {
             bail!(

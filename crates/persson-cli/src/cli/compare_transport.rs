@@ -2,10 +2,10 @@
 //! leak rate and contact conductance against the BEM's on the sweep's
 //! surfaces ([`persson_studies::validation::compare_transport`]).
 
-use persson_studies::scene::transport::{self, TransportRequest};
+use persson_studies::scene::transport;
 use persson_studies::validation::TransportCompareConfig;
 
-use super::bem_args::SealArgs;
+use super::bem_args::{ConductanceArgs, SealArgs};
 use super::number::number;
 
 /// `compare --leakage / --conductance` (flattened into `compare`'s flags).
@@ -26,18 +26,8 @@ pub struct TransportArgs {
     /// law, each of which asks for the comparison alone, as in `bem rough`).
     #[arg(long)]
     pub conductance: bool,
-    /// Thermal conductivities κ1[,κ2] of the two bodies, W/(m K).
-    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = number)]
-    pub conductivity: Vec<f64>,
-    /// Electrical resistivities ρ1[,ρ2] of the two bodies, Ω m.
-    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = number)]
-    pub resistivity: Vec<f64>,
-    /// Gap conductance by gas conduction κ_gas/(u + 2ℓ): κ_gas, W/(m K).
-    #[arg(long, requires = "mean_free_path", allow_hyphen_values = true, value_parser = number)]
-    pub gas_conductivity: Option<f64>,
-    /// Temperature-jump length ℓ of the gas law, m.
-    #[arg(long, requires = "gas_conductivity", allow_hyphen_values = true, value_parser = number)]
-    pub mean_free_path: Option<f64>,
+    #[command(flatten)]
+    pub bodies: ConductanceArgs,
 }
 
 impl TransportArgs {
@@ -49,9 +39,7 @@ impl TransportArgs {
                 "--viscosity / --pressure-drop / --inlet-pressure / --outlet-pressure: add --leakage to compare the leak rate"
             );
         }
-        let conductance_flags = !self.conductivity.is_empty()
-            || !self.resistivity.is_empty()
-            || self.gas_conductivity.is_some();
+        let conductance_flags = self.bodies.given();
         if self.conductance && !conductance_flags {
             anyhow::bail!(
                 "--conductance: give --conductivity κ1[,κ2] (W/(m K)) and/or --resistivity ρ1[,ρ2] (Ω m), or --gas-conductivity with --mean-free-path"
@@ -66,12 +54,7 @@ impl TransportArgs {
         } else {
             None
         };
-        let request = TransportRequest::new(
-            transport::conductivity(&self.conductivity)?,
-            transport::resistivity(&self.resistivity)?,
-            transport::gap_law(self.gas_conductivity, self.mean_free_path, None)?,
-            seal,
-        );
+        let request = self.bodies.request(seal)?;
         let mut config = TransportCompareConfig::new(request);
         config.percolation_threshold = self.percolation_threshold;
         config.breaks = breaks;
