@@ -18,6 +18,7 @@ use super::output::print_narrowed;
 use super::progress::Progress;
 use persson_studies::bem_detail::Details;
 use persson_studies::output::Files;
+use persson_studies::scene::BemOutput;
 
 /// Run `persson bem`.
 pub fn run(a: Args, files: &mut Files) -> anyhow::Result<()> {
@@ -110,7 +111,7 @@ fn rough_contact(a: &RoughArgs, files: &mut Files) -> anyhow::Result<()> {
     let e_star = a.material.build(a.spectrum.example)?.contact_modulus();
     let (surface, source) = rough_surface(a, &set)?;
     let details = details(
-        &a.detail,
+        &set.spec,
         (surface.n, surface.size, set.boundary),
         a.material.poisson,
         &pressures,
@@ -177,7 +178,7 @@ fn rough_contact(a: &RoughArgs, files: &mut Files) -> anyhow::Result<()> {
     let mut warnings = a.spectrum.file_warnings();
     warnings.extend(persson_studies::warning::of_rough(&report));
     write_details(
-        a,
+        &set.spec,
         &details,
         (surface.n, surface.size, e_star),
         &pressures,
@@ -211,32 +212,35 @@ fn rough_contact(a: &RoughArgs, files: &mut Files) -> anyhow::Result<()> {
 /// and the von Mises map of every plane below every solve (`--stress-field`
 /// .npy, `--stress-plot` colour maps, `_k_j` added to each name).
 fn write_details(
-    a: &RoughArgs,
+    b: &BemOutput,
     details: &Details,
     (n, size, e_star): (usize, f64, f64),
     pressures: &[f64],
     files: &mut Files,
 ) -> anyhow::Result<()> {
-    if let Some(path) = &a.detail.stress_field {
+    let sub = b.subsurface.as_ref();
+    if let Some(path) = sub.and_then(|s| s.stress_field.as_ref()) {
         for m in &details.maps {
             let p = persson_studies::bem_detail::indexed(path, m.index, m.depth_index);
             files.write(&p, &npy::encode(n, n, &m.von_mises_stress)?)?;
         }
     }
     use persson_studies::bem::figures;
-    if let (Some(path), Some(p)) = (&a.detail.patches_plot, &details.patches) {
+    let patches_plot = b.patches.as_ref().and_then(|p| p.plot.as_ref());
+    if let (Some(path), Some(p)) = (patches_plot, &details.patches) {
         super::plot::draw(files, Some(path), || figures::patch_areas(p))?;
     }
-    if let (Some(path), Some(s)) = (&a.detail.stress_plot, &details.subsurface) {
+    let stress_plot = sub.and_then(|s| s.plot.as_ref());
+    if let (Some(path), Some(s)) = (stress_plot, &details.subsurface) {
         super::plot::draw(files, Some(path), || figures::subsurface_profiles(s))?;
     }
-    if let Some(path) = &a.detail.stress_plot {
+    if let (Some(path), Some(s)) = (stress_plot, sub) {
         use persson_studies::plot::Encode;
         let unit = if e_star == 1.0 { "E*" } else { "Pa" };
         let planes = persson_studies::bem_detail::planes(
             &details.maps,
             (n, size),
-            &a.detail.depth,
+            &s.depth,
             pressures,
             unit,
             path,

@@ -10,7 +10,9 @@ use super::files::{in_file, out_file, InFile, OutFile};
 use super::measured_args::MapReadArgs;
 use super::output::Format;
 use persson_studies::scene::transport::{self, TransportRequest};
-use persson_studies::scene::{BemHertzOutput, BemOutput, ConductanceOutput, LeakageOutput};
+use persson_studies::scene::{
+    BemHertzOutput, BemOutput, ConductanceOutput, LeakageOutput, PatchesOutput, SubsurfaceOutput,
+};
 
 use super::spec_args::{SpecArgs, SpecFlags};
 
@@ -81,44 +83,104 @@ impl SpecFlags for BemHertzOutput {
 }
 
 /// What `bem rough` reports besides the load curve: contact patches and the
-/// stress below the surface.
+/// stress below the surface, the flags of the scene's `outputs.bem.patches`
+/// and `outputs.bem.subsurface` behind a switch each.
 #[derive(clap::Args, Debug)]
 pub struct DetailArgs {
     /// Report the connected contact patches of each solve (count, largest,
     /// perimeters, log-binned area distribution, pressure-tail fits).
     #[arg(long)]
     pub patches: bool,
-    /// Neighbourhood of a patch: four (edges) or eight (edges and corners).
-    #[arg(long, default_value = "four", value_parser = ["four", "eight"], requires = "patches")]
-    pub connectivity: String,
-    /// Log bins per decade of the patch-area distribution.
-    #[arg(long, default_value = "5", requires = "patches", allow_hyphen_values = true, value_parser = super::number::count)]
-    pub bins_per_decade: usize,
-    /// Draw the log-binned patch-area distribution n(A) of each solve on log
-    /// axes (.svg or .png; a scene's `outputs.bem.patches.plot`).
-    #[arg(long, requires = "patches", value_name = "FILE.svg|png", value_parser = out_file)]
-    pub patches_plot: Option<OutFile>,
+    #[command(flatten)]
+    pub patch: SpecArgs<Patches>,
     /// Report the stress below the surface on the planes of --depth.
-    #[arg(long, requires = "depth")]
+    #[arg(long)]
     pub subsurface: bool,
-    /// Depths z of the planes below the surface (unit of L; > 0 and at most L),
-    /// comma-separated or repeated.
-    #[arg(long, value_delimiter = ',', requires = "subsurface", allow_hyphen_values = true, value_parser = super::number::number)]
-    pub depth: Vec<f64>,
-    /// Uniaxial yield stress Y of the von Mises criterion (unit of the
-    /// pressure): where and at which load factor the subsurface first yields.
-    #[arg(long, requires = "subsurface", allow_hyphen_values = true, value_parser = super::number::number)]
-    pub tensile_yield_stress: Option<f64>,
-    /// Write the von Mises stress of each plane as .npy (N×N float64); `_k_j`
-    /// (pressure k, depth j) is added before the extension.
-    #[arg(long, requires = "subsurface", value_parser = out_file)]
-    pub stress_field: Option<OutFile>,
-    /// Draw the depth profiles of the largest von Mises stress and maximum
-    /// shear of each solve (.svg or .png), and beside it each plane's von
-    /// Mises map as a colour map (`_k_j` added: pressure k, depth j), as a
-    /// scene's `outputs.bem.subsurface.plot`.
-    #[arg(long, requires = "subsurface", value_name = "FILE.svg|png", value_parser = out_file)]
-    pub stress_plot: Option<OutFile>,
+    #[command(flatten)]
+    pub stress: SpecArgs<Subsurface>,
+}
+
+/// [`PatchesOutput`] through its flags: its figure is `--patches-plot`.
+#[derive(Debug, Clone, serde::Deserialize)]
+#[serde(transparent)]
+pub struct Patches(pub PatchesOutput);
+
+/// [`SubsurfaceOutput`] through its flags: its figure is `--stress-plot`.
+#[derive(Debug, Clone, serde::Deserialize)]
+#[serde(transparent)]
+pub struct Subsurface(pub SubsurfaceOutput);
+
+/// `JsonSchema` of a transparent newtype: its spec's.
+macro_rules! schema_of {
+    ($newtype:ty, $spec:ty) => {
+        impl schemars::JsonSchema for $newtype {
+            fn schema_name() -> std::borrow::Cow<'static, str> {
+                <$spec>::schema_name()
+            }
+
+            fn json_schema(generator: &mut schemars::SchemaGenerator) -> schemars::Schema {
+                <$spec>::json_schema(generator)
+            }
+        }
+    };
+}
+
+schema_of!(Patches, PatchesOutput);
+schema_of!(Subsurface, SubsurfaceOutput);
+
+impl SpecFlags for Patches {
+    const RENAMED: &'static [(&'static str, &'static str)] = &[("plot", "patches-plot")];
+    const IDS: &'static [(&'static str, &'static str)] = &[("plot", "patches_plot")];
+}
+
+impl SpecFlags for Subsurface {
+    const RENAMED: &'static [(&'static str, &'static str)] = &[("plot", "stress-plot")];
+    const IDS: &'static [(&'static str, &'static str)] = &[("plot", "stress_plot")];
+    const OUTPUTS: &'static [(&'static str, &'static str)] = &[("stress_field", "FILE.npy")];
+}
+
+impl DetailArgs {
+    /// The scene's `patches` and `subsurface` of these flags; a flag of
+    /// either without its switch is refused.
+    pub fn specs(&self) -> anyhow::Result<(Option<PatchesOutput>, Option<SubsurfaceOutput>)> {
+        let stray = |on: bool, given: &[(&str, bool)], switch: &str| {
+            let flags: Vec<&str> = given.iter().filter(|g| g.1).map(|g| g.0).collect();
+            match (on, flags.is_empty()) {
+                (false, false) => Err(anyhow::anyhow!("{}: add {switch}", flags.join(" / "))),
+                _ => Ok(()),
+            }
+        };
+        let p = |f: &str| self.patch.has(f);
+        stray(
+            self.patches,
+            &[
+                ("--connectivity", p("connectivity")),
+                ("--bins-per-decade", p("bins_per_decade")),
+                ("--patches-plot", p("plot")),
+            ],
+            "--patches",
+        )?;
+        let s = |f: &str| self.stress.has(f);
+        stray(
+            self.subsurface,
+            &[
+                ("--depth", s("depth")),
+                ("--tensile-yield-stress", s("tensile_yield_stress")),
+                ("--stress-field", s("stress_field")),
+                ("--stress-plot", s("plot")),
+            ],
+            "--subsurface",
+        )?;
+        let patches = match self.patches {
+            true => Some(self.patch.spec()?.0),
+            false => None,
+        };
+        let subsurface = match self.subsurface {
+            true => Some(self.stress.spec()?.0),
+            false => None,
+        };
+        Ok((patches, subsurface))
+    }
 }
 
 #[derive(clap::Args, Debug)]
@@ -189,7 +251,7 @@ impl SpecFlags for BemOutput {
 /// `bem rough`'s solve, from the scene's `bem` spec its flags give: the
 /// spec's defaults resolved once.
 pub struct RoughSettings {
-    /// The spec as given.
+    /// The spec as given, with its patches and subsurface.
     pub spec: BemOutput,
     /// The boundary (default periodic).
     pub boundary: Boundary,
@@ -206,7 +268,8 @@ impl RoughArgs {
     /// The settings of the solves, checked before any computation; a grid or
     /// seed beside `--surface` is refused (the file sets the grid).
     pub fn settings(&self) -> anyhow::Result<RoughSettings> {
-        let spec = self.spec.spec()?;
+        let mut spec = self.spec.spec()?;
+        (spec.patches, spec.subsurface) = self.detail.specs()?;
         if self.surface.is_some() && (spec.grid.is_some() || spec.seed.is_some()) {
             anyhow::bail!("--grid / --seed: not with --surface (the file sets the grid)");
         }
@@ -334,15 +397,7 @@ pub struct ConductanceArgs {
 #[serde(transparent)]
 pub struct Conductances(pub ConductanceOutput);
 
-impl schemars::JsonSchema for Conductances {
-    fn schema_name() -> std::borrow::Cow<'static, str> {
-        ConductanceOutput::schema_name()
-    }
-
-    fn json_schema(generator: &mut schemars::SchemaGenerator) -> schemars::Schema {
-        ConductanceOutput::json_schema(generator)
-    }
-}
+schema_of!(Conductances, ConductanceOutput);
 
 impl SpecFlags for Conductances {
     const OWN: &'static [&'static str] = &["gap_table", "tolerance", "bem", "plot"];
@@ -387,15 +442,7 @@ pub struct SealArgs {
 #[serde(transparent)]
 pub struct Seal(pub LeakageOutput);
 
-impl schemars::JsonSchema for Seal {
-    fn schema_name() -> std::borrow::Cow<'static, str> {
-        LeakageOutput::schema_name()
-    }
-
-    fn json_schema(generator: &mut schemars::SchemaGenerator) -> schemars::Schema {
-        LeakageOutput::json_schema(generator)
-    }
-}
+schema_of!(Seal, LeakageOutput);
 
 impl SpecFlags for Seal {
     const OWN: &'static [&'static str] = &["percolation_threshold", "tolerance", "bem", "plot"];

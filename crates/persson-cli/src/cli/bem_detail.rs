@@ -2,40 +2,27 @@
 //! area, computed as the solves arrive, and the report that carries them
 //! beside the load curve.
 
-use persson::bem::patches::{Connectivity, PatchOptions};
 use persson::bem::rough::RoughReport;
 use persson::bem::Boundary;
-use persson_studies::bem_detail::{
-    Details, PatchReport, SubsurfaceOptions, SubsurfaceStudy, DEFAULT_POISSON,
-};
+use persson_studies::bem::solve::{patch_options, subsurface_options};
+use persson_studies::bem_detail::{Details, PatchReport, SubsurfaceStudy, DEFAULT_POISSON};
+use persson_studies::scene::BemOutput;
 use persson_studies::table::{Table, Tabulate};
 use serde::Serialize;
 
-use super::bem_args::DetailArgs;
 
-/// The patch and stress studies `args` asks for, on an `n × n` grid of side
-/// `size`; checked here, before any solve ([`Details::new`]).
+/// The patch and stress studies `b` asks for, on an `n × n` grid of side
+/// `size`, the Poisson ratio the material's (default 0.3); checked here,
+/// before any solve ([`Details::new`]).
 pub fn details(
-    args: &DetailArgs,
+    b: &BemOutput,
     (n, size, boundary): (usize, f64, Boundary),
     poisson: Option<f64>,
     pressures: &[f64],
 ) -> anyhow::Result<Details> {
-    let patches = args.patches.then_some(PatchOptions {
-        connectivity: if args.connectivity == "eight" {
-            Connectivity::Eight
-        } else {
-            Connectivity::Four
-        },
-        boundary,
-        bins_per_decade: args.bins_per_decade,
-    });
-    let subsurface = args.subsurface.then(|| SubsurfaceOptions {
-        depth: args.depth.clone(),
-        poisson: poisson.unwrap_or(DEFAULT_POISSON),
-        tensile_yield_stress: args.tensile_yield_stress,
-        keep_maps: args.stress_plot.is_some() || args.stress_field.is_some(),
-    });
+    let patches = b.patches.as_ref().map(|p| patch_options(p, boundary));
+    let poisson = poisson.unwrap_or(DEFAULT_POISSON);
+    let subsurface = b.subsurface.as_ref().map(|s| subsurface_options(s, poisson));
     // The library names the field; the command line's blame names its flag.
     Ok(Details::new(
         (n, size, boundary),

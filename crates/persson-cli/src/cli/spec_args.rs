@@ -45,6 +45,10 @@ pub trait SpecFlags: JsonSchema + DeserializeOwned {
     const RENAMED: &'static [(&'static str, &'static str)] = &[];
     /// Further names a flag answers to: (field, alias).
     const ALIASES: &'static [(&'static str, &'static str)] = &[];
+    /// Fields whose argument id is not their name: (field, id). For specs
+    /// flattened side by side whose fields share a name (`plot`); the id is
+    /// what [`super::blame`] matches an error's field by.
+    const IDS: &'static [(&'static str, &'static str)] = &[];
     /// Fields that name a file the study writes, other than its figures
     /// (`plot`, `plot_*`): (field, value name with its extensions).
     const OUTPUTS: &'static [(&'static str, &'static str)] = &[];
@@ -109,9 +113,11 @@ enum Kind {
     Text,
 }
 
-/// One field of the spec: its name, kind, description and default.
+/// One field of the spec: its name, argument id, kind, description and
+/// default.
 struct Field {
     name: String,
+    id: String,
     kind: Kind,
     help: String,
     default: Option<String>,
@@ -133,6 +139,10 @@ fn fields<T: SpecFlags>() -> Vec<Field> {
         .iter()
         .filter(|(name, _)| !T::OWN.contains(&name.as_str()))
         .map(|(name, p)| Field {
+            id: T::IDS
+                .iter()
+                .find(|(f, _)| f == name)
+                .map_or_else(|| name.clone(), |(_, id)| id.to_string()),
             kind: kind::<T>(name, p, &root),
             help: one_line(p.get("description").and_then(Value::as_str).unwrap_or("")),
             default: p.get("default").and_then(|d| match d {
@@ -244,7 +254,7 @@ fn kind<T: SpecFlags>(name: &str, p: &Value, root: &Value) -> Kind {
 /// The flag of one field (module docs' table).
 fn arg<T: SpecFlags>(f: &Field) -> Arg {
     let long = flag_of::<T>(&f.name)[2..].to_string();
-    let mut a = Arg::new(f.name.clone())
+    let mut a = Arg::new(f.id.clone())
         .long(long.clone())
         .help(f.help.clone());
     for (_, alias) in T::ALIASES.iter().filter(|(field, _)| *field == f.name) {
@@ -300,7 +310,7 @@ pub enum Given {
 impl Given {
     /// The value of the field `f` in `m`, if any.
     fn read(f: &Field, m: &ArgMatches) -> Result<Option<Given>, clap::Error> {
-        let id = f.name.as_str();
+        let id = f.id.as_str();
         let raw = |msg: String| clap::Error::raw(clap::error::ErrorKind::InvalidValue, msg + "\n");
         let typed = |e: clap::parser::MatchesError| raw(format!("--{id}: {e}"));
         Ok(match &f.kind {

@@ -86,5 +86,5 @@ pub mod figures;
 #[cfg_attr(not(feature = "bem"), path = "unavailable.rs")]
 mod rough;
 #[cfg(feature = "bem")]
-pub(crate) mod solve;
+pub mod solve;
 use rough::{entries, run, warnings, write, Report};

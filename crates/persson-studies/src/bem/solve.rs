@@ -6,7 +6,7 @@ use persson::bem::rough::{self, RoughOptions, RoughReport, SurfaceOrigin};
 use persson::bem::{check_memory, surface, Options};
 use persson::error::{check, Error, Result};
 
-use super::spec::BemOutput;
+use super::spec::{BemOutput, PatchesOutput, SubsurfaceOutput};
 use crate::bem_detail::{Details, SubsurfaceOptions, DEFAULT_POISSON};
 use crate::input::SpectrumSpec;
 use crate::naming::prefix;
@@ -102,6 +102,28 @@ pub fn bem_rough(ctx: &crate::study::Context<'_>, b: &BemOutput) -> Result<(Roug
     Ok((report, details))
 }
 
+/// The patch study's options of `outputs.bem.patches` (`bem rough --patches`)
+/// on a grid with `boundary`: four neighbours and 5 bins per decade by default.
+pub fn patch_options(p: &PatchesOutput, boundary: persson::bem::Boundary) -> PatchOptions {
+    PatchOptions {
+        connectivity: p.connectivity.unwrap_or_default(),
+        boundary,
+        bins_per_decade: p.bins_per_decade.unwrap_or(5),
+    }
+}
+
+/// The stress study's options of `outputs.bem.subsurface` (`bem rough
+/// --subsurface`) for Poisson ratio `poisson`; the planes' maps are kept for
+/// the `.npy` files and the maps drawn beside the plot.
+pub fn subsurface_options(s: &SubsurfaceOutput, poisson: f64) -> SubsurfaceOptions {
+    SubsurfaceOptions {
+        depth: s.depth.clone(),
+        poisson,
+        tensile_yield_stress: s.tensile_yield_stress,
+        keep_maps: s.stress_field.is_some() || s.plot.is_some(),
+    }
+}
+
 /// The patch and stress studies of `outputs.bem.patches` and
 /// `outputs.bem.subsurface` (ν from the scene's material, else 0.3).
 ///
@@ -113,23 +135,12 @@ fn details(
     b: &BemOutput,
     grid: (usize, f64, persson::bem::Boundary),
 ) -> Result<Details> {
-    let patches = b.patches.as_ref().map(|p| PatchOptions {
-        connectivity: p.connectivity.unwrap_or_default(),
-        boundary: grid.2,
-        bins_per_decade: p.bins_per_decade.unwrap_or(5),
-    });
-    let subsurface = b.subsurface.as_ref().map(|s| SubsurfaceOptions {
-        depth: s.depth.clone(),
-        poisson: ctx
-            .inputs
-            .material
-            .and_then(|m| m.poisson)
-            .unwrap_or(DEFAULT_POISSON),
-        tensile_yield_stress: s.tensile_yield_stress,
-        // Written into the scene's output directory by `write_data`.
-        // Kept for the .npy files and for the maps drawn beside the plot.
-        keep_maps: s.stress_field.is_some() || s.plot.is_some(),
-    });
+    let patches = b.patches.as_ref().map(|p| patch_options(p, grid.2));
+    let poisson = ctx.inputs.material.and_then(|m| m.poisson);
+    let subsurface = b
+        .subsurface
+        .as_ref()
+        .map(|s| subsurface_options(s, poisson.unwrap_or(DEFAULT_POISSON)));
     Details::new(grid, ctx.nominal_pressure(), patches, subsurface).map_err(|e| {
         let patches = matches!(
             &e,
