@@ -215,7 +215,7 @@ fn bem_rough<'py>(
         // scene's), every value before any solve.
         let control = PathControl::new(&gaps, &approaches, b).map_err(err)?;
         let kind = law_kind(adhesion)?;
-        let iteration = AdhesiveIteration::parse(adhesive_iteration).map_err(err)?;
+        let iteration: AdhesiveIteration = name("adhesive_iteration", adhesive_iteration)?;
         let opts = persson::bem::adhesive::AdhesiveOptions {
             tolerance: check::tolerance("tolerance", tolerance).map_err(err)?,
             max_iterations,

@@ -288,7 +288,7 @@ fn rough_surface(
 /// `bem rough --work-of-adhesion`: the adhesive BEM along the --mean-gap path.
 fn adhesive_rough(a: &RoughArgs, work_of_adhesion: f64, files: &mut Files) -> anyhow::Result<()> {
     use persson_studies::bem_detail::{
-        adhesive_controlled_path, adhesive_warnings, AdhesiveIteration, PathControl,
+        adhesive_controlled_path, adhesive_warnings, PathControl,
     };
     let ad = &a.adhesion;
     let range = ad
@@ -316,7 +316,7 @@ fn adhesive_rough(a: &RoughArgs, work_of_adhesion: f64, files: &mut Files) -> an
         (kind, work_of_adhesion, range),
         control,
         &options,
-        AdhesiveIteration::parse(&ad.adhesive_iteration)?,
+        ad.adhesive_iteration,
     )?;
     let mut warnings = a.spectrum.file_warnings();
     warnings.extend(adhesive_warnings(&report));

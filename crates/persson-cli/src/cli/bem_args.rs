@@ -345,12 +345,9 @@ pub struct AdhesionBemArgs {
     /// --mean-gap, and the control of `--boundary free`.
     #[arg(long, value_delimiter = ',', requires = "work_of_adhesion", conflicts_with = "mean_gap", allow_hyphen_values = true, value_parser = super::number::number)]
     pub approach: Vec<f64>,
-    /// Iteration of the adhesive BEM: `auto` (preconditioned for the exponential
-    /// law, plain for Maugis–Dugdale), `plain`, or `preconditioned` (10–20× fewer
-    /// iterations; for Maugis–Dugdale the plain one's answer only where the grid
-    /// resolves the cohesive zone, see docs/adhesion.md).
-    #[arg(long, default_value = "auto", requires = "work_of_adhesion", value_parser = ["auto", "plain", "preconditioned"])]
-    pub adhesive_iteration: String,
+    /// Iteration of the adhesive BEM (see docs/adhesion.md).
+    #[arg(long, value_enum, default_value = "auto", requires = "work_of_adhesion")]
+    pub adhesive_iteration: persson_studies::bem_detail::AdhesiveIteration,
 }
 
 // What only the BEM's commands ask of the common flags.

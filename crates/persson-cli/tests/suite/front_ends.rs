@@ -226,3 +226,46 @@ fn the_rough_bem_draws_the_same_figures_from_a_scene_and_flags() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// A scene's `bem_adhesion` takes the iteration `bem rough
+/// --adhesive-iteration` takes: the same path, point for point, from both
+/// front-ends (the exponential law, whose default is the preconditioned
+/// iteration, asked for the plain one).
+#[test]
+#[cfg(feature = "bem")]
+fn the_adhesive_iteration_is_a_scene_field_too() {
+    let dir = std::env::temp_dir().join(format!("persson-adhesive-it-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("scene.json");
+    let s = scene(serde_json::json!({"outputs": {"bem_adhesion": {
+        "grid": 32, "work_of_adhesion": 1e-4, "adhesion_range": 1e-5,
+        "adhesion": "exponential", "mean_gap": [3e-5, 2e-5],
+        "adhesive_iteration": "plain"}}}));
+    std::fs::write(&path, s.to_string()).unwrap();
+    let scene = common::json(&["run", &path.to_string_lossy(), "--json"]);
+    let flags = format!(
+        "bem rough {SA} --contact-modulus 1e9 --grid 32 --work-of-adhesion 1e-4 \
+         --adhesion-range 1e-5 --adhesion exponential --mean-gap 3e-5,2e-5 \
+         --adhesive-iteration plain --json"
+    );
+    let args: Vec<&str> = flags.split_whitespace().collect();
+    let cli = common::json(&args);
+    let points = |v: &serde_json::Value| {
+        v["points"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|p| {
+                let f = |k: &str| p[k].as_f64().unwrap_or_else(|| panic!("{k}: {p}"));
+                (
+                    f("nominal_pressure"),
+                    f("contact_fraction"),
+                    f("iterations"),
+                )
+            })
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(points(&scene["bem_adhesion"]), points(&cli));
+    assert_eq!(points(&cli).len(), 2);
+    std::fs::remove_dir_all(&dir).ok();
+}

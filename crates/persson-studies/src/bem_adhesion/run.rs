@@ -48,7 +48,7 @@ pub fn bem_adhesion(
         ),
         control,
         &options,
-        crate::bem_detail::AdhesiveIteration::Auto,
+        a.adhesive_iteration.unwrap_or_default(),
     )
     .map_err(named)
 }

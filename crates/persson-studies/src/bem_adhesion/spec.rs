@@ -4,6 +4,7 @@ use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
 use crate::input::ByName;
+use crate::naming::names::AdhesiveIteration;
 use persson::names::{Boundary, LawKind};
 
 /// The adhesive FFT-BEM (Rey, Anciaux & Molinari, Comput. Mech. 60, 69
@@ -45,4 +46,8 @@ pub struct BemAdhesionOutput {
     /// the control of the free boundary).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub approach: Vec<f64>,
+    /// Iteration of the adhesive BEM (default `auto`: preconditioned for the
+    /// exponential law, plain for Maugis–Dugdale).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub adhesive_iteration: Option<AdhesiveIteration>,
 }

@@ -24,40 +24,9 @@ pub use persson::bem::adhesive::{LawKind, PathControl};
 use persson::bem::{Boundary, Method, Operator};
 use persson::error::{check, Error, Result};
 
-/// The iteration of an adhesive BEM path, by name.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum AdhesiveIteration {
-    /// The solver's choice by the law ([`AdhesiveSolver::method_for`]):
-    /// preconditioned for the exponential law, plain for Maugis–Dugdale.
-    #[default]
-    Auto,
-    /// Rey, Anciaux & Molinari's conjugate gradient.
-    Plain,
-    /// The same, preconditioned by the compliance on the free set: 10–20×
-    /// fewer iterations; for Maugis–Dugdale the same answer as the plain one
-    /// within 0.2 % only where the grid resolves the cohesive zone (the
-    /// `cohesive_zone_unresolved` warning), and along a loading–unloading
-    /// path it may follow another branch (docs/adhesion.md).
-    Preconditioned,
-}
+pub use crate::naming::names::AdhesiveIteration;
 
 impl AdhesiveIteration {
-    /// The iteration named `name` (`auto`, `plain`, `preconditioned`).
-    ///
-    /// # Errors
-    /// Another name (`adhesive_iteration`).
-    pub fn parse(name: &str) -> Result<Self> {
-        match name {
-            "auto" => Ok(AdhesiveIteration::Auto),
-            "plain" => Ok(AdhesiveIteration::Plain),
-            "preconditioned" => Ok(AdhesiveIteration::Preconditioned),
-            other => Err(Error::Inconsistent {
-                name: "adhesive_iteration".into(),
-                requirement: format!("one of auto, plain, preconditioned (got {other:?})"),
-            }),
-        }
-    }
-
     /// The solver's method (`None`: by the law).
     fn method(self) -> Option<Method> {
         match self {

@@ -217,3 +217,22 @@ names! {
         AmplitudeAdjusted = "amplitude-adjusted",
     }
 }
+
+names! {
+    /// The iteration of an adhesive BEM path (`bem rough --adhesive-iteration`,
+    /// `outputs.bem_adhesion.adhesive_iteration`).
+    #[derive(Default)]
+    AdhesiveIteration {
+        /// The solver's choice by the law: preconditioned for the exponential
+        /// law, plain for Maugis–Dugdale.
+        #[default]
+        Auto = "auto",
+        /// Rey, Anciaux & Molinari's conjugate gradient.
+        Plain = "plain",
+        /// The same, preconditioned by the compliance on the free set: 10–20×
+        /// fewer iterations; for Maugis–Dugdale the plain one's answer within
+        /// 0.2 % only where the grid resolves the cohesive zone, and along a
+        /// loading–unloading path it may follow another branch.
+        Preconditioned = "preconditioned",
+    }
+}
