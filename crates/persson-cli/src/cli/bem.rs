@@ -18,7 +18,7 @@ use super::output::print_narrowed;
 use super::progress::Progress;
 use persson_studies::bem_detail::Details;
 use persson_studies::output::Files;
-use persson_studies::scene::BemOutput;
+use persson_studies::scene::{BemAdhesionOutput, BemOutput};
 
 /// Run `persson bem`.
 pub fn run(a: Args, files: &mut Files) -> anyhow::Result<()> {
@@ -91,8 +91,8 @@ impl Observer for Solves<'_> {
 }
 
 fn rough_contact(a: &RoughArgs, files: &mut Files) -> anyhow::Result<()> {
-    if let Some(dg) = a.adhesion.work_of_adhesion {
-        return adhesive_rough(a, dg, files);
+    if let Some(path) = a.adhesion.path()? {
+        return adhesive_rough(a, &path, files);
     }
     if a.spectrum.example {
         // Say what the example is (stdout stays the report alone).
@@ -286,25 +286,19 @@ fn rough_surface(
 }
 
 /// `bem rough --work-of-adhesion`: the adhesive BEM along the --mean-gap path.
-fn adhesive_rough(a: &RoughArgs, work_of_adhesion: f64, files: &mut Files) -> anyhow::Result<()> {
-    use persson_studies::bem_detail::{
-        adhesive_controlled_path, adhesive_warnings, PathControl,
-    };
-    let ad = &a.adhesion;
-    let range = ad
-        .adhesion_range
-        .context("--work-of-adhesion needs --adhesion-range")?;
+fn adhesive_rough(a: &RoughArgs, path: &BemAdhesionOutput, files: &mut Files) -> anyhow::Result<()> {
+    use persson_studies::bem_detail::{adhesive_controlled_path, adhesive_warnings, PathControl};
     let set = a.settings()?;
-    let control = PathControl::new(&ad.mean_gap, &ad.approach, set.boundary)?;
+    refuse_load_curve(a, &set)?;
+    let control = PathControl::new(&path.mean_gap, &path.approach, set.boundary)?;
     if a.spectrum.example {
         eprintln!("persson: {}", persson_studies::scene::EXAMPLE);
     }
     let e_star = a.material.build(a.spectrum.example)?.contact_modulus();
     let (surface, _) = rough_surface(a, &set)?;
-    if let Some(path) = &a.surface_out {
-        files.write(path, &npy::encode(surface.n, surface.n, &surface.heights)?)?;
+    if let Some(p) = &a.surface_out {
+        files.write(p, &npy::encode(surface.n, surface.n, &surface.heights)?)?;
     }
-    let kind = ad.adhesion;
     let options = persson::bem::adhesive::AdhesiveOptions {
         tolerance: set.options.tolerance,
         max_iterations: set.options.max_iterations,
@@ -313,14 +307,45 @@ fn adhesive_rough(a: &RoughArgs, work_of_adhesion: f64, files: &mut Files) -> an
         &surface.heights,
         (surface.n, surface.size, e_star),
         set.boundary,
-        (kind, work_of_adhesion, range),
+        (
+            path.adhesion.unwrap_or_default(),
+            path.work_of_adhesion,
+            path.adhesion_range,
+        ),
         control,
         &options,
-        ad.adhesive_iteration,
+        path.adhesive_iteration.unwrap_or_default(),
     )?;
     let mut warnings = a.spectrum.file_warnings();
     warnings.extend(adhesive_warnings(&report));
     print_narrowed(&report, &warnings, &a.format, a.wide)
+}
+
+/// The flags of the load curve, refused beside `--work-of-adhesion` (the
+/// adhesive path is under mean-gap or approach control, elastic, and reports
+/// its own points).
+fn refuse_load_curve(a: &RoughArgs, set: &RoughSettings) -> anyhow::Result<()> {
+    let b = &set.spec;
+    let given = [
+        ("--pressure", !a.pressure.is_empty()),
+        ("--yield-stress", b.yield_stress.is_some()),
+        ("--plot", b.pressure_plot.is_some()),
+        ("--area-plot", b.plot.is_some()),
+        ("--histogram", b.histogram.is_some()),
+        ("--pressure-field", a.pressure_field.is_some()),
+        ("--patches", b.patches.is_some()),
+        ("--subsurface", b.subsurface.is_some()),
+        ("--leakage", a.transport.leakage),
+        ("--conductivity / --resistivity / --gas-conductivity", a.transport.conductance.given()),
+        ("--gap-field", a.transport.gap_field.is_some()),
+    ];
+    match given.iter().find(|g| g.1) {
+        Some((flag, _)) => anyhow::bail!(
+            "{flag}: not with --work-of-adhesion (the adhesive path, under --mean-gap or \
+             --approach control, reports its own points)"
+        ),
+        None => Ok(()),
+    }
 }
 
 /// `dir/name.ext` → `dir/name_k.ext` when `k` is given.

@@ -11,7 +11,8 @@ use super::measured_args::MapReadArgs;
 use super::output::Format;
 use persson_studies::scene::transport::{self, TransportRequest};
 use persson_studies::scene::{
-    BemHertzOutput, BemOutput, ConductanceOutput, LeakageOutput, PatchesOutput, SubsurfaceOutput,
+    BemAdhesionOutput, BemHertzOutput, BemOutput, ConductanceOutput, LeakageOutput, PatchesOutput,
+    SubsurfaceOutput,
 };
 
 use super::spec_args::{SpecArgs, SpecFlags};
@@ -313,41 +314,49 @@ pub struct TransportArgs {
     pub gap_field: Option<OutFile>,
 }
 
-/// The adhesive BEM along a path of mean gaps (`bem rough --work-of-adhesion`).
+/// The adhesive BEM along a path of mean gaps or approaches (`bem rough
+/// --work-of-adhesion`): the flags of the scene's `bem_adhesion` spec, whose
+/// surface and solver fields are `bem`'s ([`RoughSettings`]).
 #[derive(clap::Args, Debug, Clone)]
 pub struct AdhesionBemArgs {
-    /// Work of adhesion Δγ, J/m² (unit of the modulus × L): solve the adhesive
-    /// contact at each --mean-gap (or --approach) instead of at the --pressure list.
-    #[arg(
-        long,
-        requires = "adhesion_range",
-        conflicts_with_all = [
-            "pressure", "yield_stress", "pressure_plot", "plot", "histogram", "pressure_field", "patches",
-            "subsurface", "leakage", "conductivity", "resistivity", "gas_conductivity", "gap_field",
-        ],
-        allow_hyphen_values = true,
-        value_parser = super::number::number
-    )]
-    pub work_of_adhesion: Option<f64>,
-    /// Range ρ of the cohesive law, m (unit of L): Maugis–Dugdale attracts
-    /// with Δγ/ρ below the gap ρ; the exponential law decays over ρ.
-    #[arg(long, requires = "work_of_adhesion", allow_hyphen_values = true, value_parser = super::number::number)]
-    pub adhesion_range: Option<f64>,
-    /// Cohesive law of the adhesive BEM.
-    #[arg(long, default_value = "maugis", value_parser = persson_studies::scene::by_name::<persson::names::LawKind>())]
-    pub adhesion: persson::names::LawKind,
-    /// Mean gaps ḡ of the adhesive path, m, solved in the order given (in and
-    /// out for a loading–unloading curve); comma-separated or repeated.
-    #[arg(long, value_delimiter = ',', requires = "work_of_adhesion", allow_hyphen_values = true, value_parser = super::number::number)]
-    pub mean_gap: Vec<f64>,
-    /// Approaches δ of the adhesive path, m: the rigid surface's displacement
-    /// from first touch (δ < 0 apart), in the order given; instead of
-    /// --mean-gap, and the control of `--boundary free`.
-    #[arg(long, value_delimiter = ',', requires = "work_of_adhesion", conflicts_with = "mean_gap", allow_hyphen_values = true, value_parser = super::number::number)]
-    pub approach: Vec<f64>,
-    /// Iteration of the adhesive BEM (see docs/adhesion.md).
-    #[arg(long, value_enum, default_value = "auto", requires = "work_of_adhesion")]
-    pub adhesive_iteration: persson_studies::bem_detail::AdhesiveIteration,
+    #[command(flatten)]
+    pub spec: SpecArgs<AdhesivePath>,
+}
+
+/// [`BemAdhesionOutput`] through its path's flags alone.
+#[derive(Debug, Clone, serde::Deserialize)]
+#[serde(transparent)]
+pub struct AdhesivePath(pub BemAdhesionOutput);
+
+schema_of!(AdhesivePath, BemAdhesionOutput);
+
+impl SpecFlags for AdhesivePath {
+    const OWN: &'static [&'static str] = &["grid", "seed", "boundary", "tolerance", "max_iterations"];
+}
+
+impl AdhesionBemArgs {
+    /// The adhesive path, if `--work-of-adhesion` asks for one; a flag of
+    /// the path without it is refused.
+    pub fn path(&self) -> anyhow::Result<Option<BemAdhesionOutput>> {
+        if self.spec.has("work_of_adhesion") {
+            return Ok(Some(self.spec.spec()?.0));
+        }
+        let stray: Vec<String> = [
+            "adhesion_range",
+            "adhesion",
+            "mean_gap",
+            "approach",
+            "adhesive_iteration",
+        ]
+        .iter()
+        .filter(|f| self.spec.has(f))
+        .map(|f| format!("--{}", f.replace('_', "-")))
+        .collect();
+        match stray.is_empty() {
+            true => Ok(None),
+            false => anyhow::bail!("{}: add --work-of-adhesion", stray.join(" / ")),
+        }
+    }
 }
 
 // What only the BEM's commands ask of the common flags.
