@@ -429,17 +429,26 @@ fn report_keys_are_snake_case() {
 #[cfg(feature = "bem")]
 #[test]
 fn sweep_schema_file_is_generated_from_the_type() {
-    let path =
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("../persson-studies/schema/sweep.schema.json");
-    let want = persson_studies::validation::sweep_schema();
+    generated(
+        "sweep.schema.json",
+        &persson_studies::validation::sweep_schema(),
+    );
+}
+
+/// `crates/persson-studies/schema/<name>` holds `want` (written there with
+/// PERSSON_WRITE_SCHEMA=1).
+fn generated(name: &str, want: &str) {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../persson-studies/schema")
+        .join(name);
     if std::env::var_os("PERSSON_WRITE_SCHEMA").is_some() {
-        std::fs::write(&path, &want).unwrap();
+        std::fs::write(&path, want).unwrap();
     }
     let got = std::fs::read_to_string(&path).unwrap_or_default();
     assert!(
         got == want,
-        "crates/persson-studies/schema/sweep.schema.json is stale: run \
-         PERSSON_WRITE_SCHEMA=1 cargo test -p persson-cli --test suite"
+        "crates/persson-studies/schema/{name} is stale: run \
+         PERSSON_WRITE_SCHEMA=1 cargo test -p persson-cli --features full --test suite"
     );
 }
 
@@ -448,18 +457,8 @@ fn sweep_schema_file_is_generated_from_the_type() {
 /// the one the types generate (regenerate with PERSSON_WRITE_SCHEMA=1).
 #[test]
 fn schema_file_is_generated_from_the_types() {
-    let path =
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("../persson-studies/schema/scene.schema.json");
     let want = persson_studies::scene::json_schema();
-    if std::env::var_os("PERSSON_WRITE_SCHEMA").is_some() {
-        std::fs::write(&path, &want).unwrap();
-    }
-    let got = std::fs::read_to_string(&path).unwrap_or_default();
-    assert!(
-        got == want,
-        "crates/persson-studies/schema/scene.schema.json is stale: run \
-         PERSSON_WRITE_SCHEMA=1 cargo test -p persson-cli --test scene"
-    );
+    generated("scene.schema.json", &want);
     // Every field of the scene file is documented in the guide's page on scenes.
     let section = std::fs::read_to_string(
         Path::new(env!("CARGO_MANIFEST_DIR"))
