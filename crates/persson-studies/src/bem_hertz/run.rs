@@ -47,19 +47,8 @@ pub fn write(h: &BemHertzOutput, r: &Report, dir: &Path, out: &mut Files) -> Res
 /// Fields that do not go together or are out of range; a grid too large for
 /// memory; a solve that fails.
 pub fn bem_hertz(h: &BemHertzOutput) -> Result<BemHertzReport> {
-    run(h).map_err(|e| match e {
-        // The solvers name a grid side `grid`; the spec's field is `grids`.
-        Error::InvalidParameter {
-            name,
-            value,
-            requirement,
-        } if name == "grid" => Error::InvalidParameter {
-            name: "grids".into(),
-            value,
-            requirement,
-        },
-        e => e,
-    })
+    // The solvers name a grid side `grid`; the spec's field is `grids`.
+    run(h).map_err(|e| crate::naming::rename(e, "grid", "grids"))
 }
 
 fn run(h: &BemHertzOutput) -> Result<BemHertzReport> {

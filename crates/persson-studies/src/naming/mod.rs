@@ -16,6 +16,23 @@ pub fn required(what: &str) -> Error {
     }
 }
 
+/// An invalid parameter named `from` renamed `to` (the field a library
+/// function's argument is in the spec); any other error unchanged.
+pub(crate) fn rename(e: Error, from: &str, to: &str) -> Error {
+    match e {
+        Error::InvalidParameter {
+            name,
+            value,
+            requirement,
+        } if name == from => Error::InvalidParameter {
+            name: to.into(),
+            value,
+            requirement,
+        },
+        e => e,
+    }
+}
+
 /// Prefix the parameter name of an error with its section.
 pub fn prefix(section: &str, e: Error) -> Error {
     match e {

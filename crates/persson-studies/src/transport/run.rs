@@ -44,7 +44,8 @@ fn pair(name: &str, v: &[f64]) -> Result<Option<(f64, f64)>> {
 pub fn conductivity(v: &[f64]) -> Result<Option<Conductivity>> {
     pair("conductivity", v)?
         .map(|(a, b)| {
-            Conductivity::new(a, b).map_err(|e| rename(e, "conductivity2", "conductivity"))
+            Conductivity::new(a, b)
+                .map_err(|e| crate::naming::rename(e, "conductivity2", "conductivity"))
         })
         .transpose()
 }
@@ -55,7 +56,10 @@ pub fn conductivity(v: &[f64]) -> Result<Option<Conductivity>> {
 /// More than two values; a value not finite and positive (named `resistivity`).
 pub fn resistivity(v: &[f64]) -> Result<Option<Resistivity>> {
     pair("resistivity", v)?
-        .map(|(a, b)| Resistivity::new(a, b).map_err(|e| rename(e, "resistivity2", "resistivity")))
+        .map(|(a, b)| {
+            Resistivity::new(a, b)
+                .map_err(|e| crate::naming::rename(e, "resistivity2", "resistivity"))
+        })
         .transpose()
 }
 
@@ -96,21 +100,6 @@ fn missing(name: &str, with: &str) -> Error {
     Error::Inconsistent {
         name: name.into(),
         requirement: format!("required with {with}"),
-    }
-}
-
-fn rename(e: Error, from: &str, to: &str) -> Error {
-    match e {
-        Error::InvalidParameter {
-            name,
-            value,
-            requirement,
-        } if name == from => Error::InvalidParameter {
-            name: to.into(),
-            value,
-            requirement,
-        },
-        e => e,
     }
 }
 
