@@ -12,7 +12,9 @@ use persson::names::Named;
 use persson_studies::bem_detail::{
     adhesive_controlled_path, adhesive_warnings, AdhesiveIteration, LawKind, PathControl,
 };
-use persson_studies::validation::{self, ComparisonConfig, SweepSpec, UserData, UserHistogram};
+use persson_studies::validation::{
+    self, CompareSpec, ComparisonConfig, SweepSpec, UserData, UserHistogram,
+};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -451,12 +453,22 @@ fn compare<'py>(
             "periodic: for a height map (heights); a synthesised surface is periodic",
         ));
     }
-    let mut config = ComparisonConfig::new(contact_modulus);
-    config.nominal_pressure = pressure
-        .map(|p| float_list("pressure", p))
-        .transpose()?
-        .unwrap_or_default();
-    config.sweep = SweepSpec {
+    let spec = CompareSpec {
+        pressure: pressure
+            .map(|p| float_list("pressure", p))
+            .transpose()?
+            .unwrap_or_default(),
+        yield_stress,
+        histogram_pressure,
+        bins,
+        work_of_adhesion: work_of_adhesion
+            .map(|w| float_list("work_of_adhesion", w))
+            .transpose()?
+            .unwrap_or_default(),
+        adhesion_range,
+        adhesion: law_kind(adhesion)?,
+    };
+    let sweep = SweepSpec {
         grid: Some(grid),
         levels: Some(levels),
         seeds: Some(seeds),
@@ -466,17 +478,13 @@ fn compare<'py>(
         pixels_per_wavelength: Some(pixels_per_wavelength),
         tolerance: Some(tolerance),
         max_iterations: Some(max_iterations),
-    }
-    .settings(yield_stress)
-    .map_err(err)?;
+    };
+    let mut config = spec.config(contact_modulus, &sweep).map_err(err)?;
     let read = |p: &Option<PathBuf>| p.as_deref().map(UserData::from_csv).transpose();
     config.data = read(&data).map_err(err)?;
     config.data_histogram = (data_histogram.as_deref().map(UserHistogram::from_csv))
         .transpose()
         .map_err(err)?;
-    config.histogram_pressure = histogram_pressure;
-    config.bins = bins;
-    config.adhesion = adhesion_config(work_of_adhesion, adhesion_range, adhesion)?;
     config.transport = crate::transport::compare_transport(
         crate::transport::CompareTransport {
             leakage,
@@ -532,25 +540,4 @@ fn compare_on(
         }
     }
     .map_err(err)
-}
-
-/// `compare`'s adhesion settings: Δγ (one or a list), the range and the law.
-fn adhesion_config(
-    work_of_adhesion: Option<&Bound<'_, PyAny>>,
-    adhesion_range: Option<f64>,
-    adhesion: &str,
-) -> PyResult<Option<persson_studies::validation::compare_adhesion::AdhesionCompareConfig>> {
-    use persson_studies::validation::compare_adhesion::AdhesionCompareConfig;
-    match work_of_adhesion {
-        Some(w) => {
-            let mut a = AdhesionCompareConfig::new(float_list("work_of_adhesion", w)?);
-            a.adhesion_range = adhesion_range;
-            a.adhesion = law_kind(adhesion)?;
-            Ok(Some(a))
-        }
-        None if adhesion_range.is_some() => {
-            Err(value_error("adhesion_range: needs work_of_adhesion"))
-        }
-        None => Ok(None),
-    }
 }

@@ -63,6 +63,7 @@ STUDIES = [
     ),
     ("theories", "TheoriesOutput", {}, {"plot": "a figure"}),
     ("compare", "SweepSpec", {}, {"fit_alpha": "alpha=None fits α"}),
+    ("compare", "CompareSpec", {}, {}),
     (
         "bem_rough",
         "BemOutput",
@@ -120,7 +121,10 @@ STUDIES = [
 
 
 # Specs that are not a section of a scene, each in its own generated file.
-OTHER_SPECS = {"SweepSpec": SCHEMA.parent / "sweep.schema.json"}
+OTHER_SPECS = {
+    "SweepSpec": SCHEMA.parent / "sweep.schema.json",
+    "CompareSpec": SCHEMA.parent / "compare.schema.json",
+}
 
 
 def spec(name):

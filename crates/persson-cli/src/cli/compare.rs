@@ -8,7 +8,7 @@ use persson::bem::Boundary;
 use persson_studies::output::Files;
 use persson_studies::scene::SpectrumSpec;
 use persson_studies::validation::{
-    self, ComparisonConfig, KappaStudyConfig, SweepProgress, UserData, UserHistogram,
+    self, KappaStudyConfig, SweepProgress, UserData, UserHistogram,
 };
 
 pub use super::compare_args::Args;
@@ -79,26 +79,19 @@ fn compare(a: &MainArgs, files: &mut Files) -> anyhow::Result<()> {
         }
         None => (a.spectrum.build()?, None),
     };
-    let mut config = ComparisonConfig::new(a.material.build(a.spectrum.example)?.contact_modulus());
-    config.nominal_pressure = a.pressure.clone();
-    config.sweep = a.bem.settings(a.yield_stress)?;
+    let e_star = a.material.build(a.spectrum.example)?.contact_modulus();
+    let mut config = a.compare.spec()?.config(e_star, &a.bem.spec.spec()?)?;
     config.data = a.data.as_deref().map(UserData::from_csv).transpose()?;
     config.data_histogram = a
         .data_histogram
         .as_deref()
         .map(UserHistogram::from_csv)
         .transpose()?;
-    config.histogram_pressure = a.histogram_pressure;
-    config.bins = a.bins;
     let breaks = match &map {
         Some(_) => Vec::new(),
         None => a.spectrum.spec()?.breaks(),
     };
     config.transport = a.transport.config(breaks)?;
-    config.adhesion = a.adhesion.config()?;
-    if config.adhesion.is_some() && a.yield_stress.is_some() {
-        anyhow::bail!("--work-of-adhesion: not with --yield-stress (the adhesive BEM is elastic)");
-    }
     let mut warnings = a.spectrum.file_warnings();
     let report = match &map {
         Some(m) => {

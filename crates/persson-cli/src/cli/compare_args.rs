@@ -1,7 +1,7 @@
 //! The flags of `persson compare` and `persson compare kappa`.
 
 use persson_studies::validation::{
-    SweepSettings, SweepSpec, DEFAULT_LEVELS, DEFAULT_PIXELS_PER_WAVELENGTH,
+    CompareSpec, SweepSettings, SweepSpec, DEFAULT_LEVELS, DEFAULT_PIXELS_PER_WAVELENGTH,
 };
 
 use super::args::{MaterialArgs, MeasuredArgs, SpectrumArgs};
@@ -39,6 +39,8 @@ pub struct BemArgs {
 
 impl SpecFlags for SweepSpec {}
 
+impl SpecFlags for CompareSpec {}
+
 impl BemArgs {
     /// The flag a measured map makes meaningless, if given.
     pub fn unused_with_surface(&self) -> anyhow::Result<Option<String>> {
@@ -68,16 +70,12 @@ pub struct MainArgs {
     pub measured: MeasuredArgs,
     #[command(flatten)]
     pub material: MaterialArgs,
-    /// Nominal (mean) pressure, same unit as the modulus; repeatable or comma-separated
-    /// (default: the --data pressures, else 8 pressures with A/A0 ≈ 0.01 … 0.3).
-    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = super::number::number)]
-    pub pressure: Vec<f64>,
     #[command(flatten)]
     pub bem: BemArgs,
-    /// Yield stress σY (hardness), same unit as --pressure: the saturated BEM (0 ≤ p ≤ σY)
-    /// against Persson's finite-σY P(σ), with A_el/A0 and A_pl/A0 (must exceed every σ0).
-    #[arg(long, value_name = "Y", allow_hyphen_values = true, value_parser = super::number::number)]
-    pub yield_stress: Option<f64>,
+    /// The pressures, the yield stress, the shown distribution and the
+    /// adhesive comparison: the spec [`CompareSpec`].
+    #[command(flatten)]
+    pub compare: SpecArgs<CompareSpec>,
     /// Your own results: CSV with columns nominal_pressure, contact_fraction (header and # comments allowed).
     #[arg(long, value_name = "FILE.csv", value_parser = in_file)]
     pub data: Option<InFile>,
@@ -85,17 +83,8 @@ pub struct MainArgs {
     /// (normalised so that ∫ density dσ = A/A0).
     #[arg(long, value_name = "FILE.csv", value_parser = in_file)]
     pub data_histogram: Option<InFile>,
-    /// Nominal pressure of the shown pressure distribution (nearest computed one; default:
-    /// the one whose finest-grid A/A0 is nearest 0.1).
-    #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
-    pub histogram_pressure: Option<f64>,
-    /// Number of bins of the BEM pressure histograms.
-    #[arg(long, default_value_t = persson_studies::validation::DEFAULT_BINS, allow_hyphen_values = true, value_parser = super::number::count)]
-    pub bins: usize,
     #[command(flatten)]
     pub transport: super::compare_transport::TransportArgs,
-    #[command(flatten)]
-    pub adhesion: AdhesionCompareArgs,
     /// Text tables with every column (default: each fits 100 characters, the coarser
     /// grids' columns of a wider table left out and named).
     #[arg(long)]
@@ -197,53 +186,5 @@ impl EnsembleArgs {
             pixels_per_wavelength: self.pixels_per_wavelength,
             options: self.solver.options()?,
         })
-    }
-}
-
-/// `compare --work-of-adhesion` (flattened into `compare`'s flags).
-#[derive(clap::Args, Debug, Clone)]
-pub struct AdhesionCompareArgs {
-    /// Also compare adhesive contact at each work of adhesion Δγ (J/m², unit of the
-    /// modulus × L; comma-separated): Persson's adhesive theory against the adhesive BEM
-    /// along a mean-gap path in and out, A/A0 per point and the pull-off stress.
-    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = super::number::number)]
-    pub work_of_adhesion: Vec<f64>,
-    /// Range ρ of the BEM's cohesive law, m (default: h'_rms L/N, the height the surface
-    /// changes by over one spacing of the finest grid).
-    #[arg(long, allow_hyphen_values = true, value_parser = super::number::number)]
-    pub adhesion_range: Option<f64>,
-    /// Cohesive law of the adhesive BEM.
-    #[arg(long, default_value = "maugis", value_parser = persson_studies::scene::by_name::<persson::names::LawKind>())]
-    pub adhesion: persson::names::LawKind,
-}
-
-impl AdhesionCompareArgs {
-    /// The adhesion comparison the flags ask for (`None`: none), each value
-    /// checked and named by its flag.
-    pub fn config(
-        &self,
-    ) -> anyhow::Result<Option<persson_studies::validation::compare_adhesion::AdhesionCompareConfig>>
-    {
-        use persson_studies::validation::compare_adhesion::AdhesionCompareConfig;
-        if self.work_of_adhesion.is_empty() {
-            if self.adhesion_range.is_some() {
-                anyhow::bail!("--adhesion-range: needs --work-of-adhesion Δγ1,Δγ2,…");
-            }
-            return Ok(None);
-        }
-        if let Some(w) = self
-            .work_of_adhesion
-            .iter()
-            .find(|w| !(w.is_finite() && **w > 0.0))
-        {
-            anyhow::bail!("--work-of-adhesion {w}: must be finite and > 0 (J/m²)");
-        }
-        if let Some(r) = self.adhesion_range.filter(|r| !(r.is_finite() && *r > 0.0)) {
-            anyhow::bail!("--adhesion-range {r}: must be finite and > 0 (m)");
-        }
-        let mut c = AdhesionCompareConfig::new(self.work_of_adhesion.clone());
-        c.adhesion_range = self.adhesion_range;
-        c.adhesion = self.adhesion;
-        Ok(Some(c))
     }
 }

@@ -422,17 +422,16 @@ fn report_keys_are_snake_case() {
     }
 }
 
-/// The JSON Schema of `compare`'s sweep in
-/// crates/persson-studies/schema/sweep.schema.json is the one its type
-/// generates (regenerate with PERSSON_WRITE_SCHEMA=1): Python's tests check
-/// `compare`'s keywords against it.
+/// The JSON Schemas of `compare`'s specs in crates/persson-studies/schema/
+/// (sweep.schema.json, compare.schema.json) are the ones their types
+/// generate (regenerate with PERSSON_WRITE_SCHEMA=1): Python's tests check
+/// `compare`'s keywords against them.
 #[cfg(feature = "bem")]
 #[test]
-fn sweep_schema_file_is_generated_from_the_type() {
-    generated(
-        "sweep.schema.json",
-        &persson_studies::validation::sweep_schema(),
-    );
+fn compare_schema_files_are_generated_from_the_types() {
+    use persson_studies::validation::{spec_schema, CompareSpec, SweepSpec};
+    generated("sweep.schema.json", &spec_schema::<SweepSpec>());
+    generated("compare.schema.json", &spec_schema::<CompareSpec>());
 }
 
 /// `crates/persson-studies/schema/<name>` holds `want` (written there with

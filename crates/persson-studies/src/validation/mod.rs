@@ -65,7 +65,7 @@ cfg_feature! {
     mod report_tables;
     pub mod resolution;
     pub mod sweep;
-    mod sweep_spec;
+    mod spec;
 }
 
 pub use continuum::{extrapolate, mean_and_error, Extrapolation, SampleMean, DEFAULT_ALPHA};
@@ -89,5 +89,5 @@ cfg_feature! {
         SweepConfig, SweepSettings, DEFAULT_LEVELS, DEFAULT_PIXELS_PER_WAVELENGTH,
     };
     pub use sweep::{sweep, sweep_one, sweep_source, GridResult, Sweep, SweepProgress, SweepSource};
-    pub use sweep_spec::{sweep_schema, SweepSpec, DEFAULT_SWEEP_GRID};
+    pub use spec::{spec_schema, CompareSpec, SweepSpec, DEFAULT_SWEEP_GRID};
 }
