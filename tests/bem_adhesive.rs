@@ -513,3 +513,40 @@ fn free_boundary_sphere_pull_off_lies_between_jkr_and_dmt() {
     let last = seq.points.last().unwrap();
     assert_eq!(last.contact_fraction, 0.0, "{last:?}");
 }
+
+/// The adhesive solver reads its heights as the pressure loops do (one
+/// check, `Heights::new`): a wrong length is named `heights`, a height that
+/// is not finite by its node, on every control, and the statistics it
+/// reports (the approach of a mean gap) are the problem's.
+#[test]
+fn heights_are_checked_and_measured_as_the_pressure_loops_do() {
+    let n = 16;
+    let law = CohesiveLaw::maugis(1e-4, 1e-3).unwrap();
+    let opts = AdhesiveOptions::default();
+    for boundary in [Boundary::Periodic, Boundary::Free] {
+        let mut s = AdhesiveSolver::new(Operator::new(boundary, n, 1.0, 1.0).unwrap()).unwrap();
+        let mut h = waves(n);
+        h[n + 2] = f64::NAN;
+        let e = s.solve_approach(&h, &law, 0.0, &opts).unwrap_err();
+        assert!(e.to_string().contains("height[1, 2]"), "{e}");
+        let e = s.solve_approach(&h[1..], &law, 0.0, &opts).unwrap_err();
+        assert!(e.to_string().contains("heights"), "{e}");
+        let mut p = vec![0.0; n * n];
+        assert!(s.pressure(&h, &law, &mut p).is_err());
+    }
+    let h = waves(n);
+    let op = Operator::new(Boundary::Periodic, n, 1.0, 1.0).unwrap();
+    let problem = persson::bem::Problem::new(&h, &op, Control::Penetration(0.0)).unwrap();
+    let h_max = h.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let mut s = AdhesiveSolver::new(op).unwrap();
+    let mean_gap = 0.5 * (h_max - problem.h_mean());
+    let point = s.solve(&h, &law, mean_gap, &opts).unwrap();
+    assert!(point.converged);
+    // approach = max h − mean h − ḡ, the problem's mean to the last bits
+    let want = h_max - problem.h_mean() - mean_gap;
+    assert!(
+        (point.approach - want).abs() <= 1e-15 * want.abs(),
+        "{} {want}",
+        point.approach
+    );
+}

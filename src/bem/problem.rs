@@ -15,9 +15,11 @@
 //! The pressure-based loops ([`super::polonsky_keer`], [`super::preconditioned`],
 //! [`super::saturated`]) take a `&Problem` and a `&mut` [`super::Workspace`]:
 //! the problem is never written, the workspace holds every buffer. The
-//! gap-based adhesive loops ([`super::adhesive`]) do not yet: their unknown is
-//! the gap on a grid padded to 2N on the free boundary, prescribed by a mean
-//! gap or an approach, and they keep their buffers in the
+//! gap-based adhesive loops ([`super::adhesive`]) read the same validated
+//! heights and their statistics (`Heights`, built once per solve), but not
+//! the rest: their unknown is the gap on a grid padded to 2N on the free
+//! boundary, prescribed by a mean gap or a signed approach that no
+//! pressure loop accepts, and they keep their buffers in the
 //! [`super::adhesive::AdhesiveSolver`].
 
 use super::kernel::{Boundary, Operator};
@@ -99,6 +101,98 @@ impl Default for Method {
     }
 }
 
+/// The rigid heights of a solve, validated, with the statistics the loops
+/// read: built once per surface by [`Heights::new`], for the pressure
+/// loops inside a [`Problem`], for the adhesive ones on their own (their
+/// control is a mean gap or a signed approach, [`super::adhesive`]).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Heights<'a> {
+    values: &'a [f64],
+    n: usize,
+    h_max: f64,
+    h_min: f64,
+    h_mean: f64,
+    sigma_h: f64,
+    /// rms of the heights' forward differences over L/N (both directions,
+    /// wrapping around): the slope that sets the pressure scale E* h'_rms.
+    slope_rms: f64,
+}
+
+impl<'a> Heights<'a> {
+    /// The rigid surface `values` (`N × N` row-major, unit of L) on the
+    /// grid of `op`.
+    ///
+    /// # Errors
+    /// Heights of the wrong length (named `heights`) or not finite (named
+    /// by their node).
+    pub(crate) fn new(values: &'a [f64], op: &Operator) -> Result<Self> {
+        let n = op.n();
+        let n2 = n * n;
+        if values.len() != n2 {
+            return Err(Error::Inconsistent {
+                name: "heights".into(),
+                requirement: format!("N² = {n2} values, got {}", values.len()),
+            });
+        }
+        if let Some(k) = values.iter().position(|h| !h.is_finite()) {
+            return Err(Error::invalid(
+                format!("height[{}, {}]", k / n, k % n),
+                values[k],
+                "finite",
+            ));
+        }
+        let (h_min, h_max) = values
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &h| {
+                (lo.min(h), hi.max(h))
+            });
+        let h_mean = values.iter().sum::<f64>() / n2 as f64;
+        let sigma_h =
+            (values.iter().map(|h| (h - h_mean).powi(2)).sum::<f64>() / (n2 as f64 - 1.0)).sqrt();
+        let dx = op.size() / n as f64;
+        let mut s2 = 0.0;
+        for j in 0..n {
+            for i in 0..n {
+                let h = values[j * n + i];
+                let (gx, gy) = (
+                    (values[j * n + (i + 1) % n] - h) / dx,
+                    (values[((j + 1) % n) * n + i] - h) / dx,
+                );
+                s2 += gx * gx + gy * gy;
+            }
+        }
+        Ok(Heights {
+            values,
+            n,
+            h_max,
+            h_min,
+            h_mean,
+            sigma_h,
+            slope_rms: (s2 / n2 as f64).sqrt(),
+        })
+    }
+
+    /// The heights `h` (unit of L).
+    pub(crate) fn values(&self) -> &'a [f64] {
+        self.values
+    }
+
+    /// Highest height `max h`.
+    pub(crate) fn max(&self) -> f64 {
+        self.h_max
+    }
+
+    /// Lowest height `min h`.
+    pub(crate) fn min(&self) -> f64 {
+        self.h_min
+    }
+
+    /// Mean height `h̄`.
+    pub(crate) fn mean(&self) -> f64 {
+        self.h_mean
+    }
+}
+
 /// The set-up of one solve: heights, control and their derived values.
 ///
 /// Built once per surface and load by [`Problem::new`] (which validates
@@ -106,18 +200,11 @@ impl Default for Method {
 /// load of the same surface (load paths).
 #[derive(Debug, Clone, Copy)]
 pub struct Problem<'a> {
-    heights: &'a [f64],
-    n: usize,
+    heights: Heights<'a>,
     size: f64,
     e_star: f64,
     boundary: Boundary,
     control: Control,
-    h_max: f64,
-    h_mean: f64,
-    sigma_h: f64,
-    /// rms of the heights' forward differences over L/N (both directions,
-    /// wrapping around): the slope that sets the pressure scale E* h'_rms.
-    slope_rms: f64,
 }
 
 impl<'a> Problem<'a> {
@@ -129,48 +216,12 @@ impl<'a> Problem<'a> {
     /// and > 0; a penetration not finite and ≥ 0, or (periodic) at least
     /// `max h − mean h` (full contact needs an infinite load).
     pub fn new(heights: &'a [f64], op: &Operator, control: Control) -> Result<Self> {
-        let n = op.n();
-        let n2 = n * n;
-        if heights.len() != n2 {
-            return Err(Error::Inconsistent {
-                name: "heights".into(),
-                requirement: format!("N² = {n2} values, got {}", heights.len()),
-            });
-        }
-        if let Some(k) = heights.iter().position(|h| !h.is_finite()) {
-            return Err(Error::invalid(
-                format!("height[{}, {}]", k / n, k % n),
-                heights[k],
-                "finite",
-            ));
-        }
-        let h_max = heights.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-        let h_mean = heights.iter().sum::<f64>() / n2 as f64;
-        let sigma_h =
-            (heights.iter().map(|h| (h - h_mean).powi(2)).sum::<f64>() / (n2 as f64 - 1.0)).sqrt();
-        let dx = op.size() / n as f64;
-        let mut s2 = 0.0;
-        for j in 0..n {
-            for i in 0..n {
-                let h = heights[j * n + i];
-                let (gx, gy) = (
-                    (heights[j * n + (i + 1) % n] - h) / dx,
-                    (heights[((j + 1) % n) * n + i] - h) / dx,
-                );
-                s2 += gx * gx + gy * gy;
-            }
-        }
         let problem = Problem {
-            heights,
-            n,
+            heights: Heights::new(heights, op)?,
             size: op.size(),
             e_star: op.e_star(),
             boundary: op.boundary(),
             control,
-            h_max,
-            h_mean,
-            sigma_h,
-            slope_rms: (s2 / n2 as f64).sqrt(),
         };
         problem.with_control(control)
     }
@@ -187,7 +238,7 @@ impl<'a> Problem<'a> {
             }
             Control::Penetration(d) => {
                 check::non_negative("penetration", d)?;
-                let room = self.h_max - self.h_mean;
+                let room = self.heights.h_max - self.heights.h_mean;
                 if self.boundary == Boundary::Periodic && d >= room {
                     return Err(Error::invalid(
                         "penetration",
@@ -225,9 +276,10 @@ impl<'a> Problem<'a> {
         let Control::MeanPressure(pm) = self.control else {
             return Ok(());
         };
-        let scale = self.e_star * self.slope_rms;
+        let slope_rms = self.heights.slope_rms;
+        let scale = self.e_star * slope_rms;
         let bound = tolerance * scale / (8.0 * f64::EPSILON);
-        if self.slope_rms == 0.0 || pm <= bound {
+        if slope_rms == 0.0 || pm <= bound {
             return Ok(());
         }
         let approx = crate::error::approx;
@@ -236,7 +288,7 @@ impl<'a> Problem<'a> {
              E* h'_rms = {} (h'_rms = {} on the grid): far above full contact",
             crate::error::num(tolerance),
             approx(scale),
-            approx(self.slope_rms)
+            approx(slope_rms)
         );
         Err(match crate::error::ratio_culprit(self.e_star, pm) {
             "contact_modulus" => Error::invalid(
@@ -244,7 +296,7 @@ impl<'a> Problem<'a> {
                 self.e_star,
                 format!(
                     "at least {} (p̄ = {}) {why}",
-                    approx(pm * 8.0 * f64::EPSILON / (tolerance * self.slope_rms)),
+                    approx(pm * 8.0 * f64::EPSILON / (tolerance * slope_rms)),
                     crate::error::num(pm)
                 ),
             ),
@@ -262,17 +314,17 @@ impl<'a> Problem<'a> {
 
     /// The rigid heights `h` (unit of L).
     pub(crate) fn heights(&self) -> &'a [f64] {
-        self.heights
+        self.heights.values
     }
 
     /// Grid side N.
     pub fn n(&self) -> usize {
-        self.n
+        self.heights.n
     }
 
     /// Number of nodes N².
     pub(crate) fn nodes(&self) -> usize {
-        self.n * self.n
+        self.heights.n * self.heights.n
     }
 
     /// Boundary condition of the half-space.
@@ -313,33 +365,33 @@ impl<'a> Problem<'a> {
 
     /// Gap offset `o = max h − δ`: the gap is `g = 𝒢p − (h − o)`.
     pub(crate) fn offset(&self) -> f64 {
-        self.h_max - self.penetration()
+        self.heights.h_max - self.penetration()
     }
 
     /// Highest height `max h`.
     pub(crate) fn h_max(&self) -> f64 {
-        self.h_max
+        self.heights.h_max
     }
 
     /// Mean height `h̄`.
     pub fn h_mean(&self) -> f64 {
-        self.h_mean
+        self.heights.h_mean
     }
 
     /// Standard deviation of the heights σ_h (the scale of ε).
     pub(crate) fn sigma_h(&self) -> f64 {
-        self.sigma_h
+        self.heights.sigma_h
     }
 
     /// A flat surface (σ_h = 0): no iteration is needed.
     pub(crate) fn is_flat(&self) -> bool {
-        self.sigma_h == 0.0
+        self.heights.sigma_h == 0.0
     }
 
     /// A stiffness guess `E* π N / L` (pressure per unit overlap, the order
     /// of a node's self-stiffness) for starting points and degenerate steps.
     pub fn stiffness(&self) -> f64 {
-        self.e_star * std::f64::consts::PI * self.n as f64 / self.size
+        self.e_star * std::f64::consts::PI * self.heights.n as f64 / self.size
     }
 
     /// Contact modulus E*.

@@ -1,7 +1,8 @@
-//! The adhesive solver's checks of its input: the heights and the reach
-//! of the law on the grid.
+//! The adhesive solver's check of its input: the reach of the law on the
+//! grid (the heights are checked by `Heights::new`).
 
 use super::{AdhesiveSolver, CohesiveLaw, Target};
+use crate::bem::problem::Heights;
 use crate::error::{Error, Result};
 
 impl AdhesiveSolver {
@@ -27,7 +28,7 @@ impl AdhesiveSolver {
     /// (E*|q|_max/2) N U ≤ √f64::MAX/2; the smaller bound is stated.
     pub(super) fn check_reach(
         &self,
-        heights: &[f64],
+        heights: Heights<'_>,
         law: &CohesiveLaw,
         target: Target,
     ) -> Result<()> {
@@ -35,12 +36,7 @@ impl AdhesiveSolver {
         let n = self.layout.n as f64;
         let rho = law.parameters().1;
         let q_max = std::f64::consts::SQRT_2 * std::f64::consts::PI * n / op.size();
-        let (lo, hi) = heights
-            .iter()
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &h| {
-                (a.min(h), b.max(h))
-            });
-        let range = hi - lo;
+        let range = heights.max() - heights.min();
         let reach = f64::MAX.sqrt() / (op.e_star() * q_max * n);
         let approx = crate::error::approx;
         let why = format!(
@@ -72,20 +68,6 @@ impl AdhesiveSolver {
                     ));
                 }
             }
-        }
-        Ok(())
-    }
-
-    pub(super) fn check_heights(&self, heights: &[f64]) -> Result<()> {
-        let n2 = self.layout.n * self.layout.n;
-        if heights.len() != n2 {
-            return Err(Error::Inconsistent {
-                name: "heights".into(),
-                requirement: format!("N² = {n2} values, got {}", heights.len()),
-            });
-        }
-        if let Some(k) = heights.iter().position(|h| !h.is_finite()) {
-            return Err(Error::invalid("heights", heights[k], "finite"));
         }
         Ok(())
     }

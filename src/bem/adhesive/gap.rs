@@ -3,6 +3,7 @@
 //! residual, and the re-entry of contact nodes that pull.
 
 use super::{free_mean, AdhesiveSolver, CohesiveLaw, Target};
+use crate::bem::problem::Heights;
 use crate::error::Result;
 
 impl AdhesiveSolver {
@@ -15,10 +16,9 @@ impl AdhesiveSolver {
     /// scale are both round-off.
     pub(super) fn detach(
         &mut self,
-        heights: &[f64],
+        heights: Heights<'_>,
         law: &CohesiveLaw,
         target: Target,
-        h_mean: f64,
     ) -> bool {
         let layout = self.layout;
         let interacts = |g: f64| g <= 0.0 || law.attraction(g) > 0.0;
@@ -31,9 +31,10 @@ impl AdhesiveSolver {
             return false;
         }
         let level = match target {
-            Target::MeanGap(mean_gap) => mean_gap + h_mean,
+            Target::MeanGap(mean_gap) => mean_gap + heights.mean(),
             Target::Approach(_) => self.offset,
         };
+        let heights = heights.values();
         if heights.iter().any(|h| interacts(level - h)) {
             return false;
         }

@@ -159,7 +159,7 @@ pub use law::{CohesiveLaw, MAX_PEAK_ATTRACTION, RESOLVED_COHESIVE_LENGTH};
 pub use path::PathControl;
 
 use super::kernel::{Boundary, Operator, Padded};
-use super::problem::Method;
+use super::problem::{Heights, Method};
 use super::solution::Fallback;
 use crate::error::{check, Error, Result};
 
@@ -421,7 +421,7 @@ impl AdhesiveSolver {
     /// # Errors
     /// Wrong length of `heights` or `p`.
     pub fn pressure(&mut self, heights: &[f64], law: &CohesiveLaw, p: &mut [f64]) -> Result<()> {
-        self.check_heights(heights)?;
+        Heights::new(heights, &self.ops.op)?;
         let n2 = self.layout.n * self.layout.n;
         if p.len() != n2 {
             return Err(Error::Inconsistent {
@@ -471,6 +471,7 @@ impl AdhesiveSolver {
                     .into(),
             });
         }
+        let heights = Heights::new(heights, &self.ops.op)?;
         self.run(heights, law, Target::MeanGap(mean_gap), opts)
     }
 
@@ -494,17 +495,16 @@ impl AdhesiveSolver {
         if !approach.is_finite() {
             return Err(Error::invalid("approach", approach, "finite"));
         }
-        self.check_heights(heights)?;
+        let heights = Heights::new(heights, &self.ops.op)?;
         if self.layout.periodic() {
-            let (h_max, h_mean) = height_stats(heights);
-            let mean_gap = h_max - h_mean - approach;
+            let mean_gap = heights.max() - heights.mean() - approach;
             if mean_gap <= 0.0 {
                 return Err(Error::invalid(
                     "approach",
                     approach,
                     format!(
                         "below max h − mean h = {} (periodic: the mean gap must stay > 0)",
-                        h_max - h_mean
+                        heights.max() - heights.mean()
                     ),
                 ));
             }
@@ -580,7 +580,7 @@ impl AdhesiveSolver {
 
     fn run(
         &mut self,
-        heights: &[f64],
+        heights: Heights<'_>,
         law: &CohesiveLaw,
         target: Target,
         opts: &AdhesiveOptions,
@@ -589,11 +589,9 @@ impl AdhesiveSolver {
         if opts.max_iterations == 0 {
             return Err(crate::Error::invalid("max_iterations", 0.0, ">= 1"));
         }
-        self.check_heights(heights)?;
         self.check_reach(heights, law, target)?;
-        let (h_max, h_mean) = height_stats(heights);
-        self.start(heights, target, h_max);
-        if self.detach(heights, law, target, h_mean) {
+        self.start(heights, target);
+        if self.detach(heights, law, target) {
             self.warm = true;
             return Ok(self.point(law, target, heights, 0.0, 0, 0.0, true, None));
         }
@@ -618,8 +616,10 @@ impl AdhesiveSolver {
 
     /// The starting gap: the previous one (shifted to the new offset, free
     /// boundary) or the rigid gap; then (periodic) scaled to ḡ.
-    fn start(&mut self, heights: &[f64], target: Target, h_max: f64) {
+    fn start(&mut self, heights: Heights<'_>, target: Target) {
         let layout = self.layout;
+        let h_max = heights.max();
+        let heights = heights.values();
         match target {
             Target::MeanGap(mean_gap) => {
                 if !self.warm || self.mean_of_gap() <= 0.0 {
@@ -658,7 +658,7 @@ impl AdhesiveSolver {
         &mut self,
         law: &CohesiveLaw,
         target: Target,
-        heights: &[f64],
+        heights: Heights<'_>,
         mean_pressure: f64,
         iterations: usize,
         residual: f64,
@@ -666,9 +666,8 @@ impl AdhesiveSolver {
         fallback: Option<Fallback>,
     ) -> AdhesivePoint {
         let layout = self.layout;
-        let (h_max, h_mean) = height_stats(heights);
         let (mean_gap, approach, mean_pressure) = match target {
-            Target::MeanGap(g) => (g, h_max - h_mean - g, mean_pressure),
+            Target::MeanGap(g) => (g, heights.max() - heights.mean() - g, mean_pressure),
             Target::Approach(delta) => {
                 for k in 0..self.gap.len() {
                     if let Some(w) = layout.window(k) {
@@ -710,13 +709,6 @@ impl AdhesiveSolver {
             fallback,
         }
     }
-}
-
-/// max h and mean h.
-fn height_stats(heights: &[f64]) -> (f64, f64) {
-    let h_max = heights.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-    let h_mean = heights.iter().sum::<f64>() / heights.len() as f64;
-    (h_max, h_mean)
 }
 
 /// A loading–unloading sequence and its pull-off.

@@ -2,10 +2,9 @@
 //! "Preconditioned iteration") as a [`Step`] of the BEM's loop driver, and
 //! its fused measuring pass.
 
-use super::{
-    free_mean, height_stats, AdhesiveOptions, AdhesiveSolver, CohesiveLaw, Layout, Phase, Target,
-};
+use super::{free_mean, AdhesiveOptions, AdhesiveSolver, CohesiveLaw, Layout, Phase, Target};
 use crate::bem::driver::{drive, Check, Limits, Measured, Step};
+use crate::bem::problem::Heights;
 use crate::bem::solution::{Fallback, Iteration};
 use crate::error::Result;
 
@@ -38,7 +37,7 @@ impl AdhesiveSolver {
     /// the fields per iteration besides the transforms.
     pub(super) fn preconditioned(
         &mut self,
-        heights: &[f64],
+        heights: Heights<'_>,
         law: &CohesiveLaw,
         target: Target,
         opts: &AdhesiveOptions,
@@ -53,7 +52,7 @@ impl AdhesiveSolver {
 /// The preconditioned iteration's state, as the driver runs it.
 struct Pcg<'a> {
     solver: &'a mut AdhesiveSolver,
-    heights: &'a [f64],
+    heights: Heights<'a>,
     law: &'a CohesiveLaw,
     target: Target,
     tolerance: f64,
@@ -61,7 +60,6 @@ struct Pcg<'a> {
     jumps: bool,
     /// W″/W′ where the cohesive zone is resolved (exponential law), else 0.
     curvature_per_attraction: f64,
-    h_mean: f64,
     /// ⟨r, z⟩ of the last step (Polak–Ribière).
     rz_old: f64,
     restart: bool,
@@ -76,7 +74,7 @@ impl<'a> Pcg<'a> {
     /// 𝒦h, 𝒦(g + h) and the first sums, from the current gap.
     fn new(
         solver: &'a mut AdhesiveSolver,
-        heights: &'a [f64],
+        heights: Heights<'a>,
         law: &'a CohesiveLaw,
         target: Target,
         tolerance: f64,
@@ -97,11 +95,11 @@ impl<'a> Pcg<'a> {
             }
             _ => 0.0,
         };
-        let h_mean = height_stats(heights).1;
+        let h = heights.values();
         solver.search.iter_mut().for_each(|t| *t = 0.0);
-        solver.stiffness_of_gap(heights, false)?;
-        solver.stiffness_of_gap(heights, true)?;
-        let sums = solver.measure(heights, law, None)?;
+        solver.stiffness_of_gap(h, false)?;
+        solver.stiffness_of_gap(h, true)?;
+        let sums = solver.measure(h, law, None)?;
         Ok(Pcg {
             solver,
             heights,
@@ -110,7 +108,6 @@ impl<'a> Pcg<'a> {
             tolerance,
             jumps: matches!(law, CohesiveLaw::Maugis { .. }),
             curvature_per_attraction,
-            h_mean,
             rz_old: 0.0,
             restart: true,
             k: 0,
@@ -339,15 +336,12 @@ impl Step for Pcg<'_> {
                 )));
             }
             // converged on the updated 𝒦(g + h): confirm on a fresh one
-            self.solver.stiffness_of_gap(self.heights, true)?;
-            self.sums = self.solver.measure(self.heights, self.law, None)?;
+            self.solver.stiffness_of_gap(self.heights.values(), true)?;
+            self.sums = self.solver.measure(self.heights.values(), self.law, None)?;
             self.stale = 0;
             return Ok(Check::Again);
         }
-        if self
-            .solver
-            .detach(self.heights, self.law, self.target, self.h_mean)
-        {
+        if self.solver.detach(self.heights, self.law, self.target) {
             return Ok(Check::Stop(Phase::Done(0.0, self.k, 0.0)));
         }
         Ok(Check::Go)
@@ -386,7 +380,7 @@ impl Step for Pcg<'_> {
         }
         // 𝒦(s(g − τt) + h) = s(𝒦(g + h) − τ𝒦t − 𝒦h) + 𝒦h when no node
         // was clamped (a clamp, or every REFRESH steps: a transform)
-        let (heights, law) = (self.heights, self.law);
+        let (heights, law) = (self.heights.values(), self.law);
         if clamped || self.stale >= REFRESH {
             if scale != 1.0 {
                 self.solver.gap.iter_mut().for_each(|g| *g *= scale);

@@ -2,8 +2,9 @@
 //! gradient (module docs of [`super`], "Method"), as a [`Step`] of the BEM's
 //! loop driver.
 
-use super::{height_stats, AdhesiveOptions, AdhesiveSolver, CohesiveLaw, Target};
+use super::{AdhesiveOptions, AdhesiveSolver, CohesiveLaw, Target};
 use crate::bem::driver::{drive, Check, Limits, Measured, Step};
+use crate::bem::problem::Heights;
 use crate::bem::solution::Iteration;
 use crate::error::{Error, Result};
 
@@ -14,7 +15,7 @@ impl AdhesiveSolver {
     /// when the step degenerates, it returns the last iterate unconverged.
     pub(super) fn plain(
         &mut self,
-        heights: &[f64],
+        heights: Heights<'_>,
         law: &CohesiveLaw,
         target: Target,
         opts: &AdhesiveOptions,
@@ -22,7 +23,6 @@ impl AdhesiveSolver {
     ) -> Result<(f64, usize, f64, bool)> {
         self.search.iter_mut().for_each(|t| *t = 0.0);
         let mut run = Plain {
-            h_mean: height_stats(heights).1,
             solver: self,
             heights,
             law,
@@ -54,11 +54,10 @@ impl AdhesiveSolver {
 /// The plain iteration's state, as the driver runs it.
 struct Plain<'a> {
     solver: &'a mut AdhesiveSolver,
-    heights: &'a [f64],
+    heights: Heights<'a>,
     law: &'a CohesiveLaw,
     target: Target,
     tolerance: f64,
-    h_mean: f64,
     /// |r|² of the last step (Fletcher–Reeves).
     g_old: f64,
     /// 1 to keep the conjugacy, 0 to restart it.
@@ -125,7 +124,7 @@ impl Step for Plain<'_> {
     const WHAT: &'static str = "adhesive BEM";
 
     fn measure(&mut self) -> Result<Measured> {
-        let (mean, eps) = self.solver.gradient(self.heights, self.law)?;
+        let (mean, eps) = self.solver.gradient(self.heights.values(), self.law)?;
         self.mean = mean;
         Ok(Measured {
             iteration: self.iterations,
@@ -143,10 +142,7 @@ impl Step for Plain<'_> {
         if eps <= self.tolerance || self.solver.round_off {
             return Ok(Check::Stop((-self.mean, self.iterations, eps, true)));
         }
-        if self
-            .solver
-            .detach(self.heights, self.law, self.target, self.h_mean)
-        {
+        if self.solver.detach(self.heights, self.law, self.target) {
             return Ok(Check::Stop((0.0, self.iterations, 0.0, true)));
         }
         Ok(Check::Go)
@@ -155,7 +151,7 @@ impl Step for Plain<'_> {
     fn step(&mut self, _: &mut dyn FnMut(Iteration)) -> Result<bool> {
         self.iterations += 1;
         self.direction();
-        let (heights, law) = (self.heights, self.law);
+        let (heights, law) = (self.heights.values(), self.law);
         let sv = &mut *self.solver;
         let layout = sv.layout;
         sv.ops.stiffness(&sv.search, &mut sv.projected)?;
