@@ -6,8 +6,10 @@ cohesive length E*ρ²/Δγ is 2.3 grid spacings at 256² for 0.02, 9.4 for 0.00
 (docs/adhesion.md: below about 8 the discrete Maugis-Dugdale energy has
 stationary points far enough apart that two solvers need not agree).
 
-Run from the workspace root (builds and runs examples/adhesive_tamaas.rs):
-    /work/peers/bin/python examples/adhesive_tamaas.py [N ...] [--law exponential] [--plain] [--preconditioned] [--cohesive-stress S]
+Run from the workspace root (builds and runs examples/adhesive_tamaas.rs), with
+Tamaas in a venv outside the repository (python3 -m venv ../peers &&
+../peers/bin/pip install tamaas):
+    ../peers/bin/python examples/adhesive_tamaas.py [N ...] [--law exponential] [--plain] [--preconditioned] [--cohesive-stress S]
 Prints both answers, their relative differences and the wall time per solve of
 each (one solve each, cold start), with the load average (`uptime`). Ours uses
 the solver's iteration for the law (preconditioned for the exponential law,

@@ -10,8 +10,8 @@ p = Y (gap <= 0) / 0 < p < Y (gap = 0) / p = 0 (gap >= 0) with the load.
 c and a are ring edges (resolution RMAX/M); the approach is continuous.
 Check: ratio >= 1 gives the elastic Hertz approach 1 (0.999999 at M = 400).
 
-    /work/venv-tamaas/bin/python examples/hertz_plastic_rings.py 0.8 1600 3200
-    RMAX=1.13 /work/venv-tamaas/bin/python examples/hertz_plastic_rings.py 0.8 3200
+    python3 examples/hertz_plastic_rings.py 0.8 1600 3200   (needs numpy only)
+    RMAX=1.13 python3 examples/hertz_plastic_rings.py 0.8 3200
 """
 import sys, numpy as np
 def ellipke(k):

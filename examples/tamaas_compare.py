@@ -6,9 +6,9 @@ PolonskyKeerRey error and ours are the same measure: the p-weighted gap over
 the contact, relative to the standard deviation of the heights), one thread.
 
 Usage (Tamaas lives in a venv outside the repo):
-    python3 -m venv /work/venv-tamaas && /work/venv-tamaas/bin/pip install tamaas
+    python3 -m venv ../peers && ../peers/bin/pip install tamaas
     cargo build --release
-    OMP_NUM_THREADS=1 /work/venv-tamaas/bin/python examples/tamaas_compare.py \
+    OMP_NUM_THREADS=1 ../peers/bin/python examples/tamaas_compare.py \
         [--grids 512 1024] [--tolerance 1e-10] [--bin target/release/persson]
 
 For each grid it runs the Hertz periodic case (a = 0.1 L, R = L = E* = 1) and
