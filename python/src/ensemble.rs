@@ -6,11 +6,11 @@
 //! report from them, whatever ran the jobs.
 
 use persson_studies::validation::ensemble::{self, EnsembleConfig, EnsembleJob, EnsembleSolve};
-use persson_studies::validation::SweepSettings;
+use persson_studies::validation::EnsembleSpec;
 use pyo3::prelude::*;
 
 use crate::arrays::float_list;
-use crate::convert::{err, to_dict_warned, value_error, Seed};
+use crate::convert::{err, to_dict_warned, Seed};
 use crate::spectrum::Spectrum;
 
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -48,27 +48,22 @@ impl EnsemblePlan {
         tolerance: f64,
         max_iterations: usize,
     ) -> PyResult<Self> {
-        if seeds < 1 {
-            return Err(value_error("seeds: must be at least 1"));
-        }
         let Seed(first) = seed;
-        let seed_list = (0..seeds as u64)
-            .map(|k| first.checked_add(k))
-            .collect::<Option<Vec<_>>>()
-            .ok_or_else(|| value_error("seed + seeds − 1: must be at most 2^64 − 1"))?;
+        let spec = EnsembleSpec {
+            grid,
+            levels,
+            seeds,
+            seed: first,
+            pixels_per_wavelength,
+            tolerance,
+            max_iterations,
+        };
         let plan = EnsemblePlan {
             spectrum,
             config: EnsembleConfig {
                 contact_modulus,
                 nominal_pressure: float_list("pressure", pressure)?,
-                sweep: SweepSettings {
-                    grid,
-                    levels,
-                    seeds: seed_list,
-                    alpha: None,
-                    pixels_per_wavelength,
-                    options: crate::bem::options(tolerance, max_iterations, None)?,
-                },
+                sweep: spec.settings().map_err(err)?,
             },
             first_seed: first,
         };

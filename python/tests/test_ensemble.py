@@ -79,5 +79,8 @@ def test_bad_input_fails_before_any_scheduler_is_contacted():
         persson.ensemble(spectrum(), 1.0, [-1.0], client="tcp://127.0.0.1:9", **SETTINGS)
     with pytest.raises(ValueError, match="seeds"):
         persson.ensemble(spectrum(), 1.0, PRESSURES, grid=32, seeds=0)
+    # the last seed, seed + seeds − 1, must fit in 64 bits (as the CLI's --seed)
+    with pytest.raises(ValueError, match="seed: at most 18446744073709551614 with 2 seeds"):
+        persson.ensemble(spectrum(), 1.0, PRESSURES, grid=32, seeds=2, seed=2**64 - 1)
     with pytest.raises(ValueError, match="client"):
         persson.ensemble(spectrum(), 1.0, PRESSURES, client=42, **SETTINGS)

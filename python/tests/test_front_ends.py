@@ -64,6 +64,7 @@ STUDIES = [
     ("theories", "TheoriesOutput", {}, {"plot": "a figure"}),
     ("compare", "SweepSpec", {}, {"fit_alpha": "alpha=None fits α"}),
     ("compare", "CompareSpec", {}, {}),
+    ("ensemble", "EnsembleSpec", {}, {}),
     (
         "bem_rough",
         "BemOutput",
@@ -124,6 +125,7 @@ STUDIES = [
 OTHER_SPECS = {
     "SweepSpec": SCHEMA.parent / "sweep.schema.json",
     "CompareSpec": SCHEMA.parent / "compare.schema.json",
+    "EnsembleSpec": SCHEMA.parent / "ensemble.schema.json",
 }
 
 

@@ -11,7 +11,7 @@ use persson::error::check;
 use persson::io::npy;
 use persson_studies::table::Tabulate;
 
-pub use super::bem_args::{Args, SolverArgs};
+pub use super::bem_args::Args;
 use super::bem_args::{Cmd, HertzArgs, RoughArgs, RoughSettings};
 use super::bem_detail::{details, RoughWithDetails};
 use super::output::print_narrowed;

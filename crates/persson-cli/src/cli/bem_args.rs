@@ -33,30 +33,6 @@ pub enum Cmd {
     Rough(Box<RoughArgs>),
 }
 
-/// Solver knobs shared by both subcommands (and `persson compare`).
-#[derive(clap::Args, Debug, Clone)]
-pub struct SolverArgs {
-    /// Relative tolerance ε of the Polonsky–Keer solver (pressure-weighted gap over the rms height).
-    #[arg(long, default_value = "1e-10", allow_hyphen_values = true, value_parser = super::number::number)]
-    pub tolerance: f64,
-    /// Maximum number of iterations per solve.
-    #[arg(long, default_value = "10000", allow_hyphen_values = true, value_parser = super::number::count)]
-    pub max_iterations: usize,
-}
-
-impl SolverArgs {
-    /// The solver options, warm-started along a list of pressures.
-    pub fn options(&self) -> anyhow::Result<Options> {
-        check::tolerance("tolerance", self.tolerance)?;
-        Ok(Options {
-            tolerance: self.tolerance,
-            max_iterations: self.max_iterations,
-            warm_start: true,
-            yield_stress: None,
-        })
-    }
-}
-
 /// Arguments of `persson bem hertz`: the study `bem_hertz`'s spec, from
 /// which every flag is derived, and the output's.
 #[derive(clap::Args, Debug)]

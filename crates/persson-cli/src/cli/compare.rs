@@ -146,7 +146,7 @@ fn ensemble(a: &EnsembleArgs) -> anyhow::Result<()> {
     let config = validation::EnsembleConfig {
         contact_modulus: a.material.build(a.spectrum.example)?.contact_modulus(),
         nominal_pressure: a.pressure.clone(),
-        sweep: a.settings()?,
+        sweep: a.spec.spec()?.settings()?,
     };
     let report = validation::ensemble(spectrum.as_ref(), &config, a.threads)?;
     print_warned(&report, &report.warnings, &a.format)

@@ -1,11 +1,8 @@
 //! The flags of `persson compare` and `persson compare kappa`.
 
-use persson_studies::validation::{
-    CompareSpec, SweepSettings, SweepSpec, DEFAULT_LEVELS, DEFAULT_PIXELS_PER_WAVELENGTH,
-};
+use persson_studies::validation::{CompareSpec, EnsembleSpec, SweepSettings, SweepSpec};
 
 use super::args::{MaterialArgs, MeasuredArgs, SpectrumArgs};
-use super::bem::SolverArgs;
 use super::files::{in_file, out_file, InFile, OutFile};
 use super::output::Format;
 use super::spec_args::{SpecArgs, SpecFlags};
@@ -40,6 +37,8 @@ pub struct BemArgs {
 impl SpecFlags for SweepSpec {}
 
 impl SpecFlags for CompareSpec {}
+
+impl SpecFlags for EnsembleSpec {}
 
 impl BemArgs {
     /// The flag a measured map makes meaningless, if given.
@@ -149,42 +148,12 @@ pub struct EnsembleArgs {
     /// Nominal (mean) pressure, same unit as the modulus; repeatable or comma-separated.
     #[arg(long, value_delimiter = ',', required = true, allow_hyphen_values = true, value_parser = super::number::number)]
     pub pressure: Vec<f64>,
-    /// Finest grid side N; the ensemble runs on N/2^(levels−1) … N [default: 64].
-    #[arg(long, value_name = "N", default_value_t = 64, allow_hyphen_values = true, value_parser = super::number::count)]
-    pub grid: usize,
-    /// Number of grids, each half the next (≥ 2).
-    #[arg(long, default_value_t = DEFAULT_LEVELS, allow_hyphen_values = true, value_parser = super::number::count)]
-    pub levels: usize,
-    /// Number of surfaces (seeds first-seed … first-seed + K − 1) per grid.
-    #[arg(long, value_name = "K", default_value_t = 4, allow_hyphen_values = true, value_parser = super::number::count)]
-    pub seeds: usize,
-    /// First seed (Pcg64Mcg, value-stable).
-    #[arg(long, value_name = "SEED", default_value_t = 1, allow_hyphen_values = true, value_parser = super::number::seed)]
-    pub seed: u64,
-    /// Pixels of the coarsest grid per shortest wavelength 2π/q_s: q_s is clipped to
-    /// N_coarsest q_l / this (with a warning).
-    #[arg(long, default_value_t = DEFAULT_PIXELS_PER_WAVELENGTH, allow_hyphen_values = true, value_parser = super::number::number)]
-    pub pixels_per_wavelength: f64,
+    /// The grids, surfaces, band and solver: the spec [`EnsembleSpec`].
     #[command(flatten)]
-    pub solver: SolverArgs,
+    pub spec: SpecArgs<EnsembleSpec>,
     /// Worker threads, one job (seed, grid) at a time each (0: one per core).
     #[arg(long, default_value_t = 0, allow_hyphen_values = true, value_parser = super::number::count)]
     pub threads: usize,
     #[command(flatten)]
     pub format: Format,
-}
-
-impl EnsembleArgs {
-    /// The grids, seeds, band rule and solver of the ensemble.
-    pub fn settings(&self) -> anyhow::Result<SweepSettings> {
-        anyhow::ensure!(self.seeds >= 1, "--seeds must be at least 1");
-        Ok(SweepSettings {
-            grid: self.grid,
-            levels: self.levels,
-            seeds: (0..self.seeds as u64).map(|k| self.seed + k).collect(),
-            alpha: None,
-            pixels_per_wavelength: self.pixels_per_wavelength,
-            options: self.solver.options()?,
-        })
-    }
 }

@@ -423,15 +423,16 @@ fn report_keys_are_snake_case() {
 }
 
 /// The JSON Schemas of `compare`'s specs in crates/persson-studies/schema/
-/// (sweep.schema.json, compare.schema.json) are the ones their types
+/// (sweep, compare and ensemble.schema.json) are the ones their types
 /// generate (regenerate with PERSSON_WRITE_SCHEMA=1): Python's tests check
-/// `compare`'s keywords against them.
+/// `compare`'s and `ensemble`'s keywords against them.
 #[cfg(feature = "bem")]
 #[test]
 fn compare_schema_files_are_generated_from_the_types() {
-    use persson_studies::validation::{spec_schema, CompareSpec, SweepSpec};
+    use persson_studies::validation::{spec_schema, CompareSpec, EnsembleSpec, SweepSpec};
     generated("sweep.schema.json", &spec_schema::<SweepSpec>());
     generated("compare.schema.json", &spec_schema::<CompareSpec>());
+    generated("ensemble.schema.json", &spec_schema::<EnsembleSpec>());
 }
 
 /// `crates/persson-studies/schema/<name>` holds `want` (written there with

@@ -89,5 +89,5 @@ cfg_feature! {
         SweepConfig, SweepSettings, DEFAULT_LEVELS, DEFAULT_PIXELS_PER_WAVELENGTH,
     };
     pub use sweep::{sweep, sweep_one, sweep_source, GridResult, Sweep, SweepProgress, SweepSource};
-    pub use spec::{spec_schema, CompareSpec, SweepSpec, DEFAULT_SWEEP_GRID};
+    pub use spec::{spec_schema, CompareSpec, EnsembleSpec, SweepSpec, DEFAULT_SWEEP_GRID};
 }
