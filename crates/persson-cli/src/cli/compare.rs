@@ -12,7 +12,7 @@ use persson_studies::validation::{
 };
 
 pub use super::compare_args::Args;
-use super::compare_args::{EnsembleArgs, KappaArgs, MainArgs, Study};
+use super::compare_args::{EnsembleArgs, KappaArgs, MainArgs, Study, EXAMPLE_HURST};
 use super::output::{print_narrowed, print_warned};
 use super::progress::Progress;
 use persson_studies::Warning;
@@ -116,8 +116,15 @@ fn compare(a: &MainArgs, files: &mut Files) -> anyhow::Result<()> {
 }
 
 fn kappa_study(a: &KappaArgs, files: &mut Files) -> anyhow::Result<()> {
+    let hurst = match (a.example, a.hurst.is_empty()) {
+        (true, true) => {
+            eprintln!("persson: built-in example: H = 0.2, 0.5, 0.8");
+            EXAMPLE_HURST.to_vec()
+        }
+        _ => a.hurst.clone(),
+    };
     let config = KappaStudyConfig {
-        hurst: a.hurst.clone(),
+        hurst,
         q_l: a.q_l,
         q_r: a.q_r,
         q_s: a.q_s,
@@ -145,7 +152,7 @@ fn ensemble(a: &EnsembleArgs) -> anyhow::Result<()> {
     let spectrum = a.spectrum.build()?;
     let config = validation::EnsembleConfig {
         contact_modulus: a.material.build(a.spectrum.example)?.contact_modulus(),
-        nominal_pressure: a.pressure.clone(),
+        nominal_pressure: super::args::pressures(&a.pressure, a.spectrum.example)?,
         sweep: a.spec.spec()?.settings()?,
     };
     let report = validation::ensemble(spectrum.as_ref(), &config, a.threads)?;

@@ -36,6 +36,9 @@ pub struct BemArgs {
 
 impl SpecFlags for SweepSpec {}
 
+/// The Hurst exponents of `compare kappa --example`.
+pub const EXAMPLE_HURST: [f64; 3] = [0.2, 0.5, 0.8];
+
 impl SpecFlags for CompareSpec {}
 
 impl SpecFlags for EnsembleSpec {}
@@ -102,11 +105,15 @@ pub struct MainArgs {
 
 #[derive(clap::Args, Debug)]
 pub struct KappaArgs {
+    /// The built-in example: H = 0.2, 0.5 and 0.8 (the guide's) with the defaults
+    /// below (every command takes --example).
+    #[arg(long)]
+    pub example: bool,
     /// Hurst exponents, comma-separated.
     #[arg(
         long,
         value_delimiter = ',',
-        required = true,
+        required_unless_present = "example",
         allow_hyphen_values = true, value_parser = super::number::number)]
     pub hurst: Vec<f64>,
     /// Lower cut-off q_l (sets L = 2π/q_l).
@@ -145,8 +152,9 @@ pub struct EnsembleArgs {
     pub spectrum: SpectrumArgs,
     #[command(flatten)]
     pub material: MaterialArgs,
-    /// Nominal (mean) pressure, same unit as the modulus; repeatable or comma-separated.
-    #[arg(long, value_delimiter = ',', required = true, allow_hyphen_values = true, value_parser = super::number::number)]
+    /// Nominal (mean) pressure, same unit as the modulus; repeatable or comma-separated
+    /// (required but with --example, which takes the example's).
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true, value_parser = super::number::number)]
     pub pressure: Vec<f64>,
     /// The grids, surfaces, band and solver: the spec [`EnsembleSpec`].
     #[command(flatten)]

@@ -64,6 +64,15 @@ fn every_computing_command_runs_on_the_example() {
         &["kappa", "--example"],
         &["separation", "--example"],
         &["compare", "--example", "--grid", "32", "--levels", "2"],
+        &[
+            "compare",
+            "ensemble",
+            "--example",
+            "--grid",
+            "32",
+            "--seeds",
+            "2",
+        ],
     ] {
         let (code, out, err) = persson(args);
         assert_eq!(code, 0, "{args:?}: {err}");
@@ -93,4 +102,35 @@ fn anisotropy_example_is_the_guides_stretched_map() {
     ] {
         assert_eq!(example[key], file[key], "{key}");
     }
+}
+
+/// `compare kappa --example` is κ(H) at H = 0.2, 0.5 and 0.8; a given
+/// --hurst replaces them.
+#[test]
+fn kappa_study_example_is_three_hurst_exponents() {
+    let hurst = |r: &serde_json::Value| -> Vec<f64> {
+        r["points"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|row| row["hurst"].as_f64().unwrap())
+            .collect()
+    };
+    let base = [
+        "compare",
+        "kappa",
+        "--example",
+        "--grid",
+        "32",
+        "--levels",
+        "2",
+        "--json",
+    ];
+    assert_eq!(hurst(&json(&base)), [0.2, 0.5, 0.8]);
+    let mut given = base.to_vec();
+    given.extend(["--hurst", "0.6"]);
+    assert_eq!(hurst(&json(&given)), [0.6]);
+    let (code, _, err) = persson(&["compare", "kappa"]);
+    assert_ne!(code, 0);
+    assert!(err.contains("--hurst"), "{err}");
 }
