@@ -97,55 +97,26 @@ fn seed_list(first: u64, count: usize) -> Result<Vec<u64>> {
 /// own (64², four surfaces: many small solves to spread over workers), so
 /// it is not the sweep of `compare` ([`SweepSpec`]).
 #[derive(Debug, Clone, PartialEq, Deserialize, Serialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
+#[serde(default, deny_unknown_fields)]
 pub struct EnsembleSpec {
     /// Finest grid side N; the ensemble runs on N/2^(levels−1) … N.
-    #[serde(default = "EnsembleSpec::default_grid")]
     pub grid: usize,
     /// Number of grids, each half the next (at least 2).
-    #[serde(default = "EnsembleSpec::default_levels")]
     pub levels: usize,
     /// Number of surfaces K per grid (seeds `seed` … `seed` + K − 1), at least 1.
-    #[serde(default = "EnsembleSpec::default_seeds")]
     pub seeds: usize,
     /// First seed (Pcg64Mcg, value-stable).
-    #[serde(default = "EnsembleSpec::default_seed")]
     pub seed: u64,
     /// Pixels of the coarsest grid per shortest wavelength 2π/q_s: q_s is
     /// clipped to N_coarsest q_l / this, with a warning.
-    #[serde(default = "EnsembleSpec::default_pixels_per_wavelength")]
     pub pixels_per_wavelength: f64,
     /// Relative tolerance ε of the solver.
-    #[serde(default = "EnsembleSpec::default_tolerance")]
     pub tolerance: f64,
     /// Iterations allowed per solve; a solve that needs more fails, saying so.
-    #[serde(default = "EnsembleSpec::default_max_iterations")]
     pub max_iterations: usize,
 }
 
 impl EnsembleSpec {
-    fn default_grid() -> usize {
-        64
-    }
-    fn default_levels() -> usize {
-        DEFAULT_LEVELS
-    }
-    fn default_seeds() -> usize {
-        4
-    }
-    fn default_seed() -> u64 {
-        1
-    }
-    fn default_pixels_per_wavelength() -> f64 {
-        DEFAULT_PIXELS_PER_WAVELENGTH
-    }
-    fn default_tolerance() -> f64 {
-        Options::default().tolerance
-    }
-    fn default_max_iterations() -> usize {
-        Options::default().max_iterations
-    }
-
     /// The ensemble's settings (no continuum exponent: an ensemble reports
     /// each grid), warm-started along the pressures.
     ///
@@ -169,15 +140,17 @@ impl EnsembleSpec {
 }
 
 impl Default for EnsembleSpec {
+    /// 64², three grids, four surfaces from seed 1, four pixels per
+    /// wavelength, the solver's tolerance and iteration cap.
     fn default() -> Self {
         EnsembleSpec {
-            grid: Self::default_grid(),
-            levels: Self::default_levels(),
-            seeds: Self::default_seeds(),
-            seed: Self::default_seed(),
-            pixels_per_wavelength: Self::default_pixels_per_wavelength(),
-            tolerance: Self::default_tolerance(),
-            max_iterations: Self::default_max_iterations(),
+            grid: 64,
+            levels: DEFAULT_LEVELS,
+            seeds: 4,
+            seed: 1,
+            pixels_per_wavelength: DEFAULT_PIXELS_PER_WAVELENGTH,
+            tolerance: Options::default().tolerance,
+            max_iterations: Options::default().max_iterations,
         }
     }
 }
@@ -185,46 +158,36 @@ impl Default for EnsembleSpec {
 /// What `compare` sets beside its sweep: the pressures, the solver's yield
 /// stress, the pressure distribution shown and the adhesive comparison.
 #[derive(Debug, Clone, PartialEq, Deserialize, Serialize, JsonSchema)]
-#[serde(deny_unknown_fields)]
+#[serde(default, deny_unknown_fields)]
 pub struct CompareSpec {
     /// Nominal (mean) pressures σ0, unit of the modulus (default: the
     /// pressures of the user's data, else 8 with A/A0 ≈ 0.01 … 0.3).
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    #[serde(skip_serializing_if = "Vec::is_empty")]
     pub pressure: Vec<f64>,
     /// Yield stress σY (hardness), unit of the pressures: the saturated BEM
     /// (0 ≤ p ≤ σY) against Persson's finite-σY P(σ), with A_el/A0 and
     /// A_pl/A0 (must exceed every σ0).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub yield_stress: Option<f64>,
     /// Nominal pressure of the shown pressure distribution (the nearest
     /// computed one; default: the one whose finest-grid A/A0 is nearest 0.1).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub histogram_pressure: Option<f64>,
     /// Number of bins of the BEM pressure histograms.
-    #[serde(default = "default_bins")]
     pub bins: usize,
     /// Also compare adhesive contact at each work of adhesion Δγ (J/m², unit
     /// of the modulus × L): Persson's adhesive theory against the adhesive
     /// BEM along a mean-gap path in and out, A/A0 per point and the pull-off
     /// stress.
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    #[serde(skip_serializing_if = "Vec::is_empty")]
     pub work_of_adhesion: Vec<f64>,
     /// Range ρ of the BEM's cohesive law, m (default: h'_rms L/N, the height
     /// the surface changes by over one spacing of the finest grid).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub adhesion_range: Option<f64>,
     /// Cohesive law of the adhesive BEM.
-    #[serde(default = "default_law")]
     #[schemars(with = "ByName<LawKind>")]
     pub adhesion: LawKind,
-}
-
-fn default_bins() -> usize {
-    DEFAULT_BINS
-}
-
-fn default_law() -> LawKind {
-    LawKind::Maugis
 }
 
 impl Default for CompareSpec {
@@ -236,7 +199,7 @@ impl Default for CompareSpec {
             bins: DEFAULT_BINS,
             work_of_adhesion: Vec::new(),
             adhesion_range: None,
-            adhesion: default_law(),
+            adhesion: LawKind::Maugis,
         }
     }
 }
